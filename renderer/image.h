@@ -1,0 +1,37 @@
+// Images: plain pixel arrays, PNG in and out (stb), sRGB <-> linear.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+// Row-major, top row first, `channels` interleaved values per pixel.
+template <typename T>
+struct Image {
+    int width = 0, height = 0, channels = 0;
+    std::vector<T> pixels;
+
+    Image() = default;
+    Image(int w, int h, int c, T fill = T{}) : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c, fill) {}
+    T* at(int x, int y) { return &pixels[(std::size_t(y) * width + x) * channels]; }
+    const T* at(int x, int y) const { return &pixels[(std::size_t(y) * width + x) * channels]; }
+    bool empty() const { return pixels.empty(); }
+};
+using Image8 = Image<std::uint8_t>;
+using Image16 = Image<std::uint16_t>;
+using ImageF = Image<float>;
+
+// Decodes PNG/JPEG/BMP/TGA/... bytes to RGBA8; `name` names the source in errors.
+Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& name);
+Image8 read_image(const std::string& path);
+
+// 8-bit PNG with 1..4 channels; byte-identical for identical pixels.
+std::vector<std::uint8_t> encode_png(const Image8& image);
+void write_png(const std::string& path, const Image8& image);  // atomic
+
+float srgb_to_linear(std::uint8_t value);  // exact table lookup
+std::uint8_t linear_to_srgb(float value);  // clamps to [0, 1], rounds to nearest
+
+}  // namespace boxlod

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages boxlod needs that are missing; nothing else.
+# Usage: scripts/install-deps.sh [GROUP...]   groups: build (default), test
+set -euo pipefail
+
+build_packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libopenexr-dev libassimp-dev libmeshoptimizer-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+# Real data for the tests and the demo: the KIT FZK-Haus (IFC) and the assimp CLI that converts it.
+data_packages=(assimp-utils assimp-testmodels)
+
+wanted=("${build_packages[@]}" "${data_packages[@]}")
+
+missing=()
+for package in "${wanted[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing missing Debian packages: ${missing[*]}" >&2
+if [ "$(id -u)" -eq 0 ]; then
+  run=()
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+  run=(sudo -n)
+else
+  echo "install-deps: need root or password-less sudo to install: ${missing[*]}" >&2
+  echo "install-deps: run as root: apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${run[@]}" apt-get update -qq
+"${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

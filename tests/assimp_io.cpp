@@ -1,0 +1,69 @@
+#include "toolkit/assimp_io.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+#include "toolkit/model_io.h"
+#include "toolkit/statistics.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+using namespace boxlod;
+namespace fs = std::filesystem;
+
+namespace {
+std::string statistic(const Model& model, const std::string& key) {
+    for (const KeyValue& entry : model_statistics(model))
+        if (entry.key == key) return entry.value;
+    return "?";
+}
+}  // namespace
+
+TEST(AssimpIo, ObjQuadsCountAsOneFaceEach) {
+    auto folder = test::scratch_folder("assimp_obj");
+    test::write_text(folder / "box.obj", R"(o wall
+v 0 0 0
+v 2 0 0
+v 2 3 0
+v 0 3 0
+v 0 0 1
+f 1 2 3 4
+f 1 2 5
+)");
+    Model model = load_model((folder / "box.obj").string());
+    MeshCounts counts = mesh_counts(model);
+    EXPECT_EQ(counts.faces, 2u);      // one quad, one triangle
+    EXPECT_EQ(counts.triangles, 3u);  // the quad fans into two
+    EXPECT_EQ(model_bounds(model).size(), Eigen::Vector3f(2, 3, 1));
+}
+
+TEST(AssimpIo, MalformedFilesAreInputErrors) {
+    auto folder = test::scratch_folder("assimp_bad");
+    test::write_text(folder / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n");
+    EXPECT_THROW(load_model((folder / "bad.ply").string()), InputError);
+    test::write_text(folder / "bad.obj", "f 1 2 3\n");
+    EXPECT_THROW(load_model((folder / "bad.obj").string()), InputError);
+    test::write_text(folder / "empty.off", "");
+    EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
+}
+
+// Real data made by others: the KIT FZK-Haus, read from IFC directly and from
+// the glTF that assimp's own exporter makes of it.
+TEST(AssimpIo, FzkHausIfcKeepsItsHierarchy) {
+    Model model = load_model(test::fzk_haus_ifc);
+    EXPECT_EQ(statistic(model, "nodes"), "216");
+    EXPECT_EQ(statistic(model, "depth"), "7");
+    EXPECT_EQ(statistic(model, "triangles_original"), "35906");
+}
+
+TEST(AssimpIo, FzkHausGlbFromAssimpExportKeepsItsHierarchy) {
+    auto folder = test::scratch_folder("assimp_fzk");
+    std::string glb = (folder / "fzk.glb").string();
+    std::string command = std::string("assimp export ") + test::fzk_haus_ifc + " " + glb + " -fglb2 >/dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    Model model = load_model(glb);
+    EXPECT_EQ(statistic(model, "nodes"), "216");
+    EXPECT_EQ(statistic(model, "depth"), "7");
+    EXPECT_EQ(statistic(model, "triangles_original"), "35906");
+}

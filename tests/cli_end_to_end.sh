@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The boxlod CLI as a user meets it: real data, --help, --json, bad input.
+set -u
+boxlod=$1
+data=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {  # check NAME CONDITION...
+  local name=$1; shift
+  if "$@"; then echo "ok   $name"; else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+status_of() { "$@" >"$work/out" 2>"$work/err"; echo $?; }
+
+ifc=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
+check "info on the FZK-Haus IFC succeeds" test "$(status_of "$boxlod" info "$ifc")" = 0
+check "info prints nodes = 216" grep -qx "nodes = 216" "$work/out"
+check "info prints every required key" bash -c "for k in nodes nodes_with_geometry depth faces_original triangles_original vertices_original batches_original mesh_width mesh_height mesh_depth; do grep -q \"^\$k = \" '$work/out' || exit 1; done"
+
+check "info --json succeeds" test "$(status_of "$boxlod" info "$ifc" --json)" = 0
+check "info --json is a JSON object with nodes" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['nodes']==216 else 1)"
+
+check "convert to glb succeeds" test "$(status_of "$boxlod" convert "$ifc" -o "$work/fzk.glb")" = 0
+check "converted glb has the same statistics" bash -c "'$boxlod' info '$ifc' > '$work/a'; '$boxlod' info '$work/fzk.glb' > '$work/b'; diff '$work/a' '$work/b'"
+check "convert twice gives identical bytes" bash -c "'$boxlod' convert '$ifc' -o '$work/fzk2.glb' && cmp -s '$work/fzk.glb' '$work/fzk2.glb'"
+
+check "--help exits 0" test "$(status_of "$boxlod" --help)" = 0
+check "--help lists info" grep -q "info" "$work/out"
+for command in info convert; do
+  check "$command --help exits 0" test "$(status_of "$boxlod" $command --help)" = 0
+  check "$command --help shows usage" grep -q "usage: boxlod $command" "$work/out"
+done
+
+bad() {  # bad NAME ARGS...: exit status 2 and exactly one line on stderr, nothing on stdout
+  local name=$1; shift
+  local status; status=$(status_of "$boxlod" "$@")
+  check "$name: exit status 2" test "$status" = 2
+  check "$name: one line on stderr" test "$(wc -l < "$work/err")" = 1
+  check "$name: nothing on stdout" test ! -s "$work/out"
+}
+bad "missing file" info "$work/nope.gltf"
+printf '{"asset": {"version": "2.0"}, "nodes": [' > "$work/broken.gltf"
+bad "malformed glTF" info "$work/broken.gltf"
+head -c 1000 "$work/fzk.glb" > "$work/truncated.glb"
+bad "truncated glb" info "$work/truncated.glb"
+echo hello > "$work/model.unknown"
+bad "unknown format" info "$work/model.unknown"
+bad "unknown command" frobnicate
+bad "unknown option" info "$ifc" --frobnicate
+bad "missing argument" info
+bad "convert to an unsupported format" convert "$ifc" -o "$work/out.obj"
+check "no half-written file after a failed convert" test ! -e "$work/out.obj"
+check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
+
+echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null
+if [ "$failures" -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi
+echo "all checks passed"

@@ -1,0 +1,248 @@
+#include "toolkit/gltf_io.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+#include "toolkit/model_io.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+namespace fs = std::filesystem;
+
+namespace {
+
+Primitive quad(float z, int material) {
+    Primitive p;
+    p.positions = {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}};
+    p.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    p.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    p.tangents = {{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, -1}};
+    p.indices = {0, 1, 2, 0, 2, 3};
+    p.polygon_count = 1;  // one quad
+    p.material = material;
+    return p;
+}
+
+// A small building-like tree with everything the format must carry.
+Model sample_model() {
+    Model model;
+    model.source = "sample";
+    int lot = add_node(model, -1, "Lot");
+    model.nodes[lot].rule = "Lot";
+    Scope scope;
+    scope.center = {0.5f, 0.5f, 0.1f};
+    scope.axes = Eigen::AngleAxisf(0.3f, Eigen::Vector3f::UnitY()).toRotationMatrix();
+    scope.half_extents = {0.5f, 0.5f, 0.1234567f};
+    model.nodes[lot].scope = scope;
+    int mass = add_node(model, lot, "Mass");
+    model.nodes[mass].rule = "Mass";
+    model.nodes[mass].primitives.push_back(quad(0, 0));
+    for (int i = 0; i < 2; ++i) {
+        int window = add_node(model, mass, "Window" + std::to_string(i));
+        model.nodes[window].rule = "Window";
+        model.nodes[window].instance_of = "window";
+        model.nodes[window].primitives.push_back(quad(0.1f * float(i + 1), 1));
+    }
+    Material brick;
+    brick.name = "brick";
+    brick.base_color = {0.8f, 0.4f, 0.3f, 1};
+    brick.base_color_texture = 0;
+    brick.normal_texture = 1;
+    brick.specular_color = {0.1f, 0.2f, 0.3f};
+    brick.shininess = 12.5f;
+    Material glass;
+    glass.name = "glass";
+    glass.double_sided = true;
+    model.materials = {brick, glass};
+    for (int t = 0; t < 2; ++t) {
+        Texture texture;
+        texture.name = t ? "brick_normal.png" : "brick_color.png";
+        texture.image = Image8(3, 2, 4);
+        for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
+        model.textures.push_back(texture);
+    }
+    return model;
+}
+
+void expect_same_model(const Model& a, const Model& b) {
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+        const Node& x = a.nodes[i];
+        const Node& y = b.nodes[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.rule, y.rule);
+        EXPECT_EQ(x.parent, y.parent);
+        EXPECT_EQ(x.children, y.children);
+        EXPECT_EQ(x.instance_of, y.instance_of);
+        ASSERT_EQ(x.scope.has_value(), y.scope.has_value());
+        if (x.scope) {
+            EXPECT_EQ(x.scope->center, y.scope->center);
+            EXPECT_EQ(x.scope->axes, y.scope->axes);
+            EXPECT_EQ(x.scope->half_extents, y.scope->half_extents);
+        }
+        ASSERT_EQ(x.primitives.size(), y.primitives.size());
+        for (std::size_t p = 0; p < x.primitives.size(); ++p) {
+            EXPECT_EQ(x.primitives[p].positions, y.primitives[p].positions);
+            EXPECT_EQ(x.primitives[p].normals, y.primitives[p].normals);
+            EXPECT_EQ(x.primitives[p].uvs, y.primitives[p].uvs);
+            EXPECT_EQ(x.primitives[p].tangents, y.primitives[p].tangents);
+            EXPECT_EQ(x.primitives[p].indices, y.primitives[p].indices);
+            EXPECT_EQ(x.primitives[p].polygon_count, y.primitives[p].polygon_count);
+            EXPECT_EQ(x.primitives[p].material, y.primitives[p].material);
+        }
+    }
+    ASSERT_EQ(a.materials.size(), b.materials.size());
+    for (std::size_t i = 0; i < a.materials.size(); ++i) {
+        EXPECT_EQ(a.materials[i].name, b.materials[i].name);
+        EXPECT_EQ(a.materials[i].base_color, b.materials[i].base_color);
+        EXPECT_EQ(a.materials[i].base_color_texture, b.materials[i].base_color_texture);
+        EXPECT_EQ(a.materials[i].normal_texture, b.materials[i].normal_texture);
+        EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
+        EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
+        EXPECT_EQ(a.materials[i].double_sided, b.materials[i].double_sided);
+    }
+    ASSERT_EQ(a.textures.size(), b.textures.size());
+    for (std::size_t i = 0; i < a.textures.size(); ++i) EXPECT_EQ(a.textures[i].image.pixels, b.textures[i].image.pixels);
+    EXPECT_EQ(a.is_lod, b.is_lod);
+    EXPECT_EQ(a.lod_params, b.lod_params);
+}
+
+// A glTF whose single buffer is a data URI of `bytes`.
+std::string gltf_with_buffer(const std::vector<std::uint8_t>& bytes, const std::string& body) {
+    return R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": )" + std::to_string(bytes.size()) +
+           R"(, "uri": "data:application/octet-stream;base64,)" + test::base64(bytes) + "\"}], " + body + "}";
+}
+
+// One triangle: positions (36 bytes) then three uint16 indices.
+std::vector<std::uint8_t> triangle_bytes(float x0 = 0, std::uint16_t last_index = 2) {
+    std::vector<std::uint8_t> bytes;
+    test::append_bytes<float>(bytes, {x0, 0, 0, 1, 0, 0, 0, 1, 0});
+    test::append_bytes<std::uint16_t>(bytes, {0, 1, last_index, 0});
+    return bytes;
+}
+
+const char* triangle_mesh = R"(
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}])";
+
+std::string expect_input_error(const std::string& path) {
+    try {
+        load_model(path);
+    } catch (const InputError& error) {
+        std::string message = error.what();
+        EXPECT_NE(message.find(path), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        return message;
+    }
+    ADD_FAILURE() << "no InputError for " << path;
+    return "";
+}
+
+}  // namespace
+
+TEST(GltfIo, ExportThenImportGivesTheSameModel) {
+    auto folder = test::scratch_folder("gltf_round_trip");
+    Model model = sample_model();
+    for (const char* name : {"house.gltf", "house.glb"}) {
+        std::string path = (folder / name).string();
+        save_model(model, path);
+        expect_same_model(model, load_model(path));
+    }
+    EXPECT_TRUE(fs::exists(folder / "house.bin"));
+    EXPECT_TRUE(fs::exists(folder / "brick_color.png"));
+    EXPECT_TRUE(fs::exists(folder / "brick_normal.png"));
+}
+
+TEST(GltfIo, LodMarkAndParametersSurviveTheRoundTrip) {
+    auto folder = test::scratch_folder("gltf_lod_mark");
+    Model model = sample_model();
+    model.is_lod = true;
+    model.lod_params = {{"current_level", "2"}, {"level_mode", "top-down"}};
+    save_model(model, (folder / "lod.gltf").string());
+    Model back = load_model((folder / "lod.gltf").string());
+    EXPECT_TRUE(back.is_lod);
+    EXPECT_EQ(back.lod_params, model.lod_params);
+}
+
+TEST(GltfIo, ExportIsByteIdenticalEveryTime) {
+    auto folder = test::scratch_folder("gltf_deterministic");
+    Model model = sample_model();
+    save_model(model, (folder / "a.glb").string());
+    save_model(model, (folder / "b.glb").string());
+    EXPECT_EQ(test::read_text(folder / "a.glb"), test::read_text(folder / "b.glb"));
+}
+
+TEST(GltfIo, TransformsAreAppliedAndSharedMeshesExpanded) {
+    auto folder = test::scratch_folder("gltf_transforms");
+    // root translates by +10 x; child a scales by 2; child b mirrors x (matrix), which must flip the winding.
+    std::string json = gltf_with_buffer(triangle_bytes(), std::string(triangle_mesh) + R"(,
+      "nodes": [{"name": "root", "translation": [10, 0, 0], "children": [1, 2]},
+                {"name": "a", "mesh": 0, "scale": [2, 2, 2]},
+                {"name": "b", "mesh": 0, "matrix": [-1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,5,1]}],
+      "scenes": [{"nodes": [0]}], "scene": 0)");
+    test::write_text(folder / "t.gltf", json);
+    Model model = load_model((folder / "t.gltf").string());
+    ASSERT_EQ(model.nodes.size(), 3u);
+    const Primitive& a = model.nodes[1].primitives.at(0);
+    EXPECT_EQ(a.positions[1], Eigen::Vector3f(12, 0, 0));
+    EXPECT_EQ(a.positions[2], Eigen::Vector3f(10, 2, 0));
+    EXPECT_EQ(a.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    const Primitive& b = model.nodes[2].primitives.at(0);
+    EXPECT_EQ(b.positions[1], Eigen::Vector3f(9, 0, 5));
+    EXPECT_EQ(b.indices, (std::vector<std::uint32_t>{0, 2, 1}));
+    EXPECT_EQ(model.nodes[1].instance_of, "tri");
+    EXPECT_EQ(model.nodes[2].instance_of, "tri");
+    EXPECT_EQ(a.polygon_count, 1u);
+}
+
+TEST(GltfIo, SeveralRootNodesGetOneRootNamedAfterTheFile) {
+    auto folder = test::scratch_folder("gltf_roots");
+    std::string json = gltf_with_buffer(triangle_bytes(), std::string(triangle_mesh) + R"(,
+      "nodes": [{"name": "a", "mesh": 0}, {"name": "b", "mesh": 0}], "scenes": [{"nodes": [0, 1]}])");
+    test::write_text(folder / "street.gltf", json);
+    Model model = load_model((folder / "street.gltf").string());
+    ASSERT_EQ(model.nodes.size(), 3u);
+    EXPECT_EQ(model.nodes[0].name, "street");
+    EXPECT_EQ(model.nodes[0].children, (std::vector<int>{1, 2}));
+}
+
+TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
+    auto folder = test::scratch_folder("gltf_bad_input");
+    auto write = [&](const std::string& name, const std::string& text) {
+        test::write_text(folder / name, text);
+        return (folder / name).string();
+    };
+    EXPECT_NE(expect_input_error((folder / "missing.gltf").string()).find("no such file"), std::string::npos);
+    expect_input_error(write("malformed.gltf", "{ \"asset\": {\"version\": \"2.0\"}, \"nodes\": [ "));
+    expect_input_error(write("empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}]})"));
+    std::string no_geometry = R"({"asset": {"version": "2.0"}, "nodes": [{"name": "a"}], "scenes": [{"nodes": [0]}]})";
+    EXPECT_NE(expect_input_error(write("no_geometry.gltf", no_geometry)).find("empty"), std::string::npos);
+
+    std::string nodes = R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}])";
+    auto nan_bytes = triangle_bytes(std::nanf(""));
+    EXPECT_NE(expect_input_error(write("nan.gltf", gltf_with_buffer(nan_bytes, triangle_mesh + nodes))).find("NaN"),
+              std::string::npos);
+    auto inf_bytes = triangle_bytes(std::numeric_limits<float>::infinity());
+    expect_input_error(write("inf.gltf", gltf_with_buffer(inf_bytes, triangle_mesh + nodes)));
+    auto bad_index = triangle_bytes(0, 7);
+    EXPECT_NE(expect_input_error(write("index.gltf", gltf_with_buffer(bad_index, triangle_mesh + nodes))).find("out of range"),
+              std::string::npos);
+    auto short_buffer = triangle_bytes();
+    short_buffer.resize(30);
+    expect_input_error(write("short.gltf", gltf_with_buffer(short_buffer, triangle_mesh + nodes)));
+    std::string cycle = R"(, "nodes": [{"mesh": 0, "children": [1]}, {"children": [0]}], "scenes": [{"nodes": [0]}])";
+    EXPECT_NE(expect_input_error(write("cycle.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + cycle))).find("twice"),
+              std::string::npos);
+    std::string bad_child = R"(, "nodes": [{"mesh": 0, "children": [9]}], "scenes": [{"nodes": [0]}])";
+    expect_input_error(write("child.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + bad_child)));
+
+    // A truncated .glb: the first half of a valid one.
+    save_model(sample_model(), (folder / "whole.glb").string());
+    std::string whole = test::read_text(folder / "whole.glb");
+    expect_input_error(write("truncated.glb", whole.substr(0, whole.size() / 2)));
+    expect_input_error(write("garbage.glb", "this is not a glb file at all"));
+    EXPECT_NE(expect_input_error(write("model.xyz", "?")).find("unknown model format"), std::string::npos);
+}

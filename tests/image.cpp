@@ -1,0 +1,45 @@
+#include "renderer/image.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+TEST(Image, PngRoundTripKeepsEveryByte) {
+    Image8 image(7, 5, 4);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint8_t(i * 37 + 11);
+    Image8 back = decode_image(encode_png(image), "memory");
+    EXPECT_EQ(back.width, 7);
+    EXPECT_EQ(back.height, 5);
+    EXPECT_EQ(back.pixels, image.pixels);
+}
+
+TEST(Image, PngEncodingIsDeterministic) {
+    Image8 image(16, 16, 3, 99);
+    EXPECT_EQ(encode_png(image), encode_png(image));
+}
+
+TEST(Image, WritePngLeavesNoTemporaryBehind) {
+    auto folder = test::scratch_folder("write_png");
+    write_png((folder / "a.png").string(), Image8(3, 3, 1, 7));
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) files += entry.is_regular_file();
+    EXPECT_EQ(files, 1u);
+    EXPECT_EQ(read_image((folder / "a.png").string()).pixels[0], 7);
+}
+
+TEST(Image, UndecodableBytesAreAnInputError) {
+    std::vector<std::uint8_t> garbage{1, 2, 3, 4, 5};
+    EXPECT_THROW(decode_image(garbage, "garbage.png"), InputError);
+    EXPECT_THROW(read_image("/nonexistent/file.png"), InputError);
+}
+
+TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {
+    for (int i = 0; i < 256; ++i) EXPECT_EQ(linear_to_srgb(srgb_to_linear(std::uint8_t(i))), i);
+    EXPECT_EQ(linear_to_srgb(-1.0f), 0);
+    EXPECT_EQ(linear_to_srgb(2.0f), 255);
+    EXPECT_NEAR(srgb_to_linear(128), 0.21586, 1e-5);  // IEC 61966-2-1
+    EXPECT_EQ(linear_to_srgb(0.5f), 188);              // 0.5 linear = 187.5 encoded, rounds to 188
+}

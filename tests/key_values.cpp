@@ -1,0 +1,21 @@
+#include "toolkit/key_values.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+using namespace boxlod;
+
+TEST(KeyValues, NumbersPrintShortAndReadBackExactly) {
+    EXPECT_EQ(format_number(3.0), "3");
+    EXPECT_EQ(format_number(-0.0), "0");
+    EXPECT_EQ(format_number(0.1), "0.1");
+    EXPECT_EQ(format_number(0.1f), "0.1");
+    for (double v : {1.0 / 3.0, 1e-300, 123456789.123456789, -2.5e17}) EXPECT_EQ(std::strtod(format_number(v).c_str(), nullptr), v);
+}
+
+TEST(KeyValues, LinesAndJson) {
+    KeyValues entries{number_entry("nodes", 12), text_entry("name", "a \"b\"")};
+    EXPECT_EQ(format_key_values(entries), "nodes = 12\nname = a \"b\"\n");
+    EXPECT_EQ(format_json(entries), "{\n  \"nodes\": 12,\n  \"name\": \"a \\\"b\\\"\"\n}\n");
+}

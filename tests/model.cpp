@@ -1,0 +1,88 @@
+#include "toolkit/model.h"
+
+#include "renderer/input_error.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+namespace {
+Primitive triangle() {
+    Primitive p;
+    p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    p.indices = {0, 1, 2};
+    p.polygon_count = 1;
+    return p;
+}
+}  // namespace
+
+TEST(Model, AddNodeLinksParentAndChild) {
+    Model model;
+    int root = add_node(model, -1, "root");
+    int a = add_node(model, root, "a");
+    int b = add_node(model, a, "b");
+    EXPECT_EQ(model.nodes[root].children, std::vector<int>{a});
+    EXPECT_EQ(model.nodes[b].parent, a);
+}
+
+TEST(Model, DepthCountsEdgesOfTheLongestPath) {
+    Model model;
+    add_node(model, -1, "root");
+    EXPECT_EQ(tree_depth(model), 0);
+    int a = add_node(model, 0, "a");
+    add_node(model, 0, "b");
+    add_node(model, add_node(model, a, "c"), "d");
+    EXPECT_EQ(tree_depth(model), 3);
+}
+
+TEST(Model, BoundsCoverAllGeometry) {
+    Model model;
+    add_node(model, -1, "root");
+    model.nodes[0].primitives.push_back(triangle());
+    model.nodes[0].primitives[0].positions[2] = {-2, 5, 3};
+    Bounds bounds = model_bounds(model);
+    EXPECT_EQ(bounds.min, Eigen::Vector3f(-2, 0, 0));
+    EXPECT_EQ(bounds.max, Eigen::Vector3f(1, 5, 3));
+    EXPECT_EQ(bounds.size(), Eigen::Vector3f(3, 5, 3));
+}
+
+TEST(Model, ValidationRejectsEachKindOfBadData) {
+    auto valid = [] {
+        Model model;
+        model.source = "m.gltf";
+        add_node(model, -1, "root");
+        model.nodes[0].primitives.push_back(triangle());
+        return model;
+    };
+    EXPECT_NO_THROW(validate_model(valid()));
+
+    Model out_of_range = valid();
+    out_of_range.nodes[0].primitives[0].indices[1] = 3;
+    EXPECT_THROW(validate_model(out_of_range), InputError);
+
+    Model nan = valid();
+    nan.nodes[0].primitives[0].positions[0].x() = std::nanf("");
+    EXPECT_THROW(validate_model(nan), InputError);
+
+    Model infinite = valid();
+    infinite.nodes[0].primitives[0].positions[0].y() = std::numeric_limits<float>::infinity();
+    EXPECT_THROW(validate_model(infinite), InputError);
+
+    Model empty;
+    empty.source = "m.gltf";
+    add_node(empty, -1, "root");
+    EXPECT_THROW(validate_model(empty), InputError);
+
+    Model bad_material = valid();
+    bad_material.nodes[0].primitives[0].material = 0;
+    EXPECT_THROW(validate_model(bad_material), InputError);
+
+    try {
+        validate_model(out_of_range);
+    } catch (const InputError& error) {
+        std::string message = error.what();
+        EXPECT_NE(message.find("m.gltf"), std::string::npos);
+        EXPECT_NE(message.find("out of range"), std::string::npos);
+        EXPECT_EQ(message.find('\n'), std::string::npos);
+    }
+}

@@ -1,0 +1,53 @@
+// Small helpers shared by the tests: scratch folders, files, running the CLI.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace boxlod::test {
+
+// A fresh, empty folder for one test.
+inline std::filesystem::path scratch_folder(const std::string& name) {
+    auto path = std::filesystem::temp_directory_path() / ("boxlod_test_" + name);
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+    return path;
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline std::string base64(const std::vector<std::uint8_t>& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t v = bytes[i] << 16 | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0) |
+                          (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+        out += digits[v >> 18 & 63];
+        out += digits[v >> 12 & 63];
+        out += i + 1 < bytes.size() ? digits[v >> 6 & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+void append_bytes(std::vector<std::uint8_t>& out, std::initializer_list<T> values) {
+    for (T v : values) {
+        auto* p = reinterpret_cast<const std::uint8_t*>(&v);
+        out.insert(out.end(), p, p + sizeof(T));
+    }
+}
+
+// The FZK-Haus IFC model shipped by Debian's assimp-testmodels.
+inline const char* fzk_haus_ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
+
+}  // namespace boxlod::test

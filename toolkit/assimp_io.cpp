@@ -1,0 +1,144 @@
+#include "toolkit/assimp_io.h"
+
+#include "renderer/input_error.h"
+
+#include <Eigen/LU>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+
+Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
+    Eigen::Matrix4d out;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) out(r, c) = m[r][c];
+    return out;
+}
+
+// Polygons are kept as the file stores them for counting, and fanned into
+// triangles (assimp's own triangulation would hide the polygon count).
+Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
+    Primitive out;
+    Eigen::Matrix3d linear = world.topLeftCorner<3, 3>();
+    Eigen::Matrix3d normal_matrix = linear.inverse().transpose();
+    bool mirrored = linear.determinant() < 0;
+    for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+        const aiVector3D& p = mesh.mVertices[i];
+        out.positions.push_back((linear * Eigen::Vector3d(p.x, p.y, p.z) + world.topRightCorner<3, 1>()).cast<float>());
+        if (mesh.mNormals) {
+            const aiVector3D& n = mesh.mNormals[i];
+            Eigen::Vector3d normal = normal_matrix * Eigen::Vector3d(n.x, n.y, n.z);
+            // Some exporters leave zero normals; keep them valid rather than NaN.
+            out.normals.push_back(normal.norm() > 0 ? normal.normalized().cast<float>() : Eigen::Vector3f(0, 0, 1));
+        }
+        if (mesh.mTextureCoords[0]) out.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices < 3) continue;  // points and lines
+        ++out.polygon_count;
+        for (unsigned k = 2; k < face.mNumIndices; ++k) {
+            std::uint32_t a = face.mIndices[0], b = face.mIndices[k - 1], c = face.mIndices[k];
+            if (mirrored) std::swap(b, c);
+            out.indices.insert(out.indices.end(), {a, b, c});
+        }
+    }
+    out.material = int(mesh.mMaterialIndex);
+    return out;
+}
+
+int load_texture(Model& model, const aiScene& scene, const aiMaterial& material, aiTextureType type,
+                 const fs::path& directory) {
+    aiString name;
+    if (material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
+    std::string file = name.C_Str();
+    Texture texture;
+    texture.name = fs::path(file).filename().string();
+    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
+        if (embedded->mHeight == 0) {
+            texture.image = decode_image({reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
+        } else {
+            texture.image = Image8(int(embedded->mWidth), int(embedded->mHeight), 4);
+            for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
+                const aiTexel& t = embedded->pcData[i];
+                std::uint8_t* p = &texture.image.pixels[i * 4];
+                p[0] = t.r, p[1] = t.g, p[2] = t.b, p[3] = t.a;
+            }
+        }
+    } else {
+        texture.image = read_image((directory / file).string());
+    }
+    model.textures.push_back(std::move(texture));
+    return int(model.textures.size()) - 1;
+}
+
+}  // namespace
+
+Model import_with_assimp(const std::string& path) {
+    if (!fs::exists(path)) throw_input_error(path, "", "no such file");
+    Assimp::Importer importer;
+    // No triangulation here (see convert_mesh); validation rejects inconsistent data.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    if (!scene || !scene->mRootNode) {
+        std::string reason = importer.GetErrorString();
+        throw_input_error(path, "", reason.empty() ? "cannot read model" : "cannot read model: " + reason);
+    }
+    Model model;
+    model.source = path;
+    fs::path directory = fs::path(path).parent_path();
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
+        const aiMaterial& in = *scene->mMaterials[i];
+        Material material;
+        material.name = in.GetName().C_Str();
+        aiColor4D color;
+        if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
+            material.base_color = {color.r, color.g, color.b, color.a};
+        float opacity;
+        if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
+        aiColor3D specular;
+        if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) material.specular_color = {specular.r, specular.g, specular.b};
+        float shininess;
+        if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
+        int two_sided;
+        if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) material.double_sided = two_sided != 0;
+        material.base_color_texture = load_texture(model, *scene, in, aiTextureType_BASE_COLOR, directory);
+        if (material.base_color_texture < 0)
+            material.base_color_texture = load_texture(model, *scene, in, aiTextureType_DIFFUSE, directory);
+        material.normal_texture = load_texture(model, *scene, in, aiTextureType_NORMALS, directory);
+        model.materials.push_back(material);
+    }
+
+    std::vector<int> mesh_users(scene->mNumMeshes, 0);
+    struct Visit { const aiNode* node; int parent; Eigen::Matrix4d parent_world; };
+    std::vector<Visit> stack{{scene->mRootNode, -1, Eigen::Matrix4d::Identity()}};
+    std::vector<std::pair<int, unsigned>> node_meshes;  // (boxlod node, assimp mesh)
+    while (!stack.empty()) {
+        Visit visit = stack.back();
+        stack.pop_back();
+        Eigen::Matrix4d world = visit.parent_world * to_eigen(visit.node->mTransformation);
+        int index = add_node(model, visit.parent, visit.node->mName.C_Str());
+        for (unsigned m = 0; m < visit.node->mNumMeshes; ++m) {
+            unsigned mesh = visit.node->mMeshes[m];
+            ++mesh_users[mesh];
+            node_meshes.emplace_back(index, mesh);
+            Primitive primitive = convert_mesh(*scene->mMeshes[mesh], world);
+            if (!primitive.indices.empty()) model.nodes[index].primitives.push_back(std::move(primitive));
+        }
+        for (unsigned c = visit.node->mNumChildren; c-- > 0;) stack.push_back({visit.node->mChildren[c], index, world});
+    }
+    for (auto [node, mesh] : node_meshes)
+        if (mesh_users[mesh] > 1) {
+            std::string name = scene->mMeshes[mesh]->mName.C_Str();
+            model.nodes[node].instance_of = name.empty() ? "mesh " + std::to_string(mesh) : name;
+        }
+    validate_model(model);
+    return model;
+}
+
+}  // namespace boxlod

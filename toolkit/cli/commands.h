@@ -1,0 +1,19 @@
+// The `boxlod` subcommands. Each declares its options and runs with parsed
+// arguments; stdout gets `key = value` lines, stderr progress and messages.
+#pragma once
+#include "renderer/input_error.h"
+#include "toolkit/cli/options.h"
+
+#include <vector>
+
+namespace boxlod {
+
+struct Subcommand {
+    Command command;
+    int (*run)(const Arguments&);
+};
+
+Subcommand info_subcommand();
+Subcommand convert_subcommand();
+
+}  // namespace boxlod

@@ -1,0 +1,49 @@
+// boxlod: textured-box level of detail for hierarchical architecture.
+#include "renderer/input_error.h"
+#include "toolkit/cli/commands.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+namespace {
+
+std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(), boxlod::convert_subcommand()}; }
+
+void print_overview() {
+    std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"
+                "Textured-box level of detail for hierarchical (procedural) architecture.\n\ncommands:\n");
+    for (const auto& s : subcommands()) std::printf("  %-10s %s\n", s.command.name.c_str(), s.command.summary.c_str());
+    std::printf("\n'boxlod COMMAND --help' describes a command's options.\n"
+                "Exit status: 0 success, 2 bad input or usage, 1 internal failure.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> words(argv + 1, argv + argc);
+    if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
+        print_overview();
+        return words.empty() ? 2 : 0;
+    }
+    try {
+        for (const auto& s : subcommands()) {
+            if (s.command.name != words[0]) continue;
+            boxlod::Arguments arguments =
+                boxlod::parse_arguments(s.command, std::vector<std::string>(words.begin() + 1, words.end()));
+            if (arguments.has("help")) {
+                std::fputs(boxlod::help_text(s.command).c_str(), stdout);
+                return 0;
+            }
+            return s.run(arguments);
+        }
+        std::fprintf(stderr, "boxlod: unknown command '%s' (see boxlod --help)\n", words[0].c_str());
+        return 2;
+    } catch (const boxlod::InputError& error) {
+        std::fprintf(stderr, "boxlod: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "boxlod: internal error: %s\n", error.what());
+        return 1;
+    }
+}

@@ -1,0 +1,40 @@
+// A small command-line parser shared by every `boxlod` subcommand: options
+// are declared once and the same declaration produces --help.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct Option {
+    std::string name;        // without the leading "--"
+    std::string value_name;  // empty: a flag without value
+    std::string help;
+    char short_name = 0;  // e.g. 'o' for -o
+};
+
+struct Command {
+    std::string name;
+    std::string arguments;  // e.g. "MODEL"
+    std::string summary;
+    std::vector<Option> options;
+    std::size_t min_positionals = 0, max_positionals = 0;
+};
+
+struct Arguments {
+    std::vector<std::string> positionals;
+    std::map<std::string, std::string> values;  // flags map to ""
+
+    bool has(const std::string& name) const { return values.count(name) != 0; }
+    std::string text(const std::string& name, const std::string& fallback = "") const;
+    double number(const std::string& name, double fallback) const;
+    int integer(const std::string& name, int fallback) const;
+};
+
+// Throws InputError ("boxlod NAME: ...") on an unknown option, a missing value
+// or a wrong number of positional arguments. `--help` is returned as a flag.
+Arguments parse_arguments(const Command& command, const std::vector<std::string>& words);
+std::string help_text(const Command& command);
+
+}  // namespace boxlod

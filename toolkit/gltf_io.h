@@ -1,0 +1,18 @@
+// glTF 2.0 (.gltf, .glb) import and export, with tinygltf.
+// Node transforms are applied and shared meshes expanded on import; scopes,
+// rules and the LoD mark travel in `extras.boxlod` (DESIGN.md: Scene model).
+#pragma once
+#include "toolkit/model.h"
+
+#include <string>
+
+namespace boxlod {
+
+Model import_gltf(const std::string& path);
+
+// Writes .gltf (+ .bin and one PNG per texture beside it) or a single .glb,
+// chosen by the extension; every file atomically. Geometry is stored in
+// world space, so exported nodes have no transforms.
+void export_gltf(const Model& model, const std::string& path);
+
+}  // namespace boxlod

@@ -1,0 +1,83 @@
+#include "toolkit/model.h"
+
+#include "renderer/input_error.h"
+
+#include <cmath>
+
+namespace boxlod {
+
+int add_node(Model& model, int parent, std::string name) {
+    int index = int(model.nodes.size());
+    Node& node = model.nodes.emplace_back();
+    node.name = std::move(name);
+    node.parent = parent;
+    if (parent >= 0) model.nodes[parent].children.push_back(index);
+    return index;
+}
+
+int tree_depth(const Model& model) {
+    // Parents precede children, so one forward pass gives every node's depth.
+    std::vector<int> depth(model.nodes.size(), 0);
+    int deepest = 0;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        int parent = model.nodes[i].parent;
+        if (parent >= 0) depth[i] = depth[parent] + 1;
+        deepest = std::max(deepest, depth[i]);
+    }
+    return deepest;
+}
+
+Bounds model_bounds(const Model& model) {
+    Bounds bounds;
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives)
+            for (const Eigen::Vector3f& p : primitive.positions) bounds.add(p);
+    return bounds;
+}
+
+void validate_model(const Model& model) {
+    const std::string& file = model.source;
+    if (model.nodes.empty()) throw_input_error(file, "", "the scene has no nodes");
+    bool any_triangle = false;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        const Node& node = model.nodes[i];
+        std::string place = "node " + std::to_string(i) + (node.name.empty() ? "" : " '" + node.name + "'");
+        if ((i == 0) != (node.parent < 0) || node.parent >= int(i))
+            throw_input_error(file, place, "the node hierarchy is not a tree");
+        for (std::size_t p = 0; p < node.primitives.size(); ++p) {
+            const Primitive& primitive = node.primitives[p];
+            std::string where = place + " primitive " + std::to_string(p);
+            std::size_t n = primitive.positions.size();
+            if (primitive.indices.size() % 3 != 0) throw_input_error(file, where, "index count is not a multiple of 3");
+            for (std::uint32_t index : primitive.indices)
+                if (index >= n)
+                    throw_input_error(file, where, "vertex index " + std::to_string(index) + " out of range (" +
+                                                       std::to_string(n) + " vertices)");
+            auto check_size = [&](std::size_t size, const char* what) {
+                if (size != 0 && size != n) throw_input_error(file, where, std::string(what) + " count differs from position count");
+            };
+            check_size(primitive.normals.size(), "normal");
+            check_size(primitive.uvs.size(), "texture coordinate");
+            check_size(primitive.tangents.size(), "tangent");
+            for (const auto& v : primitive.positions)
+                if (!v.allFinite()) throw_input_error(file, where, "position is NaN or infinite");
+            for (const auto& v : primitive.normals)
+                if (!v.allFinite()) throw_input_error(file, where, "normal is NaN or infinite");
+            for (const auto& v : primitive.uvs)
+                if (!v.allFinite()) throw_input_error(file, where, "texture coordinate is NaN or infinite");
+            if (primitive.material >= int(model.materials.size()))
+                throw_input_error(file, where, "material index out of range");
+            any_triangle = any_triangle || !primitive.indices.empty();
+        }
+        if (node.scope && !(node.scope->center.allFinite() && node.scope->axes.allFinite() &&
+                            node.scope->half_extents.allFinite()))
+            throw_input_error(file, place, "scope is NaN or infinite");
+    }
+    for (const Material& material : model.materials)
+        for (int texture : {material.base_color_texture, material.normal_texture})
+            if (texture >= int(model.textures.size()))
+                throw_input_error(file, "material '" + material.name + "'", "texture index out of range");
+    if (!any_triangle) throw_input_error(file, "", "the scene has no triangles (empty model)");
+}
+
+}  // namespace boxlod

@@ -1,0 +1,95 @@
+// The scene model (DESIGN.md: Scene model): a tree of nodes, each with its own
+// geometry in world space, an optional scope (the grammar's oriented box) and
+// the rule that made it.
+#pragma once
+#include "renderer/image.h"
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace boxlod {
+
+// An oriented box: center, three orthonormal axes (columns), half-extents.
+struct Scope {
+    Eigen::Vector3f center = Eigen::Vector3f::Zero();
+    Eigen::Matrix3f axes = Eigen::Matrix3f::Identity();
+    Eigen::Vector3f half_extents = Eigen::Vector3f::Zero();
+};
+
+struct Texture {
+    std::string name;  // file name or label; a hint for export
+    Image8 image;      // RGBA8, as stored (sRGB for colour, linear for normal maps)
+};
+
+struct Material {
+    std::string name;
+    Eigen::Vector4f base_color{1, 1, 1, 1};  // linear RGBA
+    int base_color_texture = -1;             // index into Model::textures
+    int normal_texture = -1;
+    Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};
+    float shininess = 32;
+    bool double_sided = false;
+};
+
+// A triangle list with one material. `polygon_count` is how many polygons the
+// source stored (a quad is one polygon, two triangles): the manual's # Faces.
+struct Primitive {
+    std::vector<Eigen::Vector3f> positions;
+    std::vector<Eigen::Vector3f> normals;   // empty: flat shading
+    std::vector<Eigen::Vector2f> uvs;       // empty: untextured
+    std::vector<Eigen::Vector4f> tangents;  // xyz + handedness w; may be empty
+    std::vector<std::uint32_t> indices;     // 3 per triangle
+    std::size_t polygon_count = 0;
+    int material = -1;  // index into Model::materials; -1 = default material
+
+    std::size_t triangle_count() const { return indices.size() / 3; }
+};
+
+struct Node {
+    std::string name;
+    std::string rule;  // grammar symbol that made the node, if any
+    std::vector<Primitive> primitives;
+    std::optional<Scope> scope;
+    std::string instance_of;  // source mesh shared with other nodes before expansion
+    int parent = -1;
+    std::vector<int> children;
+
+    bool has_geometry() const { return !primitives.empty(); }
+};
+
+struct Model {
+    std::vector<Node> nodes;  // nodes[0] is the root; a parent comes before its children
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::string source;  // the file it came from
+    // An LoD that boxlod exported: viewable, never simplified again.
+    bool is_lod = false;
+    std::vector<std::pair<std::string, std::string>> lod_params;
+};
+
+// Appends a node under `parent` (-1 for the root) and returns its index.
+int add_node(Model& model, int parent, std::string name);
+
+// Longest root-to-leaf path counted in edges (a lone root has depth 0).
+int tree_depth(const Model& model);
+
+struct Bounds {
+    Eigen::Vector3f min{Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity())};
+    Eigen::Vector3f max{Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity())};
+    bool empty() const { return !(min.array() <= max.array()).all(); }
+    void add(const Eigen::Vector3f& p) { min = min.cwiseMin(p); max = max.cwiseMax(p); }
+    Eigen::Vector3f size() const { return empty() ? Eigen::Vector3f::Zero() : Eigen::Vector3f(max - min); }
+    Eigen::Vector3f center() const { return (min + max) / 2; }
+};
+
+Bounds model_bounds(const Model& model);
+
+// Checks the invariants every importer guarantees (indices in range, finite
+// numbers, a tree, some geometry); throws InputError naming `model.source`.
+void validate_model(const Model& model);
+
+}  // namespace boxlod
