@@ -3,7 +3,7 @@
 # from Debian's assimp-testmodels), describe it, keep it as glTF.
 set -euo pipefail
 build=${1:-build}
-boxlod="$build/toolkit/boxlod"
+boxlod="$build/toolkit/cli/boxlod"
 out=out/demo
 mkdir -p "$out"
 model=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
