@@ -49,15 +49,16 @@ Model sample_model() {
     brick.base_color = {0.8f, 0.4f, 0.3f, 1};
     brick.base_color_texture = 0;
     brick.normal_texture = 1;
+    brick.height_texture = 2;
     brick.specular_color = {0.1f, 0.2f, 0.3f};
     brick.shininess = 12.5f;
     Material glass;
     glass.name = "glass";
     glass.double_sided = true;
     model.materials = {brick, glass};
-    for (int t = 0; t < 2; ++t) {
+    for (int t = 0; t < 3; ++t) {
         Texture texture;
-        texture.name = t ? "brick_normal.png" : "brick_color.png";
+        texture.name = std::vector<std::string>{"brick_color.png", "brick_normal.png", "brick_height.png"}[t];
         texture.image = Image8(3, 2, 4);
         for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
         model.textures.push_back(texture);
@@ -98,6 +99,7 @@ void expect_same_model(const Model& a, const Model& b) {
         EXPECT_EQ(a.materials[i].base_color, b.materials[i].base_color);
         EXPECT_EQ(a.materials[i].base_color_texture, b.materials[i].base_color_texture);
         EXPECT_EQ(a.materials[i].normal_texture, b.materials[i].normal_texture);
+        EXPECT_EQ(a.materials[i].height_texture, b.materials[i].height_texture);
         EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
         EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
         EXPECT_EQ(a.materials[i].double_sided, b.materials[i].double_sided);

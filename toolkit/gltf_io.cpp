@@ -269,6 +269,11 @@ Model import_gltf(const std::string& path) {
         if (const tinygltf::Value* extras = boxlod_extras(in.extras)) {
             if (extras->Has("specular")) material.specular_color = number_array<3>(extras->Get("specular"), reader, place + " specular");
             if (extras->Has("shininess")) material.shininess = float(extras->Get("shininess").GetNumberAsDouble());
+            if (extras->Has("height_texture") && extras->Get("height_texture").IsNumber()) {
+                int texture = int(extras->Get("height_texture").GetNumberAsDouble());
+                if (texture < 0 || texture >= int(gltf.images.size())) reader.fail(place, "height_texture out of range");
+                material.height_texture = texture;
+            }
         }
         model.materials.push_back(material);
     }
@@ -445,8 +450,11 @@ void export_gltf(const Model& model, const std::string& path) {
         out.pbrMetallicRoughness.roughnessFactor = 1;
         out.normalTexture.index = material.normal_texture;
         out.doubleSided = material.double_sided;
-        out.extras = boxlod_object({{"specular", number_array(material.specular_color.data(), 3)},
-                                    {"shininess", tinygltf::Value(double(material.shininess))}});
+        tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
+                                       {"shininess", tinygltf::Value(double(material.shininess))}};
+        // glTF has no height-map slot; the image index travels in extras.
+        if (material.height_texture >= 0) extras["height_texture"] = tinygltf::Value(material.height_texture);
+        out.extras = boxlod_object(std::move(extras));
         w.gltf.materials.push_back(out);
     }
     for (const Node& node : model.nodes) {

@@ -74,7 +74,7 @@ void validate_model(const Model& model) {
             throw_input_error(file, place, "scope is NaN or infinite");
     }
     for (const Material& material : model.materials)
-        for (int texture : {material.base_color_texture, material.normal_texture})
+        for (int texture : {material.base_color_texture, material.normal_texture, material.height_texture})
             if (texture >= int(model.textures.size()))
                 throw_input_error(file, "material '" + material.name + "'", "texture index out of range");
     if (!any_triangle) throw_input_error(file, "", "the scene has no triangles (empty model)");

@@ -30,6 +30,7 @@ struct Material {
     Eigen::Vector4f base_color{1, 1, 1, 1};  // linear RGBA
     int base_color_texture = -1;             // index into Model::textures
     int normal_texture = -1;
+    int height_texture = -1;  // baked LoD faces: 1 at the face plane, 0 at the opposite face
     Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};
     float shininess = 32;
     bool double_sided = false;

@@ -15,5 +15,6 @@ struct Subcommand {
 
 Subcommand info_subcommand();
 Subcommand convert_subcommand();
+Subcommand render_subcommand();
 
 }  // namespace boxlod

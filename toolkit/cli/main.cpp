@@ -8,7 +8,7 @@
 
 namespace {
 
-std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(), boxlod::convert_subcommand()}; }
+std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(), boxlod::convert_subcommand(), boxlod::render_subcommand()}; }
 
 void print_overview() {
     std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"

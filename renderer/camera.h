@@ -1,0 +1,38 @@
+// Cameras (DESIGN.md: Rendering): right-handed, Y up, looking down -Z in view
+// space; OpenGL clip space (NDC z in [-1, 1]).
+#pragma once
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct Camera {
+    Eigen::Vector3f position{0, 0, 5};
+    Eigen::Vector3f target{0, 0, 0};
+    Eigen::Vector3f up{0, 1, 0};
+    bool orthographic = false;
+    float fovy_degrees = 45;                             // perspective: vertical field of view
+    float left = -1, right = 1, bottom = -1, top = 1;  // orthographic: window in view space
+    float near_plane = 0.1f, far_plane = 100;
+};
+
+Eigen::Matrix4f view_matrix(const Camera& camera);
+// `aspect` = width / height; ignored for orthographic cameras, whose window is explicit.
+Eigen::Matrix4f projection_matrix(const Camera& camera, float aspect);
+
+// The manual's 26 camera positions: the directions in {-1,0,1}^3 other than 0,
+// named like "+X", "-Y", "+X+Y+Z".
+std::vector<std::string> camera_position_names();
+std::optional<Eigen::Vector3f> camera_direction(const std::string& name);
+
+// Camera at center + normalize(direction) * distance looking at center, up = +Y
+// (-Z for straight down +Y, +Z for -Y); near/far fitted to a bounding sphere.
+Camera camera_at_position(const Eigen::Vector3f& direction, const Eigen::Vector3f& center, float distance,
+                          float fovy_degrees, float scene_radius);
+
+// Distance at which a sphere of `radius` fills the vertical field of view (with a margin).
+float framing_distance(float radius, float fovy_degrees);
+
+}  // namespace boxlod

@@ -1,0 +1,201 @@
+#include "renderer/rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace boxlod {
+namespace {
+
+// Guard band: x and y are clipped only at +-guard_band * w, far outside the
+// screen, so almost no triangle needs clipping there; it keeps snapped
+// coordinates inside int32 for viewports up to 16k pixels.
+constexpr float guard_band = 16;
+constexpr int max_polygon = 9;  // a triangle clipped by 6 planes
+
+struct ClipVertex {
+    Eigen::Vector4f position;
+    Eigen::Vector3f weights;  // barycentric weights of the source triangle
+};
+
+float plane_distance(const Eigen::Vector4f& v, int plane) {
+    switch (plane) {
+        case 0: return v.z() + v.w();  // near
+        case 1: return v.w() - v.z();  // far
+        case 2: return v.x() + guard_band * v.w();
+        case 3: return guard_band * v.w() - v.x();
+        case 4: return v.y() + guard_band * v.w();
+        default: return guard_band * v.w() - v.y();
+    }
+}
+
+// Sutherland-Hodgman against one plane; returns the new vertex count.
+int clip_polygon(const ClipVertex* in, int count, int plane, ClipVertex* out) {
+    int n = 0;
+    for (int i = 0; i < count; ++i) {
+        const ClipVertex& a = in[i];
+        const ClipVertex& b = in[(i + 1) % count];
+        float da = plane_distance(a.position, plane), db = plane_distance(b.position, plane);
+        if (da >= 0) out[n++] = a;
+        if ((da >= 0) != (db >= 0)) {
+            float t = da / (da - db);
+            out[n++] = {a.position + (b.position - a.position) * t, a.weights + (b.weights - a.weights) * t};
+        }
+    }
+    return n;
+}
+
+std::int64_t edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t px, std::int64_t py) {
+    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+}
+
+std::int64_t doubled_area(const ScreenTriangle& t) {
+    return edge(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
+}
+
+}  // namespace
+
+void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+    int outside_all = 0x3f, outside_any = 0;
+    for (int i = 0; i < 3; ++i) {
+        int code = 0;
+        for (int plane = 0; plane < 6; ++plane)
+            if (!(plane_distance(clip[i], plane) >= 0)) code |= 1 << plane;  // NaN counts as outside
+        outside_all &= code;
+        outside_any |= code;
+    }
+    if (outside_all) return;
+
+    ClipVertex buffers[2][max_polygon];
+    ClipVertex* polygon = buffers[0];
+    int count = 3;
+    for (int i = 0; i < 3; ++i) polygon[i] = {clip[i], Eigen::Vector3f::Unit(i)};
+    if (outside_any) {
+        for (int plane = 0; plane < 6 && count >= 3; ++plane) {
+            if (!(outside_any & (1 << plane))) continue;
+            ClipVertex* next = polygon == buffers[0] ? buffers[1] : buffers[0];
+            count = clip_polygon(polygon, count, plane, next);
+            polygon = next;
+        }
+        if (count < 3) return;
+    }
+
+    ScreenTriangle snapped[max_polygon];
+    float scale = float(1 << subpixel_bits);
+    for (int i = 0; i < count; ++i) {
+        const Eigen::Vector4f& p = polygon[i].position;
+        float inv_w = 1 / p.w();
+        float wx = (p.x() * inv_w + 1) * 0.5f * float(viewport.width);
+        float wy = (1 - p.y() * inv_w) * 0.5f * float(viewport.height);
+        snapped[i].x[0] = std::int32_t(std::floor(wx * scale + 0.5f));
+        snapped[i].y[0] = std::int32_t(std::floor(wy * scale + 0.5f));
+        snapped[i].z[0] = std::clamp((p.z() * inv_w + 1) * 0.5f, 0.0f, 1.0f);
+        snapped[i].inv_w[0] = inv_w;
+    }
+    for (int k = 1; k + 1 < count; ++k) {
+        ScreenTriangle t;
+        const int corners[3] = {0, k, k + 1};
+        for (int i = 0; i < 3; ++i) {
+            const ScreenTriangle& v = snapped[corners[i]];
+            t.x[i] = v.x[0], t.y[i] = v.y[0], t.z[i] = v.z[0], t.inv_w[i] = v.inv_w[0];
+        }
+        std::int64_t area = doubled_area(t);
+        if (area == 0) continue;
+        // Counter-clockwise in NDC (y up) is negative area in window space (y down).
+        bool front = area < 0;
+        if ((culling == Culling::back && !front) || (culling == Culling::front && front)) continue;
+        t.batch = batch;
+        t.triangle = triangle;
+        if (outside_any) {
+            t.clipped = std::int32_t(weights.size());
+            weights.push_back({{polygon[corners[0]].weights, polygon[corners[1]].weights, polygon[corners[2]].weights}});
+        }
+        out.push_back(t);
+    }
+}
+
+Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double py) {
+    double s = 1.0 / (1 << subpixel_bits);
+    double x0 = t.x[0] * s, y0 = t.y[0] * s, x1 = t.x[1] * s, y1 = t.y[1] * s, x2 = t.x[2] * s, y2 = t.y[2] * s;
+    double area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
+    double l0 = ((x2 - x1) * (py - y1) - (y2 - y1) * (px - x1)) / area;
+    double l1 = ((x0 - x2) * (py - y2) - (y0 - y2) * (px - x2)) / area;
+    return {l0, l1, 1 - l0 - l1};
+}
+
+Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
+                                    double py) {
+    Eigen::Vector3d l = screen_barycentrics(t, px, py);
+    Eigen::Vector3d q(l[0] * t.inv_w[0], l[1] * t.inv_w[1], l[2] * t.inv_w[2]);
+    double sum = q.sum();
+    Eigen::Vector3f b = sum != 0 ? Eigen::Vector3f((q / sum).cast<float>()) : Eigen::Vector3f(1, 0, 0);
+    if (t.clipped < 0) return b;
+    const ClippedWeights& w = weights[t.clipped];
+    return w.weights[0] * b[0] + w.weights[1] * b[1] + w.weights[2] * b[2];
+}
+
+bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1) {
+    const std::int32_t half = 1 << (subpixel_bits - 1);
+    std::int32_t min_x = std::min({t.x[0], t.x[1], t.x[2]}), max_x = std::max({t.x[0], t.x[1], t.x[2]});
+    std::int32_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
+    // Pixel x is a candidate when its centre x * 256 + 128 lies in [min_x, max_x].
+    x0 = std::max({(min_x - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_x0});
+    y0 = std::max({(min_y - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_y0});
+    x1 = std::min({(max_x - half) >> subpixel_bits, viewport.width - 1, viewport.scissor_x1 - 1});
+    y1 = std::min({(max_y - half) >> subpixel_bits, viewport.height - 1, viewport.scissor_y1 - 1});
+    return x0 <= x1 && y0 <= y1;
+}
+
+void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep) {
+    // Orient to positive area; vertex o[i] of the stored triangle is corner i here.
+    std::int64_t area = doubled_area(t);
+    int o[3] = {0, 1, 2};
+    if (area < 0) std::swap(o[1], o[2]), area = -area;
+    const std::int64_t X[3] = {t.x[o[0]], t.x[o[1]], t.x[o[2]]}, Y[3] = {t.y[o[0]], t.y[o[1]], t.y[o[2]]};
+    const double Z[3] = {t.z[o[0]], t.z[o[1]], t.z[o[2]]};
+
+    const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
+    std::int64_t min_x = std::min({X[0], X[1], X[2]}), max_x = std::max({X[0], X[1], X[2]});
+    std::int64_t min_y = std::min({Y[0], Y[1], Y[2]}), max_y = std::max({Y[0], Y[1], Y[2]});
+    int x0 = std::max<int>(int((min_x - half + one - 1) >> subpixel_bits), tile.x0);
+    int y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
+    int x1 = std::min<int>(int((max_x - half) >> subpixel_bits), tile.x1 - 1);
+    int y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
+    if (x0 > x1 || y0 > y1) return;
+
+    // Edge k runs from corner k+1 to corner k+2 (opposite corner k); inside is E >= 0.
+    std::int64_t step_x[3], step_y[3], row[3], bias[3];
+    const std::int64_t px = std::int64_t(x0) * one + half, py = std::int64_t(y0) * one + half;
+    for (int k = 0; k < 3; ++k) {
+        int a = (k + 1) % 3, b = (k + 2) % 3;
+        std::int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
+        // Top-left rule (y down): a left edge has dy < 0, a top edge dy == 0 and dx > 0.
+        bool top_left = dy < 0 || (dy == 0 && dx > 0);
+        bias[k] = top_left ? 0 : 1;  // E >= 0 becomes E > 0 off the top and left edges
+        row[k] = edge(X[a], Y[a], X[b], Y[b], px, py) - bias[k];
+        step_x[k] = -dy * one;
+        step_y[k] = dx * one;
+    }
+    const double inv_area = 1.0 / double(area);
+    for (int y = y0; y <= y1; ++y) {
+        std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
+        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
+        for (int x = x0; x <= x1; ++x) {
+            if ((e0 | e1 | e2) >= 0) {
+                // Depth straight from the exact edge values: the same at a pixel however the screen is split.
+                double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
+                float zf = float(z);
+                int i = x - tile.x0;
+                if (zf < depth[i] && (!keep || (*keep)(t, x, y))) {
+                    depth[i] = zf;
+                    ids[i] = id;
+                }
+            }
+            e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
+        }
+        row[0] += step_y[0], row[1] += step_y[1], row[2] += step_y[2];
+    }
+}
+
+}  // namespace boxlod

@@ -1,0 +1,65 @@
+// The rasterizer (DESIGN.md: Rendering): homogeneous clipping, fixed-point
+// snapping with 8 sub-pixel bits, edge functions with the top-left fill rule,
+// depth test LESS. It fills a visibility buffer (triangle id + depth per
+// pixel); shading happens afterwards, once per visible pixel.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace boxlod {
+
+constexpr int subpixel_bits = 8;
+constexpr std::uint32_t no_triangle = 0xffffffffu;
+
+// A triangle after clipping and snapping, ready to rasterize and to shade.
+struct ScreenTriangle {
+    std::int32_t x[3], y[3];  // snapped window coordinates, 8 fractional bits, y down
+    float z[3];               // window depth in [0, 1]
+    float inv_w[3];           // 1 / clip w, for perspective-correct interpolation
+    std::uint32_t batch, triangle;  // the source triangle
+    std::int32_t clipped = -1;      // index into ClippedWeights, -1 = not clipped (vertex i is source vertex i)
+};
+
+// For clipped triangles: each vertex as barycentric weights of its source triangle.
+struct ClippedWeights {
+    Eigen::Vector3f weights[3];
+};
+
+struct Viewport {
+    int width = 0, height = 0;
+    int scissor_x0 = 0, scissor_y0 = 0, scissor_x1 = 1 << 30, scissor_y1 = 1 << 30;  // pixels [x0, x1) x [y0, y1)
+};
+
+enum class Culling { none, back, front };
+
+// Clips one clip-space triangle against the view volume (near and far exactly,
+// x and y against a guard band) and appends the snapped pieces. Triangles
+// facing away are dropped when culled, otherwise reordered to positive area.
+void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
+
+// Screen-space barycentric coordinates (linear in x, y) at a window point.
+Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double py);
+// Perspective-correct barycentrics of the source triangle at a window point.
+Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
+                                    double py);
+
+// Pixels [x0, x1) x [y0, y1) of the visibility buffer, row stride `stride`.
+struct TileTarget {
+    int x0, y0, x1, y1, stride;
+    float* depth;
+    std::uint32_t* id;
+};
+
+// Rasterizes `t` (id `id`) into the tile: every pixel whose centre the fill
+// rule assigns to it and that passes depth LESS (and `keep`, if given: the
+// alpha test) gets depth and id.
+using FragmentTest = std::function<bool(const ScreenTriangle& t, int x, int y)>;
+void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep);
+
+// Pixel bounding box of a screen triangle, inclusive, clamped to the viewport and scissor.
+bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1);
+
+}  // namespace boxlod

@@ -1,0 +1,384 @@
+#include "renderer/renderer.h"
+
+#include "renderer/parallel.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace boxlod {
+
+bool parse_render_mode(const std::string& name, RenderMode& mode) {
+    for (RenderMode m : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo})
+        if (name == render_mode_name(m)) {
+            mode = m;
+            return true;
+        }
+    return false;
+}
+
+const char* render_mode_name(RenderMode mode) {
+    switch (mode) {
+        case RenderMode::untextured: return "untextured";
+        case RenderMode::normal: return "normal";
+        case RenderMode::parallax: return "parallax";
+        case RenderMode::pom: return "pom";
+        case RenderMode::albedo: return "albedo";
+    }
+    return "?";
+}
+
+Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
+    Frame frame;
+    frame.width = width;
+    frame.height = height;
+    std::size_t n = std::size_t(width) * height;
+    frame.color.assign(n, Eigen::Vector4f(background.x(), background.y(), background.z(), 0));
+    frame.depth.assign(n, std::numeric_limits<float>::infinity());
+    frame.normal.assign(n, Eigen::Vector3f::Zero());
+    return frame;
+}
+
+namespace {
+
+constexpr int tile_size = 64;
+constexpr std::size_t triangles_per_chunk = 1 << 15;
+constexpr int chunk_index_bits = 19;  // a chunk of 2^15 triangles clips into at most 7 * 2^15 < 2^19 pieces
+
+// Screen triangles of one chunk of the input, binned to tiles (CSR layout).
+struct Chunk {
+    std::vector<ScreenTriangle> triangles;
+    std::vector<ClippedWeights> weights;
+    std::vector<std::uint32_t> bin_start;  // per tile, into bin_items; size tiles + 1
+    std::vector<std::uint32_t> bin_items;  // triangle indices within this chunk, in submission order
+};
+
+struct Tiling {
+    int columns, rows;
+    int count() const { return columns * rows; }
+};
+
+// The interpolated inputs of one pixel.
+struct Fragment {
+    Eigen::Vector3f position, normal, geometric_normal;
+    Eigen::Vector2f uv{0, 0}, duv_dx{0, 0}, duv_dy{0, 0};
+    // Tangent frame: tangent along +u, bitangent up the image (against +v), as
+    // glTF's B = cross(N, T) * w; normal maps store (T, B, N) components.
+    Eigen::Vector3f tangent{1, 0, 0}, bitangent{0, 1, 0};
+    bool has_uv = false;
+};
+
+struct Context {
+    const std::vector<Batch>& batches;
+    const RenderSettings& settings;
+    const std::vector<Chunk>& chunks;
+    Eigen::Vector3f eye;
+};
+
+const ScreenTriangle& triangle_of(const Context& c, std::uint32_t id, const std::vector<ClippedWeights>*& weights) {
+    const Chunk& chunk = c.chunks[id >> chunk_index_bits];
+    weights = &chunk.weights;
+    return chunk.triangles[id & ((1u << chunk_index_bits) - 1)];
+}
+
+template <typename T>
+T interpolate(const std::vector<T>& values, const std::uint32_t* v, const Eigen::Vector3f& b) {
+    return values[v[0]] * b[0] + values[v[1]] * b[1] + values[v[2]] * b[2];
+}
+
+Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y,
+                       bool need_derivatives) {
+    const Mesh& mesh = *c.batches[t.batch].mesh;
+    const std::uint32_t* v = &mesh.indices[std::size_t(t.triangle) * 3];
+    double px = x + 0.5, py = y + 0.5;
+    Eigen::Vector3f b = source_barycentrics(t, weights, px, py);
+    Fragment f;
+    const Eigen::Vector3f &p0 = mesh.positions[v[0]], &p1 = mesh.positions[v[1]], &p2 = mesh.positions[v[2]];
+    f.position = p0 * b[0] + p1 * b[1] + p2 * b[2];
+    Eigen::Vector3f e1 = p1 - p0, e2 = p2 - p0;
+    f.geometric_normal = e1.cross(e2);
+    float length = f.geometric_normal.norm();
+    f.geometric_normal = length > 0 ? Eigen::Vector3f(f.geometric_normal / length) : Eigen::Vector3f(0, 0, 1);
+    f.normal = f.geometric_normal;
+    if (!mesh.normals.empty()) {
+        Eigen::Vector3f n = interpolate(mesh.normals, v, b);
+        if (n.squaredNorm() > 0) f.normal = n.normalized();
+    }
+    if (!mesh.uvs.empty()) {
+        f.has_uv = true;
+        f.uv = interpolate(mesh.uvs, v, b);
+        if (need_derivatives) {
+            f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px + 1, py)) - f.uv;
+            f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px, py + 1)) - f.uv;
+        }
+        if (!mesh.tangents.empty()) {
+            Eigen::Vector4f t4 = interpolate(mesh.tangents, v, b);
+            Eigen::Vector3f tangent = t4.head<3>();
+            tangent -= f.normal * f.normal.dot(tangent);  // Gram-Schmidt against the shading normal
+            if (tangent.squaredNorm() > 0) {
+                f.tangent = tangent.normalized();
+                f.bitangent = f.normal.cross(f.tangent) * (t4.w() < 0 ? -1.0f : 1.0f);
+            }
+        } else {
+            // Tangent frame from the triangle's uv gradient (Lengyel 2001).
+            const Eigen::Vector2f &u0 = mesh.uvs[v[0]], &u1 = mesh.uvs[v[1]], &u2 = mesh.uvs[v[2]];
+            Eigen::Vector2f d1 = u1 - u0, d2 = u2 - u0;
+            float det = d1.x() * d2.y() - d2.x() * d1.y();
+            if (det != 0) {
+                Eigen::Vector3f tangent = (e1 * d2.y() - e2 * d1.y()) / det;
+                Eigen::Vector3f bitangent = (e2 * d1.x() - e1 * d2.x()) / det;
+                tangent -= f.normal * f.normal.dot(tangent);
+                if (tangent.squaredNorm() > 0) {
+                    f.tangent = tangent.normalized();
+                    // The bitangent points up the image, against dp/dv (glTF: uv origin at the top left).
+                    float handedness = f.normal.cross(f.tangent).dot(bitangent) > 0 ? -1.0f : 1.0f;
+                    f.bitangent = f.normal.cross(f.tangent) * handedness;
+                }
+            }
+        }
+    }
+    return f;
+}
+
+Eigen::Vector4f sample_surface(const MipTexture* texture, const Fragment& f, const Eigen::Vector2f& uv) {
+    return sample(*texture, uv, mip_level(*texture, f.duv_dx, f.duv_dy));
+}
+
+// MipTexture coordinates displaced by the height map (tangent-space view vector).
+Eigen::Vector2f parallax_uv(const Context& c, const Surface& s, const Fragment& f, const Eigen::Vector3f& view) {
+    Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
+    // uv v grows downwards in the image while the bitangent points up the surface.
+    Eigen::Vector2f direction(v.x(), -v.y());
+    const RenderSettings& r = c.settings;
+    if (r.mode == RenderMode::parallax) {
+        // Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy.
+        float h = sample_surface(s.height, f, f.uv).x();
+        return f.uv + direction * (h * r.parallax_scale + r.parallax_bias);
+    }
+    // Parallax occlusion mapping (Tatarchuk 2006): march the view ray down from the
+    // surface (height 1) in steps; refine linearly between the last two samples.
+    float cos_view = std::max(v.z(), 0.05f);
+    int steps = int(std::lround(8 + 24 * (1 - cos_view)));
+    Eigen::Vector2f total = direction / cos_view * r.parallax_scale;
+    Eigen::Vector2f step = total / float(steps);
+    float layer = 1.0f / float(steps), ray = 1, previous_ray = 1;
+    Eigen::Vector2f uv = f.uv, previous_uv = f.uv;
+    float h = sample_surface(s.height, f, uv).x(), previous_h = h;
+    for (int i = 0; i < steps && h < ray; ++i) {
+        previous_uv = uv, previous_ray = ray, previous_h = h;
+        uv -= step;
+        ray -= layer;
+        h = sample_surface(s.height, f, uv).x();
+    }
+    float before = previous_h - previous_ray, after = h - ray;  // sign change between the two samples
+    float t = before - after != 0 ? before / (before - after) : 0;
+    return previous_uv + (uv - previous_uv) * std::clamp(t, 0.0f, 1.0f);
+}
+
+struct Shaded {
+    Eigen::Vector3f color, normal;
+};
+
+Shaded shade(const Context& c, const Surface& s, Fragment& f) {
+    const RenderSettings& r = c.settings;
+    Eigen::Vector3f view = (c.eye - f.position);
+    float view_length = view.norm();
+    view = view_length > 0 ? Eigen::Vector3f(view / view_length) : Eigen::Vector3f(0, 0, 1);
+    // Two-sided lighting: turn the frame towards the viewer.
+    if (f.geometric_normal.dot(view) < 0) {
+        f.geometric_normal = -f.geometric_normal;
+        f.normal = -f.normal;
+        f.bitangent = -f.bitangent;
+    }
+    bool textured = r.mode != RenderMode::untextured && f.has_uv;
+    Eigen::Vector2f uv = f.uv;
+    if (textured && s.height && (r.mode == RenderMode::parallax || r.mode == RenderMode::pom)) uv = parallax_uv(c, s, f, view);
+    Eigen::Vector4f albedo = s.base_color;
+    if (textured && s.color) albedo = albedo.cwiseProduct(sample_surface(s.color, f, uv));
+    Eigen::Vector3f normal = f.normal;
+    if (textured && s.normal && r.mode != RenderMode::albedo) {
+        Eigen::Vector4f texel = sample_surface(s.normal, f, uv);
+        Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
+        Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();
+        if (mapped.squaredNorm() > 0) normal = mapped.normalized();
+    }
+    if (r.mode == RenderMode::albedo) return {albedo.head<3>(), normal};
+    const Light& light = r.light;
+    Eigen::Vector3f to_light = (light.position - f.position).normalized();
+    Eigen::Vector3f halfway = (to_light + view).normalized();
+    float diffuse = std::max(0.0f, normal.dot(to_light));
+    float shininess = light.shininess > 0 ? light.shininess : s.shininess;
+    float specular = diffuse > 0 ? std::pow(std::max(0.0f, normal.dot(halfway)), shininess) : 0;
+    Eigen::Vector3f color = albedo.head<3>() * (light.ambient + light.diffuse * diffuse) + s.specular * (light.specular * specular);
+    return {color, normal};
+}
+
+// Distance in pixels from a pixel centre to the nearest edge of the source triangle.
+float edge_distance(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y) {
+    Eigen::Vector3d l = screen_barycentrics(t, x + 0.5, y + 0.5);
+    Eigen::Vector3d lx = screen_barycentrics(t, x + 1.5, y + 0.5) - l, ly = screen_barycentrics(t, x + 0.5, y + 1.5) - l;
+    float nearest = std::numeric_limits<float>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        if (t.clipped >= 0) {  // edges made by clipping are not edges of the model
+            const ClippedWeights& w = weights[t.clipped];
+            int a = (k + 1) % 3, b = (k + 2) % 3;
+            bool original = false;
+            for (int m = 0; m < 3; ++m) original = original || (w.weights[a][m] == 0 && w.weights[b][m] == 0);
+            if (!original) continue;
+        }
+        double gradient = std::hypot(lx[k], ly[k]);
+        if (gradient > 0) nearest = std::min(nearest, float(std::abs(l[k]) / gradient));
+    }
+    return nearest;
+}
+
+void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
+    int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
+    int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
+    x0 = std::max(x0, viewport.scissor_x0), y0 = std::max(y0, viewport.scissor_y0);
+    x1 = std::min(x1, viewport.scissor_x1), y1 = std::min(y1, viewport.scissor_y1);
+    if (x0 >= x1 || y0 >= y1) return;
+    float depth[tile_size * tile_size];
+    std::uint32_t ids[tile_size * tile_size];
+    std::fill(depth, depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
+    std::fill(ids, ids + tile_size * tile_size, no_triangle);
+    TileTarget target{x0, y0, x1, y1, tile_size, depth, ids};
+
+    for (std::size_t chunk_index = 0; chunk_index < c.chunks.size(); ++chunk_index) {
+        const Chunk& chunk = c.chunks[chunk_index];
+        for (std::uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
+            std::uint32_t i = chunk.bin_items[k];
+            const ScreenTriangle& t = chunk.triangles[i];
+            std::uint32_t id = std::uint32_t(chunk_index << chunk_index_bits) | i;
+            const Surface& surface = c.batches[t.batch].surface;
+            if (!surface.alpha_cutout || c.batches[t.batch].mesh->uvs.empty()) {
+                rasterize_triangle(t, id, target, nullptr);
+                continue;
+            }
+            FragmentTest keep = [&](const ScreenTriangle& tri, int x, int y) {
+                const Mesh& mesh = *c.batches[tri.batch].mesh;
+                Eigen::Vector3f b = source_barycentrics(tri, chunk.weights, x + 0.5, y + 0.5);
+                float alpha = surface.base_color.w();
+                if (surface.color) alpha *= sample(*surface.color, interpolate(mesh.uvs, &mesh.indices[std::size_t(tri.triangle) * 3], b)).w();
+                return alpha >= 0.5f;
+            };
+            rasterize_triangle(t, id, target, &keep);
+        }
+    }
+
+    bool need_derivatives = c.settings.mode != RenderMode::untextured;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            int local = (y - y0) * tile_size + (x - x0);
+            std::uint32_t id = ids[local];
+            if (id == no_triangle) continue;
+            const std::vector<ClippedWeights>* weights;
+            const ScreenTriangle& t = triangle_of(c, id, weights);
+            Fragment fragment = make_fragment(c, t, *weights, x, y, need_derivatives);
+            Shaded shaded = shade(c, c.batches[t.batch].surface, fragment);
+            if (c.settings.wireframe && edge_distance(t, *weights, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
+            std::size_t pixel = std::size_t(y) * frame.width + x;
+            frame.color[pixel] = Eigen::Vector4f(shaded.color.x(), shaded.color.y(), shaded.color.z(), 1);
+            frame.depth[pixel] = depth[local];
+            frame.normal[pixel] = shaded.normal;
+        }
+}
+
+}  // namespace
+
+void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame) {
+    Viewport viewport;
+    viewport.width = frame.width;
+    viewport.height = frame.height;
+    viewport.scissor_x0 = std::max(0, settings.scissor_x0);
+    viewport.scissor_y0 = std::max(0, settings.scissor_y0);
+    viewport.scissor_x1 = std::min(frame.width, settings.scissor_x1);
+    viewport.scissor_y1 = std::min(frame.height, settings.scissor_y1);
+    int threads = thread_count(settings.threads);
+    Eigen::Matrix4f view_projection =
+        projection_matrix(settings.camera, float(frame.width) / float(frame.height)) * view_matrix(settings.camera);
+
+    // Vertex stage: clip-space positions, in parallel over vertex ranges.
+    std::vector<std::vector<Eigen::Vector4f>> clip(batches.size());
+    struct Range { std::size_t batch, begin, end; };
+    std::vector<Range> vertex_ranges, triangle_ranges;
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        clip[b].resize(batches[b].mesh->positions.size());
+        for (std::size_t i = 0; i < clip[b].size(); i += triangles_per_chunk)
+            vertex_ranges.push_back({b, i, std::min(clip[b].size(), i + triangles_per_chunk)});
+        std::size_t triangles = batches[b].mesh->indices.size() / 3;
+        for (std::size_t i = 0; i < triangles; i += triangles_per_chunk)
+            triangle_ranges.push_back({b, i, std::min(triangles, i + triangles_per_chunk)});
+    }
+    parallel_for(vertex_ranges.size(), threads, [&](std::size_t r) {
+        const Range& range = vertex_ranges[r];
+        const auto& positions = batches[range.batch].mesh->positions;
+        for (std::size_t i = range.begin; i < range.end; ++i)
+            clip[range.batch][i] = view_projection * positions[i].homogeneous();
+    });
+
+    // Set-up and binning, in parallel over chunks of triangles.
+    Tiling tiling{(frame.width + tile_size - 1) / tile_size, (frame.height + tile_size - 1) / tile_size};
+    std::vector<Chunk> chunks(triangle_ranges.size());
+    parallel_for(chunks.size(), threads, [&](std::size_t r) {
+        const Range& range = triangle_ranges[r];
+        Chunk& chunk = chunks[r];
+        const Mesh& mesh = *batches[range.batch].mesh;
+        const auto& positions = clip[range.batch];
+        for (std::size_t t = range.begin; t < range.end; ++t) {
+            const std::uint32_t* v = &mesh.indices[t * 3];
+            Eigen::Vector4f corners[3] = {positions[v[0]], positions[v[1]], positions[v[2]]};
+            setup_triangle(corners, std::uint32_t(range.batch), std::uint32_t(t), settings.culling, viewport,
+                           chunk.triangles, chunk.weights);
+        }
+        // Count per tile, then fill: bins keep submission order.
+        std::vector<int> bounds(chunk.triangles.size() * 4);
+        std::vector<std::uint32_t> counts(tiling.count() + 1, 0);
+        for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
+            int* b = &bounds[i * 4];
+            if (!triangle_pixel_bounds(chunk.triangles[i], viewport, b[0], b[1], b[2], b[3])) {
+                b[0] = 1, b[2] = 0;  // empty
+                continue;
+            }
+            for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
+                for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx) ++counts[ty * tiling.columns + tx];
+        }
+        chunk.bin_start.assign(tiling.count() + 1, 0);
+        for (int tile = 0; tile < tiling.count(); ++tile) chunk.bin_start[tile + 1] = chunk.bin_start[tile] + counts[tile];
+        chunk.bin_items.resize(chunk.bin_start.back());
+        std::vector<std::uint32_t> fill(chunk.bin_start.begin(), chunk.bin_start.end() - 1);
+        for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
+            const int* b = &bounds[i * 4];
+            if (b[0] > b[2]) continue;
+            for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
+                for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx)
+                    chunk.bin_items[fill[ty * tiling.columns + tx]++] = std::uint32_t(i);
+        }
+    });
+
+    // Tiles: each owned by one thread; triangles replayed in submission order.
+    Context context{batches, settings, chunks, settings.camera.position};
+    if (settings.camera.orthographic) {
+        // An orthographic view has parallel view rays: place the "eye" far back along them.
+        Eigen::Vector3f forward = (settings.camera.target - settings.camera.position).normalized();
+        context.eye = settings.camera.position - forward * 1e6f;
+    }
+    parallel_for(std::size_t(tiling.count()), threads,
+                 [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
+}
+
+Image8 frame_to_srgb8(const Frame& frame) {
+    Image8 image(frame.width, frame.height, 3);
+    for (std::size_t i = 0; i < frame.color.size(); ++i)
+        for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = linear_to_srgb(frame.color[i][c]);
+    return image;
+}
+
+Image8 coverage_mask(const Frame& frame) {
+    Image8 mask(frame.width, frame.height, 1);
+    for (std::size_t i = 0; i < frame.color.size(); ++i) mask.pixels[i] = frame.color[i].w() > 0 ? 255 : 0;
+    return mask;
+}
+
+}  // namespace boxlod

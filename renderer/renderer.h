@@ -1,0 +1,87 @@
+// The CPU renderer: draws flat batches (vertex arrays + surface) into a frame,
+// deterministically and in parallel (DESIGN.md: Rendering, Determinism).
+//
+//   Frame frame = make_frame(1024, 768, background);
+//   render(batches, settings, frame);
+//   write_png("out.png", frame_to_srgb8(frame));
+#pragma once
+#include "renderer/camera.h"
+#include "renderer/image.h"
+#include "renderer/rasterizer.h"
+#include "renderer/texture.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+enum class RenderMode {
+    untextured,  // material colour only, vertex normals
+    normal,      // albedo x Blinn-Phong, normal from the normal map
+    parallax,    // texture coordinates offset by height (scale, bias), then as normal
+    pom,         // parallax occlusion mapping (ray march through the height map)
+    albedo,      // unlit albedo (material colour x texture): what baking records
+};
+bool parse_render_mode(const std::string& name, RenderMode& mode);
+const char* render_mode_name(RenderMode mode);
+
+// A triangle list; every attribute but positions may be empty.
+struct Mesh {
+    std::vector<Eigen::Vector3f> positions, normals;
+    std::vector<Eigen::Vector2f> uvs;
+    std::vector<Eigen::Vector4f> tangents;  // xyz + handedness w
+    std::vector<std::uint32_t> indices;
+};
+
+struct Surface {
+    Eigen::Vector4f base_color{1, 1, 1, 1};  // linear
+    const MipTexture* color = nullptr;          // sRGB-decoded albedo, alpha
+    const MipTexture* normal = nullptr;         // tangent-space normal map
+    const MipTexture* height = nullptr;         // 1 = surface, 0 = deepest
+    Eigen::Vector3f specular{0.2f, 0.2f, 0.2f};
+    float shininess = 32;
+    bool alpha_cutout = false;  // drop fragments whose alpha < 0.5 (baked box faces)
+};
+
+struct Batch {
+    const Mesh* mesh = nullptr;
+    Surface surface;
+};
+
+// The manual's light options.
+struct Light {
+    Eigen::Vector3f position{10, 20, 15};
+    float ambient = 0.25f, diffuse = 0.75f, specular = 0.25f;
+    float shininess = 0;  // > 0 overrides every material's shininess
+};
+
+struct RenderSettings {
+    Camera camera;
+    RenderMode mode = RenderMode::normal;
+    Light light;
+    float parallax_scale = 0.04f, parallax_bias = -0.02f;
+    Culling culling = Culling::none;
+    bool wireframe = false;
+    Eigen::Vector3f wireframe_color{0, 0, 0};
+    int threads = 0;  // 0 = all cores
+    // Pixels outside [x0, x1) x [y0, y1) are left untouched (split view).
+    int scissor_x0 = 0, scissor_y0 = 0, scissor_x1 = 1 << 30, scissor_y1 = 1 << 30;
+};
+
+// What a render leaves per pixel. Uncovered pixels keep the background,
+// alpha 0, depth +infinity, normal 0.
+struct Frame {
+    int width = 0, height = 0;
+    std::vector<Eigen::Vector4f> color;   // linear RGB, alpha = coverage
+    std::vector<float> depth;             // window depth in [0, 1]
+    std::vector<Eigen::Vector3f> normal;  // world-space shading normal, facing the camera
+};
+
+Frame make_frame(int width, int height, const Eigen::Vector3f& background);
+void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame);
+
+Image8 frame_to_srgb8(const Frame& frame);  // RGB, sRGB-encoded
+Image8 coverage_mask(const Frame& frame);   // 255 where covered
+
+}  // namespace boxlod
