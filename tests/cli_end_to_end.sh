@@ -24,9 +24,14 @@ check "convert to glb succeeds" test "$(status_of "$boxlod" convert "$ifc" -o "$
 check "converted glb has the same statistics" bash -c "'$boxlod' info '$ifc' > '$work/a'; '$boxlod' info '$work/fzk.glb' > '$work/b'; diff '$work/a' '$work/b'"
 check "convert twice gives identical bytes" bash -c "'$boxlod' convert '$ifc' -o '$work/fzk2.glb' && cmp -s '$work/fzk.glb' '$work/fzk2.glb'"
 
+check "render succeeds" test "$(status_of "$boxlod" render "$ifc" -o "$work/a.png" --width 320 --height 240 --threads 1 --exr "$work/a.exr" --coverage "$work/mask.png")" = 0
+check "render wrote PNG, EXR and mask" test -s "$work/a.png" -a -s "$work/a.exr" -a -s "$work/mask.png"
+check "render is identical with 1 and 2 threads" bash -c "'$boxlod' render '$ifc' -o '$work/b.png' --width 320 --height 240 --threads 2 >/dev/null && cmp -s '$work/a.png' '$work/b.png'"
+check "render --wireframe --axes --split-view succeeds" test "$(status_of "$boxlod" render "$ifc" -o "$work/c.png" --width 320 --height 240 --wireframe --axes --split-view "$work/fzk.glb" --mode untextured --camera -X+Y)" = 0
+
 check "--help exits 0" test "$(status_of "$boxlod" --help)" = 0
 check "--help lists info" grep -q "info" "$work/out"
-for command in info convert; do
+for command in info convert render; do
   check "$command --help exits 0" test "$(status_of "$boxlod" $command --help)" = 0
   check "$command --help shows usage" grep -q "usage: boxlod $command" "$work/out"
 done
@@ -48,6 +53,10 @@ bad "unknown format" info "$work/model.unknown"
 bad "unknown command" frobnicate
 bad "unknown option" info "$ifc" --frobnicate
 bad "missing argument" info
+bad "render with an unknown camera position" render "$ifc" -o "$work/x.png" --camera +Q
+bad "render with an unknown mode" render "$ifc" -o "$work/x.png" --mode shiny
+bad "render with a bad light" render "$ifc" -o "$work/x.png" --light 1,2
+check "no image after a failed render" test ! -e "$work/x.png"
 bad "convert to an unsupported format" convert "$ifc" -o "$work/out.obj"
 check "no half-written file after a failed convert" test ! -e "$work/out.obj"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"

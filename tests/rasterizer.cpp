@@ -1,0 +1,218 @@
+#include "renderer/rasterizer.h"
+
+#include "renderer/camera.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace boxlod;
+
+namespace {
+
+constexpr int size = 48;
+
+ScreenTriangle screen_triangle(Eigen::Vector2d a, Eigen::Vector2d b, Eigen::Vector2d c, float z) {
+    ScreenTriangle t;
+    Eigen::Vector2d v[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        t.x[i] = std::int32_t(std::lround(v[i].x() * 256));
+        t.y[i] = std::int32_t(std::lround(v[i].y() * 256));
+        t.z[i] = z;
+        t.inv_w[i] = 1;
+    }
+    t.batch = t.triangle = 0;
+    return t;
+}
+
+// How often each pixel was written: every triangle lies in front of the ones before.
+std::vector<int> coverage_counts(const std::vector<ScreenTriangle>& triangles) {
+    std::vector<float> depth(size * size, std::numeric_limits<float>::infinity());
+    std::vector<std::uint32_t> ids(size * size, no_triangle);
+    std::vector<int> counts(size * size, 0);
+    TileTarget tile{0, 0, size, size, size, depth.data(), ids.data()};
+    FragmentTest count = [&](const ScreenTriangle&, int x, int y) {
+        ++counts[y * size + x];
+        return true;
+    };
+    for (std::size_t i = 0; i < triangles.size(); ++i) rasterize_triangle(triangles[i], std::uint32_t(i), tile, &count);
+    return counts;
+}
+
+}  // namespace
+
+TEST(Rasterizer, FanOverRectangleTouchesEveryPixelExactlyOnce) {
+    // Centre on a pixel centre; spokes to 64 points of the rectangle's boundary,
+    // several of them through pixel centres (horizontal, vertical, diagonal).
+    const double x0 = 3.25, y0 = 4.75, x1 = 41.75, y1 = 40.25;
+    Eigen::Vector2d centre(20.5, 20.5);
+    std::vector<Eigen::Vector2d> ring;
+    for (int i = 0; i < 16; ++i) ring.emplace_back(x0 + (x1 - x0) * i / 16, y0);
+    for (int i = 0; i < 16; ++i) ring.emplace_back(x1, y0 + (y1 - y0) * i / 16);
+    for (int i = 0; i < 16; ++i) ring.emplace_back(x1 - (x1 - x0) * i / 16, y1);
+    for (int i = 0; i < 16; ++i) ring.emplace_back(x0, y1 - (y1 - y0) * i / 16);
+    ring.emplace_back(20.5, y0), ring.emplace_back(x1, 20.5), ring.emplace_back(40.25, 40.25);  // the diagonal through pixel centres
+    std::sort(ring.begin(), ring.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
+    });
+    std::vector<ScreenTriangle> fan;
+    for (std::size_t i = 0; i < ring.size(); ++i)
+        fan.push_back(screen_triangle(centre, ring[i], ring[(i + 1) % ring.size()], 1.0f - float(i) * 0.01f));
+    std::vector<int> counts = coverage_counts(fan);
+    int inside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            bool expected = x + 0.5 > x0 && x + 0.5 < x1 && y + 0.5 > y0 && y + 0.5 < y1;
+            ASSERT_EQ(counts[y * size + x], expected ? 1 : 0) << "pixel " << x << "," << y;
+            inside += expected;
+        }
+    EXPECT_EQ(inside, 39 * 35);
+}
+
+TEST(Rasterizer, TopLeftRuleOwnsTopAndLeftEdgesOnly) {
+    // A square with its edges exactly on pixel centres 2.5 .. 6.5.
+    auto a = Eigen::Vector2d(2.5, 2.5), b = Eigen::Vector2d(6.5, 2.5), c = Eigen::Vector2d(6.5, 6.5), d = Eigen::Vector2d(2.5, 6.5);
+    for (bool clockwise : {false, true}) {
+        std::vector<ScreenTriangle> square = clockwise
+            ? std::vector<ScreenTriangle>{screen_triangle(a, b, c, 0.5f), screen_triangle(a, c, d, 0.4f)}
+            : std::vector<ScreenTriangle>{screen_triangle(a, c, b, 0.5f), screen_triangle(a, d, c, 0.4f)};
+        std::vector<int> counts = coverage_counts(square);
+        for (int y = 0; y < 10; ++y)
+            for (int x = 0; x < 10; ++x)
+                EXPECT_EQ(counts[y * size + x], (x >= 2 && x < 6 && y >= 2 && y < 6) ? 1 : 0) << x << "," << y;
+    }
+}
+
+TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
+    std::vector<ScreenTriangle> grid;
+    float z = 1;
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) {
+            Eigen::Vector2d p(4.5 + i * 6.5, 3.5 + j * 7), q = p + Eigen::Vector2d(6.5, 0), r = p + Eigen::Vector2d(6.5, 7),
+                            s = p + Eigen::Vector2d(0, 7);
+            grid.push_back(screen_triangle(p, q, r, z -= 0.001f));
+            grid.push_back(screen_triangle(p, r, s, z -= 0.001f));
+        }
+    std::vector<int> counts = coverage_counts(grid);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            bool inside = x + 0.5 >= 4.5 && x + 0.5 < 4.5 + 39 && y + 0.5 >= 3.5 && y + 0.5 < 3.5 + 42;
+            ASSERT_EQ(counts[y * size + x], inside ? 1 : 0) << x << "," << y;
+        }
+}
+
+TEST(Rasterizer, DepthTestIsLess) {
+    auto t = screen_triangle({0, 0}, {20, 0}, {0, 20}, 0.5f);
+    std::vector<float> depth(size * size, std::numeric_limits<float>::infinity());
+    std::vector<std::uint32_t> ids(size * size, no_triangle);
+    TileTarget tile{0, 0, size, size, size, depth.data(), ids.data()};
+    rasterize_triangle(t, 1, tile, nullptr);
+    rasterize_triangle(t, 2, tile, nullptr);  // equal depth: not less, keeps the first
+    EXPECT_EQ(ids[2 * size + 2], 1u);
+    EXPECT_EQ(depth[2 * size + 2], 0.5f);
+    auto nearer = screen_triangle({0, 0}, {20, 0}, {0, 20}, 0.25f);
+    rasterize_triangle(nearer, 3, tile, nullptr);
+    EXPECT_EQ(ids[2 * size + 2], 3u);
+}
+
+namespace {
+Viewport viewport(int w, int h) {
+    Viewport v;
+    v.width = w, v.height = h;
+    return v;
+}
+}  // namespace
+
+TEST(Rasterizer, ClippingAtTheNearPlaneKeepsSourceWeights) {
+    Camera camera;
+    camera.position = {0, 0, 0}, camera.target = {0, 0, -1}, camera.near_plane = 1, camera.far_plane = 10;
+    Eigen::Matrix4f m = projection_matrix(camera, 1) * view_matrix(camera);
+    // One vertex behind the camera, two in front.
+    Eigen::Vector3f world[3] = {{0, -1, 2}, {-1, -1, -5}, {1, -1, -5}};
+    Eigen::Vector4f clip[3];
+    for (int i = 0; i < 3; ++i) clip[i] = m * world[i].homogeneous();
+    std::vector<ScreenTriangle> out;
+    std::vector<ClippedWeights> weights;
+    setup_triangle(clip, 0, 7, Culling::none, viewport(64, 64), out, weights);
+    ASSERT_FALSE(out.empty());
+    for (const ScreenTriangle& t : out) {
+        ASSERT_GE(t.clipped, 0);
+        EXPECT_EQ(t.triangle, 7u);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_GE(t.z[i], 0.0f);
+            EXPECT_LE(t.z[i], 1.0f);
+            const Eigen::Vector3f& w = weights[t.clipped].weights[i];
+            EXPECT_NEAR(w.sum(), 1.0f, 1e-6f);
+            // Reconstructed from the weights, the vertex lies on or in front of the near plane.
+            Eigen::Vector3f p = world[0] * w[0] + world[1] * w[1] + world[2] * w[2];
+            EXPECT_LE(p.z(), -1 + 1e-4f);
+        }
+    }
+    // Entirely behind the camera: nothing.
+    Eigen::Vector3f behind[3] = {{0, 0, 2}, {1, 0, 3}, {0, 1, 3}};
+    for (int i = 0; i < 3; ++i) clip[i] = m * behind[i].homogeneous();
+    out.clear();
+    setup_triangle(clip, 0, 0, Culling::none, viewport(64, 64), out, weights);
+    EXPECT_TRUE(out.empty());
+}
+
+TEST(Rasterizer, HugeTriangleIsClippedToTheGuardBandAndCoversTheScreenOnce) {
+    Eigen::Vector4f clip[3] = {{-1000, -1000, 0, 1}, {3000, -1000, 0, 1}, {-1000, 3000, 0, 1}};
+    std::vector<ScreenTriangle> out;
+    std::vector<ClippedWeights> weights;
+    setup_triangle(clip, 0, 0, Culling::none, viewport(size, size), out, weights);
+    ASSERT_GT(out.size(), 1u);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].z[0] = out[i].z[1] = out[i].z[2] = 1.0f - float(i) * 0.01f;
+    std::vector<int> counts = coverage_counts(out);
+    for (int c : counts) ASSERT_EQ(c, 1);
+}
+
+TEST(Rasterizer, BackFacesAreCulledOnRequest) {
+    Eigen::Vector4f ccw[3] = {{-0.5f, -0.5f, 0, 1}, {0.5f, -0.5f, 0, 1}, {0, 0.5f, 0, 1}};
+    Eigen::Vector4f cw[3] = {ccw[0], ccw[2], ccw[1]};
+    std::vector<ScreenTriangle> out;
+    std::vector<ClippedWeights> weights;
+    setup_triangle(ccw, 0, 0, Culling::back, viewport(32, 32), out, weights);
+    EXPECT_EQ(out.size(), 1u);
+    setup_triangle(cw, 0, 0, Culling::back, viewport(32, 32), out, weights);
+    EXPECT_EQ(out.size(), 1u);
+    setup_triangle(cw, 0, 0, Culling::front, viewport(32, 32), out, weights);
+    EXPECT_EQ(out.size(), 2u);
+    setup_triangle(cw, 0, 0, Culling::none, viewport(32, 32), out, weights);
+    EXPECT_EQ(out.size(), 3u);
+}
+
+TEST(Rasterizer, InterpolationIsPerspectiveCorrect) {
+    // A floor receding from the camera; at each pixel, the barycentrics must
+    // match the ray-plane intersection computed in world space.
+    Camera camera;
+    camera.position = {0, 1, 0}, camera.target = {0, 0.5f, -3}, camera.near_plane = 0.1f, camera.far_plane = 50;
+    const int w = 64, h = 48;
+    Eigen::Matrix4f view = view_matrix(camera), projection = projection_matrix(camera, float(w) / h);
+    Eigen::Vector3f world[3] = {{-4, 0, -1}, {4, 0, -1}, {0, 0, -20}};
+    Eigen::Vector4f clip[3];
+    for (int i = 0; i < 3; ++i) clip[i] = projection * view * world[i].homogeneous();
+    std::vector<ScreenTriangle> out;
+    std::vector<ClippedWeights> weights;
+    setup_triangle(clip, 0, 0, Culling::none, viewport(w, h), out, weights);
+    ASSERT_EQ(out.size(), 1u);
+    Eigen::Matrix4f inverse = (projection * view).inverse();
+    int checked = 0;
+    for (int y = 0; y < h; y += 3)
+        for (int x = 0; x < w; x += 3) {
+            Eigen::Vector3d l = screen_barycentrics(out[0], x + 0.5, y + 0.5);
+            if (l.minCoeff() < 0.02) continue;  // well inside only
+            Eigen::Vector3f b = source_barycentrics(out[0], weights, x + 0.5, y + 0.5);
+            // The ray through the pixel centre, intersected with the floor y = 0.
+            float nx = (x + 0.5f) / w * 2 - 1, ny = 1 - (y + 0.5f) / h * 2;
+            Eigen::Vector4f far = inverse * Eigen::Vector4f(nx, ny, 1, 1);
+            Eigen::Vector3f direction = (far.head<3>() / far.w() - camera.position).normalized();
+            Eigen::Vector3f hit = camera.position + direction * (-camera.position.y() / direction.y());
+            Eigen::Vector3f from_b = world[0] * b[0] + world[1] * b[1] + world[2] * b[2];
+            EXPECT_NEAR((hit - from_b).norm() / (hit - camera.position).norm(), 0, 2e-3) << x << "," << y;
+            ++checked;
+        }
+    EXPECT_GT(checked, 30);
+}

@@ -1,0 +1,74 @@
+#include "renderer/texture.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+namespace {
+// A 4x2 linear texture with distinct red values 0, 40, 80, ... per texel.
+MipTexture ramp(Wrap wrap) {
+    Image8 image(4, 2, 4, 255);
+    for (int i = 0; i < 8; ++i) image.pixels[i * 4] = std::uint8_t(i * 40);
+    MipTexture texture = make_texture(image, ColorSpace::linear, wrap);
+    return texture;
+}
+float red(std::uint8_t v) { return float(v) / 255.0f; }
+}  // namespace
+
+TEST(Texture, TexelCentresReturnTexelsExactly) {
+    MipTexture t = ramp(Wrap::clamp);
+    t.filter = Filter::bilinear;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x)
+            EXPECT_FLOAT_EQ(sample(t, {(x + 0.5f) / 4, (y + 0.5f) / 2}).x(), red(std::uint8_t((y * 4 + x) * 40)));
+}
+
+TEST(Texture, BilinearBlendsNeighbours) {
+    MipTexture t = ramp(Wrap::clamp);
+    // Halfway between texels (0,0) and (1,0), a quarter of the way down to row 1.
+    Eigen::Vector4f v = sample(t, {1.0f / 4, (0.5f + 0.25f) / 2});
+    float expected = (red(0) * 0.5f + red(40) * 0.5f) * 0.75f + (red(160) * 0.5f + red(200) * 0.5f) * 0.25f;
+    EXPECT_NEAR(v.x(), expected, 1e-6f);
+}
+
+TEST(Texture, ClampAndRepeatDifferAtTheBorder) {
+    MipTexture clamp = ramp(Wrap::clamp), repeat = ramp(Wrap::repeat);
+    Eigen::Vector2f left_edge(0, 0.25f);  // between texel -1 and 0 horizontally
+    EXPECT_FLOAT_EQ(sample(clamp, left_edge).x(), red(0));
+    EXPECT_NEAR(sample(repeat, left_edge).x(), (red(0) + red(120)) / 2, 1e-6f);
+    EXPECT_FLOAT_EQ(sample(repeat, {1.125f + 2, 0.25f}).x(), red(0));  // whole periods away
+}
+
+TEST(Texture, MipChainHalvesDownToOneTexelAndAverages) {
+    MipTexture t = ramp(Wrap::clamp);
+    ASSERT_EQ(t.levels.size(), 3u);
+    EXPECT_EQ(t.levels[1].width, 2);
+    EXPECT_EQ(t.levels[1].height, 1);
+    EXPECT_EQ(t.levels[2].width, 1);
+    EXPECT_NEAR(t.levels[1].texels[0].x(), (red(0) + red(40) + red(160) + red(200)) / 4, 1e-6f);
+    float mean = 0;
+    for (int i = 0; i < 8; ++i) mean += red(std::uint8_t(i * 40)) / 8;
+    EXPECT_NEAR(t.levels[2].texels[0].x(), mean, 1e-6f);
+}
+
+TEST(Texture, TrilinearBlendsLevels) {
+    MipTexture t = ramp(Wrap::clamp);
+    Eigen::Vector2f uv(0.25f, 0.5f);
+    Eigen::Vector4f a = sample(t, uv, 1), b = sample(t, uv, 2), half = sample(t, uv, 1.5f);
+    EXPECT_NEAR(half.x(), (a.x() + b.x()) / 2, 1e-6f);
+    EXPECT_EQ(sample(t, uv, 10).x(), sample(t, uv, 2).x());  // clamps to the last level
+}
+
+TEST(Texture, MipLevelFollowsTexelsPerPixel) {
+    MipTexture t = make_texture(Image8(256, 256, 4), ColorSpace::linear);
+    EXPECT_FLOAT_EQ(mip_level(t, {1.0f / 256, 0}, {0, 1.0f / 256}), 0);
+    EXPECT_FLOAT_EQ(mip_level(t, {4.0f / 256, 0}, {0, 1.0f / 256}), 2);
+}
+
+TEST(Texture, SrgbTexturesDecodeToLinear) {
+    Image8 image(1, 1, 4, 128);
+    EXPECT_FLOAT_EQ(make_texture(image, ColorSpace::srgb).levels[0].texels[0].x(), srgb_to_linear(128));
+    EXPECT_FLOAT_EQ(make_texture(image, ColorSpace::srgb).levels[0].texels[0].w(), 128 / 255.0f);  // alpha stays linear
+    Image16 height(1, 1, 1, 65535);
+    EXPECT_FLOAT_EQ(make_texture(height).levels[0].texels[0].x(), 1.0f);
+}
