@@ -14,11 +14,13 @@
 namespace boxlod {
 
 // An oriented box: center, three orthonormal axes (columns), half-extents.
-struct Scope {
+struct OrientedBox {
     Eigen::Vector3f center = Eigen::Vector3f::Zero();
     Eigen::Matrix3f axes = Eigen::Matrix3f::Identity();
     Eigen::Vector3f half_extents = Eigen::Vector3f::Zero();
 };
+// The grammar's scope of a node is an oriented box (it may not enclose the node's geometry).
+using Scope = OrientedBox;
 
 struct Texture {
     std::string name;  // file name or label; a hint for export

@@ -1,0 +1,31 @@
+// The box that replaces a node's sub-tree in an LoD (DESIGN.md: Boxes).
+#pragma once
+#include "toolkit/model.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+enum class BoxKind {
+    scope,     // the grammar's scope as stored (may be smaller than the geometry)
+    expanded,  // the scope's orientation, grown just enough to enclose the sub-tree's geometry
+    minimal,   // CGAL's optimal (minimum-volume) OBB of the sub-tree's vertices, fixed seed
+};
+bool parse_box_kind(const std::string& name, BoxKind& kind);
+const char* box_kind_name(BoxKind kind);
+
+// One box per node for its whole sub-tree; std::nullopt where the sub-tree has
+// no geometry. Nodes without a scope use `minimal` for `scope` and `expanded`.
+// Degenerate geometry (< 4 points, flat, collinear) still gets a valid box with
+// a small positive thickness. Deterministic for any thread count.
+std::vector<std::optional<OrientedBox>> node_boxes(const Model& model, BoxKind kind, int threads);
+
+// Volume, surface area, diagonal, longest side (full extents, not half).
+float box_volume(const OrientedBox& box);
+float box_area(const OrientedBox& box);
+float box_diagonal(const OrientedBox& box);
+float box_max_extent(const OrientedBox& box);
+
+}  // namespace boxlod

@@ -1,0 +1,40 @@
+// Level values (DESIGN.md: Level values and the cut; the manual's Geometry
+// section): every node n gets L(n) in 0..N-1; at current level c a node with
+// L(n) < c is replaced, with its sub-tree, by its box.
+#pragma once
+#include "toolkit/model.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+enum class LevelMode {
+    top_down,            // N = depth + 1; L(root) = N - 1; L(child) = L(parent) - 1
+    bottom_up,           // L(leaf) = 0; L(inner) = 1 + max over children
+    bottom_up_siblings,  // bottom-up, siblings raised to their maximum before the parent
+    box_volume,          // box modes: L = floor(t * (N - 1)), t from the box value v
+    box_area,
+    box_diagonal,
+    box_max_extent,
+};
+enum class Interpolation { linear, log, rank };  // how box modes turn v into t
+
+bool parse_level_mode(const std::string& name, LevelMode& mode);  // CLI names: top-down, box-volume, ...
+const char* level_mode_name(LevelMode mode);
+bool parse_interpolation(const std::string& name, Interpolation& interpolation);
+const char* interpolation_name(Interpolation interpolation);
+bool is_box_mode(LevelMode mode);
+
+struct LevelValues {
+    std::vector<int> level;  // per node
+    int obtained_levels = 1;  // N
+};
+
+// `boxes` (from node_boxes) is used by the box modes only; nodes without a box
+// take no part in vmin/vmax and get level 0. `wanted_levels` is N for box modes.
+LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
+                                 const std::vector<std::optional<OrientedBox>>& boxes);
+
+}  // namespace boxlod
