@@ -31,6 +31,12 @@ Image8 read_image(const std::string& path);
 std::vector<std::uint8_t> encode_png(const Image8& image);
 void write_png(const std::string& path, const Image8& image);  // atomic
 
+// 16-bit single-channel PNG (height maps); stb writes 8-bit only.
+std::vector<std::uint8_t> encode_png16(const Image16& image);
+void write_png16(const std::string& path, const Image16& image);  // atomic
+// The first channel at 16 bits (8-bit files are scaled by 257).
+Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string& name);
+
 float srgb_to_linear(std::uint8_t value);  // exact table lookup
 std::uint8_t linear_to_srgb(float value);  // clamps to [0, 1], rounds to nearest
 

@@ -29,6 +29,16 @@ const char* render_mode_name(RenderMode mode) {
     return "?";
 }
 
+Light light_for_camera(const Camera& camera) {
+    Eigen::Vector3f eye = camera.position - camera.target;
+    float distance = eye.norm();
+    Eigen::Vector3f right = eye.cross(camera.up);
+    if (right.squaredNorm() == 0) right = Eigen::Vector3f::UnitX();
+    Light light;
+    light.position = camera.position + right.normalized() * (distance * 0.5f) + camera.up.normalized() * distance;
+    return light;
+}
+
 Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
     Frame frame;
     frame.width = width;
@@ -197,7 +207,7 @@ Shaded shade(const Context& c, const Surface& s, Fragment& f) {
     Eigen::Vector4f albedo = s.base_color;
     if (textured && s.color) albedo = albedo.cwiseProduct(sample_surface(s.color, f, uv));
     Eigen::Vector3f normal = f.normal;
-    if (textured && s.normal && r.mode != RenderMode::albedo) {
+    if (textured && s.normal) {  // albedo mode too: baking records the mapped normal
         Eigen::Vector4f texel = sample_surface(s.normal, f, uv);
         Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
         Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();

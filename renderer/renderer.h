@@ -56,6 +56,9 @@ struct Light {
     float shininess = 0;  // > 0 overrides every material's shininess
 };
 
+// The default light: above the camera and to its right, as far again as the target.
+Light light_for_camera(const Camera& camera);
+
 struct RenderSettings {
     Camera camera;
     RenderMode mode = RenderMode::normal;

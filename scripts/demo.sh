@@ -1,17 +1,40 @@
 #!/usr/bin/env bash
-# The main job on a built-in default: read the real FZK-Haus building (IFC,
-# from Debian's assimp-testmodels), describe it, keep it as glTF.
+# The main job on built-in defaults: a generated building and a real one, each
+# built into every level of its textured-box LoD, with a table and renders.
 set -euo pipefail
 build=${1:-build}
 boxlod="$build/toolkit/cli/boxlod"
 out=out/demo
+rm -rf "$out"
 mkdir -p "$out"
-model=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
 
-echo "== boxlod info $model"
-"$boxlod" info "$model"
-echo
-echo "== boxlod convert -> $out/fzk-haus.glb"
-"$boxlod" convert "$model" -o "$out/fzk-haus.glb"
-"$boxlod" info "$out/fzk-haus.glb" --json > "$out/fzk-haus.stats.json"
-echo "statistics of the glTF: $out/fzk-haus.stats.json"
+# Prints one row per level from `boxlod build --all-levels` output.
+level_table() {
+  awk -F' = ' '
+    BEGIN { printf "%-6s %10s %10s %10s %8s %8s\n", "level", "faces", "triangles", "boxes", "pages", "size" }
+    $1 == "current_level" { level = $2 } $1 == "faces_lod" { faces = $2 } $1 == "triangles_lod" { tris = $2 }
+    $1 == "nodes_with_box" { boxes = $2 } $1 == "lod_textures" { pages = $2 }
+    $1 == "texture_size" { printf "%-6s %10s %10s %10s %8s %8s\n", level, faces, tris, boxes, pages, $2 }'
+}
+
+demo_model() {  # demo_model NAME MODEL
+  local name=$1 model=$2
+  echo "== $name: $model"
+  "$boxlod" info "$model" | grep -E '^(nodes|nodes_with_geometry|depth|faces_original|mesh_(width|height|depth)) '
+  mkdir -p "$out/$name"
+  "$boxlod" build "$model" -o "$out/$name" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
+    --timings > "$out/$name/build.txt"
+  level_table < "$out/$name/build.txt"
+  grep '^time_' "$out/$name/build.txt" | tr '\n' ' '; echo
+  "$boxlod" render "$model" -o "$out/$name/original.png" > /dev/null
+  local middle
+  middle=$(awk -F' = ' '$1 == "obtained_levels" { n = $2 } END { print int(n / 2) }' "$out/$name/build.txt")
+  "$boxlod" render "$out/$name/${name}_L${middle}.gltf" --split-view "$model" -o "$out/$name/split_L${middle}.png" > /dev/null
+  echo "renders: $out/$name/original.png, $out/$name/split_L${middle}.png (level $middle left, original right)"
+  echo
+}
+
+"$boxlod" generate --sample house -o "$out/house.glb" > /dev/null
+demo_model house "$out/house.glb"
+demo_model fzk-haus /usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
+echo "all outputs: $out/"

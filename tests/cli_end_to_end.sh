@@ -29,9 +29,16 @@ check "render wrote PNG, EXR and mask" test -s "$work/a.png" -a -s "$work/a.exr"
 check "render is identical with 1 and 2 threads" bash -c "'$boxlod' render '$ifc' -o '$work/b.png' --width 320 --height 240 --threads 2 >/dev/null && cmp -s '$work/a.png' '$work/b.png'"
 check "render --wireframe --axes --split-view succeeds" test "$(status_of "$boxlod" render "$ifc" -o "$work/c.png" --width 320 --height 240 --wireframe --axes --split-view "$work/fzk.glb" --mode untextured --camera -X+Y)" = 0
 
+check "levels succeeds" test "$(status_of "$boxlod" levels "$ifc" --level-mode bottom-up)" = 0
+check "levels prints obtained_levels" grep -q "^obtained_levels = [1-9]" "$work/out"
+check "levels prints one level per node" test "$(grep -c '^level\.[0-9]* = [0-9]*$' "$work/out")" = 216
+check "levels with a box mode succeeds" test "$(status_of "$boxlod" levels "$ifc" --level-mode box-diagonal --box minimal --interpolation rank --wanted-levels 4 --threads 2)" = 0
+check "levels with a box mode obtains the wanted levels" grep -qx "obtained_levels = 4" "$work/out"
+check "levels is the same with 1 thread" bash -c "'$boxlod' levels '$ifc' --level-mode box-diagonal --box minimal --interpolation rank --wanted-levels 4 --threads 1 2>/dev/null | cmp -s - '$work/out'"
+
 check "--help exits 0" test "$(status_of "$boxlod" --help)" = 0
 check "--help lists info" grep -q "info" "$work/out"
-for command in info convert render; do
+for command in info convert render generate levels; do
   check "$command --help exits 0" test "$(status_of "$boxlod" $command --help)" = 0
   check "$command --help shows usage" grep -q "usage: boxlod $command" "$work/out"
 done
@@ -53,12 +60,32 @@ bad "unknown format" info "$work/model.unknown"
 bad "unknown command" frobnicate
 bad "unknown option" info "$ifc" --frobnicate
 bad "missing argument" info
+bad "levels with an unknown mode" levels "$ifc" --level-mode sideways
+bad "levels with zero wanted levels" levels "$ifc" --level-mode box-volume --wanted-levels 0
+bad "levels without a mode" levels "$ifc"
+# One triangle, marked as an exported LoD.
+printf '{"asset": {"version": "2.0", "extras": {"boxlod": {"lod": true}}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [{"name": "n", "mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}' > "$work/lod.gltf"
+bad "levels on an exported LoD" levels "$work/lod.gltf" --level-mode top-down
+check "levels on an exported LoD says why" grep -q "cannot be simplified again" "$work/err"
 bad "render with an unknown camera position" render "$ifc" -o "$work/x.png" --camera +Q
 bad "render with an unknown mode" render "$ifc" -o "$work/x.png" --mode shiny
 bad "render with a bad light" render "$ifc" -o "$work/x.png" --light 1,2
 check "no image after a failed render" test ! -e "$work/x.png"
 bad "convert to an unsupported format" convert "$ifc" -o "$work/out.obj"
 check "no half-written file after a failed convert" test ! -e "$work/out.obj"
+# generate: grammars, samples, cities; same seed, same bytes; syntax errors are one line.
+check "generate --sample house succeeds" test "$(status_of "$boxlod" generate --sample house -o "$work/house.glb")" = 0
+check "generate prints the statistics" grep -qx "nodes = 251" "$work/out"
+check "generate twice gives identical bytes" bash -c "'$boxlod' generate --sample house -o '$work/house2.glb' >/dev/null && cmp -s '$work/house.glb' '$work/house2.glb'"
+check "generate --city 4 succeeds" test "$(status_of "$boxlod" generate --city 4 --seed 2 -o "$work/city.glb")" = 0
+printf 'Lot --> extrude(3) Box\nBox --> i(box)\n' > "$work/box.grammar"
+check "generate from a grammar file with --lot" test "$(status_of "$boxlod" generate "$work/box.grammar" --lot 4x2 -o "$work/box.gltf")" = 0
+check "the generated box is 4 x 3 x 2" bash -c "grep -qx 'mesh_width = 4' '$work/out' && grep -qx 'mesh_height = 3' '$work/out' && grep -qx 'mesh_depth = 2' '$work/out'"
+printf 'Lot --> split(y) { 1 : A\n' > "$work/broken.grammar"
+bad "generate with a grammar syntax error" generate "$work/broken.grammar" -o "$work/broken.glb"
+check "the syntax error names file:line:column" grep -q "broken.grammar:2:1: expected" "$work/err"
+check "no output after a failed generate" test ! -e "$work/broken.glb"
+bad "generate with an unknown sample" generate --sample castle -o "$work/castle.glb"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null

@@ -55,12 +55,18 @@ Model sample_model() {
     Material glass;
     glass.name = "glass";
     glass.double_sided = true;
+    glass.alpha_cutout = true;
     model.materials = {brick, glass};
     for (int t = 0; t < 3; ++t) {
         Texture texture;
         texture.name = std::vector<std::string>{"brick_color.png", "brick_normal.png", "brick_height.png"}[t];
-        texture.image = Image8(3, 2, 4);
-        for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
+        if (t == 2) {
+            texture.image16 = Image16(3, 2, 1);
+            for (std::size_t i = 0; i < 6; ++i) texture.image16.pixels[i] = std::uint16_t(i * 9001 + 3);
+        } else {
+            texture.image = Image8(3, 2, 4);
+            for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
+        }
         model.textures.push_back(texture);
     }
     return model;
@@ -103,9 +109,13 @@ void expect_same_model(const Model& a, const Model& b) {
         EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
         EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
         EXPECT_EQ(a.materials[i].double_sided, b.materials[i].double_sided);
+        EXPECT_EQ(a.materials[i].alpha_cutout, b.materials[i].alpha_cutout);
     }
     ASSERT_EQ(a.textures.size(), b.textures.size());
-    for (std::size_t i = 0; i < a.textures.size(); ++i) EXPECT_EQ(a.textures[i].image.pixels, b.textures[i].image.pixels);
+    for (std::size_t i = 0; i < a.textures.size(); ++i) {
+        EXPECT_EQ(a.textures[i].image.pixels, b.textures[i].image.pixels);
+        EXPECT_EQ(a.textures[i].image16.pixels, b.textures[i].image16.pixels);
+    }
     EXPECT_EQ(a.is_lod, b.is_lod);
     EXPECT_EQ(a.lod_params, b.lod_params);
 }

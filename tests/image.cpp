@@ -43,3 +43,13 @@ TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {
     EXPECT_NEAR(srgb_to_linear(128), 0.21586, 1e-5);  // IEC 61966-2-1
     EXPECT_EQ(linear_to_srgb(0.5f), 188);              // 0.5 linear = 187.5 encoded, rounds to 188
 }
+
+TEST(Image, Png16RoundTripKeepsEverySample) {
+    Image16 image(5, 3, 1);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint16_t(i * 4099 + 7);
+    std::vector<std::uint8_t> png = encode_png16(image);
+    EXPECT_EQ(decode_image16(png, "memory").pixels, image.pixels);
+    EXPECT_EQ(png, encode_png16(image));
+    // An 8-bit file read as 16 bits scales 255 to 65535.
+    EXPECT_EQ(decode_image16(encode_png(Image8(1, 1, 1, 255)), "memory").pixels[0], 65535);
+}

@@ -16,19 +16,7 @@ using namespace boxlod;
 // PNGs with the reason in the commit message.
 namespace {
 
-void expect_golden(const Image8& image, const std::string& name) {
-    std::filesystem::path path = std::filesystem::path(BOXLOD_GOLDEN_DIR) / (name + ".png");
-    std::vector<std::uint8_t> bytes = encode_png(image);
-    if (std::getenv("BOXLOD_UPDATE_GOLDEN")) {
-        write_png(path.string(), image);
-        GTEST_SKIP() << "golden written: " << path;
-    }
-    ASSERT_TRUE(std::filesystem::exists(path)) << "missing golden " << path << " (BOXLOD_UPDATE_GOLDEN=1 makes it)";
-    std::string stored = test::read_text(path);
-    EXPECT_TRUE(stored == std::string(bytes.begin(), bytes.end()))
-        << "render differs from " << path << "; the new image is at " << path.string() + ".new.png";
-    if (stored != std::string(bytes.begin(), bytes.end())) write_png(path.string() + ".new.png", image);
-}
+void expect_golden(const Image8& image, const std::string& name) { test::expect_golden(image, name); }
 
 Frame render_scene(const test::RenderScene& scene, const RenderSettings& settings, int width = 96, int height = 72) {
     Frame frame = make_frame(width, height, {1, 1, 1});

@@ -22,6 +22,18 @@ const char* box_kind_name(BoxKind kind);
 // a small positive thickness. Deterministic for any thread count.
 std::vector<std::optional<OrientedBox>> node_boxes(const Model& model, BoxKind kind, int threads);
 
+// What node_boxes did for the minimal boxes: the orientation of each distinct
+// sub-tree hull, up to translation, is solved once; nodes with an equal hull
+// (a parent whose only geometry is one child's, a translated copy) reuse it
+// exactly, as the seed comes from the hull's shape.
+struct MinimalBoxCounts {
+    std::size_t nodes = 0;     // nodes that needed a minimal box
+    std::size_t computed = 0;  // distinct hull shapes solved (CGAL, or a flat/collinear/point case)
+    std::size_t reused = 0;    // nodes that took an equal shape's orientation
+};
+std::vector<std::optional<OrientedBox>> node_boxes(const Model& model, BoxKind kind, int threads,
+                                                   MinimalBoxCounts& counts);
+
 // Volume, surface area, diagonal, longest side (full extents, not half).
 float box_volume(const OrientedBox& box);
 float box_area(const OrientedBox& box);

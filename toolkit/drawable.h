@@ -1,5 +1,5 @@
 // A model made ready for the renderer: its geometry merged into one mesh per
-// material (the manual's VBOs) and its textures decoded for sampling.
+// material (the manual's VBOs), its textures decoded once for sampling.
 #pragma once
 #include "renderer/renderer.h"
 #include "toolkit/model.h"
@@ -8,13 +8,28 @@
 
 namespace boxlod {
 
+// Every texture the materials use, decoded as they use it: colour as sRGB,
+// normal and height maps as linear data. Read-only once made, so many
+// drawables (one per baked box) can share it across threads.
+struct DecodedTextures {
+    std::vector<std::unique_ptr<MipTexture>> color, linear;  // per model texture; null where unused
+};
+DecodedTextures decode_textures(const Model& model);
+
 struct Drawable {
     std::vector<std::unique_ptr<Mesh>> meshes;
-    std::vector<std::unique_ptr<MipTexture>> textures;
-    std::vector<Batch> batches;  // point into meshes and textures
+    std::vector<Batch> batches;  // point into meshes and the DecodedTextures
     Bounds bounds;
 };
 
-Drawable make_drawable(const Model& model);
+// The geometry of the sub-tree under `root` (the whole model by default).
+Drawable make_drawable(const Model& model, const DecodedTextures& textures, int root = 0);
+
+// A model with its own textures, for commands that just draw it.
+struct DrawableModel {
+    DecodedTextures textures;
+    Drawable drawable;
+};
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model);
 
 }  // namespace boxlod

@@ -2,6 +2,7 @@
 
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
+#include "renderer/parallel.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -223,6 +224,12 @@ Texture convert_image(const tinygltf::Image& in, const Reader& reader, const std
     if (in.bits != 8 && in.bits != 16) reader.fail(place, "unsupported image bit depth");
     Texture texture;
     texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
+    if (in.bits == 16 && in.component == 1) {  // a height map: keep all 16 bits
+        texture.image16 = Image16(in.width, in.height, 1);
+        for (std::size_t i = 0; i < texture.image16.pixels.size(); ++i)
+            texture.image16.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
+        return texture;
+    }
     texture.image = Image8(in.width, in.height, 4, 255);
     int bytes = in.bits / 8;
     for (std::size_t i = 0; i < std::size_t(in.width) * in.height; ++i)
@@ -244,6 +251,7 @@ Texture convert_image(const tinygltf::Image& in, const Reader& reader, const std
 Model import_gltf(const std::string& path) {
     if (!fs::exists(path)) throw_input_error(path, "", "no such file");
     tinygltf::TinyGLTF loader;
+    loader.SetPreserveImageChannels(true);  // keeps 16-bit height maps single-channel
     tinygltf::Model gltf;
     std::string error, warning;
     bool binary = fs::path(path).extension() == ".glb";
@@ -266,6 +274,7 @@ Model import_gltf(const std::string& path) {
         material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, place);
         material.normal_texture = texture_image(reader, in.normalTexture.index, place);
         material.double_sided = in.doubleSided;
+        material.alpha_cutout = in.alphaMode == "MASK";
         if (const tinygltf::Value* extras = boxlod_extras(in.extras)) {
             if (extras->Has("specular")) material.specular_color = number_array<3>(extras->Get("specular"), reader, place + " specular");
             if (extras->Has("shininess")) material.shininess = float(extras->Get("shininess").GetNumberAsDouble());
@@ -406,7 +415,7 @@ tinygltf::Value boxlod_object(tinygltf::Value::Object fields) {
 
 }  // namespace
 
-void export_gltf(const Model& model, const std::string& path) {
+void export_gltf(const Model& model, const std::string& path, int threads) {
     fs::path target(path);
     bool binary = target.extension() == ".glb";
     std::string stem = target.stem().string();
@@ -421,9 +430,15 @@ void export_gltf(const Model& model, const std::string& path) {
     w.gltf.buffers.emplace_back();
 
     std::vector<std::string> image_files;
+    // PNG encoding dominates an LoD export: encode the textures in parallel, store them in order.
+    std::vector<std::vector<std::uint8_t>> encoded(model.textures.size());
+    parallel_for(model.textures.size(), threads, [&](std::size_t i) {
+        const Texture& texture = model.textures[i];
+        encoded[i] = texture.image16.empty() ? encode_png(texture.image) : encode_png16(texture.image16);
+    });
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
         const Texture& texture = model.textures[i];
-        std::vector<std::uint8_t> png = encode_png(texture.image);
+        const std::vector<std::uint8_t>& png = encoded[i];
         tinygltf::Image image;
         image.name = texture.name;
         image.mimeType = "image/png";
@@ -450,6 +465,7 @@ void export_gltf(const Model& model, const std::string& path) {
         out.pbrMetallicRoughness.roughnessFactor = 1;
         out.normalTexture.index = material.normal_texture;
         out.doubleSided = material.double_sided;
+        if (material.alpha_cutout) out.alphaMode = "MASK";  // cutoff 0.5, the glTF default
         tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
                                        {"shininess", tinygltf::Value(double(material.shininess))}};
         // glTF has no height-map slot; the image index travels in extras.

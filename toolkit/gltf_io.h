@@ -13,6 +13,6 @@ Model import_gltf(const std::string& path);
 // Writes .gltf (+ .bin and one PNG per texture beside it) or a single .glb,
 // chosen by the extension; every file atomically. Geometry is stored in
 // world space, so exported nodes have no transforms.
-void export_gltf(const Model& model, const std::string& path);
+void export_gltf(const Model& model, const std::string& path, int threads = 0);
 
 }  // namespace boxlod

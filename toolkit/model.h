@@ -5,6 +5,7 @@
 #include "renderer/image.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products, rotations: used with the model everywhere
 #include <limits>
 #include <optional>
 #include <string>
@@ -24,7 +25,8 @@ using Scope = OrientedBox;
 
 struct Texture {
     std::string name;  // file name or label; a hint for export
-    Image8 image;      // RGBA8, as stored (sRGB for colour, linear for normal maps)
+    Image8 image;      // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
+    Image16 image16 = {};  // instead of `image`: one 16-bit channel (baked height maps)
 };
 
 struct Material {
@@ -36,6 +38,7 @@ struct Material {
     Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};
     float shininess = 32;
     bool double_sided = false;
+    bool alpha_cutout = false;  // glTF alphaMode MASK: baked box faces are cut out where uncovered
 };
 
 // A triangle list with one material. `polygon_count` is how many polygons the

@@ -13,13 +13,15 @@ namespace boxlod {
 static int run_render(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod render: -o/--output OUT.png is required");
     Model model = load_model(arguments.positionals[0]);
-    Drawable drawable = make_drawable(model);
+    auto drawable_model = make_drawable_model(model);
+    const Drawable& drawable = drawable_model->drawable;
     View view = view_from_arguments(arguments, drawable.bounds);
     Frame frame = make_frame(view.width, view.height, view.background);
     if (arguments.has("split-view")) {
         // The manual's split view: left half this model, right half the other, same camera.
         Model other_model = load_model(arguments.text("split-view"));
-        Drawable other = make_drawable(other_model);
+        auto other_drawable = make_drawable_model(other_model);
+        const Drawable& other = other_drawable->drawable;
         RenderSettings left = view.settings, right = view.settings;
         left.scissor_x1 = view.width / 2;
         right.scissor_x0 = view.width / 2;

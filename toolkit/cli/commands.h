@@ -16,5 +16,8 @@ struct Subcommand {
 Subcommand info_subcommand();
 Subcommand convert_subcommand();
 Subcommand render_subcommand();
+Subcommand generate_subcommand();
+Subcommand levels_subcommand();
+Subcommand build_subcommand();
 
 }  // namespace boxlod

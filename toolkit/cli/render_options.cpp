@@ -69,12 +69,8 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
         throw InputError("--mode: unknown render mode '" + a.text("mode") + "' (untextured, normal, parallax, pom, albedo)");
     s.parallax_scale = float(a.number("parallax-scale", s.parallax_scale));
     s.parallax_bias = float(a.number("parallax-bias", s.parallax_bias));
-    Eigen::Vector3f eye = s.camera.position - center;
-    Eigen::Vector3f right = eye.cross(Eigen::Vector3f::UnitY());
-    if (right.squaredNorm() == 0) right = Eigen::Vector3f::UnitX();
-    s.light.position = a.has("light") ? parse_vector3("light", a.text("light"))
-                                      : Eigen::Vector3f(center + eye + right.normalized() * view.distance * 0.5f +
-                                                        Eigen::Vector3f::UnitY() * view.distance);
+    s.light = light_for_camera(s.camera);
+    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"));
     s.light.ambient = float(a.number("ambient", s.light.ambient));
     s.light.diffuse = float(a.number("diffuse", s.light.diffuse));
     s.light.specular = float(a.number("specular", s.light.specular));

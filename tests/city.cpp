@@ -1,0 +1,89 @@
+#include "data_gen/city.h"
+
+#include "renderer/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace boxlod {
+
+namespace {
+
+// The footprint (x, z) of a node's scope, as min and max corners.
+std::pair<Eigen::Vector2f, Eigen::Vector2f> footprint(const Node& node) {
+    Eigen::Vector3f lo = node.scope->center - node.scope->axes.cwiseAbs() * node.scope->half_extents;
+    Eigen::Vector3f hi = node.scope->center + node.scope->axes.cwiseAbs() * node.scope->half_extents;
+    return {{lo.x(), lo.z()}, {hi.x(), hi.z()}};
+}
+
+}  // namespace
+
+TEST(City, StreetsAndOneTreePerBuilding) {
+    CityOptions options;
+    options.buildings = 4;
+    Model city = generate_city(options);
+    EXPECT_EQ(city.nodes[0].name, "City");
+    const Node& streets = city.nodes[1];
+    EXPECT_EQ(streets.name, "Streets");
+    std::vector<int> buildings(city.nodes[0].children.begin() + 1, city.nodes[0].children.end());
+    ASSERT_EQ(buildings.size(), 4u);
+    int street_count = 0, block_count = 0;
+    for (int child : streets.children) {
+        const Node& ground = city.nodes[child];
+        EXPECT_TRUE(ground.has_geometry());
+        block_count += ground.rule == "Block";
+        if (ground.rule != "Street") continue;
+        ++street_count;
+        auto [s_lo, s_hi] = footprint(ground);
+        for (int building : buildings) {
+            auto [b_lo, b_hi] = footprint(city.nodes[building]);
+            bool apart = (b_hi.array() <= s_lo.array() + 1e-3f).any() || (s_hi.array() <= b_lo.array() + 1e-3f).any();
+            EXPECT_TRUE(apart) << city.nodes[building].name << " overlaps a street";
+        }
+    }
+    EXPECT_EQ(street_count, 9);  // 2 x 2 lots: 3 streets along x, 2 rows of 3 between
+    EXPECT_EQ(block_count, 4);
+    for (int i = 0; i < 4; ++i) {
+        const std::string& name = city.nodes[buildings[i]].name;
+        EXPECT_EQ(name.substr(name.find('_') + 1), std::to_string(i));
+    }
+    EXPECT_NO_THROW(validate_model(city));
+}
+
+TEST(City, SeedDecidesKindsDeterministically) {
+    CityOptions options;
+    options.buildings = 12;
+    options.seed = 4;
+    Model a = generate_city(options), b = generate_city(options);
+    options.seed = 5;
+    Model c = generate_city(options);
+    ASSERT_EQ(a.nodes.size(), b.nodes.size());
+    for (std::size_t i = 0; i < a.nodes.size(); ++i) EXPECT_EQ(a.nodes[i].name, b.nodes[i].name);
+    EXPECT_NE(a.nodes.size(), c.nodes.size());
+    std::set<std::string> kinds;
+    for (std::size_t i = 1; i < a.nodes[0].children.size(); ++i) {
+        const std::string& name = a.nodes[a.nodes[0].children[i]].name;
+        kinds.insert(name.substr(0, name.find('_')));
+    }
+    EXPECT_GE(kinds.size(), 2u);
+}
+
+TEST(City, ALotKeepsItsBuildingWhenTheCityGrows) {
+    // Each lot draws from its own stream: lot 0 is the same building in a city of 2 and of 9.
+    CityOptions small, large;
+    small.buildings = 2;
+    large.buildings = 9;
+    Model a = generate_city(small), b = generate_city(large);
+    int first_a = a.nodes[0].children[1], first_b = b.nodes[0].children[1];
+    EXPECT_EQ(a.nodes[first_a].name, b.nodes[first_b].name);
+    EXPECT_EQ(a.nodes[first_a].scope->half_extents, b.nodes[first_b].scope->half_extents);
+}
+
+TEST(City, NeedsAtLeastOneBuilding) {
+    CityOptions options;
+    options.buildings = 0;
+    EXPECT_THROW(generate_city(options), InputError);
+}
+
+}  // namespace boxlod

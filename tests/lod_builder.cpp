@@ -1,0 +1,155 @@
+#include "toolkit/lod_builder.h"
+
+#include "lod_scene.h"
+#include "renderer/input_error.h"
+#include "test_support.h"
+#include "toolkit/drawable.h"
+#include "toolkit/lod_export.h"
+#include "toolkit/model_io.h"
+#include "toolkit/statistics.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+using namespace boxlod;
+
+namespace {
+
+std::string statistic(const Lod& lod, const std::string& key) {
+    for (const KeyValue& e : lod.statistics)
+        if (e.key == key) return e.value;
+    return "missing";
+}
+
+LodParameters small_parameters() {
+    LodParameters p;
+    p.level_mode = LevelMode::top_down;
+    p.box_kind = BoxKind::expanded;
+    p.resolution = 64;  // small textures keep the tests fast
+    p.min_texture_size = 64;
+    p.max_texture_size = 512;
+    return p;
+}
+
+}  // namespace
+
+TEST(LodBuilder, LevelZeroIsTheOriginalAndTheTopLevelOneBox) {
+    Model model = test::lod_test_building();
+    auto session = start_lod(model, small_parameters(), 2);
+    int n = session->levels.obtained_levels;
+    EXPECT_EQ(n, 4);  // top-down: depth 3 + 1
+    Lod original = build_lod(*session, 0, 2);
+    EXPECT_EQ(statistic(original, "faces_lod"), statistic(original, "faces_original"));
+    EXPECT_EQ(statistic(original, "faces_lod"), std::to_string(mesh_counts(model).faces));
+    EXPECT_EQ(statistic(original, "nodes_with_box"), "0");
+    Lod top = build_lod(*session, n, 2);
+    EXPECT_EQ(statistic(top, "faces_lod"), "6");  // six quads
+    EXPECT_EQ(statistic(top, "triangles_lod"), "12");
+    EXPECT_EQ(statistic(top, "used_nodes"), "1");
+    EXPECT_EQ(statistic(top, "nodes_with_box"), "1");
+    EXPECT_EQ(statistic(top, "lod_textures"), "1");
+    EXPECT_THROW(build_lod(*session, n + 1, 2), InputError);
+}
+
+TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {
+    Model model = test::lod_test_building();
+    auto session = start_lod(model, small_parameters(), 2);
+    // Level values top-down: Lot 3; Ground, House 2; Walls, Roof, Windows 1; each Window 0.
+    Lod lod = build_lod(*session, 2, 2);
+    EXPECT_EQ(statistic(lod, "nodes_with_box"), "3");       // Walls, Roof, Windows
+    EXPECT_EQ(statistic(lod, "nodes_with_geometry"), "1");  // Ground keeps its quad
+    EXPECT_EQ(statistic(lod, "faces_lod"), "19");
+    EXPECT_EQ(lod.model.nodes.size(), 6u);  // Lot, Ground, House, Walls, Roof, Windows
+    EXPECT_TRUE(lod.model.is_lod);
+    Lod windows_only = build_lod(*session, 1, 2);
+    EXPECT_EQ(statistic(windows_only, "nodes_with_box"), "3");  // the three panes
+    EXPECT_EQ(statistic(windows_only, "faces_lod"), std::to_string(1 + 4 + 2 + 3 * 6));
+}
+
+TEST(LodBuilder, AnLodCannotBeSimplifiedAgain) {
+    Model model = test::lod_test_building();
+    model.is_lod = true;
+    EXPECT_THROW(start_lod(model, small_parameters(), 1), InputError);
+}
+
+TEST(LodBuilder, SameResultForAnyThreadCount) {
+    Model model = test::lod_test_building();
+    LodParameters p = small_parameters();
+    p.box_kind = BoxKind::minimal;
+    auto one = start_lod(model, p, 1);
+    auto three = start_lod(model, p, 3);
+    Lod a = build_lod(*one, 2, 1), b = build_lod(*three, 2, 3);
+    ASSERT_EQ(a.model.textures.size(), b.model.textures.size());
+    for (std::size_t i = 0; i < a.model.textures.size(); ++i) {
+        EXPECT_EQ(a.model.textures[i].image.pixels, b.model.textures[i].image.pixels);
+        EXPECT_EQ(a.model.textures[i].image16.pixels, b.model.textures[i].image16.pixels);
+    }
+    ASSERT_EQ(a.model.nodes.size(), b.model.nodes.size());
+    for (std::size_t i = 0; i < a.model.nodes.size(); ++i)
+        for (std::size_t k = 0; k < a.model.nodes[i].primitives.size(); ++k)
+            EXPECT_EQ(a.model.nodes[i].primitives[k].positions, b.model.nodes[i].primitives[k].positions);
+}
+
+TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
+    Model model = test::lod_test_building();
+    auto session = start_lod(model, small_parameters(), 2);
+    Lod lod = build_lod(*session, 2, 2);
+    auto folder = test::scratch_folder("lod_export");
+    Image8 preview = render_lod_preview(lod, *session, 64, 48, 2);
+    export_lod(lod, *session, folder.string(), "house", preview, 2);
+    for (const char* file : {"house.gltf", "house.bin", "house_color_0.png", "house_normal_0.png", "house_height_0.png",
+                             "house.params.txt", "house.preview.png", "house.stats.txt"})
+        EXPECT_TRUE(std::filesystem::exists(folder / file)) << file;
+    Model back = load_model((folder / "house.gltf").string());
+    EXPECT_TRUE(back.is_lod);
+    EXPECT_EQ(mesh_counts(back).faces, mesh_counts(lod.model).faces);
+    EXPECT_FALSE(back.textures[2].image16.empty());  // the height page keeps 16 bits
+    EXPECT_EQ(back.textures[2].image16.pixels, lod.model.textures[2].image16.pixels);
+    EXPECT_THROW(start_lod(back, small_parameters(), 1), InputError);
+    LodParameters saved = load_parameters((folder / "house.params.txt").string());
+    EXPECT_EQ(saved.current_level, 2);
+    EXPECT_EQ(saved.distance, session->parameters.distance);
+}
+
+// Golden renders of an LoD in every render mode (regenerate: BOXLOD_UPDATE_GOLDEN=1 ctest -R LodGolden).
+TEST(LodGolden, EachRenderMode) {
+    Model model = test::lod_test_building();
+    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom}) {
+        LodParameters p = small_parameters();
+        p.render_mode = mode;
+        p.resolution = 128;
+        auto session = start_lod(model, p, 2);
+        Lod lod = build_lod(*session, 1, 2);
+        test::expect_golden(render_lod_preview(lod, *session, 120, 90, 2), std::string("lod_") + render_mode_name(mode));
+    }
+}
+
+// Real data: the FZK-Haus at every level of every level mode and box kind.
+TEST(LodBuilder, FzkHausBuildsAtEveryLevelOfEveryModeAndBoxKind) {
+    Model model = load_model(test::fzk_haus_ifc);
+    std::size_t original_faces = mesh_counts(model).faces;
+    for (BoxKind kind : {BoxKind::scope, BoxKind::expanded, BoxKind::minimal}) {
+        auto boxes = node_boxes(model, kind, 2);
+        for (LevelMode mode : {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings, LevelMode::box_volume,
+                               LevelMode::box_area, LevelMode::box_diagonal, LevelMode::box_max_extent}) {
+            LodParameters p = small_parameters();
+            p.box_kind = kind;
+            p.level_mode = mode;
+            p.render_mode = RenderMode::untextured;
+            auto session = start_lod(model, p, 2, &boxes);
+            int n = session->levels.obtained_levels;
+            for (int c = 0; c <= n; ++c) {
+                Lod lod = build_lod(*session, c, 2);
+                std::size_t faces = mesh_counts(lod.model).faces;
+                if (c == 0) EXPECT_EQ(faces, original_faces);
+                if (c == n) EXPECT_EQ(faces, 6u) << level_mode_name(mode) << " " << box_kind_name(kind);
+            }
+        }
+    }
+    // And once with baking, the default mode.
+    LodParameters p = small_parameters();
+    auto session = start_lod(model, p, 2);
+    Lod lod = build_lod(*session, 3, 2);
+    EXPECT_GT(lod.atlas.pages, 0);
+}

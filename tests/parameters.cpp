@@ -1,0 +1,73 @@
+#include "toolkit/parameters.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+TEST(Parameters, SaveThenLoadGivesTheSameValuesExactly) {
+    LodParameters p;
+    p.model = "house.glb";
+    p.level_mode = LevelMode::box_diagonal;
+    p.wanted_levels = 7;
+    p.current_level = 3;
+    p.box_kind = BoxKind::minimal;
+    p.interpolation = Interpolation::rank;
+    p.fovy = 37.123456f;
+    p.distance = 1.0f / 3.0f;
+    p.resolution = 720;
+    p.min_texture_size = 128;
+    p.max_texture_size = 2048;
+    p.render_mode = RenderMode::pom;
+    p.parallax_scale = 0.0123f;
+    p.parallax_bias = -0.00617f;
+    Camera camera;
+    camera.position = {0.1f, 2e-7f, -3.3f};
+    camera.target = {1, 2, 3};
+    camera.fovy_degrees = 51.5f;
+    p.camera = camera;
+    Light light;
+    light.position = {-7, 8.25f, 1e6f};
+    light.shininess = 12;
+    p.light = light;
+
+    auto folder = test::scratch_folder("parameters");
+    std::string path = (folder / "p.params.txt").string();
+    save_parameters(path, p);
+    LodParameters q = load_parameters(path);
+    EXPECT_EQ(q.model, (folder / "house.glb").string());  // relative to the parameter file
+    q.model = p.model;
+    EXPECT_EQ(format_parameters(q), format_parameters(p));
+    EXPECT_EQ(q.fovy, p.fovy);
+    EXPECT_EQ(q.distance, p.distance);
+    EXPECT_EQ(q.camera->position, p.camera->position);
+    EXPECT_EQ(q.light->position, p.light->position);
+}
+
+TEST(Parameters, DefaultsAndCommentsParse) {
+    LodParameters p = parse_parameters("# only a comment\n\n  wanted_levels = 3   # trailing comment\n", "p.txt");
+    EXPECT_EQ(p.wanted_levels, 3);
+    EXPECT_EQ(p.level_mode, LevelMode::top_down);
+    EXPECT_FALSE(p.camera);
+}
+
+TEST(Parameters, ErrorsNameFileLineAndKey) {
+    auto message = [](const std::string& text) {
+        try {
+            parse_parameters(text, "bad.txt");
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("fovy = 45\nsmoothness = 3\n"), "bad.txt: line 2: smoothness: unknown key");
+    EXPECT_EQ(message("fovy = wide\n"), "bad.txt: line 1: fovy: expected a number, got 'wide'");
+    EXPECT_EQ(message("level_mode = sideways\n"), "bad.txt: line 1: level_mode: unknown level mode 'sideways'");
+    EXPECT_EQ(message("just words\n"), "bad.txt: line 1: expected 'key = value'");
+    EXPECT_EQ(message("camera_position = 1 2\n"), "bad.txt: line 1: camera_position: expected three numbers 'x y z', got '1 2'");
+    EXPECT_NE(message("max_texture_size = 1000\n").find("powers of two"), std::string::npos);
+    EXPECT_NE(message("wanted_levels = 0\n").find("at least 1"), std::string::npos);
+    EXPECT_THROW(load_parameters("/nonexistent/p.txt"), InputError);
+}

@@ -1,0 +1,272 @@
+#include "toolkit/lod_builder.h"
+
+#include "renderer/input_error.h"
+#include "renderer/parallel.h"
+#include "toolkit/statistics.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace boxlod {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+float scene_radius(const Model& model) { return std::max(model_bounds(model).size().norm() / 2, 1e-6f); }
+
+// Builds the LoD model's node tree, copying the materials and textures that kept geometry uses.
+struct LodModelWriter {
+    const Model& source;
+    Model& out;
+    std::map<int, int> materials, textures;
+
+    int texture(int index) {
+        if (index < 0) return -1;
+        auto [it, added] = textures.emplace(index, int(out.textures.size()));
+        if (added) out.textures.push_back(source.textures[index]);
+        return it->second;
+    }
+    int material(int index) {
+        if (index < 0) return -1;
+        auto it = materials.find(index);
+        if (it != materials.end()) return it->second;
+        Material m = source.materials[index];
+        m.base_color_texture = texture(m.base_color_texture);
+        m.normal_texture = texture(m.normal_texture);
+        m.height_texture = texture(m.height_texture);
+        out.materials.push_back(m);
+        return materials[index] = int(out.materials.size()) - 1;
+    }
+};
+
+// Copies a baked face into a page with its gutter: edge texels repeated outwards.
+void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Texture& color, Texture& normal, Texture& height) {
+    int w = face.color.width, h = face.color.height;
+    for (int y = -gutter; y < h + gutter; ++y)
+        for (int x = -gutter; x < w + gutter; ++x) {
+            int sx = std::clamp(x, 0, w - 1), sy = std::clamp(y, 0, h - 1);
+            int px = at.x + x, py = at.y + y;
+            std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
+            std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
+            height.image16.at(px, py)[0] = face.height.at(sx, sy)[0];
+        }
+}
+
+// One quad per face: TL, BL, BR, TR seen from outside; uvs into the face's atlas block.
+void append_face_quad(Primitive& p, const BoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels, int page_size) {
+    auto base = std::uint32_t(p.positions.size());
+    const float corners[4][2] = {{-1, 1}, {-1, -1}, {1, -1}, {1, 1}};
+    for (const auto& c : corners) {
+        p.positions.push_back(f.center + f.tangent * (c[0] * f.half_width) + f.bitangent * (c[1] * f.half_height));
+        p.normals.push_back(f.normal);
+        if (at) {
+            float u = float(at->x + (c[0] > 0 ? texels.x() : 0)) / float(page_size);
+            float v = float(at->y + (c[1] < 0 ? texels.y() : 0)) / float(page_size);
+            p.uvs.emplace_back(u, v);
+            p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
+        }
+    }
+    p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    ++p.polygon_count;
+}
+
+Eigen::Vector2i texels_of(const BoxFace& face, const TextureSizing& sizing) {
+    return face_texels(2 * face.half_width, 2 * face.half_height, sizing);
+}
+
+}  // namespace
+
+std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
+                                      const std::vector<std::optional<OrientedBox>>* boxes) {
+    if (model.is_lod)
+        throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
+    validate_parameters(parameters, model.source);
+    auto session = std::make_unique<LodSession>();
+    session->model = &model;
+    session->parameters = parameters;
+    LodParameters& p = session->parameters;
+    if (p.model.empty()) p.model = model.source;
+    if (p.distance == 0) p.distance = framing_distance(scene_radius(model), p.fovy);
+    session->sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
+
+    auto start = std::chrono::steady_clock::now();
+    session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
+    session->times.boxes = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes);
+    session->times.levels = seconds_since(start);
+    if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
+    return session;
+}
+
+Camera preview_camera(const LodSession& session) {
+    const LodParameters& p = session.parameters;
+    if (p.camera) {
+        Camera camera = *p.camera;
+        Bounds bounds = model_bounds(*session.model);
+        float radius = scene_radius(*session.model);
+        float distance = (camera.position - bounds.center()).norm();
+        camera.near_plane = std::max(distance - radius, distance * 1e-3f);
+        camera.far_plane = std::max(distance + radius, camera.near_plane * 2);
+        return camera;
+    }
+    Bounds bounds = model_bounds(*session.model);
+    return camera_at_position({1, 1, 1}, bounds.center(), p.distance, p.fovy, scene_radius(*session.model));
+}
+
+Lod build_lod(LodSession& session, int current_level, int threads) {
+    const Model& model = *session.model;
+    const LodParameters& p = session.parameters;
+    int obtained = session.levels.obtained_levels;
+    if (current_level < 0 || current_level > obtained)
+        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
+                         " (the obtained number of levels)");
+    bool textured = p.render_mode != RenderMode::untextured;
+    Lod lod;
+    lod.current_level = current_level;
+    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes);
+
+    // Bake the faces of boxes no earlier level baked, in parallel (one face per task).
+    auto start = std::chrono::steady_clock::now();
+    struct FaceJob { int node, face; };
+    std::vector<FaceJob> jobs;
+    std::vector<int> new_boxes;
+    if (textured)
+        for (int node : lod.cut.box_nodes)
+            if (!session.baked.count(node)) new_boxes.push_back(node);
+    for (int node : new_boxes) {
+        session.baked[node];  // create the slots before the parallel work
+        for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
+    }
+    std::map<int, Drawable> subtrees;
+    for (int node : new_boxes) subtrees.emplace(node, make_drawable(model, session.textures, node));
+    parallel_for(jobs.size(), threads, [&](std::size_t j) {
+        const FaceJob& job = jobs[j];
+        BoxFace face = box_faces(*session.boxes[job.node])[job.face];
+        session.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, session.sizing), 1);
+    });
+    session.times.bake += seconds_since(start);
+
+    // Pack every face of the cut's boxes.
+    start = std::chrono::steady_clock::now();
+    std::vector<Eigen::Vector2i> sizes;
+    float longest_face = 0;
+    for (int node : lod.cut.box_nodes)
+        for (const BoxFace& face : box_faces(*session.boxes[node])) {
+            sizes.push_back(texels_of(face, session.sizing));
+            longest_face = std::max({longest_face, 2 * face.half_width, 2 * face.half_height});
+        }
+    const int gutter = session.sizing.gutter;
+    if (textured) lod.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, gutter);
+    session.times.pack += seconds_since(start);
+
+    // The LoD model: the cut's nodes in tree order; box nodes become leaves with six quads.
+    start = std::chrono::steady_clock::now();
+    Model& out = lod.model;
+    out.source = model.source;
+    out.is_lod = true;
+    LodParameters saved = p;
+    saved.current_level = current_level;
+    for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
+
+    LodModelWriter writer{model, out, {}, {}};
+    int first_page_material = -1;
+    if (textured) {
+        first_page_material = 0;
+        for (int page = 0; page < lod.atlas.pages; ++page) {
+            int size = lod.atlas.page_size;
+            Texture color{"color_" + std::to_string(page) + ".png", Image8(size, size, 4, 0), {}};
+            Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size, size, 3, 255), {}};
+            for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
+            Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size, size, 1, 0)};
+            out.textures.push_back(std::move(color));
+            out.textures.push_back(std::move(normal));
+            out.textures.push_back(std::move(height));
+            Material material;
+            material.name = "lod_page_" + std::to_string(page);
+            material.base_color_texture = page * 3;
+            material.normal_texture = page * 3 + 1;
+            material.height_texture = page * 3 + 2;
+            material.alpha_cutout = true;
+            out.materials.push_back(material);
+        }
+    } else {
+        Material material;
+        material.name = "lod_box";
+        material.base_color = {0.7f, 0.7f, 0.7f, 1};
+        out.materials.push_back(material);
+        first_page_material = 0;
+    }
+
+    std::vector<bool> is_box(model.nodes.size(), false);
+    for (int n : lod.cut.box_nodes) is_box[n] = true;
+    std::map<int, int> new_index;
+    std::size_t face_index = 0;
+    for (int n : lod.cut.used_nodes) {
+        const Node& node = model.nodes[n];
+        int parent = node.parent >= 0 ? new_index.at(node.parent) : -1;
+        int index = add_node(out, parent, node.name);
+        new_index[n] = index;
+        out.nodes[index].rule = node.rule;
+        out.nodes[index].scope = node.scope;
+        if (!is_box[n]) {  // kept: its own geometry (a replaced node without box has none)
+            for (const Primitive& primitive : node.primitives) {
+                Primitive copy = primitive;
+                copy.material = writer.material(primitive.material);
+                out.nodes[index].primitives.push_back(std::move(copy));
+            }
+            continue;
+        }
+        // One primitive per page this box's faces landed on.
+        std::map<int, Primitive> by_page;
+        std::array<BoxFace, 6> faces = box_faces(*session.boxes[n]);
+        for (int f = 0; f < 6; ++f, ++face_index) {
+            if (!textured) {
+                Primitive& primitive = by_page[0];
+                primitive.material = first_page_material;
+                append_face_quad(primitive, faces[f], nullptr, {}, 0);
+                continue;
+            }
+            const AtlasPlacement& at = lod.atlas.placements[face_index];
+            Primitive& primitive = by_page[at.page];
+            primitive.material = first_page_material + at.page;
+            append_face_quad(primitive, faces[f], &at, sizes[face_index], lod.atlas.page_size);
+            place_face(session.baked.at(n)[f], at, gutter, out.textures[at.page * 3], out.textures[at.page * 3 + 1],
+                       out.textures[at.page * 3 + 2]);
+        }
+        for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
+    }
+    session.times.mesh += seconds_since(start);
+
+    // Statistics (DESIGN.md: Statistics).
+    MeshCounts lod_counts = mesh_counts(out), original = mesh_counts(model);
+    Eigen::Vector3f size = model_bounds(model).size();
+    lod.statistics = {
+        number_entry("nodes", double(model.nodes.size())),
+        number_entry("used_nodes", double(lod.cut.used_nodes.size())),
+        number_entry("nodes_with_geometry", double(lod.cut.geometry_nodes.size())),
+        number_entry("nodes_with_box", double(lod.cut.box_nodes.size())),
+        number_entry("depth", tree_depth(model)),
+        number_entry("batches_lod", double(lod_counts.batches)),
+        number_entry("faces_lod", double(lod_counts.faces)),
+        number_entry("triangles_lod", double(lod_counts.triangles)),
+        number_entry("vertices_lod", double(lod_counts.vertices)),
+        number_entry("batches_original", double(original.batches)),
+        number_entry("faces_original", double(original.faces)),
+        number_entry("triangles_original", double(original.triangles)),
+        number_entry("vertices_original", double(original.vertices)),
+        float_entry("min_distance", longest_face > 0 ? min_distance(longest_face, session.sizing) : 0),
+        float_entry("mesh_width", size.x()),
+        float_entry("mesh_height", size.y()),
+        float_entry("mesh_depth", size.z()),
+        number_entry("lod_textures", lod.atlas.pages),
+        number_entry("texture_size", lod.atlas.pages ? lod.atlas.page_size : 0),
+        number_entry("obtained_levels", obtained),
+        number_entry("current_level", current_level),
+    };
+    return lod;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,52 @@
+// Building an LoD (the manual's CGA section): boxes and level values once per
+// model; per current level the cut, baking of the boxes not baked before,
+// atlas packing and the LoD mesh (kept original nodes + textured box quads).
+#pragma once
+#include "toolkit/atlas.h"
+#include "toolkit/bake.h"
+#include "toolkit/cut.h"
+#include "toolkit/key_values.h"
+#include "toolkit/parameters.h"
+#include "toolkit/texture_sizing.h"
+
+#include <map>
+#include <memory>
+
+namespace boxlod {
+
+struct LodTimes {  // seconds, for the README's time split
+    double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0, write = 0;  // write: preview + files
+};
+
+// What every level of one model shares.
+struct LodSession {
+    const Model* model = nullptr;
+    LodParameters parameters;  // distance resolved (never 0 here)
+    DecodedTextures textures;
+    std::vector<std::optional<OrientedBox>> boxes;
+    LevelValues levels;
+    TextureSizing sizing;
+    std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
+    LodTimes times;
+};
+
+// Throws InputError for an LoD model (boxlod does not simplify its own output) or bad parameters.
+// `boxes`, when given, are the model's node_boxes for parameters.box_kind (computed once, reused).
+std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
+                                      const std::vector<std::optional<OrientedBox>>* boxes = nullptr);
+
+struct Lod {
+    int current_level = 0;
+    // is_lod and lod_params set; textures 3K, 3K+1, 3K+2 are page K's color_K.png, normal_K.png, height_K.png.
+    Model model;
+    Cut cut;
+    Atlas atlas;  // pages = 0 in untextured mode (no baking)
+    KeyValues statistics;  // DESIGN.md: Statistics
+};
+
+Lod build_lod(LodSession& session, int current_level, int threads);
+
+// The camera of the parameters, or the default view: +X+Y+Z at the sizing distance.
+Camera preview_camera(const LodSession& session);
+
+}  // namespace boxlod

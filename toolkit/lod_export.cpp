@@ -1,0 +1,44 @@
+#include "toolkit/lod_export.h"
+
+#include "renderer/atomic_write.h"
+#include "toolkit/drawable.h"
+#include "toolkit/gltf_io.h"
+
+#include <filesystem>
+
+namespace boxlod {
+
+Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads) {
+    auto drawable = make_drawable_model(lod.model);
+    RenderSettings settings;
+    settings.camera = preview_camera(session);
+    settings.mode = session.parameters.render_mode;
+    settings.light = session.parameters.light ? *session.parameters.light : light_for_camera(settings.camera);
+    settings.parallax_scale = session.parameters.parallax_scale;
+    settings.parallax_bias = session.parameters.parallax_bias;
+    settings.threads = threads;
+    Frame frame = make_frame(width, height, {1, 1, 1});
+    render(drawable->drawable.batches, settings, frame);
+    return frame_to_srgb8(frame);
+}
+
+void export_lod(const Lod& lod, const LodSession& session, const std::string& directory, const std::string& name,
+                const Image8& preview, int threads) {
+    namespace fs = std::filesystem;
+    fs::create_directories(directory);
+    auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
+    Model model = lod.model;
+    for (int i = 0; i < 3 * lod.atlas.pages; ++i) model.textures[i].name = name + "_" + model.textures[i].name;
+    export_gltf(model, file(".gltf"), threads);
+    LodParameters parameters = session.parameters;
+    parameters.current_level = lod.current_level;
+    // The parameter file names its model relative to itself, so the folder can move.
+    std::error_code error;
+    fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);
+    if (!error && !relative.empty()) parameters.model = relative.string();
+    save_parameters(file(".params.txt"), parameters);
+    write_png(file(".preview.png"), preview);
+    write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
+}
+
+}  // namespace boxlod

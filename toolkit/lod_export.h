@@ -1,0 +1,17 @@
+// The files of an LoD export (DESIGN.md: Files; the manual's Save Mesh):
+// NAME.gltf + NAME.bin, NAME_color_K.png, NAME_normal_K.png, NAME_height_K.png,
+// NAME.params.txt, NAME.preview.png, NAME.stats.txt — each written atomically.
+#pragma once
+#include "toolkit/lod_builder.h"
+
+#include <string>
+
+namespace boxlod {
+
+// A render of the LoD with the session's camera, light and render mode.
+Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads);
+
+void export_lod(const Lod& lod, const LodSession& session, const std::string& directory, const std::string& name,
+                const Image8& preview, int threads);
+
+}  // namespace boxlod
