@@ -6,37 +6,49 @@
 namespace boxlod {
 namespace {
 
-// Box-filtered mip chain; odd sizes clamp the last row/column.
+Eigen::Vector4f decode(const MipTexture::Level& level, TexelFormat format, std::size_t i) {
+    if (format == TexelFormat::unorm16) return {float(level.r16[i]) / 65535.0f, 0, 0, 1};
+    const std::uint8_t* p = &level.rgba8[i * 4];
+    if (format == TexelFormat::srgb8) return {srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), float(p[3]) / 255.0f};
+    return {float(p[0]) / 255.0f, float(p[1]) / 255.0f, float(p[2]) / 255.0f, float(p[3]) / 255.0f};
+}
+
+std::uint8_t unorm8(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); }
+
+void encode(MipTexture::Level& level, TexelFormat format, std::size_t i, const Eigen::Vector4f& v) {
+    if (format == TexelFormat::unorm16) {
+        level.r16[i] = std::uint16_t(std::lround(std::clamp(v.x(), 0.0f, 1.0f) * 65535));
+        return;
+    }
+    std::uint8_t* p = &level.rgba8[i * 4];
+    for (int c = 0; c < 3; ++c) p[c] = format == TexelFormat::srgb8 ? linear_to_srgb(v[c]) : unorm8(v[c]);
+    p[3] = unorm8(v.w());
+}
+
+MipTexture::Level make_level(TexelFormat format, int width, int height) {
+    MipTexture::Level level;
+    level.width = width, level.height = height;
+    std::size_t n = std::size_t(width) * height;
+    if (format == TexelFormat::unorm16) level.r16.resize(n);
+    else level.rgba8.resize(n * 4);
+    return level;
+}
+
+// Box-filtered mip chain, averaged in linear space; odd sizes clamp the last row/column.
 void build_mips(MipTexture& texture) {
     while (texture.levels.back().width > 1 || texture.levels.back().height > 1) {
         const MipTexture::Level& fine = texture.levels.back();
-        MipTexture::Level coarse;
-        coarse.width = std::max(1, fine.width / 2);
-        coarse.height = std::max(1, fine.height / 2);
-        coarse.texels.resize(std::size_t(coarse.width) * coarse.height);
+        MipTexture::Level coarse = make_level(texture.format, std::max(1, fine.width / 2), std::max(1, fine.height / 2));
         for (int y = 0; y < coarse.height; ++y)
             for (int x = 0; x < coarse.width; ++x) {
                 int x0 = std::min(2 * x, fine.width - 1), x1 = std::min(2 * x + 1, fine.width - 1);
                 int y0 = std::min(2 * y, fine.height - 1), y1 = std::min(2 * y + 1, fine.height - 1);
-                auto at = [&](int i, int j) { return fine.texels[std::size_t(j) * fine.width + i]; };
-                coarse.texels[std::size_t(y) * coarse.width + x] = (at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1)) * 0.25f;
+                auto at = [&](int i, int j) { return decode(fine, texture.format, std::size_t(j) * fine.width + i); };
+                encode(coarse, texture.format, std::size_t(y) * coarse.width + x,
+                       (at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1)) * 0.25f);
             }
         texture.levels.push_back(std::move(coarse));
     }
-}
-
-template <typename Convert>
-MipTexture texture_from(int width, int height, Wrap wrap, Convert convert) {
-    MipTexture texture;
-    texture.wrap = wrap;
-    MipTexture::Level level;
-    level.width = width;
-    level.height = height;
-    level.texels.resize(std::size_t(width) * height);
-    for (std::size_t i = 0; i < level.texels.size(); ++i) level.texels[i] = convert(i);
-    texture.levels.push_back(std::move(level));
-    build_mips(texture);
-    return texture;
 }
 
 int wrap_index(int i, int size, Wrap wrap) {
@@ -45,14 +57,16 @@ int wrap_index(int i, int size, Wrap wrap) {
     return i < 0 ? i + size : i;
 }
 
-Eigen::Vector4f sample_level(const MipTexture::Level& level, Wrap wrap, Eigen::Vector2f uv, bool nearest) {
+Eigen::Vector4f sample_level(const MipTexture& texture, int index, Eigen::Vector2f uv, bool nearest) {
+    const MipTexture::Level& level = texture.levels[index];
     float x = uv.x() * float(level.width) - 0.5f, y = uv.y() * float(level.height) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return level.texels[0];
+    if (!std::isfinite(x) || !std::isfinite(y)) return decode(level, texture.format, 0);
     // Keep huge repeat coordinates in range before converting to int.
     x = std::clamp(x, -1e7f, 1e7f);
     y = std::clamp(y, -1e7f, 1e7f);
     auto at = [&](int i, int j) {
-        return level.texels[std::size_t(wrap_index(j, level.height, wrap)) * level.width + wrap_index(i, level.width, wrap)];
+        return decode(level, texture.format,
+                      std::size_t(wrap_index(j, level.height, texture.wrap)) * level.width + wrap_index(i, level.width, texture.wrap));
     };
     if (nearest) return at(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f)));
     float fx = std::floor(x), fy = std::floor(y);
@@ -64,37 +78,47 @@ Eigen::Vector4f sample_level(const MipTexture::Level& level, Wrap wrap, Eigen::V
 }  // namespace
 
 MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap) {
-    return texture_from(image.width, image.height, wrap, [&](std::size_t i) {
+    MipTexture texture;
+    texture.format = space == ColorSpace::srgb ? TexelFormat::srgb8 : TexelFormat::unorm8;
+    texture.wrap = wrap;
+    MipTexture::Level level = make_level(texture.format, image.width, image.height);
+    for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
         const std::uint8_t* p = &image.pixels[i * image.channels];
-        Eigen::Vector4f v(0, 0, 0, 1);
-        for (int c = 0; c < std::min(image.channels, 4); ++c)
-            v[c] = (space == ColorSpace::srgb && c < 3) ? srgb_to_linear(p[c]) : float(p[c]) / 255.0f;
-        if (image.channels == 1) v.y() = v.z() = v.x();
-        return v;
-    });
+        std::uint8_t* q = &level.rgba8[i * 4];
+        if (image.channels <= 2) q[0] = q[1] = q[2] = p[0], q[3] = image.channels == 2 ? p[1] : 255;
+        else q[0] = p[0], q[1] = p[1], q[2] = p[2], q[3] = image.channels == 4 ? p[3] : 255;
+    }
+    texture.levels.push_back(std::move(level));
+    build_mips(texture);
+    return texture;
 }
 
 MipTexture make_texture(const Image16& image, Wrap wrap) {
-    return texture_from(image.width, image.height, wrap, [&](std::size_t i) {
-        return Eigen::Vector4f(float(image.pixels[i * image.channels]) / 65535.0f, 0, 0, 1);
-    });
+    MipTexture texture;
+    texture.format = TexelFormat::unorm16;
+    texture.wrap = wrap;
+    MipTexture::Level level = make_level(texture.format, image.width, image.height);
+    for (std::size_t i = 0; i < level.r16.size(); ++i) level.r16[i] = image.pixels[i * image.channels];
+    texture.levels.push_back(std::move(level));
+    build_mips(texture);
+    return texture;
 }
 
-MipTexture make_texture(const ImageF& image, Wrap wrap) {
-    return texture_from(image.width, image.height, wrap,
-                        [&](std::size_t i) { return Eigen::Vector4f(image.pixels[i * image.channels], 0, 0, 1); });
+Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y) {
+    const MipTexture::Level& l = texture.levels[level];
+    return decode(l, texture.format, std::size_t(y) * l.width + x);
 }
 
 Eigen::Vector4f sample(const MipTexture& texture, Eigen::Vector2f uv, float lod) {
-    if (texture.filter == Filter::nearest) return sample_level(texture.levels[0], texture.wrap, uv, true);
-    if (texture.filter == Filter::bilinear || !(lod > 0)) return sample_level(texture.levels[0], texture.wrap, uv, false);
+    if (texture.filter == Filter::nearest) return sample_level(texture, 0, uv, true);
+    if (texture.filter == Filter::bilinear || !(lod > 0)) return sample_level(texture, 0, uv, false);
     float top = float(texture.levels.size() - 1);
     lod = std::min(lod, top);
     int fine = int(std::floor(lod));
     float t = lod - float(fine);
-    Eigen::Vector4f a = sample_level(texture.levels[fine], texture.wrap, uv, false);
+    Eigen::Vector4f a = sample_level(texture, fine, uv, false);
     if (t == 0) return a;
-    Eigen::Vector4f b = sample_level(texture.levels[fine + 1], texture.wrap, uv, false);
+    Eigen::Vector4f b = sample_level(texture, fine + 1, uv, false);
     return a * (1 - t) + b * t;
 }
 

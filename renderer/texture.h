@@ -1,5 +1,6 @@
-// Textures for sampling: linear float RGBA with a mip chain, built once from
-// an 8-bit image (sRGB or linear), a 16-bit or a float single-channel image.
+// Textures for sampling: a mip chain kept in the image's own 8- or 16-bit
+// encoding (as GPUs keep sRGB textures), decoded to linear float per fetch.
+// Built once from an 8-bit image (sRGB or linear) or a 16-bit height map.
 #pragma once
 #include "renderer/image.h"
 
@@ -11,20 +12,29 @@ namespace boxlod {
 enum class ColorSpace { srgb, linear };
 enum class Wrap { repeat, clamp };
 enum class Filter { nearest, bilinear, trilinear };
+enum class TexelFormat {
+    srgb8,    // RGBA8, colour sRGB-encoded, alpha linear
+    unorm8,   // RGBA8, linear (normal maps)
+    unorm16,  // one 16-bit channel (height maps), read as R
+};
 
 struct MipTexture {
     struct Level {
         int width = 0, height = 0;
-        std::vector<Eigen::Vector4f> texels;  // row-major, top row first
+        std::vector<std::uint8_t> rgba8;  // srgb8, unorm8: 4 bytes per texel, row-major, top row first
+        std::vector<std::uint16_t> r16;   // unorm16
     };
+    TexelFormat format = TexelFormat::unorm8;
     std::vector<Level> levels;  // levels[0] full size; each next one half, down to 1x1
     Wrap wrap = Wrap::repeat;
     Filter filter = Filter::trilinear;
 };
 
-MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap = Wrap::repeat);
-MipTexture make_texture(const Image16& image, Wrap wrap = Wrap::clamp);  // single channel -> R in [0, 1]
-MipTexture make_texture(const ImageF& image, Wrap wrap = Wrap::clamp);   // single channel -> R
+MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap = Wrap::repeat);  // 1..4 channels
+MipTexture make_texture(const Image16& image, Wrap wrap = Wrap::clamp);                    // first channel -> R
+
+// One texel of one level, decoded to linear (R, G, B, A); unorm16 gives (h, 0, 0, 1).
+Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y);
 
 // uv as in glTF: (0, 0) is the top-left corner of the image, texel centres at
 // (i + 0.5) / width. `lod` is the mip level (log2 of texels per pixel).

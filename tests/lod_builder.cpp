@@ -142,8 +142,12 @@ TEST(LodBuilder, FzkHausBuildsAtEveryLevelOfEveryModeAndBoxKind) {
             for (int c = 0; c <= n; ++c) {
                 Lod lod = build_lod(*session, c, 2);
                 std::size_t faces = mesh_counts(lod.model).faces;
-                if (c == 0) EXPECT_EQ(faces, original_faces);
-                if (c == n) EXPECT_EQ(faces, 6u) << level_mode_name(mode) << " " << box_kind_name(kind);
+                if (c == 0) {
+                    EXPECT_EQ(faces, original_faces);
+                }
+                if (c == n) {
+                    EXPECT_EQ(faces, 6u) << level_mode_name(mode) << " " << box_kind_name(kind);
+                }
             }
         }
     }
