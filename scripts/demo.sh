@@ -12,9 +12,9 @@ mkdir -p "$out"
 level_table() {
   awk -F' = ' '
     BEGIN { printf "%-6s %10s %10s %10s %8s %8s\n", "level", "faces", "triangles", "boxes", "pages", "size" }
-    $1 == "current_level" { level = $2 } $1 == "faces_lod" { faces = $2 } $1 == "triangles_lod" { tris = $2 }
-    $1 == "nodes_with_box" { boxes = $2 } $1 == "lod_textures" { pages = $2 }
-    $1 == "texture_size" { printf "%-6s %10s %10s %10s %8s %8s\n", level, faces, tris, boxes, pages, $2 }'
+    $1 == "faces_lod" { faces = $2 } $1 == "triangles_lod" { tris = $2 } $1 == "nodes_with_box" { boxes = $2 }
+    $1 == "lod_textures" { pages = $2 } $1 == "texture_size" { size = $2 }
+    $1 == "current_level" { printf "%-6s %10s %10s %10s %8s %8s\n", $2, faces, tris, boxes, pages, size }'
 }
 
 demo_model() {  # demo_model NAME MODEL
@@ -23,7 +23,7 @@ demo_model() {  # demo_model NAME MODEL
   "$boxlod" info "$model" | grep -E '^(nodes|nodes_with_geometry|depth|faces_original|mesh_(width|height|depth)) '
   mkdir -p "$out/$name"
   "$boxlod" build "$model" -o "$out/$name" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
-    --timings > "$out/$name/build.txt"
+    --timings > "$out/$name/build.txt" 2>/dev/null
   level_table < "$out/$name/build.txt"
   grep '^time_' "$out/$name/build.txt" | tr '\n' ' '; echo
   "$boxlod" render "$model" -o "$out/$name/original.png" > /dev/null
