@@ -11,6 +11,8 @@ build_packages=(
 )
 # Real data for the tests and the demo: the KIT FZK-Haus (IFC) and the assimp CLI that converts it.
 data_packages=(assimp-utils assimp-testmodels)
+# The SSIM reference test: scikit-image's structural_similarity (reads PNGs through imageio).
+data_packages+=(python3-skimage python3-imageio)
 
 wanted=("${build_packages[@]}" "${data_packages[@]}")
 

@@ -86,6 +86,20 @@ bad "generate with a grammar syntax error" generate "$work/broken.grammar" -o "$
 check "the syntax error names file:line:column" grep -q "broken.grammar:2:1: expected" "$work/err"
 check "no output after a failed generate" test ! -e "$work/broken.glb"
 bad "generate with an unknown sample" generate --sample castle -o "$work/castle.glb"
+# compare: image metrics between two renders; sizes must match.
+"$boxlod" render "$ifc" -o "$work/other.png" --width 320 --height 240 --mode untextured --camera -X+Y >/dev/null 2>&1
+check "compare succeeds" test "$(status_of "$boxlod" compare "$work/a.png" "$work/other.png")" = 0
+check "compare prints every metric" bash -c "for k in rmse psnr ssim flip iou; do grep -q \"^\$k = [0-9.e-]*\$\" '$work/out' || exit 1; done"
+check "compare of an image with itself: rmse 0, psnr inf, ssim 1, flip 0" bash -c "'$boxlod' compare '$work/a.png' '$work/b.png' > '$work/same' && grep -qx 'rmse = 0' '$work/same' && grep -qx 'psnr = inf' '$work/same' && grep -qx 'ssim = 1' '$work/same' && grep -qx 'flip = 0' '$work/same'"
+check "compare --json is a JSON object" bash -c "'$boxlod' compare '$work/a.png' '$work/other.png' --metric psnr,ssim --json | python3 -c \"import json,sys; d=json.load(sys.stdin); sys.exit(0 if set(d) == {'psnr', 'ssim'} and 0 < d['ssim'] < 1 else 1)\""
+check "compare --heatmap writes a PNG" test "$(status_of "$boxlod" compare "$work/a.png" "$work/other.png" --metric rmse --heatmap "$work/heat.png" --heatmap-metric rmse)" = 0 -a -s "$work/heat.png"
+check "compare with masks gives iou" test "$(status_of "$boxlod" compare "$work/a.png" "$work/b.png" --metric iou --mask-a "$work/mask.png" --mask-b "$work/mask.png")" = 0
+check "iou of a mask with itself is 1" grep -qx "iou = 1" "$work/out"
+"$boxlod" render "$ifc" -o "$work/small.png" --width 160 --height 120 >/dev/null 2>&1
+bad "compare images of different sizes" compare "$work/a.png" "$work/small.png"
+bad "compare with a missing image" compare "$work/a.png" "$work/nope.png"
+bad "compare with an unknown metric" compare "$work/a.png" "$work/other.png" --metric sharpness
+check "no heat map after a failed compare" bash -c "! '$boxlod' compare '$work/a.png' '$work/small.png' --heatmap '$work/heat2.png' 2>/dev/null; test ! -e '$work/heat2.png'"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null

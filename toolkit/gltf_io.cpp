@@ -3,6 +3,7 @@
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
 #include "renderer/parallel.h"
+#include "toolkit/key_values.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -356,54 +357,105 @@ Model import_gltf(const std::string& path) {
 // ---------------------------------------------------------------- export
 namespace {
 
+// The double nearest to a float's shortest decimal form: JSON prints "0.3", not
+// "0.30000001192092896", and reading it back as float gives the same float.
+double json_number(float value) { return std::strtod(format_number(value).c_str(), nullptr); }
+
+// Geometry goes into a few shared buffer views (one per element size) rather
+// than a view per accessor: a city has hundreds of thousands of accessors, and
+// the JSON shrinks by a third. Images get a view each.
 struct Writer {
     tinygltf::Model gltf;
-    std::vector<unsigned char>& data() { return gltf.buffers[0].data; }
 
-    int add_view(const void* bytes, std::size_t size, int target) {
-        while (data().size() % 4) data().push_back(0);  // glTF alignment
+    struct Stream {
+        int target = 0, stride = 0;
+        bool shared = true;  // one view for the whole stream; else a view per piece (images)
+        std::vector<unsigned char> bytes;
+        std::vector<int> views;  // their byteOffset is relative to this stream until finish()
+    };
+    Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}}, vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
+        vec4{TINYGLTF_TARGET_ARRAY_BUFFER, 16, true, {}, {}},
+        indices{TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0, true, {}, {}}, blobs{0, 0, false, {}, {}};
+
+    int new_view(Stream& stream, std::size_t offset, std::size_t length) {
         tinygltf::BufferView view;
         view.buffer = 0;
-        view.byteOffset = data().size();
-        view.byteLength = size;
-        view.target = target;
-        const auto* p = static_cast<const unsigned char*>(bytes);
-        data().insert(data().end(), p, p + size);
+        view.byteOffset = offset;
+        view.byteLength = length;
+        view.byteStride = std::size_t(stream.stride);
+        view.target = stream.target;
         gltf.bufferViews.push_back(view);
-        return int(gltf.bufferViews.size()) - 1;
+        stream.views.push_back(int(gltf.bufferViews.size()) - 1);
+        return stream.views.back();
     }
+
+    // Appends bytes; returns (view, offset of the bytes within that view).
+    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size) {
+        while (stream.bytes.size() % 4) stream.bytes.push_back(0);  // glTF alignment
+        std::size_t offset = stream.bytes.size();
+        const auto* p = static_cast<const unsigned char*>(bytes);
+        stream.bytes.insert(stream.bytes.end(), p, p + size);
+        if (!stream.shared) return {new_view(stream, offset, size), 0};
+        int view = stream.views.empty() ? new_view(stream, 0, 0) : stream.views.front();
+        return {view, offset};
+    }
+
+    int add_image(const std::vector<std::uint8_t>& png) { return append(blobs, png.data(), png.size()).first; }
 
     template <typename Vector>
     int add_accessor(const std::vector<Vector>& values, int type, bool bounds) {
+        Stream& stream = sizeof(Vector) == 12 ? vec3 : sizeof(Vector) == 8 ? vec2 : vec4;
+        auto [view, offset] = append(stream, values.data(), values.size() * sizeof(Vector));
         tinygltf::Accessor accessor;
-        accessor.bufferView = add_view(values.data(), values.size() * sizeof(Vector), TINYGLTF_TARGET_ARRAY_BUFFER);
+        accessor.bufferView = view;
+        accessor.byteOffset = offset;
         accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
         accessor.count = values.size();
         accessor.type = type;
         if (bounds && !values.empty()) {
             Vector lo = values[0], hi = values[0];
             for (const Vector& v : values) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
-            accessor.minValues.assign(lo.data(), lo.data() + lo.size());
-            accessor.maxValues.assign(hi.data(), hi.data() + hi.size());
+            for (int c = 0; c < lo.size(); ++c) {
+                accessor.minValues.push_back(json_number(lo[c]));
+                accessor.maxValues.push_back(json_number(hi[c]));
+            }
         }
-        gltf.accessors.push_back(accessor);
+        gltf.accessors.push_back(std::move(accessor));
         return int(gltf.accessors.size()) - 1;
     }
 
-    int add_indices(const std::vector<std::uint32_t>& indices) {
+    int add_indices(const std::vector<std::uint32_t>& values) {
+        auto [view, offset] = append(indices, values.data(), values.size() * 4);
         tinygltf::Accessor accessor;
-        accessor.bufferView = add_view(indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+        accessor.bufferView = view;
+        accessor.byteOffset = offset;
         accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        accessor.count = indices.size();
+        accessor.count = values.size();
         accessor.type = TINYGLTF_TYPE_SCALAR;
-        gltf.accessors.push_back(accessor);
+        gltf.accessors.push_back(std::move(accessor));
         return int(gltf.accessors.size()) - 1;
+    }
+
+    // Lays the streams out in one buffer, in a fixed order, and places the views.
+    const std::vector<unsigned char>& finish() {
+        gltf.buffers.resize(1);
+        std::vector<unsigned char>& data = gltf.buffers[0].data;
+        for (Stream* stream : {&vec3, &vec2, &vec4, &indices, &blobs}) {
+            while (data.size() % 4) data.push_back(0);
+            std::size_t base = data.size();
+            data.insert(data.end(), stream->bytes.begin(), stream->bytes.end());
+            for (int view : stream->views) {
+                gltf.bufferViews[view].byteOffset += base;
+                if (stream->shared) gltf.bufferViews[view].byteLength = stream->bytes.size();
+            }
+        }
+        return data;
     }
 };
 
 tinygltf::Value number_array(const float* values, int n) {
     tinygltf::Value::Array array;
-    for (int i = 0; i < n; ++i) array.emplace_back(double(values[i]));
+    for (int i = 0; i < n; ++i) array.emplace_back(json_number(values[i]));
     return tinygltf::Value(std::move(array));
 }
 
@@ -427,7 +479,6 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
         for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(value);
         w.gltf.asset.extras = boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
     }
-    w.gltf.buffers.emplace_back();
 
     std::vector<std::string> image_files;
     // PNG encoding dominates an LoD export: encode the textures in parallel, store them in order.
@@ -443,7 +494,7 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
         image.name = texture.name;
         image.mimeType = "image/png";
         if (binary) {
-            image.bufferView = w.add_view(png.data(), png.size(), 0);
+            image.bufferView = w.add_image(png);
         } else {
             std::string name = fs::path(texture.name).filename().string();
             if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos)
@@ -459,7 +510,8 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
     for (const Material& material : model.materials) {
         tinygltf::Material out;
         out.name = material.name;
-        out.pbrMetallicRoughness.baseColorFactor.assign(material.base_color.data(), material.base_color.data() + 4);
+        out.pbrMetallicRoughness.baseColorFactor.clear();
+        for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
         out.pbrMetallicRoughness.baseColorTexture.index = material.base_color_texture;
         out.pbrMetallicRoughness.metallicFactor = 0;
         out.pbrMetallicRoughness.roughnessFactor = 1;
@@ -467,12 +519,18 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
         out.doubleSided = material.double_sided;
         if (material.alpha_cutout) out.alphaMode = "MASK";  // cutoff 0.5, the glTF default
         tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
-                                       {"shininess", tinygltf::Value(double(material.shininess))}};
+                                       {"shininess", tinygltf::Value(json_number(material.shininess))}};
         // glTF has no height-map slot; the image index travels in extras.
         if (material.height_texture >= 0) extras["height_texture"] = tinygltf::Value(material.height_texture);
         out.extras = boxlod_object(std::move(extras));
         w.gltf.materials.push_back(out);
     }
+    // tinygltf's types copy (not move) when a vector grows: reserve everything up front.
+    std::size_t meshes = 0, primitives = 0;
+    for (const Node& node : model.nodes) meshes += node.has_geometry(), primitives += node.primitives.size();
+    w.gltf.nodes.reserve(model.nodes.size());
+    w.gltf.meshes.reserve(meshes);
+    w.gltf.accessors.reserve(primitives * 5);
     for (const Node& node : model.nodes) {
         tinygltf::Node out;
         out.name = node.name;
@@ -508,16 +566,17 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
                     p.extras = boxlod_object({{"polygons", tinygltf::Value(int(primitive.polygon_count))}});
                 mesh.primitives.push_back(p);
             }
-            w.gltf.meshes.push_back(mesh);
+            w.gltf.meshes.push_back(std::move(mesh));
             out.mesh = int(w.gltf.meshes.size()) - 1;
         }
-        w.gltf.nodes.push_back(out);
+        w.gltf.nodes.push_back(std::move(out));
     }
     tinygltf::Scene scene;
     scene.nodes = {0};
     w.gltf.scenes.push_back(scene);
     w.gltf.defaultScene = 0;
 
+    const std::vector<unsigned char>& data = w.finish();
     tinygltf::TinyGLTF writer;
     writer.SetImageWriter(nullptr, nullptr);  // images are written above, atomically
     std::ostringstream stream;
@@ -527,11 +586,11 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
         return;
     }
     std::string bin_name = stem + ".bin";
-    write_file_atomically((target.parent_path() / bin_name).string(), w.data());
+    write_file_atomically((target.parent_path() / bin_name).string(), data);
     writer.WriteGltfSceneToStream(&w.gltf, stream, true, false);
     // The stream writer embeds buffers as data URIs; point the buffer at NAME.bin instead.
     nlohmann::json json = nlohmann::json::parse(stream.str());
-    json["buffers"][0] = {{"byteLength", w.data().size()}, {"uri", bin_name}};
+    json["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
     write_text_atomically(path, json.dump(2) + "\n");
 }
 

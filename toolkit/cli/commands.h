@@ -19,5 +19,6 @@ Subcommand render_subcommand();
 Subcommand generate_subcommand();
 Subcommand levels_subcommand();
 Subcommand build_subcommand();
+Subcommand compare_subcommand();
 
 }  // namespace boxlod

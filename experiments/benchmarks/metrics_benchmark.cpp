@@ -1,0 +1,115 @@
+// What the image metrics cost next to rendering: each metric on a pair of
+// 512x512 and 1920x1080 images (a render of the FZK-Haus and the same view
+// from 5% farther away), and the render itself for scale.
+//   build/experiments/metrics_benchmark [--benchmark_filter=...]
+// The second argument of every case is the thread count.
+#include "experiments/flip.h"
+#include "experiments/image_metrics.h"
+#include "experiments/silhouette.h"
+#include "toolkit/cli/render_options.h"
+#include "toolkit/drawable.h"
+#include "toolkit/model_io.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+using namespace boxlod;
+
+namespace {
+
+const char* fzk_haus_ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
+
+const DrawableModel& house() {
+    static const std::unique_ptr<DrawableModel> drawable = make_drawable_model(load_model(fzk_haus_ifc));
+    return *drawable;
+}
+
+View house_view(int width, int height, double distance_scale, int threads) {
+    Arguments arguments;
+    arguments.values["width"] = std::to_string(width);
+    arguments.values["height"] = std::to_string(height);
+    arguments.values["threads"] = std::to_string(threads);
+    View framing = view_from_arguments(arguments, house().drawable.bounds);
+    arguments.values["distance"] = std::to_string(framing.distance * distance_scale);
+    return view_from_arguments(arguments, house().drawable.bounds);
+}
+
+Image8 render_house(int width, int height, double distance_scale, int threads) {
+    View view = house_view(width, height, distance_scale, threads);
+    Frame frame = make_frame(view.width, view.height, view.background);
+    render(house().drawable.batches, view.settings, frame);
+    return frame_to_srgb8(frame);
+}
+
+// The pair of images for one size, rendered once.
+const std::pair<Image8, Image8>& image_pair(int width, int height) {
+    static std::map<std::pair<int, int>, std::pair<Image8, Image8>> cache;
+    auto key = std::pair{width, height};
+    if (!cache.count(key)) cache[key] = {render_house(width, height, 1.0, 0), render_house(width, height, 1.05, 0)};
+    return cache[key];
+}
+
+void set_pixels(benchmark::State& state) {
+    state.counters["Mpixel/s"] = benchmark::Counter(double(state.range(0)) * double(state.range(1)) * 1e-6,
+                                                    benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void bm_render(benchmark::State& state) {
+    int width = int(state.range(0)), height = int(state.range(1)), threads = int(state.range(2));
+    View view = house_view(width, height, 1.0, threads);
+    Frame frame = make_frame(view.width, view.height, view.background);
+    for (auto _ : state) {
+        frame = make_frame(view.width, view.height, view.background);
+        render(house().drawable.batches, view.settings, frame);
+        benchmark::DoNotOptimize(frame.color.data());
+    }
+    set_pixels(state);
+}
+
+void bm_rmse_psnr(benchmark::State& state) {
+    const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
+    for (auto _ : state) benchmark::DoNotOptimize(psnr(a, b));
+    set_pixels(state);
+}
+
+void bm_ssim(benchmark::State& state) {
+    const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
+    for (auto _ : state) benchmark::DoNotOptimize(ssim(a, b, int(state.range(2))));
+    set_pixels(state);
+}
+
+void bm_flip(benchmark::State& state) {
+    const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
+    for (auto _ : state) benchmark::DoNotOptimize(flip(a, b, 67, int(state.range(2))).mean);
+    set_pixels(state);
+}
+
+void bm_iou(benchmark::State& state) {
+    const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(silhouette_iou(coverage_from_background(a, {255, 255, 255}),
+                                                coverage_from_background(b, {255, 255, 255})));
+    set_pixels(state);
+}
+
+void sizes_and_threads(benchmark::internal::Benchmark* b) {
+    for (auto [w, h] : {std::pair{512, 512}, std::pair{1920, 1080}})
+        for (int threads : {1, 2}) b->Args({w, h, threads});
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+    for (auto [w, h] : {std::pair{512, 512}, std::pair{1920, 1080}}) b->Args({w, h});
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+}  // namespace
+
+BENCHMARK(bm_render)->Apply(sizes_and_threads);
+BENCHMARK(bm_rmse_psnr)->Apply(sizes);
+BENCHMARK(bm_ssim)->Apply(sizes_and_threads);
+BENCHMARK(bm_flip)->Apply(sizes_and_threads);
+BENCHMARK(bm_iou)->Apply(sizes);
+BENCHMARK_MAIN();

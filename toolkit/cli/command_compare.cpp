@@ -1,0 +1,123 @@
+#include "experiments/flip.h"
+#include "experiments/heatmap.h"
+#include "experiments/image_metrics.h"
+#include "experiments/silhouette.h"
+#include "toolkit/cli/commands.h"
+#include "toolkit/cli/render_options.h"
+#include "toolkit/key_values.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+namespace boxlod {
+
+namespace {
+
+const std::vector<std::string> known_metrics = {"rmse", "psnr", "ssim", "flip", "iou"};
+
+std::vector<std::string> parse_metrics(const std::string& list) {
+    std::vector<std::string> metrics;
+    std::stringstream words(list);
+    for (std::string word; std::getline(words, word, ',');) {
+        if (std::find(known_metrics.begin(), known_metrics.end(), word) == known_metrics.end())
+            throw InputError("boxlod compare: --metric: unknown metric '" + word + "' (known: rmse, psnr, ssim, flip, iou)");
+        if (std::find(metrics.begin(), metrics.end(), word) == metrics.end()) metrics.push_back(word);
+    }
+    if (metrics.empty()) throw InputError("boxlod compare: --metric: expected a list such as rmse,psnr");
+    return metrics;
+}
+
+void require_same_size(const Image8& a, const std::string& a_name, const Image8& b, const std::string& b_name) {
+    if (a.width == b.width && a.height == b.height) return;
+    throw_input_error(b_name, "", std::to_string(b.width) + "x" + std::to_string(b.height) + " differs in size from " +
+                                      a_name + " (" + std::to_string(a.width) + "x" + std::to_string(a.height) + ")");
+}
+
+// A number, or `inf` (a JSON string) for the PSNR of identical images.
+KeyValue metric_entry(const std::string& key, double value) {
+    if (std::isinf(value)) return {key, value > 0 ? "inf" : "-inf", false};
+    return number_entry(key, value);
+}
+
+double silhouette_metric(const Arguments& arguments, const Image8& a, const Image8& b) {
+    if (arguments.has("mask-a") != arguments.has("mask-b"))
+        throw InputError("boxlod compare: --mask-a and --mask-b go together");
+    if (arguments.has("mask-a")) {
+        Image8 mask_a = read_image(arguments.text("mask-a")), mask_b = read_image(arguments.text("mask-b"));
+        require_same_size(a, arguments.positionals[0], mask_a, arguments.text("mask-a"));
+        require_same_size(a, arguments.positionals[0], mask_b, arguments.text("mask-b"));
+        return silhouette_iou(coverage_from_mask(mask_a), coverage_from_mask(mask_b));
+    }
+    // boxlod render's background, white unless told otherwise (sRGB components in [0, 1]).
+    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background", "1,1,1"));
+    std::array<std::uint8_t, 3> background{};
+    for (int c = 0; c < 3; ++c) background[c] = std::uint8_t(std::lround(std::clamp(srgb[c], 0.0f, 1.0f) * 255));
+    return silhouette_iou(coverage_from_background(a, background), coverage_from_background(b, background));
+}
+
+int run_compare(const Arguments& arguments) {
+    const std::string& a_name = arguments.positionals[0];
+    const std::string& b_name = arguments.positionals[1];
+    std::vector<std::string> metrics = parse_metrics(arguments.text("metric", "rmse,psnr,ssim,flip,iou"));
+    std::string heatmap_metric = arguments.text("heatmap-metric", "flip");
+    if (heatmap_metric != "flip" && heatmap_metric != "rmse")
+        throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
+    double ppd = arguments.number("ppd", 67);
+    if (ppd <= 0) throw InputError("boxlod compare: --ppd: expected a positive number of pixels per degree");
+    int threads = arguments.integer("threads", 0);
+    if (threads < 0) throw InputError("boxlod compare: --threads: expected a positive count");
+
+    Image8 a = read_image(a_name), b = read_image(b_name);
+    require_same_size(a, a_name, b, b_name);
+    bool wants_ssim = std::find(metrics.begin(), metrics.end(), "ssim") != metrics.end();
+    if (wants_ssim && (a.width < 11 || a.height < 11))
+        throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");
+
+    KeyValues report;
+    std::optional<FlipResult> flip_result;
+    auto flip_of = [&]() -> const FlipResult& {
+        if (!flip_result) flip_result = flip(a, b, ppd, threads);
+        return *flip_result;
+    };
+    for (const std::string& metric : metrics) {
+        if (metric == "rmse") report.push_back(number_entry("rmse", rmse(a, b)));
+        if (metric == "psnr") report.push_back(metric_entry("psnr", psnr(a, b)));
+        if (metric == "ssim") report.push_back(number_entry("ssim", ssim(a, b, threads)));
+        if (metric == "flip") report.push_back(number_entry("flip", flip_of().mean));
+        if (metric == "iou") report.push_back(number_entry("iou", silhouette_metric(arguments, a, b)));
+    }
+    if (arguments.has("heatmap")) {
+        Plane error = heatmap_metric == "flip" ? flip_of().error : rgb_error_map(a, b);
+        write_png(arguments.text("heatmap"), error_heatmap(error));
+        report.push_back(text_entry("heatmap", arguments.text("heatmap")));
+    }
+    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand compare_subcommand() {
+    return {{"compare", "A.png B.png",
+             "Compare two images of the same size: RMSE and PSNR (dB) of the sRGB values in [0, 1] (psnr = inf for "
+             "identical images), SSIM on BT.601 luma (as scikit-image's structural_similarity, Gaussian sigma 1.5), "
+             "mean FLIP (LDR), and the silhouette IoU.",
+             {{"metric", "LIST", "comma-separated metrics among rmse,psnr,ssim,flip,iou (default: all)"},
+              {"heatmap", "FILE", "write a PNG of the per-pixel error (black, red, yellow, white = 0 .. 1)"},
+              {"heatmap-metric", "NAME", "the heat map's error: flip (default) or rmse (per-pixel RMS over RGB)"},
+              {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)"},
+              {"mask-a", "FILE", "coverage mask of A for iou (covered where > 127; e.g. from render --coverage)"},
+              {"mask-b", "FILE", "coverage mask of B for iou"},
+              {"background", "R,G,B", "without masks, iou counts pixels differing from this sRGB colour in [0, 1] "
+                                      "(default 1,1,1, the render background)"},
+              {"threads", "N", "threads to use (default: all cores)"},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             2, 2},
+            run_compare};
+}
+
+}  // namespace boxlod
