@@ -48,6 +48,27 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
     EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
 }
 
+// One file of each format the original program's users have, from Debian's assimp-testmodels.
+TEST(AssimpIo, EveryFormatReadsWithItsHierarchy) {
+    struct Case { const char* file; const char* nodes; const char* depth; const char* faces; };
+    const Case cases[] = {
+        {"FBX/cubes_with_names.fbx", "5", "2", "210"}, {"Collada/duck.dae", "4", "1", "2144"},
+        {"PLY/cube.ply", "1", "0", "6"},               {"OFF/Cube.off", "1", "0", "6"},
+        {"3DS/fels.3ds", "2", "1", "768"},             {"OBJ/box.obj", "2", "1", "6"},
+    };
+    for (const Case& c : cases) {
+        Model model = load_model(std::string("/usr/share/assimp/models/") + c.file);
+        EXPECT_EQ(statistic(model, "nodes"), c.nodes) << c.file;
+        EXPECT_EQ(statistic(model, "depth"), c.depth) << c.file;
+        EXPECT_EQ(statistic(model, "faces_original"), c.faces) << c.file;
+    }
+    // The file names TEST.PNG, the folder holds test.png: texture names that
+    // differ in letter case from the files still load.
+    Model textured = load_model("/usr/share/assimp/models/3DS/cube_with_diffuse_texture.3DS");
+    ASSERT_EQ(textured.textures.size(), 1u);
+    EXPECT_GT(textured.textures[0].image.width, 0);
+}
+
 // Real data made by others: the KIT FZK-Haus, read from IFC directly and from
 // the glTF that assimp's own exporter makes of it.
 TEST(AssimpIo, FzkHausIfcKeepsItsHierarchy) {

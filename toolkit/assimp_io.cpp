@@ -53,6 +53,22 @@ Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
     return out;
 }
 
+// Texture names in FBX/3DS files often differ from the files in letter case
+// (written on Windows): fall back to a case-insensitive match in the folder.
+fs::path find_file(const fs::path& directory, const std::string& name) {
+    fs::path exact = directory / name;
+    std::error_code error;
+    if (fs::exists(exact, error)) return exact;
+    auto lower = [](std::string s) {
+        for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    fs::path wanted = exact.filename();
+    for (const auto& entry : fs::directory_iterator(exact.parent_path(), error))
+        if (lower(entry.path().filename().string()) == lower(wanted.string())) return entry.path();
+    return exact;  // reading it gives the error that names the missing file
+}
+
 int load_texture(Model& model, const aiScene& scene, const aiMaterial& material, aiTextureType type,
                  const fs::path& directory) {
     aiString name;
@@ -72,7 +88,7 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
             }
         }
     } else {
-        texture.image = read_image((directory / file).string());
+        texture.image = read_image(find_file(directory, file).string());
     }
     model.textures.push_back(std::move(texture));
     return int(model.textures.size()) - 1;
