@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages boxlod needs that are missing; nothing else.
-# Usage: scripts/install-deps.sh [GROUP...]   groups: build (default), test
+# Usage: scripts/install-deps.sh [bench]   (bench adds the benchmarks' peers)
 set -euo pipefail
 
 build_packages=(
@@ -14,7 +14,11 @@ data_packages=(assimp-utils assimp-testmodels)
 # The SSIM reference test: scikit-image's structural_similarity (reads PNGs through imageio).
 data_packages+=(python3-skimage python3-imageio)
 
+# The rasterizer benchmark's peer: Mesa's llvmpipe through OSMesa.
+bench_packages=(libosmesa6-dev)
+
 wanted=("${build_packages[@]}" "${data_packages[@]}")
+[ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")
 
 missing=()
 for package in "${wanted[@]}"; do
