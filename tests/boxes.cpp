@@ -4,26 +4,17 @@
 #include "toolkit/box_fit.h"
 #include "toolkit/model_io.h"
 
+#include "box_checks.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 namespace boxlod {
 namespace {
 
-bool encloses(const OrientedBox& box, const Eigen::Vector3f& p, double tolerance = 1e-5) {
-    Eigen::Vector3d local = box.axes.cast<double>().transpose() * (p.cast<double>() - box.center.cast<double>());
-    return (local.cwiseAbs().array() <= box.half_extents.cast<double>().array() + tolerance).all();
-}
-
-bool valid_frame(const OrientedBox& box) {
-    return (box.axes.transpose() * box.axes).isApprox(Eigen::Matrix3f::Identity(), 1e-5f) &&
-           std::abs(box.axes.determinant() - 1) < 1e-5f;
-}
-
-bool bitwise_equal(const std::optional<OrientedBox>& a, const std::optional<OrientedBox>& b) {
-    if (!a || !b) return !a && !b;
-    return a->center == b->center && a->axes == b->axes && a->half_extents == b->half_extents;
-}
+using test::bitwise_equal;
+using test::encloses;
+using test::valid_frame;
 
 OrientedBox make_box(Eigen::Vector3f center, float angle, Eigen::Vector3f half_extents) {
     OrientedBox box;

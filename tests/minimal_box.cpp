@@ -3,6 +3,8 @@
 #include "toolkit/box_fit.h"
 #include "toolkit/boxes.h"
 
+#include "box_checks.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -11,19 +13,9 @@
 namespace boxlod {
 namespace {
 
-bool encloses(const OrientedBox& box, const Eigen::Vector3f& p, double tolerance = 1e-5) {
-    Eigen::Vector3d local = box.axes.cast<double>().transpose() * (p.cast<double>() - box.center.cast<double>());
-    return (local.cwiseAbs().array() <= box.half_extents.cast<double>().array() + tolerance).all();
-}
-
-bool valid_frame(const OrientedBox& box) {
-    return (box.axes.transpose() * box.axes).isApprox(Eigen::Matrix3f::Identity(), 1e-5f) &&
-           std::abs(box.axes.determinant() - 1) < 1e-5f;
-}
-
-bool bitwise_equal(const OrientedBox& a, const OrientedBox& b) {
-    return a.center == b.center && a.axes == b.axes && a.half_extents == b.half_extents;
-}
+using test::bitwise_equal;
+using test::encloses;
+using test::valid_frame;
 
 OrientedBox rotated_box() {
     OrientedBox box;
