@@ -8,6 +8,7 @@ namespace {
 
 Eigen::Vector4f decode(const MipTexture::Level& level, TexelFormat format, std::size_t i) {
     if (format == TexelFormat::unorm16) return {float(level.r16[i]) / 65535.0f, 0, 0, 1};
+    if (format == TexelFormat::float32) return {level.r32[i], 0, 0, 1};
     const std::uint8_t* p = &level.rgba8[i * 4];
     if (format == TexelFormat::srgb8) return {srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), float(p[3]) / 255.0f};
     return {float(p[0]) / 255.0f, float(p[1]) / 255.0f, float(p[2]) / 255.0f, float(p[3]) / 255.0f};
@@ -20,6 +21,10 @@ void encode(MipTexture::Level& level, TexelFormat format, std::size_t i, const E
         level.r16[i] = std::uint16_t(std::lround(std::clamp(v.x(), 0.0f, 1.0f) * 65535));
         return;
     }
+    if (format == TexelFormat::float32) {
+        level.r32[i] = v.x();
+        return;
+    }
     std::uint8_t* p = &level.rgba8[i * 4];
     for (int c = 0; c < 3; ++c) p[c] = format == TexelFormat::srgb8 ? linear_to_srgb(v[c]) : unorm8(v[c]);
     p[3] = unorm8(v.w());
@@ -30,6 +35,7 @@ MipTexture::Level make_level(TexelFormat format, int width, int height) {
     level.width = width, level.height = height;
     std::size_t n = std::size_t(width) * height;
     if (format == TexelFormat::unorm16) level.r16.resize(n);
+    else if (format == TexelFormat::float32) level.r32.resize(n);
     else level.rgba8.resize(n * 4);
     return level;
 }
@@ -99,6 +105,17 @@ MipTexture make_texture(const Image16& image, Wrap wrap) {
     texture.wrap = wrap;
     MipTexture::Level level = make_level(texture.format, image.width, image.height);
     for (std::size_t i = 0; i < level.r16.size(); ++i) level.r16[i] = image.pixels[i * image.channels];
+    texture.levels.push_back(std::move(level));
+    build_mips(texture);
+    return texture;
+}
+
+MipTexture make_texture(const ImageF& image, Wrap wrap) {
+    MipTexture texture;
+    texture.format = TexelFormat::float32;
+    texture.wrap = wrap;
+    MipTexture::Level level = make_level(texture.format, image.width, image.height);
+    for (std::size_t i = 0; i < level.r32.size(); ++i) level.r32[i] = image.pixels[i * image.channels];
     texture.levels.push_back(std::move(level));
     build_mips(texture);
     return texture;

@@ -16,6 +16,7 @@ enum class TexelFormat {
     srgb8,    // RGBA8, colour sRGB-encoded, alpha linear
     unorm8,   // RGBA8, linear (normal maps)
     unorm16,  // one 16-bit channel (height maps), read as R
+    float32,  // one float channel (height maps in world units or [0, 1]), read as R
 };
 
 struct MipTexture {
@@ -23,6 +24,7 @@ struct MipTexture {
         int width = 0, height = 0;
         std::vector<std::uint8_t> rgba8;  // srgb8, unorm8: 4 bytes per texel, row-major, top row first
         std::vector<std::uint16_t> r16;   // unorm16
+        std::vector<float> r32;           // float32
     };
     TexelFormat format = TexelFormat::unorm8;
     std::vector<Level> levels;  // levels[0] full size; each next one half, down to 1x1
@@ -32,8 +34,9 @@ struct MipTexture {
 
 MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap = Wrap::repeat);  // 1..4 channels
 MipTexture make_texture(const Image16& image, Wrap wrap = Wrap::clamp);                    // first channel -> R
+MipTexture make_texture(const ImageF& image, Wrap wrap = Wrap::clamp);                     // first channel -> R
 
-// One texel of one level, decoded to linear (R, G, B, A); unorm16 gives (h, 0, 0, 1).
+// One texel of one level, decoded to linear (R, G, B, A); unorm16 and float32 give (h, 0, 0, 1).
 Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y);
 
 // uv as in glTF: (0, 0) is the top-left corner of the image, texel centres at

@@ -70,6 +70,11 @@ TEST(Texture, SrgbTexturesDecodeToLinear) {
     EXPECT_FLOAT_EQ(texel(make_texture(image, ColorSpace::srgb), 0, 0, 0).w(), 128 / 255.0f);  // alpha stays linear
     Image16 height(1, 1, 1, 65535);
     EXPECT_FLOAT_EQ(texel(make_texture(height), 0, 0, 0).x(), 1.0f);
+    ImageF depth(2, 1, 1, 0.25f);
+    depth.pixels[1] = 0.75f;
+    MipTexture floats = make_texture(depth);
+    EXPECT_FLOAT_EQ(texel(floats, 0, 1, 0).x(), 0.75f);
+    EXPECT_FLOAT_EQ(texel(floats, 1, 0, 0).x(), 0.5f);  // float mips are exact averages
     // sRGB mips average in linear space: black and white make 0.5 linear, not 0.5 encoded.
     Image8 pair(2, 1, 4, 255);
     pair.pixels[0] = pair.pixels[1] = pair.pixels[2] = 0;
