@@ -4,6 +4,7 @@
 #include "renderer/input_error.h"
 #include "test_support.h"
 #include "toolkit/model_io.h"
+#include "toolkit/drawable.h"
 #include "toolkit/statistics.h"
 
 #include <gtest/gtest.h>
@@ -99,6 +100,27 @@ TEST(Samples, ExportedScopesAndRulesReadBack) {
         EXPECT_LT((back.nodes[i].scope->center - model.nodes[i].scope->center).norm(), 1e-5f);
     }
     EXPECT_EQ(back.textures.size(), model.textures.size());
+}
+
+}  // namespace boxlod
+
+namespace boxlod {
+
+// A golden render of each sample (and a small city) in normal mode from the
+// default view: what the grammars build, pinned pixel for pixel.
+TEST(SamplesGolden, EachSampleRendered) {
+    for (const SampleGrammar& sample : sample_grammars()) {
+        Model model = generate_building(sample_grammar(std::string(sample.name)), {});
+        auto drawable = make_drawable_model(model);
+        const Bounds& bounds = drawable->drawable.bounds;
+        float radius = bounds.size().norm() / 2;
+        RenderSettings settings;
+        settings.camera = camera_at_position({1, 1, 1}, bounds.center(), framing_distance(radius, 45), 45, radius);
+        settings.light = light_for_camera(settings.camera);
+        Frame frame = make_frame(160, 120, {1, 1, 1});
+        render(drawable->drawable.batches, settings, frame);
+        test::expect_golden(frame_to_srgb8(frame), "sample_" + std::string(sample.name));
+    }
 }
 
 }  // namespace boxlod
