@@ -7,7 +7,7 @@ build_packages=(
   build-essential cmake pkg-config
   libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libopenexr-dev libassimp-dev libmeshoptimizer-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libsdl2-dev
 )
 # Real data for the tests and the demo: the KIT FZK-Haus (IFC) and the assimp CLI that converts it.
 data_packages=(assimp-utils assimp-testmodels)
@@ -16,6 +16,9 @@ data_packages+=(python3-skimage python3-imageio)
 
 # The rasterizer benchmark's peer: Mesa's llvmpipe through OSMesa.
 bench_packages=(libosmesa6-dev)
+
+# The viewer's test runs it in a virtual X server.
+data_packages+=(xvfb xauth)
 
 wanted=("${build_packages[@]}" "${data_packages[@]}")
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")

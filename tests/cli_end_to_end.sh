@@ -100,6 +100,25 @@ bad "compare images of different sizes" compare "$work/a.png" "$work/small.png"
 bad "compare with a missing image" compare "$work/a.png" "$work/nope.png"
 bad "compare with an unknown metric" compare "$work/a.png" "$work/other.png" --metric sharpness
 check "no heat map after a failed compare" bash -c "! '$boxlod' compare '$work/a.png' '$work/small.png' --heatmap '$work/heat2.png' 2>/dev/null; test ! -e '$work/heat2.png'"
+# simplify: the quadric edge-collapse baseline.
+check "simplify succeeds" test "$(status_of "$boxlod" simplify "$ifc" --faces 500 -o "$work/simple.glb" --threads 2)" = 0
+check "simplify prints its counts" bash -c "for k in faces_original faces triangles vertices seconds; do grep -q \"^\$k = [0-9.e-]*\$\" '$work/out' || exit 1; done"
+check "simplify keeps at most the faces asked for" bash -c "f=\$(sed -n 's/^faces = //p' '$work/out'); test \"\$f\" -le 500 -a \"\$f\" -ge 400"
+check "the simplified model loads" test "$(status_of "$boxlod" info "$work/simple.glb")" = 0
+bad "simplify with --faces 0" simplify "$ifc" --faces 0 -o "$work/none.glb"
+check "no output after a failed simplify" test ! -e "$work/none.glb"
+# sweep: one mode, two levels, one view of the FZK-Haus; a bad config is one line, exit 2.
+printf 'models = %s\nlevel_modes = top-down\nlevels = 0, 8\nviews = -Z\nwidth = 64\nheight = 48\nmetrics = psnr, ssim\n' "$ifc" > "$work/sweep.txt"
+check "sweep succeeds" test "$(status_of "$boxlod" sweep "$work/sweep.txt" -o "$work/sweep" --threads 2)" = 0
+check "sweep prints its counts" bash -c "grep -qx 'rows = 2' '$work/out' && grep -qx 'rows_computed = 2' '$work/out' && grep -qx 'lods_built = 2' '$work/out'"
+check "sweep writes a header and two rows" test "$(wc -l < "$work/sweep/results.csv")" = 3
+check "sweep level 0 is the original" grep -q "^$ifc,top-down,expanded,linear,0,-Z,1,normal,8,16037,.*,inf,1\$" "$work/sweep/results.csv"
+check "sweep level 8 is one box" grep -q "^$ifc,top-down,expanded,linear,8,-Z,1,normal,8,6," "$work/sweep/results.csv"
+check "sweep reports progress on stderr" grep -q "ETA" "$work/err"
+check "sweep again skips every row" bash -c "'$boxlod' sweep '$work/sweep.txt' -o '$work/sweep' 2>/dev/null | grep -qx 'rows_skipped = 2'"
+printf 'models = %s\nlevel_modes = sideways\n' "$ifc" > "$work/bad_sweep.txt"
+bad "sweep with a bad config" sweep "$work/bad_sweep.txt" -o "$work/bad_sweep"
+check "the sweep error names file:line:key" grep -q "bad_sweep.txt: line 2: level_modes: unknown value 'sideways'" "$work/err"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null

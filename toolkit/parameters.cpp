@@ -2,6 +2,7 @@
 
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
+#include "toolkit/key_value_lines.h"
 #include "toolkit/key_values.h"
 
 #include <charconv>
@@ -46,11 +47,6 @@ struct Parser {
         return {number(a), number(b), number(c)};
     }
 };
-
-std::string trim(const std::string& s) {
-    std::size_t begin = s.find_first_not_of(" \t\r"), end = s.find_last_not_of(" \t\r");
-    return begin == std::string::npos ? "" : s.substr(begin, end - begin + 1);
-}
 
 }  // namespace
 
@@ -124,19 +120,12 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
         {"light_specular", light_key([&](const Parser& q, const std::string& v) { light.specular = q.number(v); })},
         {"light_shininess", light_key([&](const Parser& q, const std::string& v) { light.shininess = q.number(v); })},
     };
-    std::istringstream in(text);
-    std::string raw;
-    for (int number = 1; std::getline(in, raw); ++number) {
-        std::string content = trim(raw.substr(0, raw.find('#')));
-        if (content.empty()) continue;
-        std::size_t equals = content.find('=');
-        if (equals == std::string::npos) throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");
-        std::string key = trim(content.substr(0, equals)), value = trim(content.substr(equals + 1));
-        auto setter = setters.find(key);
-        Parser parser{file, number, key};
+    for (const KeyValueLine& line : parse_key_value_lines(text, file)) {
+        auto setter = setters.find(line.key);
+        Parser parser{file, line.line, line.key};
         if (setter == setters.end()) parser.fail("unknown key");
-        if (value.empty()) parser.fail("missing value");
-        setter->second(parser, value);
+        if (line.value.empty()) parser.fail("missing value");
+        setter->second(parser, line.value);
     }
     if (has_camera) p.camera = camera;
     if (has_light) p.light = light;

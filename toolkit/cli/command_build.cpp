@@ -1,5 +1,6 @@
 #include "renderer/input_error.h"
 #include "toolkit/cli/commands.h"
+#include "toolkit/cli/lod_options.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
 
@@ -10,44 +11,8 @@
 namespace boxlod {
 namespace {
 
-bool is_parameter_file(const std::string& path) { return std::filesystem::path(path).extension() == ".txt"; }
-
-// Parameters: from a parameter file (model and all, or --params for parameters
-// only), then every option given on the command line on top.
-LodParameters parameters_from(const Arguments& a) {
-    LodParameters p;
-    const std::string& input = a.positionals[0];
-    if (is_parameter_file(input)) {
-        p = load_parameters(input);
-        if (p.model.empty()) throw_input_error(input, "", "the parameter file names no model (key 'model')");
-    } else {
-        if (a.has("params")) p = load_parameters(a.text("params"));
-        p.model = input;
-    }
-    auto word = [&](const char* option, auto parse, auto& field, const char* known) {
-        if (a.has(option) && !parse(a.text(option), field))
-            throw InputError(std::string("--") + option + ": unknown value '" + a.text(option) + "' (" + known + ")");
-    };
-    word("level-mode", parse_level_mode, p.level_mode,
-         "top-down, bottom-up, bottom-up-siblings, box-volume, box-area, box-diagonal, box-max-extent");
-    word("box", parse_box_kind, p.box_kind, "scope, expanded, minimal");
-    word("interpolation", parse_interpolation, p.interpolation, "linear, log, rank");
-    word("render-mode", parse_render_mode, p.render_mode, "untextured, normal, parallax, pom");
-    p.current_level = a.integer("level", p.current_level);
-    p.wanted_levels = a.integer("wanted-levels", p.wanted_levels);
-    p.fovy = float(a.number("fovy", p.fovy));
-    p.distance = float(a.number("distance", p.distance));
-    p.resolution = float(a.number("resolution", p.resolution));
-    p.min_texture_size = a.integer("min-texture-size", p.min_texture_size);
-    p.max_texture_size = a.integer("max-texture-size", p.max_texture_size);
-    p.parallax_scale = float(a.number("parallax-scale", p.parallax_scale));
-    p.parallax_bias = float(a.number("parallax-bias", p.parallax_bias));
-    validate_parameters(p, "command line");
-    return p;
-}
-
 int run_build(const Arguments& a) {
-    LodParameters parameters = parameters_from(a);
+    LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
         save_parameters(a.text("save-params"), parameters);
         std::printf("params = %s\n", a.text("save-params").c_str());
@@ -91,27 +56,13 @@ int run_build(const Arguments& a) {
 }  // namespace
 
 Subcommand build_subcommand() {
-    return {{"build", "MODEL|PARAMS.txt",
+    Subcommand build{{"build", "MODEL|PARAMS.txt",
              "Build a textured-box LoD: level values, boxes, baked face textures, atlas pages, LoD mesh; writes "
              "NAME.gltf/.bin, NAME_{color,normal,height}_K.png, NAME.params.txt, NAME.preview.png, NAME.stats.txt.",
              {
                  {"output", "OUTDIR", "folder for the files (required)", 'o'},
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
-                 {"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
-                 {"level-mode", "M", "top-down (default) | bottom-up | bottom-up-siblings | box-volume | box-area | box-diagonal | box-max-extent"},
-                 {"level", "C", "current level, 0 (original) .. obtained levels (one box) (default 1)"},
-                 {"wanted-levels", "N", "wanted number of levels for the box modes (default 8)"},
-                 {"box", "KIND", "scope | expanded (default) | minimal"},
-                 {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
-                 {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
-                 {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)"},
-                 {"resolution", "R", "texture sizing: screen height in pixels (default 1080)"},
-                 {"min-texture-size", "S", "smallest LoD texture page (default 256)"},
-                 {"max-texture-size", "S", "largest LoD texture page (default 4096)"},
-                 {"render-mode", "M", "untextured (no baking) | normal (default) | parallax | pom"},
-                 {"parallax-scale", "S", "parallax height scale (default 0.04)"},
-                 {"parallax-bias", "B", "parallax height bias (default -0.02)"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
                  {"preview-width", "W", "preview image width (default 1024)"},
                  {"preview-height", "H", "preview image height (default 768)"},
@@ -120,6 +71,9 @@ Subcommand build_subcommand() {
              },
              1, 1},
             run_build};
+    std::vector<Option> lod = lod_options();
+    build.command.options.insert(build.command.options.begin() + 3, lod.begin(), lod.end());
+    return build;
 }
 
 }  // namespace boxlod

@@ -19,6 +19,9 @@ Subcommand render_subcommand();
 Subcommand generate_subcommand();
 Subcommand levels_subcommand();
 Subcommand build_subcommand();
+Subcommand view_subcommand();
 Subcommand compare_subcommand();
+Subcommand sweep_subcommand();
+Subcommand simplify_subcommand();
 
 }  // namespace boxlod

@@ -9,8 +9,8 @@
 namespace {
 
 std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(), boxlod::convert_subcommand(), boxlod::render_subcommand(),
-                                                     boxlod::generate_subcommand(), boxlod::levels_subcommand(), boxlod::build_subcommand(),
-                                                     boxlod::compare_subcommand()}; }
+                                                     boxlod::generate_subcommand(), boxlod::levels_subcommand(), boxlod::build_subcommand(), boxlod::view_subcommand(),
+                                                     boxlod::compare_subcommand(), boxlod::simplify_subcommand(), boxlod::sweep_subcommand()}; }
 
 void print_overview() {
     std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"

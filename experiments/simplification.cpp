@@ -1,0 +1,224 @@
+#include "experiments/simplification.h"
+
+#include "renderer/input_error.h"
+#include "renderer/parallel.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <compare>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace boxlod {
+namespace {
+
+// Primitives that can share one vertex layout: same material and attributes.
+struct GroupKey {
+    int material = -1;
+    bool normals = false, uvs = false, tangents = false;
+    auto operator<=>(const GroupKey&) const = default;
+};
+
+struct Group {
+    GroupKey key;
+    Primitive mesh;
+};
+
+void append(Primitive& to, const Primitive& from) {
+    auto base = std::uint32_t(to.positions.size());
+    to.positions.insert(to.positions.end(), from.positions.begin(), from.positions.end());
+    to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());
+    to.uvs.insert(to.uvs.end(), from.uvs.begin(), from.uvs.end());
+    to.tangents.insert(to.tangents.end(), from.tangents.begin(), from.tangents.end());
+    for (std::uint32_t i : from.indices) to.indices.push_back(base + i);
+}
+
+// Groups in the order their first primitive appears in the tree.
+std::vector<Group> merge_by_material(const Model& model) {
+    std::map<GroupKey, std::size_t> index;
+    std::vector<Group> groups;
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives) {
+            if (primitive.indices.empty()) continue;
+            GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(), !primitive.tangents.empty()};
+            auto [it, added] = index.try_emplace(key, groups.size());
+            if (added) groups.push_back({key, {}}), groups.back().mesh.material = key.material;
+            append(groups[it->second].mesh, primitive);
+        }
+    return groups;
+}
+
+template <typename T>
+void remap_attribute(std::vector<T>& values, const std::vector<unsigned>& remap, std::size_t unique) {
+    if (values.empty()) return;
+    std::vector<T> out(unique);
+    meshopt_remapVertexBuffer(out.data(), values.data(), values.size(), sizeof(T), remap.data());
+    values = std::move(out);
+}
+
+// Keeps the vertices `remap` maps (to `unique` new ones) and renumbers the indices.
+void apply_remap(Primitive& mesh, const std::vector<unsigned>& remap, std::size_t unique) {
+    meshopt_remapIndexBuffer(mesh.indices.data(), mesh.indices.data(), mesh.indices.size(), remap.data());
+    remap_attribute(mesh.positions, remap, unique);
+    remap_attribute(mesh.normals, remap, unique);
+    remap_attribute(mesh.uvs, remap, unique);
+    remap_attribute(mesh.tangents, remap, unique);
+}
+
+// Vertices equal in every attribute become one, so edges are shared.
+void weld(Primitive& mesh) {
+    std::vector<meshopt_Stream> streams = {{mesh.positions.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)}};
+    if (!mesh.normals.empty()) streams.push_back({mesh.normals.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)});
+    if (!mesh.uvs.empty()) streams.push_back({mesh.uvs.data(), sizeof(Eigen::Vector2f), sizeof(Eigen::Vector2f)});
+    if (!mesh.tangents.empty()) streams.push_back({mesh.tangents.data(), sizeof(Eigen::Vector4f), sizeof(Eigen::Vector4f)});
+    std::vector<unsigned> remap(mesh.positions.size());
+    std::size_t unique = meshopt_generateVertexRemapMulti(remap.data(), mesh.indices.data(), mesh.indices.size(),
+                                                          mesh.positions.size(), streams.data(), streams.size());
+    apply_remap(mesh, remap, unique);
+}
+
+// Drops the vertices the simplified indices no longer use.
+void compact(Primitive& mesh) {
+    std::vector<unsigned> remap(mesh.positions.size());
+    std::size_t unique = meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
+    apply_remap(mesh, remap, unique);
+}
+
+using Indices = std::vector<unsigned>;
+
+// No error bound: the face budget alone decides, as for the LoD levels it is compared with.
+constexpr float no_error_limit = std::numeric_limits<float>::max();
+
+Indices collapse_edges(const Primitive& mesh, const Indices& indices, std::size_t target_triangles, unsigned flags) {
+    Indices out(indices.size());
+    out.resize(meshopt_simplify(out.data(), indices.data(), indices.size(), mesh.positions[0].data(), mesh.positions.size(),
+                                sizeof(Eigen::Vector3f), target_triangles * 3, no_error_limit, flags, nullptr));
+    return out;
+}
+
+// Edge collapse over positions alone: uv and normal seams no longer hold
+// vertices in place (a triangle may take a neighbour's attributes there).
+Indices collapse_edges_across_seams(const Primitive& mesh, const Indices& indices, std::size_t target_triangles, unsigned flags) {
+    Indices shadow(indices.size());
+    meshopt_generateShadowIndexBuffer(shadow.data(), indices.data(), indices.size(), mesh.positions.data(), mesh.positions.size(),
+                                      sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f));
+    return collapse_edges(mesh, shadow, target_triangles, flags);
+}
+
+// Vertex clustering with the most triangles not above the target: the
+// clustering grid only roughly follows the count asked for, so the count asked
+// for is searched. Empty when every clustering removes everything.
+Indices cluster_vertices(const Primitive& mesh, const Indices& indices, std::size_t target_triangles) {
+    Indices best, out(indices.size());
+    std::size_t low = target_triangles, high = indices.size() / 3;
+    for (int step = 0; step < 16 && low <= high; ++step) {
+        std::size_t ask = low + (high - low) / 2;
+        out.resize(indices.size());
+        out.resize(meshopt_simplifySloppy(out.data(), indices.data(), indices.size(), mesh.positions[0].data(),
+                                          mesh.positions.size(), sizeof(Eigen::Vector3f), ask * 3, no_error_limit, nullptr));
+        if (out.size() <= target_triangles * 3) {
+            if (out.size() > best.size()) best = out;
+            low = ask + 1;
+        } else {
+            if (ask == 0) break;
+            high = ask - 1;
+        }
+    }
+    return best;
+}
+
+// The welded mesh with at most `target_triangles` triangles when the fallback
+// is on (possibly none: parts too small to cluster vanish).
+Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, const SimplifyOptions& options) {
+    Primitive mesh = welded;
+    if (mesh.triangle_count() > target_triangles) {
+        const unsigned flags = options.lock_border ? meshopt_SimplifyLockBorder : 0;
+        const std::size_t target_indices = target_triangles * 3;
+        Indices out = collapse_edges(mesh, mesh.indices, target_triangles, flags);
+        if (options.clustering_fallback && out.size() > target_indices) out = collapse_edges_across_seams(mesh, out, target_triangles, flags);
+        if (options.clustering_fallback && out.size() > target_indices) out = cluster_vertices(mesh, out, target_triangles);
+        mesh.indices = std::move(out);
+        compact(mesh);
+    }
+    mesh.polygon_count = mesh.triangle_count();
+    return mesh;
+}
+
+// Splits `total` over `weights` in proportion, by largest remainder: the parts
+// sum to `total` exactly and ties go to the earlier group.
+std::vector<std::size_t> proportional_budget(std::size_t total, const std::vector<std::size_t>& weights) {
+    std::size_t sum = std::accumulate(weights.begin(), weights.end(), std::size_t(0));
+    std::vector<std::size_t> parts(weights.size());
+    std::vector<std::pair<double, std::size_t>> remainders;
+    std::size_t given = 0;
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        double exact = double(total) * double(weights[i]) / double(sum);
+        parts[i] = std::size_t(exact);
+        given += parts[i];
+        remainders.push_back({-(exact - double(parts[i])), i});
+    }
+    std::sort(remainders.begin(), remainders.end());
+    for (std::size_t k = 0; given < total && k < remainders.size(); ++k, ++given) ++parts[remainders[k].second];
+    return parts;
+}
+
+}  // namespace
+
+Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options) {
+    if (model.is_lod) throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
+    if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
+    std::vector<Group> groups = merge_by_material(model);
+    if (groups.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
+
+    std::vector<Primitive> welded(groups.size());
+    parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g].mesh)); });
+    std::vector<std::size_t> triangles;
+    for (const Primitive& mesh : welded) triangles.push_back(mesh.triangle_count());
+    const std::size_t target = std::min(target_faces, std::accumulate(triangles.begin(), triangles.end(), std::size_t(0)));
+
+    // Each round gives the faces still missing (materials that came out below
+    // their share: too small to simplify, or clustered away) to the materials
+    // that can grow, in proportion to their size; a material's result is
+    // replaced only by a larger one, so the total only grows, never past the
+    // target. A material that did not grow is left alone from then on.
+    std::vector<std::size_t> achieved(groups.size(), 0), budget = proportional_budget(target, triangles);
+    std::vector<char> done(groups.size(), false), stuck(groups.size(), false);  // char: written in parallel
+    for (int round = 0; round < 8; ++round) {
+        parallel_for(groups.size(), options.threads, [&](std::size_t g) {
+            if (done[g] || (round > 0 && budget[g] == achieved[g])) return;
+            Primitive mesh = simplify_mesh(welded[g], budget[g], options);
+            if (round == 0 || mesh.triangle_count() > achieved[g]) groups[g].mesh = std::move(mesh), achieved[g] = groups[g].mesh.triangle_count();
+            else stuck[g] = true;
+        });
+        std::size_t sum = std::accumulate(achieved.begin(), achieved.end(), std::size_t(0));
+        if (!options.clustering_fallback || sum >= target || double(target - sum) < 0.01 * double(target)) break;
+        std::vector<std::size_t> growable(groups.size(), 0);
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            done[g] = achieved[g] == triangles[g] || stuck[g];
+            if (!done[g]) growable[g] = triangles[g];
+        }
+        if (std::accumulate(growable.begin(), growable.end(), std::size_t(0)) == 0) break;
+        budget = proportional_budget(target - sum, growable);
+        for (std::size_t g = 0; g < groups.size(); ++g) budget[g] += achieved[g];
+    }
+
+    Model result;
+    result.source = model.source;
+    result.materials = model.materials;
+    result.textures = model.textures;
+    add_node(result, -1, model.nodes.empty() ? "simplified" : model.nodes[0].name);
+    std::map<int, int> node_of_material;
+    for (Group& group : groups) {
+        if (group.mesh.indices.empty()) continue;  // a material whose share came to nothing
+        int material = group.key.material;
+        auto [it, added] = node_of_material.try_emplace(material, 0);
+        if (added)
+            it->second = add_node(result, 0, material >= 0 ? model.materials[std::size_t(material)].name : "default material");
+        result.nodes[std::size_t(it->second)].primitives.push_back(std::move(group.mesh));
+    }
+    return result;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,37 @@
+// The classic baseline (issue 6, item 2): quadric edge-collapse mesh
+// simplification (Garland-Heckbert, the lecture notes' method) with
+// meshoptimizer, keeping materials and texture coordinates.
+#pragma once
+#include "toolkit/model.h"
+
+#include <cstddef>
+
+namespace boxlod {
+
+struct SimplifyOptions {
+    bool lock_border = false;  // never move vertices on open borders (meshopt_SimplifyLockBorder)
+    // Edge collapse keeps topology and seams, so it stalls on many small
+    // separate parts (panes, tiles, sills); then collapse across uv/normal
+    // seams and, last, vertex clustering (meshopt_simplifySloppy) take what is
+    // left to the budget. Off: pure edge collapse, which may stay above it.
+    bool clustering_fallback = true;
+    int threads = 0;  // 0 = all cores; the result never depends on it
+};
+
+// The model with about `target_faces` triangles (the result's faces are its
+// triangles). Geometry is merged into one node per material under a new root:
+// the simplifier may then collapse across the original parts (adjacent tiles
+// share welded vertices) and no part keeps a floor of its own triangles; the
+// LoD comparison needs faces and images only, not the hierarchy. The budget is
+// split over the materials in proportion to their triangle counts. Vertices
+// equal in position, normal, uv and tangent are welded first, so uv and normal
+// seams stay seams; with the fallback, seams give way next, then clustering.
+// Faces a material cannot use (parts too small to simplify, or clustered
+// away: such a material may vanish at small budgets) go to the others in up
+// to seven more rounds, so the total ends close to, and never above, the
+// target. Materials and textures are kept as they are. A target at or above
+// the triangle count keeps every triangle. Deterministic.
+// Throws InputError for target_faces 0, an LoD model or a model without triangles.
+Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options);
+
+}  // namespace boxlod

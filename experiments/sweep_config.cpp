@@ -1,0 +1,176 @@
+#include "experiments/sweep_config.h"
+
+#include "renderer/input_error.h"
+#include "toolkit/key_value_lines.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+const std::vector<std::string> known_metrics = {"rmse", "psnr", "ssim", "flip", "iou"};
+
+struct Line {
+    const std::string& file;
+    const KeyValueLine& line;
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw_input_error(file, "line " + std::to_string(line.line) + ": " + line.key, what);
+    }
+    std::vector<std::string> items() const {
+        std::vector<std::string> out;
+        std::stringstream words(line.value);
+        for (std::string word; std::getline(words, word, ',');) {
+            std::size_t begin = word.find_first_not_of(" \t"), end = word.find_last_not_of(" \t");
+            if (begin == std::string::npos) fail("empty item in the list '" + line.value + "'");
+            out.push_back(word.substr(begin, end - begin + 1));
+        }
+        if (out.empty()) fail("expected a comma-separated list");
+        return out;
+    }
+    template <typename T>
+    T number(const std::string& text) const {
+        T v{};
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(double(v)))
+            fail("expected a number, got '" + text + "'");
+        return v;
+    }
+    template <typename T>
+    T number_in(T low, T high) const {
+        T v = number<T>(line.value);
+        if (v < low || v > high) fail("expected a value in " + std::to_string(low) + " .. " + std::to_string(high));
+        return v;
+    }
+    // Each item through parse(word, value); unknown words name the accepted ones.
+    template <typename T, typename Parse>
+    std::vector<T> words(Parse parse, const char* known) const {
+        std::vector<T> out;
+        for (const std::string& word : items()) {
+            T value{};
+            if (!parse(word, value)) fail("unknown value '" + word + "' (" + known + ")");
+            if (std::find(out.begin(), out.end(), value) == out.end()) out.push_back(value);
+        }
+        return out;
+    }
+};
+
+SweepModel model_entry(const Line& line, const std::string& item, const std::filesystem::path& folder) {
+    SweepModel model{item, "", ""};
+    if (item.starts_with("sample:")) {
+        model.sample = item.substr(7);
+        if (model.sample.empty()) line.fail("'sample:' needs a sample name, e.g. sample:house");
+        return model;
+    }
+    std::filesystem::path path(item);
+    model.path = (path.is_relative() ? folder / path : path).lexically_normal().string();
+    return model;
+}
+
+}  // namespace
+
+SweepConfig parse_sweep_config(const std::string& text, const std::string& file) {
+    SweepConfig c;
+    std::filesystem::path folder = std::filesystem::path(file).parent_path();
+    using Setter = std::function<void(const Line&)>;
+    const std::map<std::string, Setter> setters = {
+        {"models", [&](const Line& l) {
+             for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));
+         }},
+        {"level_modes", [&](const Line& l) {
+             c.level_modes = l.words<LevelMode>(parse_level_mode, "top-down, bottom-up, bottom-up-siblings, box-volume, "
+                                                                  "box-area, box-diagonal, box-max-extent");
+         }},
+        {"box_kinds", [&](const Line& l) { c.box_kinds = l.words<BoxKind>(parse_box_kind, "scope, expanded, minimal"); }},
+        {"interpolations", [&](const Line& l) {
+             c.interpolations = l.words<Interpolation>(parse_interpolation, "linear, log, rank");
+         }},
+        {"levels", [&](const Line& l) {
+             c.levels.clear();
+             if (l.line.value == "all") return;
+             std::set<int> levels;
+             for (const std::string& item : l.items()) {
+                 int level = l.number<int>(item);
+                 if (level < 0) l.fail("levels are 0 or more, got " + item);
+                 levels.insert(level);
+             }
+             c.levels.assign(levels.begin(), levels.end());
+         }},
+        {"wanted_levels", [&](const Line& l) { c.wanted_levels = l.number_in(1, 1000); }},
+        {"views", [&](const Line& l) {
+             c.views.clear();
+             std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
+             for (const std::string& view : items) {
+                 if (!camera_direction(view)) l.fail("unknown camera position '" + view + "' (e.g. +X, -Y, +X+Y+Z, or all)");
+                 if (std::find(c.views.begin(), c.views.end(), view) == c.views.end()) c.views.push_back(view);
+             }
+         }},
+        {"distances", [&](const Line& l) {
+             c.distances.clear();
+             for (const std::string& item : l.items()) {
+                 float d = l.number<float>(item);
+                 if (!(d > 0)) l.fail("distances are positive multiples of the framing distance, got " + item);
+                 if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end()) c.distances.push_back(d);
+             }
+         }},
+        {"render_modes", [&](const Line& l) {
+             c.render_modes = l.words<RenderMode>(parse_render_mode, "untextured, normal, parallax, pom, albedo");
+         }},
+        {"width", [&](const Line& l) { c.width = l.number_in(16, 16384); }},
+        {"height", [&](const Line& l) { c.height = l.number_in(16, 16384); }},
+        {"fovy", [&](const Line& l) {
+             c.fovy = l.number<float>(l.line.value);
+             if (!(c.fovy > 0 && c.fovy < 180)) l.fail("expected degrees in (0, 180)");
+         }},
+        {"metrics", [&](const Line& l) {
+             c.metrics.clear();
+             for (const std::string& metric : l.items()) {
+                 if (std::find(known_metrics.begin(), known_metrics.end(), metric) == known_metrics.end())
+                     l.fail("unknown metric '" + metric + "' (rmse, psnr, ssim, flip, iou)");
+                 if (std::find(c.metrics.begin(), c.metrics.end(), metric) == c.metrics.end()) c.metrics.push_back(metric);
+             }
+         }},
+        {"ppd", [&](const Line& l) {
+             c.pixels_per_degree = l.number<double>(l.line.value);
+             if (!(c.pixels_per_degree > 0)) l.fail("expected a positive number of pixels per degree");
+         }},
+        {"resolution", [&](const Line& l) { c.resolution = l.number_in(1.0f, 65536.0f); }},
+        {"keep_images", [&](const Line& l) {
+             const std::map<std::string, KeptImages> kinds = {
+                 {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};
+             auto kind = kinds.find(l.line.value);
+             if (kind == kinds.end()) l.fail("expected none, lod or all, got '" + l.line.value + "'");
+             c.keep_images = kind->second;
+         }},
+        {"threads", [&](const Line& l) { c.threads = l.number_in(0, 4096); }},
+    };
+    std::set<std::string> seen;
+    for (const KeyValueLine& kv : parse_key_value_lines(text, file)) {
+        Line line{file, kv};
+        auto setter = setters.find(kv.key);
+        if (setter == setters.end()) line.fail("unknown key");
+        if (kv.value.empty()) line.fail("missing value");
+        if (!seen.insert(kv.key).second) line.fail("given twice");
+        setter->second(line);
+    }
+    if (c.models.empty()) throw_input_error(file, "", "no models (key 'models')");
+    return c;
+}
+
+SweepConfig load_sweep_config(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw_input_error(path, "", "cannot open sweep config");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_sweep_config(text.str(), path);
+}
+
+}  // namespace boxlod

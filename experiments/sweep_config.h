@@ -1,0 +1,49 @@
+// The configuration of `boxlod sweep`: a plain-text file of `key = value`
+// lines (`#` comments, lists comma-separated) naming the models, level modes,
+// box kinds, interpolations, levels, views, distances, render modes, image
+// size, metrics and which images to keep. Paths are relative to the file.
+#pragma once
+#include "renderer/renderer.h"
+#include "toolkit/boxes.h"
+#include "toolkit/level_modes.h"
+
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+// none: only the CSVs; lod: every LoD render and the original per view;
+// all: also a FLIP (or RMSE) heat map per row.
+enum class KeptImages { none, lod, all };
+
+struct SweepModel {
+    std::string name;  // as written in the config: the CSV's `model` column
+    std::string path;  // resolved against the config's folder; empty for a sample
+    std::string sample;  // `sample:NAME`: a built-in grammar generated in memory
+};
+
+struct SweepConfig {
+    std::vector<SweepModel> models;
+    std::vector<LevelMode> level_modes{LevelMode::top_down};
+    std::vector<BoxKind> box_kinds{BoxKind::expanded};
+    std::vector<Interpolation> interpolations{Interpolation::linear};
+    std::vector<int> levels;  // empty: all, 0 .. obtained levels
+    int wanted_levels = 8;
+    std::vector<std::string> views{"+X+Y+Z"};  // camera position names
+    std::vector<float> distances{1};           // multiples of the model's framing distance
+    std::vector<RenderMode> render_modes{RenderMode::normal};
+    int width = 512, height = 512;
+    float fovy = 45;
+    std::vector<std::string> metrics{"rmse", "psnr", "ssim", "flip", "iou"};
+    double pixels_per_degree = 67;  // FLIP's
+    float resolution = 512;  // texture sizing screen height; sizing distance = the smallest distance
+    KeptImages keep_images = KeptImages::none;
+    int threads = 0;  // 0 = all cores
+};
+
+// `file` names the source in errors ("file: line N: key: what"); relative
+// model paths are resolved against file's folder. Throws InputError.
+SweepConfig parse_sweep_config(const std::string& text, const std::string& file);
+SweepConfig load_sweep_config(const std::string& path);
+
+}  // namespace boxlod

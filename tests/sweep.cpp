@@ -1,0 +1,158 @@
+#include "experiments/sweep.h"
+
+#include "lod_scene.h"
+#include "renderer/input_error.h"
+#include "test_support.h"
+#include "toolkit/model_io.h"
+#include "toolkit/statistics.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+using Table = std::vector<std::vector<std::string>>;  // header first
+
+Table read_csv(const std::filesystem::path& path) {
+    Table table;
+    std::istringstream in(test::read_text(path));
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string>& row = table.emplace_back();
+        std::stringstream fields(line);
+        for (std::string field; std::getline(fields, field, ',');) row.push_back(field);
+    }
+    return table;
+}
+
+std::size_t column(const Table& table, const std::string& name) {
+    auto found = std::find(table[0].begin(), table[0].end(), name);
+    EXPECT_NE(found, table[0].end()) << name;
+    return std::size_t(found - table[0].begin());
+}
+
+// The hand-built building saved beside a config: 2 level modes x levels 0 and 4
+// (its top, one box) x 2 views, 64x48.
+struct SmallSweep {
+    std::filesystem::path folder;
+    SweepConfig config;
+    MeshCounts original;
+};
+
+SmallSweep small_sweep(const std::string& name, const std::string& extra = "") {
+    SmallSweep s;
+    s.folder = test::scratch_folder(name);
+    Model building = test::lod_test_building();
+    s.original = mesh_counts(building);
+    save_model(building, (s.folder / "building.glb").string());
+    test::write_text(s.folder / "sweep.txt",
+                     "models = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, 4\nviews = +X+Y+Z, -Z\n"
+                     "width = 64\nheight = 48\nmetrics = rmse, psnr, ssim, flip, iou\nresolution = 48\n" + extra);
+    s.config = load_sweep_config((s.folder / "sweep.txt").string());
+    return s;
+}
+
+TEST(Sweep, RowsCountsAndMetricsOfTheCrossProduct) {
+    SmallSweep s = small_sweep("sweep_rows", "keep_images = lod\n");
+    SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 1);
+    EXPECT_EQ(report.rows, 8u);
+    EXPECT_EQ(report.rows_computed, 8u);
+    EXPECT_EQ(report.rows_skipped, 0u);
+    EXPECT_EQ(report.lods_built, 4u);
+    EXPECT_EQ(report.lod_renders, 8u);
+    EXPECT_EQ(report.original_renders, 2u);  // once per view, shared by every LoD
+
+    Table t = read_csv(s.folder / "out" / "results.csv");
+    ASSERT_EQ(t.size(), 9u);
+    EXPECT_EQ(t[0], result_columns(s.config));
+    std::size_t mode = column(t, "level_mode"), level = column(t, "level"), view = column(t, "view"),
+                faces = column(t, "faces"), psnr = column(t, "psnr"), ssim = column(t, "ssim"), rmse = column(t, "rmse"),
+                flip = column(t, "flip"), iou = column(t, "iou"), obtained = column(t, "obtained_levels"),
+                texels = column(t, "texels");
+    // The cross product's order: mode, level, then view.
+    EXPECT_EQ(t[1][mode], "top-down");
+    EXPECT_EQ(t[1][level], "0");
+    EXPECT_EQ(t[1][view], "+X+Y+Z");
+    EXPECT_EQ(t[2][view], "-Z");
+    EXPECT_EQ(t[3][level], "4");
+    EXPECT_EQ(t[5][mode], "bottom-up");
+    for (std::size_t r = 1; r < t.size(); ++r) {
+        ASSERT_EQ(t[r].size(), t[0].size());
+        EXPECT_EQ(t[r][obtained], "4");
+        if (t[r][level] == "0") {  // the original itself
+            EXPECT_EQ(t[r][psnr], "inf");
+            EXPECT_EQ(t[r][ssim], "1");
+            EXPECT_EQ(t[r][rmse], "0");
+            EXPECT_EQ(t[r][flip], "0");
+            EXPECT_EQ(t[r][iou], "1");
+            EXPECT_EQ(t[r][faces], std::to_string(s.original.faces));
+            EXPECT_EQ(t[r][texels], "0");
+        } else {  // one box
+            EXPECT_EQ(t[r][faces], "6");
+            EXPECT_NE(t[r][psnr], "inf");
+            EXPECT_LT(std::stod(t[r][ssim]), 1);
+            EXPECT_GT(std::stod(t[r][texels]), 0);
+        }
+    }
+    Table timings = read_csv(s.folder / "out" / "timings.csv");
+    ASSERT_EQ(timings.size(), 9u);
+    EXPECT_EQ(timings[0], timing_columns());
+    for (std::size_t r = 1; r < t.size(); ++r)
+        EXPECT_TRUE(std::equal(t[r].begin(), t[r].begin() + 8, timings[r].begin())) << r;
+    auto images = s.folder / "out" / "images";
+    EXPECT_TRUE(std::filesystem::exists(images / "building.glb_top-down_expanded_linear_4_-Z_1_normal.png"));
+    EXPECT_TRUE(std::filesystem::exists(images / "building.glb_original_-Z_1_normal.png"));
+}
+
+TEST(Sweep, ResultsAreIdenticalForOneAndTwoThreads) {
+    SmallSweep s = small_sweep("sweep_threads");
+    run_sweep(s.config, (s.folder / "one").string(), 1);
+    run_sweep(s.config, (s.folder / "two").string(), 2);
+    std::string one = test::read_text(s.folder / "one" / "results.csv");
+    EXPECT_GT(one.size(), 100u);
+    EXPECT_EQ(one, test::read_text(s.folder / "two" / "results.csv"));
+}
+
+TEST(Sweep, ResumingFillsInOnlyTheMissingRows) {
+    SmallSweep s = small_sweep("sweep_resume");
+    auto out = s.folder / "out";
+    run_sweep(s.config, out.string(), 2);
+    std::string full = test::read_text(out / "results.csv");
+
+    // Delete one whole group (bottom-up level 4) and one row of another (top-down level 0, -Z).
+    std::istringstream in(full);
+    std::string kept;
+    int deleted = 0;
+    for (std::string line; std::getline(in, line);) {
+        bool drop = line.starts_with("building.glb,bottom-up,expanded,linear,4,") ||
+                    line.starts_with("building.glb,top-down,expanded,linear,0,-Z,");
+        deleted += drop;
+        if (!drop) kept += line + "\n";
+    }
+    ASSERT_EQ(deleted, 3);
+    test::write_text(out / "results.csv", kept);
+
+    SweepReport report = run_sweep(s.config, out.string(), 1);
+    EXPECT_EQ(report.rows_computed, 3u);
+    EXPECT_EQ(report.rows_skipped, 5u);
+    EXPECT_EQ(report.lods_built, 2u);
+    EXPECT_EQ(report.lod_renders, 3u);
+    EXPECT_EQ(test::read_text(out / "results.csv"), full);
+
+    SweepReport again = run_sweep(s.config, out.string(), 1);  // nothing left to do
+    EXPECT_EQ(again.rows_computed, 0u);
+    EXPECT_EQ(again.lods_built, 0u);
+    EXPECT_EQ(again.original_renders, 0u);
+    EXPECT_EQ(test::read_text(out / "results.csv"), full);
+}
+
+TEST(Sweep, RefusesAResultsFileWithOtherColumns) {
+    SmallSweep s = small_sweep("sweep_columns");
+    std::filesystem::create_directories(s.folder / "out");
+    test::write_text(s.folder / "out" / "results.csv", "model,level_mode,psnr\n");
+    EXPECT_THROW(run_sweep(s.config, (s.folder / "out").string(), 1), InputError);
+}
+
+}  // namespace
+}  // namespace boxlod

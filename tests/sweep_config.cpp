@@ -1,0 +1,95 @@
+#include "experiments/sweep_config.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace boxlod {
+namespace {
+
+TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
+    SweepConfig c = parse_sweep_config(
+        "# a sweep\n"
+        "models = house.glb, /data/fzk.ifc, sample:manual\n"
+        "level_modes = top-down, box-volume   # comment\n"
+        "box_kinds = expanded, minimal\n"
+        "interpolations = linear, rank\n"
+        "levels = 3, 0, 1\n"
+        "wanted_levels = 5\n"
+        "views = +X+Y+Z, -Z\n"
+        "distances = 1, 2.5\n"
+        "render_modes = normal, parallax\n"
+        "width = 64\nheight = 48\nfovy = 30\n"
+        "metrics = psnr, ssim\n"
+        "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n",
+        "/work/sweeps/config.txt");
+    ASSERT_EQ(c.models.size(), 3u);
+    EXPECT_EQ(c.models[0].name, "house.glb");
+    EXPECT_EQ(c.models[0].path, "/work/sweeps/house.glb");
+    EXPECT_EQ(c.models[1].path, "/data/fzk.ifc");
+    EXPECT_EQ(c.models[2].sample, "manual");
+    EXPECT_TRUE(c.models[2].path.empty());
+    EXPECT_EQ(c.level_modes, (std::vector<LevelMode>{LevelMode::top_down, LevelMode::box_volume}));
+    EXPECT_EQ(c.box_kinds, (std::vector<BoxKind>{BoxKind::expanded, BoxKind::minimal}));
+    EXPECT_EQ(c.interpolations, (std::vector<Interpolation>{Interpolation::linear, Interpolation::rank}));
+    EXPECT_EQ(c.levels, (std::vector<int>{0, 1, 3}));
+    EXPECT_EQ(c.wanted_levels, 5);
+    EXPECT_EQ(c.views, (std::vector<std::string>{"+X+Y+Z", "-Z"}));
+    EXPECT_EQ(c.distances, (std::vector<float>{1, 2.5f}));
+    EXPECT_EQ(c.render_modes, (std::vector<RenderMode>{RenderMode::normal, RenderMode::parallax}));
+    EXPECT_EQ(c.width, 64);
+    EXPECT_EQ(c.height, 48);
+    EXPECT_EQ(c.fovy, 30);
+    EXPECT_EQ(c.metrics, (std::vector<std::string>{"psnr", "ssim"}));
+    EXPECT_EQ(c.pixels_per_degree, 40);
+    EXPECT_EQ(c.resolution, 256);
+    EXPECT_EQ(c.keep_images, KeptImages::all);
+    EXPECT_EQ(c.threads, 2);
+}
+
+TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
+    SweepConfig c = parse_sweep_config("models = a.glb\nviews = all\nlevels = all\n", "c.txt");
+    EXPECT_EQ(c.views, camera_position_names());
+    EXPECT_EQ(c.views.size(), 26u);
+    EXPECT_TRUE(c.levels.empty());
+    EXPECT_EQ(c.metrics.size(), 5u);  // default: every metric
+}
+
+// The message names the file, the line and the key.
+void expect_error(const std::string& text, const std::string& expected) {
+    try {
+        parse_sweep_config(text, "cfg.txt");
+        ADD_FAILURE() << "no error for: " << text;
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+}
+
+TEST(SweepConfig, ErrorsNameFileLineAndKey) {
+    expect_error("models = a.glb\nfrobnicate = 1\n", "cfg.txt: line 2: frobnicate: unknown key");
+    expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n", "cfg.txt: line 3: level_modes: unknown value 'sideways'");
+    expect_error("models = a.glb\nviews = +X, +W\n", "cfg.txt: line 2: views: unknown camera position '+W'");
+    expect_error("models = a.glb\nwidth = wide\n", "cfg.txt: line 2: width: expected a number");
+    expect_error("models = a.glb\nwidth = 4\n", "cfg.txt: line 2: width: expected a value in");
+    expect_error("models = a.glb\ndistances = 1, -2\n", "cfg.txt: line 2: distances: distances are positive");
+    expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
+    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
+    expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
+    expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice");
+    expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
+    expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
+    expect_error("models = sample:\n", "cfg.txt: line 1: models: 'sample:' needs a sample name");
+    expect_error("width = 64\n", "cfg.txt: no models");
+}
+
+TEST(SweepConfig, LoadNamesAMissingFile) {
+    auto folder = test::scratch_folder("sweep_config_load");
+    EXPECT_THROW(load_sweep_config((folder / "nope.txt").string()), InputError);
+    test::write_text(folder / "ok.txt", "models = m.glb\n");
+    SweepConfig c = load_sweep_config((folder / "ok.txt").string());
+    EXPECT_EQ(c.models.at(0).path, (folder / "m.glb").lexically_normal().string());
+}
+
+}  // namespace
+}  // namespace boxlod

@@ -1,0 +1,66 @@
+#include "toolkit/cli/lod_options.h"
+
+#include "renderer/input_error.h"
+
+#include <filesystem>
+
+namespace boxlod {
+
+std::vector<Option> lod_options() {
+    return {
+        {"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
+        {"level-mode", "M", "top-down (default) | bottom-up | bottom-up-siblings | box-volume | box-area | box-diagonal | box-max-extent"},
+        {"level", "C", "current level, 0 (original) .. obtained levels (one box) (default 1)"},
+        {"wanted-levels", "N", "wanted number of levels for the box modes (default 8)"},
+        {"box", "KIND", "scope | expanded (default) | minimal"},
+        {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
+        {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
+        {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)"},
+        {"resolution", "R", "texture sizing: screen height in pixels (default 1080)"},
+        {"min-texture-size", "S", "smallest LoD texture page (default 256)"},
+        {"max-texture-size", "S", "largest LoD texture page (default 4096)"},
+        {"render-mode", "M", "untextured (no baking) | normal (default) | parallax | pom"},
+        {"parallax-scale", "S", "parallax height scale (default 0.04)"},
+        {"parallax-bias", "B", "parallax height bias (default -0.02)"},
+    };
+}
+
+namespace {
+bool is_parameter_file(const std::string& path) { return std::filesystem::path(path).extension() == ".txt"; }
+
+}  // namespace
+
+LodParameters lod_parameters_from(const Arguments& a) {
+    LodParameters p;
+    const std::string& input = a.positionals[0];
+    if (is_parameter_file(input)) {
+        p = load_parameters(input);
+        if (p.model.empty()) throw_input_error(input, "", "the parameter file names no model (key 'model')");
+    } else {
+        if (a.has("params")) p = load_parameters(a.text("params"));
+        p.model = input;
+    }
+    auto word = [&](const char* option, auto parse, auto& field, const char* known) {
+        if (a.has(option) && !parse(a.text(option), field))
+            throw InputError(std::string("--") + option + ": unknown value '" + a.text(option) + "' (" + known + ")");
+    };
+    word("level-mode", parse_level_mode, p.level_mode,
+         "top-down, bottom-up, bottom-up-siblings, box-volume, box-area, box-diagonal, box-max-extent");
+    word("box", parse_box_kind, p.box_kind, "scope, expanded, minimal");
+    word("interpolation", parse_interpolation, p.interpolation, "linear, log, rank");
+    word("render-mode", parse_render_mode, p.render_mode, "untextured, normal, parallax, pom");
+    p.current_level = a.integer("level", p.current_level);
+    p.wanted_levels = a.integer("wanted-levels", p.wanted_levels);
+    p.fovy = float(a.number("fovy", p.fovy));
+    p.distance = float(a.number("distance", p.distance));
+    p.resolution = float(a.number("resolution", p.resolution));
+    p.min_texture_size = a.integer("min-texture-size", p.min_texture_size);
+    p.max_texture_size = a.integer("max-texture-size", p.max_texture_size);
+    p.parallax_scale = float(a.number("parallax-scale", p.parallax_scale));
+    p.parallax_bias = float(a.number("parallax-bias", p.parallax_bias));
+    validate_parameters(p, "command line");
+    return p;
+}
+
+
+}  // namespace boxlod
