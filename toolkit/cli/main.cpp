@@ -2,6 +2,7 @@
 #include "renderer/input_error.h"
 #include "toolkit/cli/commands.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -15,7 +16,12 @@ std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(
 void print_overview() {
     std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"
                 "Textured-box level of detail for hierarchical (procedural) architecture.\n\ncommands:\n");
-    for (const auto& s : subcommands()) std::printf("  %-10s %s\n", s.command.name.c_str(), s.command.summary.c_str());
+    for (const auto& s : subcommands()) {  // the first sentence of each summary
+        const std::string& summary = s.command.summary;
+        std::size_t sentence = summary.find(". "), line = summary.find('\n');
+        std::string first = sentence < line ? summary.substr(0, sentence + 1) : summary.substr(0, line);
+        std::printf("  %-10s %s\n", s.command.name.c_str(), first.c_str());
+    }
     std::printf("\n'boxlod COMMAND --help' describes a command's options.\n"
                 "Exit status: 0 success, 2 bad input or usage, 1 internal failure.\n");
 }
