@@ -98,15 +98,6 @@ Indices collapse_edges(const Primitive& mesh, const Indices& indices, std::size_
     return out;
 }
 
-// Edge collapse over positions alone: uv and normal seams no longer hold
-// vertices in place (a triangle may take a neighbour's attributes there).
-Indices collapse_edges_across_seams(const Primitive& mesh, const Indices& indices, std::size_t target_triangles, unsigned flags) {
-    Indices shadow(indices.size());
-    meshopt_generateShadowIndexBuffer(shadow.data(), indices.data(), indices.size(), mesh.positions.data(), mesh.positions.size(),
-                                      sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f));
-    return collapse_edges(mesh, shadow, target_triangles, flags);
-}
-
 // Vertex clustering with the most triangles not above the target: the
 // clustering grid only roughly follows the count asked for, so the count asked
 // for is searched. Empty when every clustering removes everything.
@@ -137,7 +128,6 @@ Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, c
         const unsigned flags = options.lock_border ? meshopt_SimplifyLockBorder : 0;
         const std::size_t target_indices = target_triangles * 3;
         Indices out = collapse_edges(mesh, mesh.indices, target_triangles, flags);
-        if (options.clustering_fallback && out.size() > target_indices) out = collapse_edges_across_seams(mesh, out, target_triangles, flags);
         if (options.clustering_fallback && out.size() > target_indices) out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);

@@ -10,10 +10,10 @@ namespace boxlod {
 
 struct SimplifyOptions {
     bool lock_border = false;  // never move vertices on open borders (meshopt_SimplifyLockBorder)
-    // Edge collapse keeps topology and seams, so it stalls on many small
-    // separate parts (panes, tiles, sills); then collapse across uv/normal
-    // seams and, last, vertex clustering (meshopt_simplifySloppy) take what is
-    // left to the budget. Off: pure edge collapse, which may stay above it.
+    // Edge collapse keeps topology, so it stalls on many small separate parts
+    // (panes, tiles, sills); vertex clustering (meshopt_simplifySloppy) then
+    // takes what is left to the budget. Off: pure edge collapse, which may
+    // stay above it.
     bool clustering_fallback = true;
     int threads = 0;  // 0 = all cores; the result never depends on it
 };
@@ -25,7 +25,7 @@ struct SimplifyOptions {
 // LoD comparison needs faces and images only, not the hierarchy. The budget is
 // split over the materials in proportion to their triangle counts. Vertices
 // equal in position, normal, uv and tangent are welded first, so uv and normal
-// seams stay seams; with the fallback, seams give way next, then clustering.
+// seams stay seams (vertices on them only move along them).
 // Faces a material cannot use (parts too small to simplify, or clustered
 // away: such a material may vanish at small budgets) go to the others in up
 // to seven more rounds, so the total ends close to, and never above, the

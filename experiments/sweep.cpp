@@ -195,8 +195,6 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
     auto save_image = [&](const std::string& name, const Image8& image) {
         write_png((images / file_name(name)).string(), image);
     };
-    bool textured_modes = false, untextured_modes = false;
-    for (RenderMode mode : config.render_modes) (mode == RenderMode::untextured ? untextured_modes : textured_modes) = true;
 
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         const SweepModel& entry = config.models[m];

@@ -9,7 +9,8 @@
 // (merging, welding, compacting included); CGAL for edge_collapse alone, on a
 // fresh copy of a mesh welded by position (it keeps no uvs, so it has no seams
 // to respect). The first argument is the ratio in per mille; meshoptimizer's
-// second says whether vertex clustering finishes what edge collapse cannot.
+// second says whether vertex clustering finishes what edge collapse cannot
+// (boxlod simplify's default).
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
 #include "experiments/simplification.h"

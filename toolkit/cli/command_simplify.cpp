@@ -43,7 +43,7 @@ int run_simplify(const Arguments& arguments) {
 
 Subcommand simplify_subcommand() {
     return {{"simplify", "MODEL",
-             "Simplify a model by quadric edge collapse (meshoptimizer) to about N triangles: the classic "
+             "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
              "baseline LoD. Materials and textures are kept, geometry is merged into one node per material.",
              {{"faces", "N", "the number of faces (triangles) to keep (required)"},
               {"output", "FILE", "output file, .gltf or .glb (required)", 'o'},
