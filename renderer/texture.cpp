@@ -81,6 +81,21 @@ Eigen::Vector4f sample_level(const MipTexture& texture, int index, Eigen::Vector
     return (at(i, j) * (1 - s) + at(i + 1, j) * s) * (1 - t) + (at(i, j + 1) * (1 - s) + at(i + 1, j + 1) * s) * t;
 }
 
+// Height maps: the first channel of the image, stored as it is.
+template <typename T>
+MipTexture single_channel_texture(const Image<T>& image, TexelFormat format, Wrap wrap,
+                                  std::vector<T> MipTexture::Level::*store) {
+    MipTexture texture;
+    texture.format = format;
+    texture.wrap = wrap;
+    MipTexture::Level level = make_level(format, image.width, image.height);
+    std::vector<T>& texels = level.*store;
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = image.pixels[i * image.channels];
+    texture.levels.push_back(std::move(level));
+    build_mips(texture);
+    return texture;
+}
+
 }  // namespace
 
 MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap) {
@@ -100,26 +115,14 @@ MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap) {
 }
 
 MipTexture make_texture(const Image16& image, Wrap wrap) {
-    MipTexture texture;
-    texture.format = TexelFormat::unorm16;
-    texture.wrap = wrap;
-    MipTexture::Level level = make_level(texture.format, image.width, image.height);
-    for (std::size_t i = 0; i < level.r16.size(); ++i) level.r16[i] = image.pixels[i * image.channels];
-    texture.levels.push_back(std::move(level));
-    build_mips(texture);
-    return texture;
+    return single_channel_texture(image, TexelFormat::unorm16, wrap, &MipTexture::Level::r16);
 }
 
 MipTexture make_texture(const ImageF& image, Wrap wrap) {
-    MipTexture texture;
-    texture.format = TexelFormat::float32;
-    texture.wrap = wrap;
-    MipTexture::Level level = make_level(texture.format, image.width, image.height);
-    for (std::size_t i = 0; i < level.r32.size(); ++i) level.r32[i] = image.pixels[i * image.channels];
-    texture.levels.push_back(std::move(level));
-    build_mips(texture);
-    return texture;
+    return single_channel_texture(image, TexelFormat::float32, wrap, &MipTexture::Level::r32);
 }
+
+
 
 Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y) {
     const MipTexture::Level& l = texture.levels[level];
