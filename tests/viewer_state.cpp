@@ -95,6 +95,26 @@ TEST(ViewerState, LevelKeysRebuildTheLodWithAutoUpdate) {
     EXPECT_EQ(s.parameters.current_level, s.session->levels.obtained_levels);
 }
 
+TEST(ViewerState, LightOptionsAndTheManualsGetSetDistance) {
+    Fixture f;
+    ViewerState& s = f.state;
+    float ambient = s.settings.light.ambient;
+    apply_event(s, key("2"));
+    EXPECT_FLOAT_EQ(s.settings.light.ambient, ambient * 1.25f);
+    apply_event(s, key("5"));
+    EXPECT_FLOAT_EQ(s.settings.light.specular, RenderSettings{}.light.specular * 0.8f);
+    Camera& c = s.settings.camera;
+    float distance = (c.position - c.target).norm();
+    apply_event(s, key("h"));  // Get Distance
+    EXPECT_FLOAT_EQ(s.parameters.distance, distance);
+    EXPECT_TRUE(s.needs_update);
+    ViewerEvent wheel;
+    wheel.kind = ViewerEvent::Kind::wheel, wheel.dy = 3;
+    apply_event(s, wheel);
+    apply_event(s, key("n"));  // Set Distance: back to the sizing distance
+    EXPECT_NEAR((c.position - c.target).norm(), distance, distance * 1e-5f);
+}
+
 TEST(ViewerState, ReplayLinesParseOrNameTheirPlace) {
     auto e = parse_replay_line("drag 10 -4  # orbit", "events.txt", 3);
     ASSERT_TRUE(e);

@@ -60,6 +60,7 @@ std::string viewer_key_help() {
            "M: render mode, F: wireframe, X: coordinate cross, V: split view (LoD left, original right),\n"
            "+/-: current level, L: level mode, B: box kind, I: interpolation, U: update, Y: auto-update,\n"
            "T: show LoD texture, P: next page, [ ]: texture scale, Tab: statistics, G: light follows camera or stays,\n"
+           "1/2 3/4 5/6 7/8: ambient, diffuse, specular, shininess down/up, H/N: get/set the sizing distance,\n"
            "F12: screenshot, F5: save parameters, F9: load parameters, F6: export the LoD, Q/Escape: quit";
 }
 
@@ -144,6 +145,23 @@ bool apply_event(ViewerState& s, const ViewerEvent& e) {
         s.texture_scale *= k == "]" ? 2.0f : 0.5f;
     } else if (k == "tab") {
         s.show_statistics = !s.show_statistics;
+    } else if (k == "h") {  // the manual's Get Distance: the camera's distance becomes the sizing distance
+        s.parameters.distance = distance;
+        s.session.reset();
+        parameters_changed(s, "sizing distance " + format_number(distance));
+    } else if (k == "n") {  // the manual's Set Distance: the camera moves to the sizing distance
+        float wanted = s.parameters.distance > 0 ? s.parameters.distance : framing_distance(scene_radius(s), camera.fovy_degrees);
+        camera.position = camera.target - forward * wanted;
+        s.message = "distance " + format_number(wanted);
+    } else if (k.size() == 1 && k[0] >= '1' && k[0] <= '8') {  // light options: 1/2 ambient, 3/4 diffuse, 5/6 specular, 7/8 shininess
+        Light& light = s.settings.light;
+        int option = (k[0] - '1') / 2;
+        float factor = (k[0] - '1') % 2 ? 1.25f : 0.8f;
+        float* values[4] = {&light.ambient, &light.diffuse, &light.specular, &light.shininess};
+        if (option == 3 && light.shininess == 0) light.shininess = 32;  // start from the usual material value
+        *values[option] *= factor;
+        const char* names[4] = {"ambient", "diffuse", "specular", "shininess"};
+        s.message = std::string(names[option]) + " " + format_number(*values[option]);
     } else if (k == "g") {
         s.light_follows_camera = !s.light_follows_camera;
         s.message = s.light_follows_camera ? "light follows the camera" : "light fixed";
