@@ -13,11 +13,7 @@ using namespace boxlod;
 namespace fs = std::filesystem;
 
 namespace {
-std::string statistic(const Model& model, const std::string& key) {
-    for (const KeyValue& entry : model_statistics(model))
-        if (entry.key == key) return entry.value;
-    return "?";
-}
+std::string statistic(const Model& model, const std::string& key) { return value_of(model_statistics(model), key); }
 }  // namespace
 
 TEST(AssimpIo, ObjQuadsCountAsOneFaceEach) {

@@ -14,6 +14,13 @@ TEST(KeyValues, NumbersPrintShortAndReadBackExactly) {
     for (double v : {1.0 / 3.0, 1e-300, 123456789.123456789, -2.5e17}) EXPECT_EQ(std::strtod(format_number(v).c_str(), nullptr), v);
 }
 
+TEST(KeyValues, ValueOfFindsTheFirstEntry) {
+    KeyValues entries{number_entry("a", 1), number_entry("b", 2), number_entry("a", 3)};
+    EXPECT_EQ(value_of(entries, "a"), "1");
+    EXPECT_EQ(value_of(entries, "b"), "2");
+    EXPECT_EQ(value_of(entries, "c"), "");
+}
+
 TEST(KeyValues, LinesAndJson) {
     KeyValues entries{number_entry("nodes", 12), text_entry("name", "a \"b\"")};
     EXPECT_EQ(format_key_values(entries), "nodes = 12\nname = a \"b\"\n");

@@ -16,11 +16,7 @@ using namespace boxlod;
 
 namespace {
 
-std::string statistic(const Lod& lod, const std::string& key) {
-    for (const KeyValue& e : lod.statistics)
-        if (e.key == key) return e.value;
-    return "missing";
-}
+std::string statistic(const Lod& lod, const std::string& key) { return value_of(lod.statistics, key); }
 
 LodParameters small_parameters() {
     LodParameters p;

@@ -13,11 +13,7 @@ namespace boxlod {
 
 namespace {
 
-std::string statistic(const KeyValues& statistics, const std::string& key) {
-    for (const KeyValue& entry : statistics)
-        if (entry.key == key) return entry.value;
-    return "";
-}
+std::string statistic(const KeyValues& statistics, const std::string& key) { return value_of(statistics, key); }
 
 struct Pinned {
     const char* sample;

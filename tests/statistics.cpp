@@ -21,11 +21,7 @@ TEST(Statistics, CountsFacesTrianglesVerticesAndBatchesPerMaterial) {
     model.nodes[0].primitives[0].positions[0].z() = -1.5f;
 
     KeyValues stats = model_statistics(model);
-    auto value = [&](const std::string& key) {
-        for (const KeyValue& e : stats)
-            if (e.key == key) return e.value;
-        return std::string("missing");
-    };
+    auto value = [&](const std::string& key) { return value_of(stats, key); };
     EXPECT_EQ(value("nodes"), "3");
     EXPECT_EQ(value("nodes_with_geometry"), "2");
     EXPECT_EQ(value("depth"), "1");

@@ -23,6 +23,12 @@ KeyValue float_entry(std::string key, float value) { return {std::move(key), for
 KeyValue number_entry(std::string key, double value) { return {std::move(key), format_number(value), true}; }
 KeyValue text_entry(std::string key, std::string value) { return {std::move(key), std::move(value), false}; }
 
+std::string value_of(const KeyValues& entries, const std::string& key) {
+    for (const KeyValue& e : entries)
+        if (e.key == key) return e.value;
+    return "";
+}
+
 std::string format_key_values(const KeyValues& entries) {
     std::string out;
     for (const KeyValue& e : entries) out += e.key + " = " + e.value + "\n";

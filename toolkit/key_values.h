@@ -19,6 +19,9 @@ KeyValue number_entry(std::string key, double value);
 KeyValue float_entry(std::string key, float value);
 KeyValue text_entry(std::string key, std::string value);
 
+// The value of the first entry named `key`, "" when there is none.
+std::string value_of(const KeyValues& entries, const std::string& key);
+
 std::string format_key_values(const KeyValues& entries);  // "key = value\n" each
 std::string format_json(const KeyValues& entries);        // {"key": value, ...}
 
