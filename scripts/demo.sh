@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job on built-in defaults: a generated building and a real one, each
-# built into every level of its textured-box LoD, with a table and renders.
+# built into every level of its textured-box LoD, with a table and renders;
+# then the first experiment, quality against faces for three level modes.
 set -euo pipefail
 build=${1:-build}
 boxlod="$build/toolkit/cli/boxlod"
@@ -37,4 +38,11 @@ demo_model() {  # demo_model NAME MODEL
 "$boxlod" generate --sample house -o "$out/house.glb" > /dev/null
 demo_model house "$out/house.glb"
 demo_model fzk-haus /usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
+
+# The first experiment: every level of three level modes of the house,
+# compared with the original from three views (experiments/configs/demo.txt).
+echo "== experiment: quality against faces (PSNR, SSIM, FLIP averaged over 3 views)"
+"$boxlod" sweep experiments/configs/demo.txt -o "$out/experiment" > /dev/null 2>&1
+/usr/bin/python3 experiments/plot_quality.py "$out/experiment/results.csv" "$out/experiment/quality.png"
+echo
 echo "all outputs: $out/"

@@ -13,6 +13,8 @@ build_packages=(
 data_packages=(assimp-utils assimp-testmodels)
 # The SSIM reference test: scikit-image's structural_similarity (reads PNGs through imageio).
 data_packages+=(python3-skimage python3-imageio)
+# make demo's plot.
+data_packages+=(python3-matplotlib)
 
 # The rasterizer benchmark's peer: Mesa's llvmpipe through OSMesa.
 bench_packages=(libosmesa6-dev)

@@ -1,0 +1,52 @@
+#!/usr/bin/python3
+"""Quality against faces per level mode, from a sweep's results.csv.
+
+    plot_quality.py results.csv quality.png
+
+Prints one row per level mode and level (faces, and each metric averaged over
+the views) and draws SSIM and FLIP against faces, one line per level mode.
+"""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+import matplotlib.pyplot as plt
+
+
+def main(results, figure):
+    rows = list(csv.DictReader(open(results, newline="")))
+    metrics = [m for m in ("psnr", "ssim", "flip") if rows and m in rows[0]]
+    groups = defaultdict(list)
+    for row in rows:
+        groups[(row["model"], row["level_mode"], int(row["level"]))].append(row)
+    print(f"{'level mode':<14} {'level':>5} {'faces':>7} " + " ".join(f"{m:>7}" for m in metrics))
+    curves = defaultdict(list)
+    for (model, mode, level), members in sorted(groups.items()):
+        faces = int(members[0]["faces"])
+        means = {m: sum(float(r[m]) for r in members) / len(members) for m in metrics}
+        print(f"{mode:<14} {level:>5} {faces:>7} " + " ".join(f"{means[m]:>7.3f}" for m in metrics))
+        curves[(model, mode)].append((faces, means))
+    figure_metrics = [m for m in ("ssim", "flip") if m in metrics]
+    fig, axes = plt.subplots(1, len(figure_metrics), figsize=(5 * len(figure_metrics), 4), squeeze=False)
+    for axis, metric in zip(axes[0], figure_metrics):
+        for (model, mode), points in sorted(curves.items()):
+            points.sort(key=lambda p: p[0])
+            axis.plot([p[0] for p in points], [p[1][metric] for p in points], marker="o", label=mode)
+        axis.set_xscale("log")
+        axis.set_xlabel("faces (log)")
+        axis.set_ylabel(metric.upper() + (" (higher is better)" if metric == "ssim" else " (lower is better)"))
+        axis.grid(True, alpha=0.3)
+        axis.legend()
+    fig.suptitle("textured-box LoD: image quality against faces")
+    fig.tight_layout()
+    fig.savefig(figure, dpi=100)
+    print(f"plot: {figure}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_quality.py results.csv quality.png")
+    main(sys.argv[1], sys.argv[2])
