@@ -22,12 +22,12 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
     return frame_to_srgb8(frame);
 }
 
-void export_lod(const Lod& lod, const LodSession& session, const std::string& directory, const std::string& name,
+void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
                 const Image8& preview, int threads) {
     namespace fs = std::filesystem;
     fs::create_directories(directory);
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
-    Model model = lod.model;
+    Model& model = lod.model;
     for (int i = 0; i < 3 * lod.atlas.pages; ++i) model.textures[i].name = name + "_" + model.textures[i].name;
     export_gltf(model, file(".gltf"), threads);
     LodParameters parameters = session.parameters;

@@ -36,11 +36,11 @@ int run_build(const Arguments& a) {
         std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
         auto start = std::chrono::steady_clock::now();
         Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
-        export_lod(lod, *session, a.text("output"), level_name, preview, threads);
-        session->times.write += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
         KeyValues report{text_entry("name", level_name)};
         report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+        export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
+        session->times.write += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
         std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
     }
     if (a.has("timings")) {
