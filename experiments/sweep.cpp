@@ -6,6 +6,8 @@
 #include "experiments/heatmap.h"
 #include "experiments/image_metrics.h"
 #include "experiments/silhouette.h"
+#include "experiments/simplification.h"
+#include "experiments/single_box.h"
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
 #include "toolkit/drawable.h"
@@ -19,6 +21,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -148,6 +151,33 @@ std::string file_name(std::string name) {
     return name + ".png";
 }
 
+// What one group of rows draws: an LoD level or a baseline mesh.
+struct Candidate {
+    Model model;
+    Atlas atlas;  // pages = 0 for untextured boxes and the baselines
+    std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
+    std::size_t nodes_with_box = 0;
+    int obtained_levels = 0;
+    std::unique_ptr<DrawableModel> drawable;
+    double seconds = 0;  // building it and making it drawable
+};
+
+Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels) {
+    Candidate c;
+    c.model = std::move(model);
+    c.atlas = std::move(atlas);
+    c.nodes_with_box = nodes_with_box;
+    c.obtained_levels = obtained_levels;
+    return c;
+}
+
+// The `triangles` column of a results.csv row (after the key columns, obtained_levels and faces).
+std::size_t triangles_of_row(const std::string& row) {
+    std::size_t begin = 0;
+    for (std::size_t k = 0; k < key_columns.size() + 2; ++k) begin = row.find(',', begin) + 1;
+    return std::stoull(row.substr(begin, row.find(',', begin) - begin));
+}
+
 struct Variant {
     LevelMode mode;
     BoxKind box;
@@ -169,7 +199,7 @@ std::string eta_text(double seconds) {
 
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
-    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "pages", "page_size",
+    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "page_size",
                           "nodes_with_box"})
         columns.push_back(c);
     columns.insert(columns.end(), config.metrics.begin(), config.metrics.end());
@@ -195,6 +225,12 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
     auto save_image = [&](const std::string& name, const Image8& image) {
         write_png((images / file_name(name)).string(), image);
     };
+    const std::size_t per_group = config.views.size() * config.distances.size() * config.render_modes.size();
+    // With SizingRule::nearest every distance draws the LoD baked for the smallest one.
+    auto sizing_index = [&](std::size_t d) -> std::size_t {
+        if (config.sizing == SizingRule::each_distance) return d;
+        return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
+    };
 
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         const SweepModel& entry = config.models[m];
@@ -210,7 +246,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
         for (BoxKind kind : config.box_kinds) boxes[kind] = node_boxes(model, kind, threads);
         report.boxes_seconds += seconds_since(start);
         std::vector<Variant> variants;
-        std::size_t model_rows = 0, per_level = config.views.size() * config.distances.size() * config.render_modes.size();
+        std::size_t model_groups = 0;
         for (LevelMode mode : config.level_modes)
             for (BoxKind kind : config.box_kinds)
                 for (Interpolation interpolation : config.interpolations) {
@@ -219,9 +255,14 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     for (int level = 0; level <= obtained; ++level)
                         if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
                             variant.levels.push_back(level);
-                    model_rows += variant.levels.size() * per_level;
+                    model_groups += variant.levels.size();
                     variants.push_back(std::move(variant));
                 }
+        // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
+        const Variant& first = variants.front();
+        model_groups += config.simplification_baseline ? first.levels.size() : 0;
+        model_groups += config.single_box_baseline ? 1 : 0;
+        const std::size_t model_rows = model_groups * per_group;
         report.rows += model_rows;
 
         std::unique_ptr<DrawableModel> original;
@@ -243,102 +284,141 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
             return references.emplace(key, std::move(shot)).first->second;
         };
 
+        // A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
+        // over views x distances x render modes. `slot` says which rows may share one candidate,
+        // `make` builds it; both run only for rows missing from results.csv.
         std::size_t model_done = 0, model_computed = 0;
         double model_seconds = 0;
+        auto run_group = [&](const std::string& group, const std::function<int(RenderMode, std::size_t)>& slot,
+                             const std::function<Candidate(int)>& make) {
+            auto group_start = Clock::now();
+            struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
+            std::vector<Row> missing;
+            for (std::size_t v = 0; v < config.views.size(); ++v)
+                for (std::size_t d = 0; d < config.distances.size(); ++d)
+                    for (RenderMode mode : config.render_modes) {
+                        std::string key = join({group, config.views[v], format_number(config.distances[d]), render_mode_name(mode)});
+                        order.push_back(key);
+                        if (!results.rows.count(key)) missing.push_back({v, d, mode, key});
+                    }
+            report.rows_skipped += per_group - missing.size();
+            model_done += per_group - missing.size();
+            if (missing.empty()) return;
+
+            std::map<int, Candidate> candidates;
+            for (const Row& row : missing) {
+                int s = slot(row.mode, row.distance);
+                auto found = candidates.find(s);
+                if (found == candidates.end()) {
+                    auto build_start = Clock::now();
+                    Candidate made = make(s);
+                    made.drawable = make_drawable_model(made.model);
+                    made.seconds = seconds_since(build_start);
+                    report.build_seconds += made.seconds;
+                    ++report.lods_built;
+                    found = candidates.emplace(s, std::move(made)).first;
+                }
+                const Candidate& c = found->second;
+                const Shot& original_shot = reference(row.view, row.distance, row.mode);
+                auto render_start = Clock::now();
+                RenderSettings settings = view_settings(framing, config.views[row.view], config.distances[row.distance],
+                                                        row.mode, config.fovy, threads);
+                Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+                double render_seconds = seconds_since(render_start);
+                report.render_seconds += render_seconds;
+                ++report.lod_renders;
+                auto metric_start = Clock::now();
+                bool heatmap = config.keep_images == KeptImages::all;
+                Metrics metrics = compare_shots(config, original_shot, shot, heatmap, threads);
+                double metric_seconds = seconds_since(metric_start);
+                report.metric_seconds += metric_seconds;
+
+                MeshCounts counts = mesh_counts(c.model);
+                std::uint64_t page_texels = std::uint64_t(c.atlas.page_size) * std::uint64_t(c.atlas.page_size);
+                std::vector<std::string> fields = {
+                    row.key, std::to_string(c.obtained_levels),
+                    std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
+                    std::to_string(counts.batches), std::to_string(std::uint64_t(c.atlas.pages) * page_texels),
+                    std::to_string(c.face_texels),
+                    std::to_string(c.atlas.pages), std::to_string(c.atlas.pages ? c.atlas.page_size : 0),
+                    std::to_string(c.nodes_with_box)};
+                fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
+                results.rows[row.key] = join(fields);
+                timings.rows[row.key] = join({row.key, format_number(c.seconds), format_number(render_seconds),
+                                              format_number(metric_seconds)});
+                if (config.keep_images != KeptImages::none) save_image(row.key, shot.image);
+                if (heatmap) save_image(row.key + "_heatmap", error_heatmap(metrics.heatmap));
+            }
+            write_table(results, order);
+            write_table(timings, order);
+            report.rows_computed += missing.size();
+            model_done += missing.size();
+            model_computed += missing.size();
+            double group_seconds = seconds_since(group_start);
+            model_seconds += group_seconds;
+            if (progress) {
+                double eta = model_seconds / double(model_computed) * double(model_rows - model_done);
+                std::fprintf(progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
+                             m + 1, config.models.size(), group.c_str(), missing.size(), group_seconds, model_done,
+                             model_rows, eta_text(eta).c_str());
+                std::fflush(progress);
+            }
+        };
+
         for (const Variant& variant : variants) {
-            LodParameters parameters;
-            parameters.level_mode = variant.mode;
-            parameters.box_kind = variant.box;
-            parameters.interpolation = variant.interpolation;
-            parameters.wanted_levels = config.wanted_levels;
-            parameters.fovy = config.fovy;
-            parameters.distance = *std::min_element(config.distances.begin(), config.distances.end()) * framing.framing_distance;
-            parameters.resolution = config.resolution;
             // Normal, parallax, pom and albedo draw the same baked boxes; untextured boxes are not baked.
-            std::unique_ptr<LodSession> sessions[2];  // [0] textured, [1] untextured
+            // Slot = 2 x sizing distance + (untextured ? 1 : 0); one session per slot, shared by the levels.
+            std::map<int, std::unique_ptr<LodSession>> sessions;
+            auto slot = [&](RenderMode mode, std::size_t d) { return int(2 * sizing_index(d) + (mode == RenderMode::untextured)); };
             for (int level : variant.levels) {
-                auto group_start = Clock::now();
                 std::string group = join({entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
                                           interpolation_name(variant.interpolation), std::to_string(level)});
-                struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
-                std::vector<Row> missing;
-                for (std::size_t v = 0; v < config.views.size(); ++v)
-                    for (std::size_t d = 0; d < config.distances.size(); ++d)
-                        for (RenderMode mode : config.render_modes) {
-                            std::string key = join({group, config.views[v], format_number(config.distances[d]), render_mode_name(mode)});
-                            order.push_back(key);
-                            if (!results.rows.count(key)) missing.push_back({v, d, mode, key});
-                        }
-                report.rows_skipped += per_level - missing.size();
-                model_done += per_level - missing.size();
-                if (missing.empty()) continue;
-
-                struct Built { Lod lod; std::unique_ptr<DrawableModel> drawable; double seconds = 0; };
-                std::optional<Built> built[2];
-                auto lod_for = [&](RenderMode mode) -> Built& {
-                    int kind = mode == RenderMode::untextured ? 1 : 0;
-                    if (built[kind]) return *built[kind];
-                    auto build_start = Clock::now();
-                    if (!sessions[kind]) {
-                        LodParameters p = parameters;
-                        p.render_mode = kind == 1 ? RenderMode::untextured : RenderMode::normal;
-                        sessions[kind] = start_lod(model, p, threads, &boxes[variant.box]);
+                run_group(group, slot, [&](int s) {
+                    std::unique_ptr<LodSession>& session = sessions[s];
+                    if (!session) {
+                        LodParameters p;
+                        p.level_mode = variant.mode;
+                        p.box_kind = variant.box;
+                        p.interpolation = variant.interpolation;
+                        p.wanted_levels = config.wanted_levels;
+                        p.fovy = config.fovy;
+                        p.distance = config.distances[std::size_t(s / 2)] * framing.framing_distance;
+                        p.resolution = config.resolution;
+                        p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
+                        session = start_lod(model, p, threads, &boxes[variant.box]);
                     }
-                    Lod lod = build_lod(*sessions[kind], level, threads);
-                    auto drawable = make_drawable_model(lod.model);
-                    double seconds = seconds_since(build_start);
-                    report.build_seconds += seconds;
-                    ++report.lods_built;
-                    return built[kind].emplace(Built{std::move(lod), std::move(drawable), seconds});
-                };
-                for (const Row& row : missing) {
-                    Built& b = lod_for(row.mode);
-                    const Shot& original_shot = reference(row.view, row.distance, row.mode);
-                    auto render_start = Clock::now();
-                    RenderSettings settings = view_settings(framing, config.views[row.view], config.distances[row.distance],
-                                                            row.mode, config.fovy, threads);
-                    Shot shot = render_shot(b.drawable->drawable.batches, settings, config.width, config.height);
-                    double render_seconds = seconds_since(render_start);
-                    report.render_seconds += render_seconds;
-                    ++report.lod_renders;
-                    auto metric_start = Clock::now();
-                    bool heatmap = config.keep_images == KeptImages::all;
-                    Metrics metrics = compare_shots(config, original_shot, shot, heatmap, threads);
-                    double metric_seconds = seconds_since(metric_start);
-                    report.metric_seconds += metric_seconds;
-
-                    MeshCounts counts = mesh_counts(b.lod.model);
-                    const Atlas& atlas = b.lod.atlas;
-                    std::vector<std::string> fields = {
-                        row.key, std::to_string(variant.obtained_levels),
-                        std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
-                        std::to_string(counts.batches),
-                        std::to_string(std::uint64_t(atlas.pages) * std::uint64_t(atlas.page_size) * std::uint64_t(atlas.page_size)),
-                        std::to_string(atlas.pages), std::to_string(atlas.pages ? atlas.page_size : 0),
-                        std::to_string(b.lod.cut.box_nodes.size())};
-                    fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
-                    results.rows[row.key] = join(fields);
-                    timings.rows[row.key] = join({row.key, format_number(b.seconds), format_number(render_seconds),
-                                                  format_number(metric_seconds)});
-                    if (config.keep_images != KeptImages::none) save_image(row.key, shot.image);
-                    if (heatmap) save_image(row.key + "_heatmap", error_heatmap(metrics.heatmap));
-                }
-                write_table(results, order);
-                write_table(timings, order);
-                report.rows_computed += missing.size();
-                model_done += missing.size();
-                model_computed += missing.size();
-                double group_seconds = seconds_since(group_start);
-                model_seconds += group_seconds;
-                if (progress) {
-                    double eta = model_seconds / double(model_computed) * double(model_rows - model_done);
-                    std::fprintf(progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
-                                 m + 1, config.models.size(), group.c_str(), missing.size(), group_seconds, model_done,
-                                 model_rows, eta_text(eta).c_str());
-                    std::fflush(progress);
-                }
+                    Lod lod = build_lod(*session, level, threads);
+                    Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
+                                            variant.obtained_levels);
+                    for (int node : lod.cut.box_nodes) {
+                        auto baked = session->baked.find(node);
+                        if (baked != session->baked.end())
+                            for (const BakedFace& face : baked->second) c.face_texels += std::uint64_t(face.color.width) * face.color.height;
+                    }
+                    return c;
+                });
             }
         }
+
+        // Baselines: the same rows, drawn by a mesh that does not depend on view, distance or mode.
+        auto one_slot = [](RenderMode, std::size_t) { return 0; };
+        if (config.simplification_baseline) {
+            for (int level : first.levels) {
+                std::string first_row = join({entry.name, level_mode_name(first.mode), box_kind_name(first.box),
+                                              interpolation_name(first.interpolation), std::to_string(level),
+                                              config.views[0], format_number(config.distances[0]),
+                                              render_mode_name(config.render_modes[0])});
+                std::size_t target = triangles_of_row(results.rows.at(first_row));
+                run_group(join({entry.name, "simplification", "-", "-", std::to_string(level)}), one_slot, [&](int) {
+                    SimplifyOptions options;
+                    options.threads = threads;
+                    return candidate(simplify_model(model, target, options), {}, 0, first.obtained_levels);
+                });
+            }
+        }
+        if (config.single_box_baseline)
+            run_group(join({entry.name, "single-box", "-", "-", std::to_string(first.obtained_levels)}), one_slot,
+                      [&](int) { return candidate(single_box_model(model, threads), {}, 0, first.obtained_levels); });
     }
     write_table(results, order);
     write_table(timings, order);

@@ -143,6 +143,20 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              if (!(c.pixels_per_degree > 0)) l.fail("expected a positive number of pixels per degree");
          }},
         {"resolution", [&](const Line& l) { c.resolution = l.number_in(1.0f, 65536.0f); }},
+        {"sizing", [&](const Line& l) {
+             if (l.line.value == "nearest") c.sizing = SizingRule::nearest;
+             else if (l.line.value == "each-distance") c.sizing = SizingRule::each_distance;
+             else l.fail("expected nearest or each-distance, got '" + l.line.value + "'");
+         }},
+        {"baselines", [&](const Line& l) {
+             c.simplification_baseline = c.single_box_baseline = false;
+             if (l.line.value == "none") return;
+             for (const std::string& item : l.items()) {
+                 if (item == "simplification") c.simplification_baseline = true;
+                 else if (item == "single-box") c.single_box_baseline = true;
+                 else l.fail("unknown baseline '" + item + "' (simplification, single-box, or none)");
+             }
+         }},
         {"keep_images", [&](const Line& l) {
              const std::map<std::string, KeptImages> kinds = {
                  {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};

@@ -16,6 +16,12 @@ namespace boxlod {
 // all: also a FLIP (or RMSE) heat map per row.
 enum class KeptImages { none, lod, all };
 
+// The distance the LoD textures are sized for (DESIGN.md: Texture sizing):
+// nearest: one LoD per level, baked for the smallest of the distances (it is
+// texel-exact there and oversampled farther away); each_distance: an LoD per
+// level and distance, baked for that distance (texture memory against distance).
+enum class SizingRule { nearest, each_distance };
+
 struct SweepModel {
     std::string name;  // as written in the config: the CSV's `model` column
     std::string path;  // resolved against the config's folder; empty for a sample
@@ -36,7 +42,12 @@ struct SweepConfig {
     float fovy = 45;
     std::vector<std::string> metrics{"rmse", "psnr", "ssim", "flip", "iou"};
     double pixels_per_degree = 67;  // FLIP's
-    float resolution = 512;  // texture sizing screen height; sizing distance = the smallest distance
+    float resolution = 512;  // texture sizing screen height
+    SizingRule sizing = SizingRule::nearest;
+    // The classic baselines (issue 6, item 2), compared at the LoD's triangle counts:
+    // the original simplified to each level's triangles (quadric edge collapse), and
+    // the whole model as one untextured box.
+    bool simplification_baseline = false, single_box_baseline = false;
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

@@ -105,6 +105,72 @@ TEST(Sweep, RowsCountsAndMetricsOfTheCrossProduct) {
     EXPECT_TRUE(std::filesystem::exists(images / "building.glb_original_-Z_1_normal.png"));
 }
 
+std::vector<std::string> row_of(const Table& table, const std::string& prefix) {
+    for (std::size_t r = 1; r < table.size(); ++r) {
+        std::string line;
+        for (const std::string& field : table[r]) line += field + ",";
+        if (line.starts_with(prefix)) return table[r];
+    }
+    ADD_FAILURE() << "no row " << prefix;
+    return table[0];
+}
+
+// The baselines come after the LoD rows: a simplified mesh per level of the first level
+// mode, at that level's triangles (never above), and the single box at its top.
+TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
+    SmallSweep s = small_sweep("sweep_baselines", "baselines = simplification, single-box\n");
+    SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);
+    EXPECT_EQ(report.rows, 8u + 4u + 2u);  // LoDs, simplification at levels 0 and 4, single box
+    EXPECT_EQ(report.lods_built, 4u + 2u + 1u);
+    Table t = read_csv(s.folder / "out" / "results.csv");
+    ASSERT_EQ(t.size(), 15u);
+    std::size_t triangles = column(t, "triangles"), faces = column(t, "faces"), ssim = column(t, "ssim"),
+                texels = column(t, "texels"), level = column(t, "level");
+    EXPECT_EQ(t[9][column(t, "level_mode")], "simplification");
+    EXPECT_EQ(t[13][column(t, "level_mode")], "single-box");
+    EXPECT_EQ(t[13][level], "4");
+    EXPECT_EQ(t[13][column(t, "box_kind")], "-");
+    for (const char* view : {"+X+Y+Z,", "-Z,"}) {
+        auto original = row_of(t, std::string("building.glb,simplification,-,-,0,") + view);
+        EXPECT_EQ(original[triangles], std::to_string(s.original.triangles));
+        EXPECT_EQ(original[ssim], "1");
+        auto box = row_of(t, std::string("building.glb,top-down,expanded,linear,4,") + view);
+        auto simplified = row_of(t, std::string("building.glb,simplification,-,-,4,") + view);
+        EXPECT_LE(std::stoul(simplified[triangles]), std::stoul(box[triangles]));
+        EXPECT_GT(std::stoul(simplified[triangles]), 0u);
+        EXPECT_EQ(simplified[faces], simplified[triangles]);
+        EXPECT_EQ(simplified[texels], "0");
+        auto single = row_of(t, std::string("building.glb,single-box,-,-,4,") + view);
+        EXPECT_EQ(single[faces], "6");
+        EXPECT_LT(std::stod(single[ssim]), 1);
+    }
+}
+
+// each-distance bakes an LoD per distance: four times the distance, about a sixteenth
+// of the texels; nearest draws the texels of the smallest distance everywhere.
+TEST(Sweep, SizingEachDistanceBakesFewerTexelsFartherAway) {
+    SmallSweep each = small_sweep("sweep_sizing_each", "sizing = each-distance\n");
+    each.config.levels = {4};
+    each.config.views = {"+X+Y+Z"};
+    each.config.distances = {1, 4};
+    each.config.level_modes = {LevelMode::top_down};
+    SweepConfig nearest = each.config;
+    nearest.sizing = SizingRule::nearest;
+    run_sweep(each.config, (each.folder / "each").string(), 1);
+    run_sweep(nearest, (each.folder / "nearest").string(), 1);
+    for (const char* folder : {"each", "nearest"}) {
+        Table t = read_csv(each.folder / folder / "results.csv");
+        ASSERT_EQ(t.size(), 3u);
+        double near_texels = std::stod(t[1][column(t, "face_texels")]), far_texels = std::stod(t[2][column(t, "face_texels")]);
+        EXPECT_GT(near_texels, 0);
+        if (std::string(folder) == "each") {
+            EXPECT_LT(far_texels, near_texels / 8) << "a quarter of the texels per side, give or take rounding up";
+        } else {
+            EXPECT_EQ(far_texels, near_texels);
+        }
+    }
+}
+
 TEST(Sweep, ResultsAreIdenticalForOneAndTwoThreads) {
     SmallSweep s = small_sweep("sweep_threads");
     run_sweep(s.config, (s.folder / "one").string(), 1);

@@ -22,7 +22,8 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "render_modes = normal, parallax\n"
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
-        "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n",
+        "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
+        "sizing = each-distance\nbaselines = single-box, simplification\n",
         "/work/sweeps/config.txt");
     ASSERT_EQ(c.models.size(), 3u);
     EXPECT_EQ(c.models[0].name, "house.glb");
@@ -46,6 +47,9 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.resolution, 256);
     EXPECT_EQ(c.keep_images, KeptImages::all);
     EXPECT_EQ(c.threads, 2);
+    EXPECT_EQ(c.sizing, SizingRule::each_distance);
+    EXPECT_TRUE(c.simplification_baseline);
+    EXPECT_TRUE(c.single_box_baseline);
 }
 
 TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
@@ -54,6 +58,10 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_EQ(c.views.size(), 26u);
     EXPECT_TRUE(c.levels.empty());
     EXPECT_EQ(c.metrics.size(), 5u);  // default: every metric
+    EXPECT_EQ(c.sizing, SizingRule::nearest);
+    EXPECT_FALSE(c.simplification_baseline || c.single_box_baseline);
+    SweepConfig none = parse_sweep_config("models = a.glb\nbaselines = none\n", "c.txt");
+    EXPECT_FALSE(none.simplification_baseline || none.single_box_baseline);
 }
 
 // The message names the file, the line and the key.
@@ -76,6 +84,8 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
     expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
+    expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest or each-distance");
+    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
