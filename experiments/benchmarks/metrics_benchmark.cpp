@@ -86,6 +86,14 @@ void bm_flip(benchmark::State& state) {
     set_pixels(state);
 }
 
+// What a sweep pays per LoD: the original's half is prepared once per view.
+void bm_flip_prepared(benchmark::State& state) {
+    const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
+    const FlipReference reference = prepare_flip_reference(a, 67, int(state.range(2)));
+    for (auto _ : state) benchmark::DoNotOptimize(flip(reference, b, int(state.range(2))).mean);
+    set_pixels(state);
+}
+
 void bm_iou(benchmark::State& state) {
     const auto& [a, b] = image_pair(int(state.range(0)), int(state.range(1)));
     for (auto _ : state)
@@ -111,5 +119,6 @@ BENCHMARK(bm_render)->Apply(sizes_and_threads);
 BENCHMARK(bm_rmse_psnr)->Apply(sizes);
 BENCHMARK(bm_ssim)->Apply(sizes_and_threads);
 BENCHMARK(bm_flip)->Apply(sizes_and_threads);
+BENCHMARK(bm_flip_prepared)->Apply(sizes_and_threads);
 BENCHMARK(bm_iou)->Apply(sizes);
 BENCHMARK_MAIN();
