@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on built-in defaults: a generated building and a real one, each
 # built into every level of its textured-box LoD, with a table and renders;
-# then the first experiment, quality against faces for three level modes.
+# then the first experiment, quality against triangles for three level modes
+# and the simplification baseline.
 set -euo pipefail
 build=${1:-build}
 boxlod="$build/toolkit/cli/boxlod"
@@ -41,7 +42,7 @@ demo_model fzk-haus /usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
 
 # The first experiment: every level of three level modes of the house,
 # compared with the original from three views (experiments/configs/demo.txt).
-echo "== experiment: quality against faces (PSNR, SSIM, FLIP averaged over 3 views)"
+echo "== experiment: quality against triangles, textured boxes and mesh simplification (PSNR, SSIM, FLIP over 3 views)"
 "$boxlod" sweep experiments/configs/demo.txt -o "$out/experiment" > /dev/null 2>&1
 /usr/bin/python3 experiments/plot_quality.py "$out/experiment/results.csv" "$out/experiment/quality.png"
 echo
