@@ -15,6 +15,14 @@ int radius_of(const std::vector<double>& taps) {
     return int(taps.size() / 2);
 }
 
+// out[x] += w * in[x]: the filters' whole inner loop. Elementwise, so every
+// output gets the same multiply and add in the same order whatever the vector
+// width: the AVX2 clone (chosen at run time where the CPU has it; 4 doubles a
+// step instead of SSE2's 2) gives the same bits as the default one.
+__attribute__((target_clones("avx2", "default"))) void add_scaled(double* __restrict out, const double* __restrict in, double w, int n) {
+    for (int x = 0; x < n; ++x) out[x] += w * in[x];
+}
+
 }  // namespace
 
 void filter_separable_row(const Plane& in, const SeparableKernel& kernel, int y, std::vector<double>& scratch,
@@ -28,15 +36,12 @@ void filter_separable_row(const Plane& in, const SeparableKernel& kernel, int y,
     double* column = scratch.data() + rh;
     for (std::size_t t = 0; t < kernel.vertical.size(); ++t) {
         const double w = kernel.vertical[t];
-        const double* source = in.at(0, std::clamp(y + int(t) - rv, 0, height - 1));
-        for (int x = 0; x < width; ++x) column[x] += w * source[x];
+        add_scaled(column, in.at(0, std::clamp(y + int(t) - rv, 0, height - 1)), w, width);
     }
     for (int i = 0; i < rh; ++i) scratch[std::size_t(i)] = column[0], scratch[std::size_t(rh + width + i)] = column[width - 1];
     std::fill(out, out + width, 0.0);
     for (std::size_t t = 0; t < kernel.horizontal.size(); ++t) {
-        const double w = kernel.horizontal[t];
-        const double* source = scratch.data() + t;
-        for (int x = 0; x < width; ++x) out[x] += w * source[x];
+        add_scaled(out, scratch.data() + t, kernel.horizontal[t], width);
     }
 }
 
