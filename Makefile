@@ -3,7 +3,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build demo test test-sanitize bench clean
+.PHONY: all deps configure build demo test test-sanitize bench paper paper-smoke clean
 all: build
 
 deps:
@@ -35,6 +35,22 @@ bench:
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target rasterizer_benchmark
 	@$(BUILD)/experiments/rasterizer_benchmark
+
+# The paper: every sweep and city run of the workflow (experiments/Snakefile,
+# profile full; the jobs Snakemake finds up to date are skipped), the notebooks
+# and the PDF, copied to out/paper/paper.pdf. paper-smoke: the same chain on
+# tiny inputs (profile smoke, out/paper/paper-smoke.pdf), under a minute.
+paper: PROFILE = full
+paper-smoke: PROFILE = smoke
+paper paper-smoke:
+	@scripts/install-deps.sh paper
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target boxlod
+	@/usr/bin/snakemake -s experiments/Snakefile -j $(JOBS) --rerun-incomplete \
+	  --config profile=$(PROFILE) boxlod=$(BUILD)/toolkit/cli/boxlod
+	@mkdir -p out/paper
+	@cp out/workflow/$(PROFILE)/paper/paper.pdf out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf
+	@echo "paper: out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf (everything: out/workflow/$(PROFILE)/)"
 
 clean:
 	rm -rf $(BUILD) build-sanitize

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages boxlod needs that are missing; nothing else.
-# Usage: scripts/install-deps.sh [bench]   (bench adds the benchmarks' peers)
+# Usage: scripts/install-deps.sh [bench|paper]   (bench adds the benchmarks' peers;
+# paper: the workflow, notebooks and LaTeX, which the default list also holds
+# because `make test` builds the paper on tiny inputs)
 set -euo pipefail
 
 build_packages=(
@@ -22,7 +24,13 @@ bench_packages=(libosmesa6-dev)
 # The viewer's test runs it in a virtual X server.
 data_packages+=(xvfb xauth)
 
-wanted=("${build_packages[@]}" "${data_packages[@]}")
+# The workflow (Snakemake), the notebooks run headless (Debian's python3 as
+# their kernel) and the paper (LaTeX): make paper, and tests/workflow_end_to_end.sh.
+paper_packages=(snakemake python3-yaml python3-pandas python3-matplotlib
+  python3-nbformat python3-nbclient python3-nbconvert python3-ipykernel
+  texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk)
+
+wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}")
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")
 
 missing=()

@@ -1,11 +1,70 @@
 #include "toolkit/drawable.h"
 
+#include <cstdint>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 namespace boxlod {
 
-DecodedTextures decode_textures(const Model& model) {
+namespace {
+
+MipTexture decode_texture(const Texture& texture, ColorSpace space) {
+    return texture.image16.empty() ? make_texture(texture.image, space) : make_texture(texture.image16, Wrap::repeat);
+}
+
+// A 128-bit digest of the texels and their layout: FNV-1a and a multiplicative
+// hash side by side. Equal digests are taken for equal textures (a false match
+// would need two images colliding in both, about 2^-128); keeping a copy of
+// every image to compare instead would double the memory this cache saves.
+using Digest = std::pair<std::uint64_t, std::uint64_t>;
+
+Digest texture_digest(const Texture& texture, ColorSpace space) {
+    Digest d{14695981039346656037ull, 0x243F6A8885A308D3ull};
+    auto mix = [&](const void* data, std::size_t bytes) {
+        const auto* p = static_cast<const std::uint8_t*>(data);
+        for (std::size_t i = 0; i < bytes; ++i) {
+            d.first = (d.first ^ p[i]) * 1099511628211ull;
+            d.second = (d.second + p[i] + 1) * 0x9E3779B97F4A7C15ull;
+        }
+    };
+    int layout[] = {texture.image.width, texture.image.height, texture.image.channels, texture.image16.width,
+                    texture.image16.height, texture.image16.channels, int(space)};
+    mix(layout, sizeof layout);
+    mix(texture.image.pixels.data(), texture.image.pixels.size());
+    mix(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t));
+    return d;
+}
+
+}  // namespace
+
+struct TextureCache::Entries {
+    mutable std::mutex mutex;
+    std::map<Digest, std::shared_ptr<const MipTexture>> by_digest;
+};
+
+TextureCache::TextureCache() : entries_(std::make_unique<Entries>()) {}
+TextureCache::~TextureCache() = default;
+
+std::size_t TextureCache::size() const {
+    std::lock_guard lock(entries_->mutex);
+    return entries_->by_digest.size();
+}
+
+std::shared_ptr<const MipTexture> TextureCache::decode(const Texture& texture, ColorSpace space) {
+    const Digest digest = texture_digest(texture, space);
+    {
+        std::lock_guard lock(entries_->mutex);
+        auto found = entries_->by_digest.find(digest);
+        if (found != entries_->by_digest.end()) return found->second;
+    }
+    // Decoded outside the lock; a thread that lost the race takes the winner's (equal) texture.
+    auto decoded = std::make_shared<const MipTexture>(decode_texture(texture, space));
+    std::lock_guard lock(entries_->mutex);
+    return entries_->by_digest.emplace(digest, decoded).first->second;
+}
+
+DecodedTextures decode_textures(const Model& model, TextureCache* cache) {
     DecodedTextures decoded;
     decoded.color.resize(model.textures.size());
     decoded.linear.resize(model.textures.size());
@@ -14,8 +73,7 @@ DecodedTextures decode_textures(const Model& model) {
         auto& slot = (space == ColorSpace::srgb ? decoded.color : decoded.linear)[index];
         if (slot) return;
         const Texture& texture = model.textures[index];
-        slot = std::make_unique<MipTexture>(texture.image16.empty() ? make_texture(texture.image, space)
-                                                                    : make_texture(texture.image16, Wrap::repeat));
+        slot = cache ? cache->decode(texture, space) : std::make_shared<const MipTexture>(decode_texture(texture, space));
     };
     for (const Material& material : model.materials) {
         decode(material.base_color_texture, ColorSpace::srgb);
@@ -54,7 +112,7 @@ Drawable make_drawable(const Model& model, const DecodedTextures& textures, int 
             for (std::uint32_t i : p.indices) mesh->indices.push_back(base + i);
         }
     }
-    auto texture = [](const std::vector<std::unique_ptr<MipTexture>>& decoded, int index) {
+    auto texture = [](const std::vector<std::shared_ptr<const MipTexture>>& decoded, int index) {
         return index < 0 ? nullptr : decoded[index].get();
     };
     for (const Key& key : order) {
@@ -75,9 +133,9 @@ Drawable make_drawable(const Model& model, const DecodedTextures& textures, int 
     return drawable;
 }
 
-std::unique_ptr<DrawableModel> make_drawable_model(const Model& model) {
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache) {
     auto result = std::make_unique<DrawableModel>();
-    result->textures = decode_textures(model);
+    result->textures = decode_textures(model, cache);
     result->drawable = make_drawable(model, result->textures);
     return result;
 }

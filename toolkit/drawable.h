@@ -12,9 +12,26 @@ namespace boxlod {
 // normal and height maps as linear data. Read-only once made, so many
 // drawables (one per baked box) can share it across threads.
 struct DecodedTextures {
-    std::vector<std::unique_ptr<MipTexture>> color, linear;  // per model texture; null where unused
+    std::vector<std::shared_ptr<const MipTexture>> color, linear;  // per model texture; null where unused
 };
-DecodedTextures decode_textures(const Model& model);
+
+// Decoded textures shared by content between models: a city's buildings and
+// every level of their LoDs use the same few grammar textures, each copied
+// into each model. Equal images (by a 128-bit digest of their texels) decode once.
+// Thread-safe; entries live as long as the cache or a DecodedTextures using them.
+class TextureCache {
+public:
+    TextureCache();
+    ~TextureCache();
+    std::shared_ptr<const MipTexture> decode(const Texture& texture, ColorSpace space);
+    std::size_t size() const;  // distinct decoded textures
+
+private:
+    struct Entries;
+    std::unique_ptr<Entries> entries_;
+};
+
+DecodedTextures decode_textures(const Model& model, TextureCache* cache = nullptr);
 
 struct Drawable {
     std::vector<std::unique_ptr<Mesh>> meshes;
@@ -30,6 +47,6 @@ struct DrawableModel {
     DecodedTextures textures;
     Drawable drawable;
 };
-std::unique_ptr<DrawableModel> make_drawable_model(const Model& model);
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache = nullptr);
 
 }  // namespace boxlod

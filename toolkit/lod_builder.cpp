@@ -2,6 +2,7 @@
 
 #include "renderer/input_error.h"
 #include "renderer/parallel.h"
+#include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 
 #include <algorithm>
@@ -15,31 +16,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 float scene_radius(const Model& model) { return std::max(model_bounds(model).size().norm() / 2, 1e-6f); }
-
-// Builds the LoD model's node tree, copying the materials and textures that kept geometry uses.
-struct LodModelWriter {
-    const Model& source;
-    Model& out;
-    std::map<int, int> materials, textures;
-
-    int texture(int index) {
-        if (index < 0) return -1;
-        auto [it, added] = textures.emplace(index, int(out.textures.size()));
-        if (added) out.textures.push_back(source.textures[index]);
-        return it->second;
-    }
-    int material(int index) {
-        if (index < 0) return -1;
-        auto it = materials.find(index);
-        if (it != materials.end()) return it->second;
-        Material m = source.materials[index];
-        m.base_color_texture = texture(m.base_color_texture);
-        m.normal_texture = texture(m.normal_texture);
-        m.height_texture = texture(m.height_texture);
-        out.materials.push_back(m);
-        return materials[index] = int(out.materials.size()) - 1;
-    }
-};
 
 // Copies a baked face into a page with its gutter: edge texels repeated outwards.
 void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Texture& color, Texture& normal, Texture& height) {
@@ -171,7 +147,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     saved.current_level = current_level;
     for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
 
-    LodModelWriter writer{model, out, {}, {}};
+    MaterialCopier writer{model, out};  // kept geometry brings its materials and textures
     int first_page_material = -1;
     if (textured) {
         first_page_material = 0;

@@ -23,5 +23,6 @@ Subcommand view_subcommand();
 Subcommand compare_subcommand();
 Subcommand sweep_subcommand();
 Subcommand simplify_subcommand();
+Subcommand city_subcommand();
 
 }  // namespace boxlod

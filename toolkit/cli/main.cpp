@@ -11,7 +11,7 @@ namespace {
 
 std::vector<boxlod::Subcommand> subcommands() { return {boxlod::info_subcommand(), boxlod::convert_subcommand(), boxlod::render_subcommand(),
                                                      boxlod::generate_subcommand(), boxlod::levels_subcommand(), boxlod::build_subcommand(), boxlod::view_subcommand(),
-                                                     boxlod::compare_subcommand(), boxlod::simplify_subcommand(), boxlod::sweep_subcommand()}; }
+                                                     boxlod::compare_subcommand(), boxlod::simplify_subcommand(), boxlod::sweep_subcommand(), boxlod::city_subcommand()}; }
 
 void print_overview() {
     std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"

@@ -1,0 +1,334 @@
+#include "experiments/fly_through.h"
+
+#include "experiments/contact_sheet.h"
+#include "experiments/flip.h"
+#include "experiments/image_metrics.h"
+#include "renderer/atomic_write.h"
+#include "renderer/parallel.h"
+#include "toolkit/boxes.h"
+#include "toolkit/face_budget.h"
+#include "toolkit/key_values.h"
+#include "toolkit/lod_builder.h"
+#include "toolkit/model_subtree.h"
+#include "toolkit/statistics.h"
+#include "toolkit/strategy_text.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+const Eigen::Vector3f sky{0.62f, 0.75f, 0.9f};  // linear background
+
+// One light for the whole city, high above it towards +X+Z, so that lighting does not
+// change as the camera moves (light_for_camera would follow it).
+Light city_light(const Bounds& bounds) {
+    Light light;
+    float radius = std::max(bounds.size().norm() / 2, 1.0f);
+    light.position = bounds.center() + Eigen::Vector3f(0.6f, 1.5f, 0.8f) * (2 * radius);
+    return light;
+}
+
+Image8 render_batches(const std::vector<Batch>& batches, const Camera& camera, const Light& light, int width,
+                      int height, int threads) {
+    RenderSettings settings;
+    settings.camera = camera;
+    settings.mode = RenderMode::normal;
+    settings.light = light;
+    settings.threads = threads;
+    Frame frame = make_frame(width, height, sky);
+    render(batches, settings, frame);
+    return frame_to_srgb8(frame);
+}
+
+// 1 - SSIM of a level against the original seen from +X+Y+Z at the level's sizing distance.
+MeasuredError measure_level_error(const Drawable& level, const Drawable& original, const SelectionObject& object,
+                                  double distance, const FlyThroughOptions& options, const Light& light) {
+    Camera camera = camera_at_position({1, 1, 1}, object.center, float(distance), options.fovy, object.radius);
+    Image8 a = render_batches(original.batches, camera, light, options.width, options.height, 1);
+    Image8 b = render_batches(level.batches, camera, light, options.width, options.height, 1);
+    return {1 - ssim(a, b, 1), distance, options.fovy, double(options.height)};
+}
+
+// Everything one building needs, built by one thread.
+struct BuiltBuilding {
+    BuildingLevels levels;
+    SelectionObject object;
+};
+
+BuiltBuilding build_building(const Model& city, const DecodedTextures& textures, TextureCache& cache, int node,
+                             const FlyThroughOptions& options, bool measure_error, const Light& light) {
+    BuiltBuilding built;
+    built.levels.name = city.nodes[node].name;
+    built.levels.node = node;
+    built.levels.original = make_drawable(city, textures, node);
+    Model model = extract_subtree(city, node);
+    MeshCounts original = mesh_counts(model);
+    std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
+    built.levels.triangles = {original.triangles};
+    auto boxes = node_boxes(model, BoxKind::expanded, 1);
+    LodParameters p;
+    p.level_mode = options.level_mode;
+    p.wanted_levels = options.wanted_levels;
+    p.box_kind = BoxKind::expanded;
+    p.fovy = options.fovy;
+    p.resolution = float(options.height);
+    p.min_texture_size = 64;
+    p.render_mode = RenderMode::normal;
+    // One session per sizing distance: a session bakes its boxes for one distance.
+    for (int c = 1, n = 1; c <= n; ++c) {
+        p.distance = level_sizing_distance(options, c);
+        std::unique_ptr<LodSession> session = start_lod(model, p, 1, &boxes);
+        n = session->levels.obtained_levels;
+        Lod lod = build_lod(*session, c, 1);
+        MeshCounts counts = mesh_counts(lod.model);
+        levels.push_back({counts.faces, session->sizing, std::nullopt});
+        built.levels.triangles.push_back(counts.triangles);
+        built.levels.lods.push_back(make_drawable_model(lod.model, &cache));
+    }
+    if (boxes[0]) {
+        built.object = selection_object(*boxes[0], std::move(levels));
+    } else {  // no geometry at all: a point that draws nothing
+        built.object.center = model_bounds(model).center();
+        built.object.levels = std::move(levels);
+    }
+    if (measure_error)
+        for (int c = 1; c <= coarsest_level(built.object); ++c)
+            built.object.levels[std::size_t(c)].error =
+                measure_level_error(built.levels.drawable(c), built.levels.original, built.object,
+                                    level_sizing_distance(options, c), options, light);
+    return built;
+}
+
+std::string join_fields(const std::vector<std::string>& fields) {
+    std::string line;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (i > 0) line += ',';
+        line += fields[i];
+    }
+    return line;
+}
+
+std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width + 239) / 240)); }
+
+}  // namespace
+
+float level_sizing_distance(const FlyThroughOptions& options, int level) {
+    return options.base_distance * std::ldexp(1.0f, level - 1);
+}
+
+CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options, bool measure_error,
+                             std::FILE* progress) {
+    auto start = Clock::now();
+    CityLevels out;
+    out.bounds = model_bounds(city);
+    // Every level of every building copies some of the city's few grammar textures: decoded once.
+    TextureCache cache;
+    out.textures = decode_textures(city, &cache);
+    std::vector<int> building_nodes;
+    for (int child : city.nodes.at(0).children) {
+        if (city.nodes[child].name != "Streets") {
+            building_nodes.push_back(child);
+            continue;
+        }
+        out.streets = make_drawable(city, out.textures, child);
+        MeshCounts streets = mesh_counts(extract_subtree(city, child));
+        out.street_faces = streets.faces;
+        out.street_triangles = streets.triangles;
+    }
+    std::vector<BuiltBuilding> built(building_nodes.size());
+    Light light = city_light(out.bounds);
+    parallel_for(built.size(), options.threads, [&](std::size_t b) {
+        auto building_start = Clock::now();
+        built[b] = build_building(city, out.textures, cache, building_nodes[b], options, measure_error, light);
+        if (progress) {
+            std::fprintf(progress, "boxlod city: %s: %d levels in %.2f s\n", built[b].levels.name.c_str(),
+                         coarsest_level(built[b].object), seconds_since(building_start));
+            std::fflush(progress);
+        }
+    });
+    for (BuiltBuilding& b : built) {
+        out.max_level = std::max(out.max_level, coarsest_level(b.object));
+        out.buildings.push_back(std::move(b.levels));
+        out.objects.push_back(std::move(b.object));
+    }
+    out.seconds = seconds_since(start);
+    return out;
+}
+
+Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degrees) {
+    Camera camera;
+    camera.position = pose.eye;
+    camera.target = pose.target;
+    camera.fovy_degrees = fovy_degrees;
+    Eigen::Vector3f look = (pose.target - pose.eye).normalized();
+    if (std::abs(look.y()) > 0.999f) camera.up = look.y() < 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
+    float radius = std::max(city.size().norm() / 2, 1.0f);
+    float distance = (pose.eye - city.center()).norm();
+    camera.near_plane = std::max(distance - radius, 0.2f);
+    camera.far_plane = std::max(distance + radius, camera.near_plane * 2);
+    return camera;
+}
+
+std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<CameraPose>& path,
+                                     const FlyThroughOptions& options, const FrameDone& frame_done) {
+    const std::size_t n = city.buildings.size();
+    std::vector<Selector> selectors(n, Selector{options.hysteresis, -1});
+    std::vector<FrameRecord> records;
+    Light light = city_light(city.bounds);
+    auto batches_for = [&](const std::vector<int>& levels) {
+        std::vector<Batch> batches = city.streets.batches;
+        for (std::size_t b = 0; b < n; ++b) {
+            const std::vector<Batch>& more = city.buildings[b].drawable(levels[b]).batches;
+            batches.insert(batches.end(), more.begin(), more.end());
+        }
+        return batches;
+    };
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        FrameRecord record;
+        auto start = Clock::now();
+        SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width, options.height};
+        record.levels.resize(n);
+        for (std::size_t b = 0; b < n; ++b)
+            record.levels[b] = select_level(selectors[b], options.strategy, city.objects[b], view);
+        if (options.face_budget) {
+            std::vector<double> importance;
+            for (const SelectionObject& object : city.objects)
+                importance.push_back(selection_importance(options.strategy, object, view));
+            fit_face_budget(city.objects, importance, *options.face_budget, record.levels, city.street_faces);
+        }
+        record.faces = faces_drawn(city.objects, record.levels, city.street_faces);
+        record.triangles = city.street_triangles;
+        for (std::size_t b = 0; b < n; ++b) {
+            record.triangles += city.buildings[b].triangles[std::size_t(record.levels[b])];
+            if (k > 0 && record.levels[b] != records.back().levels[b]) ++record.levels_changed;
+        }
+        record.select_seconds = seconds_since(start);
+
+        start = Clock::now();
+        Image8 image = render_batches(batches_for(record.levels), view.camera, light, options.width, options.height,
+                                      options.threads);
+        record.render_seconds = seconds_since(start);
+
+        if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
+            start = Clock::now();
+            Image8 full = render_batches(batches_for(std::vector<int>(n, 0)), view.camera, light, options.width,
+                                         options.height, options.threads);
+            record.error = ImageErrors{psnr(full, image), ssim(full, image, options.threads),
+                                       flip(full, image, options.pixels_per_degree, options.threads).mean};
+            record.error_seconds = seconds_since(start);
+        }
+        if (frame_done) frame_done(int(k), image, record);
+        records.push_back(std::move(record));
+    }
+    return records;
+}
+
+std::string frames_csv(const std::vector<FrameRecord>& frames, const CityLevels& city, const Strategy& strategy) {
+    std::vector<std::string> header = {"frame", "strategy", "faces", "triangles", "buildings"};
+    for (int c = 0; c <= city.max_level; ++c) header.push_back("level_" + std::to_string(c));
+    for (const char* column : {"levels_changed", "psnr", "ssim", "flip"}) header.push_back(column);
+    std::string text = join_fields(header) + "\n";
+    std::string name = format_strategy(strategy);
+    if (name.find(',') != std::string::npos) name = "\"" + name + "\"";
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const FrameRecord& f = frames[k];
+        std::vector<std::size_t> histogram(std::size_t(city.max_level) + 1, 0);
+        for (int level : f.levels) ++histogram[std::size_t(level)];
+        std::vector<std::string> fields = {std::to_string(k), name, std::to_string(f.faces), std::to_string(f.triangles),
+                                           std::to_string(f.levels.size())};
+        for (std::size_t count : histogram) fields.push_back(std::to_string(count));
+        fields.push_back(std::to_string(f.levels_changed));
+        for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
+            fields.push_back(f.error ? format_number(value) : "");
+        text += join_fields(fields) + "\n";
+    }
+    return text;
+}
+
+std::string timings_csv(const std::vector<FrameRecord>& frames) {
+    std::string text = "frame,select_seconds,render_seconds\n";
+    for (std::size_t k = 0; k < frames.size(); ++k)
+        text += join_fields({std::to_string(k), format_number(frames[k].select_seconds),
+                             format_number(frames[k].render_seconds)}) + "\n";
+    return text;
+}
+
+FlyThroughReport run_fly_through(const Model& city, const std::vector<CameraPose>& path,
+                                 const FlyThroughOptions& options, const std::string& output_folder,
+                                 std::FILE* progress) {
+    auto start = Clock::now();
+    FlyThroughReport report;
+    const auto* texel = std::get_if<TexelExact>(&options.strategy);
+    CityLevels levels = build_city_levels(city, options, texel && texel->error_budget, progress);
+    report.build_seconds = levels.seconds;
+
+    fs::path folder(output_folder), frames_folder = folder / "frames";
+    fs::create_directories(frames_folder);
+    // Up to 16 frames for the contact sheet, spread evenly over the path.
+    const std::size_t count = path.size(), shown = std::min<std::size_t>(16, count);
+    std::vector<std::size_t> sheet_frames;
+    for (std::size_t i = 0; i < shown; ++i) sheet_frames.push_back(i * count / shown);
+    std::vector<Image8> thumbnails;
+    std::vector<std::string> labels;
+    std::size_t next_progress = 0;
+    auto frame_done = [&](int k, const Image8& image, const FrameRecord& record) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.png", k);
+        write_png((frames_folder / name).string(), image);
+        if (std::find(sheet_frames.begin(), sheet_frames.end(), std::size_t(k)) != sheet_frames.end()) {
+            thumbnails.push_back(shrink(image, int(thumbnail_factor(image.width))));
+            labels.push_back("frame " + std::to_string(k) + ": " + std::to_string(record.faces) + " faces");
+        }
+        if (progress && std::size_t(k) + 1 >= next_progress) {
+            std::fprintf(progress, "boxlod city: frame %d/%zu: %zu faces\n", k + 1, count, record.faces);
+            std::fflush(progress);
+            next_progress = std::size_t(k) + 1 + std::max<std::size_t>(1, count / 10);
+        }
+    };
+    std::vector<FrameRecord> frames = fly_through(levels, path, options, frame_done);
+    write_png((folder / "contact_sheet.png").string(), contact_sheet(thumbnails, labels, 4));
+    write_text_atomically((folder / "frames.csv").string(), frames_csv(frames, levels, options.strategy));
+    write_text_atomically((folder / "timings.csv").string(), timings_csv(frames));
+
+    report.frames = frames.size();
+    report.buildings = levels.buildings.size();
+    report.level_totals.assign(std::size_t(levels.max_level) + 1, 0);
+    report.faces_min = frames.empty() ? 0 : std::numeric_limits<std::size_t>::max();
+    double faces = 0, psnr_sum = 0, ssim_sum = 0, flip_sum = 0;
+    std::size_t finite_psnr = 0;
+    for (const FrameRecord& f : frames) {
+        faces += double(f.faces);
+        report.faces_min = std::min(report.faces_min, f.faces);
+        report.faces_max = std::max(report.faces_max, f.faces);
+        for (int level : f.levels) ++report.level_totals[std::size_t(level)];
+        report.levels_changed += f.levels_changed;
+        report.select_seconds += f.select_seconds;
+        report.render_seconds += f.render_seconds;
+        report.error_seconds += f.error_seconds;
+        if (!f.error) continue;
+        ++report.sampled_frames;
+        if (std::isfinite(f.error->psnr)) psnr_sum += f.error->psnr, ++finite_psnr;
+        ssim_sum += f.error->ssim;
+        flip_sum += f.error->flip;
+    }
+    if (!frames.empty()) report.faces_mean = faces / double(frames.size());
+    if (report.sampled_frames) {
+        report.psnr_mean = finite_psnr ? psnr_sum / double(finite_psnr) : std::numeric_limits<double>::infinity();
+        report.ssim_mean = ssim_sum / double(report.sampled_frames);
+        report.flip_mean = flip_sum / double(report.sampled_frames);
+    }
+    report.total_seconds = seconds_since(start);
+    return report;
+}
+
+}  // namespace boxlod

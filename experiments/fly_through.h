@@ -1,0 +1,115 @@
+// `boxlod city`: a fly-through of a generated city with run-time LoD selection
+// (issue 7, item 2). Every building gets its own LoD, built once: level c in
+// 1..N baked for a sizing distance that doubles with c (base · 2^(c-1)), so that
+// texel-exact selection has levels to choose from. Per frame the strategy
+// (with hysteresis, optionally under a face budget) picks every building's
+// level; the frame is rendered with the streets, and on sampled frames
+// compared with full detail (every building at level 0).
+#pragma once
+#include "experiments/camera_path.h"
+#include "toolkit/drawable.h"
+#include "toolkit/level_modes.h"
+#include "toolkit/lod_selection.h"
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct FlyThroughOptions {
+    Strategy strategy = TexelExact{};
+    double hysteresis = 0.1;                 // Selector margin h
+    std::optional<std::size_t> face_budget;  // faces drawn per frame, streets included
+    int width = 320, height = 240;
+    float fovy = 45;
+    int error_every = 10;  // compare frames 0, K, 2K, ... with full detail; 0: never
+    double pixels_per_degree = 67;  // FLIP's observer
+    // The levels: level values per building, level c baked for base_distance · 2^(c-1)
+    // on a screen `height` pixels high with `fovy` (texel = pixel there).
+    LevelMode level_mode = LevelMode::top_down;
+    int wanted_levels = 8;  // N for the box modes
+    float base_distance = 20;
+    int threads = 0;  // 0 = all cores
+};
+
+// Level c (1..N) of a building is baked for this distance.
+float level_sizing_distance(const FlyThroughOptions& options, int level);
+
+struct BuildingLevels {
+    std::string name;
+    int node = 0;                        // its root in the city
+    std::vector<std::size_t> triangles;  // per level 0..N
+    Drawable original;                   // level 0: the city's own geometry and decoded textures
+    std::vector<std::unique_ptr<DrawableModel>> lods;  // levels 1..N at index c - 1
+    const Drawable& drawable(int level) const { return level == 0 ? original : lods.at(std::size_t(level - 1))->drawable; }
+};
+
+// Everything a fly-through draws, built once.
+struct CityLevels {
+    DecodedTextures textures;  // the city's, shared by the streets and every level 0
+    Drawable streets;
+    std::size_t street_faces = 0, street_triangles = 0;
+    std::vector<BuildingLevels> buildings;
+    std::vector<SelectionObject> objects;  // per building: its root box, levels' faces, sizings (errors if measured)
+    Bounds bounds;                         // the city's
+    int max_level = 0;                     // K, the largest N of any building
+    double seconds = 0;
+};
+
+// Each child of the city's root but "Streets" is a building. With `measure_error`,
+// each level's error (1 - SSIM against level 0, one render from +X+Y+Z at its sizing
+// distance) is recorded for texel-exact selection under a budget. Deterministic for any
+// thread count; progress (one line per building) to `progress` when not null.
+CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options, bool measure_error,
+                             std::FILE* progress = nullptr);
+
+// The camera of a pose for the city: up = +Y (-Z when looking straight down, +Z straight
+// up), near and far fitted to the city's bounds.
+Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degrees);
+
+struct ImageErrors {
+    double psnr = 0, ssim = 0, flip = 0;
+};
+
+struct FrameRecord {
+    std::vector<int> levels;  // per building
+    std::size_t faces = 0, triangles = 0;
+    std::size_t levels_changed = 0;    // buildings whose level differs from the previous frame's
+    std::optional<ImageErrors> error;  // on sampled frames
+    double select_seconds = 0, render_seconds = 0, error_seconds = 0;
+};
+
+// Renders every pose; `frame_done(index, image, record)` receives each frame as it is made.
+using FrameDone = std::function<void(int, const Image8&, const FrameRecord&)>;
+std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<CameraPose>& path,
+                                     const FlyThroughOptions& options, const FrameDone& frame_done = nullptr);
+
+// frames.csv: `frame,strategy,faces,triangles,buildings,level_0,...,level_K,levels_changed,
+// psnr,ssim,flip`, one row per frame; the strategy is format_strategy's text (quoted: it
+// has commas); the errors are empty on frames not sampled. Deterministic.
+std::string frames_csv(const std::vector<FrameRecord>& frames, const CityLevels& city, const Strategy& strategy);
+// timings.csv: `frame,select_seconds,render_seconds`.
+std::string timings_csv(const std::vector<FrameRecord>& frames);
+
+struct FlyThroughReport {
+    std::size_t frames = 0, buildings = 0, sampled_frames = 0;
+    double faces_mean = 0;
+    std::size_t faces_min = 0, faces_max = 0;
+    std::vector<std::size_t> level_totals;  // building-frames at each level 0..K
+    std::size_t levels_changed = 0;         // over all frames
+    double psnr_mean = 0, ssim_mean = 0, flip_mean = 0;  // over the sampled frames (psnr: finite ones; inf if none)
+    double build_seconds = 0, select_seconds = 0, render_seconds = 0, error_seconds = 0, total_seconds = 0;
+};
+
+// The whole command: levels, frames to OUTDIR/frames/frame_NNNN.png, OUTDIR/contact_sheet.png
+// (up to 16 frames spread over the path, labelled with frame and faces), frames.csv and
+// timings.csv. Every file is written atomically.
+FlyThroughReport run_fly_through(const Model& city, const std::vector<CameraPose>& path,
+                                 const FlyThroughOptions& options, const std::string& output_folder,
+                                 std::FILE* progress = nullptr);
+
+}  // namespace boxlod

@@ -1,0 +1,156 @@
+#include "experiments/fly_through.h"
+
+#include "data_gen/city.h"
+#include "test_support.h"
+#include "toolkit/face_budget.h"
+#include "toolkit/strategy_text.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+using namespace boxlod;
+
+namespace {
+
+Model small_city(int buildings) {
+    CityOptions options;
+    options.buildings = buildings;
+    options.seed = 3;
+    return generate_city(options);
+}
+
+FlyThroughOptions tiny_frames() {
+    FlyThroughOptions options;
+    options.width = 64, options.height = 48;
+    options.error_every = 2;
+    options.threads = 1;
+    return options;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// One building and its levels, built once for the tests that only select and draw.
+struct OneBuilding {
+    Model city = small_city(1);
+    FlyThroughOptions options = tiny_frames();
+    CityLevels levels = build_city_levels(city, options, true);
+};
+const OneBuilding& one_building() {
+    static const OneBuilding built;
+    return built;
+}
+
+// From 3 km straight towards the building's centre, ending 5 m outside its bounding sphere.
+std::vector<CameraPose> dolly(const SelectionObject& object, int frames) {
+    Eigen::Vector3f direction = Eigen::Vector3f(1, 0.3f, 0.6f).normalized();
+    return line_path(object.center + direction * 3000, object.center + direction * (object.radius + 5), frames);
+}
+
+}  // namespace
+
+TEST(FlyThrough, LevelsAreBakedForDoublingDistances) {
+    const OneBuilding& b = one_building();
+    ASSERT_EQ(b.levels.buildings.size(), 1u);
+    const SelectionObject& object = b.levels.objects[0];
+    int n = coarsest_level(object);
+    ASSERT_GE(n, 3);
+    EXPECT_EQ(b.levels.max_level, n);
+    EXPECT_EQ(b.levels.buildings[0].lods.size(), std::size_t(n));
+    EXPECT_FALSE(object.levels[0].sizing);
+    for (int c = 1; c <= n; ++c) {
+        const SelectionLevel& level = object.levels[std::size_t(c)];
+        ASSERT_TRUE(level.sizing);
+        EXPECT_EQ(level.sizing->distance, 20 * std::ldexp(1.0f, c - 1));
+        EXPECT_EQ(level.sizing->resolution, 48);
+        ASSERT_TRUE(level.error);  // measured: asked for
+        EXPECT_GE(level.error->error, 0);
+        EXPECT_EQ(level.error->distance, level.sizing->distance);
+        EXPECT_GT(level.faces, 0u);
+    }
+    EXPECT_EQ(object.levels[std::size_t(n)].faces, 6u);  // the root's box
+    EXPECT_GT(object.levels[0].faces, object.levels[std::size_t(n - 1)].faces);
+    EXPECT_GT(b.levels.street_faces, 0u);
+}
+
+TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
+    const OneBuilding& b = one_building();
+    std::vector<CameraPose> path = dolly(b.levels.objects[0], 40);
+    for (const char* text : {"texel", "distance:40,80,160,320,640", "pixels:20000,5000,1000,200", "ratio:0.2,0.05,0.01",
+                             "diagonal:4,200,square-root"}) {
+        for (double hysteresis : {0.0, 0.3}) {
+            FlyThroughOptions options = b.options;
+            options.strategy = parse_strategy(text, "test");
+            options.hysteresis = hysteresis;
+            options.error_every = 0;
+            std::vector<FrameRecord> frames = fly_through(b.levels, path, options);
+            ASSERT_EQ(frames.size(), path.size());
+            for (std::size_t k = 1; k < frames.size(); ++k)
+                EXPECT_LE(frames[k].levels[0], frames[k - 1].levels[0]) << text << " frame " << k;
+            EXPECT_GT(frames.front().levels[0], frames.back().levels[0]) << text << ": the dolly changes nothing";
+        }
+    }
+}
+
+TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
+    Model city = small_city(4);
+    FlyThroughOptions options = tiny_frames();
+    options.strategy = DistanceBands{{1e6}};  // the strategy alone keeps every building at level 0
+    CityLevels levels = build_city_levels(city, options, false);
+    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 3);
+    std::vector<int> coarsest;
+    for (const SelectionObject& object : levels.objects) coarsest.push_back(coarsest_level(object));
+    std::size_t least = faces_drawn(levels.objects, coarsest, levels.street_faces);
+    std::size_t most = faces_drawn(levels.objects, std::vector<int>(levels.objects.size(), 0), levels.street_faces);
+    for (std::size_t budget : {least, (least + most) / 2, most - 1}) {
+        options.face_budget = budget;
+        for (const FrameRecord& frame : fly_through(levels, path, options)) {
+            EXPECT_LE(frame.faces, budget);
+            EXPECT_EQ(frame.faces, faces_drawn(levels.objects, frame.levels, levels.street_faces));
+        }
+    }
+    options.face_budget.reset();
+    EXPECT_EQ(fly_through(levels, path, options).front().faces, most);
+}
+
+TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
+    Model city = small_city(3);
+    FlyThroughOptions options = tiny_frames();
+    options.strategy = parse_strategy("distance:100,200,400", "test");
+    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 5);
+    auto one = test::scratch_folder("fly_through_1"), two = test::scratch_folder("fly_through_2");
+    options.threads = 1;
+    FlyThroughReport report = run_fly_through(city, path, options, one.string());
+    options.threads = 2;
+    run_fly_through(city, path, options, two.string());
+
+    std::string csv = test::read_text(one / "frames.csv");
+    EXPECT_EQ(csv, test::read_text(two / "frames.csv"));
+    std::vector<std::string> rows = lines_of(csv);
+    ASSERT_EQ(rows.size(), 6u);
+    std::string header = "frame,strategy,faces,triangles,buildings";
+    for (std::size_t c = 0; c < report.level_totals.size(); ++c) header += ",level_" + std::to_string(c);
+    EXPECT_EQ(rows[0], header + ",levels_changed,psnr,ssim,flip");
+    EXPECT_EQ(rows[1].rfind("0,\"distance:100,200,400\",", 0), 0u);
+    EXPECT_EQ(rows[2].substr(rows[2].size() - 3), ",,,");  // frame 1 is not sampled
+    EXPECT_NE(rows[3].substr(rows[3].size() - 3), ",,,");  // frame 2 is
+    EXPECT_EQ(report.sampled_frames, 3u);
+    EXPECT_EQ(report.frames, 5u);
+    EXPECT_EQ(report.buildings, 3u);
+    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,select_seconds,render_seconds");
+    for (int k = 0; k < 5; ++k) {
+        std::string name = "frames/frame_000" + std::to_string(k) + ".png";
+        ASSERT_TRUE(std::filesystem::exists(one / name)) << name;
+        EXPECT_EQ(test::read_text(one / name), test::read_text(two / name)) << name;
+    }
+    EXPECT_EQ(test::read_text(one / "contact_sheet.png"), test::read_text(two / "contact_sheet.png"));
+    Image8 sheet = read_image((one / "contact_sheet.png").string());
+    EXPECT_EQ(sheet.width, 4 * 64 + 5 * 2);
+    EXPECT_EQ(sheet.height, 2 * 48 + 3 * 2);
+}

@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# The experiment workflow end to end on its smoke profile, in a temporary
+# folder: sweeps and city runs (boxlod), the notebooks executed headless, the
+# paper compiled. Checks the outputs: every file the paper \inputs or
+# \includegraphics exists and is not empty; the level-mode table has one row
+# per level mode of the sweep's CSV, the runs table one per job; no number
+# macro is nan; the PDF has more than one page; the executed notebooks hold
+# no error; a second run of snakemake has nothing to do; a notebook run again
+# writes byte-identical figures and tables.
+# Usage: workflow_end_to_end.sh BOXLOD REPO
+set -u
+boxlod=$(realpath "$1")
+repo=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+out=$work/out
+generated=$out/paper/generated
+python=/usr/bin/python3   # Debian's: pandas, matplotlib, nbconvert (a pyenv python3 on PATH has none)
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+ok() { echo "ok   $*"; }
+
+for tool in /usr/bin/snakemake latexmk; do
+  command -v "$tool" >/dev/null || { echo "FAIL $tool missing (scripts/install-deps.sh paper)"; exit 1; }
+done
+
+snake() {  # snake ARGS...: the workflow, smoke profile, run from the temporary folder
+  (cd "$work" && /usr/bin/snakemake -s "$repo/experiments/Snakefile" -j2 \
+     --config profile=smoke out="$out" boxlod="$boxlod" python="$python" "$@")
+}
+
+start=$(date +%s)
+if ! snake > "$work/run1.txt" 2>&1; then
+  tail -n 40 "$work/run1.txt"
+  for log in "$out"/logs/*.log; do [ -s "$log" ] && { echo "--- $log"; tail -n 15 "$log"; }; done
+  echo "FAIL the workflow did not finish"; exit 1
+fi
+ok "workflow finished in $(( $(date +%s) - start )) s"
+
+# Every file the paper reads exists and is not empty (figures as PDF and PNG).
+includes=$(sed -n 's/.*\\\(input\|includegraphics\)\(\[[^]]*\]\)\?{\([^}]*\)}.*/\1 \3/p' "$repo/paper/paper.tex")
+[ -n "$includes" ] || fail "no \\input or \\includegraphics found in paper.tex"
+while read -r kind name; do
+  if [ "$kind" = input ]; then files="$generated/$name.tex"; else files="$generated/$name.pdf $generated/$name.png"; fi
+  for file in $files; do
+    if [ -s "$file" ]; then ok "generated $(basename "$file") ($(stat -c %s "$file") bytes)"; else fail "missing or empty: $file"; fi
+  done
+done <<< "$includes"
+
+# Tables against the CSVs they come from; numbers are numbers.
+"$python" - "$out" <<'EOF' || failures=$((failures + 1))
+import csv, glob, os, re, sys
+import yaml
+out = sys.argv[1]
+generated = os.path.join(out, "paper", "generated")
+bad = 0
+def body_rows(name):
+    text = open(os.path.join(generated, name + ".tex")).read()
+    body = text.split("\\midrule", 1)[1].split("\\bottomrule", 1)[0]
+    return [line.split(" & ") for line in body.strip().splitlines()]
+def check(condition, message):
+    global bad
+    print(("ok   " if condition else "FAIL ") + message)
+    bad += not condition
+modes = []
+for row in csv.DictReader(open(os.path.join(out, "sweeps", "manual", "results.csv"))):
+    if row["level_mode"] not in modes:
+        modes.append(row["level_mode"])
+rows = body_rows("table_level_modes")
+names = [r[0].replace("\\_", "_") for r in rows]
+check(sorted(names) == sorted(modes) and len(rows) == len(modes),
+      f"table_level_modes: {len(rows)} rows for the {len(modes)} level modes of the CSV ({', '.join(modes)})")
+check("simplification" in modes and "single-box" in modes, "the manual sweep has both baselines")
+profile = yaml.safe_load(open(os.path.join(out, "profile.yaml")))
+jobs = len(profile["sweeps"]) + len(profile["city"]["strategies"])
+check(len(body_rows("table_runs")) == jobs, f"table_runs: one row per job ({jobs})")
+check(len(body_rows("table_strategies")) == len(profile["city"]["strategies"]),
+      "table_strategies: one row per strategy")
+for path in sorted(glob.glob(os.path.join(generated, "numbers_*.tex"))):
+    values = re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", open(path).read())
+    broken = [name for name, value in values if value.strip() == "" or "nan" in value.lower()]
+    check(values and not broken, f"{os.path.basename(path)}: {len(values)} macros" + (f", broken: {broken}" if broken else ""))
+for path in sorted(glob.glob(os.path.join(out, "notebooks", "*.ipynb"))):
+    import json
+    cells = json.load(open(path))["cells"]
+    errors = [o for c in cells for o in c.get("outputs", []) if o.get("output_type") == "error"]
+    executed = all(c.get("execution_count") for c in cells if c["cell_type"] == "code")
+    check(executed and not errors, f"{os.path.basename(path)} executed without errors")
+sys.exit(1 if bad else 0)
+EOF
+
+# The PDF: count its pages from the page tree (object streams decompressed).
+pages=$("$python" - "$out/paper/paper.pdf" <<'EOF'
+import re, sys, zlib
+data = open(sys.argv[1], "rb").read()
+chunks = [data]
+for match in re.finditer(rb"stream\r?\n(.*?)endstream", data, re.S):
+    try:
+        chunks.append(zlib.decompress(match.group(1)))
+    except zlib.error:
+        pass
+counts = [int(m.group(1)) for chunk in chunks
+          for m in re.finditer(rb"/Type\s*/Pages\b[^>]*?/Count\s+(\d+)", chunk)]
+counts += [int(m.group(1)) for chunk in chunks
+           for m in re.finditer(rb"/Count\s+(\d+)[^>]*?/Type\s*/Pages\b", chunk)]
+print(max(counts) if counts and data.startswith(b"%PDF") else 0)
+EOF
+)
+logged=$(sed -n 's/^Output written on paper.pdf (\([0-9]*\) pages.*/\1/p' "$out/paper/paper.log")
+if [ "${pages:-0}" -gt 1 ] && [ "$pages" = "$logged" ]; then ok "paper.pdf: $pages pages"
+else fail "paper.pdf: $pages pages in the file, LaTeX says '$logged'"; fi
+if grep -q 'undefined' "$out/paper/paper.log"; then fail "undefined references or citations in paper.log"; fi
+
+# A second run has nothing to do.
+snake > "$work/run2.txt" 2>&1 || fail "second snakemake run failed"
+if grep -q 'Nothing to be done' "$work/run2.txt"; then ok "second run: nothing to be done"
+else fail "second run did work:"; grep -E '^(rule|localrule) |reason' "$work/run2.txt" | head -n 10; fi
+
+# A notebook run again writes the same bytes.
+before=$(cd "$generated" && md5sum quality_manual.pdf quality_manual.png table_level_modes.tex numbers_quality.tex)
+snake --forcerun notebook_01_quality > "$work/run3.txt" 2>&1 || fail "forced notebook run failed"
+after=$(cd "$generated" && md5sum quality_manual.pdf quality_manual.png table_level_modes.tex numbers_quality.tex)
+if [ "$before" = "$after" ]; then ok "01_quality run again: identical figures and tables"
+else fail "01_quality run again changed its outputs"; diff <(echo "$before") <(echo "$after"); fi
+
+echo "$(( $(date +%s) - start )) s in all"
+[ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
+echo "all checks passed"

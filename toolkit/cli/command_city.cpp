@@ -1,0 +1,133 @@
+#include "data_gen/city.h"
+#include "experiments/camera_path.h"
+#include "experiments/fly_through.h"
+#include "toolkit/cli/commands.h"
+#include "toolkit/key_values.h"
+#include "toolkit/strategy_text.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+
+const std::string prefix = "boxlod city: ";
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw InputError(prefix + what);
+}
+
+int run_city(const Arguments& arguments) {
+    // Every input is checked before anything is generated or written.
+    require(arguments.has("output"), "-o/--output OUTDIR is required");
+    FlyThroughOptions options;
+    options.strategy = parse_strategy(arguments.text("strategy", "texel"), "--strategy");
+    CityOptions city;
+    city.buildings = arguments.integer("buildings", 9);
+    require(city.buildings >= 1 && city.buildings <= 10000, "--buildings takes 1 to 10000 buildings");
+    int seed = arguments.integer("seed", 0);
+    require(seed >= 0, "--seed must be 0 or more");
+    city.seed = std::uint64_t(seed);
+    int frames = arguments.integer("frames", 60);
+    require(frames >= 1 && frames <= 100000, "--frames takes 1 to 100000 frames");
+    options.width = arguments.integer("width", options.width);
+    options.height = arguments.integer("height", options.height);
+    require(options.width >= 16 && options.height >= 16 && options.width <= 8192 && options.height <= 8192,
+            "--width and --height take 16 to 8192 pixels");
+    options.fovy = float(arguments.number("fovy", options.fovy));
+    require(options.fovy > 0 && options.fovy < 180, "--fovy must be between 0 and 180 degrees");
+    options.hysteresis = arguments.number("hysteresis", options.hysteresis);
+    require(options.hysteresis >= 0, "--hysteresis must be 0 or more");
+    if (arguments.has("budget")) {
+        double budget = arguments.number("budget", 0);
+        require(budget >= 1 && budget <= 1e15 && budget == std::floor(budget), "--budget takes a positive number of faces");
+        options.face_budget = std::size_t(budget);
+    }
+    options.error_every = arguments.integer("error-every", options.error_every);
+    require(options.error_every >= 0, "--error-every must be 0 (never) or more");
+    options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
+    require(options.pixels_per_degree > 0, "--ppd must be positive");
+    if (arguments.has("level-mode"))
+        require(parse_level_mode(arguments.text("level-mode"), options.level_mode),
+                "--level-mode: unknown level mode '" + arguments.text("level-mode") + "'");
+    options.wanted_levels = arguments.integer("levels", options.wanted_levels);
+    require(options.wanted_levels >= 1 && options.wanted_levels <= 64, "--levels takes 1 to 64 levels");
+    options.base_distance = float(arguments.number("base-distance", options.base_distance));
+    require(options.base_distance > 0 && std::isfinite(options.base_distance), "--base-distance must be positive");
+    options.threads = arguments.integer("threads", 0);
+    require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
+    std::string path_name = arguments.text("path", "orbit");
+    bool built_in = path_name == "orbit" || path_name == "street";
+    std::vector<Keyframe> keys;
+    if (!built_in) keys = load_keyframes(path_name);
+
+    Model model = generate_city(city);
+    std::vector<CameraPose> path =
+        built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
+    const std::string& output = arguments.text("output");
+    FlyThroughReport r = run_fly_through(model, path, options, output, stderr);
+
+    namespace fs = std::filesystem;
+    KeyValues report{text_entry("output", output),
+                     text_entry("frames_csv", (fs::path(output) / "frames.csv").string()),
+                     text_entry("strategy", format_strategy(options.strategy)),
+                     text_entry("path", path_name),
+                     number_entry("frames", double(r.frames)),
+                     number_entry("buildings", double(r.buildings)),
+                     number_entry("max_level", double(r.level_totals.size() - 1)),
+                     number_entry("faces_mean", r.faces_mean),
+                     number_entry("faces_min", double(r.faces_min)),
+                     number_entry("faces_max", double(r.faces_max))};
+    for (std::size_t c = 0; c < r.level_totals.size(); ++c)
+        report.push_back(number_entry("level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
+    report.push_back(number_entry("levels_changed", double(r.levels_changed)));
+    report.push_back(number_entry("sampled_frames", double(r.sampled_frames)));
+    if (r.sampled_frames) {
+        report.push_back(number_entry("psnr_mean", r.psnr_mean));
+        report.push_back(number_entry("ssim_mean", r.ssim_mean));
+        report.push_back(number_entry("flip_mean", r.flip_mean));
+    }
+    report.push_back(number_entry("build_seconds", r.build_seconds));
+    report.push_back(number_entry("select_seconds", r.select_seconds));
+    report.push_back(number_entry("render_seconds", r.render_seconds));
+    report.push_back(number_entry("render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
+    report.push_back(number_entry("error_seconds", r.error_seconds));
+    report.push_back(number_entry("seconds", r.total_seconds));
+    std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand city_subcommand() {
+    return {{"city", "",
+             "Fly through a generated city with run-time LoD selection. Every building gets its own LoD, built once "
+             "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
+             "(with hysteresis, optionally under a face budget). Writes OUTDIR/frames/frame_NNNN.png, "
+             "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
+             "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv.",
+             {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", 'o'},
+              {"buildings", "N", "buildings in the city (default 9)"},
+              {"seed", "S", "the city's seed (default 0)"},
+              {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
+                                "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
+              {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
+              {"frames", "F", "frames along the path (default 60)"},
+              {"width", "W", "frame width in pixels (default 320)"},
+              {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)"},
+              {"fovy", "DEGREES", "vertical field of view (default 45)"},
+              {"hysteresis", "H", "relative margin before a level changes back (default 0.1)"},
+              {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first"},
+              {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)"},
+              {"ppd", "P", "FLIP's pixels per degree (default 67)"},
+              {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
+              {"levels", "N", "wanted levels for the box modes (default 8)"},
+              {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)"},
+              {"threads", "N", "threads to use (default 0 = all cores)"},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             0, 0},
+            run_city};
+}
+
+}  // namespace boxlod

@@ -1,0 +1,48 @@
+#include "toolkit/model_subtree.h"
+
+namespace boxlod {
+
+int MaterialCopier::texture(int index) {
+    if (index < 0) return -1;
+    auto [it, added] = textures.emplace(index, int(out.textures.size()));
+    if (added) out.textures.push_back(source.textures[index]);
+    return it->second;
+}
+
+int MaterialCopier::material(int index) {
+    if (index < 0) return -1;
+    auto it = materials.find(index);
+    if (it != materials.end()) return it->second;
+    Material m = source.materials[index];
+    m.base_color_texture = texture(m.base_color_texture);
+    m.normal_texture = texture(m.normal_texture);
+    m.height_texture = texture(m.height_texture);
+    out.materials.push_back(m);
+    return materials[index] = int(out.materials.size()) - 1;
+}
+
+Model extract_subtree(const Model& model, int root) {
+    Model out;
+    out.source = model.source;
+    MaterialCopier copier{model, out};
+    // Depth first, children in order: a parent always comes before its children.
+    std::vector<std::pair<int, int>> stack = {{root, -1}};  // (source node, new parent)
+    while (!stack.empty()) {
+        auto [n, parent] = stack.back();
+        stack.pop_back();
+        const Node& node = model.nodes[n];
+        int index = add_node(out, parent, node.name);
+        Node& copy = out.nodes[index];
+        copy.rule = node.rule;
+        copy.scope = node.scope;
+        copy.instance_of = node.instance_of;
+        for (const Primitive& primitive : node.primitives) {
+            copy.primitives.push_back(primitive);
+            copy.primitives.back().material = copier.material(primitive.material);
+        }
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, index});
+    }
+    return out;
+}
+
+}  // namespace boxlod
