@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <stdexcept>
 
 namespace boxlod {
 namespace {
@@ -184,6 +185,7 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     const std::size_t n = city.buildings.size();
     std::vector<Selector> selectors(n, Selector{options.hysteresis, -1});
     std::vector<FrameRecord> records;
+    const Strategy strategy = scale_detail(options.strategy, options.detail);
     Light light = city_light(city.bounds);
     auto batches_for = [&](const std::vector<int>& levels) {
         std::vector<Batch> batches = city.streets.batches;
@@ -199,11 +201,11 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
         SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width, options.height};
         record.levels.resize(n);
         for (std::size_t b = 0; b < n; ++b)
-            record.levels[b] = select_level(selectors[b], options.strategy, city.objects[b], view);
+            record.levels[b] = select_level(selectors[b], strategy, city.objects[b], view);
         if (options.face_budget) {
             std::vector<double> importance;
             for (const SelectionObject& object : city.objects)
-                importance.push_back(selection_importance(options.strategy, object, view));
+                importance.push_back(selection_importance(strategy, object, view));
             fit_face_budget(city.objects, importance, *options.face_budget, record.levels, city.street_faces);
         }
         record.faces = faces_drawn(city.objects, record.levels, city.street_faces);
@@ -233,73 +235,44 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     return records;
 }
 
-std::string frames_csv(const std::vector<FrameRecord>& frames, const CityLevels& city, const Strategy& strategy) {
-    std::vector<std::string> header = {"frame", "strategy", "faces", "triangles", "buildings"};
+std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy) {
+    std::vector<std::string> header = {"frame", "strategy", "detail", "faces", "triangles", "buildings"};
     for (int c = 0; c <= city.max_level; ++c) header.push_back("level_" + std::to_string(c));
     for (const char* column : {"levels_changed", "psnr", "ssim", "flip"}) header.push_back(column);
     std::string text = join_fields(header) + "\n";
     std::string name = format_strategy(strategy);
     if (name.find(',') != std::string::npos) name = "\"" + name + "\"";
-    for (std::size_t k = 0; k < frames.size(); ++k) {
-        const FrameRecord& f = frames[k];
-        std::vector<std::size_t> histogram(std::size_t(city.max_level) + 1, 0);
-        for (int level : f.levels) ++histogram[std::size_t(level)];
-        std::vector<std::string> fields = {std::to_string(k), name, std::to_string(f.faces), std::to_string(f.triangles),
-                                           std::to_string(f.levels.size())};
-        for (std::size_t count : histogram) fields.push_back(std::to_string(count));
-        fields.push_back(std::to_string(f.levels_changed));
-        for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
-            fields.push_back(f.error ? format_number(value) : "");
-        text += join_fields(fields) + "\n";
-    }
+    for (const FlyThroughRun& run : runs)
+        for (std::size_t k = 0; k < run.frames.size(); ++k) {
+            const FrameRecord& f = run.frames[k];
+            std::vector<std::size_t> histogram(std::size_t(city.max_level) + 1, 0);
+            for (int level : f.levels) ++histogram[std::size_t(level)];
+            std::vector<std::string> fields = {std::to_string(k), name, format_number(run.detail),
+                                               std::to_string(f.faces), std::to_string(f.triangles),
+                                               std::to_string(f.levels.size())};
+            for (std::size_t count : histogram) fields.push_back(std::to_string(count));
+            fields.push_back(std::to_string(f.levels_changed));
+            for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
+                fields.push_back(f.error ? format_number(value) : "");
+            text += join_fields(fields) + "\n";
+        }
     return text;
 }
 
-std::string timings_csv(const std::vector<FrameRecord>& frames) {
-    std::string text = "frame,select_seconds,render_seconds\n";
-    for (std::size_t k = 0; k < frames.size(); ++k)
-        text += join_fields({std::to_string(k), format_number(frames[k].select_seconds),
-                             format_number(frames[k].render_seconds)}) + "\n";
+std::string timings_csv(const std::vector<FlyThroughRun>& runs) {
+    std::string text = "frame,detail,select_seconds,render_seconds\n";
+    for (const FlyThroughRun& run : runs)
+        for (std::size_t k = 0; k < run.frames.size(); ++k)
+            text += join_fields({std::to_string(k), format_number(run.detail), format_number(run.frames[k].select_seconds),
+                                 format_number(run.frames[k].render_seconds)}) + "\n";
     return text;
 }
 
-FlyThroughReport run_fly_through(const Model& city, const std::vector<CameraPose>& path,
-                                 const FlyThroughOptions& options, const std::string& output_folder,
-                                 std::FILE* progress) {
-    auto start = Clock::now();
+namespace {
+
+FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLevels& levels, double detail) {
     FlyThroughReport report;
-    const auto* texel = std::get_if<TexelExact>(&options.strategy);
-    CityLevels levels = build_city_levels(city, options, texel && texel->error_budget, progress);
-    report.build_seconds = levels.seconds;
-
-    fs::path folder(output_folder), frames_folder = folder / "frames";
-    fs::create_directories(frames_folder);
-    // Up to 16 frames for the contact sheet, spread evenly over the path.
-    const std::size_t count = path.size(), shown = std::min<std::size_t>(16, count);
-    std::vector<std::size_t> sheet_frames;
-    for (std::size_t i = 0; i < shown; ++i) sheet_frames.push_back(i * count / shown);
-    std::vector<Image8> thumbnails;
-    std::vector<std::string> labels;
-    std::size_t next_progress = 0;
-    auto frame_done = [&](int k, const Image8& image, const FrameRecord& record) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d.png", k);
-        write_png((frames_folder / name).string(), image);
-        if (std::find(sheet_frames.begin(), sheet_frames.end(), std::size_t(k)) != sheet_frames.end()) {
-            thumbnails.push_back(shrink(image, int(thumbnail_factor(image.width))));
-            labels.push_back("frame " + std::to_string(k) + ": " + std::to_string(record.faces) + " faces");
-        }
-        if (progress && std::size_t(k) + 1 >= next_progress) {
-            std::fprintf(progress, "boxlod city: frame %d/%zu: %zu faces\n", k + 1, count, record.faces);
-            std::fflush(progress);
-            next_progress = std::size_t(k) + 1 + std::max<std::size_t>(1, count / 10);
-        }
-    };
-    std::vector<FrameRecord> frames = fly_through(levels, path, options, frame_done);
-    write_png((folder / "contact_sheet.png").string(), contact_sheet(thumbnails, labels, 4));
-    write_text_atomically((folder / "frames.csv").string(), frames_csv(frames, levels, options.strategy));
-    write_text_atomically((folder / "timings.csv").string(), timings_csv(frames));
-
+    report.detail = detail;
     report.frames = frames.size();
     report.buildings = levels.buildings.size();
     report.level_totals.assign(std::size_t(levels.max_level) + 1, 0);
@@ -327,8 +300,60 @@ FlyThroughReport run_fly_through(const Model& city, const std::vector<CameraPose
         report.ssim_mean = ssim_sum / double(report.sampled_frames);
         report.flip_mean = flip_sum / double(report.sampled_frames);
     }
-    report.total_seconds = seconds_since(start);
     return report;
+}
+
+}  // namespace
+
+std::vector<FlyThroughReport> run_fly_through(const Model& city, const std::vector<CameraPose>& path,
+                                              const FlyThroughOptions& options, const std::vector<double>& details,
+                                              const std::string& output_folder, std::FILE* progress) {
+    if (details.empty()) throw std::invalid_argument("run_fly_through: no detail to run");
+    const auto* texel = std::get_if<TexelExact>(&options.strategy);
+    CityLevels levels = build_city_levels(city, options, texel && texel->error_budget, progress);
+
+    fs::path folder(output_folder);
+    std::vector<FlyThroughRun> runs;
+    std::vector<FlyThroughReport> reports;
+    for (double detail : details) {
+        auto start = Clock::now();
+        fs::path run_folder = details.size() == 1 ? folder : folder / ("detail_" + format_number(detail));
+        fs::path frames_folder = run_folder / "frames";
+        fs::create_directories(frames_folder);
+        // Up to 16 frames for the contact sheet, spread evenly over the path.
+        const std::size_t count = path.size(), shown = std::min<std::size_t>(16, count);
+        std::vector<std::size_t> sheet_frames;
+        for (std::size_t i = 0; i < shown; ++i) sheet_frames.push_back(i * count / shown);
+        std::vector<Image8> thumbnails;
+        std::vector<std::string> labels;
+        std::size_t next_progress = 0;
+        auto frame_done = [&](int k, const Image8& image, const FrameRecord& record) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%04d.png", k);
+            write_png((frames_folder / name).string(), image);
+            if (std::find(sheet_frames.begin(), sheet_frames.end(), std::size_t(k)) != sheet_frames.end()) {
+                thumbnails.push_back(shrink(image, int(thumbnail_factor(image.width))));
+                labels.push_back("frame " + std::to_string(k) + ": " + std::to_string(record.faces) + " faces");
+            }
+            if (progress && std::size_t(k) + 1 >= next_progress) {
+                std::fprintf(progress, "boxlod city: detail %s: frame %d/%zu: %zu faces\n", format_number(detail).c_str(),
+                             k + 1, count, record.faces);
+                std::fflush(progress);
+                next_progress = std::size_t(k) + 1 + std::max<std::size_t>(1, count / 10);
+            }
+        };
+        FlyThroughOptions run_options = options;
+        run_options.detail = detail;
+        runs.push_back({detail, fly_through(levels, path, run_options, frame_done)});
+        write_png((run_folder / "contact_sheet.png").string(), contact_sheet(thumbnails, labels, 4));
+        FlyThroughReport report = summarize(runs.back().frames, levels, detail);
+        report.build_seconds = levels.seconds;
+        report.total_seconds = seconds_since(start);
+        reports.push_back(std::move(report));
+    }
+    write_text_atomically((folder / "frames.csv").string(), frames_csv(runs, levels, options.strategy));
+    write_text_atomically((folder / "timings.csv").string(), timings_csv(runs));
+    return reports;
 }
 
 }  // namespace boxlod

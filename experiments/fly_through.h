@@ -22,6 +22,7 @@ namespace boxlod {
 
 struct FlyThroughOptions {
     Strategy strategy = TexelExact{};
+    double detail = 1;  // the strategy's level-of-detail bias (scale_detail)
     double hysteresis = 0.1;                 // Selector margin h
     std::optional<std::size_t> face_budget;  // faces drawn per frame, streets included
     int width = 320, height = 240;
@@ -88,14 +89,22 @@ using FrameDone = std::function<void(int, const Image8&, const FrameRecord&)>;
 std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<CameraPose>& path,
                                      const FlyThroughOptions& options, const FrameDone& frame_done = nullptr);
 
-// frames.csv: `frame,strategy,faces,triangles,buildings,level_0,...,level_K,levels_changed,
-// psnr,ssim,flip`, one row per frame; the strategy is format_strategy's text (quoted: it
-// has commas); the errors are empty on frames not sampled. Deterministic.
-std::string frames_csv(const std::vector<FrameRecord>& frames, const CityLevels& city, const Strategy& strategy);
-// timings.csv: `frame,select_seconds,render_seconds`.
-std::string timings_csv(const std::vector<FrameRecord>& frames);
+// One pass over the path at one detail.
+struct FlyThroughRun {
+    double detail = 1;
+    std::vector<FrameRecord> frames;
+};
+
+// frames.csv: `frame,strategy,detail,faces,triangles,buildings,level_0,...,level_K,
+// levels_changed,psnr,ssim,flip`, one row per frame of each run, runs in order; the
+// strategy is format_strategy's text (quoted: it has commas); the errors are empty on
+// frames not sampled. Deterministic.
+std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy);
+// timings.csv: `frame,detail,select_seconds,render_seconds`.
+std::string timings_csv(const std::vector<FlyThroughRun>& runs);
 
 struct FlyThroughReport {
+    double detail = 1;
     std::size_t frames = 0, buildings = 0, sampled_frames = 0;
     double faces_mean = 0;
     std::size_t faces_min = 0, faces_max = 0;
@@ -105,11 +114,14 @@ struct FlyThroughReport {
     double build_seconds = 0, select_seconds = 0, render_seconds = 0, error_seconds = 0, total_seconds = 0;
 };
 
-// The whole command: levels, frames to OUTDIR/frames/frame_NNNN.png, OUTDIR/contact_sheet.png
-// (up to 16 frames spread over the path, labelled with frame and faces), frames.csv and
-// timings.csv. Every file is written atomically.
-FlyThroughReport run_fly_through(const Model& city, const std::vector<CameraPose>& path,
-                                 const FlyThroughOptions& options, const std::string& output_folder,
-                                 std::FILE* progress = nullptr);
+// The whole command: levels built once, then one pass over the path per detail
+// (options.detail is ignored). Frames go to OUTDIR/frames/frame_NNNN.png and up to 16
+// of them, spread over the path and labelled with frame and faces, to
+// OUTDIR/contact_sheet.png; with several details, to OUTDIR/detail_<K>/frames/ and
+// OUTDIR/detail_<K>/contact_sheet.png. frames.csv and timings.csv hold every run.
+// Every file is written atomically. One report per detail.
+std::vector<FlyThroughReport> run_fly_through(const Model& city, const std::vector<CameraPose>& path,
+                                              const FlyThroughOptions& options, const std::vector<double>& details,
+                                              const std::string& output_folder, std::FILE* progress = nullptr);
 
 }  // namespace boxlod

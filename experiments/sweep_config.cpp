@@ -157,6 +157,10 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
                  else l.fail("unknown baseline '" + item + "' (simplification, single-box, or none)");
              }
          }},
+        {"keep_small_subtrees", [&](const Line& l) {
+             if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false");
+             c.keep_small_subtrees = l.line.value == "true";
+         }},
         {"keep_images", [&](const Line& l) {
              const std::map<std::string, KeptImages> kinds = {
                  {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};

@@ -123,9 +123,9 @@ check "the sweep error names file:line:key" grep -q "bad_sweep.txt: line 2: leve
 check "city succeeds" test "$(status_of "$boxlod" city --buildings 2 --strategy distance:40,80,160 --path orbit --frames 4 --width 64 --height 48 --error-every 2 --threads 2 -o "$work/city")" = 0
 check "city prints its summary" bash -c "grep -qx 'frames = 4' '$work/out' && grep -qx 'buildings = 2' '$work/out' && grep -qx 'sampled_frames = 2' '$work/out' && grep -q '^faces_mean = [0-9]' '$work/out' && grep -q '^ssim_mean = ' '$work/out' && grep -q '^level_0_total = ' '$work/out'"
 check "city writes frames, contact sheet and timings" test -s "$work/city/frames/frame_0000.png" -a -s "$work/city/frames/frame_0003.png" -a -s "$work/city/contact_sheet.png" -a -s "$work/city/timings.csv"
-check "city frames.csv has the columns" bash -c "head -1 '$work/city/frames.csv' | grep -qx 'frame,strategy,faces,triangles,buildings,level_0,\(level_[0-9]*,\)*levels_changed,psnr,ssim,flip'"
-check "city frames.csv has one row per frame, errors on sampled frames" bash -c "test \$(wc -l < '$work/city/frames.csv') = 5 && sed -n 2p '$work/city/frames.csv' | grep -q '^0,\"distance:40,80,160\",[0-9]*,[0-9]*,2,.*,[0-9.e-]*\$' && sed -n 3p '$work/city/frames.csv' | grep -q ',,,\$'"
-check "city timings.csv has the columns" bash -c "head -1 '$work/city/timings.csv' | grep -qx 'frame,select_seconds,render_seconds'"
+check "city frames.csv has the columns" bash -c "head -1 '$work/city/frames.csv' | grep -qx 'frame,strategy,detail,faces,triangles,buildings,level_0,\(level_[0-9]*,\)*levels_changed,psnr,ssim,flip'"
+check "city frames.csv has one row per frame, errors on sampled frames" bash -c "test \$(wc -l < '$work/city/frames.csv') = 5 && sed -n 2p '$work/city/frames.csv' | grep -q '^0,\"distance:40,80,160\",1,[0-9]*,[0-9]*,2,.*,[0-9.e-]*\$' && sed -n 3p '$work/city/frames.csv' | grep -q ',,,\$'"
+check "city timings.csv has the columns" bash -c "head -1 '$work/city/timings.csv' | grep -qx 'frame,detail,select_seconds,render_seconds'"
 check "city is identical with 1 thread" bash -c "'$boxlod' city --buildings 2 --strategy distance:40,80,160 --path orbit --frames 4 --width 64 --height 48 --error-every 2 --threads 1 -o '$work/city1' >/dev/null 2>&1 && cmp -s '$work/city/frames.csv' '$work/city1/frames.csv' && cmp -s '$work/city/frames/frame_0002.png' '$work/city1/frames/frame_0002.png'"
 printf '# a dolly\n0  100 20 100  0 0 0\n1  40 10 40  0 0 0\n' > "$work/keys.txt"
 check "city along a keyframe file succeeds" test "$(status_of "$boxlod" city --buildings 1 --strategy texel --path "$work/keys.txt" --frames 3 --width 64 --height 48 --budget 500 --json -o "$work/city_keys")" = 0
@@ -138,6 +138,9 @@ bad "city with a bad keyframe file" city --buildings 1 --path "$work/bad_keys.tx
 check "the keyframe error names file:line" grep -q "bad_keys.txt: line 2: expected a number, got 'oops'" "$work/err"
 bad "city with a missing keyframe file" city --buildings 1 --path "$work/nope.txt" -o "$work/city_bad"
 bad "city with zero frames" city --buildings 1 --frames 0 -o "$work/city_bad"
+bad "city with a bad detail" city --buildings 1 --detail 1,-2 -o "$work/city_bad"
+check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
+check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 

@@ -126,24 +126,24 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 5);
     auto one = test::scratch_folder("fly_through_1"), two = test::scratch_folder("fly_through_2");
     options.threads = 1;
-    FlyThroughReport report = run_fly_through(city, path, options, one.string());
+    FlyThroughReport report = run_fly_through(city, path, options, {1}, one.string()).at(0);
     options.threads = 2;
-    run_fly_through(city, path, options, two.string());
+    run_fly_through(city, path, options, {1}, two.string());
 
     std::string csv = test::read_text(one / "frames.csv");
     EXPECT_EQ(csv, test::read_text(two / "frames.csv"));
     std::vector<std::string> rows = lines_of(csv);
     ASSERT_EQ(rows.size(), 6u);
-    std::string header = "frame,strategy,faces,triangles,buildings";
+    std::string header = "frame,strategy,detail,faces,triangles,buildings";
     for (std::size_t c = 0; c < report.level_totals.size(); ++c) header += ",level_" + std::to_string(c);
     EXPECT_EQ(rows[0], header + ",levels_changed,psnr,ssim,flip");
-    EXPECT_EQ(rows[1].rfind("0,\"distance:100,200,400\",", 0), 0u);
+    EXPECT_EQ(rows[1].rfind("0,\"distance:100,200,400\",1,", 0), 0u);
     EXPECT_EQ(rows[2].substr(rows[2].size() - 3), ",,,");  // frame 1 is not sampled
     EXPECT_NE(rows[3].substr(rows[3].size() - 3), ",,,");  // frame 2 is
     EXPECT_EQ(report.sampled_frames, 3u);
     EXPECT_EQ(report.frames, 5u);
     EXPECT_EQ(report.buildings, 3u);
-    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,select_seconds,render_seconds");
+    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,detail,select_seconds,render_seconds");
     for (int k = 0; k < 5; ++k) {
         std::string name = "frames/frame_000" + std::to_string(k) + ".png";
         ASSERT_TRUE(std::filesystem::exists(one / name)) << name;
@@ -153,4 +153,48 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     Image8 sheet = read_image((one / "contact_sheet.png").string());
     EXPECT_EQ(sheet.width, 4 * 64 + 5 * 2);
     EXPECT_EQ(sheet.height, 2 * 48 + 3 * 2);
+}
+
+// The detail bias: as if every building were 1/K as far, so a larger K never picks a
+// coarser level for any building on any frame, for every strategy (faces need not follow:
+// a fine level can draw more faces than a coarser one); several details share one build
+// and each gets its own images.
+TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
+    Model city = small_city(3);
+    FlyThroughOptions options = tiny_frames();
+    options.hysteresis = 0;
+    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 4);
+    for (const char* text : {"distance:100,200,400", "pixels:4000,1000,250", "ratio:0.5,0.1,0.02", "diagonal:4,64", "texel"}) {
+        options.strategy = parse_strategy(text, "test");
+        CityLevels levels = build_city_levels(city, options, false);
+        std::vector<FrameRecord> previous;
+        int level_sum[2] = {0, 0};
+        for (double detail : {0.25, 1.0, 4.0}) {
+            options.detail = detail;
+            std::vector<FrameRecord> frames = fly_through(levels, path, options);
+            for (std::size_t k = 0; k < frames.size(); ++k)
+                for (std::size_t b = 0; b < frames[k].levels.size(); ++b) {
+                    if (!previous.empty()) {
+                        EXPECT_LE(frames[k].levels[b], previous[k].levels[b]) << text << " detail " << detail;
+                    }
+                    if (detail != 1.0) level_sum[detail > 1] += frames[k].levels[b];
+                }
+            previous = frames;
+        }
+        EXPECT_LT(level_sum[1], level_sum[0]) << text << ": the bias changes nothing on this path";
+    }
+    options.detail = 1;
+    options.strategy = parse_strategy("texel", "test");
+    auto folder = test::scratch_folder("fly_through_details");
+    std::vector<FlyThroughReport> reports = run_fly_through(city, path, options, {0.5, 2}, folder.string());
+    ASSERT_EQ(reports.size(), 2u);
+    EXPECT_EQ(reports[1].detail, 2);
+    for (const char* run : {"detail_0.5", "detail_2"}) {
+        EXPECT_TRUE(std::filesystem::exists(folder / run / "contact_sheet.png")) << run;
+        EXPECT_TRUE(std::filesystem::exists(folder / run / "frames" / "frame_0003.png")) << run;
+    }
+    std::vector<std::string> rows = lines_of(test::read_text(folder / "frames.csv"));
+    ASSERT_EQ(rows.size(), 1u + 2 * 4);
+    EXPECT_EQ(rows[1].rfind("0,texel,0.5,", 0), 0u);
+    EXPECT_EQ(rows[5].rfind("0,texel,2,", 0), 0u);
 }

@@ -364,3 +364,29 @@ TEST(LodSelection, StrategiesWithDisorderedThresholdsAreRejected) {
         EXPECT_NE(std::string(e.what()).find("params.txt"), std::string::npos) << e.what();
     }
 }
+
+// The detail bias K: every strategy picks at distance d what it picked unbiased at d / K
+// (the projected disc only far away, where it goes as 1/d^2; nearer, never the other way).
+TEST(LodSelection, DetailPicksTheLevelOfACameraKTimesCloser) {
+    SelectionObject object = building();  // radius 14
+    for (const auto& [name, strategy] : every_strategy()) {
+        SCOPED_TRACE(name);
+        bool disc = std::holds_alternative<PixelCount>(strategy) || std::holds_alternative<ScreenRatio>(strategy);
+        for (double detail : {0.5, 2.0, 3.0}) {
+            Strategy biased = scale_detail(strategy, detail);
+            for (double d = 50; d < 3000; d *= 1.37) {
+                int unbiased = choose_level(strategy, object, fly_away(object, d / detail)).level;
+                int level = choose_level(biased, object, fly_away(object, d)).level;
+                if (!disc || d / detail > 400) {
+                    EXPECT_EQ(level, unbiased) << d << " x" << detail;
+                } else if (detail > 1) {  // the biased disc shrinks slower: never coarser than the unbiased one
+                    EXPECT_LE(level, choose_level(strategy, object, fly_away(object, d)).level) << d;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(std::get<DistanceBands>(scale_detail(DistanceBands{{10, 20}}, 2)).distances, (std::vector<double>{20, 40}));
+    EXPECT_EQ(std::get<PixelCount>(scale_detail(PixelCount{{400, 100}}, 2)).pixels, (std::vector<double>{100, 25}));
+    EXPECT_EQ(std::get<TexelExact>(scale_detail(scale_detail(TexelExact{}, 2), 3)).detail, 6);
+    EXPECT_THROW(scale_detail(TexelExact{}, 0), std::invalid_argument);
+}

@@ -23,7 +23,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
         "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
-        "sizing = each-distance\nbaselines = single-box, simplification\n",
+        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\n",
         "/work/sweeps/config.txt");
     ASSERT_EQ(c.models.size(), 3u);
     EXPECT_EQ(c.models[0].name, "house.glb");
@@ -50,6 +50,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.sizing, SizingRule::each_distance);
     EXPECT_TRUE(c.simplification_baseline);
     EXPECT_TRUE(c.single_box_baseline);
+    EXPECT_TRUE(c.keep_small_subtrees);
 }
 
 TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
@@ -84,6 +85,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
     expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
+    expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest or each-distance");
     expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice");

@@ -102,7 +102,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     bool textured = p.render_mode != RenderMode::untextured;
     Lod lod;
     lod.current_level = current_level;
-    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes);
+    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, p.keep_small_subtrees);
 
     // Bake the faces of boxes no earlier level baked, in parallel (one face per task).
     auto start = std::chrono::steady_clock::now();

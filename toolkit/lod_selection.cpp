@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace boxlod {
 
@@ -51,6 +52,8 @@ int texel_exact_level(const TexelExact& strategy, const SelectionObject& object,
     // Level c is acceptable when its texels are no larger than the current pixel at the
     // object: p >= p_b = pixel_world_size(sizing) (DESIGN.md: Texture sizing; the 1:1
     // mapping holds for any view whose pixel is at least as large).
+    // The detail bias judges the level as if the pixel were detail times smaller.
+    footprint /= strategy.detail;
     int best = 0;
     for (int c = 1; c <= coarsest_level(object); ++c) {
         const SelectionLevel& level = object.levels[c];
@@ -109,6 +112,20 @@ void validate_strategy(const Strategy& strategy, const std::string& where) {
     if (auto* s = std::get_if<TexelExact>(&strategy))
         check(!s->error_budget || (std::isfinite(*s->error_budget) && *s->error_budget >= 0), where, "texel exact",
               "the error budget must be finite and non-negative");
+}
+
+Strategy scale_detail(const Strategy& strategy, double detail) {
+    if (!(detail > 0) || !std::isfinite(detail)) throw std::invalid_argument("scale_detail: detail must be positive");
+    Strategy out = strategy;
+    auto scale = [](std::vector<double>& values, double factor) {
+        for (double& v : values) v *= factor;
+    };
+    if (auto* s = std::get_if<DistanceBands>(&out)) scale(s->distances, detail);
+    if (auto* s = std::get_if<PixelCount>(&out)) scale(s->pixels, 1 / (detail * detail));
+    if (auto* s = std::get_if<ScreenRatio>(&out)) scale(s->ratios, 1 / (detail * detail));
+    if (auto* s = std::get_if<BoxDiagonal>(&out)) s->min_pixels /= detail, s->max_pixels /= detail;
+    if (auto* s = std::get_if<TexelExact>(&out)) s->detail *= detail;
+    return out;
 }
 
 double camera_distance(const SelectionObject& object, const SelectionView& view) {

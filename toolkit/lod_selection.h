@@ -77,8 +77,18 @@ struct BoxDiagonal {
 // measured error scaled to the current view stays within it.
 struct TexelExact {
     std::optional<double> error_budget;
+    double detail = 1;  // judge levels at the pixel footprint / detail (see scale_detail)
 };
 using Strategy = std::variant<DistanceBands, PixelCount, ScreenRatio, BoxDiagonal, TexelExact>;
+
+// A level-of-detail bias (the engines' "LOD bias"): the strategy picks levels as if
+// every object were seen from 1/detail of its distance, so detail > 1 keeps finer
+// levels and detail < 1 coarser ones. Distance bands scale by detail, pixel counts
+// and screen ratios by 1/detail^2 (exact for d >> r, where the disc goes as 1/d^2),
+// diagonal thresholds by 1/detail, and texel-exact selection judges texels and
+// error at the pixel footprint / detail. One knob over every strategy, so each can
+// be drawn as a curve of faces against image error.
+Strategy scale_detail(const Strategy& strategy, double detail);
 
 // Finite, non-negative, strictly ordered thresholds; min_pixels <= max_pixels; budget >= 0.
 // Throws InputError naming `where`.

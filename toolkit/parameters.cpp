@@ -59,6 +59,7 @@ KeyValues parameter_entries(const LodParameters& p) {
     line("current_level", std::to_string(p.current_level));
     line("box_kind", box_kind_name(p.box_kind));
     line("interpolation", interpolation_name(p.interpolation));
+    line("keep_small_subtrees", p.keep_small_subtrees ? "true" : "false");
     line("fovy", format_number(p.fovy));
     line("distance", format_number(p.distance));
     line("resolution", format_number(p.resolution));
@@ -102,6 +103,10 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
         {"current_level", [&](const Parser& q, const std::string& v) { p.current_level = q.integer(v); }},
         {"box_kind", [&](const Parser& q, const std::string& v) { if (!parse_box_kind(v, p.box_kind)) q.fail("unknown box kind '" + v + "'"); }},
         {"interpolation", [&](const Parser& q, const std::string& v) { if (!parse_interpolation(v, p.interpolation)) q.fail("unknown interpolation '" + v + "'"); }},
+        {"keep_small_subtrees", [&](const Parser& q, const std::string& v) {
+             if (v != "true" && v != "false") q.fail("expected true or false, got '" + v + "'");
+             p.keep_small_subtrees = v == "true";
+         }},
         {"fovy", [&](const Parser& q, const std::string& v) { p.fovy = q.number(v); }},
         {"distance", [&](const Parser& q, const std::string& v) { p.distance = q.number(v); }},
         {"resolution", [&](const Parser& q, const std::string& v) { p.resolution = q.number(v); }},

@@ -19,6 +19,7 @@ struct LodParameters {
     int current_level = 1;
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
+    bool keep_small_subtrees = false;  // beyond the manual: no box for a sub-tree of <= 6 faces (cut.h)
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model

@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 namespace boxlod {
 namespace {
@@ -55,6 +58,19 @@ int run_city(const Arguments& arguments) {
     require(options.wanted_levels >= 1 && options.wanted_levels <= 64, "--levels takes 1 to 64 levels");
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
     require(options.base_distance > 0 && std::isfinite(options.base_distance), "--base-distance must be positive");
+    std::vector<double> details;
+    {
+        std::stringstream list(arguments.text("detail", "1"));
+        for (std::string item; std::getline(list, item, ',');) {
+            char* end = nullptr;
+            double detail = std::strtod(item.c_str(), &end);
+            require(!item.empty() && end == item.c_str() + item.size() && std::isfinite(detail) && detail > 0 &&
+                        std::find(details.begin(), details.end(), detail) == details.end(),
+                    "--detail takes distinct positive numbers separated by commas, got '" + arguments.text("detail") + "'");
+            details.push_back(detail);
+        }
+        require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
+    }
     options.threads = arguments.integer("threads", 0);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
     std::string path_name = arguments.text("path", "orbit");
@@ -66,34 +82,39 @@ int run_city(const Arguments& arguments) {
     std::vector<CameraPose> path =
         built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
     const std::string& output = arguments.text("output");
-    FlyThroughReport r = run_fly_through(model, path, options, output, stderr);
+    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, output, stderr);
 
     namespace fs = std::filesystem;
     KeyValues report{text_entry("output", output),
                      text_entry("frames_csv", (fs::path(output) / "frames.csv").string()),
                      text_entry("strategy", format_strategy(options.strategy)),
                      text_entry("path", path_name),
-                     number_entry("frames", double(r.frames)),
-                     number_entry("buildings", double(r.buildings)),
-                     number_entry("max_level", double(r.level_totals.size() - 1)),
-                     number_entry("faces_mean", r.faces_mean),
-                     number_entry("faces_min", double(r.faces_min)),
-                     number_entry("faces_max", double(r.faces_max))};
-    for (std::size_t c = 0; c < r.level_totals.size(); ++c)
-        report.push_back(number_entry("level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
-    report.push_back(number_entry("levels_changed", double(r.levels_changed)));
-    report.push_back(number_entry("sampled_frames", double(r.sampled_frames)));
-    if (r.sampled_frames) {
-        report.push_back(number_entry("psnr_mean", r.psnr_mean));
-        report.push_back(number_entry("ssim_mean", r.ssim_mean));
-        report.push_back(number_entry("flip_mean", r.flip_mean));
+                     number_entry("frames", double(runs.front().frames)),
+                     number_entry("buildings", double(runs.front().buildings)),
+                     number_entry("max_level", double(runs.front().level_totals.size() - 1)),
+                     number_entry("build_seconds", runs.front().build_seconds)};
+    // One detail: its figures as they are; several: each under detail_<K>.
+    for (const FlyThroughReport& r : runs) {
+        std::string key = runs.size() == 1 ? "" : "detail_" + format_number(r.detail) + ".";
+        report.push_back(number_entry(key + "detail", r.detail));
+        report.push_back(number_entry(key + "faces_mean", r.faces_mean));
+        report.push_back(number_entry(key + "faces_min", double(r.faces_min)));
+        report.push_back(number_entry(key + "faces_max", double(r.faces_max)));
+        for (std::size_t c = 0; c < r.level_totals.size(); ++c)
+            report.push_back(number_entry(key + "level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
+        report.push_back(number_entry(key + "levels_changed", double(r.levels_changed)));
+        report.push_back(number_entry(key + "sampled_frames", double(r.sampled_frames)));
+        if (r.sampled_frames) {
+            report.push_back(number_entry(key + "psnr_mean", r.psnr_mean));
+            report.push_back(number_entry(key + "ssim_mean", r.ssim_mean));
+            report.push_back(number_entry(key + "flip_mean", r.flip_mean));
+        }
+        report.push_back(number_entry(key + "select_seconds", r.select_seconds));
+        report.push_back(number_entry(key + "render_seconds", r.render_seconds));
+        report.push_back(number_entry(key + "render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
+        report.push_back(number_entry(key + "error_seconds", r.error_seconds));
+        report.push_back(number_entry(key + "seconds", r.total_seconds));
     }
-    report.push_back(number_entry("build_seconds", r.build_seconds));
-    report.push_back(number_entry("select_seconds", r.select_seconds));
-    report.push_back(number_entry("render_seconds", r.render_seconds));
-    report.push_back(number_entry("render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
-    report.push_back(number_entry("error_seconds", r.error_seconds));
-    report.push_back(number_entry("seconds", r.total_seconds));
     std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
     return 0;
 }
@@ -118,6 +139,9 @@ Subcommand city_subcommand() {
               {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)"},
               {"fovy", "DEGREES", "vertical field of view (default 45)"},
               {"hysteresis", "H", "relative margin before a level changes back (default 0.1)"},
+              {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
+                                      "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
+                                      "levels, images under OUTDIR/detail_K/"},
               {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first"},
               {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)"},
               {"ppd", "P", "FLIP's pixels per degree (default 67)"},

@@ -14,6 +14,8 @@ std::vector<Option> lod_options() {
         {"wanted-levels", "N", "wanted number of levels for the box modes (default 8)"},
         {"box", "KIND", "scope | expanded (default) | minimal"},
         {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
+        {"keep-small-subtrees", "", "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a "
+                                    "6-face box, so no level draws more faces than the original"},
         {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
         {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)"},
         {"resolution", "R", "texture sizing: screen height in pixels (default 1080)"},
@@ -49,6 +51,7 @@ LodParameters lod_parameters_from(const Arguments& a) {
     word("box", parse_box_kind, p.box_kind, "scope, expanded, minimal");
     word("interpolation", parse_interpolation, p.interpolation, "linear, log, rank");
     word("render-mode", parse_render_mode, p.render_mode, "untextured, normal, parallax, pom");
+    if (a.has("keep-small-subtrees")) p.keep_small_subtrees = true;
     p.current_level = a.integer("level", p.current_level);
     p.wanted_levels = a.integer("wanted-levels", p.wanted_levels);
     p.fovy = float(a.number("fovy", p.fovy));
