@@ -127,7 +127,8 @@ Subcommand city_subcommand() {
              "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
              "(with hysteresis, optionally under a face budget). Writes OUTDIR/frames/frame_NNNN.png, "
              "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
-             "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv.",
+             "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
+             "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
              {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", 'o'},
               {"buildings", "N", "buildings in the city (default 9)"},
               {"seed", "S", "the city's seed (default 0)"},
