@@ -198,3 +198,17 @@ TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
     EXPECT_EQ(rows[1].rfind("0,texel,0.5,", 0), 0u);
     EXPECT_EQ(rows[5].rfind("0,texel,2,", 0), 0u);
 }
+
+// With keep_small_subtrees no level of a building draws more faces than its original
+// (the manual's cut boxes single quads: its level 1 can draw more).
+TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
+    Model city = small_city(2);
+    FlyThroughOptions options = tiny_frames();
+    options.keep_small_subtrees = true;
+    CityLevels levels = build_city_levels(city, options, false);
+    for (const SelectionObject& object : levels.objects)
+        for (std::size_t c = 1; c < object.levels.size(); ++c) EXPECT_LE(object.levels[c].faces, object.levels[0].faces) << c;
+    options.keep_small_subtrees = false;
+    CityLevels manual = build_city_levels(city, options, false);
+    EXPECT_GT(manual.objects[0].levels[1].faces, levels.objects[0].levels[1].faces);
+}

@@ -55,6 +55,7 @@ int run_city(const Arguments& arguments) {
         require(parse_level_mode(arguments.text("level-mode"), options.level_mode),
                 "--level-mode: unknown level mode '" + arguments.text("level-mode") + "'");
     options.wanted_levels = arguments.integer("levels", options.wanted_levels);
+    options.keep_small_subtrees = arguments.has("keep-small-subtrees");
     require(options.wanted_levels >= 1 && options.wanted_levels <= 64, "--levels takes 1 to 64 levels");
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
     require(options.base_distance > 0 && std::isfinite(options.base_distance), "--base-distance must be positive");
@@ -148,6 +149,7 @@ Subcommand city_subcommand() {
               {"ppd", "P", "FLIP's pixels per degree (default 67)"},
               {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
               {"levels", "N", "wanted levels for the box modes (default 8)"},
+              {"keep-small-subtrees", "", "no box for a sub-tree of at most 6 faces (as build --keep-small-subtrees)"},
               {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)"},
               {"threads", "N", "threads to use (default 0 = all cores)"},
               {"json", "", "print one JSON object instead of key = value lines"}},
