@@ -109,9 +109,10 @@ def per_level(frame, metrics=("psnr", "ssim", "flip")):
     rows = []
     for key, members in frame.groupby(group, sort=False):
         row = dict(zip(group, key))
-        for column in ("obtained_levels", "faces", "triangles", "vertices", "texels", "pages", "page_size",
-                       "nodes_with_box"):
-            row[column] = members[column].iloc[0]
+        for column in ("obtained_levels", "faces", "triangles", "vertices", "texels", "face_texels", "pages",
+                       "page_size", "nodes_with_box"):
+            if column in members:
+                row[column] = members[column].iloc[0]
         row["views"] = len(members)
         for metric in metrics:
             if metric not in members:
