@@ -49,6 +49,7 @@ bad() {  # bad NAME ARGS...: exit status 2 and exactly one line on stderr, nothi
   check "$name: exit status 2" test "$status" = 2
   check "$name: one line on stderr" test "$(wc -l < "$work/err")" = 1
   check "$name: nothing on stdout" test ! -s "$work/out"
+  check "$name: the line names boxlod once" bash -c "grep -q '^boxlod' '$work/err' && ! grep -q 'boxlod: boxlod' '$work/err'"
 }
 bad "missing file" info "$work/nope.gltf"
 printf '{"asset": {"version": "2.0"}, "nodes": [' > "$work/broken.gltf"

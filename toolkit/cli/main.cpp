@@ -48,7 +48,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "boxlod: unknown command '%s' (see boxlod --help)\n", words[0].c_str());
         return 2;
     } catch (const boxlod::InputError& error) {
-        std::fprintf(stderr, "boxlod: %s\n", error.what());
+        // Messages that already name the command ("boxlod sweep: ...") get no second prefix.
+        std::string message = error.what();
+        std::fprintf(stderr, "%s%s\n", message.starts_with("boxlod ") ? "" : "boxlod: ", message.c_str());
         return 2;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "boxlod: internal error: %s\n", error.what());
