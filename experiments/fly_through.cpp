@@ -111,11 +111,20 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
     return built;
 }
 
-std::string join_fields(const std::vector<std::string>& fields) {
+// One CSV line (RFC 4180): a field holding a comma or a quote goes in quotes, its quotes
+// doubled (the strategy's text has commas).
+std::string csv_row(const std::vector<std::string>& fields) {
     std::string line;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         if (i > 0) line += ',';
-        line += fields[i];
+        const std::string& field = fields[i];
+        if (field.find_first_of(",\"") == std::string::npos) {
+            line += field;
+            continue;
+        }
+        line += '"';
+        for (char c : field) line += c == '"' ? std::string("\"\"") : std::string(1, c);
+        line += '"';
     }
     return line;
 }
@@ -240,9 +249,8 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
     std::vector<std::string> header = {"frame", "strategy", "detail", "faces", "triangles", "buildings"};
     for (int c = 0; c <= city.max_level; ++c) header.push_back("level_" + std::to_string(c));
     for (const char* column : {"levels_changed", "psnr", "ssim", "flip"}) header.push_back(column);
-    std::string text = join_fields(header) + "\n";
-    std::string name = format_strategy(strategy);
-    if (name.find(',') != std::string::npos) name = "\"" + name + "\"";
+    std::string text = csv_row(header) + "\n";
+    const std::string name = format_strategy(strategy);
     for (const FlyThroughRun& run : runs)
         for (std::size_t k = 0; k < run.frames.size(); ++k) {
             const FrameRecord& f = run.frames[k];
@@ -255,7 +263,7 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
             fields.push_back(std::to_string(f.levels_changed));
             for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
                 fields.push_back(f.error ? format_number(value) : "");
-            text += join_fields(fields) + "\n";
+            text += csv_row(fields) + "\n";
         }
     return text;
 }
@@ -264,7 +272,7 @@ std::string timings_csv(const std::vector<FlyThroughRun>& runs) {
     std::string text = "frame,detail,select_seconds,render_seconds\n";
     for (const FlyThroughRun& run : runs)
         for (std::size_t k = 0; k < run.frames.size(); ++k)
-            text += join_fields({std::to_string(k), format_number(run.detail), format_number(run.frames[k].select_seconds),
+            text += csv_row({std::to_string(k), format_number(run.detail), format_number(run.frames[k].select_seconds),
                                  format_number(run.frames[k].render_seconds)}) + "\n";
     return text;
 }
