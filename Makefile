@@ -1,16 +1,17 @@
 # The two commands: `make demo` and `make test`. Both install missing Debian
 # packages, configure, build (Release, all cores) and run.
 BUILD ?= build
+DEBUG_BUILD ?= build-debug
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build demo test test-sanitize bench paper paper-smoke clean
+.PHONY: all deps configure build debug-build demo test test-sanitize bench paper paper-smoke clean
 all: build
 
 deps:
 	@scripts/install-deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBOXLOD_DEBUG_BUILD=$(abspath $(DEBUG_BUILD)) >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
@@ -18,8 +19,16 @@ build: configure
 demo: build
 	@scripts/demo.sh $(BUILD)
 
-test: build
+test: build debug-build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The Debug side of the Debug-against-Release tests (README: Determinism): -O0
+# with the standard library's assertions, linked with the one-definition-rule
+# check (LTO, -Werror=odr); only the program, the golden tests and the check.
+debug-build: deps
+	@cmake -S . -B $(DEBUG_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DBOXLOD_ODR_CHECK=ON \
+	  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
+	@cmake --build $(DEBUG_BUILD) -j $(JOBS) --target debug_check_programs
 
 # The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer, in a
 # Debug build (assertions on) at -O1: unoptimised Eigen and CGAL under ASan
@@ -53,4 +62,4 @@ paper paper-smoke:
 	@echo "paper: out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf (everything: out/workflow/$(PROFILE)/)"
 
 clean:
-	rm -rf $(BUILD) build-sanitize
+	rm -rf $(BUILD) $(DEBUG_BUILD) build-sanitize

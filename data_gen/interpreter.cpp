@@ -233,7 +233,7 @@ private:
     }
 
     void component(const Operation& op, const Shape& shape, Application& application) {
-        for (const BoxFace& face : box_faces(shape.scope.size)) {
+        for (const ScopeFace& face : scope_faces(shape.scope.size)) {
             if (face.width <= 1e-6f || face.height <= 1e-6f) continue;
             const SplitEntry* taken = nullptr;
             for (const SplitEntry& entry : op.entries)

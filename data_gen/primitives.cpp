@@ -8,7 +8,7 @@ namespace boxlod {
 
 using Eigen::Vector3f;
 
-std::array<BoxFace, 6> box_faces(const Vector3f& s) {
+std::array<ScopeFace, 6> scope_faces(const Vector3f& s) {
     const Vector3f x = Vector3f::UnitX(), y = Vector3f::UnitY(), z = Vector3f::UnitZ();
     return {{
         {"front", Vector3f(0, 0, s.z()), x, y, s.x(), s.y()},
@@ -122,7 +122,7 @@ void add_polygon(Primitive& primitive, const std::vector<Vector3f>& points, cons
 Primitive builtin_primitive(const std::string& name, const Vector3f& size, int segments) {
     Primitive primitive;
     if (name == "box") {
-        for (const BoxFace& face : box_faces(size)) add_rectangle(primitive, face.origin, face.u * face.width, face.v * face.height);
+        for (const ScopeFace& face : scope_faces(size)) add_rectangle(primitive, face.origin, face.u * face.width, face.v * face.height);
     } else if (name == "quad") {
         add_rectangle(primitive, Vector3f(0, 0, size.z()), Vector3f(size.x(), 0, 0), Vector3f(0, size.y(), 0));
     } else if (name == "cylinder") {

@@ -10,9 +10,10 @@
 
 namespace boxlod {
 
-// One face of a box of some size, in the box's own frame: `u` runs to the
-// right and `v` up as seen from outside, u x v is the outward normal.
-struct BoxFace {
+// One face of a scope's box, in the scope's own frame (the grammar's side of
+// a box; the LoD builder's is OrientedBoxFace): `u` runs to the right and `v`
+// up as seen from outside, u x v is the outward normal.
+struct ScopeFace {
     const char* name;  // front (+z), right (+x), back (-z), left (-x), top (+y), bottom (-y)
     Eigen::Vector3f origin, u, v;
     float width = 0, height = 0;
@@ -20,7 +21,7 @@ struct BoxFace {
 
 // The six faces in the order front, right, back, left, top, bottom. The
 // component split and the box primitive both use them.
-std::array<BoxFace, 6> box_faces(const Eigen::Vector3f& size);
+std::array<ScopeFace, 6> scope_faces(const Eigen::Vector3f& size);
 
 bool is_builtin_primitive(const std::string& name);
 std::string builtin_primitive_names();  // "box, quad, cylinder, gable, hip"

@@ -66,7 +66,7 @@ Model single_box_model(const Model& model, int threads) {
     add_node(result, -1, "box");
     Primitive& quads = result.nodes[0].primitives.emplace_back();
     quads.material = 0;
-    for (const BoxFace& face : box_faces(root_box(model, threads))) {
+    for (const OrientedBoxFace& face : oriented_box_faces(root_box(model, threads))) {
         Eigen::Vector3f t = face.tangent * face.half_width, b = face.bitangent * face.half_height;
         auto base = std::uint32_t(quads.positions.size());
         // tangent x bitangent = normal: this order is counter-clockwise seen from outside.

@@ -5,14 +5,14 @@
 
 using namespace boxlod;
 
-TEST(Bake, BoxFacesHaveRightHandedUprightFrames) {
+TEST(Bake, OrientedBoxFacesHaveRightHandedUprightFrames) {
     OrientedBox box;
     box.center = {1, 2, 3};
     box.axes = Eigen::AngleAxisf(0.4f, Eigen::Vector3f::UnitY()).toRotationMatrix();
     box.half_extents = {1, 2, 3};
-    auto faces = box_faces(box);
+    auto faces = oriented_box_faces(box);
     for (int i = 0; i < 6; ++i) {
-        const BoxFace& f = faces[i];
+        const OrientedBoxFace& f = faces[i];
         EXPECT_NEAR(f.tangent.cross(f.bitangent).dot(f.normal), 1, 1e-6) << i;
         EXPECT_NEAR((f.center - box.center).dot(f.normal), box.half_extents[i / 2], 1e-5) << i;
         EXPECT_NEAR(f.half_depth, box.half_extents[i / 2], 1e-6);
@@ -53,7 +53,7 @@ TEST(Bake, FaceRecordsAlbedoCoverageTangentNormalAndHeight) {
     OrientedBox box;
     box.center = {0.5f, 0.5f, 0.5f};
     box.half_extents = {0.5f, 0.5f, 0.5f};
-    auto faces = box_faces(box);
+    auto faces = oriented_box_faces(box);
     for (int f : {4, 5}) {  // +Z and -Z: the quad faces them, halfway into the box
         BakedFace baked = bake_face(drawable, faces[f], {16, 16}, 1);
         for (int y = 0; y < 16; ++y)

@@ -27,9 +27,9 @@ void expect_inside(const Primitive& primitive, const Eigen::Vector3f& size) {
 
 }  // namespace
 
-TEST(BoxFaces, OutwardFramesCoveringTheBox) {
+TEST(ScopeFaces, OutwardFramesCoveringTheScope) {
     Eigen::Vector3f size(4, 3, 2);
-    auto faces = box_faces(size);
+    auto faces = scope_faces(size);
     const char* names[] = {"front", "right", "back", "left", "top", "bottom"};
     Eigen::Vector3f normals[] = {Eigen::Vector3f::UnitZ(), Eigen::Vector3f::UnitX(), -Eigen::Vector3f::UnitZ(),
                                  -Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY(), -Eigen::Vector3f::UnitY()};

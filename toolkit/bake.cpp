@@ -6,11 +6,11 @@
 
 namespace boxlod {
 
-std::array<BoxFace, 6> box_faces(const OrientedBox& box) {
-    std::array<BoxFace, 6> faces;
+std::array<OrientedBoxFace, 6> oriented_box_faces(const OrientedBox& box) {
+    std::array<OrientedBoxFace, 6> faces;
     for (int k = 0; k < 3; ++k)
         for (int s = 0; s < 2; ++s) {
-            BoxFace& face = faces[k * 2 + s];
+            OrientedBoxFace& face = faces[k * 2 + s];
             float sign = s == 0 ? 1.0f : -1.0f;
             face.normal = box.axes.col(k) * sign;
             face.center = box.center + face.normal * box.half_extents[k];
@@ -67,7 +67,7 @@ void dilate_colors(Image8& color) {
     }
 }
 
-BakedFace bake_face(const Drawable& subtree, const BoxFace& face, const Eigen::Vector2i& texels, int threads) {
+BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads) {
     // Near and far lie a hair outside the box so geometry flush with a face is kept.
     float depth = 2 * face.half_depth;
     float margin = std::max(depth, std::max(face.half_width, face.half_height)) * 1e-3f + 1e-6f;

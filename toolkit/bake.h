@@ -11,7 +11,7 @@ namespace boxlod {
 
 // A face of an oriented box with its texture frame: tangent along +u (image
 // right), bitangent up the image, normal outwards; tangent x bitangent = normal.
-struct BoxFace {
+struct OrientedBoxFace {
     Eigen::Vector3f center, normal, tangent, bitangent;
     float half_width = 0, half_height = 0;  // along tangent and bitangent
     float half_depth = 0;                   // along the normal: half the box's depth
@@ -20,7 +20,7 @@ struct BoxFace {
 // The six faces in the order +a0, -a0, +a1, -a1, +a2, -a2 of the box's axes.
 // The bitangent is the face axis closest to world +Y (for faces looking up or
 // down: closest to world -Z), so walls bake upright.
-std::array<BoxFace, 6> box_faces(const OrientedBox& box);
+std::array<OrientedBoxFace, 6> oriented_box_faces(const OrientedBox& box);
 
 struct BakedFace {
     Image8 color;    // RGBA, sRGB albedo; alpha = coverage; uncovered colour dilated from covered texels
@@ -28,7 +28,7 @@ struct BakedFace {
     Image16 height;  // 1 (65535) at the face plane, 0 at the opposite face; uncovered 0
 };
 
-BakedFace bake_face(const Drawable& subtree, const BoxFace& face, const Eigen::Vector2i& texels, int threads);
+BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads);
 
 // Fills every uncovered texel (alpha 0) with the mean colour of its nearest
 // covered texels, ring by ring, so filtering never reaches the background.

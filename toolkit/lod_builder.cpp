@@ -31,7 +31,7 @@ void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Tex
 }
 
 // One quad per face: TL, BL, BR, TR seen from outside; uvs into the face's atlas block.
-void append_face_quad(Primitive& p, const BoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels, int page_size) {
+void append_face_quad(Primitive& p, const OrientedBoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels, int page_size) {
     auto base = std::uint32_t(p.positions.size());
     const float corners[4][2] = {{-1, 1}, {-1, -1}, {1, -1}, {1, 1}};
     for (const auto& c : corners) {
@@ -48,7 +48,7 @@ void append_face_quad(Primitive& p, const BoxFace& f, const AtlasPlacement* at, 
     ++p.polygon_count;
 }
 
-Eigen::Vector2i texels_of(const BoxFace& face, const TextureSizing& sizing) {
+Eigen::Vector2i texels_of(const OrientedBoxFace& face, const TextureSizing& sizing) {
     return face_texels(2 * face.half_width, 2 * face.half_height, sizing);
 }
 
@@ -120,7 +120,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     for (int node : new_boxes) subtrees.emplace(node, make_drawable(model, session.textures, node));
     parallel_for(jobs.size(), threads, [&](std::size_t j) {
         const FaceJob& job = jobs[j];
-        BoxFace face = box_faces(*session.boxes[job.node])[job.face];
+        OrientedBoxFace face = oriented_box_faces(*session.boxes[job.node])[job.face];
         session.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, session.sizing), 1);
     });
     session.times.bake += seconds_since(start);
@@ -130,7 +130,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     std::vector<Eigen::Vector2i> sizes;
     float longest_face = 0;
     for (int node : lod.cut.box_nodes)
-        for (const BoxFace& face : box_faces(*session.boxes[node])) {
+        for (const OrientedBoxFace& face : oriented_box_faces(*session.boxes[node])) {
             sizes.push_back(texels_of(face, session.sizing));
             longest_face = std::max({longest_face, 2 * face.half_width, 2 * face.half_height});
         }
@@ -197,7 +197,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         }
         // One primitive per page this box's faces landed on.
         std::map<int, Primitive> by_page;
-        std::array<BoxFace, 6> faces = box_faces(*session.boxes[n]);
+        std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
         for (int f = 0; f < 6; ++f, ++face_index) {
             if (!textured) {
                 Primitive& primitive = by_page[0];
