@@ -76,6 +76,7 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
     MeshCounts original = mesh_counts(model);
     std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
     built.levels.triangles = {original.triangles};
+    built.levels.costs = {cost_parts(model)};
     auto boxes = node_boxes(model, BoxKind::expanded, 1);
     LodParameters p;
     p.level_mode = options.level_mode;
@@ -95,6 +96,7 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
         MeshCounts counts = mesh_counts(lod.model);
         levels.push_back({counts.faces, session->sizing, std::nullopt});
         built.levels.triangles.push_back(counts.triangles);
+        built.levels.costs.push_back(cost_parts(lod.model));
         built.levels.lods.push_back(make_drawable_model(lod.model, &cache));
     }
     if (boxes[0]) {
@@ -152,7 +154,9 @@ CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options
             continue;
         }
         out.streets = make_drawable(city, out.textures, child);
-        MeshCounts streets = mesh_counts(extract_subtree(city, child));
+        Model street_model = extract_subtree(city, child);
+        MeshCounts streets = mesh_counts(street_model);
+        out.street_cost = cost_parts(street_model);
         out.street_faces = streets.faces;
         out.street_triangles = streets.triangles;
     }
@@ -220,10 +224,13 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
         }
         record.faces = faces_drawn(city.objects, record.levels, city.street_faces);
         record.triangles = city.street_triangles;
+        std::vector<const CostParts*> drawn = {&city.street_cost};
         for (std::size_t b = 0; b < n; ++b) {
             record.triangles += city.buildings[b].triangles[std::size_t(record.levels[b])];
+            drawn.push_back(&city.buildings[b].costs[std::size_t(record.levels[b])]);
             if (k > 0 && record.levels[b] != records.back().levels[b]) ++record.levels_changed;
         }
+        record.cost = combined_cost(drawn);
         record.select_seconds = seconds_since(start);
 
         start = Clock::now();
@@ -246,7 +253,8 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
 }
 
 std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy) {
-    std::vector<std::string> header = {"frame", "strategy", "detail", "faces", "triangles", "buildings"};
+    std::vector<std::string> header = {"frame", "strategy", "detail", "faces", "triangles", "draw_calls", "mesh_bytes",
+                                       "texture_bytes", "texture_bytes_gpu", "bytes", "buildings"};
     for (int c = 0; c <= city.max_level; ++c) header.push_back("level_" + std::to_string(c));
     for (const char* column : {"levels_changed", "psnr", "ssim", "flip"}) header.push_back(column);
     std::string text = csv_row(header) + "\n";
@@ -258,7 +266,9 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
             for (int level : f.levels) ++histogram[std::size_t(level)];
             std::vector<std::string> fields = {std::to_string(k), name, format_number(run.detail),
                                                std::to_string(f.faces), std::to_string(f.triangles),
-                                               std::to_string(f.levels.size())};
+                                               std::to_string(f.cost.draw_calls), std::to_string(f.cost.mesh_bytes),
+                                               std::to_string(f.cost.texture_bytes), std::to_string(f.cost.texture_bytes_gpu),
+                                               std::to_string(f.cost.bytes()), std::to_string(f.levels.size())};
             for (std::size_t count : histogram) fields.push_back(std::to_string(count));
             fields.push_back(std::to_string(f.levels_changed));
             for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})

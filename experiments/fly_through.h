@@ -7,6 +7,7 @@
 // compared with full detail (every building at level 0).
 #pragma once
 #include "experiments/camera_path.h"
+#include "toolkit/cost.h"
 #include "toolkit/drawable.h"
 #include "toolkit/level_modes.h"
 #include "toolkit/lod_selection.h"
@@ -45,6 +46,7 @@ struct BuildingLevels {
     std::string name;
     int node = 0;                        // its root in the city
     std::vector<std::size_t> triangles;  // per level 0..N
+    std::vector<CostParts> costs;        // per level 0..N
     Drawable original;                   // level 0: the city's own geometry and decoded textures
     std::vector<std::unique_ptr<DrawableModel>> lods;  // levels 1..N at index c - 1
     const Drawable& drawable(int level) const { return level == 0 ? original : lods.at(std::size_t(level - 1))->drawable; }
@@ -55,6 +57,7 @@ struct CityLevels {
     DecodedTextures textures;  // the city's, shared by the streets and every level 0
     Drawable streets;
     std::size_t street_faces = 0, street_triangles = 0;
+    CostParts street_cost;
     std::vector<BuildingLevels> buildings;
     std::vector<SelectionObject> objects;  // per building: its root box, levels' faces, sizings (errors if measured)
     Bounds bounds;                         // the city's
@@ -80,6 +83,7 @@ struct ImageErrors {
 struct FrameRecord {
     std::vector<int> levels;  // per building
     std::size_t faces = 0, triangles = 0;
+    ModelCost cost;  // streets and every building at its level; a texture shared by content counted once
     std::size_t levels_changed = 0;    // buildings whose level differs from the previous frame's
     std::optional<ImageErrors> error;  // on sampled frames
     double select_seconds = 0, render_seconds = 0, error_seconds = 0;
@@ -96,7 +100,8 @@ struct FlyThroughRun {
     std::vector<FrameRecord> frames;
 };
 
-// frames.csv: `frame,strategy,detail,faces,triangles,buildings,level_0,...,level_K,
+// frames.csv: `frame,strategy,detail,faces,triangles,draw_calls,mesh_bytes,texture_bytes,
+// texture_bytes_gpu,bytes,buildings,level_0,...,level_K,
 // levels_changed,psnr,ssim,flip`, one row per frame of each run, runs in order; the
 // strategy is format_strategy's text (quoted: it has commas); the errors are empty on
 // frames not sampled. Deterministic.

@@ -10,6 +10,7 @@
 #include "experiments/single_box.h"
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
+#include "toolkit/cost.h"
 #include "toolkit/drawable.h"
 #include "toolkit/key_values.h"
 #include "toolkit/lod_builder.h"
@@ -163,6 +164,7 @@ struct Candidate {
     std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
     std::size_t nodes_with_box = 0;
     int obtained_levels = 0;
+    ModelCost cost;
     std::unique_ptr<DrawableModel> drawable;
     double seconds = 0;  // building it and making it drawable
 };
@@ -205,7 +207,7 @@ std::string eta_text(double seconds) {
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
     for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "page_size",
-                          "nodes_with_box"})
+                          "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes"})
         columns.push_back(c);
     columns.insert(columns.end(), config.metrics.begin(), config.metrics.end());
     return columns;
@@ -322,6 +324,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     auto build_start = Clock::now();
                     Candidate made = make(s);
                     made.drawable = make_drawable_model(made.model);
+                    made.cost = model_cost(made.model);
                     made.seconds = seconds_since(build_start);
                     report.build_seconds += made.seconds;
                     ++report.lods_built;
@@ -350,7 +353,8 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     std::to_string(counts.batches), std::to_string(std::uint64_t(c.atlas.pages) * page_texels),
                     std::to_string(c.face_texels),
                     std::to_string(c.atlas.pages), std::to_string(c.atlas.pages ? c.atlas.page_size : 0),
-                    std::to_string(c.nodes_with_box)};
+                    std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
+                    std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes())};
                 fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
                 results.rows[row.key] = join(fields);
                 timings.rows[row.key] = join({row.key, format_number(c.seconds), format_number(render_seconds),

@@ -10,19 +10,21 @@ out=out/demo
 rm -rf "$out"
 mkdir -p "$out"
 
-# Prints one row per level from `boxlod build --all-levels` output.
+# Prints one row per level from `boxlod build --all-levels` output; bytes =
+# mesh + GPU-compressed textures (README: Cost).
 level_table() {
   awk -F' = ' '
-    BEGIN { printf "%-6s %10s %10s %10s %8s %8s\n", "level", "faces", "triangles", "boxes", "pages", "size" }
+    BEGIN { printf "%-6s %10s %10s %10s %8s %8s %6s %12s\n", "level", "faces", "triangles", "boxes", "pages", "size", "draws", "bytes" }
     $1 == "faces_lod" { faces = $2 } $1 == "triangles_lod" { tris = $2 } $1 == "nodes_with_box" { boxes = $2 }
     $1 == "lod_textures" { pages = $2 } $1 == "texture_size" { size = $2 }
-    $1 == "current_level" { printf "%-6s %10s %10s %10s %8s %8s\n", $2, faces, tris, boxes, pages, size }'
+    $1 == "draw_calls_lod" { draws = $2 } $1 == "bytes_lod" { bytes = $2 }
+    $1 == "current_level" { printf "%-6s %10s %10s %10s %8s %8s %6s %12s\n", $2, faces, tris, boxes, pages, size, draws, bytes }'
 }
 
 demo_model() {  # demo_model NAME MODEL
   local name=$1 model=$2
   echo "== $name: $model"
-  "$boxlod" info "$model" | grep -E '^(nodes|nodes_with_geometry|depth|faces_original|mesh_(width|height|depth)) '
+  "$boxlod" info "$model" | grep -E '^(nodes|nodes_with_geometry|depth|faces_original|mesh_(width|height|depth)|draw_calls_original|bytes_original) '
   mkdir -p "$out/$name"
   "$boxlod" build "$model" -o "$out/$name" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
     --timings > "$out/$name/build.txt" 2>/dev/null

@@ -134,7 +134,7 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     EXPECT_EQ(csv, test::read_text(two / "frames.csv"));
     std::vector<std::string> rows = lines_of(csv);
     ASSERT_EQ(rows.size(), 6u);
-    std::string header = "frame,strategy,detail,faces,triangles,buildings";
+    std::string header = "frame,strategy,detail,faces,triangles,draw_calls,mesh_bytes,texture_bytes,texture_bytes_gpu,bytes,buildings";
     for (std::size_t c = 0; c < report.level_totals.size(); ++c) header += ",level_" + std::to_string(c);
     EXPECT_EQ(rows[0], header + ",levels_changed,psnr,ssim,flip");
     EXPECT_EQ(rows[1].rfind("0,\"distance:100,200,400\",1,", 0), 0u);
@@ -197,6 +197,26 @@ TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
     ASSERT_EQ(rows.size(), 1u + 2 * 4);
     EXPECT_EQ(rows[1].rfind("0,texel,0.5,", 0), 0u);
     EXPECT_EQ(rows[5].rfind("0,texel,2,", 0), 0u);
+}
+
+// A frame's cost: meshes and draw calls of the streets and each building at its
+// level add up; the grammar textures every building copies are paid for once, so
+// all buildings at level 0 cost what the city's own textures do.
+TEST(FlyThrough, FrameCostPaysEachSharedTextureOnce) {
+    Model city = small_city(3);
+    CityLevels levels = build_city_levels(city, tiny_frames(), false);
+    std::vector<const CostParts*> originals = {&levels.street_cost}, coarsest = {&levels.street_cost};
+    for (const BuildingLevels& building : levels.buildings) {
+        originals.push_back(&building.costs.front());
+        coarsest.push_back(&building.costs.back());
+        EXPECT_EQ(building.costs.size(), building.triangles.size());
+    }
+    ModelCost all = combined_cost(originals), whole = model_cost(city);
+    EXPECT_EQ(all.texture_bytes, whole.texture_bytes);
+    EXPECT_EQ(all.texture_bytes_gpu, whole.texture_bytes_gpu);
+    EXPECT_EQ(all.mesh_bytes, whole.mesh_bytes);
+    EXPECT_GE(all.draw_calls, whole.draw_calls);
+    EXPECT_LT(combined_cost(coarsest).mesh_bytes, all.mesh_bytes);
 }
 
 // With keep_small_subtrees no level of a building draws more faces than its original

@@ -3,6 +3,7 @@
 #include "lod_scene.h"
 #include "renderer/input_error.h"
 #include "test_support.h"
+#include "toolkit/cost.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 
@@ -38,6 +39,7 @@ struct SmallSweep {
     std::filesystem::path folder;
     SweepConfig config;
     MeshCounts original;
+    ModelCost original_cost;
 };
 
 SmallSweep small_sweep(const std::string& name, const std::string& extra = "") {
@@ -45,6 +47,7 @@ SmallSweep small_sweep(const std::string& name, const std::string& extra = "") {
     s.folder = test::scratch_folder(name);
     Model building = test::lod_test_building();
     s.original = mesh_counts(building);
+    s.original_cost = model_cost(building);
     save_model(building, (s.folder / "building.glb").string());
     test::write_text(s.folder / "sweep.txt",
                      "models = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, 4\nviews = +X+Y+Z, -Z\n"
@@ -134,7 +137,12 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
         auto original = row_of(t, std::string("building.glb,simplification,-,-,0,") + view);
         EXPECT_EQ(original[triangles], std::to_string(s.original.triangles));
         EXPECT_EQ(original[ssim], "1");
+        // Every row states its cost; simplification at level 0 is the original, textures and all.
+        EXPECT_EQ(original[column(t, "bytes")], std::to_string(s.original_cost.bytes()));
+        EXPECT_EQ(original[column(t, "draw_calls")], std::to_string(s.original_cost.draw_calls));
         auto box = row_of(t, std::string("building.glb,top-down,expanded,linear,4,") + view);
+        EXPECT_GT(std::stoull(box[column(t, "texture_bytes_gpu")]), 0u);
+        EXPECT_EQ(box[column(t, "draw_calls")], "1");
         auto simplified = row_of(t, std::string("building.glb,simplification,-,-,4,") + view);
         EXPECT_LE(std::stoul(simplified[triangles]), std::stoul(box[triangles]));
         EXPECT_GT(std::stoul(simplified[triangles]), 0u);
@@ -142,6 +150,8 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
         EXPECT_EQ(simplified[texels], "0");
         auto single = row_of(t, std::string("building.glb,single-box,-,-,4,") + view);
         EXPECT_EQ(single[faces], "6");
+        EXPECT_EQ(single[column(t, "texture_bytes")], "0");
+        EXPECT_EQ(single[column(t, "mesh_bytes")], single[column(t, "bytes")]);
         EXPECT_LT(std::stod(single[ssim]), 1);
     }
 }

@@ -2,6 +2,7 @@
 
 #include "renderer/input_error.h"
 #include "renderer/parallel.h"
+#include "toolkit/cost.h"
 #include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 
@@ -74,6 +75,7 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes);
     session->times.levels = seconds_since(start);
     if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
+    session->original_cost = model_cost(model);
     return session;
 }
 
@@ -239,9 +241,11 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         float_entry("mesh_depth", size.z()),
         number_entry("lod_textures", lod.atlas.pages),
         number_entry("texture_size", lod.atlas.pages ? lod.atlas.page_size : 0),
-        number_entry("obtained_levels", obtained),
-        number_entry("current_level", current_level),
     };
+    for (const KeyValues& cost : {cost_entries(model_cost(out), "_lod"), cost_entries(session.original_cost, "_original")})
+        lod.statistics.insert(lod.statistics.end(), cost.begin(), cost.end());
+    lod.statistics.push_back(number_entry("obtained_levels", obtained));
+    lod.statistics.push_back(number_entry("current_level", current_level));  // last: it closes a level's block
     return lod;
 }
 

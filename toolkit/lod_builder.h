@@ -4,6 +4,7 @@
 #pragma once
 #include "toolkit/atlas.h"
 #include "toolkit/bake.h"
+#include "toolkit/cost.h"
 #include "toolkit/cut.h"
 #include "toolkit/key_values.h"
 #include "toolkit/parameters.h"
@@ -27,6 +28,7 @@ struct LodSession {
     LevelValues levels;
     TextureSizing sizing;
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
+    ModelCost original_cost;
     LodTimes times;
 };
 

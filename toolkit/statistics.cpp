@@ -1,5 +1,7 @@
 #include "toolkit/statistics.h"
 
+#include "toolkit/cost.h"
+
 #include <set>
 
 namespace boxlod {
@@ -23,7 +25,7 @@ KeyValues model_statistics(const Model& model) {
     for (const Node& node : model.nodes) with_geometry += node.has_geometry();
     MeshCounts counts = mesh_counts(model);
     Eigen::Vector3f size = model_bounds(model).size();
-    return {
+    KeyValues entries = {
         number_entry("nodes", double(model.nodes.size())),
         number_entry("nodes_with_geometry", double(with_geometry)),
         number_entry("depth", tree_depth(model)),
@@ -35,6 +37,9 @@ KeyValues model_statistics(const Model& model) {
         float_entry("mesh_height", size.y()),
         float_entry("mesh_depth", size.z()),
     };
+    KeyValues cost = cost_entries(model_cost(model), "_original");
+    entries.insert(entries.end(), cost.begin(), cost.end());
+    return entries;
 }
 
 }  // namespace boxlod

@@ -1,0 +1,139 @@
+#include "toolkit/cost.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace boxlod {
+namespace {
+
+// The sum of `per_level(w, h)` over a full mip chain: level i is
+// max(1, w >> i) x max(1, h >> i), down to 1 x 1 (glTF 2.0 / OpenGL mipmapping).
+template <typename PerLevel>
+std::uint64_t sum_over_mip_chain(int width, int height, PerLevel per_level) {
+    std::uint64_t sum = 0;
+    for (std::uint64_t w = std::uint64_t(std::max(width, 0)), h = std::uint64_t(std::max(height, 0)); w > 0 && h > 0;) {
+        sum += per_level(w, h);
+        if (w == 1 && h == 1) break;
+        w = std::max<std::uint64_t>(1, w / 2);
+        h = std::max<std::uint64_t>(1, h / 2);
+    }
+    return sum;
+}
+
+// The role a material gives a texture decides its GPU format.
+enum class Role { color, normal, height };
+
+bool has_partial_alpha(const Image8& image) {
+    if (image.channels != 4 && image.channels != 2) return false;
+    for (std::size_t i = std::size_t(image.channels - 1); i < image.pixels.size(); i += std::size_t(image.channels))
+        if (image.pixels[i] != 0 && image.pixels[i] != 255) return true;
+    return false;
+}
+
+GpuFormat gpu_format(const Texture& texture, Role role) {
+    switch (role) {
+        case Role::normal: return GpuFormat::bc5;  // x and y; z is rebuilt in the shader
+        case Role::height: return GpuFormat::bc4;
+        case Role::color: break;
+    }
+    // BC1 keeps 1-bit alpha (cut-outs, baked coverage); anything in between needs BC7.
+    return has_partial_alpha(texture.image) ? GpuFormat::bc7 : GpuFormat::bc1;
+}
+
+std::uint64_t uncompressed_bytes(const Texture& texture) {
+    if (!texture.image16.empty())
+        return mip_chain_texels(texture.image16.width, texture.image16.height) * 2 * std::uint64_t(texture.image16.channels);
+    return mip_chain_texels(texture.image.width, texture.image.height) * std::uint64_t(texture.image.channels);
+}
+
+// 64-bit FNV-1a (Fowler, Noll, Vo) over the size, channel format and texels.
+std::uint64_t digest(const Texture& texture) {
+    std::uint64_t hash = 14695981039346656037ull;
+    auto add = [&](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    };
+    const bool wide = !texture.image16.empty();
+    const int header[4] = {wide, wide ? texture.image16.width : texture.image.width,
+                           wide ? texture.image16.height : texture.image.height,
+                           wide ? texture.image16.channels : texture.image.channels};
+    add(header, sizeof header);
+    if (wide) add(texture.image16.pixels.data(), texture.image16.pixels.size() * 2);
+    else add(texture.image.pixels.data(), texture.image.pixels.size());
+    return hash;
+}
+
+}  // namespace
+
+std::uint64_t mip_chain_texels(int width, int height) {
+    return sum_over_mip_chain(width, height, [](std::uint64_t w, std::uint64_t h) { return w * h; });
+}
+
+std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format) {
+    const std::uint64_t block_bytes = format == GpuFormat::bc1 || format == GpuFormat::bc4 ? 8 : 16;
+    return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) { return (w + 3) / 4 * ((h + 3) / 4) * block_bytes; });
+}
+
+CostParts cost_parts(const Model& model) {
+    CostParts parts;
+    std::set<int> materials;
+    for (const Node& node : model.nodes)
+        for (const Primitive& p : node.primitives) {
+            materials.insert(p.material);
+            // The export writes float positions, normals, uvs and tangents and 32-bit indices (gltf_io.cpp).
+            std::uint64_t vertex_bytes = 12 + (p.normals.empty() ? 0 : 12) + (p.uvs.empty() ? 0 : 8) + (p.tangents.empty() ? 0 : 16);
+            parts.mesh_bytes += vertex_bytes * p.positions.size() + 4 * std::uint64_t(p.indices.size());
+        }
+    parts.draw_calls = materials.size();
+
+    std::map<int, Role> roles;  // each texture once, in the role of the first material that uses it
+    for (int m : materials) {
+        if (m < 0 || m >= int(model.materials.size())) continue;
+        const Material& material = model.materials[std::size_t(m)];
+        for (auto [index, role] : {std::pair{material.base_color_texture, Role::color}, std::pair{material.normal_texture, Role::normal},
+                                   std::pair{material.height_texture, Role::height}})
+            if (index >= 0 && index < int(model.textures.size())) roles.emplace(index, role);
+    }
+    for (auto [index, role] : roles) {
+        const Texture& texture = model.textures[std::size_t(index)];
+        const bool wide = !texture.image16.empty();
+        const int width = wide ? texture.image16.width : texture.image.width;
+        const int height = wide ? texture.image16.height : texture.image.height;
+        parts.textures.push_back({digest(texture), uncompressed_bytes(texture),
+                                  block_compressed_bytes(width, height, gpu_format(texture, role))});
+    }
+    return parts;
+}
+
+ModelCost combined_cost(const std::vector<const CostParts*>& parts) {
+    ModelCost cost;
+    std::set<std::uint64_t> paid;
+    for (const CostParts* part : parts) {
+        cost.draw_calls += part->draw_calls;
+        cost.mesh_bytes += part->mesh_bytes;
+        for (const TextureCost& texture : part->textures)
+            if (paid.insert(texture.digest).second) {
+                cost.texture_bytes += texture.bytes;
+                cost.texture_bytes_gpu += texture.bytes_gpu;
+            }
+    }
+    return cost;
+}
+
+ModelCost model_cost(const Model& model) {
+    CostParts parts = cost_parts(model);
+    return combined_cost({&parts});
+}
+
+KeyValues cost_entries(const ModelCost& cost, const std::string& suffix) {
+    return {
+        number_entry("draw_calls" + suffix, double(cost.draw_calls)),
+        number_entry("mesh_bytes" + suffix, double(cost.mesh_bytes)),
+        number_entry("texture_bytes" + suffix, double(cost.texture_bytes)),
+        number_entry("texture_bytes_gpu" + suffix, double(cost.texture_bytes_gpu)),
+        number_entry("bytes" + suffix, double(cost.bytes())),
+    };
+}
+
+}  // namespace boxlod
