@@ -206,7 +206,7 @@ std::string eta_text(double seconds) {
 
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
-    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "page_size",
+    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
                           "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes"})
         columns.push_back(c);
     columns.insert(columns.end(), config.metrics.begin(), config.metrics.end());
@@ -346,13 +346,14 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                 report.metric_seconds += metric_seconds;
 
                 MeshCounts counts = mesh_counts(c.model);
-                std::uint64_t page_texels = std::uint64_t(c.atlas.page_size) * std::uint64_t(c.atlas.page_size);
+                int largest_page = 0;
+                for (const Eigen::Vector2i& page : c.atlas.pages) largest_page = std::max({largest_page, page.x(), page.y()});
                 std::vector<std::string> fields = {
                     row.key, std::to_string(c.obtained_levels),
                     std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
-                    std::to_string(counts.batches), std::to_string(std::uint64_t(c.atlas.pages) * page_texels),
+                    std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
                     std::to_string(c.face_texels),
-                    std::to_string(c.atlas.pages), std::to_string(c.atlas.pages ? c.atlas.page_size : 0),
+                    std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
                     std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
                     std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes())};
                 fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());

@@ -6,66 +6,105 @@ using namespace boxlod;
 
 namespace {
 
-std::vector<Eigen::Vector2i> faces(int count, int seed) {
+std::vector<Eigen::Vector2i> faces(int count, int seed, int max_width = 60, int max_height = 40) {
     std::vector<Eigen::Vector2i> sizes;
     std::uint32_t state = std::uint32_t(seed) * 2654435761u + 1;
     for (int i = 0; i < count; ++i) {
         state = state * 1664525u + 1013904223u;
-        int w = 1 + int(state >> 24) % 60;
+        int w = 1 + int(state >> 24) % max_width;
         state = state * 1664525u + 1013904223u;
-        int h = 1 + int(state >> 24) % 40;
+        int h = 1 + int(state >> 24) % max_height;
         sizes.emplace_back(w, h);
     }
     return sizes;
 }
 
-// No overlap (gutters included), inside the page, gutter kept from the page border.
-void expect_valid(const Atlas& atlas, const std::vector<Eigen::Vector2i>& sizes, int gutter) {
+bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+// Power-of-two pages within the limits; every face inside its page; two faces on a
+// page at least two gutters apart (a face may touch the page's border).
+void expect_valid(const Atlas& atlas, const std::vector<Eigen::Vector2i>& sizes, int min_size, int max_size, int gutter) {
     ASSERT_EQ(atlas.placements.size(), sizes.size());
-    EXPECT_EQ(atlas.page_size & (atlas.page_size - 1), 0) << "page size is a power of two";
+    for (const Eigen::Vector2i& page : atlas.pages) {
+        EXPECT_TRUE(power_of_two(page.x()) && power_of_two(page.y())) << page.transpose();
+        EXPECT_TRUE(page.minCoeff() >= min_size && page.maxCoeff() <= max_size) << page.transpose();
+    }
     for (std::size_t i = 0; i < sizes.size(); ++i) {
         const AtlasPlacement& a = atlas.placements[i];
         ASSERT_GE(a.page, 0);
-        ASSERT_LT(a.page, atlas.pages);
-        EXPECT_GE(a.x - gutter, 0);
-        EXPECT_GE(a.y - gutter, 0);
-        EXPECT_LE(a.x + sizes[i].x() + gutter, atlas.page_size);
-        EXPECT_LE(a.y + sizes[i].y() + gutter, atlas.page_size);
+        ASSERT_LT(a.page, int(atlas.pages.size()));
+        const Eigen::Vector2i page = atlas.pages[std::size_t(a.page)], block = placed_size(sizes[i], a);
+        EXPECT_GE(a.x, 0);
+        EXPECT_GE(a.y, 0);
+        EXPECT_LE(a.x + block.x(), page.x());
+        EXPECT_LE(a.y + block.y(), page.y());
         for (std::size_t j = i + 1; j < sizes.size(); ++j) {
             const AtlasPlacement& b = atlas.placements[j];
             if (a.page != b.page) continue;
-            bool apart = a.x + sizes[i].x() + 2 * gutter <= b.x || b.x + sizes[j].x() + 2 * gutter <= a.x ||
-                         a.y + sizes[i].y() + 2 * gutter <= b.y || b.y + sizes[j].y() + 2 * gutter <= a.y;
+            const Eigen::Vector2i other = placed_size(sizes[j], b);
+            bool apart = a.x + block.x() + 2 * gutter <= b.x || b.x + other.x() + 2 * gutter <= a.x ||
+                         a.y + block.y() + 2 * gutter <= b.y || b.y + other.y() + 2 * gutter <= a.y;
             ASSERT_TRUE(apart) << "faces " << i << " and " << j << " closer than two gutters";
         }
     }
 }
 
+double occupancy(const Atlas& atlas, const std::vector<Eigen::Vector2i>& sizes) {
+    double texels = 0;
+    for (const Eigen::Vector2i& s : sizes) texels += double(s.x()) * s.y();
+    return texels / double(page_texels(atlas));
+}
+
 }  // namespace
 
-TEST(Atlas, SmallSetFitsOnePageOfTheSmallestSize) {
+TEST(Atlas, SmallSetFitsSmallPages) {
     std::vector<Eigen::Vector2i> sizes = faces(10, 1);
     Atlas atlas = pack_atlas(sizes, 64, 4096, 2);
-    expect_valid(atlas, sizes, 2);
-    EXPECT_EQ(atlas.pages, 1);
-    EXPECT_LE(atlas.page_size, 256);
+    expect_valid(atlas, sizes, 64, 4096, 2);
+    EXPECT_LE(page_texels(atlas), 128u * 128u);
 }
 
-TEST(Atlas, PageSizeDoublesUntilOnePageHoldsEverything) {
-    std::vector<Eigen::Vector2i> sizes = faces(300, 2);
-    Atlas atlas = pack_atlas(sizes, 64, 4096, 2);
-    expect_valid(atlas, sizes, 2);
-    EXPECT_EQ(atlas.pages, 1);
-    // Half the size would not have held them in one page.
-    EXPECT_GT(pack_atlas(sizes, atlas.page_size / 2, atlas.page_size / 2, 2).pages, 1);
+TEST(Atlas, PagesAreAnyPowerOfTwoRectangle) {
+    // One 200x50 face: 256x64, not a square 256x256.
+    std::vector<Eigen::Vector2i> sizes = {{200, 50}};
+    Atlas atlas = pack_atlas(sizes, 32, 1024, 2);
+    expect_valid(atlas, sizes, 32, 1024, 2);
+    ASSERT_EQ(atlas.pages.size(), 1u);
+    EXPECT_EQ(atlas.pages[0], Eigen::Vector2i(256, 64));
 }
 
-TEST(Atlas, AtTheLargestSizeAsManyPagesAsNeeded) {
+TEST(Atlas, TallFacesLieDownWhenThatPacksTighter) {
+    // A wide and a tall strip: as baked they need 142 rows or columns (a 256x128
+    // page); the tall one lying down, both stack into 128x64.
+    std::vector<Eigen::Vector2i> sizes = {{120, 20}, {20, 120}};
+    Atlas atlas = pack_atlas(sizes, 16, 1024, 2);
+    expect_valid(atlas, sizes, 16, 1024, 2);
+    ASSERT_EQ(atlas.pages.size(), 1u);
+    EXPECT_EQ(atlas.pages[0], Eigen::Vector2i(128, 64));
+    EXPECT_FALSE(atlas.placements[0].rotated);
+    EXPECT_TRUE(atlas.placements[1].rotated);
+    EXPECT_EQ(placed_size(sizes[1], atlas.placements[1]), Eigen::Vector2i(120, 20));
+}
+
+TEST(Atlas, AtTheLargestSizeAsManyPagesAsNeededThenSmallerOnes) {
     std::vector<Eigen::Vector2i> sizes = faces(300, 3);
     Atlas atlas = pack_atlas(sizes, 32, 128, 2);
-    expect_valid(atlas, sizes, 2);
-    EXPECT_EQ(atlas.page_size, 128);
-    EXPECT_GT(atlas.pages, 3);
+    expect_valid(atlas, sizes, 32, 128, 2);
+    EXPECT_GT(atlas.pages.size(), 3u);
+    EXPECT_EQ(atlas.pages.front(), Eigen::Vector2i(128, 128));
+    EXPECT_LT(atlas.pages.back().prod(), 128 * 128);  // the rest on a smaller page
+}
+
+// Occupancy on fixed inputs (face texels / page texels) with the 2-texel gutter:
+// many small faces (where the gutters alone take a quarter), a few large ones, a mix.
+TEST(Atlas, OccupancyOnFixedInputs) {
+    std::vector<Eigen::Vector2i> many = faces(400, 5), large = faces(12, 6, 400, 300), mix = faces(200, 7, 200, 120);
+    const std::vector<std::pair<std::vector<Eigen::Vector2i>, double>> cases = {{many, 0.70}, {large, 0.70}, {mix, 0.78}};
+    for (const auto& [sizes, at_least] : cases) {
+        Atlas atlas = pack_atlas(sizes, 64, 4096, 2);
+        expect_valid(atlas, sizes, 64, 4096, 2);
+        EXPECT_GE(occupancy(atlas, sizes), at_least) << sizes.size() << " faces on " << atlas.pages.size() << " pages";
+    }
 }
 
 TEST(Atlas, PackingIsDeterministic) {
@@ -76,11 +115,10 @@ TEST(Atlas, PackingIsDeterministic) {
         EXPECT_EQ(a.placements[i].page, b.placements[i].page);
         EXPECT_EQ(a.placements[i].x, b.placements[i].x);
         EXPECT_EQ(a.placements[i].y, b.placements[i].y);
+        EXPECT_EQ(a.placements[i].rotated, b.placements[i].rotated);
     }
 }
 
-TEST(Atlas, NoFacesGiveNoPages) {
-    Atlas atlas = pack_atlas({}, 64, 512, 2);
-    EXPECT_EQ(atlas.pages, 0);
-    EXPECT_EQ(atlas.page_size, 64);
+TEST(Atlas, AFaceLargerThanTheLargestPageIsRefused) {
+    EXPECT_THROW(pack_atlas({{300, 10}}, 64, 256, 2), std::invalid_argument);
 }

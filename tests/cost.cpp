@@ -49,10 +49,12 @@ TEST(Cost, HandComputedQuad) {
     EXPECT_EQ(cost.draw_calls, 1u);
     EXPECT_EQ(cost.mesh_bytes, 4u * (12 + 12 + 8) + 6 * 4);
     // Colour RGBA8 8x8 + normal RGB8 4x4 + height 16-bit 4x4, each with its mips; the unused texture is not paid.
-    EXPECT_EQ(cost.texture_bytes, 4u * (64 + 16 + 4 + 1) + 3 * (16 + 4 + 1) + 2 * (16 + 4 + 1));
+    EXPECT_EQ(cost.texture_bytes, 4u * (64 + 16 + 4 + 1) + 3 * (16 + 4 + 1) + 2 * (16 + 4 + 1));  // RGBA: one texel is clear
     // Cut-out alpha: BC1 (4 + 1 + 1 + 1 blocks); BC5 and BC4 for 4x4, 2x2, 1x1.
     EXPECT_EQ(cost.texture_bytes_gpu, 7u * 8 + 3 * 16 + 3 * 8);
     EXPECT_EQ(cost.bytes(), cost.mesh_bytes + cost.texture_bytes_gpu);
+    // An opaque colour map is written RGB8.
+    EXPECT_EQ(model_cost(textured_quad(255)).texture_bytes, cost.texture_bytes - (64 + 16 + 4 + 1));
 }
 
 TEST(Cost, PartialAlphaNeedsBc7) {
@@ -83,12 +85,12 @@ TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     ModelCost cost = model_cost(lod.model);
     EXPECT_EQ(value_of(lod.statistics, "mesh_bytes_lod"), std::to_string(cost.mesh_bytes));
     EXPECT_EQ(value_of(lod.statistics, "bytes_original"), std::to_string(model_cost(model).bytes()));
-    const std::uint64_t page = std::uint64_t(lod.atlas.page_size);
-    ASSERT_GT(lod.atlas.pages, 0);
-    // Per page: RGBA8 colour, RGB8 normal, 16-bit height, each with mips; plus the kept parts' bricks (32^2 RGBA8).
-    const std::uint64_t page_bytes = mip_chain_texels(int(page), int(page)) * (4 + 3 + 2);
-    EXPECT_GE(cost.texture_bytes, std::uint64_t(lod.atlas.pages) * page_bytes);
-    EXPECT_LE(cost.texture_bytes, std::uint64_t(lod.atlas.pages) * page_bytes + mip_chain_texels(32, 32) * 4);
+    ASSERT_FALSE(lod.atlas.pages.empty());
+    // Per page: RGBA8 colour, RGB8 normal, 16-bit height, each with mips; plus the kept parts' bricks (32^2 RGB8).
+    std::uint64_t page_bytes = 0;
+    for (const Eigen::Vector2i& page : lod.atlas.pages) page_bytes += mip_chain_texels(page.x(), page.y()) * (4 + 3 + 2);
+    EXPECT_GE(cost.texture_bytes, page_bytes);
+    EXPECT_LE(cost.texture_bytes, page_bytes + mip_chain_texels(32, 32) * 3);
 
     auto folder = test::scratch_folder("cost_export");
     export_lod(std::move(lod), *session, folder.string(), "house", Image8(4, 4, 3, 0), 1);

@@ -9,58 +9,135 @@
 namespace boxlod {
 namespace {
 
-// Packs as many of `faces` as fit into one page; returns the ones left over.
-std::vector<int> pack_page(const std::vector<int>& faces, const std::vector<Eigen::Vector2i>& sizes, int page_size,
-                           int gutter, int page, std::vector<AtlasPlacement>& placements) {
-    std::vector<stbrp_node> nodes(static_cast<std::size_t>(page_size));
+// A face's block as it will be packed: its size, turned or not.
+struct Block {
+    int face = 0;
+    Eigen::Vector2i size;
+    bool rotated = false;
+};
+
+// Packs as many blocks as fit into a width x height page (skyline, best fit);
+// returns the ones left over. Blocks are padded by the gutter on every side and
+// the page by the gutter around it, so faces may touch the page's border.
+std::vector<Block> pack_page(const std::vector<Block>& blocks, Eigen::Vector2i page_size, int gutter, int page,
+                             std::vector<AtlasPlacement>* placements) {
+    const int width = page_size.x() + 2 * gutter, height = page_size.y() + 2 * gutter;
+    std::vector<stbrp_node> nodes(static_cast<std::size_t>(width));
     stbrp_context context;
-    stbrp_init_target(&context, page_size, page_size, nodes.data(), int(nodes.size()));
-    std::vector<stbrp_rect> rects(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i) {
+    stbrp_init_target(&context, width, height, nodes.data(), int(nodes.size()));
+    stbrp_setup_heuristic(&context, STBRP_HEURISTIC_Skyline_BF_sortHeight);
+    std::vector<stbrp_rect> rects(blocks.size());
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
         rects[i].id = int(i);
-        rects[i].w = sizes[faces[i]].x() + 2 * gutter;
-        rects[i].h = sizes[faces[i]].y() + 2 * gutter;
+        rects[i].w = blocks[i].size.x() + 2 * gutter;
+        rects[i].h = blocks[i].size.y() + 2 * gutter;
     }
     stbrp_pack_rects(&context, rects.data(), int(rects.size()));
-    std::vector<int> left;
+    std::vector<Block> left;
     for (const stbrp_rect& rect : rects) {  // stb keeps the input order on return
-        int face = faces[rect.id];
-        if (rect.was_packed) placements[face] = {page, rect.x + gutter, rect.y + gutter};
-        else left.push_back(face);
+        const Block& block = blocks[std::size_t(rect.id)];
+        if (!rect.was_packed) left.push_back(block);
+        else if (placements) (*placements)[std::size_t(block.face)] = {page, rect.x, rect.y, block.rotated};
     }
     return left;
 }
 
+bool fits(const std::vector<Block>& blocks, Eigen::Vector2i page_size, int gutter) {
+    return pack_page(blocks, page_size, gutter, 0, nullptr).empty();
+}
+
+std::uint64_t area(Eigen::Vector2i size) { return std::uint64_t(size.x()) * std::uint64_t(size.y()); }
+
+// Every power-of-two page size between the limits, smallest area first; of equal
+// areas the squarer first, then the wider.
+std::vector<Eigen::Vector2i> page_sizes(int min_texture_size, int max_texture_size) {
+    std::vector<Eigen::Vector2i> sizes;
+    for (int w = min_texture_size; w <= max_texture_size; w *= 2)
+        for (int h = min_texture_size; h <= max_texture_size; h *= 2) sizes.emplace_back(w, h);
+    std::stable_sort(sizes.begin(), sizes.end(), [](Eigen::Vector2i a, Eigen::Vector2i b) {
+        if (area(a) != area(b)) return area(a) < area(b);
+        if (std::abs(a.x() - a.y()) != std::abs(b.x() - b.y())) return std::abs(a.x() - a.y()) < std::abs(b.x() - b.y());
+        return a.x() > b.x();
+    });
+    return sizes;
+}
+
+// Pages holding all of `left` that fits one page of the largest size: the
+// smallest page holding it, or, when that page would be less than 90 % used, the
+// largest page of smaller area filled first and the rest packed the same way;
+// whichever has fewer texels, so a few more pages (draw calls) buy a tenth of the
+// texels or more. Appends the pages to `atlas`.
+void pack_rest(std::vector<Block> left, const std::vector<Eigen::Vector2i>& sizes, int gutter, Atlas& atlas) {
+    std::uint64_t face_texels = 0;
+    for (const Block& block : left) face_texels += area(block.size);
+    // A page of less area than the faces cannot hold them: only the others are tried.
+    auto holding = std::find_if(sizes.begin(), sizes.end(),
+                                [&](Eigen::Vector2i s) { return area(s) >= face_texels && fits(left, s, gutter); });
+    Atlas alone = atlas;
+    pack_page(left, *holding, gutter, int(alone.pages.size()), &alone.placements);
+    alone.pages.push_back(*holding);
+    // The squarest page of the largest area below the holding page's (sizes are sorted by area, squarer first).
+    auto below = std::find_if(std::make_reverse_iterator(holding), sizes.rend(),
+                              [&](Eigen::Vector2i s) { return area(s) < area(*holding); });
+    auto smaller = below == sizes.rend() ? sizes.end()
+                                         : std::find_if(sizes.begin(), holding, [&](Eigen::Vector2i s) { return area(s) == area(*below); });
+    if (double(face_texels) < 0.9 * double(area(*holding)) && smaller != sizes.end()) {
+        Atlas split = atlas;
+        std::vector<Block> rest = pack_page(left, *smaller, gutter, int(split.pages.size()), &split.placements);
+        split.pages.push_back(*smaller);
+        if (rest.size() < left.size()) {
+            if (!rest.empty()) pack_rest(std::move(rest), sizes, gutter, split);
+            if (double(page_texels(split) - page_texels(atlas)) < 0.9 * double(area(*holding))) {
+                atlas = std::move(split);
+                return;
+            }
+        }
+    }
+    atlas = std::move(alone);
+}
+
+// Full pages at the largest size while the rest does not fit one, then pack_rest.
+Atlas pack_blocks(std::vector<Block> left, int min_texture_size, int max_texture_size, int gutter, std::size_t faces) {
+    Atlas atlas;
+    atlas.placements.resize(faces);
+    const std::vector<Eigen::Vector2i> sizes = page_sizes(min_texture_size, max_texture_size);
+    while (!left.empty() && !fits(left, sizes.back(), gutter)) {
+        left = pack_page(left, sizes.back(), gutter, int(atlas.pages.size()), &atlas.placements);
+        atlas.pages.push_back(sizes.back());
+    }
+    if (!left.empty()) pack_rest(std::move(left), sizes, gutter, atlas);
+    return atlas;
+}
+
 }  // namespace
 
-Atlas pack_atlas(const std::vector<Eigen::Vector2i>& sizes, int min_texture_size, int max_texture_size, int gutter) {
-    Atlas atlas;
-    atlas.placements.resize(sizes.size());
-    for (const Eigen::Vector2i& s : sizes)
-        if (s.x() + 2 * gutter > max_texture_size || s.y() + 2 * gutter > max_texture_size)
+Eigen::Vector2i placed_size(const Eigen::Vector2i& face_size, const AtlasPlacement& placement) {
+    return placement.rotated ? Eigen::Vector2i(face_size.y(), face_size.x()) : face_size;
+}
+
+std::uint64_t page_texels(const Atlas& atlas) {
+    std::uint64_t texels = 0;
+    for (const Eigen::Vector2i& page : atlas.pages) texels += area(page);
+    return texels;
+}
+
+Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter) {
+    for (const Eigen::Vector2i& s : face_sizes)
+        if (s.x() > max_texture_size || s.y() > max_texture_size)
             throw std::invalid_argument("pack_atlas: a face is larger than the largest page");
-    // Tallest first (ties: widest, then input order) packs tightly and never depends on anything else.
-    std::vector<int> order(sizes.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        if (sizes[a].y() != sizes[b].y()) return sizes[a].y() > sizes[b].y();
-        return sizes[a].x() > sizes[b].x();
-    });
-    for (int size = min_texture_size;; size *= 2) {
-        atlas.page_size = std::min(size, max_texture_size);
-        bool at_max = atlas.page_size >= max_texture_size;
-        bool fits = std::all_of(order.begin(), order.end(), [&](int face) {
-            return sizes[face].x() + 2 * gutter <= atlas.page_size && sizes[face].y() + 2 * gutter <= atlas.page_size;
-        });
-        if (!fits) continue;
-        atlas.pages = 0;
-        std::vector<int> left = order;
-        while (!left.empty() && (atlas.pages == 0 || at_max)) {
-            left = pack_page(left, sizes, atlas.page_size, gutter, atlas.pages, atlas.placements);
-            ++atlas.pages;
-        }
-        if (left.empty()) return atlas;  // one page, or the largest size with as many pages as needed
+    // Two layouts, keeping the one with fewer page texels (ties: as baked):
+    // faces as baked, and every face lying down (wider than tall), which lets
+    // the skyline packer stack strips.
+    std::vector<Block> as_baked, lying;
+    for (std::size_t i = 0; i < face_sizes.size(); ++i) {
+        const Eigen::Vector2i s = face_sizes[i];
+        as_baked.push_back({int(i), s, false});
+        const bool turn = s.y() > s.x();
+        lying.push_back({int(i), turn ? Eigen::Vector2i(s.y(), s.x()) : s, turn});
     }
+    Atlas a = pack_blocks(as_baked, min_texture_size, max_texture_size, gutter, face_sizes.size());
+    Atlas b = pack_blocks(lying, min_texture_size, max_texture_size, gutter, face_sizes.size());
+    return page_texels(b) < page_texels(a) ? b : a;
 }
 
 }  // namespace boxlod

@@ -24,10 +24,11 @@ std::uint64_t sum_over_mip_chain(int width, int height, PerLevel per_level) {
 // The role a material gives a texture decides its GPU format.
 enum class Role { color, normal, height };
 
-bool has_partial_alpha(const Image8& image) {
+// Whether any texel's alpha is below 255 (`partial`: strictly between 0 and 255).
+bool has_alpha(const Image8& image, bool partial = false) {
     if (image.channels != 4 && image.channels != 2) return false;
     for (std::size_t i = std::size_t(image.channels - 1); i < image.pixels.size(); i += std::size_t(image.channels))
-        if (image.pixels[i] != 0 && image.pixels[i] != 255) return true;
+        if (image.pixels[i] != 255 && (!partial || image.pixels[i] != 0)) return true;
     return false;
 }
 
@@ -38,30 +39,15 @@ GpuFormat gpu_format(const Texture& texture, Role role) {
         case Role::color: break;
     }
     // BC1 keeps 1-bit alpha (cut-outs, baked coverage); anything in between needs BC7.
-    return has_partial_alpha(texture.image) ? GpuFormat::bc7 : GpuFormat::bc1;
+    return has_alpha(texture.image, true) ? GpuFormat::bc7 : GpuFormat::bc1;
 }
 
-std::uint64_t uncompressed_bytes(const Texture& texture) {
-    if (!texture.image16.empty())
-        return mip_chain_texels(texture.image16.width, texture.image16.height) * 2 * std::uint64_t(texture.image16.channels);
-    return mip_chain_texels(texture.image.width, texture.image.height) * std::uint64_t(texture.image.channels);
-}
-
-// 64-bit FNV-1a (Fowler, Noll, Vo) over the size, channel format and texels.
-std::uint64_t digest(const Texture& texture) {
-    std::uint64_t hash = 14695981039346656037ull;
-    auto add = [&](const void* data, std::size_t size) {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-    };
-    const bool wide = !texture.image16.empty();
-    const int header[4] = {wide, wide ? texture.image16.width : texture.image.width,
-                           wide ? texture.image16.height : texture.image.height,
-                           wide ? texture.image16.channels : texture.image.channels};
-    add(header, sizeof header);
-    if (wide) add(texture.image16.pixels.data(), texture.image16.pixels.size() * 2);
-    else add(texture.image.pixels.data(), texture.image.pixels.size());
-    return hash;
+// At the format boxlod writes for the role: colour RGBA8 where some texel is
+// not opaque, else RGB8; normal RGB8; height 16-bit (8-bit if so stored) grey.
+std::uint64_t uncompressed_bytes(const Texture& texture, Role role) {
+    if (!texture.image16.empty()) return mip_chain_texels(texture.image16.width, texture.image16.height) * 2;
+    std::uint64_t texel_bytes = role == Role::height ? 1 : role == Role::normal ? 3 : has_alpha(texture.image) ? 4 : 3;
+    return mip_chain_texels(texture.image.width, texture.image.height) * texel_bytes;
 }
 
 }  // namespace
@@ -100,7 +86,7 @@ CostParts cost_parts(const Model& model) {
         const bool wide = !texture.image16.empty();
         const int width = wide ? texture.image16.width : texture.image.width;
         const int height = wide ? texture.image16.height : texture.image.height;
-        parts.textures.push_back({digest(texture), uncompressed_bytes(texture),
+        parts.textures.push_back({texture_digest(texture), uncompressed_bytes(texture, role),
                                   block_compressed_bytes(width, height, gpu_format(texture, role))});
     }
     return parts;
@@ -108,7 +94,7 @@ CostParts cost_parts(const Model& model) {
 
 ModelCost combined_cost(const std::vector<const CostParts*>& parts) {
     ModelCost cost;
-    std::set<std::uint64_t> paid;
+    std::set<TextureDigest> paid;
     for (const CostParts* part : parts) {
         cost.draw_calls += part->draw_calls;
         cost.mesh_bytes += part->mesh_bytes;

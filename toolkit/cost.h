@@ -31,7 +31,7 @@ ModelCost model_cost(const Model& model);
 // their levels): draw calls and meshes add up, while a texture is paid for
 // once however many models use it, known by a digest of its texels.
 struct TextureCost {
-    std::uint64_t digest = 0;  // 64-bit FNV-1a of the size, format and texels
+    TextureDigest digest;
     std::uint64_t bytes = 0, bytes_gpu = 0;
 };
 struct CostParts {

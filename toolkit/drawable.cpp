@@ -10,37 +10,18 @@ namespace boxlod {
 namespace {
 
 MipTexture decode_texture(const Texture& texture, ColorSpace space) {
-    return texture.image16.empty() ? make_texture(texture.image, space) : make_texture(texture.image16, Wrap::repeat);
+    return texture.image16.empty() ? make_texture(texture.image, space, texture.wrap) : make_texture(texture.image16, texture.wrap);
 }
 
-// A 128-bit digest of the texels and their layout: FNV-1a and a multiplicative
-// hash side by side. Equal digests are taken for equal textures (a false match
-// would need two images colliding in both, about 2^-128); keeping a copy of
-// every image to compare instead would double the memory this cache saves.
-using Digest = std::pair<std::uint64_t, std::uint64_t>;
-
-Digest texture_digest(const Texture& texture, ColorSpace space) {
-    Digest d{14695981039346656037ull, 0x243F6A8885A308D3ull};
-    auto mix = [&](const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const std::uint8_t*>(data);
-        for (std::size_t i = 0; i < bytes; ++i) {
-            d.first = (d.first ^ p[i]) * 1099511628211ull;
-            d.second = (d.second + p[i] + 1) * 0x9E3779B97F4A7C15ull;
-        }
-    };
-    int layout[] = {texture.image.width, texture.image.height, texture.image.channels, texture.image16.width,
-                    texture.image16.height, texture.image16.channels, int(space)};
-    mix(layout, sizeof layout);
-    mix(texture.image.pixels.data(), texture.image.pixels.size());
-    mix(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t));
-    return d;
-}
+// Equal digests are taken for equal textures: keeping a copy of every image to
+// compare instead would double the memory this cache saves.
+using Key = std::pair<TextureDigest, ColorSpace>;
 
 }  // namespace
 
 struct TextureCache::Entries {
     mutable std::mutex mutex;
-    std::map<Digest, std::shared_ptr<const MipTexture>> by_digest;
+    std::map<Key, std::shared_ptr<const MipTexture>> by_digest;
 };
 
 TextureCache::TextureCache() : entries_(std::make_unique<Entries>()) {}
@@ -52,7 +33,7 @@ std::size_t TextureCache::size() const {
 }
 
 std::shared_ptr<const MipTexture> TextureCache::decode(const Texture& texture, ColorSpace space) {
-    const Digest digest = texture_digest(texture, space);
+    const Key digest{texture_digest(texture), space};
     {
         std::lock_guard lock(entries_->mutex);
         auto found = entries_->by_digest.find(digest);

@@ -265,6 +265,10 @@ Model import_gltf(const std::string& path) {
     model.source = path;
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
         model.textures.push_back(convert_image(gltf.images[i], reader, "image " + std::to_string(i)));
+    for (const tinygltf::Texture& texture : gltf.textures)  // an image sampled clamped to its edge (LoD pages)
+        if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
+            texture.sampler < int(gltf.samplers.size()) && gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+            model.textures[std::size_t(texture.source)].wrap = Wrap::clamp;
     for (std::size_t i = 0; i < gltf.materials.size(); ++i) {
         const tinygltf::Material& in = gltf.materials[i];
         std::string place = "material " + std::to_string(i);
@@ -505,6 +509,16 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
         w.gltf.images.push_back(image);
         tinygltf::Texture gltf_texture;
         gltf_texture.source = int(i);
+        if (texture.wrap == Wrap::clamp) {
+            if (w.gltf.samplers.empty()) {
+                tinygltf::Sampler clamp;
+                clamp.wrapS = clamp.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+                clamp.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+                clamp.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+                w.gltf.samplers.push_back(clamp);
+            }
+            gltf_texture.sampler = 0;
+        }
         w.gltf.textures.push_back(gltf_texture);
     }
     for (const Material& material : model.materials) {

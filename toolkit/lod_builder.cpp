@@ -18,13 +18,19 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 float scene_radius(const Model& model) { return std::max(model_bounds(model).size().norm() / 2, 1e-6f); }
 
-// Copies a baked face into a page with its gutter: edge texels repeated outwards.
+// Copies a baked face into a page with its gutter: the block's edge texels
+// repeated outwards, up to the page's border.
 void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Texture& color, Texture& normal, Texture& height) {
-    int w = face.color.width, h = face.color.height;
-    for (int y = -gutter; y < h + gutter; ++y)
-        for (int x = -gutter; x < w + gutter; ++x) {
-            int sx = std::clamp(x, 0, w - 1), sy = std::clamp(y, 0, h - 1);
-            int px = at.x + x, py = at.y + y;
+    const int w = face.color.width, h = face.color.height;
+    const Eigen::Vector2i block = placed_size({w, h}, at);
+    const int page_width = color.image.width, page_height = color.image.height;
+    for (int by = -gutter; by < block.y() + gutter; ++by)
+        for (int bx = -gutter; bx < block.x() + gutter; ++bx) {
+            const int px = at.x + bx, py = at.y + by;
+            if (px < 0 || py < 0 || px >= page_width || py >= page_height) continue;
+            const int cx = std::clamp(bx, 0, block.x() - 1), cy = std::clamp(by, 0, block.y() - 1);
+            // The face texel at block texel (cx, cy); turned clockwise, the face's top row is the block's right column.
+            const int sx = at.rotated ? cy : cx, sy = at.rotated ? h - 1 - cx : cy;
             std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
             std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
             height.image16.at(px, py)[0] = face.height.at(sx, sy)[0];
@@ -32,16 +38,18 @@ void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Tex
 }
 
 // One quad per face: TL, BL, BR, TR seen from outside; uvs into the face's atlas block.
-void append_face_quad(Primitive& p, const OrientedBoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels, int page_size) {
+void append_face_quad(Primitive& p, const OrientedBoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels,
+                      const Eigen::Vector2i& page) {
     auto base = std::uint32_t(p.positions.size());
     const float corners[4][2] = {{-1, 1}, {-1, -1}, {1, -1}, {1, 1}};
     for (const auto& c : corners) {
         p.positions.push_back(f.center + f.tangent * (c[0] * f.half_width) + f.bitangent * (c[1] * f.half_height));
         p.normals.push_back(f.normal);
         if (at) {
-            float u = float(at->x + (c[0] > 0 ? texels.x() : 0)) / float(page_size);
-            float v = float(at->y + (c[1] < 0 ? texels.y() : 0)) / float(page_size);
-            p.uvs.emplace_back(u, v);
+            // The corner in face texels (x right, y down), then in the page.
+            const int x = c[0] > 0 ? texels.x() : 0, y = c[1] < 0 ? texels.y() : 0;
+            const int page_x = at->rotated ? texels.y() - y : x, page_y = at->rotated ? x : y;
+            p.uvs.emplace_back(float(at->x + page_x) / float(page.x()), float(at->y + page_y) / float(page.y()));
             p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
         }
     }
@@ -153,12 +161,13 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     int first_page_material = -1;
     if (textured) {
         first_page_material = 0;
-        for (int page = 0; page < lod.atlas.pages; ++page) {
-            int size = lod.atlas.page_size;
-            Texture color{"color_" + std::to_string(page) + ".png", Image8(size, size, 4, 0), {}};
-            Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size, size, 3, 255), {}};
+        for (int page = 0; page < int(lod.atlas.pages.size()); ++page) {
+            const Eigen::Vector2i size = lod.atlas.pages[std::size_t(page)];
+            Texture color{"color_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 4, 0), {}};
+            Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 3, 255), {}};
             for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
-            Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size, size, 1, 0)};
+            Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size.x(), size.y(), 1, 0)};
+            color.wrap = normal.wrap = height.wrap = Wrap::clamp;  // faces touch the page's border
             out.textures.push_back(std::move(color));
             out.textures.push_back(std::move(normal));
             out.textures.push_back(std::move(height));
@@ -204,13 +213,13 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
             if (!textured) {
                 Primitive& primitive = by_page[0];
                 primitive.material = first_page_material;
-                append_face_quad(primitive, faces[f], nullptr, {}, 0);
+                append_face_quad(primitive, faces[f], nullptr, {}, {});
                 continue;
             }
             const AtlasPlacement& at = lod.atlas.placements[face_index];
             Primitive& primitive = by_page[at.page];
             primitive.material = first_page_material + at.page;
-            append_face_quad(primitive, faces[f], &at, sizes[face_index], lod.atlas.page_size);
+            append_face_quad(primitive, faces[f], &at, sizes[face_index], lod.atlas.pages[std::size_t(at.page)]);
             place_face(session.baked.at(n)[f], at, gutter, out.textures[at.page * 3], out.textures[at.page * 3 + 1],
                        out.textures[at.page * 3 + 2]);
         }
@@ -218,7 +227,17 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     }
     session.times.mesh += seconds_since(start);
 
-    // Statistics (DESIGN.md: Statistics).
+    // Statistics (DESIGN.md: Statistics); occupancy = the faces' own texels / page texels.
+    int largest_page_side = 0;
+    std::string page_list;
+    for (const Eigen::Vector2i& page : lod.atlas.pages) {
+        largest_page_side = std::max({largest_page_side, page.x(), page.y()});
+        page_list += (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
+    }
+    std::uint64_t face_texels = 0;
+    if (textured)
+        for (const Eigen::Vector2i& size : sizes) face_texels += std::uint64_t(size.x()) * std::uint64_t(size.y());
+    const double occupancy = lod.atlas.pages.empty() ? 0 : double(face_texels) / double(page_texels(lod.atlas));
     MeshCounts lod_counts = mesh_counts(out), original = mesh_counts(model);
     Eigen::Vector3f size = model_bounds(model).size();
     lod.statistics = {
@@ -239,8 +258,12 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         float_entry("mesh_width", size.x()),
         float_entry("mesh_height", size.y()),
         float_entry("mesh_depth", size.z()),
-        number_entry("lod_textures", lod.atlas.pages),
-        number_entry("texture_size", lod.atlas.pages ? lod.atlas.page_size : 0),
+        number_entry("lod_textures", double(lod.atlas.pages.size())),
+        number_entry("texture_size", largest_page_side),
+        text_entry("texture_pages", page_list),
+        number_entry("page_texels", double(page_texels(lod.atlas))),
+        number_entry("face_texels", double(face_texels)),
+        number_entry("occupancy", occupancy),
     };
     for (const KeyValues& cost : {cost_entries(model_cost(out), "_lod"), cost_entries(session.original_cost, "_original")})
         lod.statistics.insert(lod.statistics.end(), cost.begin(), cost.end());

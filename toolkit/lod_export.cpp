@@ -28,7 +28,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     fs::create_directories(directory);
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     Model& model = lod.model;
-    for (int i = 0; i < 3 * lod.atlas.pages; ++i) model.textures[i].name = name + "_" + model.textures[i].name;
+    for (std::size_t i = 0; i < 3 * lod.atlas.pages.size(); ++i) model.textures[i].name = name + "_" + model.textures[i].name;
     export_gltf(model, file(".gltf"), threads);
     LodParameters parameters = session.parameters;
     parameters.current_level = lod.current_level;

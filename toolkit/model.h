@@ -3,6 +3,7 @@
 // the rule that made it.
 #pragma once
 #include "renderer/image.h"
+#include "renderer/texture.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products, rotations: used with the model everywhere
@@ -27,7 +28,14 @@ struct Texture {
     std::string name;  // file name or label; a hint for export
     Image8 image;      // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
     Image16 image16 = {};  // instead of `image`: one 16-bit channel (baked height maps)
+    Wrap wrap = Wrap::repeat;  // LoD pages clamp: their faces may touch the page's border
 };
+
+// A 128-bit digest of a texture's texels, layout and wrap mode: FNV-1a and a
+// multiplicative hash side by side. Equal digests are taken for equal textures
+// (a false match needs two images colliding in both, about 2^-128).
+using TextureDigest = std::pair<std::uint64_t, std::uint64_t>;
+TextureDigest texture_digest(const Texture& texture);
 
 struct Material {
     std::string name;

@@ -140,7 +140,7 @@ bool apply_event(ViewerState& s, const ViewerEvent& e) {
     } else if (k == "t") {
         s.show_texture = !s.show_texture;
     } else if (k == "p") {
-        s.texture_page = s.lod && s.lod->atlas.pages ? (s.texture_page + 1) % s.lod->atlas.pages : 0;
+        s.texture_page = s.lod && !s.lod->atlas.pages.empty() ? (s.texture_page + 1) % int(s.lod->atlas.pages.size()) : 0;
     } else if (k == "[" || k == "]") {
         s.texture_scale *= k == "]" ? 2.0f : 0.5f;
     } else if (k == "tab") {

@@ -79,8 +79,8 @@ Image8 compose(ViewerState& s, const Frame& frame) {
     }
     if (s.split_view) draw_divider(shown, s.width / 2, {0, 0, 0});
     Image8 image = frame_to_srgb8(shown);
-    if (s.show_texture && s.lod && s.lod->atlas.pages) {  // the colour + normal pair of one page
-        int page = std::min(s.texture_page, s.lod->atlas.pages - 1);
+    if (s.show_texture && s.lod && !s.lod->atlas.pages.empty()) {  // the colour + normal pair of one page
+        int page = std::min(s.texture_page, int(s.lod->atlas.pages.size()) - 1);
         const Texture& color = s.lod->model.textures[page * 3];
         const Texture& normal = s.lod->model.textures[page * 3 + 1];
         int size = std::max(1, int(float(std::min(s.width / 2, s.height)) * 0.5f * s.texture_scale));
