@@ -405,11 +405,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     Lod lod = build_lod(*session, level, threads);
                     Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
                                             variant.obtained_levels);
-                    for (int node : lod.cut.box_nodes) {
-                        auto baked = session->baked.find(node);
-                        if (baked != session->baked.end())
-                            for (const BakedFace& face : baked->second) c.face_texels += std::uint64_t(face.color.width) * face.color.height;
-                    }
+                    c.face_texels = lod.face_texels;
                     return c;
                 });
             }

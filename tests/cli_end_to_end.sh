@@ -140,6 +140,18 @@ check "the keyframe error names file:line" grep -q "bad_keys.txt: line 2: expect
 bad "city with a missing keyframe file" city --buildings 1 --path "$work/nope.txt" -o "$work/city_bad"
 bad "city with zero frames" city --buildings 1 --frames 0 -o "$work/city_bad"
 bad "city with a bad detail" city --buildings 1 --detail 1,-2 -o "$work/city_bad"
+# A chain sized per level: level c for the sizing distance x 2^(c-1); its pages shrink with c.
+"$boxlod" generate --sample house -o "$work/house.glb" > /dev/null
+check "build --level-distances auto succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/chain" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24)" = 0
+check "each level is sized for twice the previous level's distance" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { for (c = 3; c <= n; ++c) if ((d[c] - 2 * d[c - 1]) ^ 2 > (1e-6 * d[c]) ^ 2) exit 1; exit n < 5 }' '$work/out'"
+check "coarser levels of the chain pay fewer texture bytes" bash -c "awk -F' = ' '\$1 == \"page_texels\" { t[++n] = \$2 } END { exit !(t[2] > t[4] && t[4] > t[6]) }' '$work/out'"
+check "a level's parameter file records its distance" bash -c "grep -qx \"distance = \$(awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } END { print d }' '$work/out')\" '$work/chain/house_lod_L9.params.txt'"
+bad "level distances that do not ascend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 20,10,30,40,50,60,70,80,90
+bad "a negative level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances -5,10,20,30,40,50,60,70,80
+bad "a NaN level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances nan,10,20,30,40,50,60,70,80
+bad "too few level distances" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 10,20
+bad "level distances without --all-levels" build "$work/house.glb" -o "$work/chain_bad" --level-distances auto
+check "no output folder for a refused chain" test ! -e "$work/chain_bad"
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
 check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"

@@ -52,6 +52,7 @@ TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {
     Model model = test::lod_test_building();
     auto session = start_lod(model, small_parameters(), 2);
     // Level values top-down: Lot 3; Ground, House 2; Walls, Roof, Windows 1; each Window 0.
+    session->parameters.crop_faces = false;  // the manual's six quads per box
     Lod lod = build_lod(*session, 2, 2);
     EXPECT_EQ(statistic(lod, "nodes_with_box"), "3");       // Walls, Roof, Windows
     EXPECT_EQ(statistic(lod, "nodes_with_geometry"), "1");  // Ground keeps its quad
@@ -61,6 +62,35 @@ TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {
     Lod windows_only = build_lod(*session, 1, 2);
     EXPECT_EQ(statistic(windows_only, "nodes_with_box"), "3");  // the three panes
     EXPECT_EQ(statistic(windows_only, "faces_lod"), std::to_string(1 + 4 + 2 + 3 * 6));
+}
+
+// Cropping keeps each face's rectangle of covered texels and drops faces that
+// cover nothing: fewer faces and texels, the same picture. Not the same bytes:
+// a smaller quad interpolates its uvs and depths with other roundings, coplanar
+// faces of neighbouring boxes then win their depth ties differently, and coarser
+// mip levels average other neighbours (README: Atlas).
+TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
+    Model model = test::lod_test_building();
+    LodParameters whole = small_parameters();
+    whole.crop_faces = false;
+    auto cropped_session = start_lod(model, small_parameters(), 2), whole_session = start_lod(model, whole, 2);
+    Lod cropped = build_lod(*cropped_session, 2, 2), uncropped = build_lod(*whole_session, 2, 2);
+    EXPECT_LT(std::stoi(statistic(cropped, "faces_lod")), std::stoi(statistic(uncropped, "faces_lod")));
+    EXPECT_LT(cropped.face_texels, uncropped.face_texels);
+    EXPECT_LT(page_texels(cropped.atlas), page_texels(uncropped.atlas));
+    for (RenderMode mode : {RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
+        cropped_session->parameters.render_mode = whole_session->parameters.render_mode = mode;
+        Image8 a = render_lod_preview(cropped, *cropped_session, 240, 180, 2), b = render_lod_preview(uncropped, *whole_session, 240, 180, 2);
+        std::size_t same = 0, pixels = a.pixels.size() / 3;
+        double error = 0;
+        for (std::size_t i = 0; i < pixels; ++i) {
+            same += std::equal(&a.pixels[i * 3], &a.pixels[i * 3 + 3], &b.pixels[i * 3]);
+            for (int c = 0; c < 3; ++c) error += std::abs(int(a.pixels[i * 3 + c]) - int(b.pixels[i * 3 + c]));
+        }
+        // Measured: albedo all pixels equal, normal 99.998 %, pom 99.6 %, parallax 98.3 % (its offsets reach the gutters).
+        EXPECT_GE(double(same) / double(pixels), 0.98) << render_mode_name(mode);
+        EXPECT_LT(error / double(3 * pixels), 0.2) << render_mode_name(mode);  // mean difference in levels of 255
+    }
 }
 
 TEST(LodBuilder, AnLodCannotBeSimplifiedAgain) {
@@ -102,6 +132,9 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     EXPECT_EQ(mesh_counts(back).faces, mesh_counts(lod.model).faces);
     EXPECT_FALSE(back.textures[2].image16.empty());  // the height page keeps 16 bits
     EXPECT_EQ(back.textures[2].image16.pixels, lod.model.textures[2].image16.pixels);
+    for (int page_texture = 0; page_texture < 3; ++page_texture)  // pages are sampled clamped to their edge
+        EXPECT_EQ(back.textures[std::size_t(page_texture)].wrap, Wrap::clamp) << page_texture;
+    EXPECT_EQ(texture_digest(back.textures[0]), texture_digest(lod.model.textures[0]));
     EXPECT_THROW(start_lod(back, small_parameters(), 1), InputError);
     LodParameters saved = load_parameters((folder / "house.params.txt").string());
     EXPECT_EQ(saved.current_level, 2);

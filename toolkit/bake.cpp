@@ -109,6 +109,11 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
         baked.height.pixels[i] = std::uint16_t(std::lround(std::clamp(height, 0.0f, 1.0f) * 65535));
     }
     dilate_colors(baked.color);
+    int x0 = texels.x(), y0 = texels.y(), x1 = 0, y1 = 0;
+    for (int y = 0; y < texels.y(); ++y)
+        for (int x = 0; x < texels.x(); ++x)
+            if (baked.color.at(x, y)[3]) x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x + 1), y1 = std::max(y1, y + 1);
+    if (x1 > x0) baked.covered = {x0, y0, x1 - x0, y1 - y0};
     return baked;
 }
 

@@ -22,10 +22,17 @@ struct OrientedBoxFace {
 // down: closest to world -Z), so walls bake upright.
 std::array<OrientedBoxFace, 6> oriented_box_faces(const OrientedBox& box);
 
+// A rectangle of texels: its top-left texel (x right, y down) and its size.
+struct TexelRect {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool empty() const { return width <= 0 || height <= 0; }
+};
+
 struct BakedFace {
     Image8 color;    // RGBA, sRGB albedo; alpha = coverage; uncovered colour dilated from covered texels
     Image8 normal;   // RGB, tangent-space normal * 0.5 + 0.5; uncovered (0, 0, 1)
     Image16 height;  // 1 (65535) at the face plane, 0 at the opposite face; uncovered 0
+    TexelRect covered;  // the smallest rectangle holding every covered texel; empty when none is
 };
 
 BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads);

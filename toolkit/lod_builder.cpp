@@ -18,37 +18,42 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 float scene_radius(const Model& model) { return std::max(model_bounds(model).size().norm() / 2, 1e-6f); }
 
-// Copies a baked face into a page with its gutter: the block's edge texels
-// repeated outwards, up to the page's border.
-void place_face(const BakedFace& face, const AtlasPlacement& at, int gutter, Texture& color, Texture& normal, Texture& height) {
-    const int w = face.color.width, h = face.color.height;
-    const Eigen::Vector2i block = placed_size({w, h}, at);
+// Copies the `region` of a baked face into a page with its gutter: the face's
+// own texels around the region where it has them (so a cropped face samples
+// the neighbours it had uncropped), its edge texels repeated beyond; clipped
+// to the page's border.
+void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, Texture& color,
+                Texture& normal, Texture& height) {
+    const Eigen::Vector2i block = placed_size({region.width, region.height}, at);
     const int page_width = color.image.width, page_height = color.image.height;
     for (int by = -gutter; by < block.y() + gutter; ++by)
         for (int bx = -gutter; bx < block.x() + gutter; ++bx) {
             const int px = at.x + bx, py = at.y + by;
             if (px < 0 || py < 0 || px >= page_width || py >= page_height) continue;
-            const int cx = std::clamp(bx, 0, block.x() - 1), cy = std::clamp(by, 0, block.y() - 1);
-            // The face texel at block texel (cx, cy); turned clockwise, the face's top row is the block's right column.
-            const int sx = at.rotated ? cy : cx, sy = at.rotated ? h - 1 - cx : cy;
+            // The region texel at block texel (bx, by); turned clockwise, the region's top row is the block's right column.
+            const int rx = at.rotated ? by : bx, ry = at.rotated ? region.height - 1 - bx : by;
+            const int sx = std::clamp(region.x + rx, 0, face.color.width - 1), sy = std::clamp(region.y + ry, 0, face.color.height - 1);
             std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
             std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
             height.image16.at(px, py)[0] = face.height.at(sx, sy)[0];
         }
 }
 
-// One quad per face: TL, BL, BR, TR seen from outside; uvs into the face's atlas block.
-void append_face_quad(Primitive& p, const OrientedBoxFace& f, const AtlasPlacement* at, const Eigen::Vector2i& texels,
-                      const Eigen::Vector2i& page) {
+// The quad of a face's `region` of its `texels` (the whole face for untextured
+// boxes): TL, BL, BR, TR seen from outside; uvs into the region's atlas block.
+void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vector2i& texels, const TexelRect& region,
+                      const AtlasPlacement* at, const Eigen::Vector2i& page) {
     auto base = std::uint32_t(p.positions.size());
-    const float corners[4][2] = {{-1, 1}, {-1, -1}, {1, -1}, {1, 1}};
+    const int corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) in the region
     for (const auto& c : corners) {
-        p.positions.push_back(f.center + f.tangent * (c[0] * f.half_width) + f.bitangent * (c[1] * f.half_height));
+        // The corner in face texels (x right, y down), and as -1..1 along tangent and bitangent.
+        const int x = region.x + c[0] * region.width, y = region.y + c[1] * region.height;
+        const float s = 2 * (float(x) / float(texels.x())) - 1, t = 1 - 2 * (float(y) / float(texels.y()));
+        p.positions.push_back(f.center + f.tangent * (s * f.half_width) + f.bitangent * (t * f.half_height));
         p.normals.push_back(f.normal);
         if (at) {
-            // The corner in face texels (x right, y down), then in the page.
-            const int x = c[0] > 0 ? texels.x() : 0, y = c[1] < 0 ? texels.y() : 0;
-            const int page_x = at->rotated ? texels.y() - y : x, page_y = at->rotated ? x : y;
+            const int rx = c[0] * region.width, ry = c[1] * region.height;  // in the region
+            const int page_x = at->rotated ? region.height - ry : rx, page_y = at->rotated ? rx : ry;
             p.uvs.emplace_back(float(at->x + page_x) / float(page.x()), float(at->y + page_y) / float(page.y()));
             p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
         }
@@ -135,14 +140,24 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     });
     session.times.bake += seconds_since(start);
 
-    // Pack every face of the cut's boxes.
+    // Pack the faces of the cut's boxes: each cropped to its covered texels, none
+    // for a face that covers nothing (unless crop_faces is off).
     start = std::chrono::steady_clock::now();
+    struct PackedFace { int node, face; TexelRect region; };
+    std::vector<PackedFace> packed;  // in cut order, face order
     std::vector<Eigen::Vector2i> sizes;
     float longest_face = 0;
     for (int node : lod.cut.box_nodes)
-        for (const OrientedBoxFace& face : oriented_box_faces(*session.boxes[node])) {
-            sizes.push_back(texels_of(face, session.sizing));
+        for (int f = 0; f < 6; ++f) {
+            const OrientedBoxFace face = oriented_box_faces(*session.boxes[node])[f];
             longest_face = std::max({longest_face, 2 * face.half_width, 2 * face.half_height});
+            if (!textured) continue;
+            const Eigen::Vector2i texels = texels_of(face, session.sizing);
+            const TexelRect region = p.crop_faces ? session.baked.at(node)[f].covered : TexelRect{0, 0, texels.x(), texels.y()};
+            if (region.empty()) continue;
+            packed.push_back({node, f, region});
+            sizes.emplace_back(region.width, region.height);
+            lod.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
     const int gutter = session.sizing.gutter;
     if (textured) lod.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, gutter);
@@ -190,7 +205,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     std::vector<bool> is_box(model.nodes.size(), false);
     for (int n : lod.cut.box_nodes) is_box[n] = true;
     std::map<int, int> new_index;
-    std::size_t face_index = 0;
+    std::size_t next_packed = 0;
     for (int n : lod.cut.used_nodes) {
         const Node& node = model.nodes[n];
         int parent = node.parent >= 0 ? new_index.at(node.parent) : -1;
@@ -209,18 +224,21 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         // One primitive per page this box's faces landed on.
         std::map<int, Primitive> by_page;
         std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
-        for (int f = 0; f < 6; ++f, ++face_index) {
+        for (int f = 0; f < 6; ++f) {
             if (!textured) {
                 Primitive& primitive = by_page[0];
                 primitive.material = first_page_material;
-                append_face_quad(primitive, faces[f], nullptr, {}, {});
+                append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, {});
                 continue;
             }
-            const AtlasPlacement& at = lod.atlas.placements[face_index];
+            if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
+            const TexelRect& region = packed[next_packed].region;
+            const AtlasPlacement& at = lod.atlas.placements[next_packed++];
             Primitive& primitive = by_page[at.page];
             primitive.material = first_page_material + at.page;
-            append_face_quad(primitive, faces[f], &at, sizes[face_index], lod.atlas.pages[std::size_t(at.page)]);
-            place_face(session.baked.at(n)[f], at, gutter, out.textures[at.page * 3], out.textures[at.page * 3 + 1],
+            append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), region, &at,
+                             lod.atlas.pages[std::size_t(at.page)]);
+            place_face(session.baked.at(n)[f], region, at, gutter, out.textures[at.page * 3], out.textures[at.page * 3 + 1],
                        out.textures[at.page * 3 + 2]);
         }
         for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
@@ -234,10 +252,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         largest_page_side = std::max({largest_page_side, page.x(), page.y()});
         page_list += (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
     }
-    std::uint64_t face_texels = 0;
-    if (textured)
-        for (const Eigen::Vector2i& size : sizes) face_texels += std::uint64_t(size.x()) * std::uint64_t(size.y());
-    const double occupancy = lod.atlas.pages.empty() ? 0 : double(face_texels) / double(page_texels(lod.atlas));
+    const double occupancy = lod.atlas.pages.empty() ? 0 : double(lod.face_texels) / double(page_texels(lod.atlas));
     MeshCounts lod_counts = mesh_counts(out), original = mesh_counts(model);
     Eigen::Vector3f size = model_bounds(model).size();
     lod.statistics = {
@@ -262,7 +277,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         number_entry("texture_size", largest_page_side),
         text_entry("texture_pages", page_list),
         number_entry("page_texels", double(page_texels(lod.atlas))),
-        number_entry("face_texels", double(face_texels)),
+        number_entry("face_texels", double(lod.face_texels)),
         number_entry("occupancy", occupancy),
     };
     for (const KeyValues& cost : {cost_entries(model_cost(out), "_lod"), cost_entries(session.original_cost, "_original")})

@@ -42,7 +42,8 @@ struct Lod {
     // is_lod and lod_params set; textures 3K, 3K+1, 3K+2 are page K's color_K.png, normal_K.png, height_K.png.
     Model model;
     Cut cut;
-    Atlas atlas;  // pages = 0 in untextured mode (no baking)
+    Atlas atlas;  // no pages in untextured mode (no baking)
+    std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
     KeyValues statistics;  // DESIGN.md: Statistics
 };
 

@@ -40,6 +40,10 @@ struct Parser {
         if (error != std::errc() || end != text.data() + text.size()) fail("expected an integer, got '" + text + "'");
         return v;
     }
+    bool boolean(const std::string& text) const {
+        if (text != "true" && text != "false") fail("expected true or false, got '" + text + "'");
+        return text == "true";
+    }
     Eigen::Vector3f vector(const std::string& text) const {
         std::istringstream in(text);
         std::string a, b, c, extra;
@@ -60,6 +64,7 @@ KeyValues parameter_entries(const LodParameters& p) {
     line("box_kind", box_kind_name(p.box_kind));
     line("interpolation", interpolation_name(p.interpolation));
     line("keep_small_subtrees", p.keep_small_subtrees ? "true" : "false");
+    line("crop_faces", p.crop_faces ? "true" : "false");
     line("fovy", format_number(p.fovy));
     line("distance", format_number(p.distance));
     line("resolution", format_number(p.resolution));
@@ -103,10 +108,8 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
         {"current_level", [&](const Parser& q, const std::string& v) { p.current_level = q.integer(v); }},
         {"box_kind", [&](const Parser& q, const std::string& v) { if (!parse_box_kind(v, p.box_kind)) q.fail("unknown box kind '" + v + "'"); }},
         {"interpolation", [&](const Parser& q, const std::string& v) { if (!parse_interpolation(v, p.interpolation)) q.fail("unknown interpolation '" + v + "'"); }},
-        {"keep_small_subtrees", [&](const Parser& q, const std::string& v) {
-             if (v != "true" && v != "false") q.fail("expected true or false, got '" + v + "'");
-             p.keep_small_subtrees = v == "true";
-         }},
+        {"keep_small_subtrees", [&](const Parser& q, const std::string& v) { p.keep_small_subtrees = q.boolean(v); }},
+        {"crop_faces", [&](const Parser& q, const std::string& v) { p.crop_faces = q.boolean(v); }},
         {"fovy", [&](const Parser& q, const std::string& v) { p.fovy = q.number(v); }},
         {"distance", [&](const Parser& q, const std::string& v) { p.distance = q.number(v); }},
         {"resolution", [&](const Parser& q, const std::string& v) { p.resolution = q.number(v); }},

@@ -20,6 +20,7 @@ struct LodParameters {
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
     bool keep_small_subtrees = false;  // beyond the manual: no box for a sub-tree of <= 6 faces (cut.h)
+    bool crop_faces = true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model

@@ -5,11 +5,41 @@
 #include "toolkit/model_io.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <sstream>
 
 namespace boxlod {
 namespace {
+
+// --level-distances: the sizing distance of each level 1..N. `auto` doubles the
+// model's sizing distance d per level, d_c = d * 2^(c-1) (the rule `boxlod city`
+// uses): level c is used from d_c on, where its texels match the screen's pixels.
+std::vector<float> level_distances(const std::string& text, float distance, int levels) {
+    std::vector<float> distances;
+    if (text == "auto") {
+        for (int c = 1; c <= levels; ++c) distances.push_back(distance * std::ldexp(1.0f, c - 1));
+        return distances;
+    }
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const double d = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(d) || d <= 0 || d > 1e7)
+            throw InputError("--level-distances: '" + item + "' is not a distance in (0, 1e7]");
+        if (!distances.empty() && float(d) < distances.back())
+            throw InputError("--level-distances: " + item + " comes after " + format_number(distances.back()) +
+                             ": the distances must ascend, one per level 1.." + std::to_string(levels));
+        distances.push_back(float(d));
+    }
+    if (int(distances.size()) != levels)
+        throw InputError("--level-distances: " + std::to_string(distances.size()) + " distances for " +
+                         std::to_string(levels) + " levels (1.." + std::to_string(levels) + "), or auto");
+    return distances;
+}
 
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
@@ -24,19 +54,35 @@ int run_build(const Arguments& a) {
     if (threads < 0 || preview_width < 1 || preview_height < 1) throw InputError("--threads/--preview-*: expected positive numbers");
     Model model = load_model(parameters.model);
     std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
-    auto session = start_lod(model, parameters, threads);
-    int obtained = session->levels.obtained_levels;
+    if (a.has("level-distances") && !a.has("all-levels")) throw InputError("--level-distances needs --all-levels");
+    auto first = start_lod(model, parameters, threads);
+    int obtained = first->levels.obtained_levels;
     std::vector<int> levels;
     if (a.has("all-levels"))
         for (int c = 0; c <= obtained; ++c) levels.push_back(c);
     else
         levels.push_back(parameters.current_level);
+    // One session per sizing distance (a session bakes for one distance); boxes and level values computed once.
+    std::vector<float> distances;
+    if (a.has("level-distances")) distances = level_distances(a.text("level-distances"), first->parameters.distance, obtained);
+    std::map<float, std::unique_ptr<LodSession>> sessions;
+    auto session_for = [&](int level) -> LodSession& {
+        if (distances.empty() || level == 0) return *first;
+        std::unique_ptr<LodSession>& session = sessions[distances[std::size_t(level - 1)]];
+        if (!session) {
+            LodParameters sized = first->parameters;
+            sized.distance = distances[std::size_t(level - 1)];
+            session = start_lod(model, sized, threads, &first->boxes);
+        }
+        return *session;
+    };
     for (int level : levels) {
+        LodSession* session = &session_for(level);
         Lod lod = build_lod(*session, level, threads);
         std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
         auto start = std::chrono::steady_clock::now();
         Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
-        KeyValues report{text_entry("name", level_name)};
+        KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
         report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
         export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
         session->times.write += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -44,7 +90,11 @@ int run_build(const Arguments& a) {
         std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
     }
     if (a.has("timings")) {
-        const LodTimes& t = session->times;
+        LodTimes t = first->times;
+        for (const auto& [distance, session] : sessions) {
+            t.bake += session->times.bake, t.pack += session->times.pack;
+            t.mesh += session->times.mesh, t.write += session->times.write;
+        }
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
                         number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
                         number_entry("time_mesh", t.mesh), number_entry("time_write", t.write)};
@@ -64,6 +114,9 @@ Subcommand build_subcommand() {
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
+                 {"level-distances", "auto|D1,...,DN",
+                  "with --all-levels: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
+                  "the sizing distance x 2^(c-1), so each level is as sharp as the screen where it is used"},
                  {"preview-width", "W", "preview image width (default 1024)"},
                  {"preview-height", "H", "preview image height (default 768)"},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},

@@ -16,6 +16,8 @@ std::vector<Option> lod_options() {
         {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
         {"keep-small-subtrees", "", "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a "
                                     "6-face box, so no level draws more faces than the original"},
+        {"no-crop", "", "keep every baked face whole instead of cropping it to its covered texels (and dropping "
+                        "faces with none)"},
         {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
         {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)"},
         {"resolution", "R", "texture sizing: screen height in pixels (default 1080)"},
@@ -52,6 +54,7 @@ LodParameters lod_parameters_from(const Arguments& a) {
     word("interpolation", parse_interpolation, p.interpolation, "linear, log, rank");
     word("render-mode", parse_render_mode, p.render_mode, "untextured, normal, parallax, pom");
     if (a.has("keep-small-subtrees")) p.keep_small_subtrees = true;
+    if (a.has("no-crop")) p.crop_faces = false;
     p.current_level = a.integer("level", p.current_level);
     p.wanted_levels = a.integer("wanted-levels", p.wanted_levels);
     p.fovy = float(a.number("fovy", p.fovy));
