@@ -147,9 +147,10 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     std::vector<PackedFace> packed;  // in cut order, face order
     std::vector<Eigen::Vector2i> sizes;
     float longest_face = 0;
-    for (int node : lod.cut.box_nodes)
+    for (int node : lod.cut.box_nodes) {
+        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[node]);
         for (int f = 0; f < 6; ++f) {
-            const OrientedBoxFace face = oriented_box_faces(*session.boxes[node])[f];
+            const OrientedBoxFace& face = faces[f];
             longest_face = std::max({longest_face, 2 * face.half_width, 2 * face.half_height});
             if (!textured) continue;
             const Eigen::Vector2i texels = texels_of(face, session.sizing);
@@ -159,6 +160,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
             sizes.emplace_back(region.width, region.height);
             lod.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
+    }
     const int gutter = session.sizing.gutter;
     if (textured) lod.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, gutter);
     session.times.pack += seconds_since(start);
