@@ -96,7 +96,7 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
         MeshCounts counts = mesh_counts(lod.model);
         levels.push_back({counts.faces, session->sizing, std::nullopt});
         built.levels.triangles.push_back(counts.triangles);
-        built.levels.costs.push_back(cost_parts(lod.model));
+        built.levels.costs.push_back(lod.cost);
         built.levels.lods.push_back(make_drawable_model(lod.model, &cache));
     }
     if (boxes[0]) {

@@ -169,8 +169,10 @@ struct Candidate {
     double seconds = 0;  // building it and making it drawable
 };
 
-Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels) {
+// `cost`: the model's, when its builder has it already (an LoD); else computed here.
+Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels, const CostParts* cost = nullptr) {
     Candidate c;
+    c.cost = cost ? combined_cost({cost}) : model_cost(model);
     c.model = std::move(model);
     c.atlas = std::move(atlas);
     c.nodes_with_box = nodes_with_box;
@@ -324,7 +326,6 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     auto build_start = Clock::now();
                     Candidate made = make(s);
                     made.drawable = make_drawable_model(made.model);
-                    made.cost = model_cost(made.model);
                     made.seconds = seconds_since(build_start);
                     report.build_seconds += made.seconds;
                     ++report.lods_built;
@@ -404,7 +405,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     }
                     Lod lod = build_lod(*session, level, threads);
                     Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
-                                            variant.obtained_levels);
+                                            variant.obtained_levels, &lod.cost);
                     c.face_texels = lod.face_texels;
                     return c;
                 });

@@ -282,7 +282,8 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         number_entry("face_texels", double(lod.face_texels)),
         number_entry("occupancy", occupancy),
     };
-    for (const KeyValues& cost : {cost_entries(model_cost(out), "_lod"), cost_entries(session.original_cost, "_original")})
+    lod.cost = cost_parts(out);
+    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
         lod.statistics.insert(lod.statistics.end(), cost.begin(), cost.end());
     lod.statistics.push_back(number_entry("obtained_levels", obtained));
     lod.statistics.push_back(number_entry("current_level", current_level));  // last: it closes a level's block

@@ -44,6 +44,7 @@ struct Lod {
     Cut cut;
     Atlas atlas;  // no pages in untextured mode (no baking)
     std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
+    CostParts cost;  // of `model` (README: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // DESIGN.md: Statistics
 };
 
