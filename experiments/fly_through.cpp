@@ -87,6 +87,7 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
     p.min_texture_size = 64;
     p.render_mode = RenderMode::normal;
     p.keep_small_subtrees = options.keep_small_subtrees;
+    p.keep_cheaper_subtrees = options.keep_cheaper_subtrees;
     // One session per sizing distance: a session bakes its boxes for one distance.
     for (int c = 1, n = 1; c <= n; ++c) {
         p.distance = level_sizing_distance(options, c);

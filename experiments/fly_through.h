@@ -34,7 +34,8 @@ struct FlyThroughOptions {
     // on a screen `height` pixels high with `fovy` (texel = pixel there).
     LevelMode level_mode = LevelMode::top_down;
     int wanted_levels = 8;  // N for the box modes
-    bool keep_small_subtrees = false;  // LodParameters::keep_small_subtrees
+    bool keep_small_subtrees = false;    // LodParameters::keep_small_subtrees
+    bool keep_cheaper_subtrees = false;  // LodParameters::keep_cheaper_subtrees
     float base_distance = 20;
     int threads = 0;  // 0 = all cores
 };

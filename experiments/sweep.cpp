@@ -401,6 +401,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                         p.resolution = config.resolution;
                         p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
                         p.keep_small_subtrees = config.keep_small_subtrees;
+                        p.keep_cheaper_subtrees = config.keep_cheaper_subtrees;
                         session = start_lod(model, p, threads, &boxes[variant.box]);
                     }
                     Lod lod = build_lod(*session, level, threads);

@@ -25,6 +25,10 @@ struct Line {
     [[noreturn]] void fail(const std::string& what) const {
         throw_input_error(file, "line " + std::to_string(line.line) + ": " + line.key, what);
     }
+    bool boolean() const {
+        if (line.value != "true" && line.value != "false") fail("expected true or false");
+        return line.value == "true";
+    }
     std::vector<std::string> items() const {
         std::vector<std::string> out;
         std::stringstream words(line.value);
@@ -157,10 +161,8 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
                  else l.fail("unknown baseline '" + item + "' (simplification, single-box, or none)");
              }
          }},
-        {"keep_small_subtrees", [&](const Line& l) {
-             if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false");
-             c.keep_small_subtrees = l.line.value == "true";
-         }},
+        {"keep_small_subtrees", [&](const Line& l) { c.keep_small_subtrees = l.boolean(); }},
+        {"keep_cheaper_subtrees", [&](const Line& l) { c.keep_cheaper_subtrees = l.boolean(); }},
         {"keep_images", [&](const Line& l) {
              const std::map<std::string, KeptImages> kinds = {
                  {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};

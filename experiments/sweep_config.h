@@ -48,7 +48,8 @@ struct SweepConfig {
     // the original simplified to each level's triangles (quadric edge collapse), and
     // the whole model as one untextured box.
     bool simplification_baseline = false, single_box_baseline = false;
-    bool keep_small_subtrees = false;  // LodParameters::keep_small_subtrees for every LoD
+    bool keep_small_subtrees = false;    // LodParameters::keep_small_subtrees for every LoD
+    bool keep_cheaper_subtrees = false;  // LodParameters::keep_cheaper_subtrees for every LoD
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

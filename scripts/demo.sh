@@ -30,6 +30,13 @@ demo_model() {  # demo_model NAME MODEL
     --timings > "$out/$name/build.txt" 2>/dev/null
   level_table < "$out/$name/build.txt"
   grep '^time_' "$out/$name/build.txt" | tr '\n' ' '; echo
+  # The same chain as an engine would ship it (README: Boxes that pay their way): each
+  # level sized for where it is used, no box dearer than the geometry it replaces.
+  echo "-- $name, a chain that pays its way: --level-distances auto --keep-cheaper-subtrees --min-texture-size 16"
+  "$boxlod" build "$model" -o "$out/$name/chain" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
+    --level-distances auto --keep-cheaper-subtrees --min-texture-size 16 > "$out/$name/chain.txt" 2>/dev/null
+  level_table < "$out/$name/chain.txt"
+  grep -E '^(bytes_chain|texture_bytes_gpu_chain) ' "$out/$name/chain.txt" | tr '\n' ' '; echo
   "$boxlod" render "$model" -o "$out/$name/original.png" > /dev/null
   local middle
   middle=$(awk -F' = ' '$1 == "obtained_levels" { n = $2 } END { print int(n / 2) }' "$out/$name/build.txt")

@@ -145,7 +145,13 @@ bad "city with a bad detail" city --buildings 1 --detail 1,-2 -o "$work/city_bad
 check "build --level-distances auto succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/chain" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24)" = 0
 check "each level is sized for twice the previous level's distance" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { for (c = 3; c <= n; ++c) if ((d[c] - 2 * d[c - 1]) ^ 2 > (1e-6 * d[c]) ^ 2) exit 1; exit n < 5 }' '$work/out'"
 check "coarser levels of the chain pay fewer texture bytes" bash -c "awk -F' = ' '\$1 == \"page_texels\" { t[++n] = \$2 } END { exit !(t[2] > t[4] && t[4] > t[6]) }' '$work/out'"
+check "the chain's cost follows its levels" bash -c "grep -qx 'name = house_lod_chain' '$work/out' && grep -q '^texture_bytes_gpu_chain = [1-9]' '$work/out' && grep -q '^chain_texture_ratio = ' '$work/out'"
 check "a level's parameter file records its distance" bash -c "grep -qx \"distance = \$(awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } END { print d }' '$work/out')\" '$work/chain/house_lod_L9.params.txt'"
+# Without the rule the house's level 1 boxes single quads and costs more than the original; with it no level does.
+over_original="awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"bytes_original\" && b > \$2 { over = 1 } END { exit !over }'"
+check "a box-everything chain has a level dearer than the original" bash -c "$over_original '$work/out'"
+check "build --keep-cheaper-subtrees succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --keep-cheaper-subtrees)" = 0
+check "with boxes that pay their way no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L3.params.txt'"
 bad "level distances that do not ascend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 20,10,30,40,50,60,70,80,90
 bad "a negative level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances -5,10,20,30,40,50,60,70,80
 bad "a NaN level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances nan,10,20,30,40,50,60,70,80

@@ -63,20 +63,15 @@ TEST(Cut, DescendantsOfAReplacedNodeAreNeverVisited) {
     EXPECT_EQ(cut.box_nodes, (std::vector<int>{1}));
 }
 
-// Beyond the manual: a sub-tree of at most 6 faces (what its box would cost) keeps its geometry.
-TEST(Cut, SmallSubtreesKeepTheirGeometryWhenAsked) {
+// Beyond the manual: a kept node keeps its own geometry and its children are visited.
+TEST(Cut, KeptNodesKeepTheirGeometryAndOpenTheirChildren) {
     Model model = tree();
-    model.nodes[2].primitives[0].polygon_count = 7;  // a1: more faces than a box
-    model.nodes[3].primitives[0].polygon_count = 2;  // a2
-    model.nodes[4].primitives[0].polygon_count = 3;  // b
-    EXPECT_EQ(subtree_faces(model), (std::vector<std::size_t>{12, 9, 7, 2, 3, 0}));
     std::vector<int> level{3, 2, 0, 1, 2, 0};
-    Cut cut = take_cut(model, level, 2, boxes_for(model), true);
-    EXPECT_EQ(cut.box_nodes, (std::vector<int>{2}));         // a1 (7 faces) still boxed
-    EXPECT_EQ(cut.geometry_nodes, (std::vector<int>{3, 4}));  // a2 (2) kept as it is; b too
-    cut = take_cut(model, level, 3, boxes_for(model), true);
-    EXPECT_EQ(cut.box_nodes, (std::vector<int>{1}));          // a (9 faces) boxed
-    EXPECT_EQ(cut.geometry_nodes, (std::vector<int>{4}));     // b (3 faces) kept
-    // The manual's rule boxes both.
+    std::vector<bool> kept{false, true, false, true, true, false};  // a, a2, b
+    Cut cut = take_cut(model, level, 3, boxes_for(model), kept);
+    EXPECT_EQ(cut.used_nodes, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    EXPECT_EQ(cut.box_nodes, (std::vector<int>{2}));          // a's child a1 is not kept: boxed
+    EXPECT_EQ(cut.geometry_nodes, (std::vector<int>{3, 4}));  // a2 and b kept
+    // Without the marks a and b are boxed.
     EXPECT_EQ(take_cut(model, level, 3, boxes_for(model)).box_nodes, (std::vector<int>{1, 4}));
 }

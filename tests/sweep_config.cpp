@@ -23,7 +23,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
         "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
-        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\n",
+        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\nkeep_cheaper_subtrees = true\n",
         "/work/sweeps/config.txt");
     ASSERT_EQ(c.models.size(), 3u);
     EXPECT_EQ(c.models[0].name, "house.glb");
@@ -51,6 +51,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_TRUE(c.simplification_baseline);
     EXPECT_TRUE(c.single_box_baseline);
     EXPECT_TRUE(c.keep_small_subtrees);
+    EXPECT_TRUE(c.keep_cheaper_subtrees);
 }
 
 TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {

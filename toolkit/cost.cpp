@@ -61,15 +61,19 @@ std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format) {
     return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) { return (w + 3) / 4 * ((h + 3) / 4) * block_bytes; });
 }
 
+std::uint64_t primitive_mesh_bytes(const Primitive& p) {
+    // The export writes float positions, normals, uvs and tangents and 32-bit indices (gltf_io.cpp).
+    std::uint64_t vertex_bytes = 12 + (p.normals.empty() ? 0 : 12) + (p.uvs.empty() ? 0 : 8) + (p.tangents.empty() ? 0 : 16);
+    return vertex_bytes * p.positions.size() + 4 * std::uint64_t(p.indices.size());
+}
+
 CostParts cost_parts(const Model& model) {
     CostParts parts;
     std::set<int> materials;
     for (const Node& node : model.nodes)
         for (const Primitive& p : node.primitives) {
             materials.insert(p.material);
-            // The export writes float positions, normals, uvs and tangents and 32-bit indices (gltf_io.cpp).
-            std::uint64_t vertex_bytes = 12 + (p.normals.empty() ? 0 : 12) + (p.uvs.empty() ? 0 : 8) + (p.tangents.empty() ? 0 : 16);
-            parts.mesh_bytes += vertex_bytes * p.positions.size() + 4 * std::uint64_t(p.indices.size());
+            parts.mesh_bytes += primitive_mesh_bytes(p);
         }
     parts.draw_calls = materials.size();
 

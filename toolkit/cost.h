@@ -26,6 +26,8 @@ struct ModelCost {
 };
 
 ModelCost model_cost(const Model& model);
+// Vertex + index bytes of one primitive as the glTF export writes it.
+std::uint64_t primitive_mesh_bytes(const Primitive& primitive);
 
 // A cost in parts, for several models drawn together (a city's buildings at
 // their levels): draw calls and meshes add up, while a texture is paid for

@@ -3,6 +3,7 @@
 #include "renderer/input_error.h"
 #include "renderer/parallel.h"
 #include "toolkit/cost.h"
+#include "toolkit/kept_subtrees.h"
 #include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 
@@ -87,6 +88,9 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     start = std::chrono::steady_clock::now();
     session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes);
     session->times.levels = seconds_since(start);
+    if (p.keep_small_subtrees || p.keep_cheaper_subtrees)
+        session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
+                                      p.render_mode != RenderMode::untextured);
     if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
     session->original_cost = model_cost(model);
     return session;
@@ -117,7 +121,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     bool textured = p.render_mode != RenderMode::untextured;
     Lod lod;
     lod.current_level = current_level;
-    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, p.keep_small_subtrees);
+    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
 
     // Bake the faces of boxes no earlier level baked, in parallel (one face per task).
     auto start = std::chrono::steady_clock::now();

@@ -27,6 +27,7 @@ struct LodSession {
     std::vector<std::optional<OrientedBox>> boxes;
     LevelValues levels;
     TextureSizing sizing;
+    std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
     ModelCost original_cost;
     LodTimes times;

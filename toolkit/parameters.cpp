@@ -64,6 +64,7 @@ KeyValues parameter_entries(const LodParameters& p) {
     line("box_kind", box_kind_name(p.box_kind));
     line("interpolation", interpolation_name(p.interpolation));
     line("keep_small_subtrees", p.keep_small_subtrees ? "true" : "false");
+    line("keep_cheaper_subtrees", p.keep_cheaper_subtrees ? "true" : "false");
     line("crop_faces", p.crop_faces ? "true" : "false");
     line("fovy", format_number(p.fovy));
     line("distance", format_number(p.distance));
@@ -109,6 +110,7 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
         {"box_kind", [&](const Parser& q, const std::string& v) { if (!parse_box_kind(v, p.box_kind)) q.fail("unknown box kind '" + v + "'"); }},
         {"interpolation", [&](const Parser& q, const std::string& v) { if (!parse_interpolation(v, p.interpolation)) q.fail("unknown interpolation '" + v + "'"); }},
         {"keep_small_subtrees", [&](const Parser& q, const std::string& v) { p.keep_small_subtrees = q.boolean(v); }},
+        {"keep_cheaper_subtrees", [&](const Parser& q, const std::string& v) { p.keep_cheaper_subtrees = q.boolean(v); }},
         {"crop_faces", [&](const Parser& q, const std::string& v) { p.crop_faces = q.boolean(v); }},
         {"fovy", [&](const Parser& q, const std::string& v) { p.fovy = q.number(v); }},
         {"distance", [&](const Parser& q, const std::string& v) { p.distance = q.number(v); }},

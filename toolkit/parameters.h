@@ -19,7 +19,8 @@ struct LodParameters {
     int current_level = 1;
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
-    bool keep_small_subtrees = false;  // beyond the manual: no box for a sub-tree of <= 6 faces (cut.h)
+    bool keep_small_subtrees = false;    // beyond the manual: no box for a sub-tree of <= 6 faces (kept_subtrees.h)
+    bool keep_cheaper_subtrees = false;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
     bool crop_faces = true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;

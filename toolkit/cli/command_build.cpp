@@ -1,6 +1,7 @@
 #include "renderer/input_error.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/cli/lod_options.h"
+#include "toolkit/cost.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
 
@@ -41,6 +42,23 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
     return distances;
 }
 
+// What levels 1..N cost shipped together (a texture shared by levels paid
+// once), and their textures against those of the finest level with pages.
+KeyValues chain_report(const std::string& name, const std::vector<CostParts>& levels, int finest_textured) {
+    std::vector<const CostParts*> all;
+    for (const CostParts& level : levels) all.push_back(&level);
+    const ModelCost chain = combined_cost(all);
+    KeyValues report{text_entry("name", name + "_chain")};
+    const KeyValues cost = cost_entries(chain, "_chain");
+    report.insert(report.end(), cost.begin(), cost.end());
+    if (finest_textured >= 0) {
+        const ModelCost finest = combined_cost({&levels[std::size_t(finest_textured)]});
+        report.push_back(number_entry("finest_textured_level", finest_textured + 1));
+        report.push_back(number_entry("chain_texture_ratio", double(chain.texture_bytes_gpu) / double(finest.texture_bytes_gpu)));
+    }
+    return report;
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
@@ -76,9 +94,13 @@ int run_build(const Arguments& a) {
         }
         return *session;
     };
+    std::vector<CostParts> chain;  // levels 1..N, for the chain's cost
+    int finest_textured = -1;
     for (int level : levels) {
         LodSession* session = &session_for(level);
         Lod lod = build_lod(*session, level, threads);
+        if (level >= 1) chain.push_back(lod.cost);
+        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
         std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
         auto start = std::chrono::steady_clock::now();
         Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
@@ -89,6 +111,7 @@ int run_build(const Arguments& a) {
         std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
         std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
     }
+    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain, finest_textured)).c_str(), stdout);
     if (a.has("timings")) {
         LodTimes t = first->times;
         for (const auto& [distance, session] : sessions) {

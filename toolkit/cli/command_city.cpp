@@ -56,6 +56,7 @@ int run_city(const Arguments& arguments) {
                 "--level-mode: unknown level mode '" + arguments.text("level-mode") + "'");
     options.wanted_levels = arguments.integer("levels", options.wanted_levels);
     options.keep_small_subtrees = arguments.has("keep-small-subtrees");
+    options.keep_cheaper_subtrees = arguments.has("keep-cheaper-subtrees");
     require(options.wanted_levels >= 1 && options.wanted_levels <= 64, "--levels takes 1 to 64 levels");
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
     require(options.base_distance > 0 && std::isfinite(options.base_distance), "--base-distance must be positive");
@@ -150,6 +151,7 @@ Subcommand city_subcommand() {
               {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
               {"levels", "N", "wanted levels for the box modes (default 8)"},
               {"keep-small-subtrees", "", "no box for a sub-tree of at most 6 faces (as build --keep-small-subtrees)"},
+              {"keep-cheaper-subtrees", "", "no box costing more bytes than its sub-tree's mesh (as build --keep-cheaper-subtrees)"},
               {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)"},
               {"threads", "N", "threads to use (default 0 = all cores)"},
               {"json", "", "print one JSON object instead of key = value lines"}},

@@ -40,7 +40,7 @@ Subcommand sweep_subcommand() {
              "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x render mode "
              "of CONFIG (key = value lines: models, level_modes, box_kinds, interpolations, levels, wanted_levels, "
              "views, distances, render_modes, width, height, fovy, metrics, ppd, resolution, sizing, baselines, "
-             "keep_small_subtrees, keep_images, threads), "
+             "keep_small_subtrees, keep_cheaper_subtrees, keep_images, threads), "
              "each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
              "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
              {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", 'o'},

@@ -16,6 +16,8 @@ std::vector<Option> lod_options() {
         {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
         {"keep-small-subtrees", "", "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a "
                                     "6-face box, so no level draws more faces than the original"},
+        {"keep-cheaper-subtrees", "", "beyond the manual: a node whose sub-tree's mesh costs fewer bytes than its textured "
+                                      "box would keeps its geometry, so no box costs more than what it replaces"},
         {"no-crop", "", "keep every baked face whole instead of cropping it to its covered texels (and dropping "
                         "faces with none)"},
         {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
@@ -54,6 +56,7 @@ LodParameters lod_parameters_from(const Arguments& a) {
     word("interpolation", parse_interpolation, p.interpolation, "linear, log, rank");
     word("render-mode", parse_render_mode, p.render_mode, "untextured, normal, parallax, pom");
     if (a.has("keep-small-subtrees")) p.keep_small_subtrees = true;
+    if (a.has("keep-cheaper-subtrees")) p.keep_cheaper_subtrees = true;
     if (a.has("no-crop")) p.crop_faces = false;
     p.current_level = a.integer("level", p.current_level);
     p.wanted_levels = a.integer("wanted-levels", p.wanted_levels);
