@@ -1,5 +1,6 @@
 #include "experiments/silhouette.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace boxlod {
@@ -9,6 +10,10 @@ Coverage coverage_from_mask(const Image8& mask) {
     for (int y = 0; y < mask.height; ++y)
         for (int x = 0; x < mask.width; ++x) out.covered[std::size_t(y) * mask.width + x] = mask.at(x, y)[0] > 127;
     return out;
+}
+
+std::size_t covered_pixels(const Coverage& coverage) {
+    return std::size_t(std::count(coverage.covered.begin(), coverage.covered.end(), std::uint8_t(1)));
 }
 
 Coverage coverage_from_background(const Image8& image, std::array<std::uint8_t, 3> background) {

@@ -21,6 +21,9 @@ Coverage coverage_from_mask(const Image8& mask);
 // A colour image: covered where any of R, G, B differs from `background`.
 Coverage coverage_from_background(const Image8& image, std::array<std::uint8_t, 3> background);
 
+// The number of covered pixels.
+std::size_t covered_pixels(const Coverage& coverage);
+
 // |A and B| / |A or B|; 1 when neither covers any pixel. Throws
 // std::invalid_argument when the sizes differ.
 double silhouette_iou(const Coverage& a, const Coverage& b);

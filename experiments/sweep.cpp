@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -209,7 +210,8 @@ std::string eta_text(double seconds) {
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
     for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
-                          "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes"})
+                          "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
+                          "covered_pixels"})
         columns.push_back(c);
     columns.insert(columns.end(), config.metrics.begin(), config.metrics.end());
     return columns;
@@ -235,7 +237,7 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
         write_png((images / file_name(name)).string(), image);
     };
     const std::size_t per_group = config.views.size() * config.distances.size() * config.render_modes.size();
-    // With SizingRule::nearest every distance draws the LoD baked for the smallest one.
+    // With SizingRule::nearest (and per_level) every distance draws the LoD baked for the smallest one.
     auto sizing_index = [&](std::size_t d) -> std::size_t {
         if (config.sizing == SizingRule::each_distance) return d;
         return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
@@ -356,7 +358,8 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                     std::to_string(c.face_texels),
                     std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
                     std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
-                    std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes())};
+                    std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes()),
+                    std::to_string(covered_pixels(original_shot.coverage))};
                 fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
                 results.rows[row.key] = join(fields);
                 timings.rows[row.key] = join({row.key, format_number(c.seconds), format_number(render_seconds),
@@ -382,14 +385,16 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
 
         for (const Variant& variant : variants) {
             // Normal, parallax, pom and albedo draw the same baked boxes; untextured boxes are not baked.
-            // Slot = 2 x sizing distance + (untextured ? 1 : 0); one session per slot, shared by the levels.
-            std::map<int, std::unique_ptr<LodSession>> sessions;
+            // Slot = 2 x sizing distance + (untextured ? 1 : 0); one session per slot and sizing level, shared
+            // by the levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
+            std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
             auto slot = [&](RenderMode mode, std::size_t d) { return int(2 * sizing_index(d) + (mode == RenderMode::untextured)); };
             for (int level : variant.levels) {
+                const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
                 std::string group = join({entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
                                           interpolation_name(variant.interpolation), std::to_string(level)});
                 run_group(group, slot, [&](int s) {
-                    std::unique_ptr<LodSession>& session = sessions[s];
+                    std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
                     if (!session) {
                         LodParameters p;
                         p.level_mode = variant.mode;
@@ -397,7 +402,9 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
                         p.interpolation = variant.interpolation;
                         p.wanted_levels = config.wanted_levels;
                         p.fovy = config.fovy;
-                        p.distance = config.distances[std::size_t(s / 2)] * framing.framing_distance;
+                        p.distance = config.distances[std::size_t(s / 2)] * framing.framing_distance *
+                                     std::ldexp(1.0f, sizing_level - 1);
+                        p.min_texture_size = config.min_texture_size;
                         p.resolution = config.resolution;
                         p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
                         p.keep_small_subtrees = config.keep_small_subtrees;

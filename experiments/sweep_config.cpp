@@ -147,10 +147,15 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              if (!(c.pixels_per_degree > 0)) l.fail("expected a positive number of pixels per degree");
          }},
         {"resolution", [&](const Line& l) { c.resolution = l.number_in(1.0f, 65536.0f); }},
+        {"min_texture_size", [&](const Line& l) {
+             c.min_texture_size = l.number_in(1, 4096);
+             if (c.min_texture_size & (c.min_texture_size - 1)) l.fail("expected a power of two from 1 to 4096");
+         }},
         {"sizing", [&](const Line& l) {
              if (l.line.value == "nearest") c.sizing = SizingRule::nearest;
              else if (l.line.value == "each-distance") c.sizing = SizingRule::each_distance;
-             else l.fail("expected nearest or each-distance, got '" + l.line.value + "'");
+             else if (l.line.value == "per-level") c.sizing = SizingRule::per_level;
+             else l.fail("expected nearest, each-distance or per-level, got '" + l.line.value + "'");
          }},
         {"baselines", [&](const Line& l) {
              c.simplification_baseline = c.single_box_baseline = false;

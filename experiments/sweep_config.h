@@ -19,8 +19,10 @@ enum class KeptImages { none, lod, all };
 // The distance the LoD textures are sized for (DESIGN.md: Texture sizing):
 // nearest: one LoD per level, baked for the smallest of the distances (it is
 // texel-exact there and oversampled farther away); each_distance: an LoD per
-// level and distance, baked for that distance (texture memory against distance).
-enum class SizingRule { nearest, each_distance };
+// level and distance, baked for that distance (texture memory against distance);
+// per_level: level c baked for the smallest distance x 2^(c-1), as an engine's
+// chain (`build --level-distances auto`) ships it.
+enum class SizingRule { nearest, each_distance, per_level };
 
 struct SweepModel {
     std::string name;  // as written in the config: the CSV's `model` column
@@ -44,6 +46,7 @@ struct SweepConfig {
     double pixels_per_degree = 67;  // FLIP's
     float resolution = 512;  // texture sizing screen height
     SizingRule sizing = SizingRule::nearest;
+    int min_texture_size = 256;  // LodParameters::min_texture_size: the smallest LoD page side
     // The classic baselines (issue 6, item 2), compared at the LoD's triangle counts:
     // the original simplified to each level's triangles (quadric edge collapse), and
     // the whole model as one untextured box.

@@ -13,6 +13,7 @@ TEST(Silhouette, HalfOverlappingRectanglesHaveIouOneThird) {
     Coverage b = coverage_from_mask(rectangle_mask(80, 40, 30, 10, 70, 30));
     EXPECT_DOUBLE_EQ(silhouette_iou(a, b), 400.0 / 1200.0);
     EXPECT_DOUBLE_EQ(silhouette_iou(b, a), 400.0 / 1200.0);
+    EXPECT_EQ(covered_pixels(a), 800u);
 }
 
 TEST(Silhouette, IdenticalDisjointAndEmptyMasks) {

@@ -181,6 +181,28 @@ TEST(Sweep, SizingEachDistanceBakesFewerTexelsFartherAway) {
     }
 }
 
+// per-level sizing: level c baked for the nearest distance x 2^(c-1), as `build --level-distances auto`.
+TEST(Sweep, SizingPerLevelBakesCoarserLevelsForFartherAway) {
+    SmallSweep s = small_sweep("sweep_sizing_per_level", "sizing = per-level\nmin_texture_size = 16\n");
+    s.config.levels = {1, 3};
+    s.config.views = {"+X+Y+Z"};
+    s.config.level_modes = {LevelMode::top_down};
+    EXPECT_EQ(s.config.min_texture_size, 16);
+    SweepConfig nearest = s.config;
+    nearest.sizing = SizingRule::nearest;
+    run_sweep(s.config, (s.folder / "per_level").string(), 1);
+    run_sweep(nearest, (s.folder / "nearest").string(), 1);
+    Table per_level = read_csv(s.folder / "per_level" / "results.csv"), one = read_csv(s.folder / "nearest" / "results.csv");
+    ASSERT_EQ(per_level.size(), 3u);
+    ASSERT_EQ(one.size(), 3u);
+    const std::size_t texels = column(one, "face_texels"), covered = column(one, "covered_pixels");
+    EXPECT_EQ(per_level[1][texels], one[1][texels]);  // level 1: the nearest distance itself
+    EXPECT_LT(std::stod(per_level[2][texels]), std::stod(one[2][texels]) / 8) << "level 3: 4x farther";
+    // The original's covered pixels are the view's, whatever the LoD.
+    EXPECT_GT(std::stod(one[1][covered]), 0);
+    EXPECT_EQ(per_level[1][covered], one[2][covered]);
+}
+
 TEST(Sweep, ResultsAreIdenticalForOneAndTwoThreads) {
     SmallSweep s = small_sweep("sweep_threads");
     run_sweep(s.config, (s.folder / "one").string(), 1);

@@ -86,8 +86,9 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
     expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
+    expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two from 1 to 4096");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
-    expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest or each-distance");
+    expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
     expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
