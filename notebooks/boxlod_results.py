@@ -36,6 +36,8 @@ KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "di
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
          "box-max-extent", "simplification", "single-box"]
 BASELINES = ("simplification", "single-box")
+# README: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
+COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
 STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, mode in enumerate(MODES[:7])}
 STYLE["simplification"] = dict(color="black", marker="x", linestyle="--")
@@ -110,9 +112,11 @@ def per_level(frame, metrics=("psnr", "ssim", "flip")):
     for key, members in frame.groupby(group, sort=False):
         row = dict(zip(group, key))
         for column in ("obtained_levels", "faces", "triangles", "vertices", "texels", "face_texels", "pages",
-                       "page_size", "nodes_with_box"):
+                       "page_size", "nodes_with_box", *COST_COLUMNS):
             if column in members:
                 row[column] = members[column].iloc[0]
+        if "covered_pixels" in members:  # the view's, so a mean over the views
+            row["covered_pixels"] = members["covered_pixels"].mean()
         row["views"] = len(members)
         for metric in metrics:
             if metric not in members:
