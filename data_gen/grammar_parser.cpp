@@ -5,6 +5,7 @@
 #include "data_gen/primitives.h"
 #include "data_gen/textures.h"
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
 
 #include <cctype>
 #include <charconv>
@@ -125,6 +126,17 @@ private:
     std::vector<Token> tokens_;
     std::string file_;
     std::size_t position_ = 0;
+    int depth_ = 0;  // nesting of blocks and expressions, so that no input can overflow the stack
+
+    // One level deeper for as long as it lives.
+    struct Deeper {
+        Parser& parser;
+        explicit Deeper(Parser& p) : parser(p) { p.deeper(); }
+        ~Deeper() { --parser.depth_; }
+    };
+    void deeper() {
+        if (++depth_ > max_nesting_depth) throw_grammar_error(file_, peek().place, nesting_message());
+    }
 
     const Token& peek(std::size_t ahead = 0) const { return tokens_[std::min(position_ + ahead, tokens_.size() - 1)]; }
     const Token& take() { return tokens_[std::min(position_++, tokens_.size() - 1)]; }
@@ -227,6 +239,7 @@ private:
 
     // Operations up to '|', '}', ']', the next rule or attribute, or the end.
     Sequence parse_sequence() {
+        Deeper deeper(*this);
         Sequence sequence;
         for (;;) {
             const Token& token = peek();
@@ -420,12 +433,16 @@ private:
             {"||"}, {"&&"}, {"<", ">", "<=", ">=", "==", "!="}, {"+", "-"}, {"*", "/", "%"}};
         if (level == int(levels.size())) return parse_unary();
         Expression left = parse_binary(level + 1);
-        for (;;) {
+        for (int links = 0;; ++links) {
             const Token& token = peek();
             bool matches = false;
             for (const std::string& op : levels[level]) matches = matches || (token.kind == Token::Kind::punctuation && token.text == op);
             // "30% :" starts the next alternative, so % before ':' is not an operator.
-            if (!matches || (token.text == "%" && peek(1).text == ":")) return left;
+            if (!matches || (token.text == "%" && peek(1).text == ":")) {
+                depth_ -= links;
+                return left;
+            }
+            deeper();  // a chain a + b + c is a tree as deep as it is long
             Expression e;
             e.kind = Expression::Kind::binary;
             e.place = token.place;
@@ -437,6 +454,7 @@ private:
     }
 
     Expression parse_unary() {
+        Deeper deeper(*this);
         if (is("-") || is("!")) {
             Expression e;
             e.kind = Expression::Kind::unary;
@@ -563,11 +581,7 @@ Grammar parse_grammar(const std::string& text, const std::string& file, const st
 }
 
 Grammar read_grammar(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path, "", "cannot open the grammar file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_grammar(text.str(), path, std::filesystem::path(path).parent_path().string());
+    return parse_grammar(read_input_file(path, "grammar file"), path, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace boxlod

@@ -170,9 +170,18 @@ private:
                 break;
             }
             }
+            if (!in_world(shape.scope))
+                fail(op.place, "the scope leaves the world: a coordinate or size beyond " + std::to_string(long(max_world_extent)) +
+                                   " m, or not a number");
         }
         return true;
     }
+
+    static bool in_world(const ScopeBox& scope) {
+        auto bounded = [](const auto& v) { return v.allFinite() && v.cwiseAbs().maxCoeff() <= max_world_extent; };
+        return bounded(scope.origin) && bounded(scope.size) && scope.axes.allFinite();
+    }
+
 
     // Argument `a` of t() or s(): metres, or 'relative to the scope's size.
     double amount(const Operation& op, int a, const Shape& shape, Application& application) {
@@ -352,7 +361,8 @@ ScopeBox ground_lot(float width, float depth, const Eigen::Vector3f& center) {
 
 Model generate_building(const Grammar& grammar, const BuildingOptions& options) {
     Eigen::Vector2f lot = options.lot.value_or(default_lot(grammar, options.seed));
-    if (!(lot.array() > 0).all() || !lot.allFinite()) throw_input_error(grammar.file, "", "the lot must have a positive width and depth");
+    if (!(lot.array() > 0).all() || !(lot.array() <= max_world_extent).all())
+        throw_input_error(grammar.file, "", "the lot's width and depth must be in (0, " + std::to_string(long(max_world_extent)) + "] m");
     Model model;
     model.source = grammar.file;
     MaterialCache materials;

@@ -17,6 +17,10 @@ namespace boxlod {
 // Guards against grammars that never stop: a rule nested deeper than
 // `max_depth`, or one derivation making more than `max_nodes` nodes, is an
 // InputError.
+// No scope may reach further from the origin, or be larger, than this (metres):
+// a value such as extrude(1e39) is refused where it is made, not as NaN later.
+constexpr float max_world_extent = 1e6f;
+
 struct DerivationLimits {
     int max_depth = 100;
     std::size_t max_nodes = 2'000'000;

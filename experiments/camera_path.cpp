@@ -2,6 +2,7 @@
 
 #include "renderer/camera.h"
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
 
 #include <algorithm>
 #include <charconv>
@@ -98,11 +99,7 @@ std::vector<Keyframe> parse_keyframes(const std::string& text, const std::string
 }
 
 std::vector<Keyframe> load_keyframes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path, "", "cannot open the keyframe file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_keyframes(text.str(), path);
+    return parse_keyframes(read_input_file(path, "keyframe file"), path);
 }
 
 CameraPose pose_at(const std::vector<Keyframe>& keys, double time) {

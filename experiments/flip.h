@@ -18,6 +18,7 @@
 #pragma once
 #include "experiments/separable_filter.h"
 #include "renderer/image.h"
+#include "renderer/input_error.h"
 
 namespace boxlod {
 
@@ -30,6 +31,9 @@ struct FlipResult {
 // ignored) of the same size; `pixels_per_degree` is the observer's angular
 // resolution (67 is a 0.7 m wide 4K monitor seen from 0.7 m, the paper's
 // default). Throws std::invalid_argument on different sizes or ppd <= 0.
+// The observer's pixels per degree a user may ask for: FLIP's filters grow with it.
+constexpr NumberRange pixels_per_degree_range{1, 300};
+
 FlipResult flip(const Image8& reference, const Image8& test, double pixels_per_degree = 67, int threads = 0);
 
 // The reference's half of the work, done once when many test images are

@@ -1,7 +1,11 @@
 #include "experiments/sweep_config.h"
 
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
+#include "experiments/flip.h"
+#include "renderer/parallel.h"
 #include "toolkit/key_value_lines.h"
+#include "toolkit/parameters.h"
 
 #include <algorithm>
 #include <charconv>
@@ -17,6 +21,8 @@ namespace boxlod {
 namespace {
 
 const std::vector<std::string> known_metrics = {"rmse", "psnr", "ssim", "flip", "iou"};
+constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
+constexpr NumberRange distance_multiple_range{0.01, 1000};  // of the framing distance
 
 struct Line {
     const std::string& file;
@@ -49,11 +55,13 @@ struct Line {
         return v;
     }
     template <typename T>
-    T number_in(T low, T high) const {
-        T v = number<T>(line.value);
-        if (v < low || v > high) fail("expected a value in " + std::to_string(low) + " .. " + std::to_string(high));
+    T number_in(const NumberRange& range, const std::string& text) const {
+        T v = number<T>(text);
+        if (!range.contains(double(v))) fail(out_of_range_message(range, text));
         return v;
     }
+    template <typename T>
+    T number_in(const NumberRange& range) const { return number_in<T>(range, line.value); }
     // Each item through parse(word, value); unknown words name the accepted ones.
     template <typename T, typename Parse>
     std::vector<T> words(Parse parse, const char* known) const {
@@ -102,13 +110,11 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              if (l.line.value == "all") return;
              std::set<int> levels;
              for (const std::string& item : l.items()) {
-                 int level = l.number<int>(item);
-                 if (level < 0) l.fail("levels are 0 or more, got " + item);
-                 levels.insert(level);
+                 levels.insert(l.number_in<int>(parameter_range::current_level, item));
              }
              c.levels.assign(levels.begin(), levels.end());
          }},
-        {"wanted_levels", [&](const Line& l) { c.wanted_levels = l.number_in(1, 1000); }},
+        {"wanted_levels", [&](const Line& l) { c.wanted_levels = l.number_in<int>(parameter_range::wanted_levels); }},
         {"views", [&](const Line& l) {
              c.views.clear();
              std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
@@ -120,20 +126,16 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
         {"distances", [&](const Line& l) {
              c.distances.clear();
              for (const std::string& item : l.items()) {
-                 float d = l.number<float>(item);
-                 if (!(d > 0)) l.fail("distances are positive multiples of the framing distance, got " + item);
+                 float d = l.number_in<float>(distance_multiple_range, item);
                  if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end()) c.distances.push_back(d);
              }
          }},
         {"render_modes", [&](const Line& l) {
              c.render_modes = l.words<RenderMode>(parse_render_mode, "untextured, normal, parallax, pom, albedo");
          }},
-        {"width", [&](const Line& l) { c.width = l.number_in(16, 16384); }},
-        {"height", [&](const Line& l) { c.height = l.number_in(16, 16384); }},
-        {"fovy", [&](const Line& l) {
-             c.fovy = l.number<float>(l.line.value);
-             if (!(c.fovy > 0 && c.fovy < 180)) l.fail("expected degrees in (0, 180)");
-         }},
+        {"width", [&](const Line& l) { c.width = l.number_in<int>(sweep_image_side_range); }},
+        {"height", [&](const Line& l) { c.height = l.number_in<int>(sweep_image_side_range); }},
+        {"fovy", [&](const Line& l) { c.fovy = l.number_in<float>(parameter_range::fovy); }},
         {"metrics", [&](const Line& l) {
              c.metrics.clear();
              for (const std::string& metric : l.items()) {
@@ -142,13 +144,10 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
                  if (std::find(c.metrics.begin(), c.metrics.end(), metric) == c.metrics.end()) c.metrics.push_back(metric);
              }
          }},
-        {"ppd", [&](const Line& l) {
-             c.pixels_per_degree = l.number<double>(l.line.value);
-             if (!(c.pixels_per_degree > 0)) l.fail("expected a positive number of pixels per degree");
-         }},
-        {"resolution", [&](const Line& l) { c.resolution = l.number_in(1.0f, 65536.0f); }},
+        {"ppd", [&](const Line& l) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
+        {"resolution", [&](const Line& l) { c.resolution = l.number_in<float>(parameter_range::resolution); }},
         {"min_texture_size", [&](const Line& l) {
-             c.min_texture_size = l.number_in(1, 4096);
+             c.min_texture_size = l.number_in<int>({1, 4096});
              if (c.min_texture_size & (c.min_texture_size - 1)) l.fail("expected a power of two from 1 to 4096");
          }},
         {"sizing", [&](const Line& l) {
@@ -175,15 +174,13 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              if (kind == kinds.end()) l.fail("expected none, lod or all, got '" + l.line.value + "'");
              c.keep_images = kind->second;
          }},
-        {"threads", [&](const Line& l) { c.threads = l.number_in(0, 4096); }},
+        {"threads", [&](const Line& l) { c.threads = l.number_in<int>(thread_count_range); }},
     };
-    std::set<std::string> seen;
     for (const KeyValueLine& kv : parse_key_value_lines(text, file)) {
         Line line{file, kv};
         auto setter = setters.find(kv.key);
         if (setter == setters.end()) line.fail("unknown key");
         if (kv.value.empty()) line.fail("missing value");
-        if (!seen.insert(kv.key).second) line.fail("given twice");
         setter->second(line);
     }
     if (c.models.empty()) throw_input_error(file, "", "no models (key 'models')");
@@ -191,11 +188,7 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
 }
 
 SweepConfig load_sweep_config(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path, "", "cannot open sweep config");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_sweep_config(text.str(), path);
+    return parse_sweep_config(read_input_file(path, "sweep config"), path);
 }
 
 }  // namespace boxlod

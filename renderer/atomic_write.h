@@ -1,5 +1,6 @@
 // Files appear whole or not at all: write to a temporary name beside the
-// target, then rename (DESIGN.md: Files).
+// target, then rename (docs: Files). Files that belong together (one LoD
+// level) appear together or not at all, even when the run is interrupted.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -9,10 +10,40 @@
 namespace boxlod {
 
 // Calls write(temporary_path), then renames it to path. If write throws, the
-// temporary file is removed and the exception passes on.
+// temporary file is removed and the exception passes on; a failed rename is an
+// InputError naming path. Temporaries are named PATH.tmpPID.
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
 void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes);
 void write_text_atomically(const std::string& path, const std::string& text);
+
+// Checked before any work, so a bad output path costs nothing: each throws
+// InputError "path: what" unless a file can be created there. Both also remove
+// the temporaries a killed run of boxlod left in that folder.
+void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder
+void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
+
+// Files that appear together or not at all: every file a group's atomic
+// writes create belongs to it (a file they replace stays, as others may need
+// it). A group destroyed without commit() (an exception passing) removes its
+// files; groups nest, the outermost decides.
+class OutputGroup {
+public:
+    OutputGroup();
+    ~OutputGroup();
+    void commit() { committed_ = true; }
+    OutputGroup(const OutputGroup&) = delete;
+    OutputGroup& operator=(const OutputGroup&) = delete;
+
+private:
+    std::size_t first_file_;
+    bool committed_ = false;
+};
+
+// Call first in main(), before any thread starts: SIGINT, SIGTERM and SIGHUP
+// then remove every temporary being written and every file of an open group,
+// and end the process with status 128 + the signal. (SIGKILL cannot be caught:
+// its temporaries go at the next run, see check_output_file.)
+void remove_partial_outputs_on_interrupt();
 
 }  // namespace boxlod

@@ -1,9 +1,21 @@
 #include "renderer/camera.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace boxlod {
+
+std::string camera_problem(const Camera& camera) {
+    if (!camera.position.allFinite() || !camera.target.allFinite() || !camera.up.allFinite()) return "the camera is not finite";
+    Eigen::Vector3f forward = camera.target - camera.position;
+    if (!(forward.norm() > 1e-6f * std::max(1.0f, camera.position.norm()))) return "the camera's position equals its target";
+    if (!(camera.up.norm() > 0)) return "the camera's up direction is zero";
+    if (!(forward.normalized().cross(camera.up.normalized()).norm() > 1e-4f)) return "the camera's up direction is along its view";
+    if (!camera.orthographic && !(camera.fovy_degrees > 0 && camera.fovy_degrees < 180))
+        return "the camera's field of view must be in (0, 180) degrees";
+    return "";
+}
 
 Eigen::Matrix4f view_matrix(const Camera& camera) {
     Eigen::Vector3f forward = (camera.target - camera.position).normalized();

@@ -18,6 +18,10 @@ struct Camera {
     float near_plane = 0.1f, far_plane = 100;
 };
 
+// What makes a camera unusable (eye on the target, no up direction, up along
+// the view, field of view outside (0, 180)), or "" for a usable one.
+std::string camera_problem(const Camera& camera);
+
 Eigen::Matrix4f view_matrix(const Camera& camera);
 // `aspect` = width / height; ignored for orthographic cameras, whose window is explicit.
 Eigen::Matrix4f projection_matrix(const Camera& camera, float aspect);

@@ -2,6 +2,7 @@
 
 #include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 // stb_image_write's zlib stream compressor and settings; libstb exports them, the header keeps them private.
 extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, int* out_len, int quality);
@@ -19,8 +21,27 @@ extern "C" int stbi_write_png_compression_level;
 extern "C" int stbi_write_force_png_filter;
 
 namespace boxlod {
+namespace {
+// The header read before decoding: no allocation for a size the file only claims.
+void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
+    int width = 0, height = 0, channels = 0;
+    if (encoded.size() > std::size_t(std::numeric_limits<int>::max())) throw_input_error(name, "", "image file too large");
+    if (!stbi_info_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels))
+        throw_input_error(name, "", std::string("cannot decode image: ") + stbi_failure_reason());
+    if (width > max_image_side || height > max_image_side)
+        throw_input_error(name, "", "image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than " +
+                                        std::to_string(max_image_side) + " per side");
+}
+}  // namespace
+
+bool is_grey16(std::span<const std::uint8_t> encoded) {
+    int width = 0, height = 0, channels = 0, size = int(std::min<std::size_t>(encoded.size(), std::numeric_limits<int>::max()));
+    return stbi_is_16_bit_from_memory(encoded.data(), size) && stbi_info_from_memory(encoded.data(), size, &width, &height, &channels) &&
+           channels == 1;
+}
 
 Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& name) {
+    check_image_header(encoded, name);
     int width = 0, height = 0, channels_in_file = 0;
     stbi_uc* data = stbi_load_from_memory(encoded.data(), int(encoded.size()), &width, &height,
                                           &channels_in_file, 4);
@@ -32,10 +53,8 @@ Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& na
 }
 
 Image8 read_image(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw_input_error(path, "", "cannot open image file");
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return decode_image(bytes, path);
+    std::string bytes = read_input_file(path, "image file");
+    return decode_image({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path);
 }
 
 namespace {
@@ -124,6 +143,7 @@ std::vector<std::uint8_t> encode_png16(const Image16& image) {
 void write_png16(const std::string& path, const Image16& image) { write_file_atomically(path, encode_png16(image)); }
 
 Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string& name) {
+    check_image_header(encoded, name);
     int width = 0, height = 0, channels = 0;
     stbi_us* data = stbi_load_16_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels, 1);
     if (!data) throw_input_error(name, "", std::string("cannot decode image: ") + stbi_failure_reason());

@@ -1,5 +1,6 @@
 // Images: plain pixel arrays, PNG in and out (stb), sRGB <-> linear.
 #pragma once
+#include "renderer/input_error.h"
 #include <cstdint>
 #include <span>
 #include <string>
@@ -23,6 +24,11 @@ using Image8 = Image<std::uint8_t>;
 using Image16 = Image<std::uint16_t>;
 using ImageF = Image<float>;
 
+// Images larger than this per side are refused before decoding (a tiny file
+// may claim any size); it is also the largest texture page boxlod writes.
+constexpr int max_image_side = 16384;
+constexpr NumberRange image_side_range{1, max_image_side};
+
 // Decodes PNG/JPEG/BMP/TGA/... bytes to RGBA8; `name` names the source in errors.
 Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& name);
 Image8 read_image(const std::string& path);
@@ -36,6 +42,8 @@ std::vector<std::uint8_t> encode_png16(const Image16& image);
 void write_png16(const std::string& path, const Image16& image);  // atomic
 // The first channel at 16 bits (8-bit files are scaled by 257).
 Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string& name);
+// A 16-bit single-channel image (a height map) whose 16 bits decode_image16 keeps.
+bool is_grey16(std::span<const std::uint8_t> encoded);
 
 float srgb_to_linear(std::uint8_t value);  // exact table lookup
 std::uint8_t linear_to_srgb(float value);  // clamps to [0, 1], rounds to nearest

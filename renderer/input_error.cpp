@@ -1,5 +1,7 @@
 #include "renderer/input_error.h"
 
+#include <cstdio>
+
 namespace boxlod {
 
 std::string input_message(const std::string& file, const std::string& place, const std::string& what) {
@@ -11,5 +13,16 @@ std::string input_message(const std::string& file, const std::string& place, con
     while (!message.empty() && message.back() == ' ') message.pop_back();
     return message;
 }
+
+std::string out_of_range_message(const NumberRange& range, const std::string& text) {
+    auto number = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.10g", v);
+        return std::string(buffer);
+    };
+    return "expected a number in [" + number(range.min) + ", " + number(range.max) + "], got '" + text + "'";
+}
+
+std::string nesting_message() { return "nested more than " + std::to_string(max_nesting_depth) + " levels deep"; }
 
 }  // namespace boxlod

@@ -1,10 +1,15 @@
 // Deterministic parallel loops: work items are claimed dynamically, but each
 // item writes only its own output, so results never depend on scheduling.
 #pragma once
+#include "renderer/input_error.h"
+
 #include <cstddef>
 #include <functional>
 
 namespace boxlod {
+
+// The thread counts a user may ask for; 0 means all cores.
+constexpr NumberRange thread_count_range{0, 1024};
 
 // Number of threads to use when the user asked for `requested` (0 = all cores).
 int thread_count(int requested);

@@ -55,6 +55,8 @@ struct Light {
     float ambient = 0.25f, diffuse = 0.75f, specular = 0.25f;
     float shininess = 0;  // > 0 overrides every material's shininess
 };
+constexpr NumberRange light_intensity_range{0, 100};  // ambient, diffuse, specular
+constexpr NumberRange shininess_range{0, 1e4};
 
 // The default light: above the camera and to its right, as far again as the target.
 Light light_for_camera(const Camera& camera);

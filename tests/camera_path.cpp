@@ -42,7 +42,7 @@ TEST(CameraPath, BadKeyframesNameFileAndLine) {
         load_keyframes("/nonexistent/path.txt");
         FAIL() << "no error for a missing file";
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), "/nonexistent/path.txt: cannot open the keyframe file");
+        EXPECT_EQ(std::string(error.what()), "/nonexistent/path.txt: no such file");
     }
 }
 

@@ -221,6 +221,23 @@ TEST(GltfIo, SeveralRootNodesGetOneRootNamedAfterTheFile) {
     EXPECT_EQ(model.nodes[0].children, (std::vector<int>{1, 2}));
 }
 
+TEST(GltfIo, SixteenBitGreyUsedAsColourReadsAsGreyNotRed) {
+    auto folder = test::scratch_folder("gltf_grey16");
+    Model model = sample_model();
+    model.materials[0].base_color_texture = 2;  // the 16-bit height map, now also the colour
+    save_model(model, (folder / "grey.gltf").string());
+    Model back = load_model((folder / "grey.gltf").string());
+    const Texture& grey = back.textures[2];
+    ASSERT_TRUE(grey.image16.empty());
+    ASSERT_EQ(grey.image.channels, 4);
+    for (std::size_t i = 0; i < 6; ++i) {
+        std::uint8_t expected = std::uint8_t(model.textures[2].image16.pixels[i] >> 8);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(grey.image.pixels[i * 4 + c], expected) << i;
+        EXPECT_EQ(grey.image.pixels[i * 4 + 3], 255);
+    }
+    // Used only as a height map, it keeps its 16 bits (ExportThenImportGivesTheSameModel).
+}
+
 TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
     auto folder = test::scratch_folder("gltf_bad_input");
     auto write = [&](const std::string& name, const std::string& text) {
@@ -256,5 +273,27 @@ TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
     std::string whole = test::read_text(folder / "whole.glb");
     expect_input_error(write("truncated.glb", whole.substr(0, whole.size() / 2)));
     expect_input_error(write("garbage.glb", "this is not a glb file at all"));
+    std::string far_offset = R"(
+  "bufferViews": [{"buffer": 0, "byteOffset": 18446744073709551600, "byteLength": 36}, {"buffer": 0, "byteLength": 6}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}])";
+    EXPECT_NE(expect_input_error(write("offset.gltf", gltf_with_buffer(triangle_bytes(), far_offset + nodes))).find("runs past"),
+              std::string::npos);
+    std::string huge_count = triangle_mesh;
+    huge_count.replace(huge_count.find(R"("count": 3, "type": "VEC3")"), 10, R"("count": 4611686018427387904)");
+    EXPECT_NE(expect_input_error(write("count.gltf", gltf_with_buffer(triangle_bytes(), huge_count + nodes))).find("larger than any buffer"),
+              std::string::npos);
+    std::string broken_image = R"(, "images": [{"uri": "broken.png"}], "textures": [{"source": 0}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])";
+    test::write_text(folder / "broken.png", "\x89PNG but not really");
+    // The broken file is the image, and the message names it.
+    write("image.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + nodes + broken_image));
+    try {
+        load_model((folder / "image.gltf").string());
+        ADD_FAILURE() << "no error for a broken texture";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()), (folder / "broken.png").string() + ": cannot decode image: unknown image type");
+    }
     EXPECT_NE(expect_input_error(write("model.xyz", "?")).find("unknown model format"), std::string::npos);
 }

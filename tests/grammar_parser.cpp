@@ -117,6 +117,26 @@ TEST(GrammarParser, SyntaxErrorsNameThePlaceAndWhatWasExpected) {
     EXPECT_EQ(parse_error(""), "g.grammar:1:1: the grammar has no rules");
 }
 
+TEST(GrammarParser, NestingDeeperThanTheLimitIsRefusedNotOverflowed) {
+    const std::string refused = "nested more than 200 levels deep";
+    auto deep = [](const std::string& open, const std::string& middle, const std::string& close, int n) {
+        std::string text;
+        for (int i = 0; i < n; ++i) text += open;
+        text += middle;
+        for (int i = 0; i < n; ++i) text += close;
+        return text;
+    };
+    EXPECT_NE(parse_error("A --> extrude(" + deep("(", "1", ")", 3000) + ")\n").find(refused), std::string::npos);
+    EXPECT_NE(parse_error("A --> " + deep("[ ", "NIL", " ]", 3000) + "\n").find(refused), std::string::npos);
+    EXPECT_NE(parse_error("A --> " + deep("split(y) { 1 : ", "NIL", " }", 3000) + "\n").find(refused), std::string::npos);
+    EXPECT_NE(parse_error("A --> extrude(" + deep("-", "1", "", 3000) + ")\n").find(refused), std::string::npos);
+    std::string chain = "1";
+    for (int i = 0; i < 5000; ++i) chain += " + 1";
+    EXPECT_NE(parse_error("A --> extrude(" + chain + ")\n").find(refused), std::string::npos);
+    // Real grammars stay far below the limit.
+    EXPECT_EQ(parse_error("A --> extrude(" + deep("(", "1", ")", 50) + ") " + deep("[ ", "NIL", " ]", 50) + "\n"), "");
+}
+
 TEST(GrammarParser, MeaningErrors) {
     EXPECT_EQ(parse_error("A --> B\n"), "g.grammar:1:7: unknown symbol 'B' (no rule 'B --> ...')");
     EXPECT_EQ(parse_error("A --> B(1)\nB --> NIL\n"), "g.grammar:1:7: B takes 0 argument(s), got 1");

@@ -36,6 +36,19 @@ TEST(Image, UndecodableBytesAreAnInputError) {
     EXPECT_THROW(read_image("/nonexistent/file.png"), InputError);
 }
 
+TEST(Image, ASizeBeyondTheLimitIsRefusedBeforeDecoding) {
+    // A valid PNG header claiming 100000 x 1 pixels, with no pixel data.
+    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                     0, 1, 0x86, 0xa0, 0, 0, 0, 1, 8, 2, 0, 0, 0, 0, 0, 0, 0};
+    try {
+        decode_image(png, "wide.png");
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()), "wide.png: image is 100000x1 pixels, more than 16384 per side");
+    }
+    EXPECT_FALSE(is_grey16(png));
+}
+
 TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {
     for (int i = 0; i < 256; ++i) EXPECT_EQ(linear_to_srgb(srgb_to_linear(std::uint8_t(i))), i);
     EXPECT_EQ(linear_to_srgb(-1.0f), 0);

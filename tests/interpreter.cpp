@@ -196,6 +196,14 @@ TEST(Interpreter, DefaultLotComesFromTheGrammar) {
     expect_scope(model.nodes[0], {0, 0, 0}, {3.5f, 0, 2.5f});
 }
 
+TEST(Interpreter, ScopesBeyondTheWorldAreRefusedWhereTheyAreMade) {
+    EXPECT_EQ(build_error("Lot --> extrude(1e39)\n"),
+              "g.grammar:1:9: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
+    EXPECT_EQ(build_error("Lot --> extrude(2) t(0, 2e6, 0)\n"),
+              "g.grammar:1:20: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
+    EXPECT_EQ(build_error("Lot --> extrude(1)\n", 2e6f, 1).find("the lot's width and depth must be in (0, 1000000] m"), 11u);
+}
+
 TEST(Interpreter, StartSymbol) {
     Model model = build("A --> B\nB --> extrude(1) i(box)\n", 1, 1, 0, "B");
     EXPECT_EQ(rules(model), (std::vector<std::string>{"B"}));

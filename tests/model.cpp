@@ -73,6 +73,10 @@ TEST(Model, ValidationRejectsEachKindOfBadData) {
     add_node(empty, -1, "root");
     EXPECT_THROW(validate_model(empty), InputError);
 
+    Model zero_area = valid();  // e.g. random bytes that assimp reads as one point
+    for (auto& p : zero_area.nodes[0].primitives[0].positions) p = Eigen::Vector3f(1, 2, 3);
+    EXPECT_THROW(validate_model(zero_area), InputError);
+
     Model bad_material = valid();
     bad_material.nodes[0].primitives[0].material = 0;
     EXPECT_THROW(validate_model(bad_material), InputError);

@@ -4,11 +4,28 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 using namespace boxlod;
 
 namespace {
 Command render_like() {
-    return {"render", "MODEL", "Render.", {{"output", "FILE", "output", 'o'}, {"width", "W", "width"}, {"axes", "", "axes"}}, 1, 1};
+    return {"render", "MODEL", "Render.",
+            {{"output", "FILE", "output", {}, 'o'},
+             {"width", "W", "width", NumberRange{1, 16384}},
+             {"height", "H", "height", NumberRange{1, 16384}},
+             {"name", "N", "a name"},
+             {"axes", "", "axes"}},
+            1, 1};
+}
+
+std::string message_of(const std::vector<std::string>& words) {
+    try {
+        parse_arguments(render_like(), words);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
 }
 }  // namespace
 
@@ -27,9 +44,25 @@ TEST(Options, RejectsWhatItDoesNotKnow) {
     EXPECT_THROW(parse_arguments(render_like(), {}), InputError);
     EXPECT_THROW(parse_arguments(render_like(), {"a", "b"}), InputError);
     EXPECT_THROW(parse_arguments(render_like(), {"a", "--axes=1"}), InputError);
-    Arguments a = parse_arguments(render_like(), {"m", "--width", "wide"});
+    EXPECT_THROW(parse_arguments(render_like(), {"m", "--width", "wide"}), InputError);
+    Arguments a = parse_arguments(render_like(), {"m", "--width", "2.5"});
     EXPECT_THROW(a.integer("width", 0), InputError);
-    EXPECT_THROW(a.number("width", 0), InputError);
+}
+
+TEST(Options, NumbersOutsideTheirDeclaredRangeAreRefusedWhileParsing) {
+    EXPECT_EQ(message_of({"m", "--width", "100000"}), "boxlod render: --width: expected a number in [1, 16384], got '100000'");
+    EXPECT_EQ(message_of({"m", "--height=0"}), "boxlod render: --height: expected a number in [1, 16384], got '0'");
+    EXPECT_NE(message_of({"m", "--width", "1e39"}), "");
+    EXPECT_NE(message_of({"m", "--width", "nan"}), "");
+    EXPECT_NE(message_of({"m", "--width", "inf"}), "");
+    EXPECT_EQ(message_of({"m", "--width", "16384"}), "");
+}
+
+TEST(Options, ReadingANumberFromAnOptionWithoutARangeIsAProgrammingError) {
+    Arguments a = parse_arguments(render_like(), {"m", "--name", "5"});
+    EXPECT_THROW(a.number("name", 0), std::logic_error);
+    EXPECT_THROW(a.integer("name", 0), std::logic_error);
+    EXPECT_THROW(a.number("undeclared", 0), std::logic_error);
 }
 
 TEST(Options, HelpListsEveryOption) {

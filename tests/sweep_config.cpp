@@ -81,8 +81,10 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n", "cfg.txt: line 3: level_modes: unknown value 'sideways'");
     expect_error("models = a.glb\nviews = +X, +W\n", "cfg.txt: line 2: views: unknown camera position '+W'");
     expect_error("models = a.glb\nwidth = wide\n", "cfg.txt: line 2: width: expected a number");
-    expect_error("models = a.glb\nwidth = 4\n", "cfg.txt: line 2: width: expected a value in");
-    expect_error("models = a.glb\ndistances = 1, -2\n", "cfg.txt: line 2: distances: distances are positive");
+    expect_error("models = a.glb\nwidth = 4\n", "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
+    expect_error("models = a.glb\ndistances = 1, -2\n", "cfg.txt: line 2: distances: expected a number in [0.01, 1000], got '-2'");
+    expect_error("models = a.glb\nppd = 1e8\n", "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
+    expect_error("models = a.glb\nwanted_levels = 1000000000\n", "cfg.txt: line 2: wanted_levels: expected a number in [1, 64]");
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
     expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
@@ -90,7 +92,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
     expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");
-    expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice");
+    expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice (first on line 1)");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
     expect_error("models = sample:\n", "cfg.txt: line 1: models: 'sample:' needs a sample name");

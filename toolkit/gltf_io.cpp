@@ -1,8 +1,11 @@
 #include "toolkit/gltf_io.h"
 
 #include "renderer/atomic_write.h"
+#include "renderer/image.h"
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
 #include "renderer/parallel.h"
+#include "toolkit/gltf_structure.h"
 #include "toolkit/key_values.h"
 
 #include <Eigen/Geometry>
@@ -52,13 +55,17 @@ struct Reader {
         if (component_size <= 0 || components <= 0) fail(where, "unknown component or element type");
         std::size_t element = std::size_t(component_size) * components;
         std::size_t stride = buffer_view.byteStride ? buffer_view.byteStride : element;
-        std::size_t begin = buffer_view.byteOffset + accessor.byteOffset;
-        std::size_t needed = accessor.count == 0 ? 0 : (accessor.count - 1) * stride + element;
-        if (buffer_view.byteOffset + buffer_view.byteLength > buffer.data.size() ||
-            accessor.byteOffset + needed > buffer_view.byteLength)
+        if (stride < element) fail(where, "byteStride is smaller than an element");
+        // Every size here comes from the file: checked against overflow before it is added.
+        std::size_t needed = 0;
+        if (accessor.count > 0 && (!checked_multiply(accessor.count - 1, stride, needed) || needed > SIZE_MAX - element))
+            fail(where, "count " + std::to_string(accessor.count) + " is larger than any buffer");
+        if (accessor.count > 0) needed += element;
+        if (!range_fits(buffer_view.byteOffset, buffer_view.byteLength, buffer.data.size()) ||
+            !range_fits(accessor.byteOffset, needed, buffer_view.byteLength))
             fail(where, "data runs past the end of its buffer (truncated file?)");
-        return {buffer.data.data() + begin, stride, accessor.count, accessor.componentType, components,
-                accessor.normalized};
+        return {buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset, stride, accessor.count, accessor.componentType,
+                components, accessor.normalized};
     }
 
     static double component(const unsigned char* p, int type, bool normalized) {
@@ -220,51 +227,79 @@ int texture_image(const Reader& reader, int texture, const std::string& place) {
     return source;
 }
 
-Texture convert_image(const tinygltf::Image& in, const Reader& reader, const std::string& place) {
+// tinygltf's image callback: our decoders, so that a broken image is named by
+// its own file and a claimed size is checked before anything is allocated.
+// 16-bit grey stays 16-bit (height maps); everything else becomes RGBA8.
+bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
+                int size, void* gltf_file) {
+    const std::string& file = *static_cast<const std::string*>(gltf_file);
+    std::string name = image->uri.empty() ? file + ": image " + std::to_string(index)
+                                          : (fs::path(file).parent_path() / image->uri).string();
+    std::span<const std::uint8_t> encoded(bytes, std::size_t(size));
+    if (is_grey16(encoded)) {
+        Image16 decoded = decode_image16(encoded, name);
+        image->image.resize(decoded.pixels.size() * 2);
+        for (std::size_t i = 0; i < decoded.pixels.size(); ++i)
+            image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff), image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
+        image->width = decoded.width, image->height = decoded.height, image->component = 1, image->bits = 16;
+        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    } else {
+        Image8 decoded = decode_image(encoded, name);
+        image->image = std::move(decoded.pixels);
+        image->width = decoded.width, image->height = decoded.height, image->component = 4, image->bits = 8;
+        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    }
+    return true;
+}
+
+// `height_map`: the image serves only as a height texture, so a 16-bit grey
+// image keeps its 16 bits; as colour or normals it becomes 8-bit grey.
+Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& reader, const std::string& place) {
     if (in.image.empty() || in.width <= 0 || in.height <= 0) reader.fail(place, "image '" + in.uri + "' could not be loaded");
-    if (in.bits != 8 && in.bits != 16) reader.fail(place, "unsupported image bit depth");
     Texture texture;
     texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
-    if (in.bits == 16 && in.component == 1) {  // a height map: keep all 16 bits
-        texture.image16 = Image16(in.width, in.height, 1);
-        for (std::size_t i = 0; i < texture.image16.pixels.size(); ++i)
-            texture.image16.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
+    if (in.bits == 8) {
+        texture.image = Image8(in.width, in.height, 4);
+        texture.image.pixels = in.image;
+        return texture;
+    }
+    Image16 grey(in.width, in.height, 1);
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i) grey.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
+    if (height_map) {
+        texture.image16 = std::move(grey);
         return texture;
     }
     texture.image = Image8(in.width, in.height, 4, 255);
-    int bytes = in.bits / 8;
-    for (std::size_t i = 0; i < std::size_t(in.width) * in.height; ++i)
-        for (int c = 0; c < in.component; ++c)
-            texture.image.pixels[i * 4 + (in.component <= 2 && c == 0 ? 0 : c)] =
-                in.image[(i * in.component + c) * bytes + bytes - 1];  // high byte (little-endian 16-bit)
-    if (in.component <= 2)  // grey (+ alpha): replicate grey
-        for (std::size_t i = 0; i < std::size_t(in.width) * in.height; ++i) {
-            std::uint8_t grey = texture.image.pixels[i * 4];
-            std::uint8_t alpha = in.component == 2 ? in.image[(i * 2 + 1) * bytes + bytes - 1] : 255;
-            texture.image.pixels[i * 4 + 1] = texture.image.pixels[i * 4 + 2] = grey;
-            texture.image.pixels[i * 4 + 3] = alpha;
-        }
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) texture.image.pixels[i * 4 + std::size_t(c)] = std::uint8_t(grey.pixels[i] >> 8);
     return texture;
 }
 
 }  // namespace
 
 Model import_gltf(const std::string& path) {
-    if (!fs::exists(path)) throw_input_error(path, "", "no such file");
+    const bool binary = fs::path(path).extension() == ".glb";
+    const std::string bytes = read_input_file(path, binary ? "glb file" : "glTF file");
+    check_gltf_structure(bytes, binary, path);
     tinygltf::TinyGLTF loader;
-    loader.SetPreserveImageChannels(true);  // keeps 16-bit height maps single-channel
+    loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
     tinygltf::Model gltf;
-    std::string error, warning;
-    bool binary = fs::path(path).extension() == ".glb";
-    bool ok = binary ? loader.LoadBinaryFromFile(&gltf, &error, &warning, path)
-                     : loader.LoadASCIIFromFile(&gltf, &error, &warning, path);
+    std::string error, warning, directory = fs::path(path).parent_path().string();
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
+                     : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()), directory);
     if (!ok) throw_input_error(path, "", error.empty() ? "malformed glTF" : error);
 
     Reader reader{gltf, path};
     Model model;
     model.source = path;
+    std::vector<bool> colour_or_normal(gltf.images.size(), false);
+    for (std::size_t m = 0; m < gltf.materials.size(); ++m)
+        for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
+            if (int image = texture_image(reader, texture, "material " + std::to_string(m)); image >= 0)
+                colour_or_normal[std::size_t(image)] = true;
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
-        model.textures.push_back(convert_image(gltf.images[i], reader, "image " + std::to_string(i)));
+        model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
     for (const tinygltf::Texture& texture : gltf.textures)  // an image sampled clamped to its edge (LoD pages)
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
             texture.sampler < int(gltf.samplers.size()) && gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
@@ -472,6 +507,8 @@ tinygltf::Value boxlod_object(tinygltf::Value::Object fields) {
 }  // namespace
 
 void export_gltf(const Model& model, const std::string& path, int threads) {
+    validate_model(model);  // nothing is written that boxlod would refuse to read (NaN, no triangles, ...)
+    OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
     fs::path target(path);
     bool binary = target.extension() == ".glb";
     std::string stem = target.stem().string();
@@ -597,6 +634,7 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
     if (binary) {
         writer.WriteGltfSceneToStream(&w.gltf, stream, false, true);
         write_text_atomically(path, stream.str());
+        files.commit();
         return;
     }
     std::string bin_name = stem + ".bin";
@@ -606,6 +644,7 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
     nlohmann::json json = nlohmann::json::parse(stream.str());
     json["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
     write_text_atomically(path, json.dump(2) + "\n");
+    files.commit();
 }
 
 }  // namespace boxlod

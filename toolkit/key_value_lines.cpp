@@ -2,6 +2,7 @@
 
 #include "renderer/input_error.h"
 
+#include <map>
 #include <sstream>
 
 namespace boxlod {
@@ -16,6 +17,7 @@ std::string trim(const std::string& s) {
 
 std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const std::string& file) {
     std::vector<KeyValueLine> lines;
+    std::map<std::string, int> first_line;
     std::istringstream in(text);
     std::string raw;
     for (int number = 1; std::getline(in, raw); ++number) {
@@ -23,7 +25,10 @@ std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const s
         if (content.empty()) continue;
         std::size_t equals = content.find('=');
         if (equals == std::string::npos) throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");
-        lines.push_back({number, trim(content.substr(0, equals)), trim(content.substr(equals + 1))});
+        std::string key = trim(content.substr(0, equals));
+        if (auto [first, added] = first_line.emplace(key, number); !added)
+            throw_input_error(file, "line " + std::to_string(number) + ": " + key, "given twice (first on line " + std::to_string(first->second) + ")");
+        lines.push_back({number, key, trim(content.substr(equals + 1))});
     }
     return lines;
 }

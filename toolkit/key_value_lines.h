@@ -11,7 +11,8 @@ struct KeyValueLine {
     std::string key, value;  // trimmed; value may be empty
 };
 
-// Throws InputError "file: line N: expected 'key = value'" for a line without '='.
+// Throws InputError "file: line N: expected 'key = value'" for a line without
+// '=', and "file: line N: KEY: given twice (first on line M)" for a repeated key.
 std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const std::string& file);
 
 }  // namespace boxlod

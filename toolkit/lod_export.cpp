@@ -1,6 +1,7 @@
 #include "toolkit/lod_export.h"
 
 #include "renderer/atomic_write.h"
+#include "renderer/input_error.h"
 #include "toolkit/drawable.h"
 #include "toolkit/gltf_io.h"
 
@@ -25,20 +26,25 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
 void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
                 const Image8& preview, int threads) {
     namespace fs = std::filesystem;
-    fs::create_directories(directory);
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error) throw_input_error(directory, "", "cannot create the folder: " + error.message());
+    // A level's files appear together or not at all; its .gltf comes last, so a
+    // level whose .gltf exists is whole even after a kill that nothing can catch.
+    OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     Model& model = lod.model;
     for (std::size_t i = 0; i < 3 * lod.atlas.pages.size(); ++i) model.textures[i].name = name + "_" + model.textures[i].name;
-    export_gltf(model, file(".gltf"), threads);
     LodParameters parameters = session.parameters;
     parameters.current_level = lod.current_level;
     // The parameter file names its model relative to itself, so the folder can move.
-    std::error_code error;
     fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);
     if (!error && !relative.empty()) parameters.model = relative.string();
     save_parameters(file(".params.txt"), parameters);
     write_png(file(".preview.png"), preview);
     write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
+    export_gltf(model, file(".gltf"), threads);
+    files.commit();
 }
 
 }  // namespace boxlod

@@ -84,7 +84,11 @@ void validate_model(const Model& model) {
                 if (!v.allFinite()) throw_input_error(file, where, "texture coordinate is NaN or infinite");
             if (primitive.material >= int(model.materials.size()))
                 throw_input_error(file, where, "material index out of range");
-            any_triangle = any_triangle || !primitive.indices.empty();
+            for (std::size_t t = 0; !any_triangle && t < primitive.indices.size(); t += 3) {
+                const auto& a = primitive.positions[primitive.indices[t]];
+                any_triangle = (primitive.positions[primitive.indices[t + 1]] - a).cross(primitive.positions[primitive.indices[t + 2]] - a)
+                                   .squaredNorm() > 0;
+            }
         }
         if (node.scope && !(node.scope->center.allFinite() && node.scope->axes.allFinite() &&
                             node.scope->half_extents.allFinite()))
@@ -94,7 +98,7 @@ void validate_model(const Model& model) {
         for (int texture : {material.base_color_texture, material.normal_texture, material.height_texture})
             if (texture >= int(model.textures.size()))
                 throw_input_error(file, "material '" + material.name + "'", "texture index out of range");
-    if (!any_triangle) throw_input_error(file, "", "the scene has no triangles (empty model)");
+    if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
 }
 
 }  // namespace boxlod

@@ -1,6 +1,7 @@
 #include "toolkit/model_io.h"
 
 #include "renderer/input_error.h"
+#include "renderer/input_file.h"
 #include "toolkit/assimp_io.h"
 #include "toolkit/gltf_io.h"
 
@@ -17,10 +18,7 @@ std::string lower_extension(const std::string& path) {
 }  // namespace
 
 Model load_model(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    if (!fs::exists(path, error)) throw_input_error(path, "", "no such file");
-    if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a model file");
+    check_input_file(path, "model file");
     std::string extension = lower_extension(path);
     if (extension == ".gltf" || extension == ".glb") return import_gltf(path);
     static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",

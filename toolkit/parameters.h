@@ -2,6 +2,7 @@
 // Saving Files): plain text, one `key = value` per line, `#` comments. It
 // holds the model file, every LoD parameter, the camera and the light.
 #pragma once
+#include "renderer/input_error.h"
 #include "renderer/renderer.h"
 #include "toolkit/boxes.h"
 #include "toolkit/key_values.h"
@@ -33,6 +34,18 @@ struct LodParameters {
     std::optional<Camera> camera;
     std::optional<Light> light;
 };
+
+// The accepted values of the numeric parameters, declared once: the command
+// line, parameter files and sweep configs all check against these.
+namespace parameter_range {
+constexpr NumberRange wanted_levels{1, 64};
+constexpr NumberRange current_level{0, 10000};  // and at most the levels obtained, checked when building
+constexpr NumberRange fovy{0.1, 179};
+constexpr NumberRange distance{0, 1e6};         // metres; 0: the distance that frames the model
+constexpr NumberRange resolution{1, 16384};     // pixels
+constexpr NumberRange texture_size{1, 16384};   // and a power of two
+constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units
+}  // namespace parameter_range
 
 // Every key in file order, numbers printed so they read back exactly.
 KeyValues parameter_entries(const LodParameters& parameters);

@@ -1,9 +1,12 @@
+#include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/cli/lod_options.h"
 #include "toolkit/cost.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
+#include "renderer/parallel.h"
+#include "renderer/image.h"
 
 #include <chrono>
 #include <cmath>
@@ -62,14 +65,15 @@ KeyValues chain_report(const std::string& name, const std::vector<CostParts>& le
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
+        check_output_file(a.text("save-params"));
         save_parameters(a.text("save-params"), parameters);
         std::printf("params = %s\n", a.text("save-params").c_str());
         return 0;
     }
     if (!a.has("output")) throw InputError("boxlod build: -o/--output OUTDIR is required");
+    check_output_directory(a.text("output"));
     int threads = a.integer("threads", 0);
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
-    if (threads < 0 || preview_width < 1 || preview_height < 1) throw InputError("--threads/--preview-*: expected positive numbers");
     Model model = load_model(parameters.model);
     std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
     if (a.has("level-distances") && !a.has("all-levels")) throw InputError("--level-distances needs --all-levels");
@@ -133,17 +137,17 @@ Subcommand build_subcommand() {
              "Build a textured-box LoD: level values, boxes, baked face textures, atlas pages, LoD mesh; writes "
              "NAME.gltf/.bin, NAME_{color,normal,height}_K.png, NAME.params.txt, NAME.preview.png, NAME.stats.txt.",
              {
-                 {"output", "OUTDIR", "folder for the files (required)", 'o'},
+                 {"output", "OUTDIR", "folder for the files (required)", {}, 'o'},
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
                  {"level-distances", "auto|D1,...,DN",
                   "with --all-levels: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
                   "the sizing distance x 2^(c-1), so each level is as sharp as the screen where it is used"},
-                 {"preview-width", "W", "preview image width (default 1024)"},
-                 {"preview-height", "H", "preview image height (default 768)"},
+                 {"preview-width", "W", "preview image width (default 1024)", image_side_range},
+                 {"preview-height", "H", "preview image height (default 768)", image_side_range},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},
-                 {"threads", "N", "threads to use (default: all cores)"},
+                 {"threads", "N", "threads to use (default: all cores)", thread_count_range},
              },
              1, 1},
             run_build};

@@ -1,9 +1,13 @@
+#include "renderer/atomic_write.h"
 #include "data_gen/city.h"
 #include "experiments/camera_path.h"
 #include "experiments/fly_through.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/key_values.h"
 #include "toolkit/strategy_text.h"
+#include "toolkit/parameters.h"
+#include "renderer/parallel.h"
+#include "experiments/flip.h"
 
 #include <cmath>
 #include <cstdio>
@@ -17,6 +21,8 @@ namespace {
 
 const std::string prefix = "boxlod city: ";
 
+constexpr NumberRange detail_range{1e-3, 1e3};
+
 void require(bool ok, const std::string& what) {
     if (!ok) throw InputError(prefix + what);
 }
@@ -24,51 +30,40 @@ void require(bool ok, const std::string& what) {
 int run_city(const Arguments& arguments) {
     // Every input is checked before anything is generated or written.
     require(arguments.has("output"), "-o/--output OUTDIR is required");
+    check_output_directory(arguments.text("output"));
     FlyThroughOptions options;
     options.strategy = parse_strategy(arguments.text("strategy", "texel"), "--strategy");
     CityOptions city;
     city.buildings = arguments.integer("buildings", 9);
-    require(city.buildings >= 1 && city.buildings <= 10000, "--buildings takes 1 to 10000 buildings");
-    int seed = arguments.integer("seed", 0);
-    require(seed >= 0, "--seed must be 0 or more");
-    city.seed = std::uint64_t(seed);
+    city.seed = std::uint64_t(arguments.integer("seed", 0));
     int frames = arguments.integer("frames", 60);
-    require(frames >= 1 && frames <= 100000, "--frames takes 1 to 100000 frames");
     options.width = arguments.integer("width", options.width);
     options.height = arguments.integer("height", options.height);
-    require(options.width >= 16 && options.height >= 16 && options.width <= 8192 && options.height <= 8192,
-            "--width and --height take 16 to 8192 pixels");
     options.fovy = float(arguments.number("fovy", options.fovy));
-    require(options.fovy > 0 && options.fovy < 180, "--fovy must be between 0 and 180 degrees");
     options.hysteresis = arguments.number("hysteresis", options.hysteresis);
-    require(options.hysteresis >= 0, "--hysteresis must be 0 or more");
     if (arguments.has("budget")) {
         double budget = arguments.number("budget", 0);
-        require(budget >= 1 && budget <= 1e15 && budget == std::floor(budget), "--budget takes a positive number of faces");
+        require(budget == std::floor(budget), "--budget takes a whole number of faces");
         options.face_budget = std::size_t(budget);
     }
     options.error_every = arguments.integer("error-every", options.error_every);
-    require(options.error_every >= 0, "--error-every must be 0 (never) or more");
     options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
-    require(options.pixels_per_degree > 0, "--ppd must be positive");
     if (arguments.has("level-mode"))
         require(parse_level_mode(arguments.text("level-mode"), options.level_mode),
                 "--level-mode: unknown level mode '" + arguments.text("level-mode") + "'");
     options.wanted_levels = arguments.integer("levels", options.wanted_levels);
     options.keep_small_subtrees = arguments.has("keep-small-subtrees");
     options.keep_cheaper_subtrees = arguments.has("keep-cheaper-subtrees");
-    require(options.wanted_levels >= 1 && options.wanted_levels <= 64, "--levels takes 1 to 64 levels");
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
-    require(options.base_distance > 0 && std::isfinite(options.base_distance), "--base-distance must be positive");
     std::vector<double> details;
     {
         std::stringstream list(arguments.text("detail", "1"));
         for (std::string item; std::getline(list, item, ',');) {
             char* end = nullptr;
             double detail = std::strtod(item.c_str(), &end);
-            require(!item.empty() && end == item.c_str() + item.size() && std::isfinite(detail) && detail > 0 &&
+            require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
                         std::find(details.begin(), details.end(), detail) == details.end(),
-                    "--detail takes distinct positive numbers separated by commas, got '" + arguments.text("detail") + "'");
+                    "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" + arguments.text("detail") + "'");
             details.push_back(detail);
         }
         require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
@@ -131,29 +126,29 @@ Subcommand city_subcommand() {
              "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
              "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
              "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
-             {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", 'o'},
-              {"buildings", "N", "buildings in the city (default 9)"},
-              {"seed", "S", "the city's seed (default 0)"},
+             {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
+              {"buildings", "N", "buildings in the city (default 9)", NumberRange{1, 10000}},
+              {"seed", "S", "the city's seed (default 0)", seed_range},
               {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
                                 "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
               {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
-              {"frames", "F", "frames along the path (default 60)"},
-              {"width", "W", "frame width in pixels (default 320)"},
-              {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)"},
-              {"fovy", "DEGREES", "vertical field of view (default 45)"},
-              {"hysteresis", "H", "relative margin before a level changes back (default 0.1)"},
+              {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
+              {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},
+              {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)", NumberRange{16, 8192}},
+              {"fovy", "DEGREES", "vertical field of view (default 45)", parameter_range::fovy},
+              {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
               {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
                                       "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
                                       "levels, images under OUTDIR/detail_K/"},
-              {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first"},
-              {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)"},
-              {"ppd", "P", "FLIP's pixels per degree (default 67)"},
+              {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
+              {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
+              {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
               {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
-              {"levels", "N", "wanted levels for the box modes (default 8)"},
+              {"levels", "N", "wanted levels for the box modes (default 8)", parameter_range::wanted_levels},
               {"keep-small-subtrees", "", "no box for a sub-tree of at most 6 faces (as build --keep-small-subtrees)"},
               {"keep-cheaper-subtrees", "", "no box costing more bytes than its sub-tree's mesh (as build --keep-cheaper-subtrees)"},
-              {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)"},
-              {"threads", "N", "threads to use (default 0 = all cores)"},
+              {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
+              {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
               {"json", "", "print one JSON object instead of key = value lines"}},
              0, 0},
             run_city};

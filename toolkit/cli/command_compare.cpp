@@ -1,3 +1,4 @@
+#include "renderer/atomic_write.h"
 #include "experiments/flip.h"
 #include "experiments/heatmap.h"
 #include "experiments/image_metrics.h"
@@ -5,6 +6,7 @@
 #include "toolkit/cli/commands.h"
 #include "toolkit/cli/render_options.h"
 #include "toolkit/key_values.h"
+#include "renderer/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,10 +67,9 @@ int run_compare(const Arguments& arguments) {
     std::string heatmap_metric = arguments.text("heatmap-metric", "flip");
     if (heatmap_metric != "flip" && heatmap_metric != "rmse")
         throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
+    if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"));
     double ppd = arguments.number("ppd", 67);
-    if (ppd <= 0) throw InputError("boxlod compare: --ppd: expected a positive number of pixels per degree");
     int threads = arguments.integer("threads", 0);
-    if (threads < 0) throw InputError("boxlod compare: --threads: expected a positive count");
 
     Image8 a = read_image(a_name), b = read_image(b_name);
     require_same_size(a, a_name, b, b_name);
@@ -109,12 +110,12 @@ Subcommand compare_subcommand() {
              {{"metric", "LIST", "comma-separated metrics among rmse,psnr,ssim,flip,iou (default: all)"},
               {"heatmap", "FILE", "write a PNG of the per-pixel error (black, red, yellow, white = 0 .. 1)"},
               {"heatmap-metric", "NAME", "the heat map's error: flip (default) or rmse (per-pixel RMS over RGB)"},
-              {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)"},
+              {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)", pixels_per_degree_range},
               {"mask-a", "FILE", "coverage mask of A for iou (covered where > 127; e.g. from render --coverage)"},
               {"mask-b", "FILE", "coverage mask of B for iou"},
               {"background", "R,G,B", "without masks, iou counts pixels differing from this sRGB colour in [0, 1] "
                                       "(default 1,1,1, the render background)"},
-              {"threads", "N", "threads to use (default: all cores)"},
+              {"threads", "N", "threads to use (default: all cores)", thread_count_range},
               {"json", "", "print one JSON object instead of key = value lines"}},
              2, 2},
             run_compare};

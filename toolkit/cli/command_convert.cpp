@@ -1,3 +1,4 @@
+#include "renderer/atomic_write.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/model_io.h"
 
@@ -7,6 +8,7 @@ namespace boxlod {
 
 static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
+    check_output_file(arguments.text("output"));
     Model model = load_model(arguments.positionals[0]);
     save_model(model, arguments.text("output"));
     std::printf("output = %s\n", arguments.text("output").c_str());
@@ -16,7 +18,7 @@ static int run_convert(const Arguments& arguments) {
 Subcommand convert_subcommand() {
     return {{"convert", "MODEL", "Convert any model boxlod reads into glTF (.gltf + .bin + textures, or one .glb), "
                                  "hierarchy, scopes and rules kept.",
-             {{"output", "FILE", "output file, .gltf or .glb (required)", 'o'}}, 1, 1},
+             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'}}, 1, 1},
             run_convert};
 }
 

@@ -1,3 +1,4 @@
+#include "renderer/atomic_write.h"
 #include "data_gen/city.h"
 #include "data_gen/grammar_parser.h"
 #include "data_gen/interpreter.h"
@@ -34,8 +35,8 @@ int run_generate(const Arguments& arguments) {
     int sources = int(arguments.positionals.size()) + arguments.has("sample") + arguments.has("city");
     if (sources != 1) throw InputError(std::string(prefix) + "give exactly one of GRAMMAR, --sample NAME or --city N");
     if (!arguments.has("output")) throw InputError(std::string(prefix) + "-o/--output OUT.gltf|OUT.glb is required");
+    check_output_file(arguments.text("output"));
     int seed = arguments.integer("seed", 0);
-    if (seed < 0) throw InputError(std::string(prefix) + "--seed must be 0 or more");
 
     Model model;
     KeyValues report = {text_entry("output", arguments.text("output")), number_entry("seed", seed)};
@@ -44,7 +45,6 @@ int run_generate(const Arguments& arguments) {
             throw InputError(std::string(prefix) + "--start and --lot apply to one building, not to --city");
         CityOptions city;
         city.buildings = arguments.integer("city", 0);
-        if (city.buildings < 1 || city.buildings > 10000) throw InputError(std::string(prefix) + "--city takes 1 to 10000 buildings");
         city.seed = std::uint64_t(seed);
         model = generate_city(city);
         report.push_back(number_entry("buildings", city.buildings));
@@ -71,11 +71,11 @@ Subcommand generate_subcommand() {
              "and write it as glTF with its derivation tree, scopes and rules. The same grammar and seed "
              "give byte-identical files.",
              {{"sample", "NAME", "use a built-in sample grammar: " + sample_names()},
-              {"city", "N", "generate a city of N buildings on a grid of lots with streets"},
+              {"city", "N", "generate a city of N buildings on a grid of lots with streets", NumberRange{1, 10000}},
               {"start", "SYMBOL", "the rule to start from (default: the grammar's first rule)"},
               {"lot", "WxD", "the lot's width and depth in metres (default: the grammar's lot_width/lot_depth, else 20x20)"},
-              {"seed", "S", "seed of the random choices (default 0)"},
-              {"output", "FILE", "output file, .gltf or .glb (required)", 'o'},
+              {"seed", "S", "seed of the random choices (default 0)", seed_range},
+              {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
               {"json", "", "print one JSON object instead of key = value lines"}},
              0, 1},
             run_generate};

@@ -26,10 +26,7 @@ static int run_levels(const Arguments& arguments) {
         throw InputError(prefix + "--interpolation: expected linear, log or rank, got '" +
                          arguments.text("interpolation") + "'");
     const int wanted_levels = arguments.integer("wanted-levels", defaults.wanted_levels);
-    if (wanted_levels < 1)
-        throw InputError(prefix + "--wanted-levels: must be at least 1, got " + std::to_string(wanted_levels));
     const int threads = arguments.integer("threads", 0);
-    if (threads < 0) throw InputError(prefix + "--threads: must be 0 (all cores) or more");
 
     const std::string& path = arguments.positionals[0];
     Model model = load_model(path);
@@ -70,14 +67,14 @@ Subcommand levels_subcommand() {
              {{"level-mode", "M",
                "top-down, bottom-up, bottom-up-siblings, box-volume, box-area, box-diagonal or box-max-extent (required)"},
               {"wanted-levels", "N",
-               "number of levels for the box modes (default " + std::to_string(defaults.wanted_levels) + ")"},
+               "number of levels for the box modes (default " + std::to_string(defaults.wanted_levels) + ")", parameter_range::wanted_levels},
               {"box", "KIND",
                std::string("boxes for the box modes: scope, expanded or minimal (default ") +
                    box_kind_name(defaults.box_kind) + ")"},
               {"interpolation", "I",
                std::string("box modes: linear, log or rank of the box value (default ") +
                    interpolation_name(defaults.interpolation) + ")"},
-              {"threads", "N", "threads for the boxes (default: all cores)"},
+              {"threads", "N", "threads for the boxes (default: all cores)", thread_count_range},
               {"json", "", "print one JSON object instead of key = value lines"}},
              1,
              1},

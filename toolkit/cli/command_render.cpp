@@ -1,3 +1,4 @@
+#include "renderer/atomic_write.h"
 #include "renderer/exr_io.h"
 #include "renderer/overlays.h"
 #include "toolkit/cli/commands.h"
@@ -12,6 +13,8 @@ namespace boxlod {
 
 static int run_render(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod render: -o/--output OUT.png is required");
+    for (const char* output : {"output", "exr", "coverage"})
+        if (arguments.has(output)) check_output_file(arguments.text(output));
     Model model = load_model(arguments.positionals[0]);
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
@@ -55,7 +58,7 @@ static int run_render(const Arguments& arguments) {
 
 Subcommand render_subcommand() {
     std::vector<Option> options = {
-        {"output", "FILE", "PNG image to write (required)", 'o'},
+        {"output", "FILE", "PNG image to write (required)", {}, 'o'},
         {"exr", "FILE", "also write linear half RGBA + float depth Z as OpenEXR"},
         {"coverage", "FILE", "also write the coverage mask as a PNG"},
         {"axes", "", "draw the coordinate cross (X red, Y green, Z blue) at the model's corner"},

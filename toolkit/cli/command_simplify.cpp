@@ -1,8 +1,10 @@
 // `boxlod simplify`: the classic baseline, quadric edge-collapse simplification.
+#include "renderer/atomic_write.h"
 #include "experiments/simplification.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
+#include "renderer/parallel.h"
 
 #include <chrono>
 #include <cstdio>
@@ -14,12 +16,11 @@ int run_simplify(const Arguments& arguments) {
     const std::string prefix = "boxlod simplify: ";
     if (!arguments.has("output")) throw InputError(prefix + "-o/--output OUT.gltf|OUT.glb is required");
     if (!arguments.has("faces")) throw InputError(prefix + "--faces N is required");
+    check_output_file(arguments.text("output"));
     const int faces = arguments.integer("faces", 0);
-    if (faces < 1) throw InputError(prefix + "--faces: must be 1 or more");
     SimplifyOptions options;
     options.lock_border = arguments.has("lock-border");
     options.threads = arguments.integer("threads", 0);
-    if (options.threads < 0) throw InputError(prefix + "--threads: must be 0 (all cores) or more");
 
     Model model = load_model(arguments.positionals[0]);
     auto start = std::chrono::steady_clock::now();
@@ -45,10 +46,10 @@ Subcommand simplify_subcommand() {
     return {{"simplify", "MODEL",
              "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
              "baseline LoD. Materials and textures are kept, geometry is merged into one node per material.",
-             {{"faces", "N", "the number of faces (triangles) to keep (required)"},
-              {"output", "FILE", "output file, .gltf or .glb (required)", 'o'},
+             {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
+              {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
               {"lock-border", "", "never move vertices on open mesh borders"},
-              {"threads", "N", "threads, one material at a time (default: all cores)"},
+              {"threads", "N", "threads, one material at a time (default: all cores)", thread_count_range},
               {"json", "", "print one JSON object instead of key = value lines"}},
              1, 1},
             run_simplify};

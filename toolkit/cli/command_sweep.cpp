@@ -1,5 +1,7 @@
+#include "renderer/atomic_write.h"
 #include "experiments/sweep.h"
 #include "renderer/input_error.h"
+#include "renderer/parallel.h"
 #include "toolkit/cli/commands.h"
 #include "toolkit/key_values.h"
 
@@ -11,8 +13,8 @@ namespace {
 
 int run_sweep_command(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod sweep: -o/--output OUTDIR is required");
-    int threads = arguments.integer("threads", -1);
-    if (arguments.has("threads") && threads < 0) throw InputError("boxlod sweep: --threads: expected a positive count");
+    check_output_directory(arguments.text("output"));
+    int threads = arguments.integer("threads", -1);  // -1: the config's
     SweepConfig config = load_sweep_config(arguments.positionals[0]);
     const std::string& output = arguments.text("output");
     SweepReport r = run_sweep(config, output, threads, stderr);
@@ -43,8 +45,8 @@ Subcommand sweep_subcommand() {
              "keep_small_subtrees, keep_cheaper_subtrees, keep_images, threads), "
              "each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
              "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
-             {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", 'o'},
-              {"threads", "N", "threads to use (default: the config's threads, 0 = all cores)"},
+             {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, 'o'},
+              {"threads", "N", "threads to use (default: the config's threads, 0 = all cores)", thread_count_range},
               {"json", "", "print one JSON object instead of key = value lines"}},
              1, 1},
             run_sweep_command};

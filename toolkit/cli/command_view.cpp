@@ -1,4 +1,6 @@
 // `boxlod view`: the interactive viewer (SDL2) over the software renderer.
+#include "renderer/atomic_write.h"
+#include "renderer/input_file.h"
 #include "renderer/overlays.h"
 #include "renderer/text_overlay.h"
 #include "toolkit/cli/commands.h"
@@ -57,8 +59,7 @@ SDL_Event to_sdl(const ViewerEvent& e) {
 }
 
 std::vector<ViewerEvent> read_replay(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw_input_error(path, "", "cannot open the event file");
+    std::istringstream in(read_input_file(path, "event file"));
     std::vector<ViewerEvent> events;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number)
@@ -98,6 +99,7 @@ Image8 compose(ViewerState& s, const Frame& frame) {
 }
 
 int run_view(const Arguments& a) {
+    if (a.has("screenshot")) check_output_file(a.text("screenshot"));
     LodParameters parameters = lod_parameters_from(a);
     bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original

@@ -1,6 +1,7 @@
 #include "toolkit/cli/lod_options.h"
 
 #include "renderer/input_error.h"
+#include "toolkit/parameters.h"
 
 #include <filesystem>
 
@@ -10,8 +11,8 @@ std::vector<Option> lod_options() {
     return {
         {"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
         {"level-mode", "M", "top-down (default) | bottom-up | bottom-up-siblings | box-volume | box-area | box-diagonal | box-max-extent"},
-        {"level", "C", "current level, 0 (original) .. obtained levels (one box) (default 1)"},
-        {"wanted-levels", "N", "wanted number of levels for the box modes (default 8)"},
+        {"level", "C", "current level, 0 (original) .. obtained levels (one box) (default 1)", parameter_range::current_level},
+        {"wanted-levels", "N", "wanted number of levels for the box modes (default 8)", parameter_range::wanted_levels},
         {"box", "KIND", "scope | expanded (default) | minimal"},
         {"interpolation", "I", "linear (default) | log | rank: how box modes map box values to levels"},
         {"keep-small-subtrees", "", "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a "
@@ -20,14 +21,14 @@ std::vector<Option> lod_options() {
                                       "box would keeps its geometry, so no box costs more than what it replaces"},
         {"no-crop", "", "keep every baked face whole instead of cropping it to its covered texels (and dropping "
                         "faces with none)"},
-        {"fovy", "DEG", "texture sizing: vertical field of view (default 45)"},
-        {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)"},
-        {"resolution", "R", "texture sizing: screen height in pixels (default 1080)"},
-        {"min-texture-size", "S", "smallest LoD texture page (default 256)"},
-        {"max-texture-size", "S", "largest LoD texture page (default 4096)"},
+        {"fovy", "DEG", "texture sizing: vertical field of view (default 45)", parameter_range::fovy},
+        {"distance", "D", "texture sizing: camera distance (default: the distance that frames the model)", parameter_range::distance},
+        {"resolution", "R", "texture sizing: screen height in pixels (default 1080)", parameter_range::resolution},
+        {"min-texture-size", "S", "smallest LoD texture page (default 256)", parameter_range::texture_size},
+        {"max-texture-size", "S", "largest LoD texture page (default 4096)", parameter_range::texture_size},
         {"render-mode", "M", "untextured (no baking) | normal (default) | parallax | pom"},
-        {"parallax-scale", "S", "parallax height scale (default 0.04)"},
-        {"parallax-bias", "B", "parallax height bias (default -0.02)"},
+        {"parallax-scale", "S", "parallax height scale (default 0.04)", parameter_range::parallax},
+        {"parallax-bias", "B", "parallax height bias (default -0.02)", parameter_range::parallax},
     };
 }
 

@@ -1,4 +1,5 @@
 // boxlod: textured-box level of detail for hierarchical architecture.
+#include "renderer/atomic_write.h"
 #include "renderer/input_error.h"
 #include "toolkit/cli/commands.h"
 
@@ -29,6 +30,7 @@ void print_overview() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    boxlod::remove_partial_outputs_on_interrupt();
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
         print_overview();

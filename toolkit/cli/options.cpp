@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <stdexcept>
 
 namespace boxlod {
 
@@ -14,6 +15,7 @@ std::string Arguments::text(const std::string& name, const std::string& fallback
 }
 
 double Arguments::number(const std::string& name, double fallback) const {
+    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as a number but declares no range");
     auto it = values.find(name);
     if (it == values.end()) return fallback;
     double value = 0;
@@ -25,6 +27,7 @@ double Arguments::number(const std::string& name, double fallback) const {
 }
 
 int Arguments::integer(const std::string& name, int fallback) const {
+    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as an integer but declares no range");
     auto it = values.find(name);
     if (it == values.end()) return fallback;
     int value = 0;
@@ -38,6 +41,8 @@ int Arguments::integer(const std::string& name, int fallback) const {
 Arguments parse_arguments(const Command& command, const std::vector<std::string>& words) {
     Arguments arguments;
     std::string prefix = "boxlod " + command.name + ": ";
+    for (const Option& o : command.options)
+        if (o.range) arguments.ranges[o.name] = *o.range;
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string& word = words[i];
         if (word == "--help" || word == "-h") {
@@ -63,6 +68,12 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
                 value = words[++i];
             } else if (option->value_name.empty() && inline_value) {
                 throw InputError(prefix + "--" + name + " takes no value");
+            }
+            if (option->range) {
+                double number = 0;
+                auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
+                if (error != std::errc() || end != value.data() + value.size() || !option->range->contains(number))
+                    throw InputError(prefix + "--" + name + ": " + out_of_range_message(*option->range, value));
             }
             arguments.values[name] = value;
         } else {

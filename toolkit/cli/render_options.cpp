@@ -1,32 +1,34 @@
 #include "toolkit/cli/render_options.h"
 
 #include "renderer/input_error.h"
+#include "toolkit/parameters.h"
+#include "renderer/parallel.h"
+#include "renderer/image.h"
 
 #include <Eigen/Geometry>
 #include <charconv>
 #include <cmath>
 
 namespace boxlod {
-
 std::vector<Option> render_options() {
     return {
         {"camera", "POS", "one of the 26 camera positions, e.g. +X+Y+Z (default), -Z, +Y"},
-        {"distance", "D", "camera distance from the model's centre (default: frames the model)"},
-        {"fovy", "DEG", "vertical field of view in degrees (default 45)"},
-        {"width", "W", "image width in pixels (default 1024)"},
-        {"height", "H", "image height in pixels (default 768)"},
+        {"distance", "D", "camera distance from the model's centre (default: frames the model)", NumberRange{1e-3, 1e6}},
+        {"fovy", "DEG", "vertical field of view in degrees (default 45)", parameter_range::fovy},
+        {"width", "W", "image width in pixels (default 1024)", image_side_range},
+        {"height", "H", "image height in pixels (default 768)", image_side_range},
         {"mode", "MODE", "untextured | normal (default) | parallax | pom | albedo"},
-        {"parallax-scale", "S", "parallax/pom height scale (default 0.04)"},
-        {"parallax-bias", "B", "parallax height bias (default -0.02)"},
+        {"parallax-scale", "S", "parallax/pom height scale (default 0.04)", parameter_range::parallax},
+        {"parallax-bias", "B", "parallax height bias (default -0.02)", parameter_range::parallax},
         {"light", "X,Y,Z", "light position in world space (default: above, right of the camera)"},
-        {"ambient", "A", "ambient light (default 0.25)"},
-        {"diffuse", "D", "diffuse light (default 0.75)"},
-        {"specular", "S", "specular light (default 0.25)"},
-        {"shininess", "N", "shininess for every material (default: the materials' own)"},
+        {"ambient", "A", "ambient light (default 0.25)", light_intensity_range},
+        {"diffuse", "D", "diffuse light (default 0.75)", light_intensity_range},
+        {"specular", "S", "specular light (default 0.25)", light_intensity_range},
+        {"shininess", "N", "shininess for every material (default: the materials' own)", shininess_range},
         {"background", "R,G,B", "background colour, sRGB components in [0, 1] (default 1,1,1)"},
         {"cull", "FACES", "none (default) | back | front"},
         {"wireframe", "", "draw triangle edges over the shaded image"},
-        {"threads", "N", "threads to use (default: all cores)"},
+        {"threads", "N", "threads to use (default: all cores)", thread_count_range},
     };
 }
 
@@ -52,17 +54,13 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     View view;
     view.width = a.integer("width", 1024);
     view.height = a.integer("height", 768);
-    if (view.width < 1 || view.height < 1 || view.width > 16384 || view.height > 16384)
-        throw InputError("--width/--height: image size must be 1..16384 pixels");
     float fovy = float(a.number("fovy", 45));
-    if (!(fovy > 0 && fovy < 180)) throw InputError("--fovy: expected degrees in (0, 180)");
     std::string position = a.text("camera", "+X+Y+Z");
     auto direction = camera_direction(position);
     if (!direction) throw InputError("--camera: unknown camera position '" + position + "' (e.g. +X, -Y, +X+Y+Z)");
     Eigen::Vector3f center = bounds.center();
     float radius = std::max(bounds.size().norm() / 2, 1e-6f);
     view.distance = float(a.number("distance", framing_distance(radius, fovy)));
-    if (!(view.distance > 0)) throw InputError("--distance: expected a positive distance");
     RenderSettings& s = view.settings;
     s.camera = camera_at_position(*direction, center, view.distance, fovy, radius);
     if (a.has("mode") && !parse_render_mode(a.text("mode"), s.mode))
@@ -85,7 +83,6 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     else if (cull != "none") throw InputError("--cull: expected none, back or front");
     s.wireframe = a.has("wireframe");
     s.threads = a.integer("threads", 0);
-    if (s.threads < 0) throw InputError("--threads: expected a positive count");
     return view;
 }
 

@@ -1,0 +1,86 @@
+#include "renderer/atomic_write.h"
+
+#include "renderer/input_error.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <unistd.h>
+
+using namespace boxlod;
+namespace fs = std::filesystem;
+
+namespace {
+std::string output_problem(void (*check)(const std::string&), const std::string& path) {
+    try {
+        check(path);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
+    fs::path folder = test::scratch_folder("atomic_write_paths");
+    test::write_text(folder / "file", "x");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "a.png").string()), "");
+    EXPECT_EQ(output_problem(check_output_file, folder.string()), folder.string() + ": is a directory, not a file to write");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "file" / "a.png").string()),
+              (folder / "file" / "a.png").string() + ": '" + (folder / "file").string() + "' is not a folder");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()),
+              (folder / "none" / "a.png").string() + ": no such folder '" + (folder / "none").string() + "'");
+    EXPECT_EQ(output_problem(check_output_file, "/proc/a.png").rfind("/proc/a.png: cannot write here: ", 0), 0u);
+    EXPECT_EQ(output_problem(check_output_directory, (folder / "new" / "deeper").string()), "");
+    EXPECT_FALSE(fs::exists(folder / "new"));  // checked, not made
+    EXPECT_EQ(output_problem(check_output_directory, (folder / "file").string()), (folder / "file").string() + ": exists and is not a folder");
+    EXPECT_EQ(output_problem(check_output_directory, (folder / "file" / "sub").string()),
+              (folder / "file" / "sub").string() + ": '" + (folder / "file").string() + "' is not a folder");
+}
+
+TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
+    fs::path folder = test::scratch_folder("atomic_write_stale");
+    test::write_text(folder / "a.png.tmp999999999", "killed run");  // no process has this id
+    test::write_text(folder / ("b.png.tmp" + std::to_string(::getpid())), "this run");
+    test::write_text(folder / "c.tmpfile", "not ours");
+    check_output_file((folder / "a.png").string());
+    EXPECT_FALSE(fs::exists(folder / "a.png.tmp999999999"));
+    EXPECT_TRUE(fs::exists(folder / ("b.png.tmp" + std::to_string(::getpid()))));
+    EXPECT_TRUE(fs::exists(folder / "c.tmpfile"));
+}
+
+TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItReplaced) {
+    fs::path folder = test::scratch_folder("atomic_write_group");
+    write_text_atomically((folder / "shared.png").string(), "old");
+    try {
+        OutputGroup group;
+        write_text_atomically((folder / "level.gltf").string(), "new");
+        write_text_atomically((folder / "shared.png").string(), "same");
+        throw std::runtime_error("the next file cannot be written");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_FALSE(fs::exists(folder / "level.gltf"));
+    EXPECT_TRUE(fs::exists(folder / "shared.png"));
+    {
+        OutputGroup outer;
+        {
+            OutputGroup inner;
+            write_text_atomically((folder / "inner.bin").string(), "x");
+            inner.commit();
+        }
+        write_text_atomically((folder / "outer.txt").string(), "y");
+        // outer is not committed: the outermost group decides for both
+    }
+    EXPECT_FALSE(fs::exists(folder / "inner.bin"));
+    EXPECT_FALSE(fs::exists(folder / "outer.txt"));
+    {
+        OutputGroup group;
+        write_text_atomically((folder / "kept.txt").string(), "z");
+        group.commit();
+    }
+    EXPECT_TRUE(fs::exists(folder / "kept.txt"));
+    for (const auto& entry : fs::directory_iterator(folder))
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+}

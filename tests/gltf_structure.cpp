@@ -1,0 +1,73 @@
+#include "toolkit/gltf_structure.h"
+
+#include "renderer/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+using namespace boxlod;
+
+namespace {
+
+std::string problem(const std::string& bytes, bool binary = false) {
+    try {
+        check_gltf_structure(bytes, binary, "m.gltf");
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+std::string u32(std::uint32_t v) { return {char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; }
+
+// A glb of one JSON chunk and one BIN chunk of `bin` bytes; `declared` overrides the total length.
+std::string glb(const std::string& json, std::size_t bin, std::uint32_t declared = 0) {
+    std::string body = u32(std::uint32_t(json.size())) + "JSON" + json + u32(std::uint32_t(bin)) + "BIN" + '\0' + std::string(bin, '\0');
+    return "glTF" + u32(2) + u32(declared ? declared : std::uint32_t(12 + body.size())) + body;
+}
+
+const std::string buffer_and_view = R"({"buffers":[{"byteLength":16}],"bufferViews":[{"buffer":0,"byteOffset":)";
+
+}  // namespace
+
+TEST(GltfStructure, AcceptsAWellFormedFile) {
+    EXPECT_EQ(problem(buffer_and_view + R"(8,"byteLength":8}]})"), "");
+    EXPECT_EQ(problem(glb(buffer_and_view + R"(0,"byteLength":16}]})", 16), true), "");
+}
+
+TEST(GltfStructure, RefusesNestingDeeperThanTheLimit) {
+    std::string deep = R"({"asset":{"extras":)" + std::string(20000, '[') + std::string(20000, ']') + "}}";
+    EXPECT_NE(problem(deep).find("JSON nested more than 200 levels deep"), std::string::npos);
+    // Brackets inside strings do not count.
+    EXPECT_EQ(problem(R"({"asset":{"name":")" + std::string(1000, '[') + R"("}})"), "");
+}
+
+TEST(GltfStructure, RefusesBufferViewsOutsideTheirBufferWithoutOverflow) {
+    EXPECT_EQ(problem(buffer_and_view + R"(18446744073709551608,"byteLength":16}]})"),
+              "m.gltf: bufferView 0: byteOffset 18446744073709551608 + byteLength 16 runs past buffer 0's 16 bytes");
+    EXPECT_EQ(problem(buffer_and_view + R"(8,"byteLength":9}]})"),
+              "m.gltf: bufferView 0: byteOffset 8 + byteLength 9 runs past buffer 0's 16 bytes");
+    EXPECT_EQ(problem(buffer_and_view + R"(-1,"byteLength":9}]})"), "m.gltf: bufferView 0: byteOffset must be a non-negative integer");
+    EXPECT_EQ(problem(R"({"bufferViews":[{"buffer":3,"byteLength":1}]})"), "m.gltf: bufferView 0: buffer index out of range");
+    EXPECT_EQ(problem(R"({"images":[{"bufferView":0}]})"), "m.gltf: image 0: bufferView index out of range");
+}
+
+TEST(GltfStructure, RefusesGlbHeadersAndChunksThatDoNotFitTheFile) {
+    std::string json = buffer_and_view + R"(0,"byteLength":16}]})";
+    EXPECT_EQ(problem(glb(json, 16, 1000), true), "m.gltf: header: declares 1000 bytes, the file has " +
+                                                      std::to_string(glb(json, 16).size()) + " (truncated file?)");
+    std::string truncated = glb(json, 16);
+    truncated.resize(truncated.size() - 8);
+    truncated.replace(8, 4, u32(std::uint32_t(truncated.size())));
+    EXPECT_EQ(problem(truncated, true), "m.gltf: chunk 1: runs past the end of the file (truncated file?)");
+    EXPECT_EQ(problem(glb(json, 8), true), "m.gltf: buffer 0: byteLength 16 exceeds the 8-byte BIN chunk (truncated file?)");
+    EXPECT_EQ(problem("glTF" + u32(1) + u32(20) + u32(0) + "JSON", true), "m.gltf: header: glb version is not 2");
+    EXPECT_EQ(problem("not a glb at all, really", true), "m.gltf: not a glb file (no 'glTF' header)");
+}
+
+TEST(GltfStructure, NamesMalformedJson) {
+    EXPECT_EQ(problem(R"({"buffers":[)").rfind("m.gltf: malformed JSON: ", 0), 0u);
+    EXPECT_EQ(problem("[1, 2]"), "m.gltf: the JSON is not an object");
+}

@@ -1,0 +1,22 @@
+#include "renderer/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+using namespace boxlod;
+
+TEST(InputError, RangesAndCheckedArithmeticHoldAtTheEdges) {
+    EXPECT_TRUE(range_fits(8, 8, 16));
+    EXPECT_FALSE(range_fits(8, 9, 16));
+    EXPECT_FALSE(range_fits(SIZE_MAX - 7, 16, 16));  // would wrap to 8 when added
+    EXPECT_FALSE(range_fits(17, 0, 16));
+    std::size_t product = 0;
+    EXPECT_TRUE(checked_multiply(1u << 20, 1u << 20, product));
+    EXPECT_EQ(product, std::size_t(1) << 40);
+    EXPECT_FALSE(checked_multiply(SIZE_MAX / 2, 3, product));
+    EXPECT_TRUE((NumberRange{1, 2}).contains(2));
+    EXPECT_FALSE((NumberRange{1, 2}).contains(std::nan("")));
+    EXPECT_EQ(out_of_range_message({0.1, 179}, "720"), "expected a number in [0.1, 179], got '720'");
+}

@@ -1,0 +1,16 @@
+// Checks assimp does not make, run before it reads a file, so that a small
+// hostile file cannot make it allocate without bound, loop, or recurse until
+// the stack runs out: header counts that cannot fit the file (PLY, OFF), and
+// STEP/IFC files cut short, or whose references form a cycle or nest deeper
+// than max_nesting_depth (ISO 10303-21: entity instances `#N = TYPE(...);`).
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace boxlod {
+
+// `bytes` is the whole file, `extension` lower case with its dot. Throws
+// InputError naming `file` and the place.
+void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file);
+
+}  // namespace boxlod

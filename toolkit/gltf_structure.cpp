@@ -1,0 +1,130 @@
+#include "toolkit/gltf_structure.h"
+
+#include "renderer/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
+
+namespace boxlod {
+namespace {
+
+std::uint32_t little_endian_u32(std::string_view bytes, std::size_t at) {
+    std::uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = v << 8 | std::uint8_t(bytes[at + std::size_t(i)]);
+    return v;
+}
+
+struct Glb {
+    std::string_view json;
+    std::size_t binary_chunk = 0;  // bytes of the BIN chunk, 0 without one
+};
+
+// glTF 2.0, 4.4: a 12-byte header, then chunks of (length, type, data).
+Glb split_glb(std::string_view bytes, const std::string& file) {
+    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") throw_input_error(file, "", "not a glb file (no 'glTF' header)");
+    if (little_endian_u32(bytes, 4) != 2) throw_input_error(file, "header", "glb version is not 2");
+    std::size_t length = little_endian_u32(bytes, 8);
+    if (length > bytes.size()) throw_input_error(file, "header", "declares " + std::to_string(length) + " bytes, the file has " +
+                                                                      std::to_string(bytes.size()) + " (truncated file?)");
+    Glb glb;
+    std::size_t at = 12;
+    for (int chunk = 0; at + 8 <= length; ++chunk) {
+        std::size_t chunk_length = little_endian_u32(bytes, at);
+        std::uint32_t type = little_endian_u32(bytes, at + 4);
+        if (!range_fits(at + 8, chunk_length, length))
+            throw_input_error(file, "chunk " + std::to_string(chunk), "runs past the end of the file (truncated file?)");
+        std::string_view data = bytes.substr(at + 8, chunk_length);
+        if (chunk == 0 && type != 0x4E4F534Au) throw_input_error(file, "chunk 0", "the first chunk is not JSON");
+        if (chunk == 0) glb.json = data;
+        if (chunk == 1 && type == 0x004E4942u) glb.binary_chunk = chunk_length;
+        at += 8 + chunk_length;
+    }
+    if (glb.json.empty()) throw_input_error(file, "", "no JSON chunk");
+    return glb;
+}
+
+// Deepest nesting of [ and { outside strings, without recursion.
+void check_json_depth(std::string_view json, const std::string& file) {
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        char c = json[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max_nesting_depth) throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
+// A non-negative integer member, `fallback` when absent.
+std::size_t size_member(const nlohmann::json& object, const char* key, std::size_t fallback, const std::string& file,
+                        const std::string& place) {
+    auto found = object.find(key);
+    if (found == object.end()) return fallback;
+    if (!found->is_number_unsigned()) throw_input_error(file, place, std::string(key) + " must be a non-negative integer");
+    return found->get<std::size_t>();
+}
+
+const nlohmann::json& array_member(const nlohmann::json& root, const char* key, const std::string& file) {
+    static const nlohmann::json none = nlohmann::json::array();
+    auto found = root.find(key);
+    if (found == root.end()) return none;
+    if (!found->is_array()) throw_input_error(file, key, "must be an array");
+    return *found;
+}
+
+}  // namespace
+
+void check_gltf_structure(std::string_view bytes, bool binary, const std::string& file) {
+    Glb glb = binary ? split_glb(bytes, file) : Glb{bytes, 0};
+    check_json_depth(glb.json, file);
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(glb.json);
+    } catch (const nlohmann::json::exception& error) {
+        throw_input_error(file, "", std::string("malformed JSON: ") + error.what());
+    }
+    if (!root.is_object()) throw_input_error(file, "", "the JSON is not an object");
+
+    const nlohmann::json& buffers = array_member(root, "buffers", file);
+    std::vector<std::size_t> buffer_bytes;
+    for (std::size_t b = 0; b < buffers.size(); ++b) {
+        std::string place = "buffer " + std::to_string(b);
+        if (!buffers[b].is_object()) throw_input_error(file, place, "must be an object");
+        std::size_t length = size_member(buffers[b], "byteLength", 0, file, place);
+        if (binary && b == 0 && !buffers[b].contains("uri") && length > glb.binary_chunk)
+            throw_input_error(file, place, "byteLength " + std::to_string(length) + " exceeds the " +
+                                               std::to_string(glb.binary_chunk) + "-byte BIN chunk (truncated file?)");
+        buffer_bytes.push_back(length);
+    }
+    const nlohmann::json& views = array_member(root, "bufferViews", file);
+    for (std::size_t v = 0; v < views.size(); ++v) {
+        std::string place = "bufferView " + std::to_string(v);
+        if (!views[v].is_object()) throw_input_error(file, place, "must be an object");
+        std::size_t buffer = size_member(views[v], "buffer", buffer_bytes.size(), file, place);
+        if (buffer >= buffer_bytes.size()) throw_input_error(file, place, "buffer index out of range");
+        std::size_t offset = size_member(views[v], "byteOffset", 0, file, place);
+        std::size_t length = size_member(views[v], "byteLength", 0, file, place);
+        if (!range_fits(offset, length, buffer_bytes[buffer]))
+            throw_input_error(file, place, "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(length) +
+                                               " runs past buffer " + std::to_string(buffer) + "'s " +
+                                               std::to_string(buffer_bytes[buffer]) + " bytes");
+    }
+    const nlohmann::json& images = array_member(root, "images", file);
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        std::string place = "image " + std::to_string(i);
+        if (!images[i].is_object()) throw_input_error(file, place, "must be an object");
+        if (images[i].contains("bufferView") && size_member(images[i], "bufferView", 0, file, place) >= views.size())
+            throw_input_error(file, place, "bufferView index out of range");
+    }
+}
+
+}  // namespace boxlod
