@@ -4,7 +4,7 @@ BUILD ?= build
 DEBUG_BUILD ?= build-debug
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build debug-build demo test test-sanitize bench paper paper-smoke clean
+.PHONY: all deps configure build debug-build demo test test-sanitize fuzz bench paper paper-smoke clean
 all: build
 
 deps:
@@ -37,6 +37,18 @@ test-sanitize: deps
 	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DBOXLOD_SANITIZE=ON >/dev/null
 	@cmake --build build-sanitize -j $(JOBS)
 	@cd build-sanitize && ctest --output-on-failure -j $(JOBS)
+
+# libFuzzer on every reader of untrusted bytes (tests/fuzz), ASan + UBSan, for
+# FUZZ_SECONDS each (default 60), starting from the corpora in tests/fuzz/corpus
+# (README: Hardening). Inputs found go to build-fuzz/corpus, crashes to
+# build-fuzz/crashes; a crash fails the run.
+FUZZ_SECONDS ?= 60
+fuzz:
+	@scripts/install-deps.sh fuzz
+	@CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DBOXLOD_FUZZ=ON \
+	  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
+	@cmake --build build-fuzz -j $(JOBS) --target fuzz_targets
+	@scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
 # Benchmarks against their peers, in one run each (README: Performance).
 bench:

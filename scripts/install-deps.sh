@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages boxlod needs that are missing; nothing else.
-# Usage: scripts/install-deps.sh [bench|paper]   (bench adds the benchmarks' peers;
+# Usage: scripts/install-deps.sh [bench|fuzz|paper]   (bench adds the benchmarks' peers, fuzz clang;
 # paper: the workflow, notebooks and LaTeX, which the default list also holds
 # because `make test` builds the paper on tiny inputs)
 set -euo pipefail
@@ -21,6 +21,9 @@ data_packages+=(python3-matplotlib)
 # The rasterizer benchmark's peer: Mesa's llvmpipe through OSMesa.
 bench_packages=(libosmesa6-dev)
 
+# make fuzz: libFuzzer and the sanitizers come with clang.
+fuzz_packages=(clang libclang-rt-14-dev)
+
 # The viewer's test runs it in a virtual X server.
 data_packages+=(xvfb xauth)
 
@@ -32,6 +35,7 @@ paper_packages=(snakemake python3-yaml python3-pandas python3-matplotlib
 
 wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}")
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")
+[ "${1:-}" = fuzz ] && wanted+=("${fuzz_packages[@]}")
 
 missing=()
 for package in "${wanted[@]}"; do

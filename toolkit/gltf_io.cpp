@@ -279,7 +279,10 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
 
 Model import_gltf(const std::string& path) {
     const bool binary = fs::path(path).extension() == ".glb";
-    const std::string bytes = read_input_file(path, binary ? "glb file" : "glTF file");
+    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path);
+}
+
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path) {
     check_gltf_structure(bytes, binary, path);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(load_image, const_cast<std::string*>(&path));

@@ -5,10 +5,13 @@
 #include "toolkit/model.h"
 
 #include <string>
+#include <string_view>
 
 namespace boxlod {
 
 Model import_gltf(const std::string& path);
+// The same from the file's bytes; `path` names it in errors and places the files it refers to.
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path);
 
 // Writes .gltf (+ .bin and one PNG per texture beside it) or a single .glb,
 // chosen by the extension; every file atomically. Geometry is stored in
