@@ -223,7 +223,8 @@ std::vector<std::string> timing_columns() {
     return columns;
 }
 
-SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+namespace {
+SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
     auto sweep_start = Clock::now();
     if (threads < 0) threads = config.threads;
     SweepReport report;
@@ -444,6 +445,22 @@ SweepReport run_sweep(const SweepConfig& config, const std::string& output_folde
     write_table(timings, order);
     report.total_seconds = seconds_since(sweep_start);
     return report;
+}
+
+}  // namespace
+
+SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+    // A sweep that fails before its first row (a model that cannot be read)
+    // leaves no folder behind; rows computed stay, for the next run to resume.
+    const bool new_folder = !fs::exists(output_folder);
+    try {
+        return sweep_into(config, output_folder, threads, progress);
+    } catch (...) {
+        std::error_code ignored;
+        if (new_folder && !fs::exists(fs::path(output_folder) / "results.csv", ignored))
+            fs::remove_all(output_folder, ignored);
+        throw;
+    }
 }
 
 }  // namespace boxlod

@@ -2,6 +2,7 @@
 
 #include "renderer/input_error.h"
 #include "renderer/input_file.h"
+#include "data_gen/samples.h"
 #include "experiments/flip.h"
 #include "renderer/parallel.h"
 #include "toolkit/key_value_lines.h"
@@ -80,6 +81,9 @@ SweepModel model_entry(const Line& line, const std::string& item, const std::fil
     if (item.starts_with("sample:")) {
         model.sample = item.substr(7);
         if (model.sample.empty()) line.fail("'sample:' needs a sample name, e.g. sample:house");
+        bool known = false;
+        for (const SampleGrammar& sample : sample_grammars()) known = known || sample.name == model.sample;
+        if (!known) line.fail("unknown sample '" + model.sample + "' (samples: " + sample_names() + ")");
         return model;
     }
     std::filesystem::path path(item);

@@ -12,6 +12,7 @@ namespace boxlod {
 
 std::size_t check_input_file(const std::string& path, const std::string& kind) {
     namespace fs = std::filesystem;
+    if (path.empty()) throw_input_error("''", "", "an empty file name where a " + kind + " was expected");
     std::error_code error;
     fs::file_status status = fs::status(path, error);
     if (status.type() == fs::file_type::not_found) throw_input_error(path, "", "no such file");

@@ -40,8 +40,21 @@ TEST(AssimpInputCheck, PlyCountsMustFitTheFile) {
 TEST(AssimpInputCheck, OffCountsMustFitTheFile) {
     EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
     std::string huge = "OFF\n999999999 1 0\n0 0 0\n";
-    EXPECT_EQ(problem(huge, ".off"), "m.off: header: vertex count: claims 999999999 entries, more than the file's " +
+    EXPECT_EQ(problem(huge, ".off"), "m.off: line 2: vertex count: claims 999999999 entries, more than the file's " +
                                          std::to_string(huge.size()) + " bytes can hold");
+    // The counts may follow the keyword on its own line; comments are skipped.
+    EXPECT_EQ(problem("# a triangle\nOFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
+    // assimp would clamp an index out of range to the last vertex.
+    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n", ".off"), "m.off: line 6: vertex index 9 out of range (3 vertices)");
+}
+
+TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
+    std::string deep = "<?xml version=\"1.0\"?><!-- <a><a><a> --><COLLADA>";
+    for (int i = 0; i < 300; ++i) deep += "<node id=\"a>b\">";
+    EXPECT_NE(problem(deep, ".dae").find("XML elements nested more than 200 levels deep"), std::string::npos);
+    std::string shallow = "<?xml version=\"1.0\"?><COLLADA>";
+    for (int i = 0; i < 300; ++i) shallow += "<node/><node></node>";
+    EXPECT_EQ(problem(shallow + "</COLLADA>", ".dae"), "");
 }
 
 TEST(AssimpInputCheck, StepFilesMustEndWithTheirTrailer) {

@@ -64,17 +64,74 @@ void check_ply(std::string_view bytes, const std::string& file) {
                    file, "line " + std::to_string(element.line) + ": element '" + element.name + "'");
 }
 
-// OFF: "OFF", then vertex, face and edge counts; a vertex needs at least
-// "0 0 0\n" (6 bytes), a face at least "0\n" (2 bytes).
+// OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
+// line per face "n i1 .. in". A vertex needs at least "0 0 0\n" (6 bytes), a
+// face "0\n" (2 bytes); every index must name a vertex (assimp would clamp it).
 void check_off(std::string_view bytes, const std::string& file) {
-    std::istringstream in{std::string(bytes.substr(0, 4096))};
-    std::string word, vertices, faces;
-    while (in >> word && word[0] == '#') std::getline(in, word);  // comments before the keyword
-    if (word.find("OFF") == std::string::npos) return;            // assimp reports it
-    if (!(in >> vertices >> faces)) return;
+    std::istringstream in{std::string(bytes)};
+    std::string line;
+    int number = 0;
+    auto next_line = [&]() {
+        while (std::getline(in, line)) {
+            ++number;
+            std::size_t start = line.find_first_not_of(" \t\r");
+            if (start != std::string::npos && line[start] != '#') return true;
+        }
+        return false;
+    };
+    if (!next_line() || line.find("OFF") == std::string::npos || line.find("BINARY") != std::string::npos) return;
+    // The counts follow "OFF" on its line or on the next.
+    std::istringstream header(line.substr(line.find("OFF") + 3));
+    std::string vertices_text, faces_text;
+    if (!(header >> vertices_text)) {
+        if (!next_line()) return;
+        header = std::istringstream(line);
+        header >> vertices_text;
+    }
+    if (!(header >> faces_text)) return;
+    const std::string place = "line " + std::to_string(number);
+    std::size_t vertices = parse_count(vertices_text, file, place), faces = parse_count(faces_text, file, place);
     std::size_t available = bytes.size();
-    check_fits(parse_count(vertices, file, "header"), 6, available, file, "header: vertex count");
-    check_fits(parse_count(faces, file, "header"), 2, available, file, "header: face count");
+    check_fits(vertices, 6, available, file, place + ": vertex count");
+    check_fits(faces, 2, available, file, place + ": face count");
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (!next_line()) return;  // assimp reports a short file
+    for (std::size_t f = 0; f < faces && next_line(); ++f) {
+        std::istringstream face(line);
+        std::size_t corners = 0, index = 0;
+        face >> corners;
+        for (std::size_t k = 0; k < corners && face >> index; ++k)
+            if (index >= vertices)
+                throw_input_error(file, "line " + std::to_string(number), "vertex index " + std::to_string(index) + " out of range (" +
+                                                                          std::to_string(vertices) + " vertices)");
+    }
+}
+
+// XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
+// (assimp's readers recurse per element). Comments, declarations and quoted
+// attribute values are skipped.
+void check_xml_depth(std::string_view bytes, const std::string& file) {
+    int depth = 0;
+    for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
+        if (bytes.substr(i, 4) == "<!--") {
+            i = bytes.find("-->", i);
+            if (i == std::string_view::npos) return;
+            continue;
+        }
+        char next = i + 1 < bytes.size() ? bytes[i + 1] : '\0';
+        if (next == '/') {
+            --depth;
+            continue;
+        }
+        std::size_t end = i + 1;
+        for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
+            if (bytes[end] == '"' || bytes[end] == '\'') quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
+        if (end >= bytes.size()) return;
+        bool opens = next != '!' && next != '?' && bytes[end - 1] != '/';
+        if (opens && ++depth > max_nesting_depth)
+            throw_input_error(file, "byte " + std::to_string(i), "XML elements " + nesting_message());
+        i = end;
+    }
 }
 
 // ISO 10303-21 instances as a graph: each instance's references, and for the
@@ -197,6 +254,7 @@ void check_step(std::string_view bytes, const std::string& file) {
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
+    if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
     if (extension == ".ifc" || extension == ".stp" || extension == ".step") check_step(bytes, file);
 }
 

@@ -2,7 +2,8 @@
 // hostile file cannot make it allocate without bound, loop, or recurse until
 // the stack runs out: header counts that cannot fit the file (PLY, OFF), and
 // STEP/IFC files cut short, or whose references form a cycle or nest deeper
-// than max_nesting_depth (ISO 10303-21: entity instances `#N = TYPE(...);`).
+// than max_nesting_depth (ISO 10303-21: entity instances `#N = TYPE(...);`), and
+// XML (COLLADA, X3D) nested deeper than that.
 #pragma once
 #include <string>
 #include <string_view>

@@ -106,17 +106,26 @@ struct Reader {
     }
 };
 
-Eigen::Matrix4d local_transform(const tinygltf::Node& node) {
+// glTF 2.0, 5.25 "node": a 16-number matrix, or translation (3), a unit
+// rotation quaternion (4) and scale (3).
+Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader, const std::string& place) {
+    auto sized = [&](const std::vector<double>& v, std::size_t n, const char* what) {
+        if (!v.empty() && v.size() != n) reader.fail(place, std::string(what) + " must have " + std::to_string(n) + " numbers");
+        return !v.empty();
+    };
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    if (node.matrix.size() == 16) {
+    if (sized(node.matrix, 16, "matrix")) {
         for (int i = 0; i < 16; ++i) m(i % 4, i / 4) = node.matrix[i];  // column-major
         return m;
     }
     Eigen::Affine3d t = Eigen::Affine3d::Identity();
-    if (node.translation.size() == 3) t.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
-    if (node.rotation.size() == 4)
-        t.rotate(Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]).normalized());
-    if (node.scale.size() == 3) t.scale(Eigen::Vector3d(node.scale[0], node.scale[1], node.scale[2]));
+    if (sized(node.translation, 3, "translation")) t.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
+    if (sized(node.rotation, 4, "rotation")) {
+        Eigen::Quaterniond q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        if (!(std::abs(q.norm() - 1) < 1e-3)) reader.fail(place, "rotation is not a unit quaternion");
+        t.rotate(q.normalized());
+    }
+    if (sized(node.scale, 3, "scale")) t.scale(Eigen::Vector3d(node.scale[0], node.scale[1], node.scale[2]));
     return t.matrix();
 }
 
@@ -149,6 +158,8 @@ Eigen::Matrix<float, N, 1> number_array(const tinygltf::Value& v, const Reader& 
     return out;
 }
 
+constexpr float max_scope_extent = 1e6f;
+
 Scope read_scope(const tinygltf::Value& v, const Reader& reader, const std::string& place) {
     if (!v.IsObject()) reader.fail(place, "scope must be an object");
     Scope scope;
@@ -157,6 +168,11 @@ Scope read_scope(const tinygltf::Value& v, const Reader& reader, const std::stri
     const tinygltf::Value& axes = v.Get("axes");
     if (!axes.IsArray() || axes.ArrayLen() != 3) reader.fail(place, "scope.axes must hold three axes");
     for (int i = 0; i < 3; ++i) scope.axes.col(i) = number_array<3>(axes.Get(i), reader, place + " scope.axes");
+    // A scope is an oriented box: orthonormal axes, extents of 0 or more.
+    if (!((scope.axes.transpose() * scope.axes - Eigen::Matrix3f::Identity()).cwiseAbs().maxCoeff() < 1e-3f))
+        reader.fail(place, "scope.axes must be three orthonormal axes");
+    if (!((scope.half_extents.array() >= 0).all() && (scope.half_extents.array() <= max_scope_extent).all()))
+        reader.fail(place, "scope.half_extents must be in [0, 1e6]");
     return scope;
 }
 
@@ -211,7 +227,9 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
     out.polygon_count = out.triangle_count();
     if (const tinygltf::Value* extras = boxlod_extras(in.extras); extras && extras->Has("polygons")) {
         const tinygltf::Value& polygons = extras->Get("polygons");
-        if (!polygons.IsNumber() || polygons.GetNumberAsDouble() < 0) reader.fail(place, "extras.boxlod.polygons must be a count");
+        // Each polygon is at least one triangle.
+        if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 && polygons.GetNumberAsDouble() <= double(out.triangle_count())))
+            reader.fail(place, "extras.boxlod.polygons must be a count of at most the primitive's triangles");
         out.polygon_count = std::size_t(polygons.GetNumberAsDouble());
     }
     if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
@@ -225,6 +243,14 @@ int texture_image(const Reader& reader, int texture, const std::string& place) {
     int source = reader.gltf.textures[texture].source;
     if (source < 0 || source >= int(reader.gltf.images.size())) reader.fail(place, "texture has no valid image");
     return source;
+}
+
+// tinygltf's file callback: buffers and images named by URI are read as every
+// input file is (a folder, a device or a missing file is a clear error).
+bool read_whole_file(std::vector<unsigned char>* out, std::string*, const std::string& path, void*) {
+    std::string bytes = read_input_file(path, "file");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
 }
 
 // tinygltf's image callback: our decoders, so that a broken image is named by
@@ -286,6 +312,8 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     check_gltf_structure(bytes, binary, path);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
+    tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file, &tinygltf::WriteWholeFile, nullptr};
+    loader.SetFsCallbacks(files);
     tinygltf::Model gltf;
     std::string error, warning, directory = fs::path(path).parent_path().string();
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
@@ -372,7 +400,7 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
         if (visited[visit.gltf_node]) reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
         visited[visit.gltf_node] = true;
         const tinygltf::Node& in = gltf.nodes[visit.gltf_node];
-        Eigen::Matrix4d world = visit.parent_world * local_transform(in);
+        Eigen::Matrix4d world = visit.parent_world * local_transform(in, reader, place);
         if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
         int index = add_node(model, visit.parent, in.name);
         Node& node = model.nodes[index];

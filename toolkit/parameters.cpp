@@ -157,6 +157,7 @@ void validate_parameters(const LodParameters& p, const std::string& where) {
     check("current_level", p.current_level, r::current_level);
     check("fovy", p.fovy, r::fovy);
     check("distance", p.distance, r::distance);
+    if (p.distance > 0 && p.distance < r::min_positive_distance) fail("distance: 0 (the framing distance) or at least 0.001 m");
     check("resolution", p.resolution, r::resolution);
     check("min_texture_size", p.min_texture_size, r::texture_size);
     check("max_texture_size", p.max_texture_size, r::texture_size);

@@ -42,6 +42,7 @@ constexpr NumberRange wanted_levels{1, 64};
 constexpr NumberRange current_level{0, 10000};  // and at most the levels obtained, checked when building
 constexpr NumberRange fovy{0.1, 179};
 constexpr NumberRange distance{0, 1e6};         // metres; 0: the distance that frames the model
+constexpr double min_positive_distance = 1e-3;  // a sizing camera nearer than 1 mm sizes nothing sensible
 constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two
 constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units

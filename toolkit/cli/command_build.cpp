@@ -76,6 +76,8 @@ int run_build(const Arguments& a) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
     Model model = load_model(parameters.model);
     std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos)
+        throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
     if (a.has("level-distances") && !a.has("all-levels")) throw InputError("--level-distances needs --all-levels");
     auto first = start_lod(model, parameters, threads);
     int obtained = first->levels.obtained_levels;

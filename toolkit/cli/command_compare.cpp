@@ -54,9 +54,9 @@ double silhouette_metric(const Arguments& arguments, const Image8& a, const Imag
         return silhouette_iou(coverage_from_mask(mask_a), coverage_from_mask(mask_b));
     }
     // boxlod render's background, white unless told otherwise (sRGB components in [0, 1]).
-    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background", "1,1,1"));
+    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background", "1,1,1"), colour_range);
     std::array<std::uint8_t, 3> background{};
-    for (int c = 0; c < 3; ++c) background[c] = std::uint8_t(std::lround(std::clamp(srgb[c], 0.0f, 1.0f) * 255));
+    for (int c = 0; c < 3; ++c) background[c] = std::uint8_t(std::lround(srgb[c] * 255));
     return silhouette_iou(coverage_from_background(a, background), coverage_from_background(b, background));
 }
 

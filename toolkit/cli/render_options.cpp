@@ -32,13 +32,13 @@ std::vector<Option> render_options() {
     };
 }
 
-Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text) {
+Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text, const NumberRange& range) {
     Eigen::Vector3f v;
     const char* p = text.data();
     const char* end = text.data() + text.size();
     for (int i = 0; i < 3; ++i) {
         auto [next, error] = std::from_chars(p, end, v[i]);
-        if (error != std::errc() || !std::isfinite(v[i])) break;
+        if (error != std::errc() || !range.contains(v[i])) break;
         p = next;
         if (i < 2) {
             if (p == end || *p != ',') break;
@@ -47,7 +47,7 @@ Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text
             return v;
         }
     }
-    throw InputError("--" + option + ": expected three numbers X,Y,Z, got '" + text + "'");
+    throw InputError("--" + option + ": expected three numbers X,Y,Z, each " + out_of_range_message(range, text).substr(9));
 }
 
 View view_from_arguments(const Arguments& a, const Bounds& bounds) {
@@ -68,14 +68,14 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     s.parallax_scale = float(a.number("parallax-scale", s.parallax_scale));
     s.parallax_bias = float(a.number("parallax-bias", s.parallax_bias));
     s.light = light_for_camera(s.camera);
-    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"));
+    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), position_range);
     s.light.ambient = float(a.number("ambient", s.light.ambient));
     s.light.diffuse = float(a.number("diffuse", s.light.diffuse));
     s.light.specular = float(a.number("specular", s.light.specular));
     s.light.shininess = float(a.number("shininess", 0));
     if (a.has("background")) {
-        Eigen::Vector3f srgb = parse_vector3("background", a.text("background"));
-        for (int c = 0; c < 3; ++c) view.background[c] = srgb_to_linear(std::uint8_t(std::lround(std::clamp(srgb[c], 0.0f, 1.0f) * 255)));
+        Eigen::Vector3f srgb = parse_vector3("background", a.text("background"), colour_range);
+        for (int c = 0; c < 3; ++c) view.background[c] = srgb_to_linear(std::uint8_t(std::lround(srgb[c] * 255)));
     }
     std::string cull = a.text("cull", "none");
     if (cull == "back") s.culling = Culling::back;

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Writes the big and deeply nested hostile inputs of the bad-input corpus test
+into OUTDIR (run by bad_inputs.sh; not stored in the repository)."""
+import base64
+import json
+import os
+import struct
+import sys
+
+out = sys.argv[1]
+os.makedirs(out, exist_ok=True)
+
+
+def put(name, data):
+    with open(os.path.join(out, name), "wb") as f:
+        f.write(data.encode() if isinstance(data, str) else data)
+
+
+# ---------------------------------------------------------------- glTF nested deeply
+triangle = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+
+
+def gltf_text(node_extras=None, asset_extras=None, unknown=None, buffer_uri=True):
+    g = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "n", "mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36}],
+    }
+    if buffer_uri:
+        g["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(triangle).decode()
+    text = json.dumps(g)
+    # Splice raw nested text in (json.dumps itself would recurse).
+    if node_extras:
+        text = text.replace('"name": "n",', '"name": "n", "extras": %s,' % node_extras, 1)
+    if asset_extras:
+        text = text.replace('"version": "2.0"', '"version": "2.0", "extras": %s' % asset_extras, 1)
+    if unknown:
+        text = text[:-1] + ', "unknownDeepKey": %s}' % unknown
+    return text
+
+
+def arrays(depth):
+    return "[" * depth + "]" * depth
+
+
+def objects(depth):
+    return '{"a":' * depth + "1" + "}" * depth
+
+
+put("deep_node_extras_20000.gltf", gltf_text(node_extras=arrays(20000)))
+put("deep_node_extras_200000.gltf", gltf_text(node_extras=arrays(200000)))
+put("deep_asset_extras_objects_20000.gltf", gltf_text(asset_extras=objects(20000)))
+put("deep_unknown_key_20000.gltf", gltf_text(unknown=arrays(20000)))
+put("deep_boxlod_extras_20000.gltf", gltf_text(node_extras='{"boxlod": {"scope": %s}}' % arrays(20000)))
+
+json_chunk = gltf_text(node_extras=arrays(20000), buffer_uri=False).encode()
+while len(json_chunk) % 4:
+    json_chunk += b" "
+body = struct.pack("<I", len(json_chunk)) + b"JSON" + json_chunk + struct.pack("<I", 36) + b"BIN\0" + triangle
+put("deep_node_extras_20000.glb", b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body)
+
+# ---------------------------------------------------------------- grammars nested deeply or very long
+n = 3000
+put("grammar_parens_3000.grammar", "Lot --> extrude(%s3%s) i(box)\n" % ("(" * n, ")" * n))
+put("grammar_calls_3000.grammar", "Lot --> extrude(%s3%s) i(box)\n" % ("abs(" * n, ")" * n))
+put("grammar_brackets_3000.grammar", "Lot --> extrude(3) %si(box)%s\n" % ("[ " * n, " ]" * n))
+put("grammar_splits_3000.grammar",
+    "Lot --> extrude(3) %si(box)%s\n" % ("split(x) { ~1 : " * n, " }" * n))
+put("grammar_minus_3000.grammar", "Lot --> extrude(%s3) i(box)\n" % ("- " * n))
+put("grammar_not_3000.grammar", "Lot --> extrude(3 * (%s1)) i(box)\n" % ("! " * n))
+put("grammar_plus_chain_200000.grammar", "Lot --> extrude(%s) i(box)\n" % " + ".join(["0.00001"] * 200000))
+put("grammar_rule_chain_3000.grammar",
+    "".join("R%d --> R%d\n" % (i, i + 1) for i in range(n)) + "R%d --> extrude(3) i(box)\n" % n)
+
+# ---------------------------------------------------------------- COLLADA nested deeply
+depth = 100000
+put("dae_nodes_100000.dae",
+    '<?xml version="1.0"?>\n<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">'
+    '<library_visual_scenes><visual_scene id="vs">' + '<node>' * depth + '</node>' * depth +
+    '</visual_scene></library_visual_scenes><scene><instance_visual_scene url="#vs"/></scene></COLLADA>\n')
+put("dae_xml_100000.dae", '<?xml version="1.0"?>\n<COLLADA version="1.4.1">' + "<a>" * depth + "</a>" * depth + "</COLLADA>\n")
+
+# ---------------------------------------------------------------- a PLY whose header is one huge line
+put("ply_header_16mb.ply", "ply\nformat ascii 1.0\ncomment " + "x" * (16 << 20) + "\nend_header\n")
