@@ -1,6 +1,6 @@
 #include "toolkit/assimp_input_check.h"
 
-#include "renderer/input_error.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,12 +11,7 @@ using namespace boxlod;
 namespace {
 
 std::string problem(const std::string& bytes, const std::string& extension) {
-    try {
-        check_assimp_input(bytes, extension, "m" + extension);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { check_assimp_input(bytes, extension, "m" + extension); });
 }
 
 std::string step(const std::string& data) {

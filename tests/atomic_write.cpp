@@ -14,12 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string output_problem(void (*check)(const std::string&), const std::string& path) {
-    try {
-        check(path);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { check(path); });
 }
 }  // namespace
 

@@ -1,6 +1,6 @@
 #include "toolkit/gltf_structure.h"
 
-#include "renderer/input_error.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +12,7 @@ using namespace boxlod;
 namespace {
 
 std::string problem(const std::string& bytes, bool binary = false) {
-    try {
-        check_gltf_structure(bytes, binary, "m.gltf");
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { check_gltf_structure(bytes, binary, "m.gltf"); });
 }
 
 std::string u32(std::uint32_t v) { return {char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; }

@@ -9,12 +9,7 @@ using namespace boxlod;
 
 namespace {
 std::string problem(const std::string& path) {
-    try {
-        read_input_file(path, "grammar file");
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { read_input_file(path, "grammar file"); });
 }
 }  // namespace
 

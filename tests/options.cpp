@@ -1,6 +1,7 @@
 #include "toolkit/cli/options.h"
 
 #include "renderer/input_error.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -20,12 +21,7 @@ Command render_like() {
 }
 
 std::string message_of(const std::vector<std::string>& words) {
-    try {
-        parse_arguments(render_like(), words);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { parse_arguments(render_like(), words); });
 }
 }  // namespace
 

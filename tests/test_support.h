@@ -1,6 +1,7 @@
 // Small helpers shared by the tests: scratch folders, files, running the CLI.
 #pragma once
 #include "renderer/image.h"
+#include "renderer/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,17 @@
 #include <vector>
 
 namespace boxlod::test {
+
+// The message of the InputError that run() throws, "" when it throws none.
+template <typename Run>
+std::string input_error_of(Run run) {
+    try {
+        run();
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
 
 // A fresh, empty folder for one test.
 inline std::filesystem::path scratch_folder(const std::string& name) {
