@@ -137,6 +137,14 @@ int run_view(const Arguments& a) {
     bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
     std::string params_out = a.text("params-out", "boxlod-view.params.txt");
     Frame frame;
+    // A file that cannot be written or read is shown, not the end of the session.
+    auto shown = [&](auto action) {
+        try {
+            action();
+        } catch (const InputError& error) {
+            state.message = error.what();
+        }
+    };
     while (!state.quit) {
         SDL_Event event;
         // Replays drain the queue without waiting; people get a responsive wait.
@@ -158,20 +166,24 @@ int run_view(const Arguments& a) {
         }
         if (state.screenshot) {  // the rendered frame, without the text overlay
             std::string path = a.text("screenshot", "boxlod-view-" + std::to_string(screenshots++) + ".png");
-            write_png(path, frame_to_srgb8(frame));
-            std::printf("screenshot = %s\n", path.c_str());
+            shown([&] {
+                write_png(path, frame_to_srgb8(frame));
+                std::printf("screenshot = %s\n", path.c_str());
+            });
             state.screenshot = false;
         }
         if (state.save_parameters) {
             LodParameters p = state.parameters;
             p.camera = state.settings.camera;
             p.light = state.settings.light;
-            save_parameters(params_out, p);
-            state.message = "saved " + params_out;
+            shown([&] {
+                save_parameters(params_out, p);
+                state.message = "saved " + params_out;
+            });
             state.save_parameters = false, redraw = true;
         }
         if (state.load_parameters) {
-            try {
+            shown([&] {
                 LodParameters p = load_parameters(params_out);
                 p.model = state.parameters.model;
                 state.parameters = p;
@@ -182,17 +194,17 @@ int run_view(const Arguments& a) {
                 state.session.reset();
                 state.needs_update = true;
                 state.message = "loaded " + params_out;
-            } catch (const InputError& error) {
-                state.message = error.what();
-            }
+            });
             state.load_parameters = false, redraw = true;
         }
         if (state.export_lod) {
             if (state.lod && state.session) {
                 std::string name = std::filesystem::path(parameters.model).stem().string() + "_L" + std::to_string(state.parameters.current_level);
                 std::string folder = a.text("export-dir", "boxlod-view-export");
-                export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
-                state.message = "exported " + folder + "/" + name + ".gltf";
+                shown([&] {
+                    export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
+                    state.message = "exported " + folder + "/" + name + ".gltf";
+                });
             } else {
                 state.message = "nothing to export at level 0";
             }
