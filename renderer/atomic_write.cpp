@@ -98,7 +98,7 @@ void write_atomically(const std::string& path, const std::function<void(const st
 
 void check_output_file(const std::string& path) {
     std::error_code error;
-    if (path.empty()) throw_input_error("(empty path)", "", "an output needs a file name");
+    if (path.empty()) throw_input_error("''", "", "an empty file name where an output file was expected");
     if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
     fs::path directory = fs::path(path).parent_path();
     if (directory.empty()) directory = ".";
@@ -109,7 +109,7 @@ void check_output_file(const std::string& path) {
 
 void check_output_directory(const std::string& path) {
     std::error_code error;
-    if (path.empty()) throw_input_error("(empty path)", "", "an output needs a folder name");
+    if (path.empty()) throw_input_error("''", "", "an empty folder name where an output folder was expected");
     // The folder, or the nearest ancestor that exists (the rest is made when writing).
     const fs::path wanted = fs::absolute(path, error).lexically_normal();
     fs::path existing = wanted;
