@@ -178,7 +178,7 @@ check "an interrupted build leaves no temporary" bash -c "! ls '$work/interrupte
 check "every level left is whole: its .gltf and every file it names" python3 - "$work/interrupted" <<'PY'
 import json, os, re, sys
 folder = sys.argv[1]
-files = os.listdir(folder)
+files = os.listdir(folder) if os.path.isdir(folder) else []  # interrupted before its first level
 levels = {m.group(1) for f in files for m in [re.match(r'(manual_lod_L\d+)[._]', f)] if m}
 for level in levels:
     gltf = os.path.join(folder, level + '.gltf')
@@ -192,6 +192,7 @@ for level in levels:
         if not os.path.exists(os.path.join(folder, level + suffix)):
             sys.exit(level + ': ' + suffix + ' missing')
 PY
+mkdir -p "$work/interrupted"
 touch "$work/interrupted/manual_lod_L1.gltf.tmp999999999"
 check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/interrupted" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
 check "and removes the temporary of the run killed outright" test ! -e "$work/interrupted/manual_lod_L1.gltf.tmp999999999"
