@@ -5,6 +5,7 @@
 #include "toolkit/cost.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
+#include "toolkit/parameters.h"
 #include "renderer/parallel.h"
 #include "renderer/image.h"
 
@@ -32,8 +33,8 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
     for (std::string item; std::getline(in, item, ',');) {
         char* end = nullptr;
         const double d = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(d) || d <= 0 || d > 1e7)
-            throw InputError("--level-distances: '" + item + "' is not a distance in (0, 1e7]");
+        if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)
+            throw InputError("--level-distances: '" + item + "' is not a distance in [0.001, 1000000] m");
         if (!distances.empty() && float(d) < distances.back())
             throw InputError("--level-distances: " + item + " comes after " + format_number(distances.back()) +
                              ": the distances must ascend, one per level 1.." + std::to_string(levels));
