@@ -2,6 +2,7 @@
 
 #include "renderer/input_error.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -20,11 +21,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What an interruption must remove: temporaries being written, and the files
-// of the open groups. Guarded by `mutex`; the interrupt thread takes it too.
+// A file written inside a group, waiting as its temporary for the group's commit.
+struct PendingRename {
+    std::string temporary, path;
+};
+
+// What an interruption must remove: temporaries being written or waiting for
+// their group, and the files a group's commit has renamed so far. Guarded by
+// `mutex`; the interrupt thread takes it too.
 struct PartialOutputs {
     std::mutex mutex;
     std::set<std::string> temporaries;
+    std::vector<PendingRename> pending;
     std::vector<std::string> group_files;
     int open_groups = 0;
 };
@@ -78,15 +86,18 @@ void write_atomically(const std::string& path, const std::function<void(const st
     }
     try {
         write(temporary);
-        std::lock_guard lock(outputs.mutex);  // renamed and recorded as one step for the interrupt thread
+        std::lock_guard lock(outputs.mutex);
+        if (outputs.open_groups > 0) {
+            // Renamed at the group's commit: a kill before it leaves only temporaries.
+            bool known = std::any_of(outputs.pending.begin(), outputs.pending.end(),
+                                     [&](const PendingRename& p) { return p.temporary == temporary; });
+            if (!known) outputs.pending.push_back({temporary, path});
+            return;
+        }
         std::error_code error;
-        // A group takes back only the files it made: one it replaced (a texture
-        // shared with a level written before) may be needed by others.
-        bool made = !fs::exists(path, error);
         fs::rename(temporary, path, error);
         if (error) throw_input_error(path, "", "cannot write: " + error.message());
         outputs.temporaries.erase(temporary);
-        if (outputs.open_groups > 0 && made) outputs.group_files.push_back(path);
     } catch (...) {
         std::error_code ignored;
         fs::remove(temporary, ignored);
@@ -123,20 +134,50 @@ OutputGroup::OutputGroup() {
     PartialOutputs& outputs = partial_outputs();
     std::lock_guard lock(outputs.mutex);
     ++outputs.open_groups;
-    first_file_ = outputs.group_files.size();
+    first_pending_ = outputs.pending.size();
+}
+
+void OutputGroup::commit() {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
+    if (outputs.open_groups > 1) {  // an inner group: the outermost decides
+        committed_ = true;
+        return;
+    }
+    // Renamed in the order written, so the file naming the others (a .gltf) comes
+    // last; the interrupt thread cannot run between two renames (it needs the mutex).
+    for (const PendingRename& file : outputs.pending) {
+        std::error_code error;
+        // Take back only the files this group made: one it replaced (a texture
+        // shared with a level written before) may be needed by others.
+        bool made = !fs::exists(file.path, error);
+        fs::rename(file.temporary, file.path, error);
+        if (error) throw_input_error(file.path, "", "cannot write: " + error.message());
+        outputs.temporaries.erase(file.temporary);
+        if (made) outputs.group_files.push_back(file.path);
+    }
+    outputs.pending.clear();
+    outputs.group_files.clear();
+    committed_ = true;
 }
 
 OutputGroup::~OutputGroup() {
     PartialOutputs& outputs = partial_outputs();
     std::lock_guard lock(outputs.mutex);
     if (!committed_) {
-        for (std::size_t i = first_file_; i < outputs.group_files.size(); ++i) {
+        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i) {
             std::error_code ignored;
-            fs::remove(outputs.group_files[i], ignored);
+            fs::remove(outputs.pending[i].temporary, ignored);
+            outputs.temporaries.erase(outputs.pending[i].temporary);
         }
-        outputs.group_files.resize(first_file_);
+        outputs.pending.resize(std::min(first_pending_, outputs.pending.size()));
+        for (const std::string& file : outputs.group_files) {  // a commit that failed half way
+            std::error_code ignored;
+            fs::remove(file, ignored);
+        }
+        outputs.group_files.clear();
     }
-    if (--outputs.open_groups == 0) outputs.group_files.clear();
+    --outputs.open_groups;
 }
 
 void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes) {

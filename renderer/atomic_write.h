@@ -23,20 +23,22 @@ void write_text_atomically(const std::string& path, const std::string& text);
 void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder
 void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
 
-// Files that appear together or not at all: every file a group's atomic
-// writes create belongs to it (a file they replace stays, as others may need
-// it). A group destroyed without commit() (an exception passing) removes its
-// files; groups nest, the outermost decides.
+// Files that appear together or not at all: inside a group, atomic writes
+// leave their temporaries, and the outermost group's commit() renames them all
+// in the order written (so the file naming the others goes last). A group
+// destroyed without commit() (an exception passing) removes its files; a kill
+// of any kind before the commit leaves only temporaries. Groups nest, the
+// outermost decides.
 class OutputGroup {
 public:
     OutputGroup();
     ~OutputGroup();
-    void commit() { committed_ = true; }
+    void commit();  // throws InputError naming a file that cannot be renamed, and removes the others
     OutputGroup(const OutputGroup&) = delete;
     OutputGroup& operator=(const OutputGroup&) = delete;
 
 private:
-    std::size_t first_file_;
+    std::size_t first_pending_;
     bool committed_ = false;
 };
 

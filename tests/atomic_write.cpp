@@ -46,6 +46,24 @@ TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
     EXPECT_TRUE(fs::exists(folder / "c.tmpfile"));
 }
 
+TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
+    fs::path folder = test::scratch_folder("atomic_write_commit");
+    const std::string temporary_of_b = (folder / "b.gltf").string() + ".tmp" + std::to_string(::getpid());
+    {
+        OutputGroup group;
+        write_text_atomically((folder / "a.png").string(), "page");
+        write_text_atomically((folder / "b.gltf").string(), "names a.png");
+        // A kill now, even one nothing can catch, leaves no file a reader could take for whole.
+        EXPECT_FALSE(fs::exists(folder / "a.png"));
+        EXPECT_FALSE(fs::exists(folder / "b.gltf"));
+        EXPECT_TRUE(fs::exists(temporary_of_b));
+        group.commit();
+    }
+    EXPECT_EQ(test::read_text(folder / "a.png"), "page");
+    EXPECT_EQ(test::read_text(folder / "b.gltf"), "names a.png");
+    EXPECT_FALSE(fs::exists(temporary_of_b));
+}
+
 TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItReplaced) {
     fs::path folder = test::scratch_folder("atomic_write_group");
     write_text_atomically((folder / "shared.png").string(), "old");

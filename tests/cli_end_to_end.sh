@@ -164,22 +164,13 @@ check "no OUTDIR after a failed city" test ! -e "$work/city_bad"
 check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 
 # Kill safety: a build interrupted at any moment leaves whole levels and no
-# temporaries; a temporary left by a run killed outright goes at the next run.
-"$boxlod" generate --sample manual -o "$work/manual.glb" > /dev/null
-"$boxlod" build "$work/manual.glb" --all-levels -o "$work/interrupted" --preview-width 64 --preview-height 48 > /dev/null 2> "$work/err" &
-build_pid=$!
-sleep 3
-kill -TERM $build_pid
-wait $build_pid
-status=$?
-check "an interrupted build exits 143 (or had finished)" bash -c "test $status = 143 -o $status = 0"
-check "an interrupted build says so" bash -c "test $status = 0 || grep -q 'interrupted (signal 15); partial outputs removed' '$work/err'"
-check "an interrupted build leaves no temporary" bash -c "! ls '$work/interrupted' | grep -q '\.tmp'"
-check "every level left is whole: its .gltf and every file it names" python3 - "$work/interrupted" <<'PY'
+# temporaries; one killed outright (SIGKILL) leaves whole levels and
+# temporaries that go at the next run.
+cat > "$work/whole_levels.py" <<'PY'
 import json, os, re, sys
 folder = sys.argv[1]
 files = os.listdir(folder) if os.path.isdir(folder) else []  # interrupted before its first level
-levels = {m.group(1) for f in files for m in [re.match(r'(manual_lod_L\d+)[._]', f)] if m}
+levels = {m.group(1) for f in files if '.tmp' not in f for m in [re.match(r'(manual_lod_L\d+)[._]', f)] if m}
 for level in levels:
     gltf = os.path.join(folder, level + '.gltf')
     if not os.path.exists(gltf):
@@ -192,10 +183,28 @@ for level in levels:
         if not os.path.exists(os.path.join(folder, level + suffix)):
             sys.exit(level + ': ' + suffix + ' missing')
 PY
-mkdir -p "$work/interrupted"
-touch "$work/interrupted/manual_lod_L1.gltf.tmp999999999"
-check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/interrupted" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
-check "and removes the temporary of the run killed outright" test ! -e "$work/interrupted/manual_lod_L1.gltf.tmp999999999"
+"$boxlod" generate --sample manual -o "$work/manual.glb" > /dev/null
+"$boxlod" build "$work/manual.glb" --all-levels -o "$work/interrupted" --preview-width 64 --preview-height 48 > /dev/null 2> "$work/err" &
+build_pid=$!
+sleep 3
+kill -TERM $build_pid
+wait $build_pid
+status=$?
+check "an interrupted build exits 143 (or had finished)" bash -c "test $status = 143 -o $status = 0"
+check "an interrupted build says so" bash -c "test $status = 0 || grep -q 'interrupted (signal 15); partial outputs removed' '$work/err'"
+check "an interrupted build leaves no temporary" bash -c "! ls '$work/interrupted' | grep -q '\.tmp'"
+check "every level left is whole: its .gltf and every file it names" python3 "$work/whole_levels.py" "$work/interrupted"
+# Killed outright at several moments (so at least once while a level is written).
+for moment in 1 2 3 4; do
+  "$boxlod" build "$work/manual.glb" --all-levels -o "$work/killed" --preview-width 64 --preview-height 48 > /dev/null 2>&1 &
+  build_pid=$!
+  sleep $moment
+  kill -KILL $build_pid
+  wait $build_pid
+  check "a build killed outright after ${moment} s leaves only whole levels" python3 "$work/whole_levels.py" "$work/killed"
+done
+check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/killed" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
+check "and removes the temporaries of the runs killed outright" bash -c "! ls '$work/killed' | grep -q '\.tmp'"
 
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null
 if [ "$failures" -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi

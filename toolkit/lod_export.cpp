@@ -29,8 +29,8 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     std::error_code error;
     fs::create_directories(directory, error);
     if (error) throw_input_error(directory, "", "cannot create the folder: " + error.message());
-    // A level's files appear together or not at all; its .gltf comes last, so a
-    // level whose .gltf exists is whole even after a kill that nothing can catch.
+    // A level's files appear together or not at all: they wait as temporaries
+    // until the commit renames them, so even SIGKILL leaves no half level.
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     Model& model = lod.model;

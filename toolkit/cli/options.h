@@ -17,7 +17,7 @@ struct Option {
     std::string name;        // without the leading "--"
     std::string value_name;  // empty: a flag without value
     std::string help;
-    std::optional<NumberRange> range;  // a numeric option's accepted values, checked while parsing
+    std::optional<NumberRange> range = std::nullopt;  // a numeric option's accepted values, checked while parsing
     char short_name = 0;               // e.g. 'o' for -o
 };
 
