@@ -1,4 +1,4 @@
-// Deterministic random numbers (DESIGN.md: Determinism): PCG32 (O'Neill 2014)
+// Deterministic random numbers (docs/design.md: Determinism): PCG32 (O'Neill 2014)
 // with selectable streams, as in pbrt's RNG::SetSequence. Every derived item
 // (a node, a lot, a texel) gets its own stream from a hash of its identity, so
 // no value depends on the order in which items are produced.

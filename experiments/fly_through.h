@@ -1,5 +1,5 @@
 // `boxlod city`: a fly-through of a generated city with run-time LoD selection
-// (issue 7, item 2). Every building gets its own LoD, built once: level c in
+// (docs/city.md). Every building gets its own LoD, built once: level c in
 // 1..N baked for a sizing distance that doubles with c (base · 2^(c-1)), so that
 // texel-exact selection has levels to choose from. Per frame the strategy
 // (with hysteresis, optionally under a face budget) picks every building's

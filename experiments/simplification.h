@@ -1,4 +1,4 @@
-// The classic baseline (issue 6, item 2): quadric edge-collapse mesh
+// The classic baseline (docs/sweeps.md: baselines): quadric edge-collapse mesh
 // simplification (Garland-Heckbert, the lecture notes' method) with
 // meshoptimizer, keeping materials and texture coordinates.
 #pragma once

@@ -16,7 +16,7 @@ namespace boxlod {
 // all: also a FLIP (or RMSE) heat map per row.
 enum class KeptImages { none, lod, all };
 
-// The distance the LoD textures are sized for (DESIGN.md: Texture sizing):
+// The distance the LoD textures are sized for (docs/design.md: Texture sizing):
 // nearest: one LoD per level, baked for the smallest of the distances (it is
 // texel-exact there and oversampled farther away); each_distance: an LoD per
 // level and distance, baked for that distance (texture memory against distance);
@@ -47,7 +47,7 @@ struct SweepConfig {
     float resolution = 512;  // texture sizing screen height
     SizingRule sizing = SizingRule::nearest;
     int min_texture_size = 256;  // LodParameters::min_texture_size: the smallest LoD page side
-    // The classic baselines (issue 6, item 2), compared at the LoD's triangle counts:
+    // The classic baselines (docs/sweeps.md), compared at the LoD's triangle counts:
     // the original simplified to each level's triangles (quadric edge collapse), and
     // the whole model as one untextured box.
     bool simplification_baseline = false, single_box_baseline = false;

@@ -36,7 +36,7 @@ KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "di
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
          "box-max-extent", "simplification", "single-box"]
 BASELINES = ("simplification", "single-box")
-# README: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
+# docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
 STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, mode in enumerate(MODES[:7])}

@@ -1,5 +1,5 @@
 // Files appear whole or not at all: write to a temporary name beside the
-// target, then rename (docs: Files). Files that belong together (one LoD
+// target, then rename (docs/design.md: Files). Files that belong together (one LoD
 // level) appear together or not at all, even when the run is interrupted.
 #pragma once
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Cameras (DESIGN.md: Rendering): right-handed, Y up, looking down -Z in view
+// Cameras (docs/design.md: Rendering): right-handed, Y up, looking down -Z in view
 // space; OpenGL clip space (NDC z in [-1, 1]).
 #pragma once
 #include <Eigen/Core>

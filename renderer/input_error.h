@@ -1,5 +1,5 @@
 // Bad input of any kind: a one-line message that names the file and the place.
-// The CLI prints it and exits with status 2 (DESIGN.md: Errors).
+// The CLI prints it and exits with status 2 (docs/design.md: Errors).
 #pragma once
 #include <cstddef>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-// The rasterizer (DESIGN.md: Rendering): homogeneous clipping, fixed-point
+// The rasterizer (docs/design.md: Rendering): homogeneous clipping, fixed-point
 // snapping with 8 sub-pixel bits, edge functions with the top-left fill rule,
 // depth test LESS. It fills a visibility buffer (triangle id + depth per
 // pixel); shading happens afterwards, once per visible pixel.

@@ -1,5 +1,5 @@
 // The CPU renderer: draws flat batches (vertex arrays + surface) into a frame,
-// deterministically and in parallel (DESIGN.md: Rendering, Determinism).
+// deterministically and in parallel (docs/design.md: Rendering, Determinism).
 //
 //   Frame frame = make_frame(1024, 768, background);
 //   render(batches, settings, frame);

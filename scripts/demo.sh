@@ -11,7 +11,7 @@ rm -rf "$out"
 mkdir -p "$out"
 
 # Prints one row per level from `boxlod build --all-levels` output; bytes =
-# mesh + GPU-compressed textures (README: Cost).
+# mesh + GPU-compressed textures (docs/design.md: Cost).
 level_table() {
   awk -F' = ' '
     BEGIN { printf "%-6s %10s %10s %10s %8s %8s %6s %12s\n", "level", "faces", "triangles", "boxes", "pages", "size", "draws", "bytes" }
@@ -30,7 +30,7 @@ demo_model() {  # demo_model NAME MODEL
     --timings > "$out/$name/build.txt" 2>/dev/null
   level_table < "$out/$name/build.txt"
   grep '^time_' "$out/$name/build.txt" | tr '\n' ' '; echo
-  # The same chain as an engine would ship it (README: Boxes that pay their way): each
+  # The same chain as an engine would ship it (docs/cost.md: Boxes that pay their way): each
   # level sized for where it is used, no box dearer than the geometry it replaces.
   echo "-- $name, a chain that pays its way: --level-distances auto --keep-cheaper-subtrees --min-texture-size 16"
   "$boxlod" build "$model" -o "$out/$name/chain" --name "$name" --all-levels --level-mode top-down --resolution 1080 \

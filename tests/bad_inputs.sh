@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The bad-input corpus (README: Hardening): every case of bad_inputs.txt is
+# The bad-input corpus (docs/testing.md: Hardening): every case of bad_inputs.txt is
 # hostile input a user could give, and boxlod must answer each with exit
 # status 2 and one stderr line that names the file or option, never a crash,
 # a hang, an internal error or a file left behind.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Debug (-O0) and Release builds of boxlod write the same bytes: the demo's
 # commands and every sample, box kind and render mode are run by both, each in
-# a folder of its own, and every file and every stdout compared (README: Determinism).
+# a folder of its own, and every file and every stdout compared (docs/testing.md: Determinism).
 # Usage: debug_release_agree.sh RELEASE_BOXLOD DEBUG_BOXLOD
 set -u
 release=$(realpath "$1")
@@ -32,7 +32,7 @@ commands() {  # commands BOXLOD
     step "build_house_$kind" build house.glb -o "house_$kind" --level 2 --box "$kind" --resolution 512 \
       --preview-width 240 --preview-height 180
   done
-  # The IFC has no scopes, so every box kind is CGAL's minimal box there (DESIGN.md: Boxes);
+  # The IFC has no scopes, so every box kind is CGAL's minimal box there (docs/design.md: Boxes);
   # one build covers them (CGAL at -O0 takes 85 s for the FZK-Haus's boxes).
   step build_fzk build "$fzk" -o fzk --level 3 --box minimal --resolution 512 --preview-width 240 --preview-height 180
   step build_house_levels build house.glb -o house_levels --all-levels --level-mode box-area --resolution 256 \

@@ -68,7 +68,7 @@ TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {
 // cover nothing: fewer faces and texels, the same picture. Not the same bytes:
 // a smaller quad interpolates its uvs and depths with other roundings, coplanar
 // faces of neighbouring boxes then win their depth ties differently, and coarser
-// mip levels average other neighbours (README: Atlas).
+// mip levels average other neighbours (docs/design.md: Atlas).
 TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
     Model model = test::lod_test_building();
     LodParameters whole = small_parameters();

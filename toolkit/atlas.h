@@ -1,4 +1,4 @@
-// Packing face textures into LoD texture pages (README: Atlas; the manual's
+// Packing face textures into LoD texture pages (docs/design.md: Atlas; the manual's
 // Texture Coordinates section). Pages are power-of-two width x height between
 // min and max texture size: full pages at the largest size while what is left
 // does not fit one, then the smallest page that holds the rest, split into

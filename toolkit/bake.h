@@ -1,4 +1,4 @@
-// Baking a box face (DESIGN.md: Baking): an orthographic camera outside the
+// Baking a box face (docs/design.md: Baking): an orthographic camera outside the
 // face looks along the inward normal; its window is exactly the face and its
 // depth range the box's depth. The sub-tree's geometry renders into colour +
 // coverage, a tangent-space normal map and a height map, one texel per pixel.

@@ -44,7 +44,7 @@ OrientedBox fit_box(const Eigen::Matrix3d& axes, std::span<const Eigen::Vector3f
     // Scalar code, and rounded values kept in locals instead of read back from
     // the box: GCC 12's vectorizer dropped the float rounding of such
     // store-then-reload round trips (double -> float -> double), which broke enclosure.
-    // Re-checked once the one-definition rule held (issue 19): the Eigen form
+    // Re-checked once the one-definition rule held (docs/testing.md: Determinism): the Eigen form
     // still fails BoxFit.FitBoxEnclosesAfterRounding at -O2 and passes with
     // -fno-tree-vectorize: the vectorizer, not a one-definition-rule violation.
     double a[3][3];  // the float axes that are stored, as doubles (float products are exact there)

@@ -1,5 +1,5 @@
 // Fitting an oriented box of given axes around points, and keeping boxes
-// valid (orthonormal right-handed axes, positive thickness) (DESIGN.md: Boxes).
+// valid (orthonormal right-handed axes, positive thickness) (docs/design.md: Boxes).
 #pragma once
 #include "toolkit/model.h"
 

@@ -1,4 +1,4 @@
-// The box that replaces a node's sub-tree in an LoD (DESIGN.md: Boxes).
+// The box that replaces a node's sub-tree in an LoD (docs/design.md: Boxes).
 #pragma once
 #include "toolkit/model.h"
 

@@ -1,4 +1,4 @@
-// What a model costs the engine that loads it (README: Cost): draw calls, the
+// What a model costs the engine that loads it (docs/design.md: Cost): draw calls, the
 // bytes of its vertex and index buffers, and the bytes of its textures both
 // uncompressed and in GPU block compression, each with its full mip chain.
 #pragma once

@@ -1,4 +1,4 @@
-// The cut (DESIGN.md: Level values and the cut): taken top-down from the
+// The cut (docs/design.md: Level values and the cut): taken top-down from the
 // root; a node with L(n) >= c keeps its own geometry and its children are
 // visited; a node with L(n) < c is replaced with its whole sub-tree by its box.
 // Beyond the manual, a node marked in `kept` (kept_subtrees.h marks whole

@@ -1,7 +1,7 @@
 // Selection under a face budget: when the levels the strategy chose draw more
 // faces than the budget allows, objects are coarsened one level at a time, the
 // least important first, until the faces fit. This is how strategies are
-// compared at equal budgets (issue 7, item 3).
+// compared at equal budgets.
 #pragma once
 #include "toolkit/lod_selection.h"
 

@@ -1,6 +1,6 @@
 // glTF 2.0 (.gltf, .glb) import and export, with tinygltf.
 // Node transforms are applied and shared meshes expanded on import; scopes,
-// rules and the LoD mark travel in `extras.boxlod` (DESIGN.md: Scene model).
+// rules and the LoD mark travel in `extras.boxlod` (docs/design.md: Scene model).
 #pragma once
 #include "toolkit/model.h"
 

@@ -3,7 +3,7 @@
 // the current level however little it holds.
 // - small (`keep_small_subtrees`): at most 6 faces, its box's own count, so no
 //   level draws more faces than the original.
-// - cheaper (`keep_cheaper_subtrees`, README: Boxes that pay their way): the
+// - cheaper (`keep_cheaper_subtrees`, docs/cost.md: Boxes that pay their way): the
 //   sub-tree's mesh costs fewer bytes than its box would, so no box costs more
 //   than the geometry it replaces, and no level more than the original or the
 //   manual's cut at that level. A box's bytes are estimated before baking

@@ -1,4 +1,4 @@
-// Level values (DESIGN.md: Level values and the cut; the manual's Geometry
+// Level values (docs/design.md: Level values and the cut; the manual's Geometry
 // section): every node n gets L(n) in 0..N-1; at current level c a node with
 // L(n) < c is replaced, with its sub-tree, by its box.
 #pragma once

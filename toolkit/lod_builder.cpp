@@ -251,7 +251,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     }
     session.times.mesh += seconds_since(start);
 
-    // Statistics (DESIGN.md: Statistics); occupancy = the faces' own texels / page texels.
+    // Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
     int largest_page_side = 0;
     std::string page_list;
     for (const Eigen::Vector2i& page : lod.atlas.pages) {

@@ -15,7 +15,7 @@
 
 namespace boxlod {
 
-struct LodTimes {  // seconds, for the README's time split
+struct LodTimes {  // seconds, for the time split in docs/performance.md
     double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0, write = 0;  // write: preview + files
 };
 
@@ -45,8 +45,8 @@ struct Lod {
     Cut cut;
     Atlas atlas;  // no pages in untextured mode (no baking)
     std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
-    CostParts cost;  // of `model` (README: Cost), computed once for the statistics and whoever draws it
-    KeyValues statistics;  // DESIGN.md: Statistics
+    CostParts cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
+    KeyValues statistics;  // docs/design.md: Statistics
 };
 
 Lod build_lod(LodSession& session, int current_level, int threads);

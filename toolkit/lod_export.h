@@ -1,4 +1,4 @@
-// The files of an LoD export (DESIGN.md: Files; the manual's Save Mesh):
+// The files of an LoD export (docs/design.md: Files; the manual's Save Mesh):
 // NAME.gltf + NAME.bin, NAME_color_K.png, NAME_normal_K.png, NAME_height_K.png,
 // NAME.params.txt, NAME.preview.png, NAME.stats.txt — each written atomically.
 #pragma once

@@ -50,7 +50,7 @@ int below(const std::vector<double>& thresholds, double value, int coarsest) {
 
 int texel_exact_level(const TexelExact& strategy, const SelectionObject& object, double footprint) {
     // Level c is acceptable when its texels are no larger than the current pixel at the
-    // object: p >= p_b = pixel_world_size(sizing) (DESIGN.md: Texture sizing; the 1:1
+    // object: p >= p_b = pixel_world_size(sizing) (docs/design.md: Texture sizing; the 1:1
     // mapping holds for any view whose pixel is at least as large).
     // The detail bias judges the level as if the pixel were detail times smaller.
     footprint /= strategy.detail;
@@ -169,7 +169,7 @@ double box_diagonal_pixels(const SelectionObject& object, const SelectionView& v
 
 double pixel_footprint(const SelectionObject& object, const SelectionView& view) {
     // Perspective: p = 2 d tan(fovy / 2) / height, the same formula as pixel_world_size
-    // (DESIGN.md: Texture sizing) for the current camera at the object's distance.
+    // (docs/design.md: Texture sizing) for the current camera at the object's distance.
     return 1 / pixels_per_unit(view, camera_distance(object, view));
 }
 

@@ -1,9 +1,10 @@
-// Choosing an LoD level at run time (issue 7): a strategy turns the object and
-// the view into one continuous value, and the value into a level c in 0..N
-// (0 = the original, N = the coarsest, as in DESIGN.md: Level values and the
-// cut). A Selector adds hysteresis, so a camera hovering at a threshold does
-// not make the level pop. Sources: ../shared/reference/screen-ratio-lod-strategy.txt
-// (pixel count, screen ratio) and interpolated-lod-selection.txt (box diagonal).
+// Choosing an LoD level at run time (docs/design.md: Selection): a strategy
+// turns the object and the view into one continuous value, and the value into
+// a level c in 0..N (0 = the original, N = the coarsest). A Selector adds
+// hysteresis, so a camera hovering at a threshold does not make the level pop.
+// Sources: Ogre3D's PixelCountLodStrategy and ScreenRatioLodStrategy (pixel
+// count, screen ratio); E. Slupko, "New Automatic LOD Selection for
+// Progressive Meshes" (2020) (box diagonal).
 #pragma once
 #include "renderer/camera.h"
 #include "toolkit/model.h"

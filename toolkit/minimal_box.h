@@ -1,4 +1,4 @@
-// CGAL's optimal (minimum-volume) oriented bounding box (DESIGN.md: Boxes).
+// CGAL's optimal (minimum-volume) oriented bounding box (docs/design.md: Boxes).
 // The only file that sees CGAL; it is built as its own library (boxlod_obb)
 // because CGAL forces -frounding-math on whatever links it.
 #pragma once

@@ -1,4 +1,4 @@
-// The scene model (DESIGN.md: Scene model): a tree of nodes, each with its own
+// The scene model (docs/design.md: Scene model): a tree of nodes, each with its own
 // geometry in world space, an optional scope (the grammar's oriented box) and
 // the rule that made it.
 #pragma once

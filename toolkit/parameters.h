@@ -1,4 +1,4 @@
-// The parameter file (DESIGN.md: Parameter file; the manual's Loading and
+// The parameter file (docs/design.md: Parameter file; the manual's Loading and
 // Saving Files): plain text, one `key = value` per line, `#` comments. It
 // holds the model file, every LoD parameter, the camera and the light.
 #pragma once

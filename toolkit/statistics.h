@@ -1,4 +1,4 @@
-// The manual's Statistics block (DESIGN.md: Statistics) for a model.
+// The manual's Statistics block (docs/design.md: Statistics) for a model.
 #pragma once
 #include "toolkit/key_values.h"
 #include "toolkit/model.h"

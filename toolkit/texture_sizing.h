@@ -1,4 +1,4 @@
-// Texel = pixel (DESIGN.md: Texture sizing; the manual's Textures section):
+// Texel = pixel (docs/design.md: Texture sizing; the manual's Textures section):
 // a virtual camera with vertical field of view fovy at distance d on a screen
 // `resolution` pixels high sees one pixel as p = 2 d tan(fovy / 2) / resolution
 // world units; a face a x b gets ceil(a / p) x ceil(b / p) texels.

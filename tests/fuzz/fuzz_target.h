@@ -1,4 +1,4 @@
-// One libFuzzer target per reader of untrusted bytes (`make fuzz`; README:
+// One libFuzzer target per reader of untrusted bytes (`make fuzz`; docs/testing.md:
 // Hardening). Each target feeds the bytes to the reader: an InputError is the
 // right answer to bad input; anything else (a crash, a sanitizer report, any
 // other exception, a hang) is a bug. In every other build the same target is
