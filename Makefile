@@ -22,7 +22,7 @@ demo: build
 test: build debug-build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The Debug side of the Debug-against-Release tests (README: Determinism): -O0
+# The Debug side of the Debug-against-Release tests (docs/testing.md: Determinism): -O0
 # with the standard library's assertions, linked with the one-definition-rule
 # check (LTO, -Werror=odr); only the program, the golden tests and the check.
 debug-build: deps
@@ -40,7 +40,7 @@ test-sanitize: deps
 
 # libFuzzer on every reader of untrusted bytes (tests/fuzz), ASan + UBSan, for
 # FUZZ_SECONDS each (default 60), starting from the corpora in tests/fuzz/corpus
-# (README: Hardening). Inputs found go to build-fuzz/corpus, crashes to
+# (docs/testing.md: Hardening). Inputs found go to build-fuzz/corpus, crashes to
 # build-fuzz/crashes; a crash fails the run.
 FUZZ_SECONDS ?= 60
 fuzz:
@@ -50,7 +50,7 @@ fuzz:
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_targets
 	@scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
-# Benchmarks against their peers, in one run each (README: Performance).
+# Benchmarks against their peers, in one run each (docs/performance.md).
 bench:
 	@scripts/install-deps.sh bench
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -68,7 +68,7 @@ paper paper-smoke:
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target boxlod
 	@/usr/bin/snakemake -s experiments/Snakefile -j $(JOBS) --rerun-incomplete \
-	  --config profile=$(PROFILE) boxlod=$(BUILD)/toolkit/cli/boxlod
+	  --config profile=$(PROFILE) boxlod=$(BUILD)/boxlod
 	@mkdir -p out/paper
 	@cp out/workflow/$(PROFILE)/paper/paper.pdf out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf
 	@echo "paper: out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf (everything: out/workflow/$(PROFILE)/)"

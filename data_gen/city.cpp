@@ -1,9 +1,9 @@
 #include "data_gen/city.h"
 
+#include "base/input_error.h"
 #include "data_gen/grammar_parser.h"
 #include "data_gen/random.h"
 #include "data_gen/samples.h"
-#include "renderer/input_error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "data_gen/grammar.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 namespace boxlod {
 

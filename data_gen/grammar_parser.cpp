@@ -1,11 +1,11 @@
 #include "data_gen/grammar_parser.h"
 
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "data_gen/expression.h"
 #include "data_gen/materials.h"
 #include "data_gen/primitives.h"
 #include "data_gen/textures.h"
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
 
 #include <cctype>
 #include <charconv>

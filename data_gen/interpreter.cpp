@@ -1,10 +1,10 @@
 #include "data_gen/interpreter.h"
 
+#include "base/input_error.h"
 #include "data_gen/expression.h"
 #include "data_gen/primitives.h"
 #include "data_gen/random.h"
 #include "data_gen/split.h"
-#include "renderer/input_error.h"
 #include "toolkit/model_io.h"
 
 #include <Eigen/Geometry>

@@ -1,7 +1,7 @@
 #include "data_gen/samples.h"
 
+#include "base/input_error.h"
 #include "data_gen/grammar_parser.h"
-#include "renderer/input_error.h"
 
 namespace boxlod {
 

@@ -1,8 +1,8 @@
 #include "experiments/camera_path.h"
 
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "renderer/camera.h"
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
 
 #include <algorithm>
 #include <charconv>

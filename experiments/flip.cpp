@@ -1,6 +1,6 @@
 #include "experiments/flip.h"
 
-#include "renderer/parallel.h"
+#include "base/parallel.h"
 
 #include <Eigen/Dense>
 

@@ -16,9 +16,9 @@
 // Filter borders replicate the edge pixels. The error is in [0, 1]: 0 for
 // identical images, about 0.967 for black against white.
 #pragma once
+#include "base/input_error.h"
 #include "experiments/separable_filter.h"
 #include "renderer/image.h"
-#include "renderer/input_error.h"
 
 namespace boxlod {
 

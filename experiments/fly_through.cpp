@@ -1,20 +1,22 @@
 #include "experiments/fly_through.h"
 
+#include "base/atomic_write.h"
+#include "base/csv.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "base/timing.h"
 #include "experiments/contact_sheet.h"
 #include "experiments/flip.h"
 #include "experiments/image_metrics.h"
-#include "renderer/atomic_write.h"
-#include "renderer/parallel.h"
+#include "experiments/metric_registry.h"
 #include "toolkit/boxes.h"
 #include "toolkit/face_budget.h"
-#include "toolkit/key_values.h"
 #include "toolkit/lod_builder.h"
 #include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 #include "toolkit/strategy_text.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -24,10 +26,6 @@ namespace boxlod {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 const Eigen::Vector3f sky{0.62f, 0.75f, 0.9f};  // linear background
 
 // One light for the whole city, high above it towards +X+Z, so that lighting does not
@@ -77,17 +75,10 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
     std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
     built.levels.triangles = {original.triangles};
     built.levels.costs = {cost_parts(model)};
-    auto boxes = node_boxes(model, BoxKind::expanded, 1);
-    LodParameters p;
-    p.level_mode = options.level_mode;
-    p.wanted_levels = options.wanted_levels;
-    p.box_kind = BoxKind::expanded;
+    auto boxes = node_boxes(model, options.levels.box_kind, 1);
+    LodParameters p = options.levels;
     p.fovy = options.fovy;
     p.resolution = float(options.height);
-    p.min_texture_size = 64;
-    p.render_mode = RenderMode::normal;
-    p.keep_small_subtrees = options.keep_small_subtrees;
-    p.keep_cheaper_subtrees = options.keep_cheaper_subtrees;
     // One session per sizing distance: a session bakes its boxes for one distance.
     for (int c = 1, n = 1; c <= n; ++c) {
         p.distance = level_sizing_distance(options, c);
@@ -112,24 +103,6 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
                 measure_level_error(built.levels.drawable(c), built.levels.original, built.object,
                                     level_sizing_distance(options, c), options, light);
     return built;
-}
-
-// One CSV line (RFC 4180): a field holding a comma or a quote goes in quotes, its quotes
-// doubled (the strategy's text has commas).
-std::string csv_row(const std::vector<std::string>& fields) {
-    std::string line;
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-        if (i > 0) line += ',';
-        const std::string& field = fields[i];
-        if (field.find_first_of(",\"") == std::string::npos) {
-            line += field;
-            continue;
-        }
-        line += '"';
-        for (char c : field) line += c == '"' ? std::string("\"\"") : std::string(1, c);
-        line += '"';
-    }
-    return line;
 }
 
 std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width + 239) / 240)); }
@@ -243,8 +216,11 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
             start = Clock::now();
             Image8 full = render_batches(batches_for(std::vector<int>(n, 0)), view.camera, light, options.width,
                                          options.height, options.threads);
-            record.error = ImageErrors{psnr(full, image), ssim(full, image, options.threads),
-                                       flip(full, image, options.pixels_per_degree, options.threads).mean};
+            MetricPair pair{full, image};
+            pair.pixels_per_degree = options.pixels_per_degree;
+            pair.threads = options.threads;
+            std::vector<double> e = measure_metrics({Metric::psnr, Metric::ssim, Metric::flip}, pair).values;
+            record.error = ImageErrors{e[0], e[1], e[2]};
             record.error_seconds = seconds_since(start);
         }
         if (frame_done) frame_done(int(k), image, record);

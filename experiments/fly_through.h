@@ -11,6 +11,7 @@
 #include "toolkit/drawable.h"
 #include "toolkit/level_modes.h"
 #include "toolkit/lod_selection.h"
+#include "toolkit/parameters.h"
 
 #include <cstdio>
 #include <functional>
@@ -30,12 +31,15 @@ struct FlyThroughOptions {
     float fovy = 45;
     int error_every = 10;  // compare frames 0, K, 2K, ... with full detail; 0: never
     double pixels_per_degree = 67;  // FLIP's observer
-    // The levels: level values per building, level c baked for base_distance · 2^(c-1)
-    // on a screen `height` pixels high with `fovy` (texel = pixel there).
-    LevelMode level_mode = LevelMode::top_down;
-    int wanted_levels = 8;  // N for the box modes
-    bool keep_small_subtrees = false;    // LodParameters::keep_small_subtrees
-    bool keep_cheaper_subtrees = false;  // LodParameters::keep_cheaper_subtrees
+    // The levels: every building's LoD parameters (level mode, wanted levels,
+    // kept sub-trees, ...; 64-texel minimum pages), level c baked for
+    // base_distance · 2^(c-1) on a screen `height` pixels high with `fovy`
+    // (texel = pixel there), so those three are set per level.
+    LodParameters levels = [] {
+        LodParameters p;
+        p.min_texture_size = 64;
+        return p;
+    }();
     float base_distance = 20;
     int threads = 0;  // 0 = all cores
 };

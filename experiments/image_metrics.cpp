@@ -1,6 +1,6 @@
 #include "experiments/image_metrics.h"
 
-#include "renderer/parallel.h"
+#include "base/parallel.h"
 
 #include <cmath>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "experiments/separable_filter.h"
 
-#include "renderer/parallel.h"
+#include "base/parallel.h"
 
 #include <algorithm>
 #include <cmath>

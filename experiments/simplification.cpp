@@ -1,7 +1,7 @@
 #include "experiments/simplification.h"
 
-#include "renderer/input_error.h"
-#include "renderer/parallel.h"
+#include "base/input_error.h"
+#include "base/parallel.h"
 
 #include <meshoptimizer.h>
 

@@ -1,25 +1,28 @@
 #include "experiments/sweep.h"
 
+#include "base/atomic_write.h"
+#include "base/csv.h"
+#include "base/input_error.h"
+#include "base/key_values.h"
+#include "base/timing.h"
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
 #include "experiments/flip.h"
 #include "experiments/heatmap.h"
 #include "experiments/image_metrics.h"
+#include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
 #include "experiments/simplification.h"
 #include "experiments/single_box.h"
-#include "renderer/atomic_write.h"
-#include "renderer/input_error.h"
 #include "toolkit/cost.h"
 #include "toolkit/drawable.h"
-#include "toolkit/key_values.h"
+#include "toolkit/framing.h"
 #include "toolkit/lod_builder.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -33,18 +36,11 @@ namespace boxlod {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 const std::vector<std::string> key_columns = {"model", "level_mode", "box_kind", "interpolation",
                                               "level", "view", "distance", "render_mode"};
 
-std::string join(const std::vector<std::string>& fields) {
-    std::string out;
-    for (const std::string& field : fields) out += (out.empty() ? "" : ",") + field;
-    return out;
-}
+// A row key (CSV text already) extended by more fields.
+std::string extend_row(const std::string& key, const std::vector<std::string>& more) { return key + "," + csv_row(more); }
 
 // A CSV whose rows are found by their key columns (the first ones).
 struct KeyedTable {
@@ -54,7 +50,7 @@ struct KeyedTable {
 };
 
 KeyedTable open_table(const std::string& path, const std::vector<std::string>& columns) {
-    KeyedTable table{path, join(columns), {}, {}};
+    KeyedTable table{path, csv_row(columns), {}, {}};
     std::ifstream in(path, std::ios::binary);
     if (!in) return table;
     std::string line;
@@ -62,10 +58,11 @@ KeyedTable open_table(const std::string& path, const std::vector<std::string>& c
         throw_input_error(path, "", "its columns differ from this sweep's (" + table.header + "); use another output folder");
     for (int number = 2; std::getline(in, line); ++number) {
         if (line.empty()) continue;
-        std::size_t end = 0;
-        for (std::size_t k = 0; k < key_columns.size() && end != std::string::npos; ++k) end = line.find(',', end + (k > 0));
-        if (end == std::string::npos) throw_input_error(path, "line " + std::to_string(number), "a row with too few columns");
-        std::string key = line.substr(0, end);
+        std::vector<std::string> fields = csv_fields(line);
+        if (fields.size() <= key_columns.size())
+            throw_input_error(path, "line " + std::to_string(number), "a row with too few columns");
+        fields.resize(key_columns.size());
+        std::string key = csv_row(fields);
         if (table.rows.emplace(key, line).second) table.file_order.push_back(key);
     }
     return table;
@@ -105,17 +102,11 @@ Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settin
     return shot;
 }
 
-// The manual's camera positions around the model's bounding box centre (as `boxlod render --camera`).
-struct ModelFraming {
-    Bounds bounds;
-    float radius = 1, framing_distance = 1;
-};
-
-RenderSettings view_settings(const ModelFraming& framing, const std::string& view, float multiple, RenderMode mode,
+// The manual's camera positions, `multiple` times the framing distance away (as `boxlod render --camera`).
+RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
                              float fovy, int threads) {
     RenderSettings settings;
-    settings.camera = camera_at_position(*camera_direction(view), framing.bounds.center(),
-                                         multiple * framing.framing_distance, fovy, framing.radius);
+    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, fovy), fovy);
     settings.mode = mode;
     settings.light = light_for_camera(settings.camera);
     settings.threads = threads;
@@ -128,26 +119,12 @@ struct Metrics {
 };
 
 Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads) {
+    MetricPair pair{reference.image, test.image, &reference.coverage, &test.coverage,
+                    reference.flip_reference ? &*reference.flip_reference : nullptr, config.pixels_per_degree, threads};
+    MetricValues measured = measure_metrics(config.metrics, pair);
     Metrics out;
-    std::optional<double> error;
-    std::optional<FlipResult> flipped;
-    for (const std::string& metric : config.metrics) {
-        double value = 0;
-        if (metric == "rmse" || metric == "psnr") {
-            if (!error) error = rmse(reference.image, test.image);
-            value = metric == "rmse" ? *error : psnr_from_rmse(*error);
-        } else if (metric == "ssim") {
-            value = ssim(reference.image, test.image, threads);
-        } else if (metric == "flip") {
-            flipped = reference.flip_reference ? flip(*reference.flip_reference, test.image, threads)
-                                               : flip(reference.image, test.image, config.pixels_per_degree, threads);
-            value = flipped->mean;
-        } else {
-            value = silhouette_iou(reference.coverage, test.coverage);
-        }
-        out.values.push_back(format_number(value));  // psnr of identical images: inf
-    }
-    if (want_heatmap) out.heatmap = flipped ? std::move(flipped->error) : rgb_error_map(reference.image, test.image);
+    for (double value : measured.values) out.values.push_back(format_number(value));  // psnr of identical images: inf
+    if (want_heatmap) out.heatmap = measured.flip_error ? std::move(*measured.flip_error) : rgb_error_map(reference.image, test.image);
     return out;
 }
 
@@ -182,11 +159,7 @@ Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int ob
 }
 
 // The `triangles` column of a results.csv row (after the key columns, obtained_levels and faces).
-std::size_t triangles_of_row(const std::string& row) {
-    std::size_t begin = 0;
-    for (std::size_t k = 0; k < key_columns.size() + 2; ++k) begin = row.find(',', begin) + 1;
-    return std::stoull(row.substr(begin, row.find(',', begin) - begin));
-}
+std::size_t triangles_of_row(const std::string& row) { return std::stoull(csv_fields(row).at(key_columns.size() + 2)); }
 
 struct Variant {
     LevelMode mode;
@@ -213,7 +186,7 @@ std::vector<std::string> result_columns(const SweepConfig& config) {
                           "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
                           "covered_pixels"})
         columns.push_back(c);
-    columns.insert(columns.end(), config.metrics.begin(), config.metrics.end());
+    for (Metric metric : config.metrics) columns.push_back(enum_name(metrics(), metric));
     return columns;
 }
 
@@ -224,225 +197,279 @@ std::vector<std::string> timing_columns() {
 }
 
 namespace {
-SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
-    auto sweep_start = Clock::now();
-    if (threads < 0) threads = config.threads;
-    SweepReport report;
+
+// The results table: results.csv and timings.csv keyed by row, the images kept,
+// and every row key of the cross product so far, in the sweep's order.
+struct SweepOutput {
+    KeyedTable results, timings;
+    std::vector<std::string> order;
+    fs::path images;
+    bool keep_images = false;
+};
+
+SweepOutput open_output(const SweepConfig& config, const std::string& output_folder) {
     fs::create_directories(output_folder);
-    fs::path images = fs::path(output_folder) / "images";
-    if (config.keep_images != KeptImages::none) fs::create_directories(images);
-    KeyedTable results = open_table((fs::path(output_folder) / "results.csv").string(), result_columns(config));
-    KeyedTable timings = open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns());
-    std::vector<std::string> order;  // every key of the cross product so far, in order
-    auto save_image = [&](const std::string& name, const Image8& image) {
-        write_png((images / file_name(name)).string(), image);
-    };
-    const std::size_t per_group = config.views.size() * config.distances.size() * config.render_modes.size();
+    SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns(config)),
+                    open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns()), {},
+                    fs::path(output_folder) / "images", config.keep_images != KeptImages::none};
+    if (out.keep_images) fs::create_directories(out.images);
+    return out;
+}
+
+void save_image(const SweepOutput& out, const std::string& name, const Image8& image) {
+    write_png((out.images / file_name(name)).string(), image);
+}
+
+// Rewritten after every group, so an interrupted sweep keeps what it has.
+void write_tables(const SweepOutput& out) {
+    write_table(out.results, out.order);
+    write_table(out.timings, out.order);
+}
+
+// The plan of one model: its variants (level mode x box kind x interpolation)
+// with their levels, and how many groups of rows they and the baselines make.
+struct ModelPlan {
+    std::map<BoxKind, std::vector<std::optional<OrientedBox>>> boxes;  // once per box kind
+    std::vector<Variant> variants;
+    std::size_t groups = 0;
+};
+
+ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads) {
+    ModelPlan plan;
+    for (BoxKind kind : config.box_kinds) plan.boxes[kind] = node_boxes(model, kind, threads);
+    for (LevelMode mode : config.level_modes)
+        for (BoxKind kind : config.box_kinds)
+            for (Interpolation interpolation : config.interpolations) {
+                int obtained = compute_level_values(model, mode, config.wanted_levels, interpolation, plan.boxes[kind]).obtained_levels;
+                Variant variant{mode, kind, interpolation, obtained, {}};
+                for (int level = 0; level <= obtained; ++level)
+                    if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
+                        variant.levels.push_back(level);
+                plan.groups += variant.levels.size();
+                plan.variants.push_back(std::move(variant));
+            }
+    // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
+    plan.groups += config.simplification_baseline ? plan.variants.front().levels.size() : 0;
+    plan.groups += config.single_box_baseline ? 1 : 0;
+    return plan;
+}
+
+// The executor's state for one model: the original's renders (per view,
+// distance and mode, made when first needed) and the progress counters.
+struct ModelRun {
+    const SweepConfig& config;
+    const SweepModel& entry;
+    const Model& model;
+    Framing framing;
+    std::size_t index = 0, rows = 0, done = 0, computed = 0;
+    double seconds = 0;
+    int threads = 0;
+    std::FILE* progress = nullptr;
+    std::unique_ptr<DrawableModel> original;
+    std::map<std::tuple<std::size_t, std::size_t, RenderMode>, Shot> references;
+};
+
+std::size_t rows_per_group(const SweepConfig& config) {
+    return config.views.size() * config.distances.size() * config.render_modes.size();
+}
+
+const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report, std::size_t v, std::size_t d, RenderMode mode) {
+    const SweepConfig& config = run.config;
+    auto key = std::make_tuple(v, d, mode);
+    auto found = run.references.find(key);
+    if (found != run.references.end()) return found->second;
+    if (!run.original) run.original = make_drawable_model(run.model);
+    auto render_start = Clock::now();
+    RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.fovy, run.threads);
+    Shot shot = render_shot(run.original->drawable.batches, settings, config.width, config.height);
+    report.render_seconds += seconds_since(render_start);
+    auto metric_start = Clock::now();
+    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end())
+        shot.flip_reference = prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads);
+    report.metric_seconds += seconds_since(metric_start);
+    ++report.original_renders;
+    if (out.keep_images)
+        save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
+                   shot.image);
+    return run.references.emplace(key, std::move(shot)).first->second;
+}
+
+// The results.csv fields of a row after its key.
+std::vector<std::string> result_fields(const Candidate& c, const Shot& original, const Metrics& metrics) {
+    MeshCounts counts = mesh_counts(c.model);
+    int largest_page = 0;
+    for (const Eigen::Vector2i& page : c.atlas.pages) largest_page = std::max({largest_page, page.x(), page.y()});
+    std::vector<std::string> fields = {
+        std::to_string(c.obtained_levels),
+        std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
+        std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
+        std::to_string(c.face_texels),
+        std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
+        std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
+        std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes()),
+        std::to_string(covered_pixels(original.coverage))};
+    fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
+    return fields;
+}
+
+// A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
+// over views x distances x render modes. `slot` says which rows may share one candidate,
+// `make` builds it; both run only for rows missing from results.csv.
+void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
+               const std::function<int(RenderMode, std::size_t)>& slot, const std::function<Candidate(int)>& make) {
+    const SweepConfig& config = run.config;
+    auto group_start = Clock::now();
+    struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
+    std::vector<Row> missing;
+    for (std::size_t v = 0; v < config.views.size(); ++v)
+        for (std::size_t d = 0; d < config.distances.size(); ++d)
+            for (RenderMode mode : config.render_modes) {
+                std::string key = extend_row(group, {config.views[v], format_number(config.distances[d]), render_mode_name(mode)});
+                out.order.push_back(key);
+                if (!out.results.rows.count(key)) missing.push_back({v, d, mode, key});
+            }
+    const std::size_t skipped = rows_per_group(config) - missing.size();
+    report.rows_skipped += skipped;
+    run.done += skipped;
+    if (missing.empty()) return;
+
+    std::map<int, Candidate> candidates;
+    for (const Row& row : missing) {
+        int s = slot(row.mode, row.distance);
+        auto found = candidates.find(s);
+        if (found == candidates.end()) {
+            auto build_start = Clock::now();
+            Candidate made = make(s);
+            made.drawable = make_drawable_model(made.model);
+            made.seconds = seconds_since(build_start);
+            report.build_seconds += made.seconds;
+            ++report.lods_built;
+            found = candidates.emplace(s, std::move(made)).first;
+        }
+        const Candidate& c = found->second;
+        const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
+        auto render_start = Clock::now();
+        RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                                row.mode, config.fovy, run.threads);
+        Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+        double render_seconds = seconds_since(render_start);
+        report.render_seconds += render_seconds;
+        ++report.lod_renders;
+        auto metric_start = Clock::now();
+        bool heatmap = config.keep_images == KeptImages::all;
+        Metrics metrics = compare_shots(config, original_shot, shot, heatmap, run.threads);
+        double metric_seconds = seconds_since(metric_start);
+        report.metric_seconds += metric_seconds;
+        out.results.rows[row.key] = extend_row(row.key, result_fields(c, original_shot, metrics));
+        out.timings.rows[row.key] = extend_row(row.key, {format_number(c.seconds), format_number(render_seconds),
+                                                         format_number(metric_seconds)});
+        if (out.keep_images) save_image(out, row.key, shot.image);
+        if (heatmap) save_image(out, row.key + "_heatmap", error_heatmap(metrics.heatmap));
+    }
+    write_tables(out);
+    report.rows_computed += missing.size();
+    run.done += missing.size();
+    run.computed += missing.size();
+    double group_seconds = seconds_since(group_start);
+    run.seconds += group_seconds;
+    if (run.progress) {
+        double eta = run.seconds / double(run.computed) * double(run.rows - run.done);
+        std::fprintf(run.progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
+                     run.index + 1, config.models.size(), group.c_str(), missing.size(), group_seconds, run.done, run.rows,
+                     eta_text(eta).c_str());
+        std::fflush(run.progress);
+    }
+}
+
+// The LoD levels of one variant. Normal, parallax, pom and albedo draw the same
+// baked boxes; untextured boxes are not baked. Slot = 2 x sizing distance +
+// (untextured ? 1 : 0); one session per slot and sizing level, shared by the
+// levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
+void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan, const Variant& variant) {
+    const SweepConfig& config = run.config;
     // With SizingRule::nearest (and per_level) every distance draws the LoD baked for the smallest one.
     auto sizing_index = [&](std::size_t d) -> std::size_t {
         if (config.sizing == SizingRule::each_distance) return d;
         return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
     };
-
-    for (std::size_t m = 0; m < config.models.size(); ++m) {
-        const SweepModel& entry = config.models[m];
-        Model model = load_sweep_model(entry);
-        ModelFraming framing;
-        framing.bounds = model_bounds(model);
-        framing.radius = std::max(framing.bounds.size().norm() / 2, 1e-6f);
-        framing.framing_distance = framing_distance(framing.radius, config.fovy);
-
-        // Boxes once per box kind; the levels of every variant up front, for the row count and the ETA.
-        auto start = Clock::now();
-        std::map<BoxKind, std::vector<std::optional<OrientedBox>>> boxes;
-        for (BoxKind kind : config.box_kinds) boxes[kind] = node_boxes(model, kind, threads);
-        report.boxes_seconds += seconds_since(start);
-        std::vector<Variant> variants;
-        std::size_t model_groups = 0;
-        for (LevelMode mode : config.level_modes)
-            for (BoxKind kind : config.box_kinds)
-                for (Interpolation interpolation : config.interpolations) {
-                    int obtained = compute_level_values(model, mode, config.wanted_levels, interpolation, boxes[kind]).obtained_levels;
-                    Variant variant{mode, kind, interpolation, obtained, {}};
-                    for (int level = 0; level <= obtained; ++level)
-                        if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
-                            variant.levels.push_back(level);
-                    model_groups += variant.levels.size();
-                    variants.push_back(std::move(variant));
-                }
-        // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
-        const Variant& first = variants.front();
-        model_groups += config.simplification_baseline ? first.levels.size() : 0;
-        model_groups += config.single_box_baseline ? 1 : 0;
-        const std::size_t model_rows = model_groups * per_group;
-        report.rows += model_rows;
-
-        std::unique_ptr<DrawableModel> original;
-        std::map<std::tuple<std::size_t, std::size_t, RenderMode>, Shot> references;  // per view, distance, mode
-        auto reference = [&](std::size_t v, std::size_t d, RenderMode mode) -> const Shot& {
-            auto key = std::make_tuple(v, d, mode);
-            auto found = references.find(key);
-            if (found != references.end()) return found->second;
-            if (!original) original = make_drawable_model(model);
-            auto render_start = Clock::now();
-            RenderSettings settings = view_settings(framing, config.views[v], config.distances[d], mode, config.fovy, threads);
-            Shot shot = render_shot(original->drawable.batches, settings, config.width, config.height);
-            report.render_seconds += seconds_since(render_start);
-            auto metric_start = Clock::now();
-            if (std::find(config.metrics.begin(), config.metrics.end(), "flip") != config.metrics.end())
-                shot.flip_reference = prepare_flip_reference(shot.image, config.pixels_per_degree, threads);
-            report.metric_seconds += seconds_since(metric_start);
-            ++report.original_renders;
-            if (config.keep_images != KeptImages::none)
-                save_image(join({entry.name, "original", config.views[v], format_number(config.distances[d]),
-                                 render_mode_name(mode)}),
-                           shot.image);
-            return references.emplace(key, std::move(shot)).first->second;
-        };
-
-        // A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
-        // over views x distances x render modes. `slot` says which rows may share one candidate,
-        // `make` builds it; both run only for rows missing from results.csv.
-        std::size_t model_done = 0, model_computed = 0;
-        double model_seconds = 0;
-        auto run_group = [&](const std::string& group, const std::function<int(RenderMode, std::size_t)>& slot,
-                             const std::function<Candidate(int)>& make) {
-            auto group_start = Clock::now();
-            struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
-            std::vector<Row> missing;
-            for (std::size_t v = 0; v < config.views.size(); ++v)
-                for (std::size_t d = 0; d < config.distances.size(); ++d)
-                    for (RenderMode mode : config.render_modes) {
-                        std::string key = join({group, config.views[v], format_number(config.distances[d]), render_mode_name(mode)});
-                        order.push_back(key);
-                        if (!results.rows.count(key)) missing.push_back({v, d, mode, key});
-                    }
-            report.rows_skipped += per_group - missing.size();
-            model_done += per_group - missing.size();
-            if (missing.empty()) return;
-
-            std::map<int, Candidate> candidates;
-            for (const Row& row : missing) {
-                int s = slot(row.mode, row.distance);
-                auto found = candidates.find(s);
-                if (found == candidates.end()) {
-                    auto build_start = Clock::now();
-                    Candidate made = make(s);
-                    made.drawable = make_drawable_model(made.model);
-                    made.seconds = seconds_since(build_start);
-                    report.build_seconds += made.seconds;
-                    ++report.lods_built;
-                    found = candidates.emplace(s, std::move(made)).first;
-                }
-                const Candidate& c = found->second;
-                const Shot& original_shot = reference(row.view, row.distance, row.mode);
-                auto render_start = Clock::now();
-                RenderSettings settings = view_settings(framing, config.views[row.view], config.distances[row.distance],
-                                                        row.mode, config.fovy, threads);
-                Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
-                double render_seconds = seconds_since(render_start);
-                report.render_seconds += render_seconds;
-                ++report.lod_renders;
-                auto metric_start = Clock::now();
-                bool heatmap = config.keep_images == KeptImages::all;
-                Metrics metrics = compare_shots(config, original_shot, shot, heatmap, threads);
-                double metric_seconds = seconds_since(metric_start);
-                report.metric_seconds += metric_seconds;
-
-                MeshCounts counts = mesh_counts(c.model);
-                int largest_page = 0;
-                for (const Eigen::Vector2i& page : c.atlas.pages) largest_page = std::max({largest_page, page.x(), page.y()});
-                std::vector<std::string> fields = {
-                    row.key, std::to_string(c.obtained_levels),
-                    std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
-                    std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
-                    std::to_string(c.face_texels),
-                    std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
-                    std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
-                    std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes()),
-                    std::to_string(covered_pixels(original_shot.coverage))};
-                fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
-                results.rows[row.key] = join(fields);
-                timings.rows[row.key] = join({row.key, format_number(c.seconds), format_number(render_seconds),
-                                              format_number(metric_seconds)});
-                if (config.keep_images != KeptImages::none) save_image(row.key, shot.image);
-                if (heatmap) save_image(row.key + "_heatmap", error_heatmap(metrics.heatmap));
+    std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
+    auto slot = [&](RenderMode mode, std::size_t d) { return int(2 * sizing_index(d) + (mode == RenderMode::untextured)); };
+    for (int level : variant.levels) {
+        const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
+        std::string group = csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
+                                     interpolation_name(variant.interpolation), std::to_string(level)});
+        run_group(run, out, report, group, slot, [&](int s) {
+            std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
+            if (!session) {
+                LodParameters p;
+                p.level_mode = variant.mode;
+                p.box_kind = variant.box;
+                p.interpolation = variant.interpolation;
+                p.wanted_levels = config.wanted_levels;
+                p.fovy = config.fovy;
+                p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, config.fovy) *
+                             std::ldexp(1.0f, sizing_level - 1);
+                p.min_texture_size = config.min_texture_size;
+                p.resolution = config.resolution;
+                p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
+                p.keep_small_subtrees = config.keep_small_subtrees;
+                p.keep_cheaper_subtrees = config.keep_cheaper_subtrees;
+                session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
             }
-            write_table(results, order);
-            write_table(timings, order);
-            report.rows_computed += missing.size();
-            model_done += missing.size();
-            model_computed += missing.size();
-            double group_seconds = seconds_since(group_start);
-            model_seconds += group_seconds;
-            if (progress) {
-                double eta = model_seconds / double(model_computed) * double(model_rows - model_done);
-                std::fprintf(progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
-                             m + 1, config.models.size(), group.c_str(), missing.size(), group_seconds, model_done,
-                             model_rows, eta_text(eta).c_str());
-                std::fflush(progress);
-            }
-        };
-
-        for (const Variant& variant : variants) {
-            // Normal, parallax, pom and albedo draw the same baked boxes; untextured boxes are not baked.
-            // Slot = 2 x sizing distance + (untextured ? 1 : 0); one session per slot and sizing level, shared
-            // by the levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
-            std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
-            auto slot = [&](RenderMode mode, std::size_t d) { return int(2 * sizing_index(d) + (mode == RenderMode::untextured)); };
-            for (int level : variant.levels) {
-                const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
-                std::string group = join({entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
-                                          interpolation_name(variant.interpolation), std::to_string(level)});
-                run_group(group, slot, [&](int s) {
-                    std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
-                    if (!session) {
-                        LodParameters p;
-                        p.level_mode = variant.mode;
-                        p.box_kind = variant.box;
-                        p.interpolation = variant.interpolation;
-                        p.wanted_levels = config.wanted_levels;
-                        p.fovy = config.fovy;
-                        p.distance = config.distances[std::size_t(s / 2)] * framing.framing_distance *
-                                     std::ldexp(1.0f, sizing_level - 1);
-                        p.min_texture_size = config.min_texture_size;
-                        p.resolution = config.resolution;
-                        p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
-                        p.keep_small_subtrees = config.keep_small_subtrees;
-                        p.keep_cheaper_subtrees = config.keep_cheaper_subtrees;
-                        session = start_lod(model, p, threads, &boxes[variant.box]);
-                    }
-                    Lod lod = build_lod(*session, level, threads);
-                    Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
-                                            variant.obtained_levels, &lod.cost);
-                    c.face_texels = lod.face_texels;
-                    return c;
-                });
-            }
-        }
-
-        // Baselines: the same rows, drawn by a mesh that does not depend on view, distance or mode.
-        auto one_slot = [](RenderMode, std::size_t) { return 0; };
-        if (config.simplification_baseline) {
-            for (int level : first.levels) {
-                std::string first_row = join({entry.name, level_mode_name(first.mode), box_kind_name(first.box),
-                                              interpolation_name(first.interpolation), std::to_string(level),
-                                              config.views[0], format_number(config.distances[0]),
-                                              render_mode_name(config.render_modes[0])});
-                std::size_t target = triangles_of_row(results.rows.at(first_row));
-                run_group(join({entry.name, "simplification", "-", "-", std::to_string(level)}), one_slot, [&](int) {
-                    SimplifyOptions options;
-                    options.threads = threads;
-                    return candidate(simplify_model(model, target, options), {}, 0, first.obtained_levels);
-                });
-            }
-        }
-        if (config.single_box_baseline)
-            run_group(join({entry.name, "single-box", "-", "-", std::to_string(first.obtained_levels)}), one_slot,
-                      [&](int) { return candidate(single_box_model(model, threads), {}, 0, first.obtained_levels); });
+            Lod lod = build_lod(*session, level, run.threads);
+            Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
+                                    variant.obtained_levels, &lod.cost);
+            c.face_texels = lod.face_texels;
+            return c;
+        });
     }
-    write_table(results, order);
-    write_table(timings, order);
+}
+
+// The baselines: the same rows, drawn by a mesh that depends on no view, distance or mode.
+void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first) {
+    const SweepConfig& config = run.config;
+    auto one_slot = [](RenderMode, std::size_t) { return 0; };
+    if (config.simplification_baseline) {
+        for (int level : first.levels) {
+            std::string first_row = csv_row({run.entry.name, level_mode_name(first.mode), box_kind_name(first.box),
+                                             interpolation_name(first.interpolation), std::to_string(level),
+                                             config.views[0], format_number(config.distances[0]),
+                                             render_mode_name(config.render_modes[0])});
+            std::size_t target = triangles_of_row(out.results.rows.at(first_row));
+            run_group(run, out, report, csv_row({run.entry.name, "simplification", "-", "-", std::to_string(level)}), one_slot,
+                      [&](int) {
+                          SimplifyOptions options;
+                          options.threads = run.threads;
+                          return candidate(simplify_model(run.model, target, options), {}, 0, first.obtained_levels);
+                      });
+        }
+    }
+    if (config.single_box_baseline)
+        run_group(run, out, report, csv_row({run.entry.name, "single-box", "-", "-", std::to_string(first.obtained_levels)}),
+                  one_slot, [&](int) { return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels); });
+}
+
+// Plan, then execute, model by model, into the results table.
+SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+    auto sweep_start = Clock::now();
+    if (threads < 0) threads = config.threads;
+    SweepReport report;
+    SweepOutput out = open_output(config, output_folder);
+    for (std::size_t m = 0; m < config.models.size(); ++m) {
+        Model model = load_sweep_model(config.models[m]);
+        auto start = Clock::now();
+        ModelPlan plan = plan_model(config, model, threads);
+        report.boxes_seconds += seconds_since(start);
+        ModelRun run{config, config.models[m], model, model_framing(model)};
+        run.index = m;
+        run.rows = plan.groups * rows_per_group(config);
+        run.threads = threads;
+        run.progress = progress;
+        report.rows += run.rows;
+        for (const Variant& variant : plan.variants) run_variant(run, out, report, plan, variant);
+        run_baselines(run, out, report, plan.variants.front());
+    }
+    write_tables(out);
     report.total_seconds = seconds_since(sweep_start);
     return report;
 }

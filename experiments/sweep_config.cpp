@@ -1,11 +1,11 @@
 #include "experiments/sweep_config.h"
 
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "base/key_value_lines.h"
+#include "base/parallel.h"
 #include "data_gen/samples.h"
 #include "experiments/flip.h"
-#include "renderer/parallel.h"
-#include "toolkit/key_value_lines.h"
 #include "toolkit/parameters.h"
 
 #include <algorithm>
@@ -21,7 +21,6 @@
 namespace boxlod {
 namespace {
 
-const std::vector<std::string> known_metrics = {"rmse", "psnr", "ssim", "flip", "iou"};
 constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
 constexpr NumberRange distance_multiple_range{0.01, 1000};  // of the framing distance
 
@@ -63,13 +62,13 @@ struct Line {
     }
     template <typename T>
     T number_in(const NumberRange& range) const { return number_in<T>(range, line.value); }
-    // Each item through parse(word, value); unknown words name the accepted ones.
-    template <typename T, typename Parse>
-    std::vector<T> words(Parse parse, const char* known) const {
+    // Each item a name of the enum's table; unknown words name the accepted ones.
+    template <typename T>
+    std::vector<T> words(std::span<const EnumEntry<T>> table) const {
         std::vector<T> out;
         for (const std::string& word : items()) {
             T value{};
-            if (!parse(word, value)) fail("unknown value '" + word + "' (" + known + ")");
+            if (!parse_enum(table, word, value)) fail("unknown value '" + word + "' (" + enum_names(table) + ")");
             if (std::find(out.begin(), out.end(), value) == out.end()) out.push_back(value);
         }
         return out;
@@ -102,12 +101,11 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));
          }},
         {"level_modes", [&](const Line& l) {
-             c.level_modes = l.words<LevelMode>(parse_level_mode, "top-down, bottom-up, bottom-up-siblings, box-volume, "
-                                                                  "box-area, box-diagonal, box-max-extent");
+             c.level_modes = l.words(level_modes());
          }},
-        {"box_kinds", [&](const Line& l) { c.box_kinds = l.words<BoxKind>(parse_box_kind, "scope, expanded, minimal"); }},
+        {"box_kinds", [&](const Line& l) { c.box_kinds = l.words(box_kinds()); }},
         {"interpolations", [&](const Line& l) {
-             c.interpolations = l.words<Interpolation>(parse_interpolation, "linear, log, rank");
+             c.interpolations = l.words(interpolations());
          }},
         {"levels", [&](const Line& l) {
              c.levels.clear();
@@ -135,19 +133,12 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              }
          }},
         {"render_modes", [&](const Line& l) {
-             c.render_modes = l.words<RenderMode>(parse_render_mode, "untextured, normal, parallax, pom, albedo");
+             c.render_modes = l.words(render_modes());
          }},
         {"width", [&](const Line& l) { c.width = l.number_in<int>(sweep_image_side_range); }},
         {"height", [&](const Line& l) { c.height = l.number_in<int>(sweep_image_side_range); }},
         {"fovy", [&](const Line& l) { c.fovy = l.number_in<float>(parameter_range::fovy); }},
-        {"metrics", [&](const Line& l) {
-             c.metrics.clear();
-             for (const std::string& metric : l.items()) {
-                 if (std::find(known_metrics.begin(), known_metrics.end(), metric) == known_metrics.end())
-                     l.fail("unknown metric '" + metric + "' (rmse, psnr, ssim, flip, iou)");
-                 if (std::find(c.metrics.begin(), c.metrics.end(), metric) == c.metrics.end()) c.metrics.push_back(metric);
-             }
-         }},
+        {"metrics", [&](const Line& l) { c.metrics = l.words(metrics()); }},
         {"ppd", [&](const Line& l) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
         {"resolution", [&](const Line& l) { c.resolution = l.number_in<float>(parameter_range::resolution); }},
         {"min_texture_size", [&](const Line& l) {

@@ -3,6 +3,7 @@
 // box kinds, interpolations, levels, views, distances, render modes, image
 // size, metrics and which images to keep. Paths are relative to the file.
 #pragma once
+#include "experiments/metric_registry.h"
 #include "renderer/renderer.h"
 #include "toolkit/boxes.h"
 #include "toolkit/level_modes.h"
@@ -42,7 +43,7 @@ struct SweepConfig {
     std::vector<RenderMode> render_modes{RenderMode::normal};
     int width = 512, height = 512;
     float fovy = 45;
-    std::vector<std::string> metrics{"rmse", "psnr", "ssim", "flip", "iou"};
+    std::vector<Metric> metrics = all_metrics();
     double pixels_per_degree = 67;  // FLIP's
     float resolution = 512;  // texture sizing screen height
     SizingRule sizing = SizingRule::nearest;

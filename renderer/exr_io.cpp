@@ -1,6 +1,6 @@
 #include "renderer/exr_io.h"
 
-#include "renderer/atomic_write.h"
+#include "base/atomic_write.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>

@@ -1,8 +1,8 @@
 #include "renderer/image.h"
 
-#include "renderer/atomic_write.h"
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

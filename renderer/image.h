@@ -1,6 +1,6 @@
 // Images: plain pixel arrays, PNG in and out (stb), sRGB <-> linear.
 #pragma once
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include <cstdint>
 #include <span>
 #include <string>

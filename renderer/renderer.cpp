@@ -1,6 +1,6 @@
 #include "renderer/renderer.h"
 
-#include "renderer/parallel.h"
+#include "base/parallel.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,25 +9,21 @@
 
 namespace boxlod {
 
-bool parse_render_mode(const std::string& name, RenderMode& mode) {
-    for (RenderMode m : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo})
-        if (name == render_mode_name(m)) {
-            mode = m;
-            return true;
-        }
-    return false;
-}
+namespace {
+constexpr EnumEntry<RenderMode> render_mode_table[] = {
+    {RenderMode::untextured, "untextured", "material colour only, vertex normals (LoD boxes are not baked)"},
+    {RenderMode::normal, "normal", "albedo x Blinn-Phong, the normal from the normal map"},
+    {RenderMode::parallax, "parallax", "texture coordinates offset by height (scale, bias), then as normal"},
+    {RenderMode::pom, "pom", "parallax occlusion mapping: a ray march through the height map"},
+    {RenderMode::albedo, "albedo", "unlit albedo (material colour x texture): what baking records"},
+};
+}  // namespace
 
-const char* render_mode_name(RenderMode mode) {
-    switch (mode) {
-        case RenderMode::untextured: return "untextured";
-        case RenderMode::normal: return "normal";
-        case RenderMode::parallax: return "parallax";
-        case RenderMode::pom: return "pom";
-        case RenderMode::albedo: return "albedo";
-    }
-    return "?";
-}
+std::span<const EnumEntry<RenderMode>> render_modes() { return render_mode_table; }
+
+bool parse_render_mode(const std::string& name, RenderMode& mode) { return parse_enum(render_modes(), name, mode); }
+
+const char* render_mode_name(RenderMode mode) { return enum_name(render_modes(), mode); }
 
 Light light_for_camera(const Camera& camera) {
     Eigen::Vector3f eye = camera.position - camera.target;

@@ -5,12 +5,14 @@
 //   render(batches, settings, frame);
 //   write_png("out.png", frame_to_srgb8(frame));
 #pragma once
+#include "base/enum_table.h"
 #include "renderer/camera.h"
 #include "renderer/image.h"
 #include "renderer/rasterizer.h"
 #include "renderer/texture.h"
 
 #include <Eigen/Core>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@ enum class RenderMode {
     pom,         // parallax occlusion mapping (ray march through the height map)
     albedo,      // unlit albedo (material colour x texture): what baking records
 };
+std::span<const EnumEntry<RenderMode>> render_modes();  // names ("untextured", ...) and help
 bool parse_render_mode(const std::string& name, RenderMode& mode);
 const char* render_mode_name(RenderMode mode);
 

@@ -5,7 +5,7 @@
 # and the simplification baseline.
 set -euo pipefail
 build=${1:-build}
-boxlod="$build/toolkit/cli/boxlod"
+boxlod="$build/boxlod"
 out=out/demo
 rm -rf "$out"
 mkdir -p "$out"

@@ -1,6 +1,6 @@
-#include "renderer/atomic_write.h"
+#include "base/atomic_write.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "experiments/camera_path.h"
 
+#include "base/input_error.h"
 #include "data_gen/city.h"
-#include "renderer/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "data_gen/city.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -224,11 +224,11 @@ TEST(FlyThrough, FrameCostPaysEachSharedTextureOnce) {
 TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
     Model city = small_city(2);
     FlyThroughOptions options = tiny_frames();
-    options.keep_small_subtrees = true;
+    options.levels.keep_small_subtrees = true;
     CityLevels levels = build_city_levels(city, options, false);
     for (const SelectionObject& object : levels.objects)
         for (std::size_t c = 1; c < object.levels.size(); ++c) EXPECT_LE(object.levels[c].faces, object.levels[0].faces) << c;
-    options.keep_small_subtrees = false;
+    options.levels.keep_small_subtrees = false;
     CityLevels manual = build_city_levels(city, options, false);
     EXPECT_GT(manual.objects[0].levels[1].faces, levels.objects[0].levels[1].faces);
 }

@@ -1,6 +1,6 @@
 #include "toolkit/gltf_io.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "test_support.h"
 #include "toolkit/model_io.h"
 

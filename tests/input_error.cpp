@@ -1,4 +1,4 @@
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "renderer/input_file.h"
+#include "base/input_file.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

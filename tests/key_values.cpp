@@ -1,4 +1,4 @@
-#include "toolkit/key_values.h"
+#include "base/key_values.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include "toolkit/level_modes.h"
 
-#include "renderer/input_error.h"
-#include "toolkit/boxes.h"
+#include "base/input_error.h"
 #include "test_support.h"
+#include "toolkit/boxes.h"
 #include "toolkit/cut.h"
 #include "toolkit/model_io.h"
 

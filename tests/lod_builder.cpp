@@ -1,8 +1,8 @@
 #include "toolkit/lod_builder.h"
 
+#include "base/input_error.h"
+#include "golden.h"
 #include "lod_scene.h"
-#include "renderer/input_error.h"
-#include "test_support.h"
 #include "toolkit/drawable.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"

@@ -1,6 +1,6 @@
 #include "toolkit/parameters.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

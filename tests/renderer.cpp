@@ -1,9 +1,9 @@
 #include "renderer/renderer.h"
 
+#include "golden.h"
 #include "render_scene.h"
 #include "renderer/exr_io.h"
 #include "renderer/overlays.h"
-#include "test_support.h"
 
 #include <gtest/gtest.h>
 

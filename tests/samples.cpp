@@ -1,10 +1,10 @@
 #include "data_gen/samples.h"
 
+#include "base/input_error.h"
 #include "data_gen/interpreter.h"
-#include "renderer/input_error.h"
-#include "test_support.h"
-#include "toolkit/model_io.h"
+#include "golden.h"
 #include "toolkit/drawable.h"
+#include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "experiments/simplification.h"
 
+#include "base/input_error.h"
 #include "lod_scene.h"
-#include "renderer/input_error.h"
 #include "test_support.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"

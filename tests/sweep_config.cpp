@@ -1,6 +1,6 @@
 #include "experiments/sweep_config.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.width, 64);
     EXPECT_EQ(c.height, 48);
     EXPECT_EQ(c.fovy, 30);
-    EXPECT_EQ(c.metrics, (std::vector<std::string>{"psnr", "ssim"}));
+    EXPECT_EQ(c.metrics, (std::vector<Metric>{Metric::psnr, Metric::ssim}));
     EXPECT_EQ(c.pixels_per_degree, 40);
     EXPECT_EQ(c.resolution, 256);
     EXPECT_EQ(c.keep_images, KeptImages::all);
@@ -86,7 +86,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nppd = 1e8\n", "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
     expect_error("models = a.glb\nwanted_levels = 1000000000\n", "cfg.txt: line 2: wanted_levels: expected a number in [1, 64]");
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
-    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown metric 'vmaf'");
+    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, iou)");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
     expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two from 1 to 4096");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");

@@ -1,7 +1,7 @@
-#include "toolkit/viewer_state.h"
+#include "toolkit/commands/viewer_state.h"
 
+#include "base/input_error.h"
 #include "lod_scene.h"
-#include "renderer/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -38,7 +38,9 @@ TEST(ViewerState, KeysCycleModesAndToggleAids) {
     EXPECT_EQ(s.settings.mode, RenderMode::normal);
     EXPECT_TRUE(apply_event(s, key("m")));
     EXPECT_EQ(s.settings.mode, RenderMode::parallax);
-    apply_event(s, key("m")), apply_event(s, key("m"));
+    apply_event(s, key("m")), apply_event(s, key("m"));  // pom, then albedo: every mode render --mode has
+    EXPECT_EQ(s.settings.mode, RenderMode::albedo);
+    apply_event(s, key("m"));
     EXPECT_EQ(s.settings.mode, RenderMode::untextured);
     apply_event(s, key("f")), apply_event(s, key("x")), apply_event(s, key("v"));
     EXPECT_TRUE(s.settings.wireframe && s.axes && s.split_view);

@@ -1,6 +1,6 @@
 #include "toolkit/assimp_input_check.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <charconv>
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "toolkit/assimp_io.h"
 
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
 #include "toolkit/assimp_input_check.h"
 
 #include <Eigen/LU>

@@ -1,6 +1,6 @@
 #include "toolkit/boxes.h"
 
-#include "renderer/parallel.h"
+#include "base/parallel.h"
 #include "toolkit/box_fit.h"
 #include "toolkit/minimal_box.h"
 
@@ -15,11 +15,11 @@ namespace boxlod {
 
 namespace {
 
-struct KindName {
-    BoxKind kind;
-    const char* name;
+constexpr EnumEntry<BoxKind> box_kind_table[] = {
+    {BoxKind::scope, "scope", "the grammar's scope as stored (may be smaller than the geometry)"},
+    {BoxKind::expanded, "expanded", "the scope's orientation, grown to enclose the sub-tree's geometry"},
+    {BoxKind::minimal, "minimal", "CGAL's minimum-volume box of the sub-tree's vertices"},
 };
-constexpr KindName kind_names[] = {{BoxKind::scope, "scope"}, {BoxKind::expanded, "expanded"}, {BoxKind::minimal, "minimal"}};
 
 // Whether each node's sub-tree has geometry; children follow their parents, so one backward pass.
 std::vector<char> geometry_below(const Model& model) {
@@ -158,20 +158,9 @@ OrientedBox expanded_box(const Model& model, int node, const OrientedBox& scope)
 
 }  // namespace
 
-bool parse_box_kind(const std::string& name, BoxKind& kind) {
-    for (const KindName& k : kind_names)
-        if (name == k.name) {
-            kind = k.kind;
-            return true;
-        }
-    return false;
-}
-
-const char* box_kind_name(BoxKind kind) {
-    for (const KindName& k : kind_names)
-        if (k.kind == kind) return k.name;
-    return "?";
-}
+std::span<const EnumEntry<BoxKind>> box_kinds() { return box_kind_table; }
+bool parse_box_kind(const std::string& name, BoxKind& kind) { return parse_enum(box_kinds(), name, kind); }
+const char* box_kind_name(BoxKind kind) { return enum_name(box_kinds(), kind); }
 
 std::vector<std::optional<OrientedBox>> node_boxes(const Model& model, BoxKind kind, int threads) {
     MinimalBoxCounts counts;

@@ -1,8 +1,10 @@
 // The box that replaces a node's sub-tree in an LoD (docs/design.md: Boxes).
 #pragma once
+#include "base/enum_table.h"
 #include "toolkit/model.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@ enum class BoxKind {
     expanded,  // the scope's orientation, grown just enough to enclose the sub-tree's geometry
     minimal,   // CGAL's optimal (minimum-volume) OBB of the sub-tree's vertices, fixed seed
 };
+std::span<const EnumEntry<BoxKind>> box_kinds();  // names ("scope", ...) and help
 bool parse_box_kind(const std::string& name, BoxKind& kind);
 const char* box_kind_name(BoxKind kind);
 

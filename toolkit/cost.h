@@ -2,7 +2,7 @@
 // bytes of its vertex and index buffers, and the bytes of its textures both
 // uncompressed and in GPU block compression, each with its full mip chain.
 #pragma once
-#include "toolkit/key_values.h"
+#include "base/key_values.h"
 #include "toolkit/model.h"
 
 #include <cstdint>

@@ -1,12 +1,12 @@
 #include "toolkit/gltf_io.h"
 
-#include "renderer/atomic_write.h"
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
 #include "renderer/image.h"
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
-#include "renderer/parallel.h"
 #include "toolkit/gltf_structure.h"
-#include "toolkit/key_values.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>

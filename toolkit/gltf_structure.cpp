@@ -1,6 +1,6 @@
 #include "toolkit/gltf_structure.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "toolkit/level_modes.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 #include "toolkit/boxes.h"
 
 #include <algorithm>
@@ -11,23 +11,21 @@ namespace boxlod {
 
 namespace {
 
-struct ModeName {
-    LevelMode mode;
-    const char* name;
-};
-constexpr ModeName mode_names[] = {
-    {LevelMode::top_down, "top-down"},         {LevelMode::bottom_up, "bottom-up"},
-    {LevelMode::bottom_up_siblings, "bottom-up-siblings"}, {LevelMode::box_volume, "box-volume"},
-    {LevelMode::box_area, "box-area"},         {LevelMode::box_diagonal, "box-diagonal"},
-    {LevelMode::box_max_extent, "box-max-extent"},
+constexpr EnumEntry<LevelMode> level_mode_table[] = {
+    {LevelMode::top_down, "top-down", "the root gets N - 1, each child its parent's value - 1; N = depth + 1"},
+    {LevelMode::bottom_up, "bottom-up", "leaves 0, inner nodes 1 + their children's maximum"},
+    {LevelMode::bottom_up_siblings, "bottom-up-siblings", "bottom-up, siblings raised to their maximum first"},
+    {LevelMode::box_volume, "box-volume", "from the box's volume, N = the wanted levels"},
+    {LevelMode::box_area, "box-area", "from the box's surface area"},
+    {LevelMode::box_diagonal, "box-diagonal", "from the box's diagonal"},
+    {LevelMode::box_max_extent, "box-max-extent", "from the box's longest side"},
 };
 
-struct InterpolationName {
-    Interpolation interpolation;
-    const char* name;
+constexpr EnumEntry<Interpolation> interpolation_table[] = {
+    {Interpolation::linear, "linear", "the box value v itself"},
+    {Interpolation::log, "log", "log v"},
+    {Interpolation::rank, "rank", "the rank of v among the nodes"},
 };
-constexpr InterpolationName interpolation_names[] = {
-    {Interpolation::linear, "linear"}, {Interpolation::log, "log"}, {Interpolation::rank, "rank"}};
 
 // Hierarchy, Top-Down: the root gets N - 1, each child its parent's value - 1.
 LevelValues top_down(const Model& model) {
@@ -114,35 +112,12 @@ LevelValues box_levels(const Model& model, LevelMode mode, int wanted_levels, In
 
 }  // namespace
 
-bool parse_level_mode(const std::string& name, LevelMode& mode) {
-    for (const ModeName& m : mode_names)
-        if (name == m.name) {
-            mode = m.mode;
-            return true;
-        }
-    return false;
-}
-
-const char* level_mode_name(LevelMode mode) {
-    for (const ModeName& m : mode_names)
-        if (m.mode == mode) return m.name;
-    return "?";
-}
-
-bool parse_interpolation(const std::string& name, Interpolation& interpolation) {
-    for (const InterpolationName& i : interpolation_names)
-        if (name == i.name) {
-            interpolation = i.interpolation;
-            return true;
-        }
-    return false;
-}
-
-const char* interpolation_name(Interpolation interpolation) {
-    for (const InterpolationName& i : interpolation_names)
-        if (i.interpolation == interpolation) return i.name;
-    return "?";
-}
+std::span<const EnumEntry<LevelMode>> level_modes() { return level_mode_table; }
+std::span<const EnumEntry<Interpolation>> interpolations() { return interpolation_table; }
+bool parse_level_mode(const std::string& name, LevelMode& mode) { return parse_enum(level_modes(), name, mode); }
+const char* level_mode_name(LevelMode mode) { return enum_name(level_modes(), mode); }
+bool parse_interpolation(const std::string& name, Interpolation& value) { return parse_enum(interpolations(), name, value); }
+const char* interpolation_name(Interpolation value) { return enum_name(interpolations(), value); }
 
 bool is_box_mode(LevelMode mode) {
     return mode == LevelMode::box_volume || mode == LevelMode::box_area || mode == LevelMode::box_diagonal ||

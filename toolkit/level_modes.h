@@ -2,9 +2,11 @@
 // section): every node n gets L(n) in 0..N-1; at current level c a node with
 // L(n) < c is replaced, with its sub-tree, by its box.
 #pragma once
+#include "base/enum_table.h"
 #include "toolkit/model.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,9 @@ enum class LevelMode {
 };
 enum class Interpolation { linear, log, rank };  // how box modes turn v into t
 
-bool parse_level_mode(const std::string& name, LevelMode& mode);  // CLI names: top-down, box-volume, ...
+std::span<const EnumEntry<LevelMode>> level_modes();  // names ("top-down", ...) and help
+std::span<const EnumEntry<Interpolation>> interpolations();
+bool parse_level_mode(const std::string& name, LevelMode& mode);
 const char* level_mode_name(LevelMode mode);
 bool parse_interpolation(const std::string& name, Interpolation& interpolation);
 const char* interpolation_name(Interpolation interpolation);

@@ -1,23 +1,18 @@
 #include "toolkit/lod_builder.h"
 
-#include "renderer/input_error.h"
-#include "renderer/parallel.h"
+#include "base/input_error.h"
+#include "base/parallel.h"
+#include "base/timing.h"
 #include "toolkit/cost.h"
+#include "toolkit/framing.h"
 #include "toolkit/kept_subtrees.h"
 #include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace boxlod {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-float scene_radius(const Model& model) { return std::max(model_bounds(model).size().norm() / 2, 1e-6f); }
 
 // Copies the `region` of a baked face into a page with its gutter: the face's
 // own texels around the region where it has them (so a cropped face samples
@@ -79,13 +74,13 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->parameters = parameters;
     LodParameters& p = session->parameters;
     if (p.model.empty()) p.model = model.source;
-    if (p.distance == 0) p.distance = framing_distance(scene_radius(model), p.fovy);
+    if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
     session->sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
 
-    auto start = std::chrono::steady_clock::now();
+    auto start = Clock::now();
     session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
     session->times.boxes = seconds_since(start);
-    start = std::chrono::steady_clock::now();
+    start = Clock::now();
     session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes);
     session->times.levels = seconds_since(start);
     if (p.keep_small_subtrees || p.keep_cheaper_subtrees)
@@ -100,119 +95,118 @@ Camera preview_camera(const LodSession& session) {
     const LodParameters& p = session.parameters;
     if (p.camera) {
         Camera camera = *p.camera;
-        Bounds bounds = model_bounds(*session.model);
-        float radius = scene_radius(*session.model);
-        float distance = (camera.position - bounds.center()).norm();
-        camera.near_plane = std::max(distance - radius, distance * 1e-3f);
-        camera.far_plane = std::max(distance + radius, camera.near_plane * 2);
+        Framing framing = model_framing(*session.model);
+        float distance = (camera.position - framing.center).norm();
+        camera.near_plane = std::max(distance - framing.radius, distance * 1e-3f);
+        camera.far_plane = std::max(distance + framing.radius, camera.near_plane * 2);
         return camera;
     }
-    Bounds bounds = model_bounds(*session.model);
-    return camera_at_position({1, 1, 1}, bounds.center(), p.distance, p.fovy, scene_radius(*session.model));
+    return framed_camera(model_framing(*session.model), {1, 1, 1}, p.distance, p.fovy);
 }
 
-Lod build_lod(LodSession& session, int current_level, int threads) {
-    const Model& model = *session.model;
-    const LodParameters& p = session.parameters;
-    int obtained = session.levels.obtained_levels;
-    if (current_level < 0 || current_level > obtained)
-        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
-                         " (the obtained number of levels)");
-    bool textured = p.render_mode != RenderMode::untextured;
-    Lod lod;
-    lod.current_level = current_level;
-    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
+namespace {
 
-    // Bake the faces of boxes no earlier level baked, in parallel (one face per task).
-    auto start = std::chrono::steady_clock::now();
+// Bake: the faces of the cut's boxes that no earlier level baked, in parallel (one face per task).
+void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
     struct FaceJob { int node, face; };
     std::vector<FaceJob> jobs;
     std::vector<int> new_boxes;
-    if (textured)
-        for (int node : lod.cut.box_nodes)
-            if (!session.baked.count(node)) new_boxes.push_back(node);
+    for (int node : cut.box_nodes)
+        if (!session.baked.count(node)) new_boxes.push_back(node);
     for (int node : new_boxes) {
         session.baked[node];  // create the slots before the parallel work
         for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
     }
     std::map<int, Drawable> subtrees;
-    for (int node : new_boxes) subtrees.emplace(node, make_drawable(model, session.textures, node));
+    for (int node : new_boxes) subtrees.emplace(node, make_drawable(*session.model, session.textures, node));
     parallel_for(jobs.size(), threads, [&](std::size_t j) {
         const FaceJob& job = jobs[j];
         OrientedBoxFace face = oriented_box_faces(*session.boxes[job.node])[job.face];
         session.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, session.sizing), 1);
     });
-    session.times.bake += seconds_since(start);
+}
 
-    // Pack the faces of the cut's boxes: each cropped to its covered texels, none
-    // for a face that covers nothing (unless crop_faces is off).
-    start = std::chrono::steady_clock::now();
-    struct PackedFace { int node, face; TexelRect region; };
-    std::vector<PackedFace> packed;  // in cut order, face order
+// The faces that go into the atlas, in cut order and face order, each with the
+// rectangle of its texels it keeps: cropped to the covered ones, none for a
+// face that covers nothing (unless crop_faces is off).
+struct PackedFace {
+    int node, face;
+    TexelRect region;
+};
+
+struct Packing {
+    std::vector<PackedFace> faces;
+    Atlas atlas;
+    std::uint64_t face_texels = 0;
+    float longest_face = 0;  // metres, for min_distance
+};
+
+// Pack: the kept rectangles of the cut's faces into pages.
+Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
+    const LodParameters& p = session.parameters;
+    Packing packing;
     std::vector<Eigen::Vector2i> sizes;
-    float longest_face = 0;
-    for (int node : lod.cut.box_nodes) {
+    for (int node : cut.box_nodes) {
         const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[node]);
         for (int f = 0; f < 6; ++f) {
             const OrientedBoxFace& face = faces[f];
-            longest_face = std::max({longest_face, 2 * face.half_width, 2 * face.half_height});
+            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
             if (!textured) continue;
             const Eigen::Vector2i texels = texels_of(face, session.sizing);
             const TexelRect region = p.crop_faces ? session.baked.at(node)[f].covered : TexelRect{0, 0, texels.x(), texels.y()};
             if (region.empty()) continue;
-            packed.push_back({node, f, region});
+            packing.faces.push_back({node, f, region});
             sizes.emplace_back(region.width, region.height);
-            lod.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
+            packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
     }
-    const int gutter = session.sizing.gutter;
-    if (textured) lod.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, gutter);
-    session.times.pack += seconds_since(start);
+    if (textured) packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
+    return packing;
+}
 
-    // The LoD model: the cut's nodes in tree order; box nodes become leaves with six quads.
-    start = std::chrono::steady_clock::now();
-    Model& out = lod.model;
-    out.source = model.source;
-    out.is_lod = true;
-    LodParameters saved = p;
-    saved.current_level = current_level;
-    for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
-
-    MaterialCopier writer{model, out};  // kept geometry brings its materials and textures
-    int first_page_material = -1;
-    if (textured) {
-        first_page_material = 0;
-        for (int page = 0; page < int(lod.atlas.pages.size()); ++page) {
-            const Eigen::Vector2i size = lod.atlas.pages[std::size_t(page)];
-            Texture color{"color_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 4, 0), {}};
-            Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 3, 255), {}};
-            for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
-            Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size.x(), size.y(), 1, 0)};
-            color.wrap = normal.wrap = height.wrap = Wrap::clamp;  // faces touch the page's border
-            out.textures.push_back(std::move(color));
-            out.textures.push_back(std::move(normal));
-            out.textures.push_back(std::move(height));
-            Material material;
-            material.name = "lod_page_" + std::to_string(page);
-            material.base_color_texture = page * 3;
-            material.normal_texture = page * 3 + 1;
-            material.height_texture = page * 3 + 2;
-            material.alpha_cutout = true;
-            out.materials.push_back(material);
-        }
-    } else {
+// Page: one material per atlas page with its three empty textures (uncovered
+// texels: transparent colour, the flat normal, height 0); untextured, one grey material.
+void add_pages(Model& out, const Atlas& atlas, bool textured) {
+    if (!textured) {
         Material material;
         material.name = "lod_box";
         material.base_color = {0.7f, 0.7f, 0.7f, 1};
         out.materials.push_back(material);
-        first_page_material = 0;
+        return;
     }
+    for (int page = 0; page < int(atlas.pages.size()); ++page) {
+        const Eigen::Vector2i size = atlas.pages[std::size_t(page)];
+        Texture color{"color_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 4, 0), {}};
+        Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 3, 255), {}};
+        for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
+        Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size.x(), size.y(), 1, 0)};
+        color.wrap = normal.wrap = height.wrap = Wrap::clamp;  // faces touch the page's border
+        const LodPage textures = lod_page(page);
+        out.textures.resize(std::size_t(textures.height) + 1);
+        out.textures[std::size_t(textures.color)] = std::move(color);
+        out.textures[std::size_t(textures.normal)] = std::move(normal);
+        out.textures[std::size_t(textures.height)] = std::move(height);
+        Material material;
+        material.name = "lod_page_" + std::to_string(page);
+        material.base_color_texture = textures.color;
+        material.normal_texture = textures.normal;
+        material.height_texture = textures.height;
+        material.alpha_cutout = true;
+        out.materials.push_back(material);
+    }
+}
 
+// Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
+// materials and textures), a box node becomes a leaf with one quad per packed
+// face, its baked texels placed in its page.
+void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, bool textured) {
+    const Model& model = *session.model;
+    MaterialCopier writer{model, out};
     std::vector<bool> is_box(model.nodes.size(), false);
-    for (int n : lod.cut.box_nodes) is_box[n] = true;
+    for (int n : cut.box_nodes) is_box[n] = true;
     std::map<int, int> new_index;
     std::size_t next_packed = 0;
-    for (int n : lod.cut.used_nodes) {
+    for (int n : cut.used_nodes) {
         const Node& node = model.nodes[n];
         int parent = node.parent >= 0 ? new_index.at(node.parent) : -1;
         int index = add_node(out, parent, node.name);
@@ -227,31 +221,35 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
             }
             continue;
         }
-        // One primitive per page this box's faces landed on.
+        // One primitive per page this box's faces landed on (the pages' materials come first, page order).
         std::map<int, Primitive> by_page;
         std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
         for (int f = 0; f < 6; ++f) {
             if (!textured) {
                 Primitive& primitive = by_page[0];
-                primitive.material = first_page_material;
+                primitive.material = 0;
                 append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, {});
                 continue;
             }
+            const std::vector<PackedFace>& packed = packing.faces;
             if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
             const TexelRect& region = packed[next_packed].region;
-            const AtlasPlacement& at = lod.atlas.placements[next_packed++];
+            const AtlasPlacement& at = packing.atlas.placements[next_packed++];
             Primitive& primitive = by_page[at.page];
-            primitive.material = first_page_material + at.page;
+            primitive.material = at.page;
             append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), region, &at,
-                             lod.atlas.pages[std::size_t(at.page)]);
-            place_face(session.baked.at(n)[f], region, at, gutter, out.textures[at.page * 3], out.textures[at.page * 3 + 1],
-                       out.textures[at.page * 3 + 2]);
+                             packing.atlas.pages[std::size_t(at.page)]);
+            const LodPage page = lod_page(at.page);
+            place_face(session.baked.at(n)[f], region, at, session.sizing.gutter, out.textures[std::size_t(page.color)],
+                       out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
         }
         for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
     }
-    session.times.mesh += seconds_since(start);
+}
 
-    // Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
+// Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
+KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packing& packing) {
+    const Model& model = *session.model;
     int largest_page_side = 0;
     std::string page_list;
     for (const Eigen::Vector2i& page : lod.atlas.pages) {
@@ -259,9 +257,9 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         page_list += (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
     }
     const double occupancy = lod.atlas.pages.empty() ? 0 : double(lod.face_texels) / double(page_texels(lod.atlas));
-    MeshCounts lod_counts = mesh_counts(out), original = mesh_counts(model);
+    MeshCounts lod_counts = mesh_counts(lod.model), original = mesh_counts(model);
     Eigen::Vector3f size = model_bounds(model).size();
-    lod.statistics = {
+    KeyValues statistics = {
         number_entry("nodes", double(model.nodes.size())),
         number_entry("used_nodes", double(lod.cut.used_nodes.size())),
         number_entry("nodes_with_geometry", double(lod.cut.geometry_nodes.size())),
@@ -275,7 +273,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         number_entry("faces_original", double(original.faces)),
         number_entry("triangles_original", double(original.triangles)),
         number_entry("vertices_original", double(original.vertices)),
-        float_entry("min_distance", longest_face > 0 ? min_distance(longest_face, session.sizing) : 0),
+        float_entry("min_distance", packing.longest_face > 0 ? min_distance(packing.longest_face, session.sizing) : 0),
         float_entry("mesh_width", size.x()),
         float_entry("mesh_height", size.y()),
         float_entry("mesh_depth", size.z()),
@@ -286,11 +284,53 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
         number_entry("face_texels", double(lod.face_texels)),
         number_entry("occupancy", occupancy),
     };
-    lod.cost = cost_parts(out);
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
-        lod.statistics.insert(lod.statistics.end(), cost.begin(), cost.end());
-    lod.statistics.push_back(number_entry("obtained_levels", obtained));
-    lod.statistics.push_back(number_entry("current_level", current_level));  // last: it closes a level's block
+        statistics.insert(statistics.end(), cost.begin(), cost.end());
+    statistics.push_back(number_entry("obtained_levels", session.levels.obtained_levels));
+    statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
+    return statistics;
+}
+
+}  // namespace
+
+LodPage lod_page(int page) { return {3 * page, 3 * page + 1, 3 * page + 2}; }
+
+// The build as named steps: cut, bake, pack, page, mesh, statistics.
+Lod build_lod(LodSession& session, int current_level, int threads) {
+    const Model& model = *session.model;
+    const LodParameters& p = session.parameters;
+    int obtained = session.levels.obtained_levels;
+    if (current_level < 0 || current_level > obtained)
+        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
+                         " (the obtained number of levels)");
+    const bool textured = p.render_mode != RenderMode::untextured;
+    Lod lod;
+    lod.current_level = current_level;
+    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
+
+    auto start = Clock::now();
+    if (textured) bake_new_boxes(session, lod.cut, threads);
+    session.times.bake += seconds_since(start);
+
+    start = Clock::now();
+    Packing packing = pack_faces(session, lod.cut, textured);
+    lod.atlas = packing.atlas;
+    lod.face_texels = packing.face_texels;
+    session.times.pack += seconds_since(start);
+
+    start = Clock::now();
+    Model& out = lod.model;
+    out.source = model.source;
+    out.is_lod = true;
+    LodParameters saved = p;
+    saved.current_level = current_level;
+    for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
+    add_pages(out, lod.atlas, textured);
+    add_cut_nodes(out, session, lod.cut, packing, textured);
+    session.times.mesh += seconds_since(start);
+
+    lod.cost = cost_parts(out);
+    lod.statistics = lod_statistics(session, lod, packing);
     return lod;
 }
 

@@ -2,11 +2,11 @@
 // model; per current level the cut, baking of the boxes not baked before,
 // atlas packing and the LoD mesh (kept original nodes + textured box quads).
 #pragma once
+#include "base/key_values.h"
 #include "toolkit/atlas.h"
 #include "toolkit/bake.h"
 #include "toolkit/cost.h"
 #include "toolkit/cut.h"
-#include "toolkit/key_values.h"
 #include "toolkit/parameters.h"
 #include "toolkit/texture_sizing.h"
 
@@ -38,9 +38,16 @@ struct LodSession {
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
                                       const std::vector<std::optional<OrientedBox>>* boxes = nullptr);
 
+// The textures of atlas page K in an LoD's model: its colour, normal and
+// height maps (color_K.png, normal_K.png, height_K.png); material K draws it.
+struct LodPage {
+    int color, normal, height;  // indices into Model::textures
+};
+LodPage lod_page(int page);
+
 struct Lod {
     int current_level = 0;
-    // is_lod and lod_params set; textures 3K, 3K+1, 3K+2 are page K's color_K.png, normal_K.png, height_K.png.
+    // is_lod and lod_params set; the pages' textures (lod_page) and materials come first.
     Model model;
     Cut cut;
     Atlas atlas;  // no pages in untextured mode (no baking)

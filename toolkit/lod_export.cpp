@@ -1,7 +1,7 @@
 #include "toolkit/lod_export.h"
 
-#include "renderer/atomic_write.h"
-#include "renderer/input_error.h"
+#include "base/atomic_write.h"
+#include "base/input_error.h"
 #include "toolkit/drawable.h"
 #include "toolkit/gltf_io.h"
 
@@ -34,7 +34,9 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     Model& model = lod.model;
-    for (std::size_t i = 0; i < 3 * lod.atlas.pages.size(); ++i) model.textures[i].name = name + "_" + model.textures[i].name;
+    for (int page = 0; page < int(lod.atlas.pages.size()); ++page)  // NAME_color_K.png, ...
+        for (int texture : {lod_page(page).color, lod_page(page).normal, lod_page(page).height})
+            model.textures[std::size_t(texture)].name = name + "_" + model.textures[std::size_t(texture)].name;
     LodParameters parameters = session.parameters;
     parameters.current_level = lod.current_level;
     // The parameter file names its model relative to itself, so the folder can move.

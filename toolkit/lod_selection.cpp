@@ -1,6 +1,6 @@
 #include "toolkit/lod_selection.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "toolkit/model.h"
 
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <cmath>
 

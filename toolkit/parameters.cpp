@@ -1,10 +1,10 @@
 #include "toolkit/parameters.h"
 
-#include "renderer/atomic_write.h"
-#include "renderer/input_error.h"
-#include "renderer/input_file.h"
-#include "toolkit/key_value_lines.h"
-#include "toolkit/key_values.h"
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "base/key_value_lines.h"
+#include "base/key_values.h"
 
 #include <cfloat>
 #include <charconv>

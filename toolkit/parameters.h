@@ -2,10 +2,10 @@
 // Saving Files): plain text, one `key = value` per line, `#` comments. It
 // holds the model file, every LoD parameter, the camera and the light.
 #pragma once
-#include "renderer/input_error.h"
+#include "base/input_error.h"
+#include "base/key_values.h"
 #include "renderer/renderer.h"
 #include "toolkit/boxes.h"
-#include "toolkit/key_values.h"
 #include "toolkit/level_modes.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
 // The manual's Statistics block (docs/design.md: Statistics) for a model.
 #pragma once
-#include "toolkit/key_values.h"
+#include "base/key_values.h"
 #include "toolkit/model.h"
 
 namespace boxlod {

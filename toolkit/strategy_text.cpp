@@ -1,7 +1,7 @@
 #include "toolkit/strategy_text.h"
 
-#include "renderer/input_error.h"
-#include "toolkit/key_values.h"
+#include "base/input_error.h"
+#include "base/key_values.h"
 
 #include <charconv>
 #include <cmath>

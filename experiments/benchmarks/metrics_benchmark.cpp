@@ -6,8 +6,8 @@
 #include "experiments/flip.h"
 #include "experiments/image_metrics.h"
 #include "experiments/silhouette.h"
-#include "toolkit/cli/render_options.h"
 #include "toolkit/drawable.h"
+#include "toolkit/framing.h"
 #include "toolkit/model_io.h"
 
 #include <benchmark/benchmark.h>
@@ -26,20 +26,20 @@ const DrawableModel& house() {
     return *drawable;
 }
 
-View house_view(int width, int height, double distance_scale, int threads) {
-    Arguments arguments;
-    arguments.values["width"] = std::to_string(width);
-    arguments.values["height"] = std::to_string(height);
-    arguments.values["threads"] = std::to_string(threads);
-    View framing = view_from_arguments(arguments, house().drawable.bounds);
-    arguments.values["distance"] = std::to_string(framing.distance * distance_scale);
-    return view_from_arguments(arguments, house().drawable.bounds);
+// The view `boxlod render` takes by default (+X+Y+Z, fovy 45, framed), `distance_scale` times as far.
+RenderSettings house_view(double distance_scale, int threads) {
+    const Framing framing = framing_of(house().drawable.bounds);
+    RenderSettings settings;
+    settings.camera = framed_camera(framing, {1, 1, 1}, float(framing_distance(framing, 45) * distance_scale), 45);
+    settings.light = light_for_camera(settings.camera);
+    settings.light.shininess = 0;  // the material's
+    settings.threads = threads;
+    return settings;
 }
 
 Image8 render_house(int width, int height, double distance_scale, int threads) {
-    View view = house_view(width, height, distance_scale, threads);
-    Frame frame = make_frame(view.width, view.height, view.background);
-    render(house().drawable.batches, view.settings, frame);
+    Frame frame = make_frame(width, height, {1, 1, 1});
+    render(house().drawable.batches, house_view(distance_scale, threads), frame);
     return frame_to_srgb8(frame);
 }
 
@@ -58,11 +58,11 @@ void set_pixels(benchmark::State& state) {
 
 void bm_render(benchmark::State& state) {
     int width = int(state.range(0)), height = int(state.range(1)), threads = int(state.range(2));
-    View view = house_view(width, height, 1.0, threads);
-    Frame frame = make_frame(view.width, view.height, view.background);
+    RenderSettings settings = house_view(1.0, threads);
+    Frame frame = make_frame(width, height, {1, 1, 1});
     for (auto _ : state) {
-        frame = make_frame(view.width, view.height, view.background);
-        render(house().drawable.batches, view.settings, frame);
+        frame = make_frame(width, height, {1, 1, 1});
+        render(house().drawable.batches, settings, frame);
         benchmark::DoNotOptimize(frame.color.data());
     }
     set_pixels(state);

@@ -4,7 +4,7 @@
 // other exception, a hang) is a bug. In every other build the same target is
 // linked with replay_main.cpp and replays its corpus as a test.
 #pragma once
-#include "renderer/input_error.h"
+#include "base/input_error.h"
 
 #include <cstddef>
 #include <cstdint>

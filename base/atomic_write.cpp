@@ -1,0 +1,217 @@
+#include "base/atomic_write.h"
+
+#include "base/input_error.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A file written inside a group, waiting as its temporary for the group's commit.
+struct PendingRename {
+    std::string temporary, path;
+};
+
+// What an interruption must remove: temporaries being written or waiting for
+// their group, and the files a group's commit has renamed so far. Guarded by
+// `mutex`; the interrupt thread takes it too.
+struct PartialOutputs {
+    std::mutex mutex;
+    std::set<std::string> temporaries;
+    std::vector<PendingRename> pending;
+    std::vector<std::string> group_files;
+    int open_groups = 0;
+};
+PartialOutputs& partial_outputs() {
+    static PartialOutputs outputs;
+    return outputs;
+}
+
+const std::string temporary_suffix = ".tmp";
+
+// "name.png.tmp1234" -> 1234; 0 when the name is not one of our temporaries.
+long temporary_owner(const std::string& filename) {
+    std::size_t at = filename.rfind(temporary_suffix);
+    if (at == std::string::npos || at + temporary_suffix.size() == filename.size()) return 0;
+    std::string digits = filename.substr(at + temporary_suffix.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return 0;
+    return std::stol(digits);
+}
+
+// Temporaries of boxlod runs that no longer exist (killed with SIGKILL).
+void remove_stale_temporaries(const fs::path& directory) {
+    std::error_code error;
+    for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+        long owner = temporary_owner(it->path().filename().string());
+        if (owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH) {
+            std::error_code ignored;
+            fs::remove(it->path(), ignored);
+        }
+    }
+}
+
+std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }
+
+// Whether `directory` takes new files: the only sure test is to make one.
+void check_writable_directory(const fs::path& directory, const std::string& path) {
+    fs::path probe = directory / (".boxlod-probe" + std::to_string(::getpid()));
+    int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0) throw_input_error(path, "", std::string("cannot write here: ") + std::strerror(errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+    remove_stale_temporaries(directory);
+}
+
+}  // namespace
+
+void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+    // The pid keeps two processes writing the same file from sharing a temporary.
+    const std::string temporary = path + temporary_suffix + std::to_string(::getpid());
+    PartialOutputs& outputs = partial_outputs();
+    {
+        std::lock_guard lock(outputs.mutex);
+        outputs.temporaries.insert(temporary);
+    }
+    try {
+        write(temporary);
+        std::lock_guard lock(outputs.mutex);
+        if (outputs.open_groups > 0) {
+            // Renamed at the group's commit: a kill before it leaves only temporaries.
+            bool known = std::any_of(outputs.pending.begin(), outputs.pending.end(),
+                                     [&](const PendingRename& p) { return p.temporary == temporary; });
+            if (!known) outputs.pending.push_back({temporary, path});
+            return;
+        }
+        std::error_code error;
+        fs::rename(temporary, path, error);
+        if (error) throw_input_error(path, "", "cannot write: " + error.message());
+        outputs.temporaries.erase(temporary);
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        std::lock_guard lock(outputs.mutex);
+        outputs.temporaries.erase(temporary);
+        throw;
+    }
+}
+
+void check_output_file(const std::string& path) {
+    std::error_code error;
+    if (path.empty()) throw_input_error("''", "", "an empty file name where an output file was expected");
+    if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
+    fs::path directory = fs::path(path).parent_path();
+    if (directory.empty()) directory = ".";
+    if (!fs::exists(directory, error)) throw_input_error(path, "", std::string("no such folder ").append(quoted(directory)));
+    if (!fs::is_directory(directory, error)) throw_input_error(path, "", quoted(directory) + " is not a folder");
+    check_writable_directory(directory, path);
+}
+
+void check_output_directory(const std::string& path) {
+    std::error_code error;
+    if (path.empty()) throw_input_error("''", "", "an empty folder name where an output folder was expected");
+    // The folder, or the nearest ancestor that exists (the rest is made when writing).
+    const fs::path wanted = fs::absolute(path, error).lexically_normal();
+    fs::path existing = wanted;
+    while (!fs::exists(existing, error) && existing.has_relative_path()) existing = existing.parent_path();
+    if (!fs::is_directory(existing, error))
+        throw_input_error(path, "", existing == wanted ? "exists and is not a folder" : quoted(existing) + " is not a folder");
+    check_writable_directory(existing, path);
+}
+
+OutputGroup::OutputGroup() {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
+    ++outputs.open_groups;
+    first_pending_ = outputs.pending.size();
+}
+
+void OutputGroup::commit() {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
+    if (outputs.open_groups > 1) {  // an inner group: the outermost decides
+        committed_ = true;
+        return;
+    }
+    // Renamed in the order written, so the file naming the others (a .gltf) comes
+    // last; the interrupt thread cannot run between two renames (it needs the mutex).
+    for (const PendingRename& file : outputs.pending) {
+        std::error_code error;
+        // Take back only the files this group made: one it replaced (a texture
+        // shared with a level written before) may be needed by others.
+        bool made = !fs::exists(file.path, error);
+        fs::rename(file.temporary, file.path, error);
+        if (error) throw_input_error(file.path, "", "cannot write: " + error.message());
+        outputs.temporaries.erase(file.temporary);
+        if (made) outputs.group_files.push_back(file.path);
+    }
+    outputs.pending.clear();
+    outputs.group_files.clear();
+    committed_ = true;
+}
+
+OutputGroup::~OutputGroup() {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
+    if (!committed_) {
+        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i) {
+            std::error_code ignored;
+            fs::remove(outputs.pending[i].temporary, ignored);
+            outputs.temporaries.erase(outputs.pending[i].temporary);
+        }
+        outputs.pending.resize(std::min(first_pending_, outputs.pending.size()));
+        for (const std::string& file : outputs.group_files) {  // a commit that failed half way
+            std::error_code ignored;
+            fs::remove(file, ignored);
+        }
+        outputs.group_files.clear();
+    }
+    --outputs.open_groups;
+}
+
+void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes) {
+    write_atomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        out.close();
+        if (!out) throw_input_error(path, "", "cannot write file");
+    });
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+    write_file_atomically(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+void remove_partial_outputs_on_interrupt() {
+    // Blocked here, so in every thread started later: only the thread below
+    // receives them, with sigwait, where taking a mutex and removing files is safe.
+    static sigset_t signals;
+    sigemptyset(&signals);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals, s);
+    if (pthread_sigmask(SIG_BLOCK, &signals, nullptr) != 0) return;
+    std::thread([] {
+        int signal = 0;
+        if (sigwait(&signals, &signal) != 0) return;
+        PartialOutputs& outputs = partial_outputs();
+        outputs.mutex.lock();  // held until the end: no file is renamed after this
+        for (const std::string& file : outputs.temporaries) ::unlink(file.c_str());
+        for (const std::string& file : outputs.group_files) ::unlink(file.c_str());
+        std::fprintf(stderr, "boxlod: interrupted (signal %d); partial outputs removed\n", signal);
+        std::_Exit(128 + signal);
+    }).detach();
+}
+
+}  // namespace boxlod

@@ -1,0 +1,103 @@
+#include "base/command_line.h"
+
+#include "base/input_error.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace boxlod {
+
+std::string Arguments::text(const std::string& name, const std::string& fallback) const {
+    auto it = values.find(name);
+    return it == values.end() ? fallback : it->second;
+}
+
+double Arguments::number(const std::string& name, double fallback) const {
+    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as a number but declares no range");
+    auto it = values.find(name);
+    if (it == values.end()) return fallback;
+    double value = 0;
+    const std::string& s = it->second;
+    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+    if (error != std::errc() || end != s.data() + s.size() || !std::isfinite(value))
+        throw InputError("--" + name + ": expected a number, got '" + s + "'");
+    return value;
+}
+
+int Arguments::integer(const std::string& name, int fallback) const {
+    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as an integer but declares no range");
+    auto it = values.find(name);
+    if (it == values.end()) return fallback;
+    int value = 0;
+    const std::string& s = it->second;
+    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+    if (error != std::errc() || end != s.data() + s.size())
+        throw InputError("--" + name + ": expected an integer, got '" + s + "'");
+    return value;
+}
+
+Arguments parse_arguments(const Command& command, const std::vector<std::string>& words) {
+    Arguments arguments;
+    std::string prefix = "boxlod " + command.name + ": ";
+    for (const Option& o : command.options)
+        if (o.range) arguments.ranges[o.name] = *o.range;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const std::string& word = words[i];
+        if (word == "--help" || word == "-h") {
+            arguments.values["help"] = "";
+            return arguments;
+        }
+        bool long_form = word.size() > 2 && word.compare(0, 2, "--") == 0;
+        bool short_form = word.size() == 2 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+        if (long_form || short_form) {
+            std::string name = long_form ? word.substr(2) : word, value;
+            if (short_form)
+                for (const Option& o : command.options)
+                    if (o.short_name == word[1]) name = o.name;
+            std::size_t equals = name.find('=');
+            bool inline_value = equals != std::string::npos;
+            if (inline_value) value = name.substr(equals + 1), name = name.substr(0, equals);
+            const Option* option = nullptr;
+            for (const Option& o : command.options)
+                if (o.name == name) option = &o;
+            if (!option) throw InputError(prefix + "unknown option " + (short_form ? name : "--" + name) + " (see --help)");
+            if (!option->value_name.empty() && !inline_value) {
+                if (i + 1 >= words.size()) throw InputError(prefix + "--" + name + " needs a value " + option->value_name);
+                value = words[++i];
+            } else if (option->value_name.empty() && inline_value) {
+                throw InputError(prefix + "--" + name + " takes no value");
+            }
+            if (option->range) {
+                double number = 0;
+                auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
+                if (error != std::errc() || end != value.data() + value.size() || !option->range->contains(number))
+                    throw InputError(prefix + "--" + name + ": " + out_of_range_message(*option->range, value));
+            }
+            arguments.values[name] = value;
+        } else {
+            arguments.positionals.push_back(word);
+        }
+    }
+    std::size_t n = arguments.positionals.size();
+    if (n < command.min_positionals || n > command.max_positionals)
+        throw InputError(prefix + "expected " + (command.arguments.empty() ? "no arguments" : command.arguments) +
+                         ", got " + std::to_string(n) + " argument(s) (see --help)");
+    return arguments;
+}
+
+std::string help_text(const Command& command) {
+    std::string out = "usage: boxlod " + command.name + (command.arguments.empty() ? "" : " " + command.arguments) +
+                      " [options]\n\n" + command.summary + "\n\noptions:\n";
+    for (const Option& o : command.options) {
+        std::string left = std::string(o.short_name ? std::string("  -") + o.short_name + ", " : "  ") + "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+        if (left.size() < 28) left.resize(28, ' ');
+        else left += "\n" + std::string(28, ' ');
+        out += left + o.help + "\n";
+    }
+    out += std::string("  --help") + std::string(20, ' ') + "show this help\n";
+    return out;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,50 @@
+// A small command-line parser shared by every `boxlod` subcommand: options
+// are declared once and the same declaration produces --help.
+#pragma once
+#include "base/input_error.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+// Seeds are the non-negative ints.
+constexpr NumberRange seed_range{0, 2147483647};
+
+struct Option {
+    std::string name;        // without the leading "--"
+    std::string value_name;  // empty: a flag without value
+    std::string help;
+    std::optional<NumberRange> range = std::nullopt;  // a numeric option's accepted values, checked while parsing
+    char short_name = 0;               // e.g. 'o' for -o
+};
+
+struct Command {
+    std::string name;
+    std::string arguments;  // e.g. "MODEL"
+    std::string summary;
+    std::vector<Option> options;
+    std::size_t min_positionals = 0, max_positionals = 0;
+};
+
+struct Arguments {
+    std::vector<std::string> positionals;
+    std::map<std::string, std::string> values;  // flags map to ""
+    std::map<std::string, NumberRange> ranges;  // of every numeric option declared
+
+    // number() and integer() read only options declared with a range: a
+    // number without one is a programming error (std::logic_error).
+    bool has(const std::string& name) const { return values.count(name) != 0; }
+    std::string text(const std::string& name, const std::string& fallback = "") const;
+    double number(const std::string& name, double fallback) const;
+    int integer(const std::string& name, int fallback) const;
+};
+
+// Throws InputError ("boxlod NAME: ...") on an unknown option, a missing value,
+// a number outside its option's range or a wrong number of positional arguments. `--help` is returned as a flag.
+Arguments parse_arguments(const Command& command, const std::vector<std::string>& words);
+std::string help_text(const Command& command);
+
+}  // namespace boxlod

@@ -1,0 +1,36 @@
+#include "base/key_value_lines.h"
+
+#include "base/input_error.h"
+
+#include <map>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+std::string trim(const std::string& s) {
+    std::size_t begin = s.find_first_not_of(" \t\r"), end = s.find_last_not_of(" \t\r");
+    return begin == std::string::npos ? "" : s.substr(begin, end - begin + 1);
+}
+
+}  // namespace
+
+std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const std::string& file) {
+    std::vector<KeyValueLine> lines;
+    std::map<std::string, int> first_line;
+    std::istringstream in(text);
+    std::string raw;
+    for (int number = 1; std::getline(in, raw); ++number) {
+        std::string content = trim(raw.substr(0, raw.find('#')));
+        if (content.empty()) continue;
+        std::size_t equals = content.find('=');
+        if (equals == std::string::npos) throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");
+        std::string key = trim(content.substr(0, equals));
+        if (auto [first, added] = first_line.emplace(key, number); !added)
+            throw_input_error(file, "line " + std::to_string(number) + ": " + key, "given twice (first on line " + std::to_string(first->second) + ")");
+        lines.push_back({number, key, trim(content.substr(equals + 1))});
+    }
+    return lines;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,62 @@
+#include "base/key_values.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace boxlod {
+
+std::string format_number(double value) {
+    if (value == 0) return "0";  // also turns -0 into 0
+    char buffer[64];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string format_number(float value) {
+    if (value == 0) return "0";
+    char buffer[64];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+KeyValue float_entry(std::string key, float value) { return {std::move(key), format_number(value), true}; }
+KeyValue number_entry(std::string key, double value) { return {std::move(key), format_number(value), true}; }
+KeyValue text_entry(std::string key, std::string value) { return {std::move(key), std::move(value), false}; }
+
+std::string value_of(const KeyValues& entries, const std::string& key) {
+    for (const KeyValue& e : entries)
+        if (e.key == key) return e.value;
+    return "";
+}
+
+std::string format_key_values(const KeyValues& entries) {
+    std::string out;
+    for (const KeyValue& e : entries) out += e.key + " = " + e.value + "\n";
+    return out;
+}
+
+namespace {
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\') out += '\\', out += char(c);
+        else if (c < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            out += escaped;
+        } else out += char(c);
+    }
+    return out + "\"";
+}
+}  // namespace
+
+std::string format_json(const KeyValues& entries) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const KeyValue& e = entries[i];
+        out += (i ? ",\n  " : "\n  ") + json_string(e.key) + ": " + (e.number ? e.value : json_string(e.value));
+    }
+    return out + "\n}\n";
+}
+
+}  // namespace boxlod

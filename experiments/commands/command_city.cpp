@@ -1,0 +1,157 @@
+#include "base/atomic_write.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "data_gen/city.h"
+#include "experiments/camera_path.h"
+#include "experiments/commands/commands.h"
+#include "experiments/flip.h"
+#include "experiments/fly_through.h"
+#include "toolkit/parameters.h"
+#include "toolkit/strategy_text.h"
+
+#include <cmath>
+#include <cstdio>
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+const std::string prefix = "boxlod city: ";
+
+constexpr NumberRange detail_range{1e-3, 1e3};
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw InputError(prefix + what);
+}
+
+int run_city(const Arguments& arguments) {
+    // Every input is checked before anything is generated or written.
+    require(arguments.has("output"), "-o/--output OUTDIR is required");
+    check_output_directory(arguments.text("output"));
+    FlyThroughOptions options;
+    options.strategy = parse_strategy(arguments.text("strategy", "texel"), "--strategy");
+    CityOptions city;
+    city.buildings = arguments.integer("buildings", 9);
+    city.seed = std::uint64_t(arguments.integer("seed", 0));
+    int frames = arguments.integer("frames", 60);
+    options.width = arguments.integer("width", options.width);
+    options.height = arguments.integer("height", options.height);
+    options.fovy = float(arguments.number("fovy", options.fovy));
+    options.hysteresis = arguments.number("hysteresis", options.hysteresis);
+    if (arguments.has("budget")) {
+        double budget = arguments.number("budget", 0);
+        require(budget == std::floor(budget), "--budget takes a whole number of faces");
+        options.face_budget = std::size_t(budget);
+    }
+    options.error_every = arguments.integer("error-every", options.error_every);
+    options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
+    if (arguments.has("level-mode"))
+        require(parse_level_mode(arguments.text("level-mode"), options.levels.level_mode),
+                "--level-mode: unknown level mode '" + arguments.text("level-mode") + "' (" + enum_names(level_modes()) + ")");
+    options.levels.wanted_levels = arguments.integer("levels", options.levels.wanted_levels);
+    options.levels.keep_small_subtrees = arguments.has("keep-small-subtrees");
+    options.levels.keep_cheaper_subtrees = arguments.has("keep-cheaper-subtrees");
+    options.base_distance = float(arguments.number("base-distance", options.base_distance));
+    std::vector<double> details;
+    {
+        std::stringstream list(arguments.text("detail", "1"));
+        for (std::string item; std::getline(list, item, ',');) {
+            char* end = nullptr;
+            double detail = std::strtod(item.c_str(), &end);
+            require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
+                        std::find(details.begin(), details.end(), detail) == details.end(),
+                    "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" + arguments.text("detail") + "'");
+            details.push_back(detail);
+        }
+        require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
+    }
+    options.threads = arguments.integer("threads", 0);
+    require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
+    std::string path_name = arguments.text("path", "orbit");
+    bool built_in = path_name == "orbit" || path_name == "street";
+    std::vector<Keyframe> keys;
+    if (!built_in) keys = load_keyframes(path_name);
+
+    Model model = generate_city(city);
+    std::vector<CameraPose> path =
+        built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
+    const std::string& output = arguments.text("output");
+    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, output, stderr);
+
+    namespace fs = std::filesystem;
+    KeyValues report{text_entry("output", output),
+                     text_entry("frames_csv", (fs::path(output) / "frames.csv").string()),
+                     text_entry("strategy", format_strategy(options.strategy)),
+                     text_entry("path", path_name),
+                     number_entry("frames", double(runs.front().frames)),
+                     number_entry("buildings", double(runs.front().buildings)),
+                     number_entry("max_level", double(runs.front().level_totals.size() - 1)),
+                     number_entry("build_seconds", runs.front().build_seconds)};
+    // One detail: its figures as they are; several: each under detail_<K>.
+    for (const FlyThroughReport& r : runs) {
+        std::string key = runs.size() == 1 ? "" : "detail_" + format_number(r.detail) + ".";
+        report.push_back(number_entry(key + "detail", r.detail));
+        report.push_back(number_entry(key + "faces_mean", r.faces_mean));
+        report.push_back(number_entry(key + "faces_min", double(r.faces_min)));
+        report.push_back(number_entry(key + "faces_max", double(r.faces_max)));
+        for (std::size_t c = 0; c < r.level_totals.size(); ++c)
+            report.push_back(number_entry(key + "level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
+        report.push_back(number_entry(key + "levels_changed", double(r.levels_changed)));
+        report.push_back(number_entry(key + "sampled_frames", double(r.sampled_frames)));
+        if (r.sampled_frames) {
+            report.push_back(number_entry(key + "psnr_mean", r.psnr_mean));
+            report.push_back(number_entry(key + "ssim_mean", r.ssim_mean));
+            report.push_back(number_entry(key + "flip_mean", r.flip_mean));
+        }
+        report.push_back(number_entry(key + "select_seconds", r.select_seconds));
+        report.push_back(number_entry(key + "render_seconds", r.render_seconds));
+        report.push_back(number_entry(key + "render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
+        report.push_back(number_entry(key + "error_seconds", r.error_seconds));
+        report.push_back(number_entry(key + "seconds", r.total_seconds));
+    }
+    std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand city_subcommand() {
+    return {{"city", "",
+             "Fly through a generated city with run-time LoD selection. Every building gets its own LoD, built once "
+             "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
+             "(with hysteresis, optionally under a face budget). Writes OUTDIR/frames/frame_NNNN.png, "
+             "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
+             "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
+             "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
+             {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
+              {"buildings", "N", "buildings in the city (default 9)", NumberRange{1, 10000}},
+              {"seed", "S", "the city's seed (default 0)", seed_range},
+              {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
+                                "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
+              {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
+              {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
+              {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},
+              {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)", NumberRange{16, 8192}},
+              {"fovy", "DEGREES", "vertical field of view (default 45)", parameter_range::fovy},
+              {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
+              {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
+                                      "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
+                                      "levels, images under OUTDIR/detail_K/"},
+              {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
+              {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
+              {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
+              {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
+              {"levels", "N", "wanted levels for the box modes (default 8)", parameter_range::wanted_levels},
+              {"keep-small-subtrees", "", "no box for a sub-tree of at most 6 faces (as build --keep-small-subtrees)"},
+              {"keep-cheaper-subtrees", "", "no box costing more bytes than its sub-tree's mesh (as build --keep-cheaper-subtrees)"},
+              {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
+              {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             0, 0},
+            run_city};
+}
+
+}  // namespace boxlod

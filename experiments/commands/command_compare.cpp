@@ -1,0 +1,117 @@
+#include "base/atomic_write.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "experiments/commands/commands.h"
+#include "experiments/heatmap.h"
+#include "experiments/image_metrics.h"
+#include "experiments/metric_registry.h"
+#include "toolkit/commands/render_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+namespace boxlod {
+
+namespace {
+
+std::vector<Metric> metrics_option(const std::string& list) {
+    std::vector<std::string> names;
+    std::stringstream words(list);
+    for (std::string word; std::getline(words, word, ',');) names.push_back(word);
+    if (names.empty()) throw InputError("boxlod compare: --metric: expected a list such as rmse,psnr");
+    return parse_metrics(names, "boxlod compare: --metric");
+}
+
+void require_same_size(const Image8& a, const std::string& a_name, const Image8& b, const std::string& b_name) {
+    if (a.width == b.width && a.height == b.height) return;
+    throw_input_error(b_name, "", std::to_string(b.width) + "x" + std::to_string(b.height) + " differs in size from " +
+                                      a_name + " (" + std::to_string(a.width) + "x" + std::to_string(a.height) + ")");
+}
+
+// A number, or `inf` (a JSON string) for the PSNR of identical images.
+KeyValue metric_entry(const std::string& key, double value) {
+    if (std::isinf(value)) return {key, value > 0 ? "inf" : "-inf", false};
+    return number_entry(key, value);
+}
+
+// The two coverages iou compares: from --mask-a/--mask-b, else the pixels that differ from the background.
+std::pair<Coverage, Coverage> silhouettes(const Arguments& arguments, const Image8& a, const Image8& b) {
+    if (arguments.has("mask-a") != arguments.has("mask-b"))
+        throw InputError("boxlod compare: --mask-a and --mask-b go together");
+    if (arguments.has("mask-a")) {
+        Image8 mask_a = read_image(arguments.text("mask-a")), mask_b = read_image(arguments.text("mask-b"));
+        require_same_size(a, arguments.positionals[0], mask_a, arguments.text("mask-a"));
+        require_same_size(a, arguments.positionals[0], mask_b, arguments.text("mask-b"));
+        return {coverage_from_mask(mask_a), coverage_from_mask(mask_b)};
+    }
+    // boxlod render's background, white unless told otherwise (sRGB components in [0, 1]).
+    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background", "1,1,1"), colour_range);
+    std::array<std::uint8_t, 3> background{};
+    for (int c = 0; c < 3; ++c) background[c] = std::uint8_t(std::lround(srgb[c] * 255));
+    return {coverage_from_background(a, background), coverage_from_background(b, background)};
+}
+
+int run_compare(const Arguments& arguments) {
+    const std::string& a_name = arguments.positionals[0];
+    const std::string& b_name = arguments.positionals[1];
+    const std::vector<Metric> asked = metrics_option(arguments.text("metric", enum_names(metrics(), ",")));
+    std::string heatmap_metric = arguments.text("heatmap-metric", "flip");
+    if (heatmap_metric != "flip" && heatmap_metric != "rmse")
+        throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
+    if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"));
+    double ppd = arguments.number("ppd", 67);
+    int threads = arguments.integer("threads", 0);
+
+    Image8 a = read_image(a_name), b = read_image(b_name);
+    require_same_size(a, a_name, b, b_name);
+    auto asks = [&](Metric m) { return std::find(asked.begin(), asked.end(), m) != asked.end(); };
+    if (asks(Metric::ssim) && (a.width < 11 || a.height < 11))
+        throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");
+    std::optional<std::pair<Coverage, Coverage>> coverages;
+    if (asks(Metric::iou)) coverages = silhouettes(arguments, a, b);
+
+    // A FLIP heat map needs FLIP's error map: measured once, with the metrics asked for or after them.
+    std::vector<Metric> measured_metrics = asked;
+    if (arguments.has("heatmap") && heatmap_metric == "flip" && !asks(Metric::flip)) measured_metrics.push_back(Metric::flip);
+    MetricPair pair{a, b};
+    if (coverages) pair.reference_coverage = &coverages->first, pair.test_coverage = &coverages->second;
+    pair.pixels_per_degree = ppd;
+    pair.threads = threads;
+    MetricValues measured = measure_metrics(measured_metrics, pair);
+    KeyValues report;
+    for (std::size_t i = 0; i < asked.size(); ++i) report.push_back(metric_entry(enum_name(metrics(), asked[i]), measured.values[i]));
+    if (arguments.has("heatmap")) {
+        Plane error = heatmap_metric == "flip" ? std::move(*measured.flip_error) : rgb_error_map(a, b);
+        write_png(arguments.text("heatmap"), error_heatmap(error));
+        report.push_back(text_entry("heatmap", arguments.text("heatmap")));
+    }
+    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand compare_subcommand() {
+    return {{"compare", "A.png B.png",
+             "Compare two images of the same size: RMSE and PSNR (dB) of the sRGB values in [0, 1] (psnr = inf for "
+             "identical images), SSIM on BT.601 luma (as scikit-image's structural_similarity, Gaussian sigma 1.5), "
+             "mean FLIP (LDR), and the silhouette IoU.",
+             {{"metric", "LIST", "comma-separated metrics among " + enum_names(metrics(), ",") + " (default: all)"},
+              {"heatmap", "FILE", "write a PNG of the per-pixel error (black, red, yellow, white = 0 .. 1)"},
+              {"heatmap-metric", "NAME", "the heat map's error: flip (default) or rmse (per-pixel RMS over RGB)"},
+              {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)", pixels_per_degree_range},
+              {"mask-a", "FILE", "coverage mask of A for iou (covered where > 127; e.g. from render --coverage)"},
+              {"mask-b", "FILE", "coverage mask of B for iou"},
+              {"background", "R,G,B", "without masks, iou counts pixels differing from this sRGB colour in [0, 1] "
+                                      "(default 1,1,1, the render background)"},
+              {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             2, 2},
+            run_compare};
+}
+
+}  // namespace boxlod

@@ -1,0 +1,58 @@
+// `boxlod simplify`: the classic baseline, quadric edge-collapse simplification.
+#include "base/atomic_write.h"
+#include "base/parallel.h"
+#include "base/timing.h"
+#include "experiments/commands/commands.h"
+#include "experiments/simplification.h"
+#include "toolkit/model_io.h"
+#include "toolkit/statistics.h"
+
+#include <cstdio>
+
+namespace boxlod {
+namespace {
+
+int run_simplify(const Arguments& arguments) {
+    const std::string prefix = "boxlod simplify: ";
+    if (!arguments.has("output")) throw InputError(prefix + "-o/--output OUT.gltf|OUT.glb is required");
+    if (!arguments.has("faces")) throw InputError(prefix + "--faces N is required");
+    check_output_file(arguments.text("output"));
+    const int faces = arguments.integer("faces", 0);
+    SimplifyOptions options;
+    options.lock_border = arguments.has("lock-border");
+    options.threads = arguments.integer("threads", 0);
+
+    Model model = load_model(arguments.positionals[0]);
+    auto start = Clock::now();
+    Model simplified = simplify_model(model, std::size_t(faces), options);
+    double seconds = seconds_since(start);
+    save_model(simplified, arguments.text("output"));
+
+    MeshCounts original = mesh_counts(model), result = mesh_counts(simplified);
+    KeyValues report = {text_entry("output", arguments.text("output")),
+                        number_entry("faces_original", double(original.faces)),
+                        number_entry("faces", double(result.faces)),
+                        number_entry("triangles", double(result.triangles)),
+                        number_entry("vertices", double(result.vertices)),
+                        number_entry("seconds", seconds)};
+    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand simplify_subcommand() {
+    return {{"simplify", "MODEL",
+             "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
+             "baseline LoD. Materials and textures are kept, geometry is merged into one node per material.",
+             {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
+              {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
+              {"lock-border", "", "never move vertices on open mesh borders"},
+              {"threads", "N", "threads, one material at a time (default: all cores)", thread_count_range},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             1, 1},
+            run_simplify};
+}
+
+}  // namespace boxlod

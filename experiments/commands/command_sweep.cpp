@@ -1,0 +1,55 @@
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "experiments/commands/commands.h"
+#include "experiments/sweep.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+
+int run_sweep_command(const Arguments& arguments) {
+    if (!arguments.has("output")) throw InputError("boxlod sweep: -o/--output OUTDIR is required");
+    check_output_directory(arguments.text("output"));
+    int threads = arguments.integer("threads", -1);  // -1: the config's
+    SweepConfig config = load_sweep_config(arguments.positionals[0]);
+    const std::string& output = arguments.text("output");
+    SweepReport r = run_sweep(config, output, threads, stderr);
+    KeyValues report{text_entry("results", (std::filesystem::path(output) / "results.csv").string()),
+                     text_entry("timings", (std::filesystem::path(output) / "timings.csv").string()),
+                     number_entry("rows", double(r.rows)),
+                     number_entry("rows_computed", double(r.rows_computed)),
+                     number_entry("rows_skipped", double(r.rows_skipped)),
+                     number_entry("lods_built", double(r.lods_built)),
+                     number_entry("lod_renders", double(r.lod_renders)),
+                     number_entry("original_renders", double(r.original_renders)),
+                     number_entry("boxes_seconds", r.boxes_seconds),
+                     number_entry("build_seconds", r.build_seconds),
+                     number_entry("render_seconds", r.render_seconds),
+                     number_entry("metric_seconds", r.metric_seconds),
+                     number_entry("seconds", r.total_seconds)};
+    std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand sweep_subcommand() {
+    return {{"sweep", "CONFIG",
+             "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x render mode "
+             "of CONFIG (key = value lines: models, level_modes, box_kinds, interpolations, levels, wanted_levels, "
+             "views, distances, render_modes, width, height, fovy, metrics, ppd, resolution, sizing, baselines, "
+             "keep_small_subtrees, keep_cheaper_subtrees, keep_images, threads), "
+             "each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
+             "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
+             {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, 'o'},
+              {"threads", "N", "threads to use (default: the config's threads, 0 = all cores)", thread_count_range},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             1, 1},
+            run_sweep_command};
+}
+
+}  // namespace boxlod

@@ -1,0 +1,162 @@
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/parallel.h"
+#include "base/timing.h"
+#include "renderer/image.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/commands/lod_options.h"
+#include "toolkit/cost.h"
+#include "toolkit/lod_export.h"
+#include "toolkit/model_io.h"
+#include "toolkit/parameters.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+// --level-distances: the sizing distance of each level 1..N. `auto` doubles the
+// model's sizing distance d per level, d_c = d * 2^(c-1) (the rule `boxlod city`
+// uses): level c is used from d_c on, where its texels match the screen's pixels.
+std::vector<float> level_distances(const std::string& text, float distance, int levels) {
+    std::vector<float> distances;
+    if (text == "auto") {
+        for (int c = 1; c <= levels; ++c) distances.push_back(distance * std::ldexp(1.0f, c - 1));
+        return distances;
+    }
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const double d = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)
+            throw InputError("--level-distances: '" + item + "' is not a distance in [0.001, 1000000] m");
+        if (!distances.empty() && float(d) < distances.back())
+            throw InputError("--level-distances: " + item + " comes after " + format_number(distances.back()) +
+                             ": the distances must ascend, one per level 1.." + std::to_string(levels));
+        distances.push_back(float(d));
+    }
+    if (int(distances.size()) != levels)
+        throw InputError("--level-distances: " + std::to_string(distances.size()) + " distances for " +
+                         std::to_string(levels) + " levels (1.." + std::to_string(levels) + "), or auto");
+    return distances;
+}
+
+// What levels 1..N cost shipped together (a texture shared by levels paid
+// once), and their textures against those of the finest level with pages.
+KeyValues chain_report(const std::string& name, const std::vector<CostParts>& levels, int finest_textured) {
+    std::vector<const CostParts*> all;
+    for (const CostParts& level : levels) all.push_back(&level);
+    const ModelCost chain = combined_cost(all);
+    KeyValues report{text_entry("name", name + "_chain")};
+    const KeyValues cost = cost_entries(chain, "_chain");
+    report.insert(report.end(), cost.begin(), cost.end());
+    if (finest_textured >= 0) {
+        const ModelCost finest = combined_cost({&levels[std::size_t(finest_textured)]});
+        report.push_back(number_entry("finest_textured_level", finest_textured + 1));
+        report.push_back(number_entry("chain_texture_ratio", double(chain.texture_bytes_gpu) / double(finest.texture_bytes_gpu)));
+    }
+    return report;
+}
+
+int run_build(const Arguments& a) {
+    LodParameters parameters = lod_parameters_from(a);
+    if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
+        check_output_file(a.text("save-params"));
+        save_parameters(a.text("save-params"), parameters);
+        std::printf("params = %s\n", a.text("save-params").c_str());
+        return 0;
+    }
+    if (!a.has("output")) throw InputError("boxlod build: -o/--output OUTDIR is required");
+    check_output_directory(a.text("output"));
+    int threads = a.integer("threads", 0);
+    int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
+    Model model = load_model(parameters.model);
+    std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos)
+        throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
+    if (a.has("level-distances") && !a.has("all-levels")) throw InputError("--level-distances needs --all-levels");
+    auto first = start_lod(model, parameters, threads);
+    int obtained = first->levels.obtained_levels;
+    std::vector<int> levels;
+    if (a.has("all-levels"))
+        for (int c = 0; c <= obtained; ++c) levels.push_back(c);
+    else
+        levels.push_back(parameters.current_level);
+    // One session per sizing distance (a session bakes for one distance); boxes and level values computed once.
+    std::vector<float> distances;
+    if (a.has("level-distances")) distances = level_distances(a.text("level-distances"), first->parameters.distance, obtained);
+    std::map<float, std::unique_ptr<LodSession>> sessions;
+    auto session_for = [&](int level) -> LodSession& {
+        if (distances.empty() || level == 0) return *first;
+        std::unique_ptr<LodSession>& session = sessions[distances[std::size_t(level - 1)]];
+        if (!session) {
+            LodParameters sized = first->parameters;
+            sized.distance = distances[std::size_t(level - 1)];
+            session = start_lod(model, sized, threads, &first->boxes);
+        }
+        return *session;
+    };
+    std::vector<CostParts> chain;  // levels 1..N, for the chain's cost
+    int finest_textured = -1;
+    for (int level : levels) {
+        LodSession* session = &session_for(level);
+        Lod lod = build_lod(*session, level, threads);
+        if (level >= 1) chain.push_back(lod.cost);
+        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
+        std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
+        auto start = Clock::now();
+        Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
+        KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
+        report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+        export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
+        session->times.write += seconds_since(start);
+        std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
+        std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
+    }
+    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain, finest_textured)).c_str(), stdout);
+    if (a.has("timings")) {
+        LodTimes t = first->times;
+        for (const auto& [distance, session] : sessions) {
+            t.bake += session->times.bake, t.pack += session->times.pack;
+            t.mesh += session->times.mesh, t.write += session->times.write;
+        }
+        KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
+                        number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
+                        number_entry("time_mesh", t.mesh), number_entry("time_write", t.write)};
+        std::fputs(format_key_values(times).c_str(), stdout);
+    }
+    return 0;
+}
+
+}  // namespace
+
+Subcommand build_subcommand() {
+    Subcommand build{{"build", "MODEL|PARAMS.txt",
+             "Build a textured-box LoD: level values, boxes, baked face textures, atlas pages, LoD mesh; writes "
+             "NAME.gltf/.bin, NAME_{color,normal,height}_K.png, NAME.params.txt, NAME.preview.png, NAME.stats.txt.",
+             {
+                 {"output", "OUTDIR", "folder for the files (required)", {}, 'o'},
+                 {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
+                 {"save-params", "FILE", "write the parameter file and stop"},
+                 {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
+                 {"level-distances", "auto|D1,...,DN",
+                  "with --all-levels: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
+                  "the sizing distance x 2^(c-1), so each level is as sharp as the screen where it is used"},
+                 {"preview-width", "W", "preview image width (default 1024)", image_side_range},
+                 {"preview-height", "H", "preview image height (default 768)", image_side_range},
+                 {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},
+                 {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+             },
+             1, 1},
+            run_build};
+    std::vector<Option> lod = lod_options();
+    build.command.options.insert(build.command.options.begin() + 3, lod.begin(), lod.end());
+    return build;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,25 @@
+#include "base/atomic_write.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/model_io.h"
+
+#include <cstdio>
+
+namespace boxlod {
+
+static int run_convert(const Arguments& arguments) {
+    if (!arguments.has("output")) throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
+    check_output_file(arguments.text("output"));
+    Model model = load_model(arguments.positionals[0]);
+    save_model(model, arguments.text("output"));
+    std::printf("output = %s\n", arguments.text("output").c_str());
+    return 0;
+}
+
+Subcommand convert_subcommand() {
+    return {{"convert", "MODEL", "Convert any model boxlod reads into glTF (.gltf + .bin + textures, or one .glb), "
+                                 "hierarchy, scopes and rules kept.",
+             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'}}, 1, 1},
+            run_convert};
+}
+
+}  // namespace boxlod

@@ -1,0 +1,83 @@
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "base/timing.h"
+#include "toolkit/boxes.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/level_modes.h"
+#include "toolkit/model_io.h"
+#include "toolkit/parameters.h"
+
+#include <cstdio>
+
+namespace boxlod {
+
+static int run_levels(const Arguments& arguments) {
+    const std::string prefix = "boxlod levels: ";
+    const LodParameters defaults;  // the same defaults as `boxlod build`
+    if (!arguments.has("level-mode")) throw InputError(prefix + "--level-mode M is required (see --help)");
+    LevelMode mode{};
+    if (!parse_level_mode(arguments.text("level-mode"), mode))
+        throw InputError(prefix + "--level-mode: unknown mode '" + arguments.text("level-mode") + "'");
+    BoxKind kind = defaults.box_kind;
+    if (arguments.has("box") && !parse_box_kind(arguments.text("box"), kind))
+        throw InputError(prefix + "--box: expected " + enum_names(box_kinds(), ", ", " or ") + ", got '" + arguments.text("box") + "'");
+    Interpolation interpolation = defaults.interpolation;
+    if (arguments.has("interpolation") && !parse_interpolation(arguments.text("interpolation"), interpolation))
+        throw InputError(prefix + "--interpolation: expected " + enum_names(interpolations(), ", ", " or ") + ", got '" +
+                         arguments.text("interpolation") + "'");
+    const int wanted_levels = arguments.integer("wanted-levels", defaults.wanted_levels);
+    const int threads = arguments.integer("threads", 0);
+
+    const std::string& path = arguments.positionals[0];
+    Model model = load_model(path);
+    if (model.is_lod) throw InputError(path + ": an LoD exported by boxlod cannot be simplified again");
+
+    // Only the box modes look at boxes.
+    std::vector<std::optional<OrientedBox>> boxes;
+    if (is_box_mode(mode)) {
+        const auto start = Clock::now();
+        MinimalBoxCounts counts;
+        boxes = node_boxes(model, kind, threads, counts);
+                std::fprintf(stderr, "boxes: %.3f s on %d thread(s); minimal boxes for %zu nodes: %zu solved, %zu reused\n",
+                     seconds_since(start), thread_count(threads), counts.nodes, counts.computed, counts.reused);
+    }
+    LevelValues values = compute_level_values(model, mode, wanted_levels, interpolation, boxes);
+
+    KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};
+    if (is_box_mode(mode)) {
+        report.push_back(text_entry("box_kind", box_kind_name(kind)));
+        report.push_back(text_entry("interpolation", interpolation_name(interpolation)));
+        report.push_back(number_entry("wanted_levels", wanted_levels));
+    }
+    report.push_back(number_entry("obtained_levels", values.obtained_levels));
+    report.push_back(number_entry("nodes", double(model.nodes.size())));
+    for (std::size_t i = 0; i < values.level.size(); ++i)
+        report.push_back(number_entry("level." + std::to_string(i), values.level[i]));
+    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
+    std::fputs(out.c_str(), stdout);
+    return 0;
+}
+
+Subcommand levels_subcommand() {
+    const LodParameters defaults;
+    return {{"levels",
+             "MODEL",
+             "Print every node's level value (level.K = L for node K) and the obtained number of levels.",
+             {{"level-mode", "M",
+               enum_names(level_modes(), ", ", " or ") + " (required)"},
+              {"wanted-levels", "N",
+               "number of levels for the box modes (default " + std::to_string(defaults.wanted_levels) + ")", parameter_range::wanted_levels},
+              {"box", "KIND",
+               "boxes for the box modes: " + enum_names(box_kinds(), ", ", " or ") + " (default " +
+                   box_kind_name(defaults.box_kind) + ")"},
+              {"interpolation", "I",
+               "box modes: " + enum_names(interpolations(), ", ", " or ") + " of the box value (default " +
+                   interpolation_name(defaults.interpolation) + ")"},
+              {"threads", "N", "threads for the boxes (default: all cores)", thread_count_range},
+              {"json", "", "print one JSON object instead of key = value lines"}},
+             1,
+             1},
+            run_levels};
+}
+
+}  // namespace boxlod

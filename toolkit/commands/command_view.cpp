@@ -1,0 +1,239 @@
+// `boxlod view`: the interactive viewer (SDL2) over the software renderer.
+#include "base/atomic_write.h"
+#include "base/input_file.h"
+#include "renderer/overlays.h"
+#include "renderer/text_overlay.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/commands/lod_options.h"
+#include "toolkit/commands/render_options.h"
+#include "toolkit/commands/viewer_state.h"
+#include "toolkit/lod_export.h"
+#include "toolkit/model_io.h"
+
+#include <SDL.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+// SDL events in, viewer events out; SDL's key names, lower case ("m", "f12", "keypad +").
+std::optional<ViewerEvent> translate(const SDL_Event& event) {
+    ViewerEvent e;
+    if (event.type == SDL_KEYDOWN) {
+        e.key = SDL_GetKeyName(event.key.keysym.sym);
+        for (char& c : e.key) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return e;
+    }
+    if (event.type == SDL_MOUSEMOTION && (event.motion.state & SDL_BUTTON_LMASK)) {
+        e.kind = ViewerEvent::Kind::drag;
+        e.dx = float(event.motion.xrel), e.dy = float(event.motion.yrel);
+        return e;
+    }
+    if (event.type == SDL_MOUSEWHEEL) {
+        e.kind = ViewerEvent::Kind::wheel;
+        e.dy = float(event.wheel.y);
+        return e;
+    }
+    return std::nullopt;
+}
+
+// A replayed event goes through SDL's queue like a real one.
+SDL_Event to_sdl(const ViewerEvent& e) {
+    SDL_Event event{};
+    if (e.kind == ViewerEvent::Kind::key) {
+        event.type = SDL_KEYDOWN;
+        event.key.keysym.sym = SDL_GetKeyFromName(e.key.c_str());
+    } else if (e.kind == ViewerEvent::Kind::drag) {
+        event.type = SDL_MOUSEMOTION;
+        event.motion.state = SDL_BUTTON_LMASK;
+        event.motion.xrel = int(e.dx), event.motion.yrel = int(e.dy);
+    } else {
+        event.type = SDL_MOUSEWHEEL;
+        event.wheel.y = int(e.dy);
+    }
+    return event;
+}
+
+std::vector<ViewerEvent> read_replay(const std::string& path) {
+    std::istringstream in(read_input_file(path, "event file"));
+    std::vector<ViewerEvent> events;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number)
+        if (auto e = parse_replay_line(line, path, number)) {
+            if (e->kind == ViewerEvent::Kind::key && SDL_GetKeyFromName(e->key.c_str()) == SDLK_UNKNOWN)
+                throw_input_error(path, "line " + std::to_string(number), "unknown key '" + e->key + "'");
+            events.push_back(*e);
+        }
+    return events;
+}
+
+// The picture on screen: the frame, the axes, the divider, the LoD texture and the text.
+Image8 compose(ViewerState& s, const Frame& frame) {
+    Frame shown = frame;
+    if (s.axes) {
+        Bounds b = model_bounds(*s.model);
+        draw_axes(shown, s.settings.camera, b.min, b.size().maxCoeff() * 0.5f);
+    }
+    if (s.split_view) draw_divider(shown, s.width / 2, {0, 0, 0});
+    Image8 image = frame_to_srgb8(shown);
+    if (s.show_texture && s.lod && !s.lod->atlas.pages.empty()) {  // the colour + normal pair of one page
+        int page = std::min(s.texture_page, int(s.lod->atlas.pages.size()) - 1);
+        const Texture& color = s.lod->model.textures[std::size_t(lod_page(page).color)];
+        const Texture& normal = s.lod->model.textures[std::size_t(lod_page(page).normal)];
+        int size = std::max(1, int(float(std::min(s.width / 2, s.height)) * 0.5f * s.texture_scale));
+        for (int y = 0; y < std::min(size, s.height); ++y)
+            for (int x = 0; x < std::min(2 * size, s.width); ++x) {
+                const Texture& t = x < size ? color : normal;
+                int tx = (x % size) * t.image.width / size, ty = y * t.image.height / size;
+                std::copy_n(t.image.at(tx, ty), 3, image.at(x, s.height - std::min(size, s.height) + y));
+            }
+    }
+    const std::uint8_t ink[3] = {20, 20, 20};
+    int y = 6;
+    for (const std::string& line : overlay_lines(s)) y += draw_text(image, 6, y, line, ink, 1) + 2;
+    return image;
+}
+
+int run_view(const Arguments& a) {
+    if (a.has("screenshot")) check_output_file(a.text("screenshot"));
+    LodParameters parameters = lod_parameters_from(a);
+    bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
+    if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
+    Model model = load_model(parameters.model);
+    View view = view_from_arguments(a, model_bounds(model));
+    if (parameters.camera) view.settings.camera = *parameters.camera;
+    if (parameters.light) view.settings.light = *parameters.light;
+    bool light_given = parameters.light || a.has("light");
+    if (a.has("mode")) parameters.render_mode = view.settings.mode;
+    else view.settings.mode = parameters.render_mode;
+    ViewerState state = make_viewer_state(model, parameters, view.settings, view.width, view.height, view.background);
+    state.light_follows_camera = !light_given;
+    std::vector<std::string> positions = camera_position_names();
+    for (std::size_t i = 0; i < positions.size(); ++i)  // C continues from the start position
+        if (camera_direction(positions[i]) == camera_direction(a.text("camera", "+X+Y+Z"))) state.camera_position = int(i);
+    std::vector<ViewerEvent> replay = a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + SDL_GetError());
+    SDL_Window* window = SDL_CreateWindow(("boxlod view " + a.positionals[0]).c_str(), SDL_WINDOWPOS_UNDEFINED,
+                                          SDL_WINDOWPOS_UNDEFINED, state.width, state.height, 0);
+    SDL_Renderer* renderer = window ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
+    SDL_Texture* texture = renderer ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
+                                                        state.width, state.height)
+                                    : nullptr;
+    if (!texture) {
+        std::string error = SDL_GetError();
+        SDL_Quit();
+        throw std::runtime_error("cannot open a window: " + error);
+    }
+    for (const ViewerEvent& e : replay) {
+        SDL_Event event = to_sdl(e);
+        SDL_PushEvent(&event);
+    }
+    int threads = view.settings.threads, screenshots = 0;
+    bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
+    std::string params_out = a.text("params-out", "boxlod-view.params.txt");
+    Frame frame;
+    // A file that cannot be written or read is shown, not the end of the session.
+    auto shown = [&](auto action) {
+        try {
+            action();
+        } catch (const InputError& error) {
+            state.message = error.what();
+        }
+    };
+    while (!state.quit) {
+        SDL_Event event;
+        // Replays drain the queue without waiting; people get a responsive wait.
+        bool got = replaying ? SDL_PollEvent(&event) : SDL_WaitEventTimeout(&event, 100);
+        if (got) {
+            if (event.type == SDL_QUIT) break;
+            if (auto e = translate(event)) redraw = apply_event(state, *e) || redraw;
+        } else if (replaying) {
+            state.screenshot = a.has("screenshot");
+            state.quit = true;
+        }
+        if (redraw || state.screenshot) {
+            frame = render_view(state, threads);
+            Image8 image = compose(state, frame);
+            SDL_UpdateTexture(texture, nullptr, image.pixels.data(), image.width * 3);
+            SDL_RenderCopy(renderer, texture, nullptr, nullptr);
+            SDL_RenderPresent(renderer);
+            redraw = false;
+        }
+        if (state.screenshot) {  // the rendered frame, without the text overlay
+            std::string path = a.text("screenshot", "boxlod-view-" + std::to_string(screenshots++) + ".png");
+            shown([&] {
+                write_png(path, frame_to_srgb8(frame));
+                std::printf("screenshot = %s\n", path.c_str());
+            });
+            state.screenshot = false;
+        }
+        if (state.save_parameters) {
+            LodParameters p = state.parameters;
+            p.camera = state.settings.camera;
+            p.light = state.settings.light;
+            shown([&] {
+                save_parameters(params_out, p);
+                state.message = "saved " + params_out;
+            });
+            state.save_parameters = false, redraw = true;
+        }
+        if (state.load_parameters) {
+            shown([&] {
+                LodParameters p = load_parameters(params_out);
+                p.model = state.parameters.model;
+                state.parameters = p;
+                if (p.camera) state.settings.camera = *p.camera;
+                if (p.light) state.settings.light = *p.light;
+                state.light_follows_camera = !p.light;
+                state.settings.mode = p.render_mode;
+                state.session.reset();
+                state.needs_update = true;
+                state.message = "loaded " + params_out;
+            });
+            state.load_parameters = false, redraw = true;
+        }
+        if (state.export_lod) {
+            if (state.lod && state.session) {
+                std::string name = std::filesystem::path(parameters.model).stem().string() + "_L" + std::to_string(state.parameters.current_level);
+                std::string folder = a.text("export-dir", "boxlod-view-export");
+                shown([&] {
+                    export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
+                    state.message = "exported " + folder + "/" + name + ".gltf";
+                });
+            } else {
+                state.message = "nothing to export at level 0";
+            }
+            state.export_lod = false, redraw = true;
+        }
+    }
+    SDL_DestroyTexture(texture);
+    SDL_DestroyRenderer(renderer);
+    SDL_DestroyWindow(window);
+    SDL_Quit();
+    return 0;
+}
+
+}  // namespace
+
+Subcommand view_subcommand() {
+    std::vector<Option> options = {
+        {"replay", "EVENTS", "replay an event file (lines 'key m', 'drag DX DY', 'wheel N'), then stop"},
+        {"screenshot", "FILE", "write the final frame (without the text overlay) as PNG"},
+        {"params-out", "FILE", "where F5 saves and F9 loads parameters (default boxlod-view.params.txt)"},
+        {"export-dir", "DIR", "where F6 exports the current LoD (default boxlod-view-export)"},
+    };
+    for (const Option& o : render_options()) options.push_back(o);
+    for (const Option& o : lod_options())  // the camera's distance and fovy are the render options'
+        if (o.name != "distance" && o.name != "fovy") options.push_back(o);
+    return {{"view", "MODEL|PARAMS.txt",
+             "Interactive viewer: fly around a model and its LoD, switch modes and levels, compare.\n" + viewer_key_help(),
+             options, 1, 1},
+            run_view};
+}
+
+}  // namespace boxlod

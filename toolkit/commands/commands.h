@@ -1,0 +1,20 @@
+// The toolkit's commands: models in and out, rendering, level values, LoD
+// building and the interactive viewer.
+#pragma once
+#include "base/command_registry.h"
+
+namespace boxlod {
+
+Subcommand info_subcommand();
+Subcommand convert_subcommand();
+Subcommand render_subcommand();
+Subcommand levels_subcommand();
+Subcommand build_subcommand();
+Subcommand view_subcommand();
+
+inline std::vector<Subcommand> toolkit_commands() {
+    return {info_subcommand(),   convert_subcommand(), render_subcommand(),
+            levels_subcommand(), build_subcommand(),   view_subcommand()};
+}
+
+}  // namespace boxlod

@@ -1,0 +1,89 @@
+#include "toolkit/commands/render_options.h"
+
+#include "base/input_error.h"
+#include "base/parallel.h"
+#include "renderer/image.h"
+#include "toolkit/framing.h"
+#include "toolkit/parameters.h"
+
+#include <Eigen/Geometry>
+#include <charconv>
+#include <cmath>
+
+namespace boxlod {
+std::vector<Option> render_options() {
+    return {
+        {"camera", "POS", "one of the 26 camera positions, e.g. +X+Y+Z (default), -Z, +Y"},
+        {"distance", "D", "camera distance from the model's centre (default: frames the model)", NumberRange{1e-3, 1e6}},
+        {"fovy", "DEG", "vertical field of view in degrees (default 45)", parameter_range::fovy},
+        {"width", "W", "image width in pixels (default 1024)", image_side_range},
+        {"height", "H", "image height in pixels (default 768)", image_side_range},
+        {"mode", "MODE", enum_names(render_modes(), ", ", " or ") + " (default normal)"},
+        {"parallax-scale", "S", "parallax/pom height scale (default 0.04)", parameter_range::parallax},
+        {"parallax-bias", "B", "parallax height bias (default -0.02)", parameter_range::parallax},
+        {"light", "X,Y,Z", "light position in world space (default: above, right of the camera)"},
+        {"ambient", "A", "ambient light (default 0.25)", light_intensity_range},
+        {"diffuse", "D", "diffuse light (default 0.75)", light_intensity_range},
+        {"specular", "S", "specular light (default 0.25)", light_intensity_range},
+        {"shininess", "N", "shininess for every material (default: the materials' own)", shininess_range},
+        {"background", "R,G,B", "background colour, sRGB components in [0, 1] (default 1,1,1)"},
+        {"cull", "FACES", "none (default) | back | front"},
+        {"wireframe", "", "draw triangle edges over the shaded image"},
+        {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+    };
+}
+
+Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text, const NumberRange& range) {
+    Eigen::Vector3f v;
+    const char* p = text.data();
+    const char* end = text.data() + text.size();
+    for (int i = 0; i < 3; ++i) {
+        auto [next, error] = std::from_chars(p, end, v[i]);
+        if (error != std::errc() || !range.contains(v[i])) break;
+        p = next;
+        if (i < 2) {
+            if (p == end || *p != ',') break;
+            ++p;
+        } else if (p == end) {
+            return v;
+        }
+    }
+    throw InputError("--" + option + ": expected three numbers X,Y,Z, each " + out_of_range_message(range, text).substr(9));
+}
+
+View view_from_arguments(const Arguments& a, const Bounds& bounds) {
+    View view;
+    view.width = a.integer("width", 1024);
+    view.height = a.integer("height", 768);
+    float fovy = float(a.number("fovy", 45));
+    std::string position = a.text("camera", "+X+Y+Z");
+    auto direction = camera_direction(position);
+    if (!direction) throw InputError("--camera: unknown camera position '" + position + "' (e.g. +X, -Y, +X+Y+Z)");
+    Framing framing = framing_of(bounds);
+    view.distance = float(a.number("distance", framing_distance(framing, fovy)));
+    RenderSettings& s = view.settings;
+    s.camera = framed_camera(framing, *direction, view.distance, fovy);
+    if (a.has("mode") && !parse_render_mode(a.text("mode"), s.mode))
+        throw InputError("--mode: unknown render mode '" + a.text("mode") + "' (" + enum_names(render_modes()) + ")");
+    s.parallax_scale = float(a.number("parallax-scale", s.parallax_scale));
+    s.parallax_bias = float(a.number("parallax-bias", s.parallax_bias));
+    s.light = light_for_camera(s.camera);
+    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), position_range);
+    s.light.ambient = float(a.number("ambient", s.light.ambient));
+    s.light.diffuse = float(a.number("diffuse", s.light.diffuse));
+    s.light.specular = float(a.number("specular", s.light.specular));
+    s.light.shininess = float(a.number("shininess", 0));
+    if (a.has("background")) {
+        Eigen::Vector3f srgb = parse_vector3("background", a.text("background"), colour_range);
+        for (int c = 0; c < 3; ++c) view.background[c] = srgb_to_linear(std::uint8_t(std::lround(srgb[c] * 255)));
+    }
+    std::string cull = a.text("cull", "none");
+    if (cull == "back") s.culling = Culling::back;
+    else if (cull == "front") s.culling = Culling::front;
+    else if (cull != "none") throw InputError("--cull: expected none, back or front");
+    s.wireframe = a.has("wireframe");
+    s.threads = a.integer("threads", 0);
+    return view;
+}
+
+}  // namespace boxlod
