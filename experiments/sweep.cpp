@@ -265,8 +265,8 @@ struct ModelRun {
     double seconds = 0;
     int threads = 0;
     std::FILE* progress = nullptr;
-    std::unique_ptr<DrawableModel> original;
-    std::map<std::tuple<std::size_t, std::size_t, RenderMode>, Shot> references;
+    std::unique_ptr<DrawableModel> original = nullptr;
+    std::map<std::tuple<std::size_t, std::size_t, RenderMode>, Shot> references = {};
 };
 
 std::size_t rows_per_group(const SweepConfig& config) {

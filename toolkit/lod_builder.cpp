@@ -228,7 +228,7 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             if (!textured) {
                 Primitive& primitive = by_page[0];
                 primitive.material = 0;
-                append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, {});
+                append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, Eigen::Vector2i::Zero());
                 continue;
             }
             const std::vector<PackedFace>& packed = packing.faces;

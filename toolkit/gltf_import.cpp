@@ -1,3 +1,5 @@
+// glTF import (toolkit/gltf_io.h): checked structure first, then tinygltf, then
+// every index, count and transform checked as the model is built.
 #include "toolkit/gltf_io.h"
 
 #include "base/atomic_write.h"
@@ -6,6 +8,7 @@
 #include "base/key_values.h"
 #include "base/parallel.h"
 #include "renderer/image.h"
+#include "toolkit/gltf_extras.h"
 #include "toolkit/gltf_structure.h"
 
 #include <Eigen/Geometry>
@@ -21,8 +24,6 @@ namespace boxlod {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ---------------------------------------------------------------- import
 
 struct Reader {
     const tinygltf::Model& gltf;
@@ -141,41 +142,6 @@ std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, i
     return out;
 }
 
-const tinygltf::Value* boxlod_extras(const tinygltf::Value& extras) {
-    if (!extras.IsObject() || !extras.Has("boxlod")) return nullptr;
-    const tinygltf::Value& v = extras.Get("boxlod");
-    return v.IsObject() ? &v : nullptr;
-}
-
-template <int N>
-Eigen::Matrix<float, N, 1> number_array(const tinygltf::Value& v, const Reader& reader, const std::string& place) {
-    Eigen::Matrix<float, N, 1> out;
-    if (!v.IsArray() || int(v.ArrayLen()) != N) reader.fail(place, "expected an array of " + std::to_string(N) + " numbers");
-    for (int i = 0; i < N; ++i) {
-        if (!v.Get(i).IsNumber()) reader.fail(place, "expected a number");
-        out[i] = float(v.Get(i).GetNumberAsDouble());
-    }
-    return out;
-}
-
-constexpr float max_scope_extent = 1e6f;
-
-Scope read_scope(const tinygltf::Value& v, const Reader& reader, const std::string& place) {
-    if (!v.IsObject()) reader.fail(place, "scope must be an object");
-    Scope scope;
-    scope.center = number_array<3>(v.Get("center"), reader, place + " scope.center");
-    scope.half_extents = number_array<3>(v.Get("half_extents"), reader, place + " scope.half_extents");
-    const tinygltf::Value& axes = v.Get("axes");
-    if (!axes.IsArray() || axes.ArrayLen() != 3) reader.fail(place, "scope.axes must hold three axes");
-    for (int i = 0; i < 3; ++i) scope.axes.col(i) = number_array<3>(axes.Get(i), reader, place + " scope.axes");
-    // A scope is an oriented box: orthonormal axes, extents of 0 or more.
-    if (!((scope.axes.transpose() * scope.axes - Eigen::Matrix3f::Identity()).cwiseAbs().maxCoeff() < 1e-3f))
-        reader.fail(place, "scope.axes must be three orthonormal axes");
-    if (!((scope.half_extents.array() >= 0).all() && (scope.half_extents.array() <= max_scope_extent).all()))
-        reader.fail(place, "scope.half_extents must be in [0, 1e6]");
-    return scope;
-}
-
 void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const Eigen::Matrix4d& world,
                     const std::string& place, Node& node) {
     if (in.mode != TINYGLTF_MODE_TRIANGLES && in.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -225,13 +191,7 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
     if (mirrored)
         for (std::size_t i = 0; i < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
     out.polygon_count = out.triangle_count();
-    if (const tinygltf::Value* extras = boxlod_extras(in.extras); extras && extras->Has("polygons")) {
-        const tinygltf::Value& polygons = extras->Get("polygons");
-        // Each polygon is at least one triangle.
-        if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 && polygons.GetNumberAsDouble() <= double(out.triangle_count())))
-            reader.fail(place, "extras.boxlod.polygons must be a count of at most the primitive's triangles");
-        out.polygon_count = std::size_t(polygons.GetNumberAsDouble());
-    }
+    read_primitive_extras(in.extras, {reader.file, place}, out);
     if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
     out.material = in.material;
     node.primitives.push_back(std::move(out));
@@ -301,15 +261,8 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
     return texture;
 }
 
-}  // namespace
-
-Model import_gltf(const std::string& path) {
-    const bool binary = fs::path(path).extension() == ".glb";
-    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path);
-}
-
-Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path) {
-    check_gltf_structure(bytes, binary, path);
+// tinygltf's model of the bytes, with our file and image callbacks.
+tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string& path) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
     tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file, &tinygltf::WriteWholeFile, nullptr};
@@ -320,10 +273,12 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
                      : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()), directory);
     if (!ok) throw_input_error(path, "", error.empty() ? "malformed glTF" : error);
+    return gltf;
+}
 
-    Reader reader{gltf, path};
-    Model model;
-    model.source = path;
+// One texture per image; an image that is only a height map keeps 16 bits.
+void read_textures(const Reader& reader, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
     std::vector<bool> colour_or_normal(gltf.images.size(), false);
     for (std::size_t m = 0; m < gltf.materials.size(); ++m)
         for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
@@ -335,6 +290,10 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
             texture.sampler < int(gltf.samplers.size()) && gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
             model.textures[std::size_t(texture.source)].wrap = Wrap::clamp;
+}
+
+void read_materials(const Reader& reader, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
     for (std::size_t i = 0; i < gltf.materials.size(); ++i) {
         const tinygltf::Material& in = gltf.materials[i];
         std::string place = "material " + std::to_string(i);
@@ -346,27 +305,14 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
         material.normal_texture = texture_image(reader, in.normalTexture.index, place);
         material.double_sided = in.doubleSided;
         material.alpha_cutout = in.alphaMode == "MASK";
-        if (const tinygltf::Value* extras = boxlod_extras(in.extras)) {
-            if (extras->Has("specular")) material.specular_color = number_array<3>(extras->Get("specular"), reader, place + " specular");
-            if (extras->Has("shininess")) material.shininess = float(extras->Get("shininess").GetNumberAsDouble());
-            if (extras->Has("height_texture") && extras->Get("height_texture").IsNumber()) {
-                int texture = int(extras->Get("height_texture").GetNumberAsDouble());
-                if (texture < 0 || texture >= int(gltf.images.size())) reader.fail(place, "height_texture out of range");
-                material.height_texture = texture;
-            }
-        }
+        read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
         model.materials.push_back(material);
     }
-    if (const tinygltf::Value* extras = boxlod_extras(gltf.asset.extras)) {
-        model.is_lod = extras->Has("lod") && extras->Get("lod").IsBool() && extras->Get("lod").Get<bool>();
-        if (extras->Has("params") && extras->Get("params").IsObject()) {
-            const tinygltf::Value& params = extras->Get("params");
-            for (const std::string& key : params.Keys())
-                model.lod_params.emplace_back(key, params.Get(key).IsString() ? params.Get(key).Get<std::string>() : "");
-        }
-    }
+}
 
-    // Roots: the default scene's nodes, else every node that is nobody's child.
+// The default scene's nodes, else every node that is nobody's child.
+std::vector<int> scene_roots(const Reader& reader) {
+    const tinygltf::Model& gltf = reader.gltf;
     std::vector<int> roots;
     int scene = gltf.defaultScene >= 0 ? gltf.defaultScene : (gltf.scenes.empty() ? -1 : 0);
     if (scene >= int(gltf.scenes.size())) reader.fail("", "default scene out of range");
@@ -380,15 +326,20 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
             if (!is_child[i]) roots.push_back(int(i));
     }
     if (roots.empty()) reader.fail("", "the scene has no nodes");
+    return roots;
+}
 
+// The node tree under the roots (several roots get a common one, named after
+// the file), geometry in world space; depth-first, parents before children,
+// with an explicit stack so that a deep chain cannot overflow.
+void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
     std::vector<int> mesh_users(gltf.meshes.size(), 0);
     for (const auto& node : gltf.nodes)
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[node.mesh];
-
-    // Depth-first, parents before children; an explicit stack so a deep chain cannot overflow.
     struct Visit { int gltf_node; int parent; Eigen::Matrix4d parent_world; };
     std::vector<Visit> stack;
-    if (roots.size() > 1) add_node(model, -1, fs::path(path).stem().string());
+    if (roots.size() > 1) add_node(model, -1, fs::path(reader.file).stem().string());
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
         stack.push_back({*it, roots.size() > 1 ? 0 : -1, Eigen::Matrix4d::Identity()});
     std::vector<bool> visited(gltf.nodes.size(), false);
@@ -411,271 +362,33 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
                 read_primitive(reader, mesh.primitives[p], world, place + " mesh " + std::to_string(in.mesh) + " primitive " + std::to_string(p), node);
             if (mesh_users[in.mesh] > 1) node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
         }
-        if (const tinygltf::Value* extras = boxlod_extras(in.extras)) {
-            if (extras->Has("rule") && extras->Get("rule").IsString()) node.rule = extras->Get("rule").Get<std::string>();
-            if (extras->Has("scope")) node.scope = read_scope(extras->Get("scope"), reader, place);
-            if (extras->Has("instance_of") && extras->Get("instance_of").IsString())
-                node.instance_of = extras->Get("instance_of").Get<std::string>();
-        }
+        read_node_extras(in.extras, {reader.file, place}, node);
         for (auto child = in.children.rbegin(); child != in.children.rend(); ++child)
             stack.push_back({*child, index, world});
     }
-    validate_model(model);
-    return model;
-}
-
-// ---------------------------------------------------------------- export
-namespace {
-
-// The double nearest to a float's shortest decimal form: JSON prints "0.3", not
-// "0.30000001192092896", and reading it back as float gives the same float.
-double json_number(float value) { return std::strtod(format_number(value).c_str(), nullptr); }
-
-// Geometry goes into a few shared buffer views (one per element size) rather
-// than a view per accessor: a city has hundreds of thousands of accessors, and
-// the JSON shrinks by a third. Images get a view each.
-struct Writer {
-    tinygltf::Model gltf;
-
-    struct Stream {
-        int target = 0, stride = 0;
-        bool shared = true;  // one view for the whole stream; else a view per piece (images)
-        std::vector<unsigned char> bytes;
-        std::vector<int> views;  // their byteOffset is relative to this stream until finish()
-    };
-    Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}}, vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
-        vec4{TINYGLTF_TARGET_ARRAY_BUFFER, 16, true, {}, {}},
-        indices{TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0, true, {}, {}}, blobs{0, 0, false, {}, {}};
-
-    int new_view(Stream& stream, std::size_t offset, std::size_t length) {
-        tinygltf::BufferView view;
-        view.buffer = 0;
-        view.byteOffset = offset;
-        view.byteLength = length;
-        view.byteStride = std::size_t(stream.stride);
-        view.target = stream.target;
-        gltf.bufferViews.push_back(view);
-        stream.views.push_back(int(gltf.bufferViews.size()) - 1);
-        return stream.views.back();
-    }
-
-    // Appends bytes; returns (view, offset of the bytes within that view).
-    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size) {
-        while (stream.bytes.size() % 4) stream.bytes.push_back(0);  // glTF alignment
-        std::size_t offset = stream.bytes.size();
-        const auto* p = static_cast<const unsigned char*>(bytes);
-        stream.bytes.insert(stream.bytes.end(), p, p + size);
-        if (!stream.shared) return {new_view(stream, offset, size), 0};
-        int view = stream.views.empty() ? new_view(stream, 0, 0) : stream.views.front();
-        return {view, offset};
-    }
-
-    int add_image(const std::vector<std::uint8_t>& png) { return append(blobs, png.data(), png.size()).first; }
-
-    template <typename Vector>
-    int add_accessor(const std::vector<Vector>& values, int type, bool bounds) {
-        Stream& stream = sizeof(Vector) == 12 ? vec3 : sizeof(Vector) == 8 ? vec2 : vec4;
-        auto [view, offset] = append(stream, values.data(), values.size() * sizeof(Vector));
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view;
-        accessor.byteOffset = offset;
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        accessor.count = values.size();
-        accessor.type = type;
-        if (bounds && !values.empty()) {
-            Vector lo = values[0], hi = values[0];
-            for (const Vector& v : values) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
-            for (int c = 0; c < lo.size(); ++c) {
-                accessor.minValues.push_back(json_number(lo[c]));
-                accessor.maxValues.push_back(json_number(hi[c]));
-            }
-        }
-        gltf.accessors.push_back(std::move(accessor));
-        return int(gltf.accessors.size()) - 1;
-    }
-
-    int add_indices(const std::vector<std::uint32_t>& values) {
-        auto [view, offset] = append(indices, values.data(), values.size() * 4);
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view;
-        accessor.byteOffset = offset;
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        accessor.count = values.size();
-        accessor.type = TINYGLTF_TYPE_SCALAR;
-        gltf.accessors.push_back(std::move(accessor));
-        return int(gltf.accessors.size()) - 1;
-    }
-
-    // Lays the streams out in one buffer, in a fixed order, and places the views.
-    const std::vector<unsigned char>& finish() {
-        gltf.buffers.resize(1);
-        std::vector<unsigned char>& data = gltf.buffers[0].data;
-        for (Stream* stream : {&vec3, &vec2, &vec4, &indices, &blobs}) {
-            while (data.size() % 4) data.push_back(0);
-            std::size_t base = data.size();
-            data.insert(data.end(), stream->bytes.begin(), stream->bytes.end());
-            for (int view : stream->views) {
-                gltf.bufferViews[view].byteOffset += base;
-                if (stream->shared) gltf.bufferViews[view].byteLength = stream->bytes.size();
-            }
-        }
-        return data;
-    }
-};
-
-tinygltf::Value number_array(const float* values, int n) {
-    tinygltf::Value::Array array;
-    for (int i = 0; i < n; ++i) array.emplace_back(json_number(values[i]));
-    return tinygltf::Value(std::move(array));
-}
-
-tinygltf::Value boxlod_object(tinygltf::Value::Object fields) {
-    tinygltf::Value::Object extras;
-    extras["boxlod"] = tinygltf::Value(std::move(fields));
-    return tinygltf::Value(std::move(extras));
 }
 
 }  // namespace
 
-void export_gltf(const Model& model, const std::string& path, int threads) {
-    validate_model(model);  // nothing is written that boxlod would refuse to read (NaN, no triangles, ...)
-    OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
-    fs::path target(path);
-    bool binary = target.extension() == ".glb";
-    std::string stem = target.stem().string();
-    Writer w;
-    w.gltf.asset.version = "2.0";
-    w.gltf.asset.generator = "boxlod";
-    if (model.is_lod) {
-        tinygltf::Value::Object params;
-        for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(value);
-        w.gltf.asset.extras = boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
-    }
+Model import_gltf(const std::string& path) {
+    const bool binary = fs::path(path).extension() == ".glb";
+    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path);
+}
 
-    std::vector<std::string> image_files;
-    // PNG encoding dominates an LoD export: encode the textures in parallel, store them in order.
-    std::vector<std::vector<std::uint8_t>> encoded(model.textures.size());
-    parallel_for(model.textures.size(), threads, [&](std::size_t i) {
-        const Texture& texture = model.textures[i];
-        encoded[i] = texture.image16.empty() ? encode_png(texture.image) : encode_png16(texture.image16);
-    });
-    for (std::size_t i = 0; i < model.textures.size(); ++i) {
-        const Texture& texture = model.textures[i];
-        const std::vector<std::uint8_t>& png = encoded[i];
-        tinygltf::Image image;
-        image.name = texture.name;
-        image.mimeType = "image/png";
-        if (binary) {
-            image.bufferView = w.add_image(png);
-        } else {
-            std::string name = fs::path(texture.name).filename().string();
-            if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos)
-                name = stem + "_texture_" + std::to_string(i) + ".png";
-            image.uri = name;
-            write_file_atomically((target.parent_path() / name).string(), png);
-        }
-        w.gltf.images.push_back(image);
-        tinygltf::Texture gltf_texture;
-        gltf_texture.source = int(i);
-        if (texture.wrap == Wrap::clamp) {
-            if (w.gltf.samplers.empty()) {
-                tinygltf::Sampler clamp;
-                clamp.wrapS = clamp.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-                clamp.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-                clamp.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
-                w.gltf.samplers.push_back(clamp);
-            }
-            gltf_texture.sampler = 0;
-        }
-        w.gltf.textures.push_back(gltf_texture);
-    }
-    for (const Material& material : model.materials) {
-        tinygltf::Material out;
-        out.name = material.name;
-        out.pbrMetallicRoughness.baseColorFactor.clear();
-        for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
-        out.pbrMetallicRoughness.baseColorTexture.index = material.base_color_texture;
-        out.pbrMetallicRoughness.metallicFactor = 0;
-        out.pbrMetallicRoughness.roughnessFactor = 1;
-        out.normalTexture.index = material.normal_texture;
-        out.doubleSided = material.double_sided;
-        if (material.alpha_cutout) out.alphaMode = "MASK";  // cutoff 0.5, the glTF default
-        tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
-                                       {"shininess", tinygltf::Value(json_number(material.shininess))}};
-        // glTF has no height-map slot; the image index travels in extras.
-        if (material.height_texture >= 0) extras["height_texture"] = tinygltf::Value(material.height_texture);
-        out.extras = boxlod_object(std::move(extras));
-        w.gltf.materials.push_back(out);
-    }
-    // tinygltf's types copy (not move) when a vector grows: reserve everything up front.
-    std::size_t meshes = 0, primitives = 0;
-    for (const Node& node : model.nodes) meshes += node.has_geometry(), primitives += node.primitives.size();
-    w.gltf.nodes.reserve(model.nodes.size());
-    w.gltf.meshes.reserve(meshes);
-    w.gltf.accessors.reserve(primitives * 5);
-    for (const Node& node : model.nodes) {
-        tinygltf::Node out;
-        out.name = node.name;
-        out.children = node.children;
-        tinygltf::Value::Object extras;
-        if (!node.rule.empty()) extras["rule"] = tinygltf::Value(node.rule);
-        if (!node.instance_of.empty()) extras["instance_of"] = tinygltf::Value(node.instance_of);
-        if (node.scope) {
-            tinygltf::Value::Array axes;
-            for (int i = 0; i < 3; ++i) {
-                Eigen::Vector3f axis = node.scope->axes.col(i);
-                axes.push_back(number_array(axis.data(), 3));
-            }
-            extras["scope"] = tinygltf::Value(tinygltf::Value::Object{
-                {"center", number_array(node.scope->center.data(), 3)},
-                {"axes", tinygltf::Value(std::move(axes))},
-                {"half_extents", number_array(node.scope->half_extents.data(), 3)}});
-        }
-        if (!extras.empty()) out.extras = boxlod_object(std::move(extras));
-        if (node.has_geometry()) {
-            tinygltf::Mesh mesh;
-            mesh.name = node.name;
-            for (const Primitive& primitive : node.primitives) {
-                tinygltf::Primitive p;
-                p.mode = TINYGLTF_MODE_TRIANGLES;
-                p.material = primitive.material;
-                p.attributes["POSITION"] = w.add_accessor(primitive.positions, TINYGLTF_TYPE_VEC3, true);
-                if (!primitive.normals.empty()) p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
-                if (!primitive.uvs.empty()) p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
-                if (!primitive.tangents.empty()) p.attributes["TANGENT"] = w.add_accessor(primitive.tangents, TINYGLTF_TYPE_VEC4, false);
-                p.indices = w.add_indices(primitive.indices);
-                if (primitive.polygon_count != primitive.triangle_count())
-                    p.extras = boxlod_object({{"polygons", tinygltf::Value(int(primitive.polygon_count))}});
-                mesh.primitives.push_back(p);
-            }
-            w.gltf.meshes.push_back(std::move(mesh));
-            out.mesh = int(w.gltf.meshes.size()) - 1;
-        }
-        w.gltf.nodes.push_back(std::move(out));
-    }
-    tinygltf::Scene scene;
-    scene.nodes = {0};
-    w.gltf.scenes.push_back(scene);
-    w.gltf.defaultScene = 0;
-
-    const std::vector<unsigned char>& data = w.finish();
-    tinygltf::TinyGLTF writer;
-    writer.SetImageWriter(nullptr, nullptr);  // images are written above, atomically
-    std::ostringstream stream;
-    if (binary) {
-        writer.WriteGltfSceneToStream(&w.gltf, stream, false, true);
-        write_text_atomically(path, stream.str());
-        files.commit();
-        return;
-    }
-    std::string bin_name = stem + ".bin";
-    write_file_atomically((target.parent_path() / bin_name).string(), data);
-    writer.WriteGltfSceneToStream(&w.gltf, stream, true, false);
-    // The stream writer embeds buffers as data URIs; point the buffer at NAME.bin instead.
-    nlohmann::json json = nlohmann::json::parse(stream.str());
-    json["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
-    write_text_atomically(path, json.dump(2) + "\n");
-    files.commit();
+// The steps: the structure checked, tinygltf's model, textures, materials, the
+// LoD mark, the node tree; then the whole model validated.
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path) {
+    check_gltf_structure(bytes, binary, path);
+    const tinygltf::Model gltf = load_gltf(bytes, binary, path);
+    Reader reader{gltf, path};
+    Model model;
+    model.source = path;
+    read_textures(reader, model);
+    read_materials(reader, model);
+    read_asset_extras(gltf.asset.extras, model);
+    read_nodes(reader, scene_roots(reader), model);
+    validate_model(model);
+    return model;
 }
 
 }  // namespace boxlod

@@ -1,0 +1,144 @@
+#include "toolkit/gltf_extras.h"
+
+#include "base/input_error.h"
+#include "base/key_values.h"
+
+#include <cstdlib>
+
+namespace boxlod {
+namespace {
+
+// The `boxlod` object of an extras value, or null.
+const tinygltf::Value* boxlod_fields(const tinygltf::Value& extras) {
+    if (!extras.IsObject() || !extras.Has("boxlod")) return nullptr;
+    const tinygltf::Value& v = extras.Get("boxlod");
+    return v.IsObject() ? &v : nullptr;
+}
+
+tinygltf::Value boxlod_object(tinygltf::Value::Object fields) {
+    tinygltf::Value::Object extras;
+    extras["boxlod"] = tinygltf::Value(std::move(fields));
+    return tinygltf::Value(std::move(extras));
+}
+
+tinygltf::Value number_array(const float* values, int n) {
+    tinygltf::Value::Array array;
+    for (int i = 0; i < n; ++i) array.emplace_back(json_number(values[i]));
+    return tinygltf::Value(std::move(array));
+}
+
+template <int N>
+Eigen::Matrix<float, N, 1> read_numbers(const tinygltf::Value& v, const ExtrasPlace& at, const std::string& field) {
+    Eigen::Matrix<float, N, 1> out;
+    if (!v.IsArray() || int(v.ArrayLen()) != N)
+        throw_input_error(at.file, at.place + " " + field, "expected an array of " + std::to_string(N) + " numbers");
+    for (int i = 0; i < N; ++i) {
+        if (!v.Get(i).IsNumber()) throw_input_error(at.file, at.place + " " + field, "expected a number");
+        out[i] = float(v.Get(i).GetNumberAsDouble());
+    }
+    return out;
+}
+
+constexpr float max_scope_extent = 1e6f;
+
+Scope read_scope(const tinygltf::Value& v, const ExtrasPlace& at) {
+    auto fail = [&](const std::string& what) { throw_input_error(at.file, at.place, what); };
+    if (!v.IsObject()) fail("scope must be an object");
+    Scope scope;
+    scope.center = read_numbers<3>(v.Get("center"), at, "scope.center");
+    scope.half_extents = read_numbers<3>(v.Get("half_extents"), at, "scope.half_extents");
+    const tinygltf::Value& axes = v.Get("axes");
+    if (!axes.IsArray() || axes.ArrayLen() != 3) fail("scope.axes must hold three axes");
+    for (int i = 0; i < 3; ++i) scope.axes.col(i) = read_numbers<3>(axes.Get(i), at, "scope.axes");
+    // A scope is an oriented box: orthonormal axes, extents of 0 or more.
+    if (!((scope.axes.transpose() * scope.axes - Eigen::Matrix3f::Identity()).cwiseAbs().maxCoeff() < 1e-3f))
+        fail("scope.axes must be three orthonormal axes");
+    if (!((scope.half_extents.array() >= 0).all() && (scope.half_extents.array() <= max_scope_extent).all()))
+        fail("scope.half_extents must be in [0, 1e6]");
+    return scope;
+}
+
+}  // namespace
+
+double json_number(float value) { return std::strtod(format_number(value).c_str(), nullptr); }
+
+tinygltf::Value asset_extras(const Model& model) {
+    if (!model.is_lod) return {};
+    tinygltf::Value::Object params;
+    for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(value);
+    return boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
+}
+
+tinygltf::Value material_extras(const Material& material) {
+    tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
+                                   {"shininess", tinygltf::Value(json_number(material.shininess))}};
+    // glTF has no height-map slot; the image index travels in extras.
+    if (material.height_texture >= 0) extras["height_texture"] = tinygltf::Value(material.height_texture);
+    return boxlod_object(std::move(extras));
+}
+
+tinygltf::Value node_extras(const Node& node) {
+    tinygltf::Value::Object extras;
+    if (!node.rule.empty()) extras["rule"] = tinygltf::Value(node.rule);
+    if (!node.instance_of.empty()) extras["instance_of"] = tinygltf::Value(node.instance_of);
+    if (node.scope) {
+        tinygltf::Value::Array axes;
+        for (int i = 0; i < 3; ++i) {
+            Eigen::Vector3f axis = node.scope->axes.col(i);
+            axes.push_back(number_array(axis.data(), 3));
+        }
+        extras["scope"] = tinygltf::Value(tinygltf::Value::Object{{"center", number_array(node.scope->center.data(), 3)},
+                                                                  {"axes", tinygltf::Value(std::move(axes))},
+                                                                  {"half_extents", number_array(node.scope->half_extents.data(), 3)}});
+    }
+    return extras.empty() ? tinygltf::Value() : boxlod_object(std::move(extras));
+}
+
+tinygltf::Value primitive_extras(const Primitive& primitive) {
+    if (primitive.polygon_count == primitive.triangle_count()) return {};
+    return boxlod_object({{"polygons", tinygltf::Value(int(primitive.polygon_count))}});
+}
+
+void read_asset_extras(const tinygltf::Value& extras, Model& model) {
+    const tinygltf::Value* fields = boxlod_fields(extras);
+    if (!fields) return;
+    model.is_lod = fields->Has("lod") && fields->Get("lod").IsBool() && fields->Get("lod").Get<bool>();
+    if (fields->Has("params") && fields->Get("params").IsObject()) {
+        const tinygltf::Value& params = fields->Get("params");
+        for (const std::string& key : params.Keys())
+            model.lod_params.emplace_back(key, params.Get(key).IsString() ? params.Get(key).Get<std::string>() : "");
+    }
+}
+
+void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at, Material& material) {
+    const tinygltf::Value* fields = boxlod_fields(extras);
+    if (!fields) return;
+    if (fields->Has("specular")) material.specular_color = read_numbers<3>(fields->Get("specular"), at, "specular");
+    if (fields->Has("shininess")) material.shininess = float(fields->Get("shininess").GetNumberAsDouble());
+    if (fields->Has("height_texture") && fields->Get("height_texture").IsNumber()) {
+        int texture = int(fields->Get("height_texture").GetNumberAsDouble());
+        if (texture < 0 || texture >= image_count) throw_input_error(at.file, at.place, "height_texture out of range");
+        material.height_texture = texture;
+    }
+}
+
+void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node& node) {
+    const tinygltf::Value* fields = boxlod_fields(extras);
+    if (!fields) return;
+    if (fields->Has("rule") && fields->Get("rule").IsString()) node.rule = fields->Get("rule").Get<std::string>();
+    if (fields->Has("scope")) node.scope = read_scope(fields->Get("scope"), at);
+    if (fields->Has("instance_of") && fields->Get("instance_of").IsString())
+        node.instance_of = fields->Get("instance_of").Get<std::string>();
+}
+
+void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Primitive& primitive) {
+    const tinygltf::Value* fields = boxlod_fields(extras);
+    if (!fields || !fields->Has("polygons")) return;
+    const tinygltf::Value& polygons = fields->Get("polygons");
+    // Each polygon is at least one triangle.
+    if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 && polygons.GetNumberAsDouble() <= double(primitive.triangle_count())))
+        throw_input_error(at.file, at.place, "extras.boxlod.polygons must be a count of at most the primitive's triangles");
+    primitive.polygon_count = std::size_t(polygons.GetNumberAsDouble());
+}
+
+}  // namespace boxlod
