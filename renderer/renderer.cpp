@@ -241,6 +241,34 @@ float edge_distance(const ScreenTriangle& t, const std::vector<ClippedWeights>& 
     return nearest;
 }
 
+// Sorts a chunk's set-up triangles into the tiles they touch: count per tile,
+// then fill, so each tile's bin keeps submission order.
+void bin_chunk(Chunk& chunk, const Tiling& tiling, const Viewport& viewport) {
+    std::vector<int>& bounds = chunk.bounds;
+    bounds.resize(chunk.triangles.size() * 4);
+    std::vector<std::uint32_t> counts(tiling.count() + 1, 0);
+    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
+        int* b = &bounds[i * 4];
+        if (!triangle_pixel_bounds(chunk.triangles[i], viewport, b[0], b[1], b[2], b[3])) {
+            b[0] = 1, b[2] = 0;  // empty
+            continue;
+        }
+        for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
+            for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx) ++counts[ty * tiling.columns + tx];
+    }
+    chunk.bin_start.assign(tiling.count() + 1, 0);
+    for (int tile = 0; tile < tiling.count(); ++tile) chunk.bin_start[tile + 1] = chunk.bin_start[tile] + counts[tile];
+    chunk.bin_items.resize(chunk.bin_start.back());
+    std::vector<std::uint32_t> fill(chunk.bin_start.begin(), chunk.bin_start.end() - 1);
+    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
+        const int* b = &bounds[i * 4];
+        if (b[0] > b[2]) continue;
+        for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
+            for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx)
+                chunk.bin_items[fill[ty * tiling.columns + tx]++] = std::uint32_t(i);
+    }
+}
+
 void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
     int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
     int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
@@ -352,30 +380,7 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
             setup_triangle(corners, std::uint32_t(range.batch), std::uint32_t(t), settings.culling, viewport,
                            chunk.triangles, chunk.weights);
         }
-        // Count per tile, then fill: bins keep submission order.
-        std::vector<int>& bounds = chunk.bounds;
-        bounds.resize(chunk.triangles.size() * 4);
-        std::vector<std::uint32_t> counts(tiling.count() + 1, 0);
-        for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-            int* b = &bounds[i * 4];
-            if (!triangle_pixel_bounds(chunk.triangles[i], viewport, b[0], b[1], b[2], b[3])) {
-                b[0] = 1, b[2] = 0;  // empty
-                continue;
-            }
-            for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
-                for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx) ++counts[ty * tiling.columns + tx];
-        }
-        chunk.bin_start.assign(tiling.count() + 1, 0);
-        for (int tile = 0; tile < tiling.count(); ++tile) chunk.bin_start[tile + 1] = chunk.bin_start[tile] + counts[tile];
-        chunk.bin_items.resize(chunk.bin_start.back());
-        std::vector<std::uint32_t> fill(chunk.bin_start.begin(), chunk.bin_start.end() - 1);
-        for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-            const int* b = &bounds[i * 4];
-            if (b[0] > b[2]) continue;
-            for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
-                for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx)
-                    chunk.bin_items[fill[ty * tiling.columns + tx]++] = std::uint32_t(i);
-        }
+        bin_chunk(chunk, tiling, viewport);
     });
 
     // Tiles: each owned by one thread; triangles replayed in submission order.

@@ -27,16 +27,9 @@ void require(bool ok, const std::string& what) {
     if (!ok) throw InputError(prefix + what);
 }
 
-int run_city(const Arguments& arguments) {
-    // Every input is checked before anything is generated or written.
-    require(arguments.has("output"), "-o/--output OUTDIR is required");
-    check_output_directory(arguments.text("output"));
+FlyThroughOptions fly_through_options(const Arguments& arguments) {
     FlyThroughOptions options;
     options.strategy = parse_strategy(arguments.text("strategy", "texel"), "--strategy");
-    CityOptions city;
-    city.buildings = arguments.integer("buildings", 9);
-    city.seed = std::uint64_t(arguments.integer("seed", 0));
-    int frames = arguments.integer("frames", 60);
     options.width = arguments.integer("width", options.width);
     options.height = arguments.integer("height", options.height);
     options.fovy = float(arguments.number("fovy", options.fovy));
@@ -55,32 +48,30 @@ int run_city(const Arguments& arguments) {
     options.levels.keep_small_subtrees = arguments.has("keep-small-subtrees");
     options.levels.keep_cheaper_subtrees = arguments.has("keep-cheaper-subtrees");
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
-    std::vector<double> details;
-    {
-        std::stringstream list(arguments.text("detail", "1"));
-        for (std::string item; std::getline(list, item, ',');) {
-            char* end = nullptr;
-            double detail = std::strtod(item.c_str(), &end);
-            require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
-                        std::find(details.begin(), details.end(), detail) == details.end(),
-                    "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" + arguments.text("detail") + "'");
-            details.push_back(detail);
-        }
-        require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
-    }
     options.threads = arguments.integer("threads", 0);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
-    std::string path_name = arguments.text("path", "orbit");
-    bool built_in = path_name == "orbit" || path_name == "street";
-    std::vector<Keyframe> keys;
-    if (!built_in) keys = load_keyframes(path_name);
+    return options;
+}
 
-    Model model = generate_city(city);
-    std::vector<CameraPose> path =
-        built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
-    const std::string& output = arguments.text("output");
-    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, output, stderr);
+// --detail K[,K...]: distinct numbers in the detail range.
+std::vector<double> details_option(const Arguments& arguments) {
+    std::vector<double> details;
+    std::stringstream list(arguments.text("detail", "1"));
+    for (std::string item; std::getline(list, item, ',');) {
+        char* end = nullptr;
+        double detail = std::strtod(item.c_str(), &end);
+        require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
+                    std::find(details.begin(), details.end(), detail) == details.end(),
+                "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" + arguments.text("detail") + "'");
+        details.push_back(detail);
+    }
+    require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
+    return details;
+}
 
+// stdout: the run, then each pass's figures (under detail_<K>. when there are several).
+KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroughOptions& options,
+                      const std::string& output, const std::string& path_name) {
     namespace fs = std::filesystem;
     KeyValues report{text_entry("output", output),
                      text_entry("frames_csv", (fs::path(output) / "frames.csv").string()),
@@ -90,7 +81,6 @@ int run_city(const Arguments& arguments) {
                      number_entry("buildings", double(runs.front().buildings)),
                      number_entry("max_level", double(runs.front().level_totals.size() - 1)),
                      number_entry("build_seconds", runs.front().build_seconds)};
-    // One detail: its figures as they are; several: each under detail_<K>.
     for (const FlyThroughReport& r : runs) {
         std::string key = runs.size() == 1 ? "" : "detail_" + format_number(r.detail) + ".";
         report.push_back(number_entry(key + "detail", r.detail));
@@ -112,6 +102,30 @@ int run_city(const Arguments& arguments) {
         report.push_back(number_entry(key + "error_seconds", r.error_seconds));
         report.push_back(number_entry(key + "seconds", r.total_seconds));
     }
+    return report;
+}
+
+int run_city(const Arguments& arguments) {
+    // Every input is checked before anything is generated or written.
+    require(arguments.has("output"), "-o/--output OUTDIR is required");
+    check_output_directory(arguments.text("output"));
+    FlyThroughOptions options = fly_through_options(arguments);
+    CityOptions city;
+    city.buildings = arguments.integer("buildings", 9);
+    city.seed = std::uint64_t(arguments.integer("seed", 0));
+    int frames = arguments.integer("frames", 60);
+    std::vector<double> details = details_option(arguments);
+    std::string path_name = arguments.text("path", "orbit");
+    bool built_in = path_name == "orbit" || path_name == "street";
+    std::vector<Keyframe> keys;
+    if (!built_in) keys = load_keyframes(path_name);
+
+    Model model = generate_city(city);
+    std::vector<CameraPose> path =
+        built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
+    const std::string& output = arguments.text("output");
+    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, output, stderr);
+    KeyValues report = city_report(runs, options, output, path_name);
     std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
     return 0;
 }

@@ -98,46 +98,63 @@ Image8 compose(ViewerState& s, const Frame& frame) {
     return image;
 }
 
-int run_view(const Arguments& a) {
-    if (a.has("screenshot")) check_output_file(a.text("screenshot"));
-    LodParameters parameters = lod_parameters_from(a);
-    bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
-    if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
-    Model model = load_model(parameters.model);
+// The SDL window showing the software-rendered frame; closed when it goes.
+struct Window {
+    SDL_Window* window = nullptr;
+    SDL_Renderer* renderer = nullptr;
+    SDL_Texture* texture = nullptr;
+
+    Window(const std::string& title, int width, int height) {
+        if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + SDL_GetError());
+        window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height, 0);
+        renderer = window ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
+        texture = renderer ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, width, height) : nullptr;
+        if (!texture) {
+            std::string error = SDL_GetError();
+            close();
+            throw std::runtime_error("cannot open a window: " + error);
+        }
+    }
+    ~Window() { close(); }
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    void show(const Image8& image) {
+        SDL_UpdateTexture(texture, nullptr, image.pixels.data(), image.width * 3);
+        SDL_RenderCopy(renderer, texture, nullptr, nullptr);
+        SDL_RenderPresent(renderer);
+    }
+
+    void close() {
+        if (texture) SDL_DestroyTexture(texture);
+        if (renderer) SDL_DestroyRenderer(renderer);
+        if (window) SDL_DestroyWindow(window);
+        texture = nullptr, renderer = nullptr, window = nullptr;
+        SDL_Quit();
+    }
+};
+
+// The state the viewer starts in: the model and LoD parameters from MODEL or
+// PARAMS.txt, the view from the render options (a parameter file's camera and
+// light win), at level 0 unless a level is asked for.
+ViewerState start_state(const Arguments& a, const Model& model, LodParameters parameters) {
     View view = view_from_arguments(a, model_bounds(model));
     if (parameters.camera) view.settings.camera = *parameters.camera;
     if (parameters.light) view.settings.light = *parameters.light;
-    bool light_given = parameters.light || a.has("light");
     if (a.has("mode")) parameters.render_mode = view.settings.mode;
     else view.settings.mode = parameters.render_mode;
     ViewerState state = make_viewer_state(model, parameters, view.settings, view.width, view.height, view.background);
-    state.light_follows_camera = !light_given;
+    state.light_follows_camera = !(parameters.light || a.has("light"));
     std::vector<std::string> positions = camera_position_names();
     for (std::size_t i = 0; i < positions.size(); ++i)  // C continues from the start position
         if (camera_direction(positions[i]) == camera_direction(a.text("camera", "+X+Y+Z"))) state.camera_position = int(i);
-    std::vector<ViewerEvent> replay = a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+    return state;
+}
 
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + SDL_GetError());
-    SDL_Window* window = SDL_CreateWindow(("boxlod view " + a.positionals[0]).c_str(), SDL_WINDOWPOS_UNDEFINED,
-                                          SDL_WINDOWPOS_UNDEFINED, state.width, state.height, 0);
-    SDL_Renderer* renderer = window ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-    SDL_Texture* texture = renderer ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING,
-                                                        state.width, state.height)
-                                    : nullptr;
-    if (!texture) {
-        std::string error = SDL_GetError();
-        SDL_Quit();
-        throw std::runtime_error("cannot open a window: " + error);
-    }
-    for (const ViewerEvent& e : replay) {
-        SDL_Event event = to_sdl(e);
-        SDL_PushEvent(&event);
-    }
-    int threads = view.settings.threads, screenshots = 0;
-    bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
-    std::string params_out = a.text("params-out", "boxlod-view.params.txt");
-    Frame frame;
-    // A file that cannot be written or read is shown, not the end of the session.
+// What the keys asked of the front end: a screenshot, parameters saved or
+// loaded, the LoD exported. A file that cannot be written or read is shown in
+// the window, not the end of the session. Returns true when the frame must be redrawn.
+bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, int threads, int& screenshots) {
     auto shown = [&](auto action) {
         try {
             action();
@@ -145,6 +162,75 @@ int run_view(const Arguments& a) {
             state.message = error.what();
         }
     };
+    const std::string params_out = a.text("params-out", "boxlod-view.params.txt");
+    bool redraw = false;
+    if (state.screenshot) {  // the rendered frame, without the text overlay
+        std::string path = a.text("screenshot", "boxlod-view-" + std::to_string(screenshots++) + ".png");
+        shown([&] {
+            write_png(path, frame_to_srgb8(frame));
+            std::printf("screenshot = %s\n", path.c_str());
+        });
+        state.screenshot = false;
+    }
+    if (state.save_parameters) {
+        LodParameters p = state.parameters;
+        p.camera = state.settings.camera;
+        p.light = state.settings.light;
+        shown([&] {
+            save_parameters(params_out, p);
+            state.message = "saved " + params_out;
+        });
+        state.save_parameters = false, redraw = true;
+    }
+    if (state.load_parameters) {
+        shown([&] {
+            LodParameters p = load_parameters(params_out);
+            p.model = state.parameters.model;
+            state.parameters = p;
+            if (p.camera) state.settings.camera = *p.camera;
+            if (p.light) state.settings.light = *p.light;
+            state.light_follows_camera = !p.light;
+            state.settings.mode = p.render_mode;
+            state.session.reset();
+            state.needs_update = true;
+            state.message = "loaded " + params_out;
+        });
+        state.load_parameters = false, redraw = true;
+    }
+    if (state.export_lod) {
+        if (state.lod && state.session) {
+            std::string name = std::filesystem::path(state.parameters.model).stem().string() + "_L" +
+                               std::to_string(state.parameters.current_level);
+            std::string folder = a.text("export-dir", "boxlod-view-export");
+            shown([&] {
+                export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
+                state.message = "exported " + folder + "/" + name + ".gltf";
+            });
+        } else {
+            state.message = "nothing to export at level 0";
+        }
+        state.export_lod = false, redraw = true;
+    }
+    return redraw;
+}
+
+int run_view(const Arguments& a) {
+    if (a.has("screenshot")) check_output_file(a.text("screenshot"));
+    LodParameters parameters = lod_parameters_from(a);
+    bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
+    if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
+    Model model = load_model(parameters.model);
+    ViewerState state = start_state(a, model, parameters);
+    std::vector<ViewerEvent> replay = a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+
+    Window window("boxlod view " + a.positionals[0], state.width, state.height);
+    for (const ViewerEvent& e : replay) {
+        SDL_Event event = to_sdl(e);
+        SDL_PushEvent(&event);
+    }
+    int threads = state.settings.threads, screenshots = 0;
+    bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
+    Frame frame;
     while (!state.quit) {
         SDL_Event event;
         // Replays drain the queue without waiting; people get a responsive wait.
@@ -158,63 +244,11 @@ int run_view(const Arguments& a) {
         }
         if (redraw || state.screenshot) {
             frame = render_view(state, threads);
-            Image8 image = compose(state, frame);
-            SDL_UpdateTexture(texture, nullptr, image.pixels.data(), image.width * 3);
-            SDL_RenderCopy(renderer, texture, nullptr, nullptr);
-            SDL_RenderPresent(renderer);
+            window.show(compose(state, frame));
             redraw = false;
         }
-        if (state.screenshot) {  // the rendered frame, without the text overlay
-            std::string path = a.text("screenshot", "boxlod-view-" + std::to_string(screenshots++) + ".png");
-            shown([&] {
-                write_png(path, frame_to_srgb8(frame));
-                std::printf("screenshot = %s\n", path.c_str());
-            });
-            state.screenshot = false;
-        }
-        if (state.save_parameters) {
-            LodParameters p = state.parameters;
-            p.camera = state.settings.camera;
-            p.light = state.settings.light;
-            shown([&] {
-                save_parameters(params_out, p);
-                state.message = "saved " + params_out;
-            });
-            state.save_parameters = false, redraw = true;
-        }
-        if (state.load_parameters) {
-            shown([&] {
-                LodParameters p = load_parameters(params_out);
-                p.model = state.parameters.model;
-                state.parameters = p;
-                if (p.camera) state.settings.camera = *p.camera;
-                if (p.light) state.settings.light = *p.light;
-                state.light_follows_camera = !p.light;
-                state.settings.mode = p.render_mode;
-                state.session.reset();
-                state.needs_update = true;
-                state.message = "loaded " + params_out;
-            });
-            state.load_parameters = false, redraw = true;
-        }
-        if (state.export_lod) {
-            if (state.lod && state.session) {
-                std::string name = std::filesystem::path(parameters.model).stem().string() + "_L" + std::to_string(state.parameters.current_level);
-                std::string folder = a.text("export-dir", "boxlod-view-export");
-                shown([&] {
-                    export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
-                    state.message = "exported " + folder + "/" + name + ".gltf";
-                });
-            } else {
-                state.message = "nothing to export at level 0";
-            }
-            state.export_lod = false, redraw = true;
-        }
+        redraw = serve_requests(state, frame, a, threads, screenshots) || redraw;
     }
-    SDL_DestroyTexture(texture);
-    SDL_DestroyRenderer(renderer);
-    SDL_DestroyWindow(window);
-    SDL_Quit();
     return 0;
 }
 
