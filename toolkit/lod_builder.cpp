@@ -199,7 +199,8 @@ void add_pages(Model& out, const Atlas& atlas, bool textured) {
 // Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
 // materials and textures), a box node becomes a leaf with one quad per packed
 // face, its baked texels placed in its page.
-void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, bool textured) {
+void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
+                   bool textured) {
     const Model& model = *session.model;
     MaterialCopier writer{model, out};
     std::vector<bool> is_box(model.nodes.size(), false);
@@ -234,11 +235,11 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             const std::vector<PackedFace>& packed = packing.faces;
             if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
             const TexelRect& region = packed[next_packed].region;
-            const AtlasPlacement& at = packing.atlas.placements[next_packed++];
+            const AtlasPlacement& at = atlas.placements[next_packed++];
             Primitive& primitive = by_page[at.page];
             primitive.material = at.page;
             append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), region, &at,
-                             packing.atlas.pages[std::size_t(at.page)]);
+                             atlas.pages[std::size_t(at.page)]);
             const LodPage page = lod_page(at.page);
             place_face(session.baked.at(n)[f], region, at, session.sizing.gutter, out.textures[std::size_t(page.color)],
                        out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
@@ -314,7 +315,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
 
     start = Clock::now();
     Packing packing = pack_faces(session, lod.cut, textured);
-    lod.atlas = packing.atlas;
+    lod.atlas = std::move(packing.atlas);  // placed faces: packing.faces[i] at lod.atlas.placements[i]
     lod.face_texels = packing.face_texels;
     session.times.pack += seconds_since(start);
 
@@ -326,7 +327,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     saved.current_level = current_level;
     for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
     add_pages(out, lod.atlas, textured);
-    add_cut_nodes(out, session, lod.cut, packing, textured);
+    add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
     session.times.mesh += seconds_since(start);
 
     lod.cost = cost_parts(out);
