@@ -1,6 +1,10 @@
+// The pipeline (docs/design.md: Rendering): vertex stage, clipping and set-up,
+// binning to tiles, a visibility buffer per tile, then one Fragment per visible
+// pixel handed to the Shader (renderer/shading.h).
 #include "renderer/renderer.h"
 
 #include "base/parallel.h"
+#include "renderer/shading.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -66,22 +70,12 @@ struct Tiling {
     int count() const { return columns * rows; }
 };
 
-// The interpolated inputs of one pixel.
-struct Fragment {
-    Eigen::Vector3f position, normal, geometric_normal;
-    Eigen::Vector2f uv{0, 0}, duv_dx{0, 0}, duv_dy{0, 0};
-    // Tangent frame: tangent along +u, bitangent up the image (against +v), as
-    // glTF's B = cross(N, T) * w; normal maps store (T, B, N) components.
-    Eigen::Vector3f tangent{1, 0, 0}, bitangent{0, 1, 0};
-    bool has_uv = false;
-};
-
 struct Context {
     const std::vector<Batch>& batches;
     const RenderSettings& settings;
     const std::vector<Chunk>& chunks;
     std::size_t chunk_count;  // chunks in use this frame (the scratch may hold more)
-    Eigen::Vector3f eye;
+    const Shader& shader;
 };
 
 const ScreenTriangle& triangle_of(const Context& c, std::uint32_t id, const std::vector<ClippedWeights>*& weights) {
@@ -96,7 +90,7 @@ T interpolate(const std::vector<T>& values, const std::uint32_t* v, const Eigen:
 }
 
 Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y,
-                       bool need_derivatives) {
+                       bool reads_uv) {
     const Mesh& mesh = *c.batches[t.batch].mesh;
     const std::uint32_t* v = &mesh.indices[std::size_t(t.triangle) * 3];
     double px = x + 0.5, py = y + 0.5;
@@ -113,13 +107,11 @@ Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vec
         Eigen::Vector3f n = interpolate(mesh.normals, v, b);
         if (n.squaredNorm() > 0) f.normal = n.normalized();
     }
-    if (!mesh.uvs.empty()) {
+    if (reads_uv && !mesh.uvs.empty()) {
         f.has_uv = true;
         f.uv = interpolate(mesh.uvs, v, b);
-        if (need_derivatives) {
-            f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px + 1, py)) - f.uv;
-            f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px, py + 1)) - f.uv;
-        }
+        f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px + 1, py)) - f.uv;
+        f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px, py + 1)) - f.uv;
         if (!mesh.tangents.empty()) {
             Eigen::Vector4f t4 = interpolate(mesh.tangents, v, b);
             Eigen::Vector3f tangent = t4.head<3>();
@@ -147,79 +139,6 @@ Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vec
         }
     }
     return f;
-}
-
-Eigen::Vector4f sample_surface(const MipTexture* texture, const Fragment& f, const Eigen::Vector2f& uv) {
-    return sample(*texture, uv, mip_level(*texture, f.duv_dx, f.duv_dy));
-}
-
-// MipTexture coordinates displaced by the height map (tangent-space view vector).
-Eigen::Vector2f parallax_uv(const Context& c, const Surface& s, const Fragment& f, const Eigen::Vector3f& view) {
-    Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
-    // uv v grows downwards in the image while the bitangent points up the surface.
-    Eigen::Vector2f direction(v.x(), -v.y());
-    const RenderSettings& r = c.settings;
-    if (r.mode == RenderMode::parallax) {
-        // Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy.
-        float h = sample_surface(s.height, f, f.uv).x();
-        return f.uv + direction * (h * r.parallax_scale + r.parallax_bias);
-    }
-    // Parallax occlusion mapping (Tatarchuk 2006): march the view ray down from the
-    // surface (height 1) in steps; refine linearly between the last two samples.
-    float cos_view = std::max(v.z(), 0.05f);
-    int steps = int(std::lround(8 + 24 * (1 - cos_view)));
-    Eigen::Vector2f total = direction / cos_view * r.parallax_scale;
-    Eigen::Vector2f step = total / float(steps);
-    float layer = 1.0f / float(steps), ray = 1, previous_ray = 1;
-    Eigen::Vector2f uv = f.uv, previous_uv = f.uv;
-    float h = sample_surface(s.height, f, uv).x(), previous_h = h;
-    for (int i = 0; i < steps && h < ray; ++i) {
-        previous_uv = uv, previous_ray = ray, previous_h = h;
-        uv -= step;
-        ray -= layer;
-        h = sample_surface(s.height, f, uv).x();
-    }
-    float before = previous_h - previous_ray, after = h - ray;  // sign change between the two samples
-    float t = before - after != 0 ? before / (before - after) : 0;
-    return previous_uv + (uv - previous_uv) * std::clamp(t, 0.0f, 1.0f);
-}
-
-struct Shaded {
-    Eigen::Vector3f color, normal;
-};
-
-Shaded shade(const Context& c, const Surface& s, Fragment& f) {
-    const RenderSettings& r = c.settings;
-    Eigen::Vector3f view = (c.eye - f.position);
-    float view_length = view.norm();
-    view = view_length > 0 ? Eigen::Vector3f(view / view_length) : Eigen::Vector3f(0, 0, 1);
-    // Two-sided lighting: turn the frame towards the viewer.
-    if (f.geometric_normal.dot(view) < 0) {
-        f.geometric_normal = -f.geometric_normal;
-        f.normal = -f.normal;
-        f.bitangent = -f.bitangent;
-    }
-    bool textured = r.mode != RenderMode::untextured && f.has_uv;
-    Eigen::Vector2f uv = f.uv;
-    if (textured && s.height && (r.mode == RenderMode::parallax || r.mode == RenderMode::pom)) uv = parallax_uv(c, s, f, view);
-    Eigen::Vector4f albedo = s.base_color;
-    if (textured && s.color) albedo = albedo.cwiseProduct(sample_surface(s.color, f, uv));
-    Eigen::Vector3f normal = f.normal;
-    if (textured && s.normal) {  // albedo mode too: baking records the mapped normal
-        Eigen::Vector4f texel = sample_surface(s.normal, f, uv);
-        Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
-        Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();
-        if (mapped.squaredNorm() > 0) normal = mapped.normalized();
-    }
-    if (r.mode == RenderMode::albedo) return {albedo.head<3>(), normal};
-    const Light& light = r.light;
-    Eigen::Vector3f to_light = (light.position - f.position).normalized();
-    Eigen::Vector3f halfway = (to_light + view).normalized();
-    float diffuse = std::max(0.0f, normal.dot(to_light));
-    float shininess = light.shininess > 0 ? light.shininess : s.shininess;
-    float specular = diffuse > 0 ? std::pow(std::max(0.0f, normal.dot(halfway)), shininess) : 0;
-    Eigen::Vector3f color = albedo.head<3>() * (light.ambient + light.diffuse * diffuse) + s.specular * (light.specular * specular);
-    return {color, normal};
 }
 
 // Distance in pixels from a pixel centre to the nearest edge of the source triangle.
@@ -303,7 +222,7 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
         }
     }
 
-    bool need_derivatives = c.settings.mode != RenderMode::untextured;
+    bool reads_uv = c.shader.reads_uv();
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             int local = (y - y0) * tile_size + (x - x0);
@@ -311,8 +230,8 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
             if (id == no_triangle) continue;
             const std::vector<ClippedWeights>* weights;
             const ScreenTriangle& t = triangle_of(c, id, weights);
-            Fragment fragment = make_fragment(c, t, *weights, x, y, need_derivatives);
-            Shaded shaded = shade(c, c.batches[t.batch].surface, fragment);
+            Fragment fragment = make_fragment(c, t, *weights, x, y, reads_uv);
+            ShadedPixel shaded = c.shader.shade(c.batches[t.batch].surface, fragment);
             if (c.settings.wireframe && edge_distance(t, *weights, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
             std::size_t pixel = std::size_t(y) * frame.width + x;
             frame.color[pixel] = Eigen::Vector4f(shaded.color.x(), shaded.color.y(), shaded.color.z(), 1);
@@ -384,12 +303,14 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     });
 
     // Tiles: each owned by one thread; triangles replayed in submission order.
-    Context context{batches, settings, chunks, triangle_ranges.size(), settings.camera.position};
+    Eigen::Vector3f eye = settings.camera.position;
     if (settings.camera.orthographic) {
         // An orthographic view has parallel view rays: place the "eye" far back along them.
         Eigen::Vector3f forward = (settings.camera.target - settings.camera.position).normalized();
-        context.eye = settings.camera.position - forward * 1e6f;
+        eye = settings.camera.position - forward * 1e6f;
     }
+    std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, eye);
+    Context context{batches, settings, chunks, triangle_ranges.size(), settings.shader ? *settings.shader : *mode_shader};
     parallel_for(std::size_t(tiling.count()), threads,
                  [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
 }

@@ -64,9 +64,12 @@ constexpr NumberRange shininess_range{0, 1e4};
 // The default light: above the camera and to its right, as far again as the target.
 Light light_for_camera(const Camera& camera);
 
+class Shader;  // renderer/shading.h
+
 struct RenderSettings {
     Camera camera;
     RenderMode mode = RenderMode::normal;
+    const Shader* shader = nullptr;  // set: shades every pixel instead of `mode`'s shader
     Light light;
     float parallax_scale = 0.04f, parallax_bias = -0.02f;
     Culling culling = Culling::none;

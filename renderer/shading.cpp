@@ -1,0 +1,158 @@
+#include "renderer/shading.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace boxlod {
+namespace {
+
+Eigen::Vector4f sample_surface(const MipTexture& texture, const Fragment& f, const Eigen::Vector2f& uv) {
+    return sample(texture, uv, mip_level(texture, f.duv_dx, f.duv_dy));
+}
+
+// The unit vector to the eye; two-sided lighting turns the fragment's frame towards it.
+[[gnu::always_inline]] inline Eigen::Vector3f face_the_viewer(const Eigen::Vector3f& eye, Fragment& f) {
+    Eigen::Vector3f view = (eye - f.position);
+    float view_length = view.norm();
+    view = view_length > 0 ? Eigen::Vector3f(view / view_length) : Eigen::Vector3f(0, 0, 1);
+    if (f.geometric_normal.dot(view) < 0) {
+        f.geometric_normal = -f.geometric_normal;
+        f.normal = -f.normal;
+        f.bitangent = -f.bitangent;
+    }
+    return view;
+}
+
+// Blinn-Phong with the manual's light (ambient + diffuse x albedo, specular x the material's).
+[[gnu::always_inline]] inline Eigen::Vector3f blinn_phong(const Light& light, const Surface& s, const Fragment& f, const Eigen::Vector3f& view,
+                            const Eigen::Vector4f& albedo, const Eigen::Vector3f& normal) {
+    Eigen::Vector3f to_light = (light.position - f.position).normalized();
+    Eigen::Vector3f halfway = (to_light + view).normalized();
+    float diffuse = std::max(0.0f, normal.dot(to_light));
+    float shininess = light.shininess > 0 ? light.shininess : s.shininess;
+    float specular = diffuse > 0 ? std::pow(std::max(0.0f, normal.dot(halfway)), shininess) : 0;
+    return albedo.head<3>() * (light.ambient + light.diffuse * diffuse) + s.specular * (light.specular * specular);
+}
+
+// Material colour and vertex normals only.
+class UntexturedShader : public Shader {
+public:
+    UntexturedShader(const Light& light, const Eigen::Vector3f& eye) : light_(light), eye_(eye) {}
+    bool reads_uv() const override { return false; }
+    ShadedPixel shade(const Surface& s, Fragment& f) const override {
+        Eigen::Vector3f view = face_the_viewer(eye_, f);
+        return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal};
+    }
+
+private:
+    Light light_;
+    Eigen::Vector3f eye_;
+};
+
+// Albedo = material colour x colour map, normal from the normal map; lit by
+// Blinn-Phong, or unlit (albedo mode: what baking records, the mapped normal too).
+class MappedShader : public Shader {
+public:
+    MappedShader(const Light& light, const Eigen::Vector3f& eye, bool lit) : light_(light), eye_(eye), lit_(lit) {}
+    bool reads_uv() const override { return true; }
+    ShadedPixel shade(const Surface& s, Fragment& f) const override {
+        Eigen::Vector3f view = face_the_viewer(eye_, f);
+        Eigen::Vector4f albedo = s.base_color;
+        Eigen::Vector3f normal = f.normal;
+        if (f.has_uv) {
+            Eigen::Vector2f uv = s.height ? displaced_uv(*s.height, f, view) : f.uv;
+            if (s.color) albedo = albedo.cwiseProduct(sample_surface(*s.color, f, uv));
+            if (s.normal) {
+                Eigen::Vector4f texel = sample_surface(*s.normal, f, uv);
+                Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
+                Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();
+                if (mapped.squaredNorm() > 0) normal = mapped.normalized();
+            }
+        }
+        if (!lit_) return {albedo.head<3>(), normal};
+        return {blinn_phong(light_, s, f, view, albedo, normal), normal};
+    }
+
+protected:
+    // Where the maps are sampled: the fragment's uv, or displaced by the height map.
+    virtual Eigen::Vector2f displaced_uv(const MipTexture&, const Fragment& f, const Eigen::Vector3f&) const { return f.uv; }
+    // The view vector in the tangent frame, and its direction in uv (v grows down the image, the bitangent points up).
+    static Eigen::Vector3f tangent_view(const Fragment& f, const Eigen::Vector3f& view, Eigen::Vector2f& uv_direction) {
+        Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
+        uv_direction = Eigen::Vector2f(v.x(), -v.y());
+        return v;
+    }
+
+private:
+    Light light_;
+    Eigen::Vector3f eye_;
+    bool lit_;
+};
+
+// Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy.
+class ParallaxShader : public MappedShader {
+public:
+    ParallaxShader(const Light& light, const Eigen::Vector3f& eye, float scale, float bias)
+        : MappedShader(light, eye, true), scale_(scale), bias_(bias) {}
+
+protected:
+    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, const Eigen::Vector3f& view) const override {
+        Eigen::Vector2f direction;
+        tangent_view(f, view, direction);
+        float h = sample_surface(height, f, f.uv).x();
+        return f.uv + direction * (h * scale_ + bias_);
+    }
+
+private:
+    float scale_, bias_;
+};
+
+// Parallax occlusion mapping (Tatarchuk 2006): march the view ray down from the
+// surface (height 1) in steps; refine linearly between the last two samples.
+class OcclusionShader : public MappedShader {
+public:
+    OcclusionShader(const Light& light, const Eigen::Vector3f& eye, float scale) : MappedShader(light, eye, true), scale_(scale) {}
+
+protected:
+    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, const Eigen::Vector3f& view) const override {
+        Eigen::Vector2f direction;
+        Eigen::Vector3f v = tangent_view(f, view, direction);
+        float cos_view = std::max(v.z(), 0.05f);
+        int steps = int(std::lround(8 + 24 * (1 - cos_view)));
+        Eigen::Vector2f total = direction / cos_view * scale_;
+        Eigen::Vector2f step = total / float(steps);
+        float layer = 1.0f / float(steps), ray = 1, previous_ray = 1;
+        Eigen::Vector2f uv = f.uv, previous_uv = f.uv;
+        float h = sample_surface(height, f, uv).x(), previous_h = h;
+        for (int i = 0; i < steps && h < ray; ++i) {
+            previous_uv = uv, previous_ray = ray, previous_h = h;
+            uv -= step;
+            ray -= layer;
+            h = sample_surface(height, f, uv).x();
+        }
+        float before = previous_h - previous_ray, after = h - ray;  // sign change between the two samples
+        float t = before - after != 0 ? before / (before - after) : 0;
+        return previous_uv + (uv - previous_uv) * std::clamp(t, 0.0f, 1.0f);
+    }
+
+private:
+    float scale_;
+};
+
+}  // namespace
+
+std::unique_ptr<Shader> make_shader(const RenderSettings& settings, const Eigen::Vector3f& eye) {
+    switch (settings.mode) {
+    case RenderMode::untextured: return std::make_unique<UntexturedShader>(settings.light, eye);
+    case RenderMode::normal: return std::make_unique<MappedShader>(settings.light, eye, true);
+    case RenderMode::parallax:
+        return std::make_unique<ParallaxShader>(settings.light, eye, settings.parallax_scale, settings.parallax_bias);
+    case RenderMode::pom: return std::make_unique<OcclusionShader>(settings.light, eye, settings.parallax_scale);
+    case RenderMode::albedo: return std::make_unique<MappedShader>(settings.light, eye, false);
+    }
+    throw std::logic_error("make_shader: unknown render mode");
+}
+
+}  // namespace boxlod

@@ -1,0 +1,41 @@
+// Shading, kept out of the pipeline (as tinyrenderer's IShader): the pipeline
+// finds the visible triangle of each pixel and interpolates its attributes
+// into a Fragment; a Shader turns that into a colour and a normal. A new render
+// mode is a new Shader; the rasterizer does not change (docs/design.md: Rendering).
+#pragma once
+#include "renderer/renderer.h"
+
+#include <Eigen/Core>
+#include <memory>
+
+namespace boxlod {
+
+// The interpolated inputs of one pixel, in world space.
+struct Fragment {
+    Eigen::Vector3f position, normal, geometric_normal;
+    Eigen::Vector2f uv{0, 0}, duv_dx{0, 0}, duv_dy{0, 0};  // uv and its change one pixel right and down
+    // Tangent frame: tangent along +u, bitangent up the image (against +v), as
+    // glTF's B = cross(N, T) * w; normal maps store (T, B, N) components.
+    Eigen::Vector3f tangent{1, 0, 0}, bitangent{0, 1, 0};
+    bool has_uv = false;
+};
+
+struct ShadedPixel {
+    Eigen::Vector3f color;   // linear RGB
+    Eigen::Vector3f normal;  // the shading normal, facing the viewer
+};
+
+class Shader {
+public:
+    virtual ~Shader() = default;
+    // False: the shader never reads uvs, and the pipeline skips them, their
+    // derivatives and the tangent frame (has_uv stays false).
+    virtual bool reads_uv() const = 0;
+    // `fragment` may be turned to face the viewer on the way.
+    virtual ShadedPixel shade(const Surface& surface, Fragment& fragment) const = 0;
+};
+
+// The shader of a render mode, lit by settings.light and seen from `eye`.
+std::unique_ptr<Shader> make_shader(const RenderSettings& settings, const Eigen::Vector3f& eye);
+
+}  // namespace boxlod

@@ -1,0 +1,95 @@
+#include "renderer/shading.h"
+
+#include "render_scene.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+namespace {
+
+// A render mode the pipeline has never heard of: colour = the fragment's uv (blue: has none).
+class UvShader : public Shader {
+public:
+    bool reads_uv() const override { return true; }
+    ShadedPixel shade(const Surface&, Fragment& f) const override {
+        if (!f.has_uv) return {{0, 0, 1}, f.normal};
+        return {{f.uv.x(), f.uv.y(), 0}, f.normal};
+    }
+};
+
+Frame render_with(const test::RenderScene& scene, const RenderSettings& settings) {
+    Frame frame = make_frame(96, 72, {1, 1, 1});
+    render(scene.batches, settings, frame);
+    return frame;
+}
+
+}  // namespace
+
+TEST(Shading, ANewShaderChangesColoursButNotWhichPixelsAreDrawn) {
+    auto scene = test::make_render_scene();
+    Frame normal = render_with(*scene, scene->settings);
+    UvShader uv_shader;
+    RenderSettings settings = scene->settings;
+    settings.shader = &uv_shader;
+    Frame uv = render_with(*scene, settings);
+    EXPECT_EQ(coverage_mask(uv).pixels, coverage_mask(normal).pixels);
+    EXPECT_EQ(uv.depth, normal.depth);
+    int floor_pixels = 0, box_pixels = 0;
+    for (std::size_t i = 0; i < uv.color.size(); ++i) {
+        if (uv.color[i].w() == 0) continue;
+        const Eigen::Vector4f& c = uv.color[i];
+        if (c.z() == 1) {
+            ++box_pixels;  // the untextured box
+        } else {
+            ++floor_pixels;  // the floor's uvs span [0, 2]
+            EXPECT_TRUE(c.x() >= 0 && c.x() <= 2 && c.y() >= 0 && c.y() <= 2) << c.transpose();
+        }
+    }
+    EXPECT_GT(floor_pixels, 1000);
+    EXPECT_GT(box_pixels, 100);
+}
+
+TEST(Shading, EachModeHasItsShaderAndOnlyUntexturedSkipsUvs) {
+    for (const EnumEntry<RenderMode>& mode : render_modes()) {
+        RenderSettings settings;
+        settings.mode = mode.value;
+        std::unique_ptr<Shader> shader = make_shader(settings, {0, 0, 5});
+        ASSERT_TRUE(shader) << mode.name;
+        EXPECT_EQ(shader->reads_uv(), mode.value != RenderMode::untextured) << mode.name;
+    }
+}
+
+TEST(Shading, AlbedoIsUnlitAndTheOtherModesAreLit) {
+    Fragment f;
+    f.position = {0, 0, 0};
+    f.normal = f.geometric_normal = {0, 0, 1};
+    Surface surface;
+    surface.base_color = {0.5f, 0.25f, 1, 1};
+    for (const EnumEntry<RenderMode>& mode : render_modes()) {
+        RenderSettings settings;
+        settings.mode = mode.value;
+        settings.light.position = {0, 0, 10};
+        Fragment fragment = f;
+        ShadedPixel pixel = make_shader(settings, {0, 0, 5})->shade(surface, fragment);
+        if (mode.value == RenderMode::albedo) {
+            EXPECT_EQ(pixel.color, surface.base_color.head<3>());
+        } else {
+            // Light straight above: ambient + diffuse = 1 times albedo, plus the specular highlight.
+            Eigen::Vector3f expected = surface.base_color.head<3>() + surface.specular * settings.light.specular;
+            EXPECT_NEAR((pixel.color - expected).norm(), 0, 1e-5) << mode.name;
+        }
+    }
+}
+
+TEST(Shading, TwoSidedLightingTurnsTheFragmentTowardsTheEye) {
+    Fragment f;
+    f.position = {0, 0, 0};
+    f.normal = f.geometric_normal = {0, 0, -1};  // facing away from the eye at +Z
+    f.bitangent = {0, 1, 0};
+    RenderSettings settings;
+    settings.mode = RenderMode::untextured;
+    ShadedPixel pixel = make_shader(settings, {0, 0, 5})->shade(Surface{}, f);
+    EXPECT_EQ(pixel.normal, Eigen::Vector3f(0, 0, 1));
+    EXPECT_EQ(f.bitangent, Eigen::Vector3f(0, -1, 0));
+}
