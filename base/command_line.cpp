@@ -1,5 +1,7 @@
 #include "base/command_line.h"
 
+#include <algorithm>
+
 #include "base/input_error.h"
 
 #include <cctype>
@@ -12,6 +14,13 @@ namespace boxlod {
 std::string Arguments::text(const std::string& name, const std::string& fallback) const {
     auto it = values.find(name);
     return it == values.end() ? fallback : it->second;
+}
+
+std::vector<Option> with_options(std::vector<Option> options, const std::vector<Option>& more) {
+    for (const Option& o : more)
+        if (std::none_of(options.begin(), options.end(), [&](const Option& have) { return have.name == o.name; }))
+            options.push_back(o);
+    return options;
 }
 
 double Arguments::number(const std::string& name, double fallback) const {

@@ -21,6 +21,10 @@ struct Option {
     char short_name = 0;               // e.g. 'o' for -o
 };
 
+// `options` followed by those of `more` whose names it does not have yet
+// (commands that combine shared option lists).
+std::vector<Option> with_options(std::vector<Option> options, const std::vector<Option>& more);
+
 struct Command {
     std::string name;
     std::string arguments;  // e.g. "MODEL"

@@ -104,10 +104,12 @@ Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settin
 
 // The manual's camera positions, `multiple` times the framing distance away (as `boxlod render --camera`).
 RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
-                             float fovy, int threads) {
+                             const LodParameters& lod, int threads) {
     RenderSettings settings;
-    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, fovy), fovy);
+    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
     settings.mode = mode;
+    settings.parallax_scale = lod.parallax_scale;
+    settings.parallax_bias = lod.parallax_bias;
     settings.light = light_for_camera(settings.camera);
     settings.threads = threads;
     return settings;
@@ -240,7 +242,7 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
     for (LevelMode mode : config.level_modes)
         for (BoxKind kind : config.box_kinds)
             for (Interpolation interpolation : config.interpolations) {
-                int obtained = compute_level_values(model, mode, config.wanted_levels, interpolation, plan.boxes[kind]).obtained_levels;
+                int obtained = compute_level_values(model, mode, config.lod.wanted_levels, interpolation, plan.boxes[kind]).obtained_levels;
                 Variant variant{mode, kind, interpolation, obtained, {}};
                 for (int level = 0; level <= obtained; ++level)
                     if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
@@ -280,7 +282,7 @@ const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report,
     if (found != run.references.end()) return found->second;
     if (!run.original) run.original = make_drawable_model(run.model);
     auto render_start = Clock::now();
-    RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.fovy, run.threads);
+    RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
     Shot shot = render_shot(run.original->drawable.batches, settings, config.width, config.height);
     report.render_seconds += seconds_since(render_start);
     auto metric_start = Clock::now();
@@ -350,7 +352,7 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
         const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
         auto render_start = Clock::now();
         RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                                row.mode, config.fovy, run.threads);
+                                                row.mode, config.lod, run.threads);
         Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
         double render_seconds = seconds_since(render_start);
         report.render_seconds += render_seconds;
@@ -401,19 +403,13 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
         run_group(run, out, report, group, slot, [&](int s) {
             std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
             if (!session) {
-                LodParameters p;
+                LodParameters p = config.lod;
                 p.level_mode = variant.mode;
                 p.box_kind = variant.box;
                 p.interpolation = variant.interpolation;
-                p.wanted_levels = config.wanted_levels;
-                p.fovy = config.fovy;
-                p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, config.fovy) *
+                p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy) *
                              std::ldexp(1.0f, sizing_level - 1);
-                p.min_texture_size = config.min_texture_size;
-                p.resolution = config.resolution;
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
-                p.keep_small_subtrees = config.keep_small_subtrees;
-                p.keep_cheaper_subtrees = config.keep_cheaper_subtrees;
                 session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
             }
             Lod lod = build_lod(*session, level, run.threads);

@@ -96,6 +96,7 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
     SweepConfig c;
     std::filesystem::path folder = std::filesystem::path(file).parent_path();
     using Setter = std::function<void(const Line&)>;
+    // The sweep's own keys; the LoD parameters are declared in toolkit/lod_parameters.cpp.
     const std::map<std::string, Setter> setters = {
         {"models", [&](const Line& l) {
              for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));
@@ -116,7 +117,6 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              }
              c.levels.assign(levels.begin(), levels.end());
          }},
-        {"wanted_levels", [&](const Line& l) { c.wanted_levels = l.number_in<int>(parameter_range::wanted_levels); }},
         {"views", [&](const Line& l) {
              c.views.clear();
              std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
@@ -137,14 +137,8 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
          }},
         {"width", [&](const Line& l) { c.width = l.number_in<int>(sweep_image_side_range); }},
         {"height", [&](const Line& l) { c.height = l.number_in<int>(sweep_image_side_range); }},
-        {"fovy", [&](const Line& l) { c.fovy = l.number_in<float>(parameter_range::fovy); }},
         {"metrics", [&](const Line& l) { c.metrics = l.words(metrics()); }},
         {"ppd", [&](const Line& l) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
-        {"resolution", [&](const Line& l) { c.resolution = l.number_in<float>(parameter_range::resolution); }},
-        {"min_texture_size", [&](const Line& l) {
-             c.min_texture_size = l.number_in<int>({1, 4096});
-             if (c.min_texture_size & (c.min_texture_size - 1)) l.fail("expected a power of two from 1 to 4096");
-         }},
         {"sizing", [&](const Line& l) {
              if (l.line.value == "nearest") c.sizing = SizingRule::nearest;
              else if (l.line.value == "each-distance") c.sizing = SizingRule::each_distance;
@@ -160,8 +154,6 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
                  else l.fail("unknown baseline '" + item + "' (simplification, single-box, or none)");
              }
          }},
-        {"keep_small_subtrees", [&](const Line& l) { c.keep_small_subtrees = l.boolean(); }},
-        {"keep_cheaper_subtrees", [&](const Line& l) { c.keep_cheaper_subtrees = l.boolean(); }},
         {"keep_images", [&](const Line& l) {
              const std::map<std::string, KeptImages> kinds = {
                  {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};
@@ -173,12 +165,20 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
     };
     for (const KeyValueLine& kv : parse_key_value_lines(text, file)) {
         Line line{file, kv};
+        if (kv.value.empty()) line.fail("missing value");
+        if (const ParameterDeclaration* declared = find_lod_parameter(kv.key)) {
+            if (!declared->sweep_key)
+                line.fail("the sweep varies this itself (level_modes, box_kinds, interpolations, levels, distances, "
+                          "render_modes)");
+            if (std::string problem = declared->parse(kv.value, c.lod); !problem.empty()) line.fail(problem);
+            continue;
+        }
         auto setter = setters.find(kv.key);
         if (setter == setters.end()) line.fail("unknown key");
-        if (kv.value.empty()) line.fail("missing value");
         setter->second(line);
     }
     if (c.models.empty()) throw_input_error(file, "", "no models (key 'models')");
+    validate_parameters(c.lod, file);
     return c;
 }
 

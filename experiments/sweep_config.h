@@ -1,12 +1,14 @@
 // The configuration of `boxlod sweep`: a plain-text file of `key = value`
 // lines (`#` comments, lists comma-separated) naming the models, level modes,
 // box kinds, interpolations, levels, views, distances, render modes, image
-// size, metrics and which images to keep. Paths are relative to the file.
+// size, metrics, which images to keep, and any LoD parameter the sweep does
+// not vary (toolkit/lod_parameters.h). Paths are relative to the file.
 #pragma once
 #include "experiments/metric_registry.h"
 #include "renderer/renderer.h"
 #include "toolkit/boxes.h"
 #include "toolkit/level_modes.h"
+#include "toolkit/lod_parameters.h"
 
 #include <string>
 #include <vector>
@@ -37,23 +39,25 @@ struct SweepConfig {
     std::vector<BoxKind> box_kinds{BoxKind::expanded};
     std::vector<Interpolation> interpolations{Interpolation::linear};
     std::vector<int> levels;  // empty: all, 0 .. obtained levels
-    int wanted_levels = 8;
     std::vector<std::string> views{"+X+Y+Z"};  // camera position names
     std::vector<float> distances{1};           // multiples of the model's framing distance
     std::vector<RenderMode> render_modes{RenderMode::normal};
     int width = 512, height = 512;
-    float fovy = 45;
     std::vector<Metric> metrics = all_metrics();
     double pixels_per_degree = 67;  // FLIP's
-    float resolution = 512;  // texture sizing screen height
+    // Every LoD's parameters but those the sweep varies (level mode, box kind,
+    // interpolation, level, render mode, sizing distance), set in the config
+    // under their parameter-file keys. `fovy` is the views' too.
+    LodParameters lod = [] {
+        LodParameters p;
+        p.resolution = 512;  // texel = pixel on the sweep's default 512-pixel-high images
+        return p;
+    }();
     SizingRule sizing = SizingRule::nearest;
-    int min_texture_size = 256;  // LodParameters::min_texture_size: the smallest LoD page side
     // The classic baselines (docs/sweeps.md), compared at the LoD's triangle counts:
     // the original simplified to each level's triangles (quadric edge collapse), and
     // the whole model as one untextured box.
     bool simplification_baseline = false, single_box_baseline = false;
-    bool keep_small_subtrees = false;    // LodParameters::keep_small_subtrees for every LoD
-    bool keep_cheaper_subtrees = false;  // LodParameters::keep_cheaper_subtrees for every LoD
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

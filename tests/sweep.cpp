@@ -187,7 +187,7 @@ TEST(Sweep, SizingPerLevelBakesCoarserLevelsForFartherAway) {
     s.config.levels = {1, 3};
     s.config.views = {"+X+Y+Z"};
     s.config.level_modes = {LevelMode::top_down};
-    EXPECT_EQ(s.config.min_texture_size, 16);
+    EXPECT_EQ(s.config.lod.min_texture_size, 16);
     SweepConfig nearest = s.config;
     nearest.sizing = SizingRule::nearest;
     run_sweep(s.config, (s.folder / "per_level").string(), 1);

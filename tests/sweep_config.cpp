@@ -35,23 +35,23 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.box_kinds, (std::vector<BoxKind>{BoxKind::expanded, BoxKind::minimal}));
     EXPECT_EQ(c.interpolations, (std::vector<Interpolation>{Interpolation::linear, Interpolation::rank}));
     EXPECT_EQ(c.levels, (std::vector<int>{0, 1, 3}));
-    EXPECT_EQ(c.wanted_levels, 5);
+    EXPECT_EQ(c.lod.wanted_levels, 5);
     EXPECT_EQ(c.views, (std::vector<std::string>{"+X+Y+Z", "-Z"}));
     EXPECT_EQ(c.distances, (std::vector<float>{1, 2.5f}));
     EXPECT_EQ(c.render_modes, (std::vector<RenderMode>{RenderMode::normal, RenderMode::parallax}));
     EXPECT_EQ(c.width, 64);
     EXPECT_EQ(c.height, 48);
-    EXPECT_EQ(c.fovy, 30);
+    EXPECT_EQ(c.lod.fovy, 30);
     EXPECT_EQ(c.metrics, (std::vector<Metric>{Metric::psnr, Metric::ssim}));
     EXPECT_EQ(c.pixels_per_degree, 40);
-    EXPECT_EQ(c.resolution, 256);
+    EXPECT_EQ(c.lod.resolution, 256);
     EXPECT_EQ(c.keep_images, KeptImages::all);
     EXPECT_EQ(c.threads, 2);
     EXPECT_EQ(c.sizing, SizingRule::each_distance);
     EXPECT_TRUE(c.simplification_baseline);
     EXPECT_TRUE(c.single_box_baseline);
-    EXPECT_TRUE(c.keep_small_subtrees);
-    EXPECT_TRUE(c.keep_cheaper_subtrees);
+    EXPECT_TRUE(c.lod.keep_small_subtrees);
+    EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
 }
 
 TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
@@ -88,7 +88,9 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
     expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, iou)");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
-    expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two from 1 to 4096");
+    expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two in [1, 16384], got '100'");
+    expect_error("models = a.glb\nmin_texture_size = 8192\n", "cfg.txt: min_texture_size and max_texture_size must be powers of two");
+    expect_error("models = a.glb\nlevel_mode = top-down\n", "cfg.txt: line 2: level_mode: the sweep varies this itself");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
     expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");

@@ -6,6 +6,7 @@
 #include "experiments/commands/commands.h"
 #include "experiments/flip.h"
 #include "experiments/fly_through.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/parameters.h"
 #include "toolkit/strategy_text.h"
 
@@ -18,6 +19,10 @@
 
 namespace boxlod {
 namespace {
+
+// The LoD parameters a city takes from the command line (the sizing ones are set per level).
+const std::vector<std::string> city_lod_parameters{"level_mode", "wanted_levels", "keep_small_subtrees",
+                                                   "keep_cheaper_subtrees"};
 
 const std::string prefix = "boxlod city: ";
 
@@ -41,12 +46,7 @@ FlyThroughOptions fly_through_options(const Arguments& arguments) {
     }
     options.error_every = arguments.integer("error-every", options.error_every);
     options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
-    if (arguments.has("level-mode"))
-        require(parse_level_mode(arguments.text("level-mode"), options.levels.level_mode),
-                "--level-mode: unknown level mode '" + arguments.text("level-mode") + "' (" + enum_names(level_modes()) + ")");
-    options.levels.wanted_levels = arguments.integer("levels", options.levels.wanted_levels);
-    options.levels.keep_small_subtrees = arguments.has("keep-small-subtrees");
-    options.levels.keep_cheaper_subtrees = arguments.has("keep-cheaper-subtrees");
+    apply_lod_options(arguments, options.levels, city_lod_parameters);
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
     options.threads = arguments.integer("threads", 0);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
@@ -133,6 +133,31 @@ int run_city(const Arguments& arguments) {
 }  // namespace
 
 Subcommand city_subcommand() {
+    std::vector<Option> options = {
+        {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
+        {"buildings", "N", "buildings in the city (default 9)", NumberRange{1, 10000}},
+        {"seed", "S", "the city's seed (default 0)", seed_range},
+        {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
+                          "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
+        {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
+        {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
+        {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},
+        {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)", NumberRange{16, 8192}},
+        {"fovy", "DEGREES", "vertical field of view (default 45)", parameter_range::fovy},
+        {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
+        {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
+                                "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
+                                "levels, images under OUTDIR/detail_K/"},
+        {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
+        {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
+        {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
+    };
+    options = with_options(options, lod_options(city_lod_parameters));
+    options = with_options(options, {
+        {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
+        {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
+        {"json", "", "print one JSON object instead of key = value lines"},
+    });
     return {{"city", "",
              "Fly through a generated city with run-time LoD selection. Every building gets its own LoD, built once "
              "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
@@ -140,31 +165,7 @@ Subcommand city_subcommand() {
              "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
              "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
              "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
-             {{"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
-              {"buildings", "N", "buildings in the city (default 9)", NumberRange{1, 10000}},
-              {"seed", "S", "the city's seed (default 0)", seed_range},
-              {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
-                                "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
-              {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
-              {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
-              {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},
-              {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)", NumberRange{16, 8192}},
-              {"fovy", "DEGREES", "vertical field of view (default 45)", parameter_range::fovy},
-              {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
-              {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
-                                      "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
-                                      "levels, images under OUTDIR/detail_K/"},
-              {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
-              {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
-              {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
-              {"level-mode", "M", "level mode of every building's LoD (default top-down)"},
-              {"levels", "N", "wanted levels for the box modes (default 8)", parameter_range::wanted_levels},
-              {"keep-small-subtrees", "", "no box for a sub-tree of at most 6 faces (as build --keep-small-subtrees)"},
-              {"keep-cheaper-subtrees", "", "no box costing more bytes than its sub-tree's mesh (as build --keep-cheaper-subtrees)"},
-              {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
-              {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
-              {"json", "", "print one JSON object instead of key = value lines"}},
-             0, 0},
+             options, 0, 0},
             run_city};
 }
 

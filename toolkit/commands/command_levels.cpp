@@ -3,6 +3,7 @@
 #include "base/timing.h"
 #include "toolkit/boxes.h"
 #include "toolkit/commands/commands.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/level_modes.h"
 #include "toolkit/model_io.h"
 #include "toolkit/parameters.h"
@@ -12,20 +13,13 @@
 namespace boxlod {
 
 static int run_levels(const Arguments& arguments) {
-    const std::string prefix = "boxlod levels: ";
-    const LodParameters defaults;  // the same defaults as `boxlod build`
-    if (!arguments.has("level-mode")) throw InputError(prefix + "--level-mode M is required (see --help)");
-    LevelMode mode{};
-    if (!parse_level_mode(arguments.text("level-mode"), mode))
-        throw InputError(prefix + "--level-mode: unknown mode '" + arguments.text("level-mode") + "'");
-    BoxKind kind = defaults.box_kind;
-    if (arguments.has("box") && !parse_box_kind(arguments.text("box"), kind))
-        throw InputError(prefix + "--box: expected " + enum_names(box_kinds(), ", ", " or ") + ", got '" + arguments.text("box") + "'");
-    Interpolation interpolation = defaults.interpolation;
-    if (arguments.has("interpolation") && !parse_interpolation(arguments.text("interpolation"), interpolation))
-        throw InputError(prefix + "--interpolation: expected " + enum_names(interpolations(), ", ", " or ") + ", got '" +
-                         arguments.text("interpolation") + "'");
-    const int wanted_levels = arguments.integer("wanted-levels", defaults.wanted_levels);
+    if (!arguments.has("level-mode")) throw InputError("boxlod levels: --level-mode M is required (see --help)");
+    LodParameters parameters;  // the same defaults as `boxlod build`
+    apply_lod_options(arguments, parameters);
+    const LevelMode mode = parameters.level_mode;
+    const BoxKind kind = parameters.box_kind;
+    const Interpolation interpolation = parameters.interpolation;
+    const int wanted_levels = parameters.wanted_levels;
     const int threads = arguments.integer("threads", 0);
 
     const std::string& path = arguments.positionals[0];
@@ -59,22 +53,14 @@ static int run_levels(const Arguments& arguments) {
 }
 
 Subcommand levels_subcommand() {
-    const LodParameters defaults;
+    std::vector<Option> options = lod_options({"level_mode", "wanted_levels", "box_kind", "interpolation"});
+    options[0].help = enum_names(level_modes(), ", ", " or ") + " (required)";  // level_mode comes first
     return {{"levels",
              "MODEL",
              "Print every node's level value (level.K = L for node K) and the obtained number of levels.",
-             {{"level-mode", "M",
-               enum_names(level_modes(), ", ", " or ") + " (required)"},
-              {"wanted-levels", "N",
-               "number of levels for the box modes (default " + std::to_string(defaults.wanted_levels) + ")", parameter_range::wanted_levels},
-              {"box", "KIND",
-               "boxes for the box modes: " + enum_names(box_kinds(), ", ", " or ") + " (default " +
-                   box_kind_name(defaults.box_kind) + ")"},
-              {"interpolation", "I",
-               "box modes: " + enum_names(interpolations(), ", ", " or ") + " of the box value (default " +
-                   interpolation_name(defaults.interpolation) + ")"},
-              {"threads", "N", "threads for the boxes (default: all cores)", thread_count_range},
-              {"json", "", "print one JSON object instead of key = value lines"}},
+             with_options(options,
+                  {{"threads", "N", "threads for the boxes (default: all cores)", thread_count_range},
+                   {"json", "", "print one JSON object instead of key = value lines"}}),
              1,
              1},
             run_levels};

@@ -261,9 +261,8 @@ Subcommand view_subcommand() {
         {"params-out", "FILE", "where F5 saves and F9 loads parameters (default boxlod-view.params.txt)"},
         {"export-dir", "DIR", "where F6 exports the current LoD (default boxlod-view-export)"},
     };
-    for (const Option& o : render_options()) options.push_back(o);
-    for (const Option& o : lod_options())  // the camera's distance and fovy are the render options'
-        if (o.name != "distance" && o.name != "fovy") options.push_back(o);
+    // The camera's distance and fovy are the render options' (and size the LoD's textures too).
+    options = with_options(with_options(options, render_options()), lod_options());
     return {{"view", "MODEL|PARAMS.txt",
              "Interactive viewer: fly around a model and its LoD, switch modes and levels, compare.\n" + viewer_key_help(),
              options, 1, 1},

@@ -1,13 +1,22 @@
-// The LoD options `build` and `view` share, and the parameters they give:
-// a parameter file first (MODEL|PARAMS.txt, or --params for parameters only),
-// then every option given on the command line on top.
+// The LoD options `build`, `view`, `levels`, `render` and `city` share, made
+// from the parameters' declarations (toolkit/lod_parameters.h), and the
+// parameters they give: a parameter file first (MODEL|PARAMS.txt, or --params
+// for parameters only), then every option given on the command line on top.
 #pragma once
 #include "base/command_line.h"
 #include "toolkit/parameters.h"
 
+#include <string>
+#include <vector>
+
 namespace boxlod {
 
-std::vector<Option> lod_options();
+std::vector<Option> lod_options();  // --params and every LoD parameter
+// The options of the parameters with these keys, in declaration order.
+std::vector<Option> lod_options(const std::vector<std::string>& keys);
+// Sets every declared LoD parameter whose option is given (of those with these
+// keys; empty: all); throws InputError.
+void apply_lod_options(const Arguments& arguments, LodParameters& parameters, const std::vector<std::string>& keys = {});
 LodParameters lod_parameters_from(const Arguments& arguments);
 
 }  // namespace boxlod

@@ -4,6 +4,7 @@
 #include "base/parallel.h"
 #include "renderer/image.h"
 #include "toolkit/framing.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/parameters.h"
 
 #include <Eigen/Geometry>
@@ -12,15 +13,13 @@
 
 namespace boxlod {
 std::vector<Option> render_options() {
-    return {
+    return with_options({
         {"camera", "POS", "one of the 26 camera positions, e.g. +X+Y+Z (default), -Z, +Y"},
         {"distance", "D", "camera distance from the model's centre (default: frames the model)", NumberRange{1e-3, 1e6}},
         {"fovy", "DEG", "vertical field of view in degrees (default 45)", parameter_range::fovy},
         {"width", "W", "image width in pixels (default 1024)", image_side_range},
         {"height", "H", "image height in pixels (default 768)", image_side_range},
         {"mode", "MODE", enum_names(render_modes(), ", ", " or ") + " (default normal)"},
-        {"parallax-scale", "S", "parallax/pom height scale (default 0.04)", parameter_range::parallax},
-        {"parallax-bias", "B", "parallax height bias (default -0.02)", parameter_range::parallax},
         {"light", "X,Y,Z", "light position in world space (default: above, right of the camera)"},
         {"ambient", "A", "ambient light (default 0.25)", light_intensity_range},
         {"diffuse", "D", "diffuse light (default 0.75)", light_intensity_range},
@@ -30,7 +29,7 @@ std::vector<Option> render_options() {
         {"cull", "FACES", "none (default) | back | front"},
         {"wireframe", "", "draw triangle edges over the shaded image"},
         {"threads", "N", "threads to use (default: all cores)", thread_count_range},
-    };
+    }, lod_options({"parallax_scale", "parallax_bias"}));
 }
 
 Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text, const NumberRange& range) {
@@ -65,8 +64,10 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     s.camera = framed_camera(framing, *direction, view.distance, fovy);
     if (a.has("mode") && !parse_render_mode(a.text("mode"), s.mode))
         throw InputError("--mode: unknown render mode '" + a.text("mode") + "' (" + enum_names(render_modes()) + ")");
-    s.parallax_scale = float(a.number("parallax-scale", s.parallax_scale));
-    s.parallax_bias = float(a.number("parallax-bias", s.parallax_bias));
+    LodParameters parallax;
+    apply_lod_options(a, parallax, {"parallax_scale", "parallax_bias"});
+    s.parallax_scale = parallax.parallax_scale;
+    s.parallax_bias = parallax.parallax_bias;
     s.light = light_for_camera(s.camera);
     if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), position_range);
     s.light.ambient = float(a.number("ambient", s.light.ambient));

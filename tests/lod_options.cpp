@@ -1,0 +1,57 @@
+#include "toolkit/commands/lod_options.h"
+
+#include <gtest/gtest.h>
+
+using namespace boxlod;
+
+namespace {
+
+LodParameters parse(const std::vector<std::string>& words) {
+    Command command{"test", "MODEL", "", lod_options(), 1, 1};
+    std::vector<std::string> all{"model.glb"};
+    all.insert(all.end(), words.begin(), words.end());
+    return lod_parameters_from(parse_arguments(command, all));
+}
+
+}  // namespace
+
+TEST(LodOptions, OneOptionPerDeclaredParameterWithItsRange) {
+    std::vector<Option> options = lod_options();
+    ASSERT_EQ(options.size(), lod_parameter_declarations().size() + 1);  // and --params
+    for (const ParameterDeclaration& d : lod_parameter_declarations()) {
+        auto o = std::find_if(options.begin(), options.end(), [&](const Option& o) { return o.name == d.option; });
+        ASSERT_NE(o, options.end()) << d.option;
+        EXPECT_EQ(o->help, d.help_text());
+        EXPECT_EQ(o->range.has_value(), d.range.has_value());
+    }
+    EXPECT_EQ(lod_options({"wanted_levels", "level_mode"}).size(), 2u);
+    EXPECT_EQ(lod_options({"wanted_levels", "level_mode"})[0].name, "level-mode");  // declaration order
+}
+
+TEST(LodOptions, OptionsSetTheirParameters) {
+    LodParameters p = parse({"--level-mode", "box-volume", "--wanted-levels", "5", "--box", "minimal", "--no-crop",
+                             "--keep-small-subtrees", "--resolution", "720", "--min-texture-size", "64"});
+    EXPECT_EQ(p.model, "model.glb");
+    EXPECT_EQ(p.level_mode, LevelMode::box_volume);
+    EXPECT_EQ(p.wanted_levels, 5);
+    EXPECT_EQ(p.box_kind, BoxKind::minimal);
+    EXPECT_FALSE(p.crop_faces);  // a flag sets the opposite of the default
+    EXPECT_TRUE(p.keep_small_subtrees);
+    EXPECT_FALSE(p.keep_cheaper_subtrees);
+    EXPECT_EQ(p.resolution, 720);
+    EXPECT_EQ(p.min_texture_size, 64);
+}
+
+TEST(LodOptions, ErrorsNameTheOption) {
+    auto message = [](const std::vector<std::string>& words) {
+        try {
+            parse(words);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message({"--box", "round"}).rfind("--box: unknown value 'round' (", 0), 0u);
+    EXPECT_EQ(message({"--min-texture-size", "100"}), "--min-texture-size: expected a power of two in [1, 16384], got '100'");
+    EXPECT_NE(message({"--min-texture-size", "8192"}).find("min <= max"), std::string::npos);
+}
