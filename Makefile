@@ -54,8 +54,9 @@ fuzz:
 bench:
 	@scripts/install-deps.sh bench
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS) --target rasterizer_benchmark
+	@cmake --build $(BUILD) -j $(JOBS) --target rasterizer_benchmark png_benchmark
 	@$(BUILD)/experiments/rasterizer_benchmark
+	@$(BUILD)/experiments/png_benchmark
 
 # The paper: every sweep and city run of the workflow (experiments/Snakefile,
 # profile full; the jobs Snakemake finds up to date are skipped), the notebooks

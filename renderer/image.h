@@ -1,4 +1,4 @@
-// Images: plain pixel arrays, PNG in and out (stb), sRGB <-> linear.
+// Images: plain pixel arrays, PNG in (stb) and out (libspng), sRGB <-> linear.
 #pragma once
 #include "base/input_error.h"
 #include <cstdint>

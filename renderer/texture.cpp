@@ -78,6 +78,11 @@ Eigen::Vector4f sample_level(const MipTexture& texture, int index, Eigen::Vector
     float fx = std::floor(x), fy = std::floor(y);
     int i = int(fx), j = int(fy);
     float s = x - fx, t = y - fy;
+    if (i >= 0 && j >= 0 && i + 1 < level.width && j + 1 < level.height) {  // inside: no wrapping (most samples)
+        std::size_t k = std::size_t(j) * level.width + i, below = k + std::size_t(level.width);
+        return (decode(level, texture.format, k) * (1 - s) + decode(level, texture.format, k + 1) * s) * (1 - t) +
+               (decode(level, texture.format, below) * (1 - s) + decode(level, texture.format, below + 1) * s) * t;
+    }
     return (at(i, j) * (1 - s) + at(i + 1, j) * s) * (1 - t) + (at(i, j + 1) * (1 - s) + at(i + 1, j + 1) * s) * t;
 }
 

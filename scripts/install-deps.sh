@@ -7,7 +7,7 @@ set -euo pipefail
 
 build_packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libspng-dev
   libopenexr-dev libassimp-dev libmeshoptimizer-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsdl2-dev
 )

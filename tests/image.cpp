@@ -5,6 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <vector>
+
 using namespace boxlod;
 
 TEST(Image, PngRoundTripKeepsEveryByte) {
@@ -55,6 +61,31 @@ TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {
     EXPECT_EQ(linear_to_srgb(2.0f), 255);
     EXPECT_NEAR(srgb_to_linear(128), 0.21586, 1e-5);  // IEC 61966-2-1
     EXPECT_EQ(linear_to_srgb(0.5f), 188);              // 0.5 linear = 187.5 encoded, rounds to 188
+}
+
+TEST(Image, SrgbEncodeRoundsToNearestForEveryFloatItTries) {
+    // The reference: the code whose encoded value is nearest, found by binary
+    // search over the midpoints between codes (IEC 61966-2-1's formulas).
+    std::vector<float> midpoints;
+    auto encoded = [](double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055; };
+    for (int i = 0; i < 255; ++i) {
+        double mid = (encoded(srgb_to_linear(std::uint8_t(i))) + encoded(srgb_to_linear(std::uint8_t(i + 1)))) / 2;
+        midpoints.push_back(float(mid <= 0.04045 ? mid / 12.92 : std::pow((mid + 0.055) / 1.055, 2.4)));
+    }
+    auto reference = [&](float v) {
+        if (!(v > 0)) return 0;
+        return int(std::upper_bound(midpoints.begin(), midpoints.end(), v) - midpoints.begin());
+    };
+    int mismatches = 0;
+    for (std::uint32_t bits = 1; bits < 0x3f800000u + 64; bits += 61) {  // every 61st float up to just above 1
+        float v = std::bit_cast<float>(bits);
+        mismatches += linear_to_srgb(v) != reference(v);
+    }
+    for (float m : midpoints)  // each midpoint and its neighbours, where the code changes
+        for (float v : {std::nextafter(m, 0.0f), m, std::nextafter(m, 2.0f)}) mismatches += linear_to_srgb(v) != reference(v);
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::quiet_NaN()), 0);
+    EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::infinity()), 255);
 }
 
 TEST(Image, Png16RoundTripKeepsEverySample) {

@@ -1,5 +1,8 @@
 #include "toolkit/drawable.h"
 
+#include "base/parallel.h"
+
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -45,22 +48,27 @@ std::shared_ptr<const MipTexture> TextureCache::decode(const Texture& texture, C
     return entries_->by_digest.emplace(digest, decoded).first->second;
 }
 
-DecodedTextures decode_textures(const Model& model, TextureCache* cache) {
+DecodedTextures decode_textures(const Model& model, TextureCache* cache, int threads) {
     DecodedTextures decoded;
     decoded.color.resize(model.textures.size());
     decoded.linear.resize(model.textures.size());
-    auto decode = [&](int index, ColorSpace space) {
-        if (index < 0) return;
-        auto& slot = (space == ColorSpace::srgb ? decoded.color : decoded.linear)[index];
-        if (slot) return;
-        const Texture& texture = model.textures[index];
-        slot = cache ? cache->decode(texture, space) : std::make_shared<const MipTexture>(decode_texture(texture, space));
+    // Each texture once per colour space the materials read it in; decoded in parallel.
+    std::vector<std::pair<int, ColorSpace>> wanted;
+    auto want = [&](int index, ColorSpace space) {
+        if (index >= 0 && std::find(wanted.begin(), wanted.end(), std::pair{index, space}) == wanted.end())
+            wanted.emplace_back(index, space);
     };
     for (const Material& material : model.materials) {
-        decode(material.base_color_texture, ColorSpace::srgb);
-        decode(material.normal_texture, ColorSpace::linear);
-        decode(material.height_texture, ColorSpace::linear);
+        want(material.base_color_texture, ColorSpace::srgb);
+        want(material.normal_texture, ColorSpace::linear);
+        want(material.height_texture, ColorSpace::linear);
     }
+    parallel_for(wanted.size(), threads, [&](std::size_t i) {
+        auto [index, space] = wanted[i];
+        const Texture& texture = model.textures[std::size_t(index)];
+        (space == ColorSpace::srgb ? decoded.color : decoded.linear)[std::size_t(index)] =
+            cache ? cache->decode(texture, space) : std::make_shared<const MipTexture>(decode_texture(texture, space));
+    });
     return decoded;
 }
 
@@ -114,9 +122,9 @@ Drawable make_drawable(const Model& model, const DecodedTextures& textures, int 
     return drawable;
 }
 
-std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache) {
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache, int threads) {
     auto result = std::make_unique<DrawableModel>();
-    result->textures = decode_textures(model, cache);
+    result->textures = decode_textures(model, cache, threads);
     result->drawable = make_drawable(model, result->textures);
     return result;
 }

@@ -31,7 +31,8 @@ private:
     std::unique_ptr<Entries> entries_;
 };
 
-DecodedTextures decode_textures(const Model& model, TextureCache* cache = nullptr);
+// `threads` as parallel_for's (0: all cores).
+DecodedTextures decode_textures(const Model& model, TextureCache* cache = nullptr, int threads = 1);
 
 struct Drawable {
     std::vector<std::unique_ptr<Mesh>> meshes;
@@ -47,6 +48,6 @@ struct DrawableModel {
     DecodedTextures textures;
     Drawable drawable;
 };
-std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache = nullptr);
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache = nullptr, int threads = 1);
 
 }  // namespace boxlod

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 namespace boxlod {
 namespace {
@@ -235,10 +236,14 @@ void export_gltf(const Model& model, const std::string& path, int threads) {
     std::string bin_name = target.stem().string() + ".bin";
     write_file_atomically((target.parent_path() / bin_name).string(), data);
     writer.WriteGltfSceneToStream(&w.gltf, stream, true, false);
-    // The stream writer embeds buffers as data URIs; point the buffer at NAME.bin instead.
-    nlohmann::json json = nlohmann::json::parse(stream.str());
-    json["buffers"][0] = {{"byteLength", data.size()}, {"uri", bin_name}};
-    write_text_atomically(path, json.dump(2) + "\n");
+    // The stream writer embeds the buffer as a data URI (the only one: images
+    // are files); point it at NAME.bin instead, as text, without parsing the JSON again.
+    std::string json = stream.str();
+    const std::string data_uri = "\"uri\": \"data:application/octet-stream;base64,";
+    std::size_t begin = json.find(data_uri), end = begin == std::string::npos ? begin : json.find('"', begin + data_uri.size());
+    if (end == std::string::npos) throw std::logic_error("export_gltf: no buffer data URI in tinygltf's output");
+    json.replace(begin, end + 1 - begin, "\"uri\": " + nlohmann::json(bin_name).dump());
+    write_text_atomically(path, json);  // tinygltf ends it with a newline
     files.commit();
 }
 

@@ -10,7 +10,7 @@
 namespace boxlod {
 
 Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads) {
-    auto drawable = make_drawable_model(lod.model);
+    auto drawable = make_drawable_model(lod.model, nullptr, threads);
     RenderSettings settings;
     settings.camera = preview_camera(session);
     settings.mode = session.parameters.render_mode;
