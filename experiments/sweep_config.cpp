@@ -31,10 +31,6 @@ struct Line {
     [[noreturn]] void fail(const std::string& what) const {
         throw_input_error(file, "line " + std::to_string(line.line) + ": " + line.key, what);
     }
-    bool boolean() const {
-        if (line.value != "true" && line.value != "false") fail("expected true or false");
-        return line.value == "true";
-    }
     std::vector<std::string> items() const {
         std::vector<std::string> out;
         std::stringstream words(line.value);
