@@ -10,13 +10,20 @@ all: build
 deps:
 	@scripts/install-deps.sh
 
+CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBOXLOD_DEBUG_BUILD=$(abspath $(DEBUG_BUILD)) >/dev/null
+
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBOXLOD_DEBUG_BUILD=$(abspath $(DEBUG_BUILD)) >/dev/null
+	@$(CONFIGURE)
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+# The demo installs and builds only what it runs: the program (no tests,
+# benchmarks or LaTeX; `make test` adds them to the same build folder).
+demo:
+	@scripts/install-deps.sh demo
+	@$(CONFIGURE)
+	@cmake --build $(BUILD) -j $(JOBS) --target boxlod
 	@scripts/demo.sh $(BUILD)
 
 test: build debug-build

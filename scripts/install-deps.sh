@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian packages boxlod needs that are missing; nothing else.
-# Usage: scripts/install-deps.sh [bench|fuzz|paper]   (bench adds the benchmarks' peers, fuzz clang;
+# Usage: scripts/install-deps.sh [demo|bench|fuzz|paper]   (demo: only what `make demo` needs;
+# bench adds the benchmarks' peers, fuzz clang;
 # paper: the workflow, notebooks and LaTeX, which the default list also holds
 # because `make test` builds the paper on tiny inputs)
 set -euo pipefail
 
-build_packages=(
+# The boxlod program.
+program_packages=(
   build-essential cmake pkg-config
   libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libspng-dev
-  libopenexr-dev libassimp-dev libmeshoptimizer-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libsdl2-dev
+  libopenexr-dev libassimp-dev libmeshoptimizer-dev libsdl2-dev
 )
+# The tests and benchmarks.
+build_packages=("${program_packages[@]}" libgtest-dev libgmock-dev libbenchmark-dev)
 # Real data for the tests and the demo: the KIT FZK-Haus (IFC) and the assimp CLI that converts it.
 data_packages=(assimp-utils assimp-testmodels)
 # The SSIM reference test: scikit-image's structural_similarity (reads PNGs through imageio).
@@ -34,6 +37,8 @@ paper_packages=(snakemake python3-yaml python3-pandas python3-matplotlib
   texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk)
 
 wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}")
+# make demo: the program, the FZK-Haus and the plot; no tests, benchmarks, viewer test or LaTeX.
+[ "${1:-}" = demo ] && wanted=("${program_packages[@]}" assimp-testmodels python3-matplotlib)
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")
 [ "${1:-}" = fuzz ] && wanted+=("${fuzz_packages[@]}")
 
