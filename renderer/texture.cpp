@@ -70,20 +70,21 @@ Eigen::Vector4f sample_level(const MipTexture& texture, int index, Eigen::Vector
     // Keep huge repeat coordinates in range before converting to int.
     x = std::clamp(x, -1e7f, 1e7f);
     y = std::clamp(y, -1e7f, 1e7f);
-    auto at = [&](int i, int j) {
-        return decode(level, texture.format,
-                      std::size_t(wrap_index(j, level.height, texture.wrap)) * level.width + wrap_index(i, level.width, texture.wrap));
+    auto wrapped = [&](int i, int j) {
+        return std::size_t(wrap_index(j, level.height, texture.wrap)) * level.width + wrap_index(i, level.width, texture.wrap);
     };
-    if (nearest) return at(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f)));
+    if (nearest) return decode(level, texture.format, wrapped(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f))));
     float fx = std::floor(x), fy = std::floor(y);
     int i = int(fx), j = int(fy);
     float s = x - fx, t = y - fy;
+    std::size_t k00, k10, k01, k11;
     if (i >= 0 && j >= 0 && i + 1 < level.width && j + 1 < level.height) {  // inside: no wrapping (most samples)
-        std::size_t k = std::size_t(j) * level.width + i, below = k + std::size_t(level.width);
-        return (decode(level, texture.format, k) * (1 - s) + decode(level, texture.format, k + 1) * s) * (1 - t) +
-               (decode(level, texture.format, below) * (1 - s) + decode(level, texture.format, below + 1) * s) * t;
+        k00 = std::size_t(j) * level.width + i, k10 = k00 + 1, k01 = k00 + std::size_t(level.width), k11 = k01 + 1;
+    } else {
+        k00 = wrapped(i, j), k10 = wrapped(i + 1, j), k01 = wrapped(i, j + 1), k11 = wrapped(i + 1, j + 1);
     }
-    return (at(i, j) * (1 - s) + at(i + 1, j) * s) * (1 - t) + (at(i, j + 1) * (1 - s) + at(i + 1, j + 1) * s) * t;
+    auto at = [&](std::size_t k) { return decode(level, texture.format, k); };
+    return (at(k00) * (1 - s) + at(k10) * s) * (1 - t) + (at(k01) * (1 - s) + at(k11) * s) * t;
 }
 
 // Height maps: the first channel of the image, stored as it is.

@@ -60,16 +60,22 @@ struct Writer {
 
     int add_image(const std::vector<std::uint8_t>& png) { return append(blobs, png.data(), png.size()).first; }
 
+    // An accessor of `count` values at `place` (view, offset), the last in the list.
+    tinygltf::Accessor& new_accessor(std::pair<int, std::size_t> place, int component_type, std::size_t count, int type) {
+        tinygltf::Accessor& accessor = gltf.accessors.emplace_back();
+        accessor.bufferView = place.first;
+        accessor.byteOffset = place.second;
+        accessor.componentType = component_type;
+        accessor.count = count;
+        accessor.type = type;
+        return accessor;
+    }
+
     template <typename Vector>
     int add_accessor(const std::vector<Vector>& values, int type, bool bounds) {
         Stream& stream = sizeof(Vector) == 12 ? vec3 : sizeof(Vector) == 8 ? vec2 : vec4;
-        auto [view, offset] = append(stream, values.data(), values.size() * sizeof(Vector));
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view;
-        accessor.byteOffset = offset;
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-        accessor.count = values.size();
-        accessor.type = type;
+        tinygltf::Accessor& accessor = new_accessor(append(stream, values.data(), values.size() * sizeof(Vector)),
+                                                    TINYGLTF_COMPONENT_TYPE_FLOAT, values.size(), type);
         if (bounds && !values.empty()) {
             Vector lo = values[0], hi = values[0];
             for (const Vector& v : values) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
@@ -78,19 +84,12 @@ struct Writer {
                 accessor.maxValues.push_back(json_number(hi[c]));
             }
         }
-        gltf.accessors.push_back(std::move(accessor));
         return int(gltf.accessors.size()) - 1;
     }
 
     int add_indices(const std::vector<std::uint32_t>& values) {
-        auto [view, offset] = append(indices, values.data(), values.size() * 4);
-        tinygltf::Accessor accessor;
-        accessor.bufferView = view;
-        accessor.byteOffset = offset;
-        accessor.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        accessor.count = values.size();
-        accessor.type = TINYGLTF_TYPE_SCALAR;
-        gltf.accessors.push_back(std::move(accessor));
+        new_accessor(append(indices, values.data(), values.size() * 4), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, values.size(),
+                     TINYGLTF_TYPE_SCALAR);
         return int(gltf.accessors.size()) - 1;
     }
 
