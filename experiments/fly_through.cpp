@@ -13,6 +13,7 @@
 #include "toolkit/face_budget.h"
 #include "toolkit/lod_builder.h"
 #include "toolkit/model_subtree.h"
+#include "toolkit/resident_drawables.h"
 #include "toolkit/statistics.h"
 #include "toolkit/strategy_text.h"
 
@@ -64,13 +65,16 @@ struct BuiltBuilding {
     SelectionObject object;
 };
 
-BuiltBuilding build_building(const Model& city, const DecodedTextures& textures, TextureCache& cache, int node,
-                             const FlyThroughOptions& options, bool measure_error, const Light& light) {
+// The city draws in normal mode, which never reads height maps: packed without them.
+constexpr bool city_height_maps = false;
+
+BuiltBuilding build_building(const Model& city, TextureCache& cache, int node, const FlyThroughOptions& options,
+                             bool measure_error, const Light& light) {
     BuiltBuilding built;
     built.levels.name = city.nodes[node].name;
     built.levels.node = node;
-    built.levels.original = make_drawable(city, textures, node);
     Model model = extract_subtree(city, node);
+    built.levels.levels.push_back(pack_drawable(model, &cache, city_height_maps));
     MeshCounts original = mesh_counts(model);
     std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
     built.levels.triangles = {original.triangles};
@@ -89,7 +93,7 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
         levels.push_back({counts.faces, session->sizing, std::nullopt});
         built.levels.triangles.push_back(counts.triangles);
         built.levels.costs.push_back(lod.cost);
-        built.levels.lods.push_back(make_drawable_model(lod.model, &cache));
+        built.levels.levels.push_back(pack_drawable(lod.model, &cache, city_height_maps));
     }
     if (boxes[0]) {
         built.object = selection_object(*boxes[0], std::move(levels));
@@ -97,12 +101,27 @@ BuiltBuilding build_building(const Model& city, const DecodedTextures& textures,
         built.object.center = model_bounds(model).center();
         built.object.levels = std::move(levels);
     }
-    if (measure_error)
+    if (measure_error) {
+        std::unique_ptr<DrawableModel> full = unpack_drawable(built.levels.levels[0]);
         for (int c = 1; c <= coarsest_level(built.object); ++c)
             built.object.levels[std::size_t(c)].error =
-                measure_level_error(built.levels.drawable(c), built.levels.original, built.object,
-                                    level_sizing_distance(options, c), options, light);
+                measure_level_error(unpack_drawable(built.levels.levels[std::size_t(c)])->drawable, full->drawable,
+                                    built.object, level_sizing_distance(options, c), options, light);
+    }
     return built;
+}
+
+// What the frame draws: faces, triangles, cost; levels changed since `previous`.
+void record_cost(const CityLevels& city, const FrameRecord* previous, FrameRecord& record) {
+    record.faces = faces_drawn(city.objects, record.levels, city.street_faces);
+    record.triangles = city.street_triangles;
+    std::vector<const CostParts*> drawn = {&city.street_cost};
+    for (std::size_t b = 0; b < city.buildings.size(); ++b) {
+        record.triangles += city.buildings[b].triangles[std::size_t(record.levels[b])];
+        drawn.push_back(&city.buildings[b].costs[std::size_t(record.levels[b])]);
+        if (previous && record.levels[b] != previous->levels[b]) ++record.levels_changed;
+    }
+    record.cost = combined_cost(drawn);
 }
 
 std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width + 239) / 240)); }
@@ -138,7 +157,7 @@ CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options
     Light light = city_light(out.bounds);
     parallel_for(built.size(), options.threads, [&](std::size_t b) {
         auto building_start = Clock::now();
-        built[b] = build_building(city, out.textures, cache, building_nodes[b], options, measure_error, light);
+        built[b] = build_building(city, cache, building_nodes[b], options, measure_error, light);
         if (progress) {
             std::fprintf(progress, "boxlod city: %s: %d levels in %.2f s\n", built[b].levels.name.c_str(),
                          coarsest_level(built[b].object), seconds_since(building_start));
@@ -147,6 +166,10 @@ CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options
     });
     for (BuiltBuilding& b : built) {
         out.max_level = std::max(out.max_level, coarsest_level(b.object));
+        for (const PackedDrawable& level : b.levels.levels) {
+            out.packed_bytes += packed_size(level);
+            out.unpacked_bytes += level.unpacked_size;
+        }
         out.buildings.push_back(std::move(b.levels));
         out.objects.push_back(std::move(b.object));
     }
@@ -175,12 +198,19 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     std::vector<FrameRecord> records;
     const Strategy strategy = scale_detail(options.strategy, options.detail);
     Light light = city_light(city.bounds);
-    auto batches_for = [&](const std::vector<int>& levels) {
+    ResidentDrawables resident(options.memory_budget);
+    // The streets and every building at its level, unpacked where needed.
+    auto batches_for = [&](const std::vector<int>& levels, FrameRecord& record) {
+        auto start = Clock::now();
+        std::size_t unpacked_before = resident.counts().unpacked;
+        std::vector<const PackedDrawable*> wanted;
+        for (std::size_t b = 0; b < n; ++b) wanted.push_back(&city.buildings[b].levels[std::size_t(levels[b])]);
         std::vector<Batch> batches = city.streets.batches;
-        for (std::size_t b = 0; b < n; ++b) {
-            const std::vector<Batch>& more = city.buildings[b].drawable(levels[b]).batches;
-            batches.insert(batches.end(), more.begin(), more.end());
-        }
+        for (const Drawable* drawable : resident.acquire(wanted, options.threads))
+            batches.insert(batches.end(), drawable->batches.begin(), drawable->batches.end());
+        record.levels_unpacked += resident.counts().unpacked - unpacked_before;
+        record.resident_bytes = resident.counts().resident_bytes;
+        record.unpack_seconds += seconds_since(start);
         return batches;
     };
     for (std::size_t k = 0; k < path.size(); ++k) {
@@ -196,26 +226,18 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
                 importance.push_back(selection_importance(strategy, object, view));
             fit_face_budget(city.objects, importance, *options.face_budget, record.levels, city.street_faces);
         }
-        record.faces = faces_drawn(city.objects, record.levels, city.street_faces);
-        record.triangles = city.street_triangles;
-        std::vector<const CostParts*> drawn = {&city.street_cost};
-        for (std::size_t b = 0; b < n; ++b) {
-            record.triangles += city.buildings[b].triangles[std::size_t(record.levels[b])];
-            drawn.push_back(&city.buildings[b].costs[std::size_t(record.levels[b])]);
-            if (k > 0 && record.levels[b] != records.back().levels[b]) ++record.levels_changed;
-        }
-        record.cost = combined_cost(drawn);
         record.select_seconds = seconds_since(start);
+        record_cost(city, k > 0 ? &records.back() : nullptr, record);
 
+        std::vector<Batch> batches = batches_for(record.levels, record);
         start = Clock::now();
-        Image8 image = render_batches(batches_for(record.levels), view.camera, light, options.width, options.height,
-                                      options.threads);
+        Image8 image = render_batches(batches, view.camera, light, options.width, options.height, options.threads);
         record.render_seconds = seconds_since(start);
 
         if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
             start = Clock::now();
-            Image8 full = render_batches(batches_for(std::vector<int>(n, 0)), view.camera, light, options.width,
-                                         options.height, options.threads);
+            Image8 full = render_batches(batches_for(std::vector<int>(n, 0), record), view.camera, light,
+                                         options.width, options.height, options.threads);
             MetricPair pair{full, image};
             pair.pixels_per_degree = options.pixels_per_degree;
             pair.threads = options.threads;
@@ -256,11 +278,14 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
 }
 
 std::string timings_csv(const std::vector<FlyThroughRun>& runs) {
-    std::string text = "frame,detail,select_seconds,render_seconds\n";
+    std::string text = "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes\n";
     for (const FlyThroughRun& run : runs)
-        for (std::size_t k = 0; k < run.frames.size(); ++k)
-            text += csv_row({std::to_string(k), format_number(run.detail), format_number(run.frames[k].select_seconds),
-                                 format_number(run.frames[k].render_seconds)}) + "\n";
+        for (std::size_t k = 0; k < run.frames.size(); ++k) {
+            const FrameRecord& f = run.frames[k];
+            text += csv_row({std::to_string(k), format_number(run.detail), format_number(f.select_seconds),
+                             format_number(f.unpack_seconds), format_number(f.render_seconds),
+                             std::to_string(f.levels_unpacked), std::to_string(f.resident_bytes)}) + "\n";
+        }
     return text;
 }
 
@@ -282,6 +307,9 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
         for (int level : f.levels) ++report.level_totals[std::size_t(level)];
         report.levels_changed += f.levels_changed;
         report.select_seconds += f.select_seconds;
+        report.unpack_seconds += f.unpack_seconds;
+        report.levels_unpacked += f.levels_unpacked;
+        report.resident_peak_bytes = std::max(report.resident_peak_bytes, f.resident_bytes);
         report.render_seconds += f.render_seconds;
         report.error_seconds += f.error_seconds;
         if (!f.error) continue;
@@ -344,6 +372,8 @@ std::vector<FlyThroughReport> run_fly_through(const Model& city, const std::vect
         write_png((run_folder / "contact_sheet.png").string(), contact_sheet(thumbnails, labels, 4));
         FlyThroughReport report = summarize(runs.back().frames, levels, detail);
         report.build_seconds = levels.seconds;
+        report.packed_bytes = levels.packed_bytes;
+        report.unpacked_bytes = levels.unpacked_bytes;
         report.total_seconds = seconds_since(start);
         reports.push_back(std::move(report));
     }

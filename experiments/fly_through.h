@@ -11,6 +11,7 @@
 #include "toolkit/drawable.h"
 #include "toolkit/level_modes.h"
 #include "toolkit/lod_selection.h"
+#include "toolkit/packed_drawable.h"
 #include "toolkit/parameters.h"
 
 #include <cstdio>
@@ -41,6 +42,8 @@ struct FlyThroughOptions {
         return p;
     }();
     float base_distance = 20;
+    // Unpacked levels kept between frames (docs/city.md: Memory); a frame's own levels are always unpacked.
+    std::size_t memory_budget = std::size_t(1) << 30;
     int threads = 0;  // 0 = all cores
 };
 
@@ -52,9 +55,9 @@ struct BuildingLevels {
     int node = 0;                        // its root in the city
     std::vector<std::size_t> triangles;  // per level 0..N
     std::vector<CostParts> costs;        // per level 0..N
-    Drawable original;                   // level 0: the city's own geometry and decoded textures
-    std::vector<std::unique_ptr<DrawableModel>> lods;  // levels 1..N at index c - 1
-    const Drawable& drawable(int level) const { return level == 0 ? original : lods.at(std::size_t(level - 1))->drawable; }
+    // Per level 0..N (level 0: the city's own geometry), packed; the city draws in
+    // normal mode, so without height maps. The city's textures are shared, not packed.
+    std::vector<PackedDrawable> levels;
 };
 
 // Everything a fly-through draws, built once.
@@ -68,6 +71,8 @@ struct CityLevels {
     Bounds bounds;                         // the city's
     int max_level = 0;                     // K, the largest N of any building
     double seconds = 0;
+    std::size_t packed_bytes = 0;    // every level of every building, packed
+    std::size_t unpacked_bytes = 0;  // the same unpacked: what keeping them all decoded would take
 };
 
 // Each child of the city's root but "Streets" is a building. With `measure_error`,
@@ -91,7 +96,9 @@ struct FrameRecord {
     ModelCost cost;  // streets and every building at its level; a texture shared by content counted once
     std::size_t levels_changed = 0;    // buildings whose level differs from the previous frame's
     std::optional<ImageErrors> error;  // on sampled frames
-    double select_seconds = 0, render_seconds = 0, error_seconds = 0;
+    std::size_t levels_unpacked = 0, resident_bytes = 0;  // levels unpacked for the frame; unpacked bytes after it
+    // select: every building's level (and the face budget); unpack: the levels not resident
+    double select_seconds = 0, unpack_seconds = 0, render_seconds = 0, error_seconds = 0;
 };
 
 // Renders every pose; `frame_done(index, image, record)` receives each frame as it is made.
@@ -111,7 +118,7 @@ struct FlyThroughRun {
 // strategy is format_strategy's text (quoted: it has commas); the errors are empty on
 // frames not sampled. Deterministic.
 std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy);
-// timings.csv: `frame,detail,select_seconds,render_seconds`.
+// timings.csv: `frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes`.
 std::string timings_csv(const std::vector<FlyThroughRun>& runs);
 
 struct FlyThroughReport {
@@ -122,7 +129,10 @@ struct FlyThroughReport {
     std::vector<std::size_t> level_totals;  // building-frames at each level 0..K
     std::size_t levels_changed = 0;         // over all frames
     double psnr_mean = 0, ssim_mean = 0, flip_mean = 0;  // over the sampled frames (psnr: finite ones; inf if none)
-    double build_seconds = 0, select_seconds = 0, render_seconds = 0, error_seconds = 0, total_seconds = 0;
+    std::size_t levels_unpacked = 0, resident_peak_bytes = 0;
+    std::size_t packed_bytes = 0, unpacked_bytes = 0;  // CityLevels'
+    double build_seconds = 0, select_seconds = 0, unpack_seconds = 0, render_seconds = 0, error_seconds = 0,
+           total_seconds = 0;
 };
 
 // The whole command: levels built once, then one pass over the path per detail

@@ -9,7 +9,7 @@ set -euo pipefail
 # The boxlod program.
 program_packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libspng-dev
+  libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libspng-dev libdeflate-dev
   libopenexr-dev libassimp-dev libmeshoptimizer-dev libsdl2-dev
 )
 # The tests and benchmarks.

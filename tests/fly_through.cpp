@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 using namespace boxlod;
@@ -62,7 +63,7 @@ TEST(FlyThrough, LevelsAreBakedForDoublingDistances) {
     int n = coarsest_level(object);
     ASSERT_GE(n, 3);
     EXPECT_EQ(b.levels.max_level, n);
-    EXPECT_EQ(b.levels.buildings[0].lods.size(), std::size_t(n));
+    EXPECT_EQ(b.levels.buildings[0].levels.size(), std::size_t(n) + 1);  // 0..n, packed
     EXPECT_FALSE(object.levels[0].sizing);
     for (int c = 1; c <= n; ++c) {
         const SelectionLevel& level = object.levels[std::size_t(c)];
@@ -96,6 +97,34 @@ TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
             EXPECT_GT(frames.front().levels[0], frames.back().levels[0]) << text << ": the dolly changes nothing";
         }
     }
+}
+
+// Levels are unpacked on demand: how much stays unpacked changes how often a level is
+// unpacked again, never what a frame shows; each level is unpacked once when all fit.
+TEST(FlyThrough, FramesDoNotDependOnTheMemoryBudget) {
+    const OneBuilding& b = one_building();
+    std::vector<CameraPose> path = dolly(b.levels.objects[0], 12);
+    FlyThroughOptions options = b.options;
+    options.strategy = parse_strategy("distance:40,80,160,320,640", "test");
+    std::vector<std::vector<std::uint8_t>> images[2];
+    std::vector<FrameRecord> frames[2];
+    for (int run = 0; run < 2; ++run) {
+        options.memory_budget = run == 0 ? 0 : std::size_t(1) << 30;
+        frames[run] = fly_through(b.levels, path, options, [&](int, const Image8& image, const FrameRecord&) {
+            images[run].push_back(image.pixels);
+        });
+    }
+    EXPECT_EQ(images[0], images[1]);
+    std::set<int> levels_drawn = {0};  // frames 0, 2, ... are compared with level 0
+    std::size_t unpacked[2] = {0, 0};
+    for (int run = 0; run < 2; ++run)
+        for (const FrameRecord& frame : frames[run]) {
+            unpacked[run] += frame.levels_unpacked;
+            levels_drawn.insert(frame.levels[0]);
+        }
+    ASSERT_GE(levels_drawn.size(), 4u);
+    EXPECT_EQ(unpacked[1], levels_drawn.size());
+    EXPECT_GT(unpacked[0], unpacked[1]);  // with no budget, level 0 and the frame's level take turns
 }
 
 TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
@@ -143,7 +172,7 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     EXPECT_EQ(report.sampled_frames, 3u);
     EXPECT_EQ(report.frames, 5u);
     EXPECT_EQ(report.buildings, 3u);
-    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,detail,select_seconds,render_seconds");
+    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes");
     for (int k = 0; k < 5; ++k) {
         std::string name = "frames/frame_000" + std::to_string(k) + ".png";
         ASSERT_TRUE(std::filesystem::exists(one / name)) << name;

@@ -10,11 +10,11 @@
 
 namespace boxlod {
 
-namespace {
-
 MipTexture decode_texture(const Texture& texture, ColorSpace space) {
     return texture.image16.empty() ? make_texture(texture.image, space, texture.wrap) : make_texture(texture.image16, texture.wrap);
 }
+
+namespace {
 
 // Equal digests are taken for equal textures: keeping a copy of every image to
 // compare instead would double the memory this cache saves.
@@ -25,6 +25,12 @@ using Key = std::pair<TextureDigest, ColorSpace>;
 struct TextureCache::Entries {
     mutable std::mutex mutex;
     std::map<Key, std::shared_ptr<const MipTexture>> by_digest;
+
+    std::shared_ptr<const MipTexture> find(const Key& digest) const {
+        std::lock_guard lock(mutex);
+        auto found = by_digest.find(digest);
+        return found == by_digest.end() ? nullptr : found->second;
+    }
 };
 
 TextureCache::TextureCache() : entries_(std::make_unique<Entries>()) {}
@@ -35,34 +41,38 @@ std::size_t TextureCache::size() const {
     return entries_->by_digest.size();
 }
 
+std::shared_ptr<const MipTexture> TextureCache::find(const Texture& texture, ColorSpace space) const {
+    return entries_->find({texture_digest(texture), space});
+}
+
 std::shared_ptr<const MipTexture> TextureCache::decode(const Texture& texture, ColorSpace space) {
     const Key digest{texture_digest(texture), space};
-    {
-        std::lock_guard lock(entries_->mutex);
-        auto found = entries_->by_digest.find(digest);
-        if (found != entries_->by_digest.end()) return found->second;
-    }
+    if (auto found = entries_->find(digest)) return found;
     // Decoded outside the lock; a thread that lost the race takes the winner's (equal) texture.
     auto decoded = std::make_shared<const MipTexture>(decode_texture(texture, space));
     std::lock_guard lock(entries_->mutex);
     return entries_->by_digest.emplace(digest, decoded).first->second;
 }
 
+std::vector<std::pair<int, ColorSpace>> textures_read(const std::vector<Material>& materials) {
+    std::vector<std::pair<int, ColorSpace>> read;
+    auto add = [&](int index, ColorSpace space) {
+        if (index >= 0 && std::find(read.begin(), read.end(), std::pair{index, space}) == read.end())
+            read.emplace_back(index, space);
+    };
+    for (const Material& material : materials) {
+        add(material.base_color_texture, ColorSpace::srgb);
+        add(material.normal_texture, ColorSpace::linear);
+        add(material.height_texture, ColorSpace::linear);
+    }
+    return read;
+}
+
 DecodedTextures decode_textures(const Model& model, TextureCache* cache, int threads) {
     DecodedTextures decoded;
     decoded.color.resize(model.textures.size());
     decoded.linear.resize(model.textures.size());
-    // Each texture once per colour space the materials read it in; decoded in parallel.
-    std::vector<std::pair<int, ColorSpace>> wanted;
-    auto want = [&](int index, ColorSpace space) {
-        if (index >= 0 && std::find(wanted.begin(), wanted.end(), std::pair{index, space}) == wanted.end())
-            wanted.emplace_back(index, space);
-    };
-    for (const Material& material : model.materials) {
-        want(material.base_color_texture, ColorSpace::srgb);
-        want(material.normal_texture, ColorSpace::linear);
-        want(material.height_texture, ColorSpace::linear);
-    }
+    const std::vector<std::pair<int, ColorSpace>> wanted = textures_read(model.materials);  // decoded in parallel
     parallel_for(wanted.size(), threads, [&](std::size_t i) {
         auto [index, space] = wanted[i];
         const Texture& texture = model.textures[std::size_t(index)];
@@ -101,25 +111,30 @@ Drawable make_drawable(const Model& model, const DecodedTextures& textures, int 
             for (std::uint32_t i : p.indices) mesh->indices.push_back(base + i);
         }
     }
-    auto texture = [](const std::vector<std::shared_ptr<const MipTexture>>& decoded, int index) {
-        return index < 0 ? nullptr : decoded[index].get();
-    };
     for (const Key& key : order) {
         Batch batch;
         batch.mesh = meshes[key];
-        if (int m = std::get<0>(key); m >= 0) {
-            const Material& material = model.materials[m];
-            batch.surface.base_color = material.base_color;
-            batch.surface.color = texture(textures.color, material.base_color_texture);
-            batch.surface.normal = texture(textures.linear, material.normal_texture);
-            batch.surface.height = texture(textures.linear, material.height_texture);
-            batch.surface.specular = material.specular_color;
-            batch.surface.shininess = material.shininess;
-            batch.surface.alpha_cutout = material.alpha_cutout;
-        }
+        const int m = std::get<0>(key);
+        if (m >= 0) batch.surface = material_surface(model.materials[m], textures);
         drawable.batches.push_back(batch);
+        drawable.materials.push_back(m);
     }
     return drawable;
+}
+
+Surface material_surface(const Material& material, const DecodedTextures& textures) {
+    auto texture = [](const std::vector<std::shared_ptr<const MipTexture>>& decoded, int index) {
+        return index < 0 ? nullptr : decoded[std::size_t(index)].get();
+    };
+    Surface surface;
+    surface.base_color = material.base_color;
+    surface.color = texture(textures.color, material.base_color_texture);
+    surface.normal = texture(textures.linear, material.normal_texture);
+    surface.height = texture(textures.linear, material.height_texture);
+    surface.specular = material.specular_color;
+    surface.shininess = material.shininess;
+    surface.alpha_cutout = material.alpha_cutout;
+    return surface;
 }
 
 std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache, int threads) {

@@ -24,6 +24,7 @@ public:
     TextureCache();
     ~TextureCache();
     std::shared_ptr<const MipTexture> decode(const Texture& texture, ColorSpace space);
+    std::shared_ptr<const MipTexture> find(const Texture& texture, ColorSpace space) const;  // null if not decoded yet
     std::size_t size() const;  // distinct decoded textures
 
 private:
@@ -31,14 +32,25 @@ private:
     std::unique_ptr<Entries> entries_;
 };
 
+// One texture as a material reads it (colour maps as sRGB, normal and height maps as linear data).
+MipTexture decode_texture(const Texture& texture, ColorSpace space);
+
+// The textures materials read, each once per colour space: (texture index, space)
+// in the order the materials first use them.
+std::vector<std::pair<int, ColorSpace>> textures_read(const std::vector<Material>& materials);
+
 // `threads` as parallel_for's (0: all cores).
 DecodedTextures decode_textures(const Model& model, TextureCache* cache = nullptr, int threads = 1);
 
 struct Drawable {
     std::vector<std::unique_ptr<Mesh>> meshes;
     std::vector<Batch> batches;  // point into meshes and the DecodedTextures
+    std::vector<int> materials;  // per batch: the model's material it draws (-1: none)
     Bounds bounds;
 };
+
+// How a material draws, its textures taken from `textures`.
+Surface material_surface(const Material& material, const DecodedTextures& textures);
 
 // The geometry of the sub-tree under `root` (the whole model by default).
 Drawable make_drawable(const Model& model, const DecodedTextures& textures, int root = 0);

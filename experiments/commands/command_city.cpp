@@ -48,6 +48,7 @@ FlyThroughOptions fly_through_options(const Arguments& arguments) {
     options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
     apply_lod_options(arguments, options.levels, city_lod_parameters);
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
+    options.memory_budget = std::size_t(arguments.integer("memory", int(options.memory_budget >> 20))) << 20;
     options.threads = arguments.integer("threads", 0);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
     return options;
@@ -80,7 +81,9 @@ KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroug
                      number_entry("frames", double(runs.front().frames)),
                      number_entry("buildings", double(runs.front().buildings)),
                      number_entry("max_level", double(runs.front().level_totals.size() - 1)),
-                     number_entry("build_seconds", runs.front().build_seconds)};
+                     number_entry("build_seconds", runs.front().build_seconds),
+                     number_entry("levels_packed_bytes", double(runs.front().packed_bytes)),
+                     number_entry("levels_unpacked_bytes", double(runs.front().unpacked_bytes))};
     for (const FlyThroughReport& r : runs) {
         std::string key = runs.size() == 1 ? "" : "detail_" + format_number(r.detail) + ".";
         report.push_back(number_entry(key + "detail", r.detail));
@@ -97,6 +100,10 @@ KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroug
             report.push_back(number_entry(key + "flip_mean", r.flip_mean));
         }
         report.push_back(number_entry(key + "select_seconds", r.select_seconds));
+        report.push_back(number_entry(key + "select_ms_per_frame", r.frames ? 1000 * r.select_seconds / double(r.frames) : 0));
+        report.push_back(number_entry(key + "levels_unpacked", double(r.levels_unpacked)));
+        report.push_back(number_entry(key + "unpack_seconds", r.unpack_seconds));
+        report.push_back(number_entry(key + "resident_peak_bytes", double(r.resident_peak_bytes)));
         report.push_back(number_entry(key + "render_seconds", r.render_seconds));
         report.push_back(number_entry(key + "render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
         report.push_back(number_entry(key + "error_seconds", r.error_seconds));
@@ -155,6 +162,8 @@ Subcommand city_subcommand() {
     options = with_options(options, lod_options(city_lod_parameters));
     options = with_options(options, {
         {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
+        {"memory", "MB", "unpacked levels kept between frames, in MiB (default 1024); levels are kept packed "
+                         "(deflated) and a frame's own levels are always unpacked", NumberRange{0, 1 << 20}},
         {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
         {"json", "", "print one JSON object instead of key = value lines"},
     });
