@@ -58,12 +58,18 @@ fuzz:
 	@scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
 # Benchmarks against their peers, in one run each (docs/performance.md).
+# Each writes its JSON to $(BUILD)/bench/; ratio_table.py prints them as one table.
+BENCHMARKS = rasterizer metrics png simplification city
 bench:
 	@scripts/install-deps.sh bench
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS) --target rasterizer_benchmark png_benchmark
-	@$(BUILD)/experiments/rasterizer_benchmark
-	@$(BUILD)/experiments/png_benchmark
+	@cmake --build $(BUILD) -j $(JOBS) --target $(BENCHMARKS:%=%_benchmark)
+	@mkdir -p $(BUILD)/bench
+	@for b in $(BENCHMARKS); do \
+	  $(BUILD)/experiments/$${b}_benchmark --benchmark_out=$(BUILD)/bench/$$b.json --benchmark_out_format=json || exit 1; done
+	@LP_NUM_THREADS=1 $(BUILD)/experiments/rasterizer_benchmark --benchmark_filter='_frame/1' \
+	  --benchmark_out=$(BUILD)/bench/rasterizer_1_thread.json --benchmark_out_format=json
+	@experiments/benchmarks/ratio_table.py $(BUILD)/bench
 
 # The paper: every sweep and city run of the workflow (experiments/Snakefile,
 # profile full; the jobs Snakemake finds up to date are skipped), the notebooks

@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""One table of boxlod against its peers from the benchmarks' JSON files
+(`make bench` writes them to build/bench/): each row a figure of boxlod, the
+peer measured in the same run, and the ratio (docs/performance.md).
+Usage: ratio_table.py BENCH_DIR"""
+import json
+import pathlib
+import re
+import sys
+
+# (what, file stem, boxlod's benchmark, the peer's benchmark, the peer). Names are
+# matched up to Google Benchmark's suffixes (min_time, real_time, iterations).
+TIME_ROWS = [
+    ("rasterizer, 1M triangles at 1920x1080, 2 threads", "rasterizer", "boxlod_frame/2", "llvmpipe_frame/2",
+     "Mesa llvmpipe"),
+    ("rasterizer, the same, 1 thread", "rasterizer_1_thread", "boxlod_frame/1", "llvmpipe_frame/1", "Mesa llvmpipe"),
+    ("FLIP at 1920x1080 against a prepared reference, 2 threads", "metrics", "bm_flip_prepared/1920/1080/2",
+     "bm_render/1920/1080/2", "rendering the frame"),
+    ("PNG pages of one `manual` level (colour + normal)", "png", "boxlod_png/0", "stb_png/5/0", "stb_image_write"),
+    ("simplifying `manual` to 10 % of its triangles", "simplification", "bm_meshoptimizer/100/1",
+     "bm_cgal_garland_heckbert/100", "CGAL Garland-Heckbert"),
+    ("unpacking every level of 25 city buildings", "city", "bm_unpack_levels/25", "bm_city_levels/25",
+     "building them again"),
+]
+
+
+def load(folder, stem):
+    path = folder / f"{stem}.json"
+    if not path.exists():
+        return None
+    return json.loads(path.read_text())["benchmarks"]
+
+
+def find(benchmarks, name):
+    pattern = re.compile(re.escape(name) + r"(/(min_time|iterations|real_time|repeats)[^/]*)*$")
+    for b in benchmarks or []:
+        if b.get("run_type", "iteration") == "iteration" and pattern.match(b["name"]):
+            return b
+    return None
+
+
+def milliseconds(b):
+    scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+    return b["real_time"] * scale
+
+
+def show_ms(ms):
+    return f"{ms * 1000:.0f} us" if ms < 1 else f"{ms:,.1f} ms" if ms < 100 else f"{ms:,.0f} ms"
+
+
+def main():
+    folder = pathlib.Path(sys.argv[1])
+    rows = []
+    for what, stem, ours, peer, peer_name in TIME_ROWS:
+        benchmarks = load(folder, stem)
+        a, b = find(benchmarks, ours), find(benchmarks, peer)
+        if not a or not b:
+            rows.append((what, "not run", "not run", "", ""))
+            continue
+        ratio = milliseconds(b) / milliseconds(a)
+        shown = [show_ms(milliseconds(a)), show_ms(milliseconds(b))]
+        if "faces" in a and "faces" in b:  # simplifiers: where each stopped
+            shown = [f"{t}, {int(x['faces']):,} faces" for t, x in zip(shown, (a, b))]
+        reads = f"faster than {peer_name}" if ratio >= 1 else f"{1 / ratio:.2f}x slower than {peer_name}"
+        rows.append((what, *shown, f"{ratio:.2f}x", reads))
+    city = load(folder, "city")
+    levels, select = find(city, "bm_city_levels/25"), find(city, "bm_select_frame/1000")
+    if levels:
+        rows.append(("memory of every level of 25 city buildings", f"{levels['packed MB']:.1f} MB packed",
+                     f"{levels['unpacked MB']:.1f} MB decoded", f"{levels['unpacked/packed']:.1f}x",
+                     "smaller than keeping them decoded"))
+    if select:
+        rows.append(("selecting the levels of 1,000 buildings, one frame", show_ms(milliseconds(select)), "1 ms target",
+                     f"{1 / milliseconds(select):.1f}x", "under the target"))
+    print("| what | boxlod | peer | ratio | |")
+    print("|---|---:|---:|---:|---|")
+    for row in rows:
+        print("| " + " | ".join(row) + " |")
+
+
+if __name__ == "__main__":
+    main()
