@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -103,21 +104,29 @@ int run_build(const Arguments& a) {
     };
     std::vector<CostParts> chain;  // levels 1..N, for the chain's cost
     int finest_textured = -1;
+    // Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
+    // partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
+    // their bytes and the order of the output stay the same.
+    std::future<void> writing;
     for (int level : levels) {
         LodSession* session = &session_for(level);
         Lod lod = build_lod(*session, level, threads);
         if (level >= 1) chain.push_back(lod.cost);
         if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
-        std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
-        auto start = Clock::now();
-        Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
-        KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
-        report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
-        export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
-        session->times.write += seconds_since(start);
-        std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
-        std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
+        if (writing.valid()) writing.get();
+        writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
+            std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
+            auto start = Clock::now();
+            Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
+            KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
+            report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
+            session->times.write += seconds_since(start);  // build_lod touches the other times only
+            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
+            std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
+        });
     }
+    writing.get();
     if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain, finest_textured)).c_str(), stdout);
     if (a.has("timings")) {
         LodTimes t = first->times;
