@@ -39,6 +39,8 @@ def main(results, figure):
             style = {"marker": "o"}
             if mode == "simplification":
                 style = {"marker": "o", "linestyle": "--", "color": "black"}
+            elif mode == "simplification-best":
+                style = {"marker": "+", "linestyle": ":", "color": "dimgrey"}
             elif mode == "single-box":
                 style = {"marker": "*", "markersize": 12, "linestyle": "none", "color": "black"}
             axis.plot([p[0] for p in points], [p[1][metric] for p in points], label=mode, **style)

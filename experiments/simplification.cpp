@@ -120,6 +120,9 @@ Indices cluster_vertices(const Primitive& mesh, const Indices& indices, std::siz
     return best;
 }
 
+// Whether the budget is always reached (possibly by clustering).
+bool clusters(const SimplifyOptions& options) { return options.clustering_fallback || !options.edge_collapse; }
+
 // The welded mesh with at most `target_triangles` triangles when the fallback
 // is on (possibly none: parts too small to cluster vanish).
 Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, const SimplifyOptions& options) {
@@ -127,8 +130,8 @@ Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, c
     if (mesh.triangle_count() > target_triangles) {
         const unsigned flags = options.lock_border ? meshopt_SimplifyLockBorder : 0;
         const std::size_t target_indices = target_triangles * 3;
-        Indices out = collapse_edges(mesh, mesh.indices, target_triangles, flags);
-        if (options.clustering_fallback && out.size() > target_indices) out = cluster_vertices(mesh, out, target_triangles);
+        Indices out = options.edge_collapse ? collapse_edges(mesh, mesh.indices, target_triangles, flags) : mesh.indices;
+        if (clusters(options) && out.size() > target_indices) out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);
     }
@@ -136,10 +139,20 @@ Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, c
     return mesh;
 }
 
+double surface_area(const Primitive& mesh) {
+    double area = 0;
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const Eigen::Vector3f &a = mesh.positions[mesh.indices[i]], &b = mesh.positions[mesh.indices[i + 1]],
+                              &c = mesh.positions[mesh.indices[i + 2]];
+        area += 0.5 * double((b - a).cross(c - a).norm());
+    }
+    return area;
+}
+
 // Splits `total` over `weights` in proportion, by largest remainder: the parts
 // sum to `total` exactly and ties go to the earlier group.
-std::vector<std::size_t> proportional_budget(std::size_t total, const std::vector<std::size_t>& weights) {
-    std::size_t sum = std::accumulate(weights.begin(), weights.end(), std::size_t(0));
+std::vector<std::size_t> proportional_budget(std::size_t total, const std::vector<double>& weights) {
+    double sum = std::accumulate(weights.begin(), weights.end(), 0.0);
     std::vector<std::size_t> parts(weights.size());
     std::vector<std::pair<double, std::size_t>> remainders;
     std::size_t given = 0;
@@ -165,7 +178,11 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
     std::vector<Primitive> welded(groups.size());
     parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g].mesh)); });
     std::vector<std::size_t> triangles;
-    for (const Primitive& mesh : welded) triangles.push_back(mesh.triangle_count());
+    std::vector<double> weights;  // each material's share of the budget
+    for (const Primitive& mesh : welded) {
+        triangles.push_back(mesh.triangle_count());
+        weights.push_back(options.budget_by_area ? surface_area(mesh) : double(mesh.triangle_count()));
+    }
     const std::size_t target = std::min(target_faces, std::accumulate(triangles.begin(), triangles.end(), std::size_t(0)));
 
     // Each round gives the faces still missing (materials that came out below
@@ -173,7 +190,7 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
     // that can grow, in proportion to their size; a material's result is
     // replaced only by a larger one, so the total only grows, never past the
     // target. A material that did not grow is left alone from then on.
-    std::vector<std::size_t> achieved(groups.size(), 0), budget = proportional_budget(target, triangles);
+    std::vector<std::size_t> achieved(groups.size(), 0), budget = proportional_budget(target, weights);
     std::vector<char> done(groups.size(), false), stuck(groups.size(), false);  // char: written in parallel
     for (int round = 0; round < 8; ++round) {
         parallel_for(groups.size(), options.threads, [&](std::size_t g) {
@@ -183,13 +200,13 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
             else stuck[g] = true;
         });
         std::size_t sum = std::accumulate(achieved.begin(), achieved.end(), std::size_t(0));
-        if (!options.clustering_fallback || sum >= target || double(target - sum) < 0.01 * double(target)) break;
-        std::vector<std::size_t> growable(groups.size(), 0);
+        if (!clusters(options) || sum >= target || double(target - sum) < 0.01 * double(target)) break;
+        std::vector<double> growable(groups.size(), 0);
         for (std::size_t g = 0; g < groups.size(); ++g) {
             done[g] = achieved[g] == triangles[g] || stuck[g];
-            if (!done[g]) growable[g] = triangles[g];
+            if (!done[g]) growable[g] = weights[g];
         }
-        if (std::accumulate(growable.begin(), growable.end(), std::size_t(0)) == 0) break;
+        if (std::accumulate(growable.begin(), growable.end(), 0.0) == 0) break;
         budget = proportional_budget(target - sum, growable);
         for (std::size_t g = 0; g < groups.size(); ++g) budget[g] += achieved[g];
     }
@@ -209,6 +226,17 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
         result.nodes[std::size_t(it->second)].primitives.push_back(std::move(group.mesh));
     }
     return result;
+}
+
+std::vector<SimplifyVariant> simplify_variants(int threads) {
+    SimplifyOptions collapse, lock_border, sloppy, by_area;
+    lock_border.lock_border = true;
+    sloppy.edge_collapse = false;
+    by_area.budget_by_area = true;
+    std::vector<SimplifyVariant> variants = {
+        {"collapse", collapse}, {"lock-border", lock_border}, {"sloppy", sloppy}, {"by-area", by_area}};
+    for (SimplifyVariant& v : variants) v.options.threads = threads;
+    return variants;
 }
 
 }  // namespace boxlod

@@ -118,7 +118,20 @@ RenderSettings view_settings(const Framing& framing, const std::string& view, fl
 struct Metrics {
     std::vector<std::string> values;  // in the config's metric order
     Plane heatmap;                    // FLIP's error when computed, else the RGB error
+    double error = 0;                 // what simplification-best minimizes (choice_error)
 };
+
+// One error, lower = better, from the metrics measured: FLIP if measured, else
+// 1 - SSIM, else RMSE, else -PSNR, else 1 - IoU.
+double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {
+    for (Metric preferred : {Metric::flip, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
+        for (std::size_t i = 0; i < metrics.size(); ++i) {
+            if (metrics[i] != preferred) continue;
+            if (preferred == Metric::ssim || preferred == Metric::iou) return 1 - values[i];
+            return preferred == Metric::psnr ? -values[i] : values[i];
+        }
+    return 0;
+}
 
 Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads) {
     MetricPair pair{reference.image, test.image, &reference.coverage, &test.coverage,
@@ -126,6 +139,7 @@ Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Sh
     MetricValues measured = measure_metrics(config.metrics, pair);
     Metrics out;
     for (double value : measured.values) out.values.push_back(format_number(value));  // psnr of identical images: inf
+    out.error = choice_error(config.metrics, measured.values);
     if (want_heatmap) out.heatmap = measured.flip_error ? std::move(*measured.flip_error) : rgb_error_map(reference.image, test.image);
     return out;
 }
@@ -147,6 +161,7 @@ struct Candidate {
     ModelCost cost;
     std::unique_ptr<DrawableModel> drawable;
     double seconds = 0;  // building it and making it drawable
+    std::string variant;  // a baseline's variant (results.csv baseline_variant)
 };
 
 // `cost`: the model's, when its builder has it already (an LoD); else computed here.
@@ -186,7 +201,7 @@ std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
     for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
                           "nodes_with_box", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
-                          "covered_pixels"})
+                          "covered_pixels", "baseline_variant"})
         columns.push_back(c);
     for (Metric metric : config.metrics) columns.push_back(enum_name(metrics(), metric));
     return columns;
@@ -251,8 +266,8 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
                 plan.variants.push_back(std::move(variant));
             }
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
-    plan.groups += config.simplification_baseline ? plan.variants.front().levels.size() : 0;
-    plan.groups += config.single_box_baseline ? 1 : 0;
+    for (Baseline baseline : config.baselines)
+        plan.groups += baseline == Baseline::single_box ? 1 : plan.variants.front().levels.size();
     return plan;
 }
 
@@ -309,16 +324,19 @@ std::vector<std::string> result_fields(const Candidate& c, const Shot& original,
         std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
         std::to_string(c.nodes_with_box), std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
         std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes()),
-        std::to_string(covered_pixels(original.coverage))};
+        std::to_string(covered_pixels(original.coverage)), c.variant};
     fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
     return fields;
 }
 
 // A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
 // over views x distances x render modes. `slot` says which rows may share one candidate,
-// `make` builds it; both run only for rows missing from results.csv.
+// `make(slot, alternative)` builds it; both run only for rows missing from results.csv.
+// With several `alternatives` (simplification-best), each is drawn for every missing row
+// and the group keeps the one with the lowest mean choice_error over them.
 void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
-               const std::function<int(RenderMode, std::size_t)>& slot, const std::function<Candidate(int)>& make) {
+               const std::function<int(RenderMode, std::size_t)>& slot, const std::function<Candidate(int, int)>& make,
+               int alternatives = 1) {
     const SweepConfig& config = run.config;
     auto group_start = Clock::now();
     struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
@@ -335,38 +353,51 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
     run.done += skipped;
     if (missing.empty()) return;
 
-    std::map<int, Candidate> candidates;
-    for (const Row& row : missing) {
-        int s = slot(row.mode, row.distance);
-        auto found = candidates.find(s);
-        if (found == candidates.end()) {
-            auto build_start = Clock::now();
-            Candidate made = make(s);
-            made.drawable = make_drawable_model(made.model);
-            made.seconds = seconds_since(build_start);
-            report.build_seconds += made.seconds;
-            ++report.lods_built;
-            found = candidates.emplace(s, std::move(made)).first;
+    struct Drawn { std::string result, timing; Image8 image; Plane heatmap; };
+    std::vector<std::vector<Drawn>> drawn(static_cast<std::size_t>(alternatives));
+    std::vector<double> mean_error(std::size_t(alternatives), 0);
+    const bool heatmap = config.keep_images == KeptImages::all;
+    for (int a = 0; a < alternatives; ++a) {
+        std::map<int, Candidate> candidates;
+        for (const Row& row : missing) {
+            int s = slot(row.mode, row.distance);
+            auto found = candidates.find(s);
+            if (found == candidates.end()) {
+                auto build_start = Clock::now();
+                Candidate made = make(s, a);
+                made.drawable = make_drawable_model(made.model);
+                made.seconds = seconds_since(build_start);
+                report.build_seconds += made.seconds;
+                ++report.lods_built;
+                found = candidates.emplace(s, std::move(made)).first;
+            }
+            const Candidate& c = found->second;
+            const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
+            auto render_start = Clock::now();
+            RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                                    row.mode, config.lod, run.threads);
+            Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+            double render_seconds = seconds_since(render_start);
+            report.render_seconds += render_seconds;
+            ++report.lod_renders;
+            auto metric_start = Clock::now();
+            Metrics metrics = compare_shots(config, original_shot, shot, heatmap, run.threads);
+            double metric_seconds = seconds_since(metric_start);
+            report.metric_seconds += metric_seconds;
+            mean_error[std::size_t(a)] += metrics.error / double(missing.size());
+            drawn[std::size_t(a)].push_back(
+                {extend_row(row.key, result_fields(c, original_shot, metrics)),
+                 extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
+                 out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap)});
         }
-        const Candidate& c = found->second;
-        const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
-        auto render_start = Clock::now();
-        RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                                row.mode, config.lod, run.threads);
-        Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
-        double render_seconds = seconds_since(render_start);
-        report.render_seconds += render_seconds;
-        ++report.lod_renders;
-        auto metric_start = Clock::now();
-        bool heatmap = config.keep_images == KeptImages::all;
-        Metrics metrics = compare_shots(config, original_shot, shot, heatmap, run.threads);
-        double metric_seconds = seconds_since(metric_start);
-        report.metric_seconds += metric_seconds;
-        out.results.rows[row.key] = extend_row(row.key, result_fields(c, original_shot, metrics));
-        out.timings.rows[row.key] = extend_row(row.key, {format_number(c.seconds), format_number(render_seconds),
-                                                         format_number(metric_seconds)});
-        if (out.keep_images) save_image(out, row.key, shot.image);
-        if (heatmap) save_image(out, row.key + "_heatmap", error_heatmap(metrics.heatmap));
+    }
+    const auto best = std::size_t(std::min_element(mean_error.begin(), mean_error.end()) - mean_error.begin());
+    for (std::size_t r = 0; r < missing.size(); ++r) {
+        Drawn& row = drawn[best][r];
+        out.results.rows[missing[r].key] = row.result;
+        out.timings.rows[missing[r].key] = row.timing;
+        if (out.keep_images) save_image(out, missing[r].key, row.image);
+        if (heatmap) save_image(out, missing[r].key + "_heatmap", error_heatmap(row.heatmap));
     }
     write_tables(out);
     report.rows_computed += missing.size();
@@ -400,7 +431,7 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
         const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
         std::string group = csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
                                      interpolation_name(variant.interpolation), std::to_string(level)});
-        run_group(run, out, report, group, slot, [&](int s) {
+        run_group(run, out, report, group, slot, [&](int s, int) {
             std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
             if (!session) {
                 LodParameters p = config.lod;
@@ -425,24 +456,39 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
 void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first) {
     const SweepConfig& config = run.config;
     auto one_slot = [](RenderMode, std::size_t) { return 0; };
-    if (config.simplification_baseline) {
-        for (int level : first.levels) {
-            std::string first_row = csv_row({run.entry.name, level_mode_name(first.mode), box_kind_name(first.box),
-                                             interpolation_name(first.interpolation), std::to_string(level),
-                                             config.views[0], format_number(config.distances[0]),
-                                             render_mode_name(config.render_modes[0])});
-            std::size_t target = triangles_of_row(out.results.rows.at(first_row));
-            run_group(run, out, report, csv_row({run.entry.name, "simplification", "-", "-", std::to_string(level)}), one_slot,
-                      [&](int) {
-                          SimplifyOptions options;
-                          options.threads = run.threads;
-                          return candidate(simplify_model(run.model, target, options), {}, 0, first.obtained_levels);
+    // The triangles of `level` of the first variant, as its first row says.
+    auto triangles_of_level = [&](int level) {
+        return triangles_of_row(out.results.rows.at(csv_row(
+            {run.entry.name, level_mode_name(first.mode), box_kind_name(first.box), interpolation_name(first.interpolation),
+             std::to_string(level), config.views[0], format_number(config.distances[0]),
+             render_mode_name(config.render_modes[0])})));
+    };
+    const std::vector<SimplifyVariant> variants = simplify_variants(run.threads);
+    for (const EnumEntry<Baseline>& entry : baselines()) {  // in the table's order, whatever the config's
+        const Baseline baseline = entry.value;
+        const std::string name = entry.name;
+        if (std::find(config.baselines.begin(), config.baselines.end(), baseline) == config.baselines.end()) continue;
+        if (baseline == Baseline::single_box) {
+            run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(first.obtained_levels)}),
+                      one_slot, [&](int, int) {
+                          return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels);
                       });
+            continue;
+        }
+        // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.
+        const int alternatives = baseline == Baseline::simplification_best ? int(variants.size()) : 1;
+        for (int level : first.levels) {
+            std::size_t target = triangles_of_level(level);
+            run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
+                      [&](int, int a) {
+                          const SimplifyVariant& v = variants[std::size_t(a)];
+                          Candidate c = candidate(simplify_model(run.model, target, v.options), {}, 0, first.obtained_levels);
+                          c.variant = v.name;
+                          return c;
+                      },
+                      alternatives);
         }
     }
-    if (config.single_box_baseline)
-        run_group(run, out, report, csv_row({run.entry.name, "single-box", "-", "-", std::to_string(first.obtained_levels)}),
-                  one_slot, [&](int) { return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels); });
 }
 
 // Plan, then execute, model by model, into the results table.

@@ -21,6 +21,21 @@
 namespace boxlod {
 namespace {
 
+constexpr EnumEntry<Baseline> baseline_table[] = {
+    {Baseline::simplification, "simplification",
+     "the original simplified to each level's triangles (boxlod simplify: edge collapse, then clustering)"},
+    {Baseline::simplification_best, "simplification-best",
+     "of meshoptimizer's variants (collapse, lock-border, sloppy), the one with the lowest image error at each level's "
+     "triangles; results.csv names it in baseline_variant"},
+    {Baseline::single_box, "single-box", "the whole model as one untextured box in its mean colour"},
+};
+
+}  // namespace
+
+std::span<const EnumEntry<Baseline>> baselines() { return baseline_table; }
+
+namespace {
+
 constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
 constexpr NumberRange distance_multiple_range{0.01, 1000};  // of the framing distance
 
@@ -141,15 +156,7 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              else if (l.line.value == "per-level") c.sizing = SizingRule::per_level;
              else l.fail("expected nearest, each-distance or per-level, got '" + l.line.value + "'");
          }},
-        {"baselines", [&](const Line& l) {
-             c.simplification_baseline = c.single_box_baseline = false;
-             if (l.line.value == "none") return;
-             for (const std::string& item : l.items()) {
-                 if (item == "simplification") c.simplification_baseline = true;
-                 else if (item == "single-box") c.single_box_baseline = true;
-                 else l.fail("unknown baseline '" + item + "' (simplification, single-box, or none)");
-             }
-         }},
+        {"baselines", [&](const Line& l) { c.baselines = l.line.value == "none" ? std::vector<Baseline>{} : l.words(baselines()); }},
         {"keep_images", [&](const Line& l) {
              const std::map<std::string, KeptImages> kinds = {
                  {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};

@@ -27,6 +27,10 @@ enum class KeptImages { none, lod, all };
 // chain (`build --level-distances auto`) ships it.
 enum class SizingRule { nearest, each_distance, per_level };
 
+// The baselines a sweep compares the LoDs with (docs/sweeps.md).
+enum class Baseline { simplification, simplification_best, single_box };
+std::span<const EnumEntry<Baseline>> baselines();  // names and help
+
 struct SweepModel {
     std::string name;  // as written in the config: the CSV's `model` column
     std::string path;  // resolved against the config's folder; empty for a sample
@@ -54,10 +58,7 @@ struct SweepConfig {
         return p;
     }();
     SizingRule sizing = SizingRule::nearest;
-    // The classic baselines (docs/sweeps.md), compared at the LoD's triangle counts:
-    // the original simplified to each level's triangles (quadric edge collapse), and
-    // the whole model as one untextured box.
-    bool simplification_baseline = false, single_box_baseline = false;
+    std::vector<Baseline> baselines;  // none by default; they run in the table's order
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

@@ -32,15 +32,16 @@ matplotlib.rcParams.update({
 })
 
 KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "distance", "render_mode"]
-# Level modes in the order of the manual, then the two baselines.
+# Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
-         "box-max-extent", "simplification", "single-box"]
-BASELINES = ("simplification", "single-box")
+         "box-max-extent", "simplification", "simplification-best", "single-box"]
+BASELINES = ("simplification", "simplification-best", "single-box")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
 STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, mode in enumerate(MODES[:7])}
 STYLE["simplification"] = dict(color="black", marker="x", linestyle="--")
+STYLE["simplification-best"] = dict(color="dimgrey", marker="+", linestyle=":")
 STYLE["single-box"] = dict(color="black", marker="*", linestyle="none", markersize=10)
 LOWER_IS_BETTER = {"flip": True, "rmse": True, "psnr": False, "ssim": False, "iou": False}
 LABEL = {"psnr": "PSNR (dB)", "ssim": "SSIM", "flip": "FLIP", "rmse": "RMSE", "iou": "IoU"}
@@ -130,6 +131,12 @@ def per_level(frame, metrics=("psnr", "ssim", "flip")):
             row[metric + "_median"] = members[metric].median()
         rows.append(row)
     return pd.DataFrame(rows)
+
+
+def strongest_simplification(frame):
+    """The strongest simplification baseline a sweep ran: simplification-best
+    (the best of meshoptimizer's variants per level) when there, else plain."""
+    return "simplification-best" if (frame["level_mode"] == "simplification-best").any() else "simplification"
 
 
 def best_within(levels, mode, budget, metric="flip"):

@@ -141,6 +141,45 @@ TEST(Simplification, LockBorderKeepsBorderVerticesAndStillSimplifies) {
     EXPECT_LT(faces_of(simplify_model(building, 10, locked)), mesh_counts(building).triangles);
 }
 
+// The variants simplification-best chooses from: each reaches the budget without going
+// over it; clustering alone differs from edge collapse first; the area split keeps walls.
+TEST(Simplification, EveryVariantStaysWithinTheBudget) {
+    Model building = fzk_haus();
+    const std::size_t target = mesh_counts(building).triangles / 20;
+    std::vector<std::size_t> faces;
+    for (const SimplifyVariant& v : simplify_variants(2)) {
+        faces.push_back(faces_of(simplify_model(building, target, v.options)));
+        EXPECT_LE(faces.back(), target) << v.name;
+        EXPECT_GT(faces.back(), target * 9 / 10) << v.name;
+    }
+    ASSERT_EQ(faces.size(), 4u);
+    SimplifyOptions collapse = simplify_variants(1)[0].options, sloppy = simplify_variants(1)[2].options,
+                    by_area = simplify_variants(1)[3].options;
+    EXPECT_FALSE(sloppy.edge_collapse);
+    EXPECT_TRUE(by_area.budget_by_area);
+    // Split by area, the FZK-Haus's walls (large, few triangles) keep their surface; split by
+    // triangles, the dense small parts take the budget and the walls are clustered away.
+    auto area = [&](const SimplifyOptions& options) {
+        double sum = 0;
+        for (const Node& node : simplify_model(building, target, options).nodes)
+            for (const Primitive& p : node.primitives)
+                for (std::size_t i = 0; i + 2 < p.indices.size(); i += 3)
+                    sum += 0.5 * double((p.positions[p.indices[i + 1]] - p.positions[p.indices[i]])
+                                            .cross(p.positions[p.indices[i + 2]] - p.positions[p.indices[i]])
+                                            .norm());
+        return sum;
+    };
+    EXPECT_GT(area(by_area), 1.5 * area(collapse));
+    auto positions = [&](const SimplifyOptions& options) {
+        std::vector<float> all;
+        for (const Node& node : simplify_model(building, target, options).nodes)
+            for (const Primitive& p : node.primitives)
+                for (const Eigen::Vector3f& v : p.positions) all.insert(all.end(), {v.x(), v.y(), v.z()});
+        return all;
+    };
+    EXPECT_NE(positions(collapse), positions(sloppy));
+}
+
 TEST(Simplification, BadInputIsAnInputError) {
     EXPECT_THROW(simplify_model(fzk_haus(), 0, {}), InputError);
     Model lod = test::lod_test_building();

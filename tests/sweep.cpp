@@ -1,6 +1,7 @@
 #include "experiments/sweep.h"
 
 #include "base/input_error.h"
+#include "experiments/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/cost.h"
@@ -153,6 +154,38 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
         EXPECT_EQ(single[column(t, "texture_bytes")], "0");
         EXPECT_EQ(single[column(t, "mesh_bytes")], single[column(t, "bytes")]);
         EXPECT_LT(std::stod(single[ssim]), 1);
+    }
+}
+
+// simplification-best draws every meshoptimizer variant and keeps, per level, the one
+// with the lowest mean FLIP over the views: never worse than plain simplification
+// (its `collapse` variant), never above the level's triangles, and named in its rows.
+TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
+    SmallSweep s = small_sweep("sweep_best", "baselines = simplification-best, simplification\n");
+    SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);
+    EXPECT_EQ(report.rows, 8u + 4u + 4u);
+    EXPECT_EQ(report.lods_built, 4u + 2u + 2u * simplify_variants(1).size());
+    Table t = read_csv(s.folder / "out" / "results.csv");
+    const std::size_t flip = column(t, "flip"), variant = column(t, "baseline_variant"),
+                      triangles = column(t, "triangles");
+    EXPECT_EQ(t[9][column(t, "level_mode")], "simplification");  // the table's order, not the config's
+    EXPECT_EQ(t[13][column(t, "level_mode")], "simplification-best");
+    for (std::size_t r = 1; r < 9; ++r) EXPECT_EQ(t[r][variant], "") << r;
+    for (const char* level : {"0,", "4,"}) {
+        double plain = 0, best = 0;
+        std::string chosen;
+        for (const char* view : {"+X+Y+Z,", "-Z,"}) {
+            auto p = row_of(t, std::string("building.glb,simplification,-,-,") + level + view);
+            auto b = row_of(t, std::string("building.glb,simplification-best,-,-,") + level + view);
+            auto box = row_of(t, std::string("building.glb,top-down,expanded,linear,") + level + view);
+            EXPECT_EQ(p[variant], "collapse");
+            EXPECT_TRUE(b[variant] == "collapse" || b[variant] == "lock-border" || b[variant] == "sloppy") << b[variant];
+            if (chosen.empty()) chosen = b[variant];
+            EXPECT_EQ(b[variant], chosen);  // one mesh for every view of a level
+            EXPECT_LE(std::stoul(b[triangles]), std::stoul(box[triangles]));
+            plain += std::stod(p[flip]), best += std::stod(b[flip]);
+        }
+        EXPECT_LE(best, plain) << level;
     }
 }
 

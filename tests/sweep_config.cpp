@@ -48,8 +48,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.keep_images, KeptImages::all);
     EXPECT_EQ(c.threads, 2);
     EXPECT_EQ(c.sizing, SizingRule::each_distance);
-    EXPECT_TRUE(c.simplification_baseline);
-    EXPECT_TRUE(c.single_box_baseline);
+    EXPECT_EQ(c.baselines, (std::vector<Baseline>{Baseline::single_box, Baseline::simplification}));
     EXPECT_TRUE(c.lod.keep_small_subtrees);
     EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
 }
@@ -61,9 +60,11 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_TRUE(c.levels.empty());
     EXPECT_EQ(c.metrics.size(), 5u);  // default: every metric
     EXPECT_EQ(c.sizing, SizingRule::nearest);
-    EXPECT_FALSE(c.simplification_baseline || c.single_box_baseline);
+    EXPECT_TRUE(c.baselines.empty());
     SweepConfig none = parse_sweep_config("models = a.glb\nbaselines = none\n", "c.txt");
-    EXPECT_FALSE(none.simplification_baseline || none.single_box_baseline);
+    EXPECT_TRUE(none.baselines.empty());
+    SweepConfig best = parse_sweep_config("models = a.glb\nbaselines = simplification-best, simplification\n", "c.txt");
+    EXPECT_EQ(best.baselines, (std::vector<Baseline>{Baseline::simplification_best, Baseline::simplification}));
 }
 
 // The message names the file, the line and the key.
@@ -93,7 +94,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevel_mode = top-down\n", "cfg.txt: line 2: level_mode: the sweep varies this itself");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
-    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown baseline 'qem'");
+    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, single-box)");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice (first on line 1)");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");

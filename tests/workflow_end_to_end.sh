@@ -70,7 +70,7 @@ rows = body_rows("table_level_modes")
 names = [r[0].replace("\\_", "_") for r in rows]
 check(sorted(names) == sorted(modes) and len(rows) == len(modes),
       f"table_level_modes: {len(rows)} rows for the {len(modes)} level modes of the CSV ({', '.join(modes)})")
-check("simplification" in modes and "single-box" in modes, "the manual sweep has both baselines")
+check(all(b in modes for b in ("simplification", "simplification-best", "single-box")), "the manual sweep has every baseline")
 profile = yaml.safe_load(open(os.path.join(out, "profile.yaml")))
 jobs = len(profile["sweeps"]) + len(profile["city"]["strategies"])
 check(len(body_rows("table_runs")) == jobs, f"table_runs: one row per job ({jobs})")
