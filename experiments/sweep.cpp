@@ -9,6 +9,7 @@
 #include "data_gen/samples.h"
 #include "experiments/flip.h"
 #include "experiments/heatmap.h"
+#include "experiments/impostor.h"
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
@@ -28,6 +29,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -159,7 +161,7 @@ struct Candidate {
     std::size_t nodes_with_box = 0;
     int obtained_levels = 0;
     ModelCost cost;
-    std::unique_ptr<DrawableModel> drawable;
+    std::unique_ptr<DrawableModel> drawable;  // made by run_group unless `make` made it
     double seconds = 0;  // building it and making it drawable
     std::string variant;  // a baseline's variant (results.csv baseline_variant)
 };
@@ -267,7 +269,7 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
             }
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
     for (Baseline baseline : config.baselines)
-        plan.groups += baseline == Baseline::single_box ? 1 : plan.variants.front().levels.size();
+        plan.groups += baseline == Baseline::single_box || baseline == Baseline::impostor ? 1 : plan.variants.front().levels.size();
     return plan;
 }
 
@@ -330,12 +332,14 @@ std::vector<std::string> result_fields(const Candidate& c, const Shot& original,
 }
 
 // A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
-// over views x distances x render modes. `slot` says which rows may share one candidate,
-// `make(slot, alternative)` builds it; both run only for rows missing from results.csv.
+// over views x distances x render modes. `slot(mode, view, distance)` says which rows may
+// share one candidate, `make(slot, alternative)` builds it; both run only for rows missing
+// from results.csv.
 // With several `alternatives` (simplification-best), each is drawn for every missing row
 // and the group keeps the one with the lowest mean choice_error over them.
 void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
-               const std::function<int(RenderMode, std::size_t)>& slot, const std::function<Candidate(int, int)>& make,
+               const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
+               const std::function<Candidate(int, int)>& make,
                int alternatives = 1) {
     const SweepConfig& config = run.config;
     auto group_start = Clock::now();
@@ -360,12 +364,12 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
     for (int a = 0; a < alternatives; ++a) {
         std::map<int, Candidate> candidates;
         for (const Row& row : missing) {
-            int s = slot(row.mode, row.distance);
+            int s = slot(row.mode, row.view, row.distance);
             auto found = candidates.find(s);
             if (found == candidates.end()) {
                 auto build_start = Clock::now();
                 Candidate made = make(s, a);
-                made.drawable = make_drawable_model(made.model);
+                if (!made.drawable) made.drawable = make_drawable_model(made.model);
                 made.seconds = seconds_since(build_start);
                 report.build_seconds += made.seconds;
                 ++report.lods_built;
@@ -426,7 +430,9 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
         return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
     };
     std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
-    auto slot = [&](RenderMode mode, std::size_t d) { return int(2 * sizing_index(d) + (mode == RenderMode::untextured)); };
+    auto slot = [&](RenderMode mode, std::size_t, std::size_t d) {
+        return int(2 * sizing_index(d) + (mode == RenderMode::untextured));
+    };
     for (int level : variant.levels) {
         const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
         std::string group = csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
@@ -452,10 +458,37 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
     }
 }
 
+// The impostor: one atlas per model, captured for texel = pixel at the nearest of the
+// distances; each view and distance draws the quad of the direction nearest its camera.
+void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group, int level) {
+    const SweepConfig& config = run.config;
+    std::optional<ImpostorAtlas> atlas;
+    TextureCache decoded;  // every view's quad draws the same atlas: decoded once
+    auto view_slot = [&](RenderMode, std::size_t v, std::size_t d) { return int(v * config.distances.size() + d); };
+    run_group(run, out, report, group, view_slot, [&](int s, int) {
+        const std::size_t v = std::size_t(s) / config.distances.size(), d = std::size_t(s) % config.distances.size();
+        if (!atlas) {
+            TextureSizing sizing;
+            sizing.fovy_degrees = config.lod.fovy;
+            sizing.resolution = config.lod.resolution;
+            sizing.distance = *std::min_element(config.distances.begin(), config.distances.end()) *
+                              framing_distance(run.framing, config.lod.fovy);
+            int cell = impostor_cell(model_bounds(run.model), pixel_world_size(sizing));
+            atlas = make_impostor(run.model, config.impostor_directions, cell, run.threads);
+        }
+        Eigen::Vector3f eye = view_settings(run.framing, config.views[v], config.distances[d], RenderMode::normal,
+                                            config.lod, run.threads).camera.position;
+        Candidate c = candidate(impostor_model(*atlas, eye, run.model.source), {}, 0, level);
+        c.variant = "direction " + std::to_string(nearest_direction(*atlas, eye));
+        c.drawable = make_drawable_model(c.model, &decoded, run.threads);
+        return c;
+    });
+}
+
 // The baselines: the same rows, drawn by a mesh that depends on no view, distance or mode.
 void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first) {
     const SweepConfig& config = run.config;
-    auto one_slot = [](RenderMode, std::size_t) { return 0; };
+    auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
     // The triangles of `level` of the first variant, as its first row says.
     auto triangles_of_level = [&](int level) {
         return triangles_of_row(out.results.rows.at(csv_row(
@@ -468,11 +501,15 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
         const Baseline baseline = entry.value;
         const std::string name = entry.name;
         if (std::find(config.baselines.begin(), config.baselines.end(), baseline) == config.baselines.end()) continue;
+        const std::string top_group = csv_row({run.entry.name, name, "-", "-", std::to_string(first.obtained_levels)});
         if (baseline == Baseline::single_box) {
-            run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(first.obtained_levels)}),
-                      one_slot, [&](int, int) {
-                          return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels);
-                      });
+            run_group(run, out, report, top_group, one_slot, [&](int, int) {
+                return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels);
+            });
+            continue;
+        }
+        if (baseline == Baseline::impostor) {
+            run_impostor(run, out, report, top_group, first.obtained_levels);
             continue;
         }
         // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.

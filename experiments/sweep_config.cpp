@@ -6,6 +6,7 @@
 #include "base/parallel.h"
 #include "data_gen/samples.h"
 #include "experiments/flip.h"
+#include "experiments/impostor.h"
 #include "toolkit/parameters.h"
 
 #include <algorithm>
@@ -28,6 +29,9 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
      "of meshoptimizer's variants (collapse, lock-border, sloppy), the one with the lowest image error at each level's "
      "triangles; results.csv names it in baseline_variant"},
     {Baseline::single_box, "single-box", "the whole model as one untextured box in its mean colour"},
+    {Baseline::impostor, "impostor",
+     "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing distance, "
+     "one quad facing the direction nearest the camera"},
 };
 
 }  // namespace
@@ -155,6 +159,9 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              else if (l.line.value == "each-distance") c.sizing = SizingRule::each_distance;
              else if (l.line.value == "per-level") c.sizing = SizingRule::per_level;
              else l.fail("expected nearest, each-distance or per-level, got '" + l.line.value + "'");
+         }},
+        {"impostor_directions", [&](const Line& l) {
+             c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});
          }},
         {"baselines", [&](const Line& l) { c.baselines = l.line.value == "none" ? std::vector<Baseline>{} : l.words(baselines()); }},
         {"keep_images", [&](const Line& l) {

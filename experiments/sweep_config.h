@@ -28,7 +28,7 @@ enum class KeptImages { none, lod, all };
 enum class SizingRule { nearest, each_distance, per_level };
 
 // The baselines a sweep compares the LoDs with (docs/sweeps.md).
-enum class Baseline { simplification, simplification_best, single_box };
+enum class Baseline { simplification, simplification_best, single_box, impostor };
 std::span<const EnumEntry<Baseline>> baselines();  // names and help
 
 struct SweepModel {
@@ -59,6 +59,7 @@ struct SweepConfig {
     }();
     SizingRule sizing = SizingRule::nearest;
     std::vector<Baseline> baselines;  // none by default; they run in the table's order
+    int impostor_directions = 8;      // K: the impostor baseline's K x K captured directions
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

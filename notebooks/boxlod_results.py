@@ -34,8 +34,8 @@ matplotlib.rcParams.update({
 KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "distance", "render_mode"]
 # Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
-         "box-max-extent", "simplification", "simplification-best", "single-box"]
-BASELINES = ("simplification", "simplification-best", "single-box")
+         "box-max-extent", "simplification", "simplification-best", "single-box", "impostor"]
+BASELINES = ("simplification", "simplification-best", "single-box", "impostor")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
@@ -43,6 +43,7 @@ STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, 
 STYLE["simplification"] = dict(color="black", marker="x", linestyle="--")
 STYLE["simplification-best"] = dict(color="dimgrey", marker="+", linestyle=":")
 STYLE["single-box"] = dict(color="black", marker="*", linestyle="none", markersize=10)
+STYLE["impostor"] = dict(color="black", marker="D", linestyle="none", markersize=6)
 LOWER_IS_BETTER = {"flip": True, "rmse": True, "psnr": False, "ssim": False, "iou": False}
 LABEL = {"psnr": "PSNR (dB)", "ssim": "SSIM", "flip": "FLIP", "rmse": "RMSE", "iou": "IoU"}
 

@@ -189,6 +189,27 @@ TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
     }
 }
 
+// The impostor: one atlas for the model, a quad per view facing the captured direction
+// nearest its camera; 2 triangles, 1 draw call, the whole atlas in its bytes.
+TEST(Sweep, ImpostorDrawsOneQuadPerViewFromOneAtlas) {
+    SmallSweep s = small_sweep("sweep_impostor", "baselines = impostor\nimpostor_directions = 4\n");
+    SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);
+    EXPECT_EQ(report.rows, 8u + 2u);
+    EXPECT_EQ(report.lods_built, 4u + 2u);  // a quad per view
+    Table t = read_csv(s.folder / "out" / "results.csv");
+    std::string variants;
+    for (const char* view : {"+X+Y+Z,", "-Z,"}) {
+        auto row = row_of(t, std::string("building.glb,impostor,-,-,4,") + view);
+        EXPECT_EQ(row[column(t, "triangles")], "2");
+        EXPECT_EQ(row[column(t, "draw_calls")], "1");
+        EXPECT_GT(std::stoull(row[column(t, "texture_bytes_gpu")]), 0u);
+        EXPECT_EQ(row[column(t, "baseline_variant")].rfind("direction ", 0), 0u);
+        EXPECT_GT(std::stod(row[column(t, "ssim")]), 0.5);
+        variants += row[column(t, "baseline_variant")] + ";";
+    }
+    EXPECT_NE(variants, "direction 0;direction 0;");  // +X+Y+Z and -Z are seen from different cells
+}
+
 // each-distance bakes an LoD per distance: four times the distance, about a sixteenth
 // of the texels; nearest draws the texels of the smallest distance everywhere.
 TEST(Sweep, SizingEachDistanceBakesFewerTexelsFartherAway) {

@@ -65,6 +65,10 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_TRUE(none.baselines.empty());
     SweepConfig best = parse_sweep_config("models = a.glb\nbaselines = simplification-best, simplification\n", "c.txt");
     EXPECT_EQ(best.baselines, (std::vector<Baseline>{Baseline::simplification_best, Baseline::simplification}));
+    SweepConfig impostor = parse_sweep_config("models = a.glb\nbaselines = impostor\nimpostor_directions = 12\n", "c.txt");
+    EXPECT_EQ(impostor.baselines, (std::vector<Baseline>{Baseline::impostor}));
+    EXPECT_EQ(impostor.impostor_directions, 12);
+    EXPECT_EQ(none.impostor_directions, 8);
 }
 
 // The message names the file, the line and the key.
@@ -94,7 +98,8 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevel_mode = top-down\n", "cfg.txt: line 2: level_mode: the sweep varies this itself");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
-    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, single-box)");
+    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, single-box, impostor)");
+    expect_error("models = a.glb\nimpostor_directions = 64\n", "cfg.txt: line 2: impostor_directions: ");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice (first on line 1)");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
