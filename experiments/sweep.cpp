@@ -15,6 +15,7 @@
 #include "experiments/silhouette.h"
 #include "experiments/simplification.h"
 #include "experiments/single_box.h"
+#include "toolkit/cgal_simplification.h"
 #include "toolkit/cost.h"
 #include "toolkit/drawable.h"
 #include "toolkit/framing.h"
@@ -518,6 +519,11 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
             std::size_t target = triangles_of_level(level);
             run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
                       [&](int, int a) {
+                          if (baseline == Baseline::cgal) {
+                              Candidate c = candidate(cgal_simplify(run.model, target), {}, 0, first.obtained_levels);
+                              c.variant = "garland-heckbert";
+                              return c;
+                          }
                           const SimplifyVariant& v = variants[std::size_t(a)];
                           Candidate c = candidate(simplify_model(run.model, target, v.options), {}, 0, first.obtained_levels);
                           c.variant = v.name;

@@ -28,6 +28,9 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
     {Baseline::simplification_best, "simplification-best",
      "of meshoptimizer's variants (collapse, lock-border, sloppy), the one with the lowest image error at each level's "
      "triangles; results.csv names it in baseline_variant"},
+    {Baseline::cgal, "cgal",
+     "CGAL's Garland-Heckbert edge collapse on each material welded by position, to each level's triangles "
+     "(the budget split by surface area; it stops where the mesh allows no more)"},
     {Baseline::single_box, "single-box", "the whole model as one untextured box in its mean colour"},
     {Baseline::impostor, "impostor",
      "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing distance, "

@@ -28,7 +28,7 @@ enum class KeptImages { none, lod, all };
 enum class SizingRule { nearest, each_distance, per_level };
 
 // The baselines a sweep compares the LoDs with (docs/sweeps.md).
-enum class Baseline { simplification, simplification_best, single_box, impostor };
+enum class Baseline { simplification, simplification_best, cgal, single_box, impostor };
 std::span<const EnumEntry<Baseline>> baselines();  // names and help
 
 struct SweepModel {

@@ -159,17 +159,19 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
 
 // simplification-best draws every meshoptimizer variant and keeps, per level, the one
 // with the lowest mean FLIP over the views: never worse than plain simplification
-// (its `collapse` variant), never above the level's triangles, and named in its rows.
+// (its `collapse` variant), never above the level's triangles, and named in its rows;
+// cgal rows follow it, named too.
 TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
-    SmallSweep s = small_sweep("sweep_best", "baselines = simplification-best, simplification\n");
+    SmallSweep s = small_sweep("sweep_best", "baselines = simplification-best, cgal, simplification\n");
     SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);
-    EXPECT_EQ(report.rows, 8u + 4u + 4u);
-    EXPECT_EQ(report.lods_built, 4u + 2u + 2u * simplify_variants(1).size());
+    EXPECT_EQ(report.rows, 8u + 4u + 4u + 4u);
+    EXPECT_EQ(report.lods_built, 4u + 2u + 2u * simplify_variants(1).size() + 2u);
     Table t = read_csv(s.folder / "out" / "results.csv");
     const std::size_t flip = column(t, "flip"), variant = column(t, "baseline_variant"),
                       triangles = column(t, "triangles");
     EXPECT_EQ(t[9][column(t, "level_mode")], "simplification");  // the table's order, not the config's
     EXPECT_EQ(t[13][column(t, "level_mode")], "simplification-best");
+    EXPECT_EQ(t[17][column(t, "level_mode")], "cgal");
     for (std::size_t r = 1; r < 9; ++r) EXPECT_EQ(t[r][variant], "") << r;
     for (const char* level : {"0,", "4,"}) {
         double plain = 0, best = 0;
@@ -184,6 +186,9 @@ TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
             EXPECT_EQ(b[variant], chosen);  // one mesh for every view of a level
             EXPECT_LE(std::stoul(b[triangles]), std::stoul(box[triangles]));
             plain += std::stod(p[flip]), best += std::stod(b[flip]);
+            auto cgal = row_of(t, std::string("building.glb,cgal,-,-,") + level + view);
+            EXPECT_EQ(cgal[variant], "garland-heckbert");
+            EXPECT_GT(std::stoul(cgal[triangles]), 0u);
         }
         EXPECT_LE(best, plain) << level;
     }
