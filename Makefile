@@ -67,7 +67,7 @@ bench:
 	@mkdir -p $(BUILD)/bench
 	@for b in $(BENCHMARKS); do \
 	  $(BUILD)/experiments/$${b}_benchmark --benchmark_out=$(BUILD)/bench/$$b.json --benchmark_out_format=json || exit 1; done
-	@LP_NUM_THREADS=1 $(BUILD)/experiments/rasterizer_benchmark --benchmark_filter='_frame/1' \
+	@LP_NUM_THREADS=1 $(BUILD)/experiments/rasterizer_benchmark --benchmark_filter='_frame/1/' \
 	  --benchmark_out=$(BUILD)/bench/rasterizer_1_thread.json --benchmark_out_format=json
 	@experiments/benchmarks/ratio_table.py $(BUILD)/bench
 
