@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace boxlod::bench {
@@ -21,7 +22,7 @@ struct LlvmpipePeer::State {
     };
     OSMesaContext context = nullptr;
     std::vector<unsigned char> pixels;
-    GLuint program = 0;
+    GLuint programs[3] = {0, 0, 0};  // untextured, mapped, mapped with alpha cut-out
     std::vector<Draw> draws;
     std::map<const MipTexture*, GLuint> textures;
 };
@@ -46,12 +47,31 @@ void main() {
     gl_Position = view_projection * vec4(position, 1.0);
 })";
 
+// boxlod's untextured mode (renderer/shading.cpp: UntexturedShader, blinn_phong), with
+// no more work than it needs, so that llvmpipe is at its best.
+const char* untextured_fragment_shader = R"(#version 120
+uniform vec3 eye, light_position, specular_color;
+uniform vec4 base_color;
+uniform float ambient, diffuse, specular, shininess;
+varying vec3 world_position;
+varying vec3 world_normal;
+void main() {
+    vec3 n = normalize(world_normal);
+    vec3 v = normalize(eye - world_position);
+    if (dot(n, v) < 0.0) n = -n;
+    vec3 l = normalize(light_position - world_position);
+    vec3 h = normalize(l + v);
+    float d = max(0.0, dot(n, l));
+    float s = d > 0.0 ? pow(max(0.0, dot(n, h)), shininess) : 0.0;
+    gl_FragColor = vec4(base_color.rgb * (ambient + diffuse * d) + specular_color * (specular * s), 1.0);
+})";
+
 // boxlod's normal mode (renderer/shading.cpp: MappedShader, blinn_phong).
 const char* fragment_shader = R"(#version 120
 uniform vec3 eye, light_position, specular_color;
 uniform vec4 base_color;
 uniform float ambient, diffuse, specular, shininess;
-uniform bool has_color, has_normal, alpha_cutout;
+uniform bool has_color, has_normal;
 uniform sampler2D color_map, normal_map;
 varying vec3 world_position;
 varying vec3 world_normal;
@@ -60,7 +80,9 @@ varying vec4 world_tangent;
 void main() {
     vec4 albedo = base_color;
     if (has_color) albedo *= texture2D(color_map, texture_uv);
-    if (alpha_cutout && albedo.a < 0.5) discard;
+#ifdef CUTOUT
+    if (albedo.a < 0.5) discard;
+#endif
     vec3 n = normalize(world_normal);
     vec3 v = normalize(eye - world_position);
     float facing = gl_FrontFacing ? 1.0 : -1.0;
@@ -94,6 +116,28 @@ GLuint compile(GLenum type, const char* source) {
         std::fprintf(stderr, "llvmpipe peer: shader: %s\n", log);
     }
     return shader;
+}
+
+// A program with the camera, light and texture units set.
+GLuint link(const char* fragment_source, const RenderSettings& settings, int width, int height) {
+    GLuint program = glCreateProgram();
+    glAttachShader(program, compile(GL_VERTEX_SHADER, vertex_shader));
+    glAttachShader(program, compile(GL_FRAGMENT_SHADER, fragment_source));
+    const char* attributes[] = {"position", "normal", "uv", "tangent"};
+    for (GLuint a = 0; a < 4; ++a) glBindAttribLocation(program, a, attributes[a]);
+    glLinkProgram(program);
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "color_map"), 0);
+    glUniform1i(glGetUniformLocation(program, "normal_map"), 1);
+    const Camera& camera = settings.camera;
+    Eigen::Matrix4f view_projection = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
+    glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
+    glUniform3fv(glGetUniformLocation(program, "eye"), 1, camera.position.data());
+    glUniform3fv(glGetUniformLocation(program, "light_position"), 1, settings.light.position.data());
+    glUniform1f(glGetUniformLocation(program, "ambient"), settings.light.ambient);
+    glUniform1f(glGetUniformLocation(program, "diffuse"), settings.light.diffuse);
+    glUniform1f(glGetUniformLocation(program, "specular"), settings.light.specular);
+    return program;
 }
 
 // boxlod's own mip chain, so both sample the same texels (RGBA8; sRGB colour maps).
@@ -135,17 +179,10 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& bat
     s.pixels.resize(std::size_t(width) * std::size_t(height) * 4);
     if (!OSMesaMakeCurrent(s.context, s.pixels.data(), GL_UNSIGNED_BYTE, width, height)) return nullptr;
 
-    s.program = glCreateProgram();
-    glAttachShader(s.program, compile(GL_VERTEX_SHADER, vertex_shader));
-    glAttachShader(s.program, compile(GL_FRAGMENT_SHADER, fragment_shader));
-    const char* attributes[] = {"position", "normal", "uv", "tangent"};
-    for (GLuint a = 0; a < 4; ++a) glBindAttribLocation(s.program, a, attributes[a]);
-    glLinkProgram(s.program);
-    glUseProgram(s.program);
-    glUniform1i(glGetUniformLocation(s.program, "color_map"), 0);
-    glUniform1i(glGetUniformLocation(s.program, "normal_map"), 1);
-
     const bool textured = settings.mode != RenderMode::untextured;
+    const std::string mapped = fragment_shader, cutout = "#version 120\n#define CUTOUT\n" + mapped.substr(mapped.find('\n') + 1);
+    const char* sources[3] = {untextured_fragment_shader, mapped.c_str(), cutout.c_str()};
+    for (int p = 0; p < 3; ++p) s.programs[p] = link(sources[p], settings, width, height);
     for (const Batch& batch : batches) {
         const Mesh& mesh = *batch.mesh;
         State::Draw draw;
@@ -169,14 +206,6 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& bat
         s.draws.push_back(draw);
     }
 
-    const Camera& camera = settings.camera;
-    Eigen::Matrix4f view_projection = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
-    glUniformMatrix4fv(glGetUniformLocation(s.program, "view_projection"), 1, GL_FALSE, view_projection.data());
-    glUniform3fv(glGetUniformLocation(s.program, "eye"), 1, camera.position.data());
-    glUniform3fv(glGetUniformLocation(s.program, "light_position"), 1, settings.light.position.data());
-    glUniform1f(glGetUniformLocation(s.program, "ambient"), settings.light.ambient);
-    glUniform1f(glGetUniformLocation(s.program, "diffuse"), settings.light.diffuse);
-    glUniform1f(glGetUniformLocation(s.program, "specular"), settings.light.specular);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glViewport(0, 0, width, height);
@@ -191,12 +220,13 @@ void LlvmpipePeer::draw() {
     State& s = *state_;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (const State::Draw& d : s.draws) {
-        glUniform4fv(glGetUniformLocation(s.program, "base_color"), 1, d.surface.base_color.data());
-        glUniform3fv(glGetUniformLocation(s.program, "specular_color"), 1, d.surface.specular.data());
-        glUniform1f(glGetUniformLocation(s.program, "shininess"), d.surface.shininess);
-        glUniform1i(glGetUniformLocation(s.program, "has_color"), d.color != 0);
-        glUniform1i(glGetUniformLocation(s.program, "has_normal"), d.normal != 0 && d.tangents);
-        glUniform1i(glGetUniformLocation(s.program, "alpha_cutout"), d.surface.alpha_cutout);
+        const GLuint program = s.programs[d.uvs ? (d.surface.alpha_cutout ? 2 : 1) : 0];
+        glUseProgram(program);
+        glUniform4fv(glGetUniformLocation(program, "base_color"), 1, d.surface.base_color.data());
+        glUniform3fv(glGetUniformLocation(program, "specular_color"), 1, d.surface.specular.data());
+        glUniform1f(glGetUniformLocation(program, "shininess"), d.surface.shininess);
+        glUniform1i(glGetUniformLocation(program, "has_color"), d.color != 0);
+        glUniform1i(glGetUniformLocation(program, "has_normal"), d.normal != 0 && d.tangents);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, d.color);
         glActiveTexture(GL_TEXTURE1);
