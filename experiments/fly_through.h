@@ -62,7 +62,7 @@ struct BuildingLevels {
 
 // Everything a fly-through draws, built once.
 struct CityLevels {
-    DecodedTextures textures;  // the city's, shared by the streets and every level 0
+    DecodedTextures textures;  // the city's: the streets draw them, every packed level shares them
     Drawable streets;
     std::size_t street_faces = 0, street_triangles = 0;
     CostParts street_cost;
