@@ -92,7 +92,7 @@ Model impostor_model(const ImpostorAtlas& atlas, const Eigen::Vector3f& eye, con
     material.name = "impostor";
     material.base_color_texture = 0;
     material.normal_texture = 1;
-    material.alpha_cutout = true;
+    material.alpha_mode = AlphaMode::mask;
     model.materials.push_back(material);
     add_node(model, -1, "impostor");
     Primitive& quad = model.nodes[0].primitives.emplace_back();

@@ -146,7 +146,12 @@ bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, in
     return x0 <= x1 && y0 <= y1;
 }
 
-void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep) {
+namespace {
+
+// Walks the pixels of `t` in the tile that the fill rule gives it and that pass
+// depth LESS; `on_pixel(x, y, depth, depth_slot, id_slot)` decides what to write.
+template <typename OnPixel>
+void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on_pixel) {
     // Orient to positive area; vertex o[i] of the stored triangle is corner i here.
     std::int64_t area = doubled_area(t);
     int o[3] = {0, 1, 2};
@@ -187,15 +192,26 @@ void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTar
                 double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
                 float zf = float(z);
                 int i = x - tile.x0;
-                if (zf < depth[i] && (!keep || (*keep)(t, x, y))) {
-                    depth[i] = zf;
-                    ids[i] = id;
-                }
+                if (zf < depth[i]) on_pixel(x, y, zf, depth[i], ids[i]);
             }
             e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
         }
         row[0] += step_y[0], row[1] += step_y[1], row[2] += step_y[2];
     }
+}
+
+}  // namespace
+
+void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep) {
+    walk_triangle(t, tile, [&](int x, int y, float depth, float& depth_slot, std::uint32_t& id_slot) {
+        if (keep && !(*keep)(t, x, y)) return;
+        depth_slot = depth;
+        id_slot = id;
+    });
+}
+
+void visit_triangle(const ScreenTriangle& t, const TileTarget& tile, const PixelVisit& visit) {
+    walk_triangle(t, tile, [&](int x, int y, float depth, float&, std::uint32_t&) { visit(x, y, depth); });
 }
 
 }  // namespace boxlod

@@ -59,6 +59,11 @@ struct TileTarget {
 using FragmentTest = std::function<bool(const ScreenTriangle& t, int x, int y)>;
 void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep);
 
+// For blended triangles: calls `visit` for every pixel of the tile whose centre
+// the fill rule assigns to `t` and whose depth passes LESS, writing nothing.
+using PixelVisit = std::function<void(int x, int y, float depth)>;
+void visit_triangle(const ScreenTriangle& t, const TileTarget& tile, const PixelVisit& visit);
+
 // Pixel bounding box of a screen triangle, inclusive, clamped to the viewport and scissor.
 bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1);
 

@@ -21,7 +21,14 @@ constexpr EnumEntry<RenderMode> render_mode_table[] = {
     {RenderMode::pom, "pom", "parallax occlusion mapping: a ray march through the height map"},
     {RenderMode::albedo, "albedo", "unlit albedo (material colour x texture): what baking records"},
 };
+constexpr EnumEntry<AlphaMode> alpha_mode_table[] = {
+    {AlphaMode::opaque, "OPAQUE", "alpha ignored"},
+    {AlphaMode::mask, "MASK", "fragments below the alpha cutoff are dropped"},
+    {AlphaMode::blend, "BLEND", "composited source-over, after the opaque surfaces"},
+};
 }  // namespace
+
+std::span<const EnumEntry<AlphaMode>> alpha_modes() { return alpha_mode_table; }
 
 std::span<const EnumEntry<RenderMode>> render_modes() { return render_mode_table; }
 
@@ -188,6 +195,39 @@ void bin_chunk(Chunk& chunk, const Tiling& tiling, const Viewport& viewport) {
     }
 }
 
+// Blended triangles over the resolved tile, back to front by their mean window
+// depth (ties by submission): one global order, so every tile and thread count
+// composites alike. Each is depth-tested against the opaque surfaces and
+// composited source-over (Porter and Duff 1984): c = a c_src + (1 - a) c_dst,
+// coverage a + (1 - a) a_dst. Intersecting or cyclic glass is as good as that
+// order, as in engines that sort transparent draws.
+template <typename Shade>
+void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, const TileTarget& opaque, Frame& frame,
+                       const Shade& shade) {
+    auto mean_depth = [&](std::uint32_t id) {
+        const std::vector<ClippedWeights>* weights;
+        const ScreenTriangle& t = triangle_of(c, id, weights);
+        return t.z[0] + t.z[1] + t.z[2];
+    };
+    std::sort(blended.begin(), blended.end(), [&](std::uint32_t a, std::uint32_t b) {
+        float za = mean_depth(a), zb = mean_depth(b);
+        return za != zb ? za > zb : a < b;
+    });
+    for (std::uint32_t id : blended) {
+        const std::vector<ClippedWeights>* weights;
+        const ScreenTriangle& t = triangle_of(c, id, weights);
+        visit_triangle(t, opaque, [&](int x, int y, float depth) {
+            ShadedPixel shaded = shade(t, *weights, x, y);
+            float a = std::clamp(shaded.alpha, 0.0f, 1.0f);
+            std::size_t pixel = std::size_t(y) * frame.width + x;
+            Eigen::Vector4f& color = frame.color[pixel];
+            color.head<3>() = shaded.color * a + color.head<3>() * (1 - a);
+            color.w() += a * (1 - color.w());
+            if (depth < frame.depth[pixel]) frame.depth[pixel] = depth, frame.normal[pixel] = shaded.normal;
+        });
+    }
+}
+
 void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
     int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
     int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
@@ -200,29 +240,43 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     std::fill(ids, ids + tile_size * tile_size, no_triangle);
     TileTarget target{x0, y0, x1, y1, tile_size, depth, ids};
 
+    // Opaque and masked triangles into the visibility buffer, in submission order.
+    std::vector<std::uint32_t> blended;
     for (std::size_t chunk_index = 0; chunk_index < c.chunk_count; ++chunk_index) {
         const Chunk& chunk = c.chunks[chunk_index];
         for (std::uint32_t k = chunk.bin_start[tile]; k < chunk.bin_start[tile + 1]; ++k) {
             std::uint32_t i = chunk.bin_items[k];
             const ScreenTriangle& t = chunk.triangles[i];
             std::uint32_t id = std::uint32_t(chunk_index << chunk_index_bits) | i;
-            const Surface& surface = c.batches[t.batch].surface;
-            if (!surface.alpha_cutout || c.batches[t.batch].mesh->uvs.empty()) {
+            const Batch& batch = c.batches[t.batch];
+            const Surface& surface = batch.surface;
+            if (surface.alpha_mode == AlphaMode::blend) {
+                blended.push_back(id);
+                continue;
+            }
+            bool textured_mask = surface.alpha_mode == AlphaMode::mask && surface.color && !batch.mesh->uvs.empty();
+            if (surface.alpha_mode == AlphaMode::mask && !textured_mask && surface.base_color.w() < surface.alpha_cutoff) continue;
+            if (!textured_mask) {
                 rasterize_triangle(t, id, target, nullptr);
                 continue;
             }
             FragmentTest keep = [&](const ScreenTriangle& tri, int x, int y) {
-                const Mesh& mesh = *c.batches[tri.batch].mesh;
+                const Mesh& mesh = *batch.mesh;
                 Eigen::Vector3f b = source_barycentrics(tri, chunk.weights, x + 0.5, y + 0.5);
-                float alpha = surface.base_color.w();
-                if (surface.color) alpha *= sample(*surface.color, interpolate(mesh.uvs, &mesh.indices[std::size_t(tri.triangle) * 3], b)).w();
-                return alpha >= 0.5f;
+                Eigen::Vector2f uv = interpolate(mesh.uvs, &mesh.indices[std::size_t(tri.triangle) * 3], b);
+                return surface.base_color.w() * sample(*surface.color, uv).w() >= surface.alpha_cutoff;
             };
             rasterize_triangle(t, id, target, &keep);
         }
     }
 
     bool reads_uv = c.shader.reads_uv();
+    auto shade = [&](const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y) {
+        Fragment fragment = make_fragment(c, t, weights, x, y, reads_uv);
+        ShadedPixel shaded = c.shader.shade(c.batches[t.batch].surface, fragment);
+        if (c.settings.wireframe && edge_distance(t, weights, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
+        return shaded;
+    };
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             int local = (y - y0) * tile_size + (x - x0);
@@ -230,14 +284,13 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
             if (id == no_triangle) continue;
             const std::vector<ClippedWeights>* weights;
             const ScreenTriangle& t = triangle_of(c, id, weights);
-            Fragment fragment = make_fragment(c, t, *weights, x, y, reads_uv);
-            ShadedPixel shaded = c.shader.shade(c.batches[t.batch].surface, fragment);
-            if (c.settings.wireframe && edge_distance(t, *weights, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
+            ShadedPixel shaded = shade(t, *weights, x, y);
             std::size_t pixel = std::size_t(y) * frame.width + x;
             frame.color[pixel] = Eigen::Vector4f(shaded.color.x(), shaded.color.y(), shaded.color.z(), 1);
             frame.depth[pixel] = depth[local];
             frame.normal[pixel] = shaded.normal;
         }
+    if (!blended.empty()) composite_blended(c, blended, target, frame, shade);
 }
 
 }  // namespace

@@ -37,6 +37,17 @@ struct Mesh {
     std::vector<std::uint32_t> indices;
 };
 
+// glTF 2.0 alphaMode (spec 3.9.4: Alpha Coverage). The alpha is base_color.w x
+// the colour map's alpha. Blended triangles are composited source-over after
+// every opaque and masked one (docs/design.md: Rendering).
+enum class AlphaMode {
+    opaque,  // alpha ignored
+    mask,    // fragments with alpha < alpha_cutoff are dropped (baked box faces: uncovered texels)
+    blend,   // source-over, no depth write (glass)
+};
+std::span<const EnumEntry<AlphaMode>> alpha_modes();  // glTF's names: "OPAQUE", "MASK", "BLEND"
+constexpr NumberRange alpha_cutoff_range{0, 1};
+
 struct Surface {
     Eigen::Vector4f base_color{1, 1, 1, 1};  // linear
     const MipTexture* color = nullptr;          // sRGB-decoded albedo, alpha
@@ -44,7 +55,8 @@ struct Surface {
     const MipTexture* height = nullptr;         // 1 = surface, 0 = deepest
     Eigen::Vector3f specular{0.2f, 0.2f, 0.2f};
     float shininess = 32;
-    bool alpha_cutout = false;  // drop fragments whose alpha < 0.5 (baked box faces)
+    AlphaMode alpha_mode = AlphaMode::opaque;
+    float alpha_cutoff = 0.5f;  // mask only
 };
 
 struct Batch {
@@ -81,7 +93,9 @@ struct RenderSettings {
 };
 
 // What a render leaves per pixel. Uncovered pixels keep the background,
-// alpha 0, depth +infinity, normal 0.
+// alpha 0, depth +infinity, normal 0. Depth and normal are the nearest
+// surface's, blended or not; alpha is 1 under an opaque surface, else what the
+// blended ones composite to over 0.
 struct Frame {
     int width = 0, height = 0;
     std::vector<Eigen::Vector4f> color;   // linear RGB, alpha = coverage

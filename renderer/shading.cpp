@@ -43,7 +43,7 @@ public:
     bool reads_uv() const override { return false; }
     ShadedPixel shade(const Surface& s, Fragment& f) const override {
         Eigen::Vector3f view = face_the_viewer(eye_, f);
-        return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal};
+        return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal, s.base_color.w()};
     }
 
 private:
@@ -71,8 +71,8 @@ public:
                 if (mapped.squaredNorm() > 0) normal = mapped.normalized();
             }
         }
-        if (!lit_) return {albedo.head<3>(), normal};
-        return {blinn_phong(light_, s, f, view, albedo, normal), normal};
+        if (!lit_) return {albedo.head<3>(), normal, albedo.w()};
+        return {blinn_phong(light_, s, f, view, albedo, normal), normal, albedo.w()};
     }
 
 protected:

@@ -23,6 +23,7 @@ struct Fragment {
 struct ShadedPixel {
     Eigen::Vector3f color;   // linear RGB
     Eigen::Vector3f normal;  // the shading normal, facing the viewer
+    float alpha = 1;         // base colour alpha x colour map alpha: the blend weight of AlphaMode::blend
 };
 
 class Shader {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 using namespace boxlod;
@@ -72,6 +73,25 @@ TEST(AssimpIo, FzkHausIfcKeepsItsHierarchy) {
     EXPECT_EQ(statistic(model, "nodes"), "216");
     EXPECT_EQ(statistic(model, "depth"), "7");
     EXPECT_EQ(statistic(model, "triangles_original"), "35906");
+}
+
+// Its glass (IfcSurfaceStyleRendering transparency 0.88) reads as BLEND with
+// alpha 0.12, and a glTF written from it keeps both.
+TEST(AssimpIo, FzkHausGlassIsBlendedAndKeptByConvert) {
+    Model model = load_model(test::fzk_haus_ifc);
+    auto is_glass = [](const Material& m) { return m.alpha_mode == AlphaMode::blend; };
+    auto glass = std::find_if(model.materials.begin(), model.materials.end(), is_glass);
+    ASSERT_NE(glass, model.materials.end());
+    EXPECT_NEAR(glass->base_color.w(), 0.12f, 1e-6);
+    for (const Material& m : model.materials)
+        if (!is_glass(m)) EXPECT_EQ(m.base_color.w(), 1) << m.name;
+    auto folder = test::scratch_folder("assimp_fzk_glass");
+    save_model(model, (folder / "fzk.glb").string());
+    Model again = load_model((folder / "fzk.glb").string());
+    auto kept = std::find_if(again.materials.begin(), again.materials.end(), is_glass);
+    ASSERT_NE(kept, again.materials.end());
+    EXPECT_EQ(kept->name, glass->name);
+    EXPECT_NEAR(kept->base_color.w(), 0.12f, 1e-6);
 }
 
 TEST(AssimpIo, FzkHausGlbFromAssimpExportKeepsItsHierarchy) {

@@ -76,6 +76,29 @@ TEST(Bake, FaceRecordsAlbedoCoverageTangentNormalAndHeight) {
     }
 }
 
+TEST(Bake, GlassIsCoveredOnlyWhereAtLeastHalfOpaqueAndRecordsItsAlbedo) {
+    Model model = red_quad_model();
+    Material glass;
+    glass.base_color = {0, 0, 1, 0.25f};
+    glass.alpha_mode = AlphaMode::blend;
+    model.materials = {glass};
+    DecodedTextures textures = decode_textures(model);
+    OrientedBox box;
+    box.center = {0.5f, 0.5f, 0.5f};
+    box.half_extents = {0.5f, 0.5f, 0.5f};
+    auto faces = oriented_box_faces(box);
+    // Glass alone: see-through, so no texel is covered (the face's MASK cut-off is 0.5).
+    BakedFace alone = bake_face(make_drawable(model, textures), faces[4], {8, 8}, 1);
+    for (std::size_t i = 0; i < 64; ++i) EXPECT_EQ(alone.color.pixels[i * 4 + 3], 0) << i;
+    // At alpha 0.75 it is covered, and the texel holds its own colour, not its colour over black.
+    model.materials[0].base_color.w() = 0.75f;
+    BakedFace opaque_enough = bake_face(make_drawable(model, textures), faces[4], {8, 8}, 1);
+    for (std::size_t i = 0; i < 64; ++i) {
+        EXPECT_EQ(opaque_enough.color.pixels[i * 4 + 3], 255) << i;
+        EXPECT_EQ(opaque_enough.color.pixels[i * 4 + 2], 255) << i;
+    }
+}
+
 TEST(Bake, DilationFillsUncoveredTexelsFromTheNearestCovered) {
     Image8 color(5, 3, 4, 0);
     std::uint8_t* covered = color.at(0, 1);

@@ -158,6 +158,26 @@ bad "a NaN level distance" build "$work/house.glb" -o "$work/chain_bad" --all-le
 bad "too few level distances" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 10,20
 bad "level distances without --all-levels" build "$work/house.glb" -o "$work/chain_bad" --level-distances auto
 check "no output folder for a refused chain" test ! -e "$work/chain_bad"
+# The same chain in one .glb (MSFT_lod): level 0 in the scene, the others listed by its root,
+# switch hints falling with distance, each texture stored once.
+check "build --chain succeeds" test "$(status_of "$boxlod" build "$work/house.glb" --chain -o "$work/house_chain.glb" --resolution 256 --min-texture-size 16)" = 0
+check "a chain level reports where engines switch to it" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } \$1 == \"switch_distance\" { s[++n] = \$2; if ((\$2 - d) ^ 2 > (1e-6 * d) ^ 2) exit 1 } \$1 == \"screen_coverage\" { c[n] = \$2 } END { for (k = 2; k <= n; ++k) if (!(s[k] > s[k - 1] && c[k] < c[k - 1])) exit 1; exit n < 5 }' '$work/out'"
+check "the chain .glb lists every level through MSFT_lod" /usr/bin/python3 - "$work/house_chain.glb" "$work/out" <<'PY'
+import json, struct, sys
+data = open(sys.argv[1], 'rb').read()
+length = struct.unpack_from('<I', data, 12)[0]
+gltf = json.loads(data[20:20 + length])
+levels = sum(1 for line in open(sys.argv[2]) if line.startswith('name = house_chain_L'))
+root = gltf['nodes'][gltf['scenes'][0]['nodes'][0]]
+ids, coverage = root['extensions']['MSFT_lod']['ids'], root['extras']['MSFT_screencoverage']
+assert gltf['scenes'][0]['nodes'] == [0] and len(ids) == levels - 1 and len(coverage) == levels, (ids, coverage)
+assert coverage == sorted(coverage, reverse=True) and coverage[-1] == 0, coverage
+assert 'MSFT_lod' in gltf['extensionsUsed']
+# Levels 1.. keep some of the original's parts: their textures are the level 0 images, not copies.
+names = [image['name'] for image in gltf['images']]
+assert names.count('brick_color.png') == 1 and len(names) == len(set(names)), names
+PY
+bad "a chain written to a .txt" build "$work/house.glb" --chain -o "$work/house_chain.txt"
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
 check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"

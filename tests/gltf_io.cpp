@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 using namespace boxlod;
 namespace fs = std::filesystem;
@@ -52,10 +53,12 @@ Model sample_model() {
     brick.height_texture = 2;
     brick.specular_color = {0.1f, 0.2f, 0.3f};
     brick.shininess = 12.5f;
+    brick.alpha_mode = AlphaMode::mask;
+    brick.alpha_cutoff = 0.25f;
     Material glass;
     glass.name = "glass";
     glass.double_sided = true;
-    glass.alpha_cutout = true;
+    glass.alpha_mode = AlphaMode::blend;
     model.materials = {brick, glass};
     for (int t = 0; t < 3; ++t) {
         Texture texture;
@@ -109,7 +112,8 @@ void expect_same_model(const Model& a, const Model& b) {
         EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
         EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
         EXPECT_EQ(a.materials[i].double_sided, b.materials[i].double_sided);
-        EXPECT_EQ(a.materials[i].alpha_cutout, b.materials[i].alpha_cutout);
+        EXPECT_EQ(a.materials[i].alpha_mode, b.materials[i].alpha_mode);
+        EXPECT_EQ(a.materials[i].alpha_cutoff, b.materials[i].alpha_cutoff);
     }
     ASSERT_EQ(a.textures.size(), b.textures.size());
     for (std::size_t i = 0; i < a.textures.size(); ++i) {
@@ -177,6 +181,48 @@ TEST(GltfIo, LodMarkAndParametersSurviveTheRoundTrip) {
     Model back = load_model((folder / "lod.gltf").string());
     EXPECT_TRUE(back.is_lod);
     EXPECT_EQ(back.lod_params, model.lod_params);
+}
+
+// A chain of levels in one file (MSFT_lod): level 0 alone in the scene, so a
+// reader without the extension (boxlod too) gets the finest level; what the
+// coarser level has equal to level 0 (textures, materials, meshes) is stored once.
+TEST(GltfIo, LevelsInOneFileWithMsftLod) {
+    auto folder = test::scratch_folder("gltf_lods");
+    Model finest = sample_model(), coarse = sample_model();
+    coarse.nodes.resize(2);  // the lot and its mass, without windows
+    coarse.nodes[1].children.clear();
+    coarse.materials[1].name = "glass_coarse";
+    for (const char* name : {"chain.glb", "chain.gltf"}) {
+        std::string path = (folder / name).string();
+        export_gltf_lods({&finest, &coarse}, {0.25, 0}, path, 2);
+        Model read_back = load_model(path);  // (materials and textures: every level's)
+        read_back.materials.resize(finest.materials.size());
+        read_back.textures.resize(finest.textures.size());
+        expect_same_model(finest, read_back);
+        tinygltf::Model gltf;
+        std::string error, warning;
+        tinygltf::TinyGLTF reader;
+        bool read = std::string(name).ends_with(".glb") ? reader.LoadBinaryFromFile(&gltf, &error, &warning, path)
+                                                        : reader.LoadASCIIFromFile(&gltf, &error, &warning, path);
+        ASSERT_TRUE(read) << error;
+        ASSERT_EQ(gltf.scenes.at(0).nodes, std::vector<int>{0});
+        const int coarse_root = int(finest.nodes.size());
+        EXPECT_EQ(gltf.nodes.size(), finest.nodes.size() + 2);
+        const tinygltf::Value& lod = gltf.nodes[0].extensions.at("MSFT_lod");
+        ASSERT_EQ(lod.Get("ids").ArrayLen(), 1u);
+        EXPECT_EQ(lod.Get("ids").Get(0).GetNumberAsInt(), coarse_root);
+        EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(0).GetNumberAsDouble(), 0.25);
+        EXPECT_EQ(gltf.extensionsUsed, std::vector<std::string>{"MSFT_lod"});
+        EXPECT_EQ(gltf.images.size(), finest.textures.size());
+        // Equal materials and meshes are shared too: the coarse mass is level 0's mass, brick and all;
+        // only the renamed glass is new.
+        ASSERT_EQ(gltf.materials.size(), 3u);
+        EXPECT_EQ(gltf.materials[2].name, "glass_coarse");
+        EXPECT_EQ(gltf.materials[2].pbrMetallicRoughness.baseColorTexture.index, -1);
+        EXPECT_EQ(gltf.meshes.size(), 3u);  // level 0's mass and two windows
+        EXPECT_EQ(gltf.nodes[std::size_t(coarse_root) + 1].mesh, gltf.nodes[1].mesh);
+    }
+    EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {0.25}, (folder / "bad.glb").string()), std::logic_error);
 }
 
 TEST(GltfIo, ExportIsByteIdenticalEveryTime) {

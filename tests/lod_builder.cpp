@@ -155,6 +155,24 @@ TEST(LodGolden, EachRenderMode) {
     }
 }
 
+// The FZK-Haus's glass (IFC opacity 0.12) is blended: the original shows what
+// lies behind its windows, and a baked level records the glass over the rooms.
+TEST(LodGolden, FzkHausGlassIsSeeThrough) {
+    Model model = load_model(test::fzk_haus_ifc);
+    LodParameters p = small_parameters();
+    p.resolution = 128;
+    auto session = start_lod(model, p, 2);
+    Image8 original = render_lod_preview(build_lod(*session, 0, 2), *session, 200, 150, 2);
+    test::expect_golden(original, "lod_fzk_glass_original");
+    test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session, 200, 150, 2), "lod_fzk_glass_level2");
+    int glass = 0;
+    for (Material& material : model.materials)
+        if (material.alpha_mode == AlphaMode::blend) material.alpha_mode = AlphaMode::opaque, ++glass;
+    EXPECT_GT(glass, 0);
+    auto opaque_session = start_lod(model, p, 2);
+    EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels, original.pixels);
+}
+
 // Real data: the FZK-Haus at every level of every level mode and box kind.
 TEST(LodBuilder, FzkHausBuildsAtEveryLevelOfEveryModeAndBoxKind) {
     Model model = load_model(test::fzk_haus_ifc);

@@ -115,6 +115,91 @@ TEST(Renderer, CoverageAndDepthMatchTheGeometry) {
     for (float d : depth) ASSERT_NEAR(d, 10, 1e-4);
 }
 
+namespace {
+
+// A quad filling the orthographic window of `alpha_scene_settings`, at height z (nearer the camera for larger z).
+Mesh window_quad(float z) {
+    Mesh quad;
+    quad.positions = {{-2, -2, z}, {2, -2, z}, {2, 2, z}, {-2, 2, z}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    return quad;
+}
+
+// Unlit (albedo mode), orthographic down -z: each pixel's colour is exactly the composite of the albedos.
+RenderSettings alpha_scene_settings() {
+    RenderSettings settings;
+    settings.mode = RenderMode::albedo;
+    settings.camera.orthographic = true;
+    settings.camera.position = {0, 0, 10}, settings.camera.target = {0, 0, 0};
+    settings.camera.left = -1, settings.camera.right = 1, settings.camera.bottom = -1, settings.camera.top = 1;
+    return settings;
+}
+
+Surface flat_surface(const Eigen::Vector4f& color, AlphaMode mode) {
+    Surface surface;
+    surface.base_color = color;
+    surface.alpha_mode = mode;
+    return surface;
+}
+
+Eigen::Vector4f centre_pixel(const std::vector<Batch>& batches, int threads = 0) {
+    RenderSettings settings = alpha_scene_settings();
+    settings.threads = threads;
+    Frame frame = make_frame(8, 8, {0, 1, 0});
+    render(batches, settings, frame);
+    for (const Eigen::Vector4f& pixel : frame.color) EXPECT_EQ(pixel, frame.color[0]);  // uniform
+    return frame.color[27];
+}
+
+}  // namespace
+
+TEST(RendererAlpha, BlendIsSourceOverTheOpaqueSurfaceBehind) {
+    Mesh wall = window_quad(0), glass = window_quad(1);
+    std::vector<Batch> batches{{&glass, flat_surface({0, 0, 1, 0.25f}, AlphaMode::blend)},  // submitted first, drawn last
+                               {&wall, flat_surface({1, 0, 0, 1}, AlphaMode::opaque)}};
+    EXPECT_EQ(centre_pixel(batches), Eigen::Vector4f(0.75f, 0, 0.25f, 1));
+    // Over the green background alone: alpha is the coverage.
+    std::vector<Batch> glass_only{batches[0]};
+    EXPECT_EQ(centre_pixel(glass_only), Eigen::Vector4f(0, 0.75f, 0.25f, 0.25f));
+    // Behind the wall, the glass is hidden.
+    Mesh behind = window_quad(-1);
+    std::vector<Batch> hidden{{&behind, batches[0].surface}, batches[1]};
+    EXPECT_EQ(centre_pixel(hidden), Eigen::Vector4f(1, 0, 0, 1));
+}
+
+TEST(RendererAlpha, BlendedTrianglesCompositeBackToFrontWhateverTheirOrder) {
+    Mesh far = window_quad(0), near = window_quad(1);
+    Batch red{&far, flat_surface({1, 0, 0, 0.5f}, AlphaMode::blend)}, blue{&near, flat_surface({0, 0, 1, 0.5f}, AlphaMode::blend)};
+    // Blue over (red over green): 0.5 blue + 0.25 red + 0.25 green; coverage 0.75.
+    Eigen::Vector4f expected(0.25f, 0.25f, 0.5f, 0.75f);
+    EXPECT_EQ(centre_pixel({red, blue}), expected);
+    EXPECT_EQ(centre_pixel({blue, red}), expected);
+    for (int threads : {1, 2, 3}) EXPECT_EQ(centre_pixel({blue, red}, threads), expected) << threads << " threads";
+}
+
+TEST(RendererAlpha, MaskDropsFragmentsBelowTheCutoffAndOpaqueIgnoresAlpha) {
+    Mesh wall = window_quad(0), front = window_quad(1);
+    Batch background{&wall, flat_surface({1, 0, 0, 1}, AlphaMode::opaque)};
+    Batch masked{&front, flat_surface({0, 0, 1, 0.3f}, AlphaMode::mask)};
+    masked.surface.alpha_cutoff = 0.25f;
+    EXPECT_EQ(centre_pixel({background, masked}), Eigen::Vector4f(0, 0, 1, 1));  // 0.3 >= 0.25: drawn
+    masked.surface.alpha_cutoff = 0.5f;
+    EXPECT_EQ(centre_pixel({background, masked}), Eigen::Vector4f(1, 0, 0, 1));  // 0.3 < 0.5: dropped
+    masked.surface.alpha_mode = AlphaMode::opaque;
+    EXPECT_EQ(centre_pixel({background, masked}), Eigen::Vector4f(0, 0, 1, 1));
+}
+
+TEST(RendererAlpha, GlassLeavesTheNearestDepthAndNormal) {
+    Mesh wall = window_quad(0), glass = window_quad(1);
+    std::vector<Batch> batches{{&wall, flat_surface({1, 0, 0, 1}, AlphaMode::opaque)},
+                               {&glass, flat_surface({0, 0, 1, 0.25f}, AlphaMode::blend)}};
+    Frame opaque_only = make_frame(8, 8, {0, 0, 0}), both = opaque_only;
+    render({batches[0]}, alpha_scene_settings(), opaque_only);
+    render(batches, alpha_scene_settings(), both);
+    EXPECT_LT(both.depth[27], opaque_only.depth[27]);  // the glass is nearer
+    EXPECT_EQ(both.normal[27], Eigen::Vector3f(0, 0, 1));
+}
+
 TEST(ExrIo, WritesAReadableFileAtomically) {
     auto folder = test::scratch_folder("exr");
     auto scene = test::make_render_scene();

@@ -167,6 +167,7 @@ Model import_with_assimp(const std::string& path) {
             material.base_color = {color.r, color.g, color.b, color.a};
         float opacity;
         if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
+        if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
         aiColor3D specular;
         if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) material.specular_color = {specular.r, specular.g, specular.b};
         float shininess;

@@ -94,11 +94,15 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
     float n = camera.near_plane, f = camera.far_plane;
     for (std::size_t i = 0; i < frame.color.size(); ++i) {
         std::uint8_t* normal = &baked.normal.pixels[i * 3];
-        if (frame.color[i].w() == 0) {
+        // A texel is covered where the model is at least half opaque (the faces'
+        // MASK cut-off); glass over nothing stays see-through. The frame holds
+        // colour composited over black: divide by coverage to get the albedo.
+        float coverage = frame.color[i].w();
+        if (coverage < 0.5f) {
             normal[0] = 128, normal[1] = 128, normal[2] = 255;  // (0, 0, 1)
             continue;
         }
-        for (int c = 0; c < 3; ++c) baked.color.pixels[i * 4 + c] = linear_to_srgb(frame.color[i][c]);
+        for (int c = 0; c < 3; ++c) baked.color.pixels[i * 4 + c] = linear_to_srgb(frame.color[i][c] / coverage);
         baked.color.pixels[i * 4 + 3] = 255;
         const Eigen::Vector3f& w = frame.normal[i];
         Eigen::Vector3f t(w.dot(face.tangent), w.dot(face.bitangent), w.dot(face.normal));

@@ -133,7 +133,8 @@ Surface material_surface(const Material& material, const DecodedTextures& textur
     surface.height = texture(textures.linear, material.height_texture);
     surface.specular = material.specular_color;
     surface.shininess = material.shininess;
-    surface.alpha_cutout = material.alpha_cutout;
+    surface.alpha_mode = material.alpha_mode;
+    surface.alpha_cutoff = material.alpha_cutoff;
     return surface;
 }
 

@@ -11,6 +11,10 @@
 #include <tiny_gltf.h>
 
 #include <filesystem>
+#include <algorithm>
+#include <map>
+#include <set>
+#include <unordered_map>
 #include <sstream>
 #include <stdexcept>
 
@@ -31,6 +35,22 @@ struct Writer {
         std::vector<unsigned char> bytes;
         std::vector<int> views;  // their byteOffset is relative to this stream until finish()
     };
+    // Where the model being added lands: its texture i is glTF texture textures[i],
+    // its material i glTF material materials[i], its node 0 node_offset.
+    std::vector<int> textures, materials;
+    int node_offset = 0;
+    // A chain's levels share what is equal: textures by content, materials, and
+    // the meshes of the parts a level keeps (its nodes stay its own).
+    bool share = false;
+    std::map<TextureDigest, int> texture_of;
+    struct WrittenMesh {
+        const Node* node;            // whose primitives it holds
+        std::vector<int> materials;  // their glTF materials
+        int mesh;
+    };
+    std::unordered_multimap<std::uint64_t, WrittenMesh> meshes;
+    std::set<std::string> image_files;        // .gltf: the PNG names taken
+
     Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}}, vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
         vec4{TINYGLTF_TARGET_ARRAY_BUFFER, 16, true, {}, {}},
         indices{TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0, true, {}, {}}, blobs{0, 0, false, {}, {}};
@@ -113,15 +133,27 @@ struct Writer {
 // The textures as PNG images: in the .glb's buffer, or as files beside a .gltf
 // (named after the texture where that makes a plain .png name).
 void add_images(Writer& w, const Model& model, const fs::path& target, bool binary, int threads) {
-    // PNG encoding dominates an LoD export: encode the textures in parallel, store them in order.
-    std::vector<std::vector<std::uint8_t>> encoded(model.textures.size());
-    parallel_for(model.textures.size(), threads, [&](std::size_t i) {
-        const Texture& texture = model.textures[i];
-        encoded[i] = texture.image16.empty() ? encode_png(texture.image) : encode_png16(texture.image16);
-    });
+    // A texture equal to one already written (a chain's levels share the original's) is referred to, not stored again.
+    w.textures.assign(model.textures.size(), -1);
+    std::vector<std::size_t> fresh;
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
-        const Texture& texture = model.textures[i];
-        const std::vector<std::uint8_t>& png = encoded[i];
+        int next = int(w.gltf.textures.size() + fresh.size());
+        // (Digests only for chains: a single model's textures are distinct, and hashing pages costs.)
+        auto [at, added] = w.share ? w.texture_of.try_emplace(texture_digest(model.textures[i]), next)
+                                            : std::pair{w.texture_of.end(), true};
+        w.textures[i] = added ? next : at->second;
+        if (added) fresh.push_back(i);
+    }
+    // PNG encoding dominates an LoD export: encode the textures in parallel, store them in order.
+    std::vector<std::vector<std::uint8_t>> encoded(fresh.size());
+    parallel_for(fresh.size(), threads, [&](std::size_t k) {
+        const Texture& texture = model.textures[fresh[k]];
+        encoded[k] = texture.image16.empty() ? encode_png(texture.image) : encode_png16(texture.image16);
+    });
+    for (std::size_t k = 0; k < fresh.size(); ++k) {
+        const Texture& texture = model.textures[fresh[k]];
+        const std::vector<std::uint8_t>& png = encoded[k];
+        const int index = int(w.gltf.images.size());
         tinygltf::Image image;
         image.name = texture.name;
         image.mimeType = "image/png";
@@ -129,14 +161,16 @@ void add_images(Writer& w, const Model& model, const fs::path& target, bool bina
             image.bufferView = w.add_image(png);
         } else {
             std::string name = fs::path(texture.name).filename().string();
-            if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos)
-                name = target.stem().string() + "_texture_" + std::to_string(i) + ".png";
+            if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos ||
+                w.image_files.count(name))
+                name = target.stem().string() + "_texture_" + std::to_string(index) + ".png";
+            w.image_files.insert(name);
             image.uri = name;
             write_file_atomically((target.parent_path() / name).string(), png);
         }
         w.gltf.images.push_back(image);
         tinygltf::Texture gltf_texture;
-        gltf_texture.source = int(i);
+        gltf_texture.source = index;
         if (texture.wrap == Wrap::clamp) {
             if (w.gltf.samplers.empty()) {
                 tinygltf::Sampler clamp;
@@ -152,42 +186,86 @@ void add_images(Writer& w, const Model& model, const fs::path& target, bool bina
 }
 
 void add_materials(Writer& w, const Model& model) {
+    w.materials.clear();
     for (const Material& material : model.materials) {
         tinygltf::Material out;
         out.name = material.name;
         out.pbrMetallicRoughness.baseColorFactor.clear();
         for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
-        out.pbrMetallicRoughness.baseColorTexture.index = material.base_color_texture;
+        auto texture = [&](int index) { return index < 0 ? -1 : w.textures[std::size_t(index)]; };
+        out.pbrMetallicRoughness.baseColorTexture.index = texture(material.base_color_texture);
         out.pbrMetallicRoughness.metallicFactor = 0;
         out.pbrMetallicRoughness.roughnessFactor = 1;
-        out.normalTexture.index = material.normal_texture;
+        out.normalTexture.index = texture(material.normal_texture);
         out.doubleSided = material.double_sided;
-        if (material.alpha_cutout) out.alphaMode = "MASK";  // cutoff 0.5, the glTF default
-        out.extras = material_extras(material);
-        w.gltf.materials.push_back(out);
+        out.alphaMode = enum_name(alpha_modes(), material.alpha_mode);
+        if (material.alpha_mode == AlphaMode::mask) out.alphaCutoff = json_number(material.alpha_cutoff);
+        out.extras = material_extras(material, texture(material.height_texture));
+        auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
+        w.materials.push_back(int(equal - w.gltf.materials.begin()));
+        if (equal == w.gltf.materials.end()) w.gltf.materials.push_back(out);
     }
 }
 
-// The nodes in the model's order (the root first), each with its own mesh.
+// FNV-1a over a node's positions and indices: finds candidates for sharing.
+std::uint64_t geometry_hash(const Node& node) {
+    std::uint64_t h = 14695981039346656037ull;
+    auto mix = [&](const void* data, std::size_t bytes) {
+        for (std::size_t i = 0; i < bytes; ++i) h = (h ^ static_cast<const std::uint8_t*>(data)[i]) * 1099511628211ull;
+    };
+    for (const Primitive& p : node.primitives) {
+        mix(p.positions.data(), p.positions.size() * sizeof(p.positions[0]));
+        mix(p.indices.data(), p.indices.size() * sizeof(p.indices[0]));
+    }
+    return h;
+}
+
+bool same_primitives(const Node& a, const Node& b) {
+    if (a.primitives.size() != b.primitives.size()) return false;
+    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+        const Primitive &x = a.primitives[i], &y = b.primitives[i];
+        if (x.positions != y.positions || x.normals != y.normals || x.uvs != y.uvs || x.tangents != y.tangents ||
+            x.indices != y.indices || x.polygon_count != y.polygon_count)
+            return false;
+    }
+    return true;
+}
+
+// A mesh already written with the same primitives and glTF materials, or -1.
+int written_mesh(const Writer& w, const Node& node, std::uint64_t hash, const std::vector<int>& materials) {
+    auto [begin, end] = w.meshes.equal_range(hash);
+    for (auto it = begin; it != end; ++it)
+        if (it->second.materials == materials && same_primitives(*it->second.node, node)) return it->second.mesh;
+    return -1;
+}
+
+// The nodes in the model's order (the root first), each with its mesh.
 void add_nodes(Writer& w, const Model& model) {
     // tinygltf's types copy (not move) when a vector grows: reserve everything up front.
     std::size_t meshes = 0, primitives = 0;
     for (const Node& node : model.nodes) meshes += node.has_geometry(), primitives += node.primitives.size();
-    w.gltf.nodes.reserve(model.nodes.size());
-    w.gltf.meshes.reserve(meshes);
-    w.gltf.accessors.reserve(primitives * 5);
+    w.gltf.nodes.reserve(w.gltf.nodes.size() + model.nodes.size());
+    w.gltf.meshes.reserve(w.gltf.meshes.size() + meshes);
+    w.gltf.accessors.reserve(w.gltf.accessors.size() + primitives * 5);
     for (const Node& node : model.nodes) {
         tinygltf::Node out;
         out.name = node.name;
-        out.children = node.children;
+        for (int child : node.children) out.children.push_back(child + w.node_offset);
         out.extras = node_extras(node);
-        if (node.has_geometry()) {
+        std::vector<int> materials;
+        for (const Primitive& primitive : node.primitives)
+            materials.push_back(primitive.material < 0 ? -1 : w.materials[std::size_t(primitive.material)]);
+        const std::uint64_t hash = w.share && node.has_geometry() ? geometry_hash(node) : 0;
+        const int shared = w.share && node.has_geometry() ? written_mesh(w, node, hash, materials) : -1;
+        if (shared >= 0) {
+            out.mesh = shared;
+        } else if (node.has_geometry()) {
             tinygltf::Mesh mesh;
             mesh.name = node.name;
             for (const Primitive& primitive : node.primitives) {
                 tinygltf::Primitive p;
                 p.mode = TINYGLTF_MODE_TRIANGLES;
-                p.material = primitive.material;
+                p.material = materials[mesh.primitives.size()];
                 p.attributes["POSITION"] = w.add_accessor(primitive.positions, TINYGLTF_TYPE_VEC3, true);
                 if (!primitive.normals.empty()) p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
                 if (!primitive.uvs.empty()) p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
@@ -198,29 +276,59 @@ void add_nodes(Writer& w, const Model& model) {
             }
             w.gltf.meshes.push_back(std::move(mesh));
             out.mesh = int(w.gltf.meshes.size()) - 1;
+            if (w.share) w.meshes.emplace(hash, Writer::WrittenMesh{&node, materials, out.mesh});
         }
         w.gltf.nodes.push_back(std::move(out));
     }
+}
+
+// The finest level's root is the scene; the others hang off its MSFT_lod
+// extension, coarsest last, with switch hints in extras.MSFT_screencoverage
+// (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod).
+void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<double>& screen_coverage) {
     tinygltf::Scene scene;
-    scene.nodes = {0};
+    scene.nodes = {roots[0]};
     w.gltf.scenes.push_back(scene);
     w.gltf.defaultScene = 0;
+    if (roots.size() < 2) return;
+    tinygltf::Node& finest = w.gltf.nodes[std::size_t(roots[0])];
+    tinygltf::Value::Array ids, coverage;
+    for (std::size_t k = 1; k < roots.size(); ++k) ids.emplace_back(roots[k]);
+    for (double c : screen_coverage) coverage.emplace_back(json_number(c));
+    finest.extensions["MSFT_lod"] = tinygltf::Value(tinygltf::Value::Object{{"ids", tinygltf::Value(ids)}});
+    tinygltf::Value::Object extras = finest.extras.IsObject() ? finest.extras.Get<tinygltf::Value::Object>() : tinygltf::Value::Object{};
+    extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
+    finest.extras = tinygltf::Value(extras);
+    w.gltf.extensionsUsed.push_back("MSFT_lod");
 }
 
 }  // namespace
 
-void export_gltf(const Model& model, const std::string& path, int threads) {
-    validate_model(model);  // nothing is written that boxlod would refuse to read (NaN, no triangles, ...)
+void export_gltf(const Model& model, const std::string& path, int threads) { export_gltf_lods({&model}, {}, path, threads); }
+
+void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<double>& screen_coverage,
+                      const std::string& path, int threads) {
+    if (levels.empty() || (levels.size() > 1 && screen_coverage.size() != levels.size()))
+        throw std::logic_error("export_gltf_lods: one screen coverage per level");
+    // Nothing is written that boxlod would refuse to read (NaN, no triangles, ...).
+    for (const Model* model : levels) validate_model(*model);
     OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
     fs::path target(path);
     bool binary = target.extension() == ".glb";
     Writer w;
     w.gltf.asset.version = "2.0";
     w.gltf.asset.generator = "boxlod";
-    w.gltf.asset.extras = asset_extras(model);
-    add_images(w, model, target, binary, threads);
-    add_materials(w, model);
-    add_nodes(w, model);
+    w.gltf.asset.extras = asset_extras(*levels[0]);
+    w.share = levels.size() > 1;
+    std::vector<int> roots;
+    for (const Model* model : levels) {
+        w.node_offset = int(w.gltf.nodes.size());
+        roots.push_back(w.node_offset);
+        add_images(w, *model, target, binary, threads);
+        add_materials(w, *model);
+        add_nodes(w, *model);
+    }
+    add_scene(w, roots, screen_coverage);
 
     const std::vector<unsigned char>& data = w.finish();
     tinygltf::TinyGLTF writer;

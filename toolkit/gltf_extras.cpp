@@ -69,11 +69,11 @@ tinygltf::Value asset_extras(const Model& model) {
     return boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
 }
 
-tinygltf::Value material_extras(const Material& material) {
+tinygltf::Value material_extras(const Material& material, int height_image) {
     tinygltf::Value::Object extras{{"specular", number_array(material.specular_color.data(), 3)},
                                    {"shininess", tinygltf::Value(json_number(material.shininess))}};
     // glTF has no height-map slot; the image index travels in extras.
-    if (material.height_texture >= 0) extras["height_texture"] = tinygltf::Value(material.height_texture);
+    if (height_image >= 0) extras["height_texture"] = tinygltf::Value(height_image);
     return boxlod_object(std::move(extras));
 }
 

@@ -18,7 +18,7 @@ namespace boxlod {
 double json_number(float value);
 
 tinygltf::Value asset_extras(const Model& model);
-tinygltf::Value material_extras(const Material& material);
+tinygltf::Value material_extras(const Material& material, int height_image);  // height_image < 0: none
 tinygltf::Value node_extras(const Node& node);
 tinygltf::Value primitive_extras(const Primitive& primitive);
 

@@ -304,7 +304,11 @@ void read_materials(const Reader& reader, Model& model) {
         material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, place);
         material.normal_texture = texture_image(reader, in.normalTexture.index, place);
         material.double_sided = in.doubleSided;
-        material.alpha_cutout = in.alphaMode == "MASK";
+        if (!parse_enum(alpha_modes(), in.alphaMode, material.alpha_mode))
+            reader.fail(place, "alphaMode '" + in.alphaMode + "' is not " + enum_names(alpha_modes(), ", ", " or "));
+        if (!alpha_cutoff_range.contains(in.alphaCutoff))
+            reader.fail(place, "alphaCutoff " + out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
+        material.alpha_cutoff = float(in.alphaCutoff);
         read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
         model.materials.push_back(material);
     }
@@ -334,9 +338,19 @@ std::vector<int> scene_roots(const Reader& reader) {
 // with an explicit stack so that a deep chain cannot overflow.
 void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
+    // Meshes used by more than one node of the scene are instances (the nodes
+    // a file keeps outside it, such as MSFT_lod's coarser levels, do not count).
     std::vector<int> mesh_users(gltf.meshes.size(), 0);
-    for (const auto& node : gltf.nodes)
-        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[node.mesh];
+    std::vector<char> reached(gltf.nodes.size(), 0);
+    for (std::vector<int> todo = roots; !todo.empty();) {
+        int n = todo.back();
+        todo.pop_back();
+        if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;
+        reached[std::size_t(n)] = 1;
+        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
+        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
+        todo.insert(todo.end(), node.children.begin(), node.children.end());
+    }
     struct Visit { int gltf_node; int parent; Eigen::Matrix4d parent_world; };
     std::vector<Visit> stack;
     if (roots.size() > 1) add_node(model, -1, fs::path(reader.file).stem().string());

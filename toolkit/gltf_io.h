@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace boxlod {
 
@@ -17,5 +18,13 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
 // chosen by the extension; every file atomically. Geometry is stored in
 // world space, so exported nodes have no transforms.
 void export_gltf(const Model& model, const std::string& path, int threads = 0);
+
+// Several levels of detail in one file, finest first: only levels[0] is in the
+// scene (what a client without the extension draws); its root's MSFT_lod
+// extension lists the others' roots and extras.MSFT_screencoverage holds
+// `screen_coverage`, one value per level: level k is drawn while the model
+// covers at least screen_coverage[k] of the screen. Equal textures are stored once.
+void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<double>& screen_coverage,
+                      const std::string& path, int threads = 0);
 
 }  // namespace boxlod

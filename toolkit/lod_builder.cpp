@@ -191,7 +191,7 @@ void add_pages(Model& out, const Atlas& atlas, bool textured) {
         material.base_color_texture = textures.color;
         material.normal_texture = textures.normal;
         material.height_texture = textures.height;
-        material.alpha_cutout = true;
+        material.alpha_mode = AlphaMode::mask;
         out.materials.push_back(material);
     }
 }

@@ -23,6 +23,12 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
     return frame_to_srgb8(frame);
 }
 
+void name_pages(Lod& lod, const std::string& name) {
+    for (int page = 0; page < int(lod.atlas.pages.size()); ++page)
+        for (int texture : {lod_page(page).color, lod_page(page).normal, lod_page(page).height})
+            lod.model.textures[std::size_t(texture)].name = name + "_" + lod.model.textures[std::size_t(texture)].name;
+}
+
 void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
                 const Image8& preview, int threads) {
     namespace fs = std::filesystem;
@@ -33,10 +39,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     // until the commit renames them, so even SIGKILL leaves no half level.
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
-    Model& model = lod.model;
-    for (int page = 0; page < int(lod.atlas.pages.size()); ++page)  // NAME_color_K.png, ...
-        for (int texture : {lod_page(page).color, lod_page(page).normal, lod_page(page).height})
-            model.textures[std::size_t(texture)].name = name + "_" + model.textures[std::size_t(texture)].name;
+    name_pages(lod, name);
     LodParameters parameters = session.parameters;
     parameters.current_level = lod.current_level;
     // The parameter file names its model relative to itself, so the folder can move.
@@ -45,7 +48,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     save_parameters(file(".params.txt"), parameters);
     write_png(file(".preview.png"), preview);
     write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
-    export_gltf(model, file(".gltf"), threads);
+    export_gltf(lod.model, file(".gltf"), threads);
     files.commit();
 }
 

@@ -11,6 +11,9 @@ namespace boxlod {
 // A render of the LoD with the session's camera, light and render mode.
 Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads);
 
+// Renames the LoD's page textures NAME_color_K.png, NAME_normal_K.png, ...
+void name_pages(Lod& lod, const std::string& name);
+
 // `lod` by value: its page textures are renamed NAME_color_K.png ... in place;
 // move it in when it is not needed afterwards (the pages are large).
 void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,

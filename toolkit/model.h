@@ -3,6 +3,7 @@
 // the rule that made it.
 #pragma once
 #include "renderer/image.h"
+#include "renderer/renderer.h"
 #include "renderer/texture.h"
 
 #include <Eigen/Core>
@@ -46,7 +47,8 @@ struct Material {
     Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};
     float shininess = 32;
     bool double_sided = false;
-    bool alpha_cutout = false;  // glTF alphaMode MASK: baked box faces are cut out where uncovered
+    AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
+    float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK
 };
 
 // A triangle list with one material. `polygon_count` is how many polygons the

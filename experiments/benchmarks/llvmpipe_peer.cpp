@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 #include <GL/osmesa.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -63,7 +64,7 @@ void main() {
     vec3 h = normalize(l + v);
     float d = max(0.0, dot(n, l));
     float s = d > 0.0 ? pow(max(0.0, dot(n, h)), shininess) : 0.0;
-    gl_FragColor = vec4(base_color.rgb * (ambient + diffuse * d) + specular_color * (specular * s), 1.0);
+    gl_FragColor = vec4(base_color.rgb * (ambient + diffuse * d) + specular_color * (specular * s), base_color.a);
 })";
 
 // boxlod's normal mode (renderer/shading.cpp: MappedShader, blinn_phong).
@@ -101,7 +102,7 @@ void main() {
     vec3 h = normalize(l + v);
     float d = max(0.0, dot(n, l));
     float s = d > 0.0 ? pow(max(0.0, dot(n, h)), shininess) : 0.0;
-    gl_FragColor = vec4(albedo.rgb * (ambient + diffuse * d) + specular_color * (specular * s), 1.0);
+    gl_FragColor = vec4(albedo.rgb * (ambient + diffuse * d) + specular_color * (specular * s), albedo.a);
 })";
 
 GLuint compile(GLenum type, const char* source) {
@@ -205,6 +206,10 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& bat
         }
         s.draws.push_back(draw);
     }
+    // As boxlod: blended surfaces after the opaque ones (renderer/renderer.cpp: composite_blended).
+    std::stable_partition(s.draws.begin(), s.draws.end(),
+                          [](const State::Draw& d) { return d.surface.alpha_mode != AlphaMode::blend; });
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -218,9 +223,13 @@ LlvmpipePeer::~LlvmpipePeer() {
 
 void LlvmpipePeer::draw() {
     State& s = *state_;
+    glDepthMask(GL_TRUE);  // glClear honours the depth mask a blended draw left off
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (const State::Draw& d : s.draws) {
-        const GLuint program = s.programs[d.uvs ? (d.surface.alpha_cutout ? 2 : 1) : 0];
+        const GLuint program = s.programs[d.uvs ? (d.surface.alpha_mode == AlphaMode::mask ? 2 : 1) : 0];
+        const bool blend = d.surface.alpha_mode == AlphaMode::blend;
+        (blend ? glEnable : glDisable)(GL_BLEND);
+        glDepthMask(blend ? GL_FALSE : GL_TRUE);
         glUseProgram(program);
         glUniform4fv(glGetUniformLocation(program, "base_color"), 1, d.surface.base_color.data());
         glUniform3fv(glGetUniformLocation(program, "specular_color"), 1, d.surface.specular.data());

@@ -6,7 +6,9 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/cost.h"
+#include "toolkit/gltf_io.h"
 #include "toolkit/lod_export.h"
+#include "toolkit/lod_switch.h"
 #include "toolkit/model_io.h"
 #include "toolkit/parameters.h"
 
@@ -64,6 +66,112 @@ KeyValues chain_report(const std::string& name, const std::vector<CostParts>& le
     return report;
 }
 
+// One session per sizing distance (a session bakes for one distance); boxes
+// and level values are computed once, by the first.
+struct Sessions {
+    const Model& model;
+    int threads;
+    std::unique_ptr<LodSession> first;
+    std::vector<float> distances;  // of levels 1..N; empty: all at the parameters' distance
+    std::map<float, std::unique_ptr<LodSession>> sized;
+
+    LodSession& for_level(int level) {
+        if (distances.empty() || level == 0) return *first;
+        std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
+        if (!session) {
+            LodParameters p = first->parameters;
+            p.distance = distances[std::size_t(level - 1)];
+            session = start_lod(model, p, threads, &first->boxes);
+        }
+        return *session;
+    }
+    LodTimes times() const {
+        LodTimes t = first->times;
+        for (const auto& [distance, session] : sized) {
+            t.bake += session->times.bake, t.pack += session->times.pack;
+            t.mesh += session->times.mesh, t.write += session->times.write;
+        }
+        return t;
+    }
+};
+
+// The switch into level c >= 1 in engines' terms (toolkit/lod_switch.h).
+KeyValues switch_entries(const LodSwitch& s) {
+    return {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
+            number_entry("unity_relative_height", s.unity_relative_height),
+            number_entry("unreal_screen_size", s.unreal_screen_size)};
+}
+
+// Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
+void write_chain(const Arguments& a, Sessions& sessions, const std::vector<int>& levels, std::vector<CostParts>& chain,
+                 int& finest_textured) {
+    const std::string output = a.text("output");
+    const std::string stem = std::filesystem::path(output).stem().string();
+    const Bounds bounds = model_bounds(sessions.model);
+    std::vector<Model> models;
+    std::vector<double> coverage;
+    for (int level : levels) {
+        LodSession& session = sessions.for_level(level);
+        Lod lod = build_lod(session, level, sessions.threads);
+        if (level >= 1) chain.push_back(lod.cost);
+        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
+        name_pages(lod, stem + "_L" + std::to_string(level));
+        KeyValues report{text_entry("name", stem + "_L" + std::to_string(level)),
+                         float_entry("sizing_distance", session.parameters.distance)};
+        if (level >= 1) {
+            LodSwitch at = lod_switch(session.parameters.distance, bounds, session.sizing);
+            KeyValues entries = switch_entries(at);
+            report.insert(report.end(), entries.begin(), entries.end());
+            coverage.push_back(at.screen_coverage);
+        }
+        report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+        std::fprintf(stderr, "boxlod build: level %d of %zu\n", level, levels.size() - 1);
+        std::fputs((format_key_values(report) + "\n").c_str(), stdout);
+        models.push_back(std::move(lod.model));
+    }
+    coverage.push_back(0);  // the coarsest level is drawn however small: culling is the engine's call
+    std::vector<const Model*> pointers;
+    for (const Model& model : models) pointers.push_back(&model);
+    auto start = Clock::now();
+    export_gltf_lods(pointers, coverage, output, sessions.threads);
+    sessions.first->times.write += seconds_since(start);
+    std::printf("chain = %s\n", output.c_str());
+}
+
+// Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
+// partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
+// their bytes and the order of the output stay the same.
+void write_levels(const Arguments& a, Sessions& sessions, const std::string& name, const std::vector<int>& levels,
+                  std::vector<CostParts>& chain, int& finest_textured) {
+    int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
+    const Bounds bounds = model_bounds(sessions.model);
+    std::future<void> writing;
+    for (int level : levels) {
+        LodSession* session = &sessions.for_level(level);
+        Lod lod = build_lod(*session, level, sessions.threads);
+        if (level >= 1) chain.push_back(lod.cost);
+        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
+        if (writing.valid()) writing.get();
+        writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
+            std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
+            auto start = Clock::now();
+            Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, sessions.threads);
+            KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
+            if (!sessions.distances.empty() && level >= 1) {
+                KeyValues at = switch_entries(lod_switch(session->parameters.distance, bounds, session->sizing));
+                report.insert(report.end(), at.begin(), at.end());
+            }
+            report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads);
+            session->times.write += seconds_since(start);  // build_lod touches the other times only
+            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.first->levels.obtained_levels,
+                         level_name.c_str());
+            std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
+        });
+    }
+    writing.get();
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
@@ -72,68 +180,41 @@ int run_build(const Arguments& a) {
         std::printf("params = %s\n", a.text("save-params").c_str());
         return 0;
     }
-    if (!a.has("output")) throw InputError("boxlod build: -o/--output OUTDIR is required");
-    check_output_directory(a.text("output"));
-    int threads = a.integer("threads", 0);
-    int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
+    const bool chain_file = a.has("chain");
+    if (!a.has("output")) throw InputError("boxlod build: -o/--output " + std::string(chain_file ? "OUT.glb" : "OUTDIR") + " is required");
+    if (chain_file) {
+        std::string extension = std::filesystem::path(a.text("output")).extension().string();
+        if (extension != ".glb" && extension != ".gltf")
+            throw InputError("--chain: -o '" + a.text("output") + "' must name a .glb or .gltf file");
+        check_output_file(a.text("output"));
+    } else {
+        check_output_directory(a.text("output"));
+    }
     Model model = load_model(parameters.model);
     std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
     if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos)
         throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
-    if (a.has("level-distances") && !a.has("all-levels")) throw InputError("--level-distances needs --all-levels");
-    auto first = start_lod(model, parameters, threads);
-    int obtained = first->levels.obtained_levels;
+    const bool all_levels = a.has("all-levels") || chain_file;
+    if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
+    int threads = a.integer("threads", 0);
+    Sessions sessions{model, threads, start_lod(model, parameters, threads), {}, {}};
+    int obtained = sessions.first->levels.obtained_levels;
     std::vector<int> levels;
-    if (a.has("all-levels"))
+    if (all_levels)
         for (int c = 0; c <= obtained; ++c) levels.push_back(c);
     else
         levels.push_back(parameters.current_level);
-    // One session per sizing distance (a session bakes for one distance); boxes and level values computed once.
-    std::vector<float> distances;
-    if (a.has("level-distances")) distances = level_distances(a.text("level-distances"), first->parameters.distance, obtained);
-    std::map<float, std::unique_ptr<LodSession>> sessions;
-    auto session_for = [&](int level) -> LodSession& {
-        if (distances.empty() || level == 0) return *first;
-        std::unique_ptr<LodSession>& session = sessions[distances[std::size_t(level - 1)]];
-        if (!session) {
-            LodParameters sized = first->parameters;
-            sized.distance = distances[std::size_t(level - 1)];
-            session = start_lod(model, sized, threads, &first->boxes);
-        }
-        return *session;
-    };
+    if (a.has("level-distances") || chain_file)
+        sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->parameters.distance, obtained);
     std::vector<CostParts> chain;  // levels 1..N, for the chain's cost
     int finest_textured = -1;
-    // Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
-    // partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
-    // their bytes and the order of the output stay the same.
-    std::future<void> writing;
-    for (int level : levels) {
-        LodSession* session = &session_for(level);
-        Lod lod = build_lod(*session, level, threads);
-        if (level >= 1) chain.push_back(lod.cost);
-        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
-        if (writing.valid()) writing.get();
-        writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
-            std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
-            auto start = Clock::now();
-            Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, threads);
-            KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
-            report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
-            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, threads);
-            session->times.write += seconds_since(start);  // build_lod touches the other times only
-            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, obtained, level_name.c_str());
-            std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
-        });
-    }
-    writing.get();
+    if (chain_file)
+        write_chain(a, sessions, levels, chain, finest_textured);
+    else
+        write_levels(a, sessions, name, levels, chain, finest_textured);
     if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain, finest_textured)).c_str(), stdout);
     if (a.has("timings")) {
-        LodTimes t = first->times;
-        for (const auto& [distance, session] : sessions) {
-            t.bake += session->times.bake, t.pack += session->times.pack;
-            t.mesh += session->times.mesh, t.write += session->times.write;
-        }
+        LodTimes t = sessions.times();
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
                         number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
                         number_entry("time_mesh", t.mesh), number_entry("time_write", t.write)};
@@ -153,8 +234,11 @@ Subcommand build_subcommand() {
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
+                 {"chain", "",
+                  "write every level 0..N into one file, -o OUT.glb or OUT.gltf: glTF's MSFT_lod, switch hints in "
+                  "extras.MSFT_screencoverage, shared textures stored once; levels sized by --level-distances (default auto)"},
                  {"level-distances", "auto|D1,...,DN",
-                  "with --all-levels: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
+                  "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
                   "the sizing distance x 2^(c-1), so each level is as sharp as the screen where it is used"},
                  {"preview-width", "W", "preview image width (default 1024)", image_side_range},
                  {"preview-height", "H", "preview image height (default 768)", image_side_range},

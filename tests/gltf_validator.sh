@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# A real client on every kind of file boxlod writes: the Khronos glTF-Validator
+# (npm gltf-validator, pinned), installed into a cache folder on first use.
+# Each file must have 0 errors and 0 warnings (infos and hints are allowed).
+# Usage: gltf_validator.sh BOXLOD
+set -euo pipefail
+boxlod=$1
+here=$(cd "$(dirname "$0")" && pwd)
+version=2.0.0-dev.3.10
+cache=${BOXLOD_NPM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/boxlod/npm}/gltf-validator-$version
+if [ ! -f "$cache/node_modules/gltf-validator/index.js" ]; then
+  mkdir -p "$cache"
+  if ! npm install --prefix "$cache" --no-audit --no-fund --loglevel=error "gltf-validator@$version" >&2; then
+    echo "gltf_validator: cannot install gltf-validator@$version from the npm registry" >&2
+    exit 1
+  fi
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fzk=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
+quiet() { "$@" > /dev/null 2>&1 || { echo "gltf_validator: failed: $*" >&2; exit 1; }; }
+
+quiet "$boxlod" generate --sample house -o "$work/house.glb"                # generate
+quiet "$boxlod" generate --sample manual -o "$work/manual.gltf"
+quiet "$boxlod" generate --city 4 -o "$work/city.glb"
+quiet "$boxlod" convert "$fzk" -o "$work/fzk.glb"                           # convert: IFC (its glass blended), glTF
+quiet "$boxlod" convert "$fzk" -o "$work/fzk.gltf"
+quiet "$boxlod" convert "$work/house.glb" -o "$work/house_converted.gltf"
+quiet "$boxlod" build "$work/house.glb" -o "$work/level" --level 3 --resolution 256   # one level
+quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
+mkdir "$work/chain"
+quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)
+quiet "$boxlod" build "$fzk" --chain -o "$work/fzk_chain.glb" --resolution 256
+
+cd "$work"
+node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" house.glb manual.gltf city.glb fzk.glb fzk.gltf \
+  house_converted.gltf level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb
+# And the validator does fail: a node naming a mesh that does not exist.
+echo '{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 5}]}' > broken.gltf
+if node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" broken.gltf > /dev/null; then
+  echo "gltf_validator: the validator passed a broken file" >&2
+  exit 1
+fi
