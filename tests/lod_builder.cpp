@@ -136,6 +136,10 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     for (int page_texture = 0; page_texture < 3; ++page_texture)  // pages are sampled clamped to their edge
         EXPECT_EQ(back.textures[std::size_t(page_texture)].wrap, Wrap::clamp) << page_texture;
     EXPECT_EQ(texture_digest(back.textures[0]), texture_digest(lod.model.textures[0]));
+    // Page materials come first: cut out where uncovered, both sides drawn, as boxlod measures them.
+    EXPECT_EQ(back.materials[0].alpha_mode, AlphaMode::mask);
+    EXPECT_EQ(back.materials[0].alpha_cutoff, 0.5f);
+    EXPECT_TRUE(back.materials[0].double_sided);
     EXPECT_THROW(start_lod(back, small_parameters(), 1), InputError);
     LodParameters saved = load_parameters((folder / "house.params.txt").string());
     EXPECT_EQ(saved.current_level, 2);

@@ -192,6 +192,9 @@ void add_pages(Model& out, const Atlas& atlas, bool textured) {
         material.normal_texture = textures.normal;
         material.height_texture = textures.height;
         material.alpha_mode = AlphaMode::mask;
+        // boxlod measures with both sides drawn; through a face's cut-out texels one sees the
+        // inside of the box's far faces, so engines must draw both sides too (docs/design.md: Files).
+        material.double_sided = true;
         out.materials.push_back(material);
     }
 }

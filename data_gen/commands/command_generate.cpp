@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace boxlod {
 
@@ -56,6 +57,11 @@ int run_generate(const Arguments& arguments) {
         building.seed = std::uint64_t(seed);
         model = generate_building(grammar, building);
     }
+    // A .gltf's texture files are named after the model (house_brick_color.png beside house.gltf),
+    // so two models written into one folder never overwrite each other's.
+    const std::filesystem::path output = arguments.text("output");
+    if (output.extension() == ".gltf")
+        for (Texture& texture : model.textures) texture.name = output.stem().string() + "_" + texture.name;
     save_model(model, arguments.text("output"));
     for (KeyValue& entry : model_statistics(model)) report.push_back(std::move(entry));
     std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
