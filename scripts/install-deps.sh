@@ -27,8 +27,9 @@ bench_packages=(libosmesa6-dev)
 # make fuzz: libFuzzer and the sanitizers come with clang.
 fuzz_packages=(clang libclang-rt-14-dev)
 
-# The glTF-Validator test runs the Khronos validator (npm gltf-validator) under Node.js.
-data_packages+=(nodejs)
+# The glTF-Validator test runs the Khronos validator (npm gltf-validator) under
+# Node.js; the 3D Tiles test loads a city in CesiumJS in headless Chromium.
+data_packages+=(nodejs chromium)
 command -v npm > /dev/null 2>&1 || data_packages+=(npm)  # (a Node.js from elsewhere may bring its own npm)
 
 # The viewer's test runs it in a virtual X server.

@@ -180,6 +180,22 @@ names = [image['name'] for image in gltf['images']]
 assert names.count('brick_color.png') == 1 and len(names) == len(set(names)), names
 PY
 bad "a chain written to a .txt" build "$work/house.glb" --chain -o "$work/house_chain.txt"
+# A city as 3D Tiles: a tileset naming one glb per level of every object, the same bytes for any thread count.
+"$boxlod" generate --city 2 -o "$work/city2.glb" > /dev/null
+check "tiles succeeds" test "$(status_of "$boxlod" tiles "$work/city2.glb" -o "$work/tiles1" --resolution 128 --threads 1)" = 0
+check "tiles reports its objects" grep -qx "objects = 3" "$work/out"
+check "every tile's content is there" /usr/bin/python3 - "$work/tiles1" <<'PY'
+import json, os, sys
+tileset = json.load(open(os.path.join(sys.argv[1], 'tileset.json')))
+def contents(tile):
+    yield from ([tile['content']['uri']] if 'content' in tile else [])
+    for child in tile.get('children', []):
+        yield from contents(child)
+uris = list(contents(tileset['root']))
+assert len(uris) == len(set(uris)) > 3 and all(os.path.getsize(os.path.join(sys.argv[1], u)) > 0 for u in uris), uris
+assert sorted(uris) == sorted(f for f in os.listdir(sys.argv[1]) if f.endswith('.glb'))
+PY
+check "tiles gives the same bytes on two threads" bash -c "'$boxlod' tiles '$work/city2.glb' -o '$work/tiles2' --resolution 128 --threads 2 >/dev/null && diff -r '$work/tiles1' '$work/tiles2'"
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
 check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"

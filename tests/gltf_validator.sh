@@ -31,10 +31,12 @@ quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)
 quiet "$boxlod" build "$fzk" --chain -o "$work/fzk_chain.glb" --resolution 256
+quiet "$boxlod" generate --city 2 -o "$work/city2.glb"                      # a city's 3D Tiles content
+quiet "$boxlod" tiles "$work/city2.glb" -o "$work/tiles" --resolution 256
 
 cd "$work"
 node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" house.glb manual.gltf city.glb fzk.glb fzk.gltf \
-  house_converted.gltf level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb
+  house_converted.gltf level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
 # And the validator does fail: a node naming a mesh that does not exist.
 echo '{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 5}]}' > broken.gltf
 if node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" broken.gltf > /dev/null; then

@@ -7,47 +7,19 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/cost.h"
 #include "toolkit/gltf_io.h"
+#include "toolkit/level_sessions.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/lod_switch.h"
 #include "toolkit/model_io.h"
 #include "toolkit/parameters.h"
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <future>
-#include <map>
 #include <memory>
-#include <sstream>
 
 namespace boxlod {
 namespace {
-
-// --level-distances: the sizing distance of each level 1..N. `auto` doubles the
-// model's sizing distance d per level, d_c = d * 2^(c-1) (the rule `boxlod city`
-// uses): level c is used from d_c on, where its texels match the screen's pixels.
-std::vector<float> level_distances(const std::string& text, float distance, int levels) {
-    std::vector<float> distances;
-    if (text == "auto") {
-        for (int c = 1; c <= levels; ++c) distances.push_back(distance * std::ldexp(1.0f, c - 1));
-        return distances;
-    }
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
-        char* end = nullptr;
-        const double d = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)
-            throw InputError("--level-distances: '" + item + "' is not a distance in [0.001, 1000000] m");
-        if (!distances.empty() && float(d) < distances.back())
-            throw InputError("--level-distances: " + item + " comes after " + format_number(distances.back()) +
-                             ": the distances must ascend, one per level 1.." + std::to_string(levels));
-        distances.push_back(float(d));
-    }
-    if (int(distances.size()) != levels)
-        throw InputError("--level-distances: " + std::to_string(distances.size()) + " distances for " +
-                         std::to_string(levels) + " levels (1.." + std::to_string(levels) + "), or auto");
-    return distances;
-}
 
 // What levels 1..N cost shipped together (a texture shared by levels paid
 // once), and their textures against those of the finest level with pages.
@@ -66,35 +38,6 @@ KeyValues chain_report(const std::string& name, const std::vector<CostParts>& le
     return report;
 }
 
-// One session per sizing distance (a session bakes for one distance); boxes
-// and level values are computed once, by the first.
-struct Sessions {
-    const Model& model;
-    int threads;
-    std::unique_ptr<LodSession> first;
-    std::vector<float> distances;  // of levels 1..N; empty: all at the parameters' distance
-    std::map<float, std::unique_ptr<LodSession>> sized;
-
-    LodSession& for_level(int level) {
-        if (distances.empty() || level == 0) return *first;
-        std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
-        if (!session) {
-            LodParameters p = first->parameters;
-            p.distance = distances[std::size_t(level - 1)];
-            session = start_lod(model, p, threads, &first->boxes);
-        }
-        return *session;
-    }
-    LodTimes times() const {
-        LodTimes t = first->times;
-        for (const auto& [distance, session] : sized) {
-            t.bake += session->times.bake, t.pack += session->times.pack;
-            t.mesh += session->times.mesh, t.write += session->times.write;
-        }
-        return t;
-    }
-};
-
 // The switch into level c >= 1 in engines' terms (toolkit/lod_switch.h).
 KeyValues switch_entries(const LodSwitch& s) {
     return {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
@@ -103,7 +46,7 @@ KeyValues switch_entries(const LodSwitch& s) {
 }
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
-void write_chain(const Arguments& a, Sessions& sessions, const std::vector<int>& levels, std::vector<CostParts>& chain,
+void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<int>& levels, std::vector<CostParts>& chain,
                  int& finest_textured) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
@@ -141,7 +84,7 @@ void write_chain(const Arguments& a, Sessions& sessions, const std::vector<int>&
 // Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
 // partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
 // their bytes and the order of the output stay the same.
-void write_levels(const Arguments& a, Sessions& sessions, const std::string& name, const std::vector<int>& levels,
+void write_levels(const Arguments& a, LevelSessions& sessions, const std::string& name, const std::vector<int>& levels,
                   std::vector<CostParts>& chain, int& finest_textured) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
     const Bounds bounds = model_bounds(sessions.model);
@@ -197,8 +140,8 @@ int run_build(const Arguments& a) {
     const bool all_levels = a.has("all-levels") || chain_file;
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
     int threads = a.integer("threads", 0);
-    Sessions sessions{model, threads, start_lod(model, parameters, threads), {}, {}};
-    int obtained = sessions.first->levels.obtained_levels;
+    LevelSessions sessions(model, parameters, threads);
+    int obtained = sessions.obtained_levels();
     std::vector<int> levels;
     if (all_levels)
         for (int c = 0; c <= obtained; ++c) levels.push_back(c);

@@ -10,11 +10,12 @@ Subcommand convert_subcommand();
 Subcommand render_subcommand();
 Subcommand levels_subcommand();
 Subcommand build_subcommand();
+Subcommand tiles_subcommand();
 Subcommand view_subcommand();
 
 inline std::vector<Subcommand> toolkit_commands() {
-    return {info_subcommand(),   convert_subcommand(), render_subcommand(),
-            levels_subcommand(), build_subcommand(),   view_subcommand()};
+    return {info_subcommand(),   convert_subcommand(), render_subcommand(), levels_subcommand(),
+            build_subcommand(),  tiles_subcommand(),   view_subcommand()};
 }
 
 }  // namespace boxlod

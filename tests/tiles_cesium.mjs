@@ -1,0 +1,25 @@
+// Opens tests/tiles_cesium.html in Debian's Chromium (headless, WebGL on
+// SwiftShader) through playwright-core, waits for its result, saves a
+// screenshot and prints the result as JSON.
+//   node tiles_cesium.mjs PLAYWRIGHT_DIR URL SCREENSHOT.png
+import { createRequire } from "node:module";
+import path from "node:path";
+
+const [playwrightDir, url, screenshot] = process.argv.slice(2);
+const { chromium } = createRequire(path.join(playwrightDir, "index.js"))(playwrightDir);
+const browser = await chromium.launch({
+    executablePath: "/usr/bin/chromium",
+    args: ["--no-sandbox", "--disable-gpu", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-quic",
+           "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
+});
+try {
+    const page = await browser.newPage({ viewport: { width: 640, height: 480 } });
+    page.on("console", (message) => { if (message.type() === "error") console.error("page:", message.text()); });
+    await page.goto(url);
+    await page.waitForFunction(() => window.result !== undefined, null, { timeout: 150000 });
+    const result = await page.evaluate(() => window.result);
+    await page.screenshot({ path: screenshot });
+    console.log(JSON.stringify(result));
+} finally {
+    await browser.close();
+}

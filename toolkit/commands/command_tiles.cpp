@@ -1,0 +1,99 @@
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/parallel.h"
+#include "toolkit/boxes.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/commands/lod_options.h"
+#include "toolkit/gltf_io.h"
+#include "toolkit/level_sessions.h"
+#include "toolkit/model_io.h"
+#include "toolkit/model_subtree.h"
+#include "toolkit/tileset.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+
+constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
+
+// One object's chain: every level as OUTDIR/object_K_L<c>.glb, sized per level
+// (auto distances), with its geometric error.
+TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, const std::string& folder) {
+    Model model = extract_subtree(city, node);
+    LevelSessions sessions(model, parameters, 1);
+    sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    // The bounding volume encloses the geometry whatever box kind the levels use.
+    TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
+    for (int c = 0; c <= sessions.obtained_levels(); ++c) {
+        LodSession& session = sessions.for_level(c);
+        Lod lod = build_lod(session, c, 1);
+        std::string content = "object_" + std::to_string(index) + "_L" + std::to_string(c) + ".glb";
+        export_gltf(lod.model, (std::filesystem::path(folder) / content).string(), 1);
+        object.levels.push_back({content, cut_geometric_error(model, lod.cut, session.boxes)});
+    }
+    return object;
+}
+
+bool has_geometry_below(const Model& model, int node) {
+    for (std::vector<int> todo{node}; !todo.empty();) {
+        const Node& n = model.nodes[std::size_t(todo.back())];
+        if (n.has_geometry()) return true;
+        todo.pop_back();
+        todo.insert(todo.end(), n.children.begin(), n.children.end());
+    }
+    return false;
+}
+
+int run_tiles(const Arguments& a) {
+    LodParameters parameters = lod_parameters_from(a);
+    if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
+    const std::filesystem::path folder = a.text("output");
+    check_output_directory(folder.string());
+    const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),
+                          a.number("longitude", Geodetic{}.longitude_degrees), a.number("height", 0)};
+    Model city = load_model(parameters.model);
+    std::vector<int> nodes;  // the objects: children of the root with geometry
+    for (int child : city.nodes[0].children)
+        if (has_geometry_below(city, child)) nodes.push_back(child);
+    if (nodes.empty()) throw InputError(parameters.model + ": the root has no child with geometry to make tiles of");
+    start_lod(extract_subtree(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
+    std::filesystem::create_directories(folder);
+    OutputGroup files;  // every glb and the tileset naming them, or none
+    std::vector<TileObject> objects(nodes.size());
+    parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
+        objects[k] = build_object(city, nodes[k], int(k), parameters, folder.string());
+    });
+    const std::string tileset = (folder / "tileset.json").string();
+    write_text_atomically(tileset, tileset_json(objects, origin));
+    files.commit();
+    std::size_t tiles = 0;
+    for (const TileObject& object : objects) tiles += object.levels.size();
+    std::printf("tileset = %s\nobjects = %zu\ntiles = %zu\n", tileset.c_str(), objects.size(), tiles);
+    return 0;
+}
+
+}  // namespace
+
+Subcommand tiles_subcommand() {
+    Subcommand tiles{{"tiles", "MODEL|PARAMS.txt",
+                      "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and streets) "
+                      "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down to the "
+                      "original; glb content, boxes from boxlod's boxes, geometric errors in metres; "
+                      "OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
+                      {
+                          {"output", "OUTDIR", "folder for the tileset (required)", {}, 'o'},
+                          {"latitude", "DEG", "where the model's origin lies on the WGS84 ellipsoid (default 49.0094)", latitude_range},
+                          {"longitude", "DEG", "(default 8.412: Karlsruhe)", longitude_range},
+                          {"height", "M", "above the ellipsoid (default 0)", height_range},
+                          {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+                      },
+                      1, 1},
+                     run_tiles};
+    std::vector<Option> lod = lod_options();
+    tiles.command.options.insert(tiles.command.options.begin() + 1, lod.begin(), lod.end());
+    return tiles;
+}
+
+}  // namespace boxlod

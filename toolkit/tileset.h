@@ -1,0 +1,52 @@
+// 3D Tiles 1.1 (OGC Community Standard, 2022) for a model of many objects, such
+// as a city from `generate --city` (docs/design.md: Files). Each child of the
+// root is an object with a chain of tiles, coarsest level first, each tile's
+// only child its next finer level (REPLACE refinement) down to the original;
+// glb content; the tileset placed on the WGS84 ellipsoid at a geodetic origin.
+#pragma once
+#include "toolkit/cut.h"
+#include "toolkit/model.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct Geodetic {
+    double latitude_degrees = 49.0094, longitude_degrees = 8.4120, height = 0;  // default: KIT, Karlsruhe, home of the FZK-Haus
+};
+
+struct TileLevel {
+    std::string content;     // the glb's URI, relative to the tileset
+    double geometric_error;  // metres: what is lost when this level is drawn instead of the original
+};
+
+struct TileObject {
+    std::string name;
+    OrientedBox box;                // encloses every level (boxlod's box of the object's root)
+    std::vector<TileLevel> levels;  // 0 (the original) .. N
+};
+
+// The tileset JSON. The root (ADD, no content) holds every object's chain; its
+// geometric error is the objects' bounding sphere diameter, so a client opens
+// it whenever the city is more than a few pixels tall. A level's error is made
+// at least that of every finer level, as refinement requires.
+std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin);
+
+// A level's geometric error: the largest distance from a vertex of a boxed
+// sub-tree to the surface of its box, over the cut's boxes (0: nothing boxed).
+// What the box loses in depth; its faces' textures keep the rest.
+double cut_geometric_error(const Model& model, const Cut& cut, const std::vector<std::optional<OrientedBox>>& boxes);
+
+// The east-north-up frame at `at` in Earth-centred Earth-fixed metres (WGS84),
+// column-major as 3D Tiles' `transform`.
+std::array<double, 16> east_north_up_to_ecef(const Geodetic& at);
+
+// A box in glTF's y-up frame as 3D Tiles' `boundingVolume.box` (z-up: glTF
+// content is turned by +90 degrees about x, (x, y, z) -> (x, -z, y)): centre,
+// then the three half-axis vectors. Half extents are at least 1 cm.
+std::array<double, 12> tile_box(const OrientedBox& box);
+
+}  // namespace boxlod
