@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "toolkit/boxes.h"
+#include "toolkit/error_greedy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,9 @@ constexpr EnumEntry<LevelMode> level_mode_table[] = {
     {LevelMode::box_area, "box-area", "from the box's surface area"},
     {LevelMode::box_diagonal, "box-diagonal", "from the box's diagonal"},
     {LevelMode::box_max_extent, "box-max-extent", "from the box's longest side"},
+    {LevelMode::error_greedy, "error-greedy",
+     "beyond the manual: from the root's box, open the node that buys the most estimated error per byte; "
+     "N = the wanted levels, at byte budgets from the root's box to the original"},
 };
 
 constexpr EnumEntry<Interpolation> interpolation_table[] = {
@@ -124,8 +128,11 @@ bool is_box_mode(LevelMode mode) {
            mode == LevelMode::box_max_extent;
 }
 
+bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || mode == LevelMode::error_greedy; }
+
 LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                                 const std::vector<std::optional<OrientedBox>>& boxes) {
+                                 const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing,
+                                 bool textured) {
     if (model.nodes.empty()) throw InputError(model.source + ": the model has no nodes");
     switch (mode) {
         case LevelMode::top_down: return top_down(model);
@@ -135,6 +142,11 @@ LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_
     }
     if (wanted_levels < 1)
         throw InputError("wanted levels must be at least 1, got " + std::to_string(wanted_levels));
+    if (mode == LevelMode::error_greedy) {
+        if (boxes.size() != model.nodes.size())
+            throw std::invalid_argument("compute_level_values: one box (or none) per node expected");
+        return error_greedy_levels(model, boxes, wanted_levels, sizing, textured);
+    }
     return box_levels(model, mode, wanted_levels, interpolation, boxes);
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include "base/enum_table.h"
 #include "toolkit/model.h"
+#include "toolkit/texture_sizing.h"
 
 #include <optional>
 #include <span>
@@ -20,6 +21,7 @@ enum class LevelMode {
     box_area,
     box_diagonal,
     box_max_extent,
+    error_greedy,  // beyond the manual: open the node that buys the most estimated error per byte (error_greedy.h)
 };
 enum class Interpolation { linear, log, rank };  // how box modes turn v into t
 
@@ -30,15 +32,19 @@ const char* level_mode_name(LevelMode mode);
 bool parse_interpolation(const std::string& name, Interpolation& interpolation);
 const char* interpolation_name(Interpolation interpolation);
 bool is_box_mode(LevelMode mode);
+bool uses_boxes(LevelMode mode);  // the box modes and error-greedy
 
 struct LevelValues {
     std::vector<int> level;  // per node
     int obtained_levels = 1;  // N
 };
 
-// `boxes` (from node_boxes) is used by the box modes only; nodes without a box
-// take no part in vmin/vmax and get level 0. `wanted_levels` is N for box modes.
+// `boxes` (from node_boxes) is used by the box modes and error-greedy; nodes
+// without a box take no part in vmin/vmax and get level 0. `wanted_levels` is N
+// for both. error-greedy prices boxes with `sizing` (its distance aside) and
+// `textured`.
 LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                                 const std::vector<std::optional<OrientedBox>>& boxes);
+                                 const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing = {},
+                                 bool textured = true);
 
 }  // namespace boxlod

@@ -81,7 +81,8 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
     session->times.boxes = seconds_since(start);
     start = Clock::now();
-    session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes);
+    session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes,
+                                           session->sizing, p.render_mode != RenderMode::untextured);
     session->times.levels = seconds_since(start);
     if (p.keep_small_subtrees || p.keep_cheaper_subtrees)
         session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,

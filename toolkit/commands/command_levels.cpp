@@ -26,9 +26,9 @@ static int run_levels(const Arguments& arguments) {
     Model model = load_model(path);
     if (model.is_lod) throw InputError(path + ": an LoD exported by boxlod cannot be simplified again");
 
-    // Only the box modes look at boxes.
+    // Only the box modes and error-greedy look at boxes.
     std::vector<std::optional<OrientedBox>> boxes;
-    if (is_box_mode(mode)) {
+    if (uses_boxes(mode)) {
         const auto start = Clock::now();
         MinimalBoxCounts counts;
         boxes = node_boxes(model, kind, threads, counts);
@@ -38,11 +38,9 @@ static int run_levels(const Arguments& arguments) {
     LevelValues values = compute_level_values(model, mode, wanted_levels, interpolation, boxes);
 
     KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};
-    if (is_box_mode(mode)) {
-        report.push_back(text_entry("box_kind", box_kind_name(kind)));
-        report.push_back(text_entry("interpolation", interpolation_name(interpolation)));
-        report.push_back(number_entry("wanted_levels", wanted_levels));
-    }
+    if (uses_boxes(mode)) report.push_back(text_entry("box_kind", box_kind_name(kind)));
+    if (is_box_mode(mode)) report.push_back(text_entry("interpolation", interpolation_name(interpolation)));
+    if (uses_boxes(mode)) report.push_back(number_entry("wanted_levels", wanted_levels));
     report.push_back(number_entry("obtained_levels", values.obtained_levels));
     report.push_back(number_entry("nodes", double(model.nodes.size())));
     for (std::size_t i = 0; i < values.level.size(); ++i)
