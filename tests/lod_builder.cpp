@@ -144,6 +144,13 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     LodParameters saved = load_parameters((folder / "house.params.txt").string());
     EXPECT_EQ(saved.current_level, 2);
     EXPECT_EQ(saved.distance, session->parameters.distance);
+    // As one .glb: the pages inside, the same LoD read back.
+    export_lod(lod, *session, folder.string(), "packed", preview, 2, true);
+    EXPECT_TRUE(std::filesystem::exists(folder / "packed.glb"));
+    EXPECT_FALSE(std::filesystem::exists(folder / "packed_color_0.png"));
+    Model packed = load_model((folder / "packed.glb").string());
+    EXPECT_EQ(mesh_counts(packed).faces, mesh_counts(lod.model).faces);
+    EXPECT_EQ(texture_digest(packed.textures[0]), texture_digest(lod.model.textures[0]));
 }
 
 // Golden renders of an LoD in every render mode (regenerate: BOXLOD_UPDATE_GOLDEN=1 ctest -R LodGolden).

@@ -30,7 +30,7 @@ void name_pages(Lod& lod, const std::string& name) {
 }
 
 void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
-                const Image8& preview, int threads) {
+                const Image8& preview, int threads, bool binary) {
     namespace fs = std::filesystem;
     std::error_code error;
     fs::create_directories(directory, error);
@@ -48,7 +48,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     save_parameters(file(".params.txt"), parameters);
     write_png(file(".preview.png"), preview);
     write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
-    export_gltf(lod.model, file(".gltf"), threads);
+    export_gltf(lod.model, file(binary ? ".glb" : ".gltf"), threads);
     files.commit();
 }
 

@@ -105,7 +105,7 @@ void write_levels(const Arguments& a, LevelSessions& sessions, const std::string
                 report.insert(report.end(), at.begin(), at.end());
             }
             report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
-            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads);
+            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads, a.has("glb"));
             session->times.write += seconds_since(start);  // build_lod touches the other times only
             std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.first->levels.obtained_levels,
                          level_name.c_str());
@@ -139,6 +139,7 @@ int run_build(const Arguments& a) {
         throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
     const bool all_levels = a.has("all-levels") || chain_file;
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
+    if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
     int threads = a.integer("threads", 0);
     LevelSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
@@ -177,6 +178,7 @@ Subcommand build_subcommand() {
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
+                 {"glb", "", "write each level as one NAME.glb, its pages inside, instead of NAME.gltf + .bin + PNGs"},
                  {"chain", "",
                   "write every level 0..N into one file, -o OUT.glb or OUT.gltf: glTF's MSFT_lod, switch hints in "
                   "extras.MSFT_screencoverage, shared textures stored once; levels sized by --level-distances (default auto)"},
