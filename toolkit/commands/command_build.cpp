@@ -38,16 +38,35 @@ KeyValues chain_report(const std::string& name, const std::vector<CostParts>& le
     return report;
 }
 
-// The switch into level c >= 1 in engines' terms (toolkit/lod_switch.h).
-KeyValues switch_entries(const LodSwitch& s) {
-    return {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
-            number_entry("unity_relative_height", s.unity_relative_height),
-            number_entry("unreal_screen_size", s.unreal_screen_size)};
+// The levels 1..N for the chain's cost, and which of them is the finest with pages.
+struct ChainCost {
+    std::vector<CostParts> levels;
+    int finest_textured = -1;
+
+    void add(const Lod& lod) {
+        if (lod.current_level < 1) return;
+        levels.push_back(lod.cost);
+        if (finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(levels.size()) - 1;
+    }
+};
+
+// A level's stdout block: its name, sizing distance, where engines switch to it
+// (levels >= 1 of a chain sized per level: toolkit/lod_switch.h), its statistics.
+KeyValues level_report(const std::string& name, const Lod& lod, const LodSession& session, const Bounds& bounds,
+                       bool switches) {
+    KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.parameters.distance)};
+    if (switches && lod.current_level >= 1) {
+        const LodSwitch s = lod_switch(session.parameters.distance, bounds, session.sizing);
+        report.insert(report.end(), {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
+                                     number_entry("unity_relative_height", s.unity_relative_height),
+                                     number_entry("unreal_screen_size", s.unreal_screen_size)});
+    }
+    report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+    return report;
 }
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
-void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<int>& levels, std::vector<CostParts>& chain,
-                 int& finest_textured) {
+void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<int>& levels, ChainCost& chain) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
     const Bounds bounds = model_bounds(sessions.model);
@@ -56,20 +75,12 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
     for (int level : levels) {
         LodSession& session = sessions.for_level(level);
         Lod lod = build_lod(session, level, sessions.threads);
-        if (level >= 1) chain.push_back(lod.cost);
-        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
-        name_pages(lod, stem + "_L" + std::to_string(level));
-        KeyValues report{text_entry("name", stem + "_L" + std::to_string(level)),
-                         float_entry("sizing_distance", session.parameters.distance)};
-        if (level >= 1) {
-            LodSwitch at = lod_switch(session.parameters.distance, bounds, session.sizing);
-            KeyValues entries = switch_entries(at);
-            report.insert(report.end(), entries.begin(), entries.end());
-            coverage.push_back(at.screen_coverage);
-        }
-        report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
-        std::fprintf(stderr, "boxlod build: level %d of %zu\n", level, levels.size() - 1);
-        std::fputs((format_key_values(report) + "\n").c_str(), stdout);
+        chain.add(lod);
+        const std::string name = stem + "_L" + std::to_string(level);
+        name_pages(lod, name);
+        if (level >= 1) coverage.push_back(lod_switch(session.parameters.distance, bounds, session.sizing).screen_coverage);
+        std::fprintf(stderr, "boxlod build: level %d of %d\n", level, sessions.obtained_levels());
+        std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
         models.push_back(std::move(lod.model));
     }
     coverage.push_back(0);  // the coarsest level is drawn however small: culling is the engine's call
@@ -85,30 +96,23 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
 // partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
 // their bytes and the order of the output stay the same.
 void write_levels(const Arguments& a, LevelSessions& sessions, const std::string& name, const std::vector<int>& levels,
-                  std::vector<CostParts>& chain, int& finest_textured) {
+                  ChainCost& chain) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
     const Bounds bounds = model_bounds(sessions.model);
     std::future<void> writing;
     for (int level : levels) {
         LodSession* session = &sessions.for_level(level);
         Lod lod = build_lod(*session, level, sessions.threads);
-        if (level >= 1) chain.push_back(lod.cost);
-        if (level >= 1 && finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(chain.size()) - 1;
+        chain.add(lod);
         if (writing.valid()) writing.get();
         writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
             std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
             auto start = Clock::now();
             Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, sessions.threads);
-            KeyValues report{text_entry("name", level_name), float_entry("sizing_distance", session->parameters.distance)};
-            if (!sessions.distances.empty() && level >= 1) {
-                KeyValues at = switch_entries(lod_switch(session->parameters.distance, bounds, session->sizing));
-                report.insert(report.end(), at.begin(), at.end());
-            }
-            report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+            KeyValues report = level_report(level_name, lod, *session, bounds, !sessions.distances.empty());
             export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads, a.has("glb"));
             session->times.write += seconds_since(start);  // build_lod touches the other times only
-            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.first->levels.obtained_levels,
-                         level_name.c_str());
+            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.obtained_levels(), level_name.c_str());
             std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
         });
     }
@@ -150,13 +154,12 @@ int run_build(const Arguments& a) {
         levels.push_back(parameters.current_level);
     if (a.has("level-distances") || chain_file)
         sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->parameters.distance, obtained);
-    std::vector<CostParts> chain;  // levels 1..N, for the chain's cost
-    int finest_textured = -1;
+    ChainCost chain;
     if (chain_file)
-        write_chain(a, sessions, levels, chain, finest_textured);
+        write_chain(a, sessions, levels, chain);
     else
-        write_levels(a, sessions, name, levels, chain, finest_textured);
-    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain, finest_textured)).c_str(), stdout);
+        write_levels(a, sessions, name, levels, chain);
+    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain.levels, chain.finest_textured)).c_str(), stdout);
     if (a.has("timings")) {
         LodTimes t = sessions.times();
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
