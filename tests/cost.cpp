@@ -47,7 +47,7 @@ Model textured_quad(std::uint8_t alpha) {
 TEST(Cost, HandComputedQuad) {
     ModelCost cost = model_cost(textured_quad(0));
     EXPECT_EQ(cost.draw_calls, 1u);
-    EXPECT_EQ(cost.mesh_bytes, 4u * (12 + 12 + 8) + 6 * 4);
+    EXPECT_EQ(cost.mesh_bytes, 4u * (12 + 12 + 8) + 6 * 2);  // 16-bit indices
     // Colour RGBA8 8x8 + normal RGB8 4x4 + height 16-bit 4x4, each with its mips; the unused texture is not paid.
     EXPECT_EQ(cost.texture_bytes, 4u * (64 + 16 + 4 + 1) + 3 * (16 + 4 + 1) + 2 * (16 + 4 + 1));  // RGBA: one texel is clear
     // Cut-out alpha: BC1 (4 + 1 + 1 + 1 blocks); BC5 and BC4 for 4x4, 2x2, 1x1.

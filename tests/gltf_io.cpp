@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "test_support.h"
+#include "toolkit/gltf_extras.h"
 #include "toolkit/model_io.h"
 
 #include <Eigen/Geometry>
@@ -53,6 +54,8 @@ Model sample_model() {
     brick.height_texture = 2;
     brick.specular_color = {0.1f, 0.2f, 0.3f};
     brick.shininess = 12.5f;
+    brick.specular_glossiness = true;  // written back as KHR_materials_pbrSpecularGlossiness
+    brick.specular_texture = 0;
     brick.alpha_mode = AlphaMode::mask;
     brick.alpha_cutoff = 0.25f;
     Material glass;
@@ -71,6 +74,16 @@ Model sample_model() {
             for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
         }
         model.textures.push_back(texture);
+    }
+    return model;
+}
+
+// The sample model as its export writes it: what the untextured glass of the
+// windows never samples is left out (toolkit/vertex_layout.h).
+Model as_written(Model model) {
+    for (int window : {2, 3}) {
+        model.nodes[std::size_t(window)].primitives[0].uvs.clear();
+        model.nodes[std::size_t(window)].primitives[0].tangents.clear();
     }
     return model;
 }
@@ -111,6 +124,8 @@ void expect_same_model(const Model& a, const Model& b) {
         EXPECT_EQ(a.materials[i].height_texture, b.materials[i].height_texture);
         EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
         EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
+        EXPECT_EQ(a.materials[i].specular_glossiness, b.materials[i].specular_glossiness);
+        EXPECT_EQ(a.materials[i].specular_texture, b.materials[i].specular_texture);
         EXPECT_EQ(a.materials[i].double_sided, b.materials[i].double_sided);
         EXPECT_EQ(a.materials[i].alpha_mode, b.materials[i].alpha_mode);
         EXPECT_EQ(a.materials[i].alpha_cutoff, b.materials[i].alpha_cutoff);
@@ -165,11 +180,86 @@ TEST(GltfIo, ExportThenImportGivesTheSameModel) {
     for (const char* name : {"house.gltf", "house.glb"}) {
         std::string path = (folder / name).string();
         save_model(model, path);
-        expect_same_model(model, load_model(path));
+        expect_same_model(as_written(model), load_model(path));
     }
     EXPECT_TRUE(fs::exists(folder / "house.bin"));
     EXPECT_TRUE(fs::exists(folder / "brick_color.png"));
     EXPECT_TRUE(fs::exists(folder / "brick_normal.png"));
+}
+
+// What an engine reads: 16-bit indices where they fit, attributes only where the
+// material samples them, the specular-glossiness extension declared.
+TEST(GltfIo, IndicesAttributesAndExtensionsAsAClientReadsThem) {
+    auto folder = test::scratch_folder("gltf_client_view");
+    Model model = sample_model();
+    Primitive& big = model.nodes[1].primitives.emplace_back(quad(0.5f, 0));  // 70,000 vertices: 32-bit indices
+    big.positions.resize(70000, Eigen::Vector3f(0.5f, 0.5f, 0.5f));
+    big.normals.resize(70000, Eigen::Vector3f::UnitZ());
+    big.uvs.resize(70000, Eigen::Vector2f::Zero());
+    big.tangents.resize(70000, Eigen::Vector4f(1, 0, 0, 1));
+    big.indices.insert(big.indices.end(), {69999, 0, 1});
+    big.polygon_count = 2;
+    save_model(model, (folder / "house.glb").string());
+    tinygltf::Model gltf;
+    std::string error, warning;
+    ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "house.glb").string())) << error;
+    std::vector<int> index_types;
+    for (const tinygltf::Mesh& mesh : gltf.meshes)
+        for (const tinygltf::Primitive& p : mesh.primitives) {
+            index_types.push_back(gltf.accessors[std::size_t(p.indices)].componentType);
+            const bool textured = gltf.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorTexture.index >= 0;
+            EXPECT_EQ(p.attributes.count("TEXCOORD_0"), textured ? 1u : 0u);
+            EXPECT_EQ(p.attributes.count("TANGENT"), textured ? 1u : 0u);  // the brick has a normal map, the glass nothing
+        }
+    EXPECT_EQ(index_types, (std::vector<int>{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
+    EXPECT_EQ(gltf.extensionsUsed, std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness"});
+    const tinygltf::Value& sg = gltf.materials[0].extensions.at("KHR_materials_pbrSpecularGlossiness");
+    EXPECT_FLOAT_EQ(float(sg.Get("specularFactor").Get(2).GetNumberAsDouble()), 0.3f);
+    EXPECT_FLOAT_EQ(float(sg.Get("diffuseFactor").Get(0).GetNumberAsDouble()), 0.8f);
+    EXPECT_EQ(sg.Get("specularGlossinessTexture").Get("index").GetNumberAsInt(), 0);
+    EXPECT_EQ(gltf.materials[1].extensions.count("KHR_materials_pbrSpecularGlossiness"), 0u);  // the glass states no specular
+    expect_same_model(as_written(model), load_model((folder / "house.glb").string()));
+}
+
+// A file from another tool: its specular-glossiness material is what boxlod
+// renders (diffuse as base colour) and what convert writes back.
+TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
+    auto folder = test::scratch_folder("gltf_specular_glossiness");
+    auto file = [&](const std::string& name, const std::string& extension) {
+        std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
+          "extensionsUsed": ["KHR_materials_pbrSpecularGlossiness"],
+          "materials": [{"extensions": {"KHR_materials_pbrSpecularGlossiness": )" + extension + "}}]";
+        body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
+        test::write_text(folder / name, gltf_with_buffer(triangle_bytes(), body));
+        return (folder / name).string();
+    };
+    Model model = load_model(file("sg.gltf", R"({"diffuseFactor": [0.5, 0.25, 1, 1], "specularFactor": [0.75, 0.5, 0.25],
+                                               "glossinessFactor": 0.5})"));
+    const Material& m = model.materials[0];
+    EXPECT_TRUE(m.specular_glossiness);
+    EXPECT_EQ(m.base_color, Eigen::Vector4f(0.5f, 0.25f, 1, 1));
+    EXPECT_EQ(m.specular_color, Eigen::Vector3f(0.75f, 0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(m.shininess, 30);  // roughness 0.5, alpha 0.25: 2 / 0.25^2 - 2
+    save_model(model, (folder / "converted.gltf").string());
+    const Material back = load_model((folder / "converted.gltf").string()).materials[0];
+    EXPECT_TRUE(back.specular_glossiness);
+    EXPECT_EQ(back.base_color, m.base_color);
+    EXPECT_EQ(back.specular_color, m.specular_color);
+    EXPECT_EQ(back.shininess, m.shininess);
+    EXPECT_NE(test::read_text(folder / "converted.gltf").find(R"("glossinessFactor": 0.5)"), std::string::npos);
+    // Every factor has the extension's range.
+    EXPECT_NE(expect_input_error(file("gloss.gltf", R"({"glossinessFactor": 2})")).find("glossinessFactor"), std::string::npos);
+    EXPECT_NE(expect_input_error(file("spec.gltf", R"({"specularFactor": [0, -1, 0]})")).find("specularFactor"), std::string::npos);
+    expect_input_error(file("diffuse.gltf", R"({"diffuseFactor": [1, 1]})"));
+    expect_input_error(file("texture.gltf", R"({"diffuseTexture": {"index": 4}})"));
+    expect_input_error(file("form.gltf", R"({"specularGlossinessTexture": {"texCoord": 0}})"));
+}
+
+TEST(GltfIo, GlossinessAndShininessConvertBothWays) {
+    for (float g : {0.0f, 0.25f, 0.5f, 0.75f, 0.85f}) EXPECT_NEAR(glossiness_of_shininess(shininess_of_glossiness(g)), g, 1e-5f);
+    EXPECT_FLOAT_EQ(shininess_of_glossiness(0), 0);
+    EXPECT_FLOAT_EQ(shininess_of_glossiness(1), float(shininess_range.max));  // a mirror: the largest exponent allowed
 }
 
 TEST(GltfIo, LodMarkAndParametersSurviveTheRoundTrip) {
@@ -198,7 +288,7 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         Model read_back = load_model(path);  // (materials and textures: every level's)
         read_back.materials.resize(finest.materials.size());
         read_back.textures.resize(finest.textures.size());
-        expect_same_model(finest, read_back);
+        expect_same_model(as_written(finest), read_back);
         tinygltf::Model gltf;
         std::string error, warning;
         tinygltf::TinyGLTF reader;
@@ -212,7 +302,7 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         ASSERT_EQ(lod.Get("ids").ArrayLen(), 1u);
         EXPECT_EQ(lod.Get("ids").Get(0).GetNumberAsInt(), coarse_root);
         EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(0).GetNumberAsDouble(), 0.25);
-        EXPECT_EQ(gltf.extensionsUsed, std::vector<std::string>{"MSFT_lod"});
+        EXPECT_EQ(gltf.extensionsUsed, (std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness", "MSFT_lod"}));
         EXPECT_EQ(gltf.images.size(), finest.textures.size());
         // Equal materials and meshes are shared too: the coarse mass is level 0's mass, brick and all;
         // only the renamed glass is new.

@@ -48,23 +48,23 @@ TextureSizing unit_pixel() {
 TEST(KeptSubtrees, SubtreeSumsAddEveryDescendant) {
     Model model = tree(7, 2, 3);
     EXPECT_EQ(subtree_faces(model), (std::vector<std::size_t>{12, 9, 7, 2, 3}));
-    // Per triangle 3 vertices of position + normal (24 bytes) and 3 indices of 4 bytes.
-    const std::uint64_t triangle = 3 * 24 + 3 * 4;
+    // Per triangle 3 vertices of position + normal (24 bytes) and 3 16-bit indices.
+    const std::uint64_t triangle = 3 * 24 + 3 * 2;
     EXPECT_EQ(subtree_mesh_bytes(model), (std::vector<std::uint64_t>{12 * triangle, 9 * triangle, 7 * triangle, 2 * triangle, 3 * triangle}));
-    EXPECT_EQ(subtree_mesh_bytes(model)[2], primitive_mesh_bytes(model.nodes[2].primitives[0]));
+    EXPECT_EQ(subtree_mesh_bytes(model)[2], primitive_mesh_bytes(model.nodes[2].primitives[0], model));
 }
 
 TEST(KeptSubtrees, BoxBytesAreSixQuadsAndTheirGutteredTexelsAtTwoBytesWithMips) {
     TextureSizing sizing = unit_pixel();
     sizing.gutter = 2;
-    // Untextured: 6 quads of 4 vertices x 24 bytes and 6 indices x 4 bytes.
-    EXPECT_EQ(box_bytes_estimate(cube(10), sizing, false), 6u * (4 * 24 + 24));
+    // Untextured: 6 quads of 4 vertices x 24 bytes and 6 indices x 2 bytes.
+    EXPECT_EQ(box_bytes_estimate(cube(10), sizing, false), 6u * (4 * 24 + 12));
     // Textured: vertices of 48 bytes; each face 10 x 10 texels, 14 x 14 with gutters.
-    EXPECT_EQ(box_bytes_estimate(cube(10), sizing, true), 6u * (4 * 48 + 24) + 6u * 14 * 14 * 2 * 4 / 3);
+    EXPECT_EQ(box_bytes_estimate(cube(10), sizing, true), 6u * (4 * 48 + 12) + 6u * 14 * 14 * 2 * 4 / 3);
     // Farther away a face needs fewer texels.
     TextureSizing far = sizing;
     far.distance *= 2;
-    EXPECT_EQ(box_bytes_estimate(cube(10), far, true), 6u * (4 * 48 + 24) + 6u * 9 * 9 * 2 * 4 / 3);
+    EXPECT_EQ(box_bytes_estimate(cube(10), far, true), 6u * (4 * 48 + 12) + 6u * 9 * 9 * 2 * 4 / 3);
 }
 
 TEST(KeptSubtrees, SmallSubtreesHaveAtMostABoxsFaces) {
@@ -75,11 +75,11 @@ TEST(KeptSubtrees, SmallSubtreesHaveAtMostABoxsFaces) {
 }
 
 TEST(KeptSubtrees, CheaperSubtreesCostFewerBytesThanTheirBox) {
-    // 100 triangles cost 8,400 bytes, 10 cost 840; a textured box of side 10 at one texel per unit 4,432.
+    // 100 triangles cost 7,800 bytes, 10 cost 780; a textured box of side 10 at one texel per unit 4,360.
     Model model = tree(100, 10, 10);
     const TextureSizing sizing = unit_pixel();
     std::vector<std::optional<OrientedBox>> boxes(model.nodes.size(), cube(10));
-    ASSERT_EQ(box_bytes_estimate(cube(10), sizing, true), 1296u + 3136u);
+    ASSERT_EQ(box_bytes_estimate(cube(10), sizing, true), 1224u + 3136u);
     const std::vector<bool> kept = kept_subtrees(model, boxes, {false, true}, sizing, true);
     EXPECT_EQ(kept, (std::vector<bool>{false, false, false, true, true}));  // a1 (100) and a (110) pay; a2, b do not
     // The cut opens a (level 0 < 1 but its box pays: boxed), keeps b.
@@ -88,14 +88,14 @@ TEST(KeptSubtrees, CheaperSubtreesCostFewerBytesThanTheirBox) {
     EXPECT_EQ(cut.box_nodes, (std::vector<int>{1}));
     EXPECT_EQ(cut.geometry_nodes, (std::vector<int>{4}));
     // A kept node keeps its whole sub-tree, though a child's own box would pay: a child of 30 triangles
-    // (2,520 bytes) has a box of side 1 (1,296 + 6 x 5 x 5 texels x 8 / 3 = 1,696), its parent of 31 triangles
-    // (2,604) a box of side 10 (4,432).
+    // (2,340 bytes) has a box of side 1 (1,224 + 6 x 5 x 5 texels x 8 / 3 = 1,624), its parent of 31 triangles
+    // (2,418) a box of side 10 (4,360).
     Model deep = tree(30, 0, 0);
     deep.nodes[1].primitives = {deep.nodes[2].primitives[0]};
     deep.nodes[1].primitives[0].positions.resize(3), deep.nodes[1].primitives[0].normals.resize(3);
     deep.nodes[1].primitives[0].indices.resize(3), deep.nodes[1].primitives[0].polygon_count = 1;
     std::vector<std::optional<OrientedBox>> deep_boxes{std::nullopt, cube(10), cube(1), std::nullopt, std::nullopt};
-    ASSERT_EQ(box_bytes_estimate(cube(1), sizing, true), 1696u);
+    ASSERT_EQ(box_bytes_estimate(cube(1), sizing, true), 1624u);
     EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true), (std::vector<bool>{false, true, true, true, false}));
     deep_boxes[1] = cube(1);  // now a's box pays too
     EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true), (std::vector<bool>(5, false)));

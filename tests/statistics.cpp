@@ -32,9 +32,9 @@ TEST(Statistics, CountsFacesTrianglesVerticesAndBatchesPerMaterial) {
     EXPECT_EQ(value("mesh_width"), "4");
     EXPECT_EQ(value("mesh_height"), "2");
     EXPECT_EQ(value("mesh_depth"), "1.5");
-    // Three quads of 4 float positions and 6 32-bit indices, no textures (docs/design.md: Cost).
+    // Three quads of 4 float positions and 6 16-bit indices, no textures (docs/design.md: Cost).
     EXPECT_EQ(value("draw_calls_original"), "2");
-    EXPECT_EQ(value("mesh_bytes_original"), "216");
+    EXPECT_EQ(value("mesh_bytes_original"), "180");
     EXPECT_EQ(value("texture_bytes_gpu_original"), "0");
-    EXPECT_EQ(value("bytes_original"), "216");
+    EXPECT_EQ(value("bytes_original"), "180");
 }

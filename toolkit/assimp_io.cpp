@@ -168,8 +168,12 @@ Model import_with_assimp(const std::string& path) {
         float opacity;
         if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
         if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
+        // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
         aiColor3D specular;
-        if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) material.specular_color = {specular.r, specular.g, specular.b};
+        if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
+            material.specular_color = {specular.r, specular.g, specular.b};
+            material.specular_glossiness = true;
+        }
         float shininess;
         if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
         int two_sided;
@@ -178,6 +182,8 @@ Model import_with_assimp(const std::string& path) {
         if (material.base_color_texture < 0)
             material.base_color_texture = load_texture(model, *scene, in, aiTextureType_DIFFUSE, directory);
         material.normal_texture = load_texture(model, *scene, in, aiTextureType_NORMALS, directory);
+        material.specular_texture = load_texture(model, *scene, in, aiTextureType_SPECULAR, directory);
+        if (material.specular_texture >= 0) material.specular_glossiness = true;
         model.materials.push_back(material);
     }
 

@@ -61,19 +61,13 @@ std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format) {
     return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) { return (w + 3) / 4 * ((h + 3) / 4) * block_bytes; });
 }
 
-std::uint64_t primitive_mesh_bytes(const Primitive& p) {
-    // The export writes float positions, normals, uvs and tangents and 32-bit indices (gltf_io.cpp).
-    std::uint64_t vertex_bytes = 12 + (p.normals.empty() ? 0 : 12) + (p.uvs.empty() ? 0 : 8) + (p.tangents.empty() ? 0 : 16);
-    return vertex_bytes * p.positions.size() + 4 * std::uint64_t(p.indices.size());
-}
-
 CostParts cost_parts(const Model& model) {
     CostParts parts;
     std::set<int> materials;
     for (const Node& node : model.nodes)
         for (const Primitive& p : node.primitives) {
             materials.insert(p.material);
-            parts.mesh_bytes += primitive_mesh_bytes(p);
+            parts.mesh_bytes += primitive_mesh_bytes(p, model);
         }
     parts.draw_calls = materials.size();
 
@@ -82,7 +76,8 @@ CostParts cost_parts(const Model& model) {
         if (m < 0 || m >= int(model.materials.size())) continue;
         const Material& material = model.materials[std::size_t(m)];
         for (auto [index, role] : {std::pair{material.base_color_texture, Role::color}, std::pair{material.normal_texture, Role::normal},
-                                   std::pair{material.height_texture, Role::height}})
+                                   std::pair{material.height_texture, Role::height},
+                                   std::pair{material.specular_texture, Role::color}})
             if (index >= 0 && index < int(model.textures.size())) roles.emplace(index, role);
     }
     for (auto [index, role] : roles) {

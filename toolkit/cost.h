@@ -4,6 +4,7 @@
 #pragma once
 #include "base/key_values.h"
 #include "toolkit/model.h"
+#include "toolkit/vertex_layout.h"  // primitive_mesh_bytes
 
 #include <cstdint>
 #include <string>
@@ -26,8 +27,6 @@ struct ModelCost {
 };
 
 ModelCost model_cost(const Model& model);
-// Vertex + index bytes of one primitive as the glTF export writes it.
-std::uint64_t primitive_mesh_bytes(const Primitive& primitive);
 
 // A cost in parts, for several models drawn together (a city's buildings at
 // their levels): draw calls and meshes add up, while a texture is paid for

@@ -43,7 +43,7 @@ GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional
     std::vector<double> box_bytes(count, 0), own_bytes(count, 0);
     for (std::size_t n = 0; n < count; ++n) {
         if (boxes[n]) box_bytes[n] = double(box_bytes_estimate(*boxes[n], sizing, textured));
-        for (const Primitive& p : model.nodes[n].primitives) own_bytes[n] += double(primitive_mesh_bytes(p));
+        for (const Primitive& p : model.nodes[n].primitives) own_bytes[n] += double(primitive_mesh_bytes(p, model));
     }
     // What opening n buys and costs: its box gives way to its own geometry and its children's boxes.
     auto change = [&](int n) {

@@ -6,6 +6,7 @@
 #include "base/parallel.h"
 #include "renderer/image.h"
 #include "toolkit/gltf_extras.h"
+#include "toolkit/vertex_layout.h"
 
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
@@ -67,9 +68,10 @@ struct Writer {
         return stream.views.back();
     }
 
-    // Appends bytes; returns (view, offset of the bytes within that view).
-    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size) {
-        while (stream.bytes.size() % 4) stream.bytes.push_back(0);  // glTF alignment
+    // Appends bytes at a multiple of `alignment` (glTF: an accessor's offset is a
+    // multiple of its component size; 4 keeps floats aligned); returns (view, offset of the bytes within that view).
+    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size, std::size_t alignment = 4) {
+        while (stream.bytes.size() % alignment) stream.bytes.push_back(0);
         std::size_t offset = stream.bytes.size();
         const auto* p = static_cast<const unsigned char*>(bytes);
         stream.bytes.insert(stream.bytes.end(), p, p + size);
@@ -107,9 +109,15 @@ struct Writer {
         return int(gltf.accessors.size()) - 1;
     }
 
-    int add_indices(const std::vector<std::uint32_t>& values) {
-        new_accessor(append(indices, values.data(), values.size() * 4), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, values.size(),
-                     TINYGLTF_TYPE_SCALAR);
+    int add_indices(const std::vector<std::uint32_t>& values, int index_bytes) {
+        if (index_bytes == 4) {
+            new_accessor(append(indices, values.data(), values.size() * 4), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                         values.size(), TINYGLTF_TYPE_SCALAR);
+        } else {
+            const std::vector<std::uint16_t> narrow(values.begin(), values.end());
+            new_accessor(append(indices, narrow.data(), narrow.size() * 2, 2), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                         narrow.size(), TINYGLTF_TYPE_SCALAR);
+        }
         return int(gltf.accessors.size()) - 1;
     }
 
@@ -118,6 +126,7 @@ struct Writer {
         gltf.buffers.resize(1);
         std::vector<unsigned char>& data = gltf.buffers[0].data;
         for (Stream* stream : {&vec3, &vec2, &vec4, &indices, &blobs}) {
+            if (stream->bytes.empty()) continue;
             while (data.size() % 4) data.push_back(0);
             std::size_t base = data.size();
             data.insert(data.end(), stream->bytes.begin(), stream->bytes.end());
@@ -201,6 +210,13 @@ void add_materials(Writer& w, const Model& model) {
         out.alphaMode = enum_name(alpha_modes(), material.alpha_mode);
         if (material.alpha_mode == AlphaMode::mask) out.alphaCutoff = json_number(material.alpha_cutoff);
         out.extras = material_extras(material, texture(material.height_texture));
+        if (material.specular_glossiness) {
+            out.extensions[specular_glossiness_name] =
+                specular_glossiness_extension(material, texture(material.base_color_texture), texture(material.specular_texture));
+            if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), specular_glossiness_name) ==
+                w.gltf.extensionsUsed.end())
+                w.gltf.extensionsUsed.push_back(specular_glossiness_name);
+        }
         auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
         w.materials.push_back(int(equal - w.gltf.materials.begin()));
         if (equal == w.gltf.materials.end()) w.gltf.materials.push_back(out);
@@ -263,14 +279,15 @@ void add_nodes(Writer& w, const Model& model) {
             tinygltf::Mesh mesh;
             mesh.name = node.name;
             for (const Primitive& primitive : node.primitives) {
+                const VertexLayout layout = vertex_layout(primitive, model);
                 tinygltf::Primitive p;
                 p.mode = TINYGLTF_MODE_TRIANGLES;
                 p.material = materials[mesh.primitives.size()];
                 p.attributes["POSITION"] = w.add_accessor(primitive.positions, TINYGLTF_TYPE_VEC3, true);
-                if (!primitive.normals.empty()) p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
-                if (!primitive.uvs.empty()) p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
-                if (!primitive.tangents.empty()) p.attributes["TANGENT"] = w.add_accessor(primitive.tangents, TINYGLTF_TYPE_VEC4, false);
-                p.indices = w.add_indices(primitive.indices);
+                if (layout.normals) p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
+                if (layout.uvs) p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
+                if (layout.tangents) p.attributes["TANGENT"] = w.add_accessor(primitive.tangents, TINYGLTF_TYPE_VEC4, false);
+                p.indices = w.add_indices(primitive.indices, layout.index_bytes);
                 p.extras = primitive_extras(primitive);
                 mesh.primitives.push_back(p);
             }

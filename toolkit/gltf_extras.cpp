@@ -3,6 +3,8 @@
 #include "base/input_error.h"
 #include "base/key_values.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace boxlod {
@@ -139,6 +141,61 @@ void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at,
     if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 && polygons.GetNumberAsDouble() <= double(primitive.triangle_count())))
         throw_input_error(at.file, at.place, "extras.boxlod.polygons must be a count of at most the primitive's triangles");
     primitive.polygon_count = std::size_t(polygons.GetNumberAsDouble());
+}
+
+float glossiness_of_shininess(float shininess) {
+    return 1 - float(std::pow(2.0 / (std::max(double(shininess), 0.0) + 2), 0.25));
+}
+
+float shininess_of_glossiness(float glossiness) {
+    const double roughness = 1 - double(glossiness);
+    if (roughness <= 0) return float(shininess_range.max);
+    return float(std::clamp(2 / std::pow(roughness, 4) - 2, shininess_range.min, shininess_range.max));
+}
+
+tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture) {
+    tinygltf::Value::Object fields{{"diffuseFactor", number_array(material.base_color.data(), 4)},
+                                   {"specularFactor", number_array(material.specular_color.data(), 3)},
+                                   {"glossinessFactor", tinygltf::Value(json_number(glossiness_of_shininess(material.shininess)))}};
+    auto texture_info = [](int index) { return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}}); };
+    if (diffuse_texture >= 0) fields["diffuseTexture"] = texture_info(diffuse_texture);
+    if (specular_texture >= 0) fields["specularGlossinessTexture"] = texture_info(specular_texture);
+    return tinygltf::Value(std::move(fields));
+}
+
+void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
+                              const std::function<int(int)>& texture_image, Material& material) {
+    const ExtrasPlace here{at.file, at.place + " " + specular_glossiness_name};
+    if (!extension.IsObject()) throw_input_error(here.file, here.place, "expected an object");
+    auto factors = [&](const char* field, auto defaults) {
+        if (!extension.Has(field)) return defaults;
+        auto values = read_numbers<int(decltype(defaults)::RowsAtCompileTime)>(extension.Get(field), here, field);
+        if (!((values.array() >= 0).all() && (values.array() <= 1).all()))
+            throw_input_error(here.file, here.place + " " + field, "expected numbers in [0, 1]");
+        return values;
+    };
+    auto texture = [&](const char* field) {
+        if (!extension.Has(field)) return -1;
+        const tinygltf::Value& info = extension.Get(field);
+        if (!info.IsObject() || !info.Get("index").IsNumber())
+            throw_input_error(here.file, here.place + " " + field, "expected a textureInfo with an index");
+        const double index = info.Get("index").GetNumberAsDouble();
+        if (!(index >= 0 && index <= 1e9)) throw_input_error(here.file, here.place + " " + field, "texture index out of range");
+        return texture_image(int(index));
+    };
+    material.base_color = factors("diffuseFactor", Eigen::Vector4f(1, 1, 1, 1));
+    material.specular_color = factors("specularFactor", Eigen::Vector3f(1, 1, 1));
+    float glossiness = 1;
+    if (extension.Has("glossinessFactor")) {
+        const tinygltf::Value& g = extension.Get("glossinessFactor");
+        if (!g.IsNumber() || !(g.GetNumberAsDouble() >= 0 && g.GetNumberAsDouble() <= 1))
+            throw_input_error(here.file, here.place + " glossinessFactor", "expected a number in [0, 1]");
+        glossiness = float(g.GetNumberAsDouble());
+    }
+    material.shininess = shininess_of_glossiness(glossiness);
+    if (int diffuse = texture("diffuseTexture"); diffuse >= 0) material.base_color_texture = diffuse;
+    material.specular_texture = texture("specularGlossinessTexture");
+    material.specular_glossiness = true;
 }
 
 }  // namespace boxlod

@@ -9,6 +9,7 @@
 
 #include <tiny_gltf.h>
 
+#include <functional>
 #include <string>
 
 namespace boxlod {
@@ -32,5 +33,21 @@ void read_asset_extras(const tinygltf::Value& extras, Model& model);
 void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at, Material& material);
 void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node& node);
 void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Primitive& primitive);  // after its indices
+
+// KHR_materials_pbrSpecularGlossiness (KhronosGroup/glTF, extensions/2.0/Archived)
+// for a material with `specular_glossiness`: diffuse = base colour, specular =
+// the Phong specular colour, glossiness from the shininess. Texture indices are glTF's (< 0: none).
+constexpr const char* specular_glossiness_name = "KHR_materials_pbrSpecularGlossiness";
+tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture);
+// Reads that extension into `material` (every factor in [0, 1] as the extension
+// requires); `texture_image` maps a glTF texture index to boxlod's texture.
+void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
+                              const std::function<int(int)>& texture_image, Material& material);
+
+// The Blinn-Phong exponent n and glossiness g = 1 - roughness, with
+// alpha = roughness^2 and n = 2 / alpha^2 - 2 (B. Karis, "Specular BRDF
+// Reference", 2013); n is kept within shininess_range.
+float glossiness_of_shininess(float shininess);
+float shininess_of_glossiness(float glossiness);
 
 }  // namespace boxlod

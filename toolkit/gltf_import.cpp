@@ -280,10 +280,18 @@ tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string
 void read_textures(const Reader& reader, Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
     std::vector<bool> colour_or_normal(gltf.images.size(), false);
-    for (std::size_t m = 0; m < gltf.materials.size(); ++m)
+    for (std::size_t m = 0; m < gltf.materials.size(); ++m) {
+        const std::string place = "material " + std::to_string(m);
         for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
-            if (int image = texture_image(reader, texture, "material " + std::to_string(m)); image >= 0)
-                colour_or_normal[std::size_t(image)] = true;
+            if (int image = texture_image(reader, texture, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
+        if (auto extension = gltf.materials[m].extensions.find(specular_glossiness_name); extension != gltf.materials[m].extensions.end()) {
+            Material colours;  // only for the images it names
+            read_specular_glossiness(extension->second, {reader.file, place},
+                                     [&](int texture) { return texture_image(reader, texture, place); }, colours);
+            for (int image : {colours.base_color_texture, colours.specular_texture})
+                if (image >= 0) colour_or_normal[std::size_t(image)] = true;
+        }
+    }
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
         model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
     for (const tinygltf::Texture& texture : gltf.textures)  // an image sampled clamped to its edge (LoD pages)
@@ -309,6 +317,9 @@ void read_materials(const Reader& reader, Model& model) {
         if (!alpha_cutoff_range.contains(in.alphaCutoff))
             reader.fail(place, "alphaCutoff " + out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
         material.alpha_cutoff = float(in.alphaCutoff);
+        if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
+            read_specular_glossiness(extension->second, {reader.file, place},
+                                     [&](int texture) { return texture_image(reader, texture, place); }, material);
         read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
         model.materials.push_back(material);
     }

@@ -25,13 +25,13 @@ std::vector<std::size_t> subtree_faces(const Model& model) {
 }
 
 std::vector<std::uint64_t> subtree_mesh_bytes(const Model& model) {
-    return sum_over_subtrees<std::uint64_t>(model, primitive_mesh_bytes);
+    return sum_over_subtrees<std::uint64_t>(model, [&](const Primitive& p) { return primitive_mesh_bytes(p, model); });
 }
 
 std::uint64_t box_bytes_estimate(const OrientedBox& box, const TextureSizing& sizing, bool textured) {
-    // Per quad 4 vertices (position, normal; uv, tangent when textured) and 6 indices, as the export writes them.
-    const std::uint64_t vertex_bytes = textured ? 12 + 12 + 8 + 16 : 12 + 12;
-    std::uint64_t bytes = 6 * (4 * vertex_bytes + 6 * 4);
+    // Per quad 4 vertices (position, normal; uv, tangent when textured) and 6 16-bit indices, as the export writes them.
+    const std::uint64_t vertex_bytes = VertexLayout{true, textured, textured, 2}.vertex_bytes();
+    std::uint64_t bytes = 6 * (4 * vertex_bytes + 6 * 2);
     if (!textured) return bytes;
     std::uint64_t texels = 0;
     for (const OrientedBoxFace& face : oriented_box_faces(box)) {

@@ -1,6 +1,7 @@
 #include "toolkit/model.h"
 
 #include "base/input_error.h"
+#include "base/key_values.h"
 
 #include <cmath>
 
@@ -94,10 +95,15 @@ void validate_model(const Model& model) {
                             node.scope->half_extents.allFinite()))
             throw_input_error(file, place, "scope is NaN or infinite");
     }
-    for (const Material& material : model.materials)
-        for (int texture : {material.base_color_texture, material.normal_texture, material.height_texture})
-            if (texture >= int(model.textures.size()))
-                throw_input_error(file, "material '" + material.name + "'", "texture index out of range");
+    for (const Material& material : model.materials) {
+        const std::string place = "material '" + material.name + "'";
+        for (int texture : {material.base_color_texture, material.normal_texture, material.height_texture, material.specular_texture})
+            if (texture >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
+        if (!material.base_color.allFinite() || !material.specular_color.allFinite())
+            throw_input_error(file, place, "colour is NaN or infinite");
+        if (!shininess_range.contains(material.shininess))
+            throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
+    }
     if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
 }
 

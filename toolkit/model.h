@@ -44,8 +44,13 @@ struct Material {
     int base_color_texture = -1;             // index into Model::textures
     int normal_texture = -1;
     int height_texture = -1;  // baked LoD faces: 1 at the face plane, 0 at the opposite face
-    Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};
+    Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};  // Blinn-Phong, as the renderer shades
     float shininess = 32;
+    // The source stated its specular terms (glTF KHR_materials_pbrSpecularGlossiness,
+    // or a format with Phong specular through assimp): the glTF export writes
+    // them back as that extension (docs/design.md: Files).
+    bool specular_glossiness = false;
+    int specular_texture = -1;  // the extension's specularGlossinessTexture: RGB specular, A glossiness
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
     float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK

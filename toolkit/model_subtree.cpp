@@ -17,6 +17,7 @@ int MaterialCopier::material(int index) {
     m.base_color_texture = texture(m.base_color_texture);
     m.normal_texture = texture(m.normal_texture);
     m.height_texture = texture(m.height_texture);
+    m.specular_texture = texture(m.specular_texture);
     out.materials.push_back(m);
     return materials[index] = int(out.materials.size()) - 1;
 }

@@ -1,0 +1,23 @@
+#include "toolkit/vertex_layout.h"
+
+namespace boxlod {
+
+VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
+    const Material* material = primitive.material >= 0 && primitive.material < int(model.materials.size())
+                                   ? &model.materials[std::size_t(primitive.material)]
+                                   : nullptr;
+    const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
+    VertexLayout layout;
+    layout.normals = !primitive.normals.empty();
+    layout.uvs = !primitive.uvs.empty() && material && (material->base_color_texture >= 0 || material->specular_texture >= 0 || mapped);
+    layout.tangents = !primitive.tangents.empty() && mapped;
+    layout.index_bytes = primitive.positions.size() <= 65535 ? 2 : 4;
+    return layout;
+}
+
+std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model) {
+    const VertexLayout layout = vertex_layout(primitive, model);
+    return layout.vertex_bytes() * primitive.positions.size() + std::uint64_t(layout.index_bytes) * primitive.indices.size();
+}
+
+}  // namespace boxlod
