@@ -4,7 +4,7 @@ BUILD ?= build
 DEBUG_BUILD ?= build-debug
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build debug-build demo test test-sanitize fuzz bench paper paper-smoke clean
+.PHONY: all deps configure build debug-build demo test test-cluster test-sanitize fuzz bench paper paper-smoke clean
 all: build
 
 deps:
@@ -28,6 +28,12 @@ demo:
 
 test: build debug-build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The workflow's smoke profile through a one-node SLURM cluster started for the
+# test, against the same profile run locally (docs/workflow.md: On a cluster);
+# also part of `make test`.
+test-cluster: build
+	@cd $(BUILD) && ctest --output-on-failure -R workflow_on_slurm
 
 # The Debug side of the Debug-against-Release tests (docs/testing.md: Determinism): -O0
 # with the standard library's assertions, linked with the one-definition-rule

@@ -534,12 +534,40 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
     }
 }
 
-// Plan, then execute, model by model, into the results table.
-SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+// A shard's rows into the merged table: a row two shards both hold must be the
+// same. They join no file order: only rows this sweep makes are written.
+void merge_rows(KeyedTable& into, const KeyedTable& shard) {
+    for (const std::string& key : shard.file_order) {
+        const std::string& row = shard.rows.at(key);
+        auto [at, added] = into.rows.emplace(key, row);
+        if (!added && at->second != row)
+            throw_input_error(shard.path, key, "this row differs from another shard's or the merged table's");
+    }
+}
+
+// Reads the shards' results, timings and kept images into the output.
+void merge_shards(const SweepConfig& config, SweepOutput& out, const std::vector<std::string>& shard_folders) {
+    for (const std::string& folder : shard_folders) {
+        const fs::path results = fs::path(folder) / "results.csv";
+        if (!fs::is_regular_file(results)) throw_input_error(results.string(), "", "no such shard results file");
+        merge_rows(out.results, open_table(results.string(), result_columns(config)));
+        KeyedTable timings = open_table((fs::path(folder) / "timings.csv").string(), timing_columns());
+        // Timings differ from run to run: the first shard's stand.
+        for (const std::string& key : timings.file_order) out.timings.rows.emplace(key, timings.rows.at(key));
+        if (out.keep_images && fs::is_directory(fs::path(folder) / "images"))
+            fs::copy(fs::path(folder) / "images", out.images,
+                     fs::copy_options::overwrite_existing | fs::copy_options::recursive);
+    }
+}
+
+// Plan, then execute, model by model, into the results table (after the shards' rows, if any).
+SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress,
+                       const std::vector<std::string>& shard_folders = {}) {
     auto sweep_start = Clock::now();
     if (threads < 0) threads = config.threads;
     SweepReport report;
     SweepOutput out = open_output(config, output_folder);
+    merge_shards(config, out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
         auto start = Clock::now();
@@ -562,17 +590,53 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
 }  // namespace
 
 SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+    return merge_sweep(config, {}, output_folder, threads, progress);
+}
+
+SweepReport merge_sweep(const SweepConfig& config, const std::vector<std::string>& shard_folders,
+                        const std::string& output_folder, int threads, std::FILE* progress) {
     // A sweep that fails before its first row (a model that cannot be read)
     // leaves no folder behind; rows computed stay, for the next run to resume.
     const bool new_folder = !fs::exists(output_folder);
     try {
-        return sweep_into(config, output_folder, threads, progress);
+        return sweep_into(config, output_folder, threads, progress, shard_folders);
     } catch (...) {
         std::error_code ignored;
         if (new_folder && !fs::exists(fs::path(output_folder) / "results.csv", ignored))
             fs::remove_all(output_folder, ignored);
         throw;
     }
+}
+
+std::vector<SweepShard> sweep_shards(const SweepConfig& config) {
+    std::vector<SweepShard> shards;
+    for (std::size_t m = 0; m < config.models.size(); ++m)
+        for (LevelMode mode : config.level_modes) shards.push_back({m, mode});
+    return shards;
+}
+
+SweepConfig shard_config(const SweepConfig& config, const SweepShard& shard) {
+    SweepConfig part = config;
+    part.models = {config.models.at(shard.model)};
+    part.level_modes = {shard.level_mode};
+    if (shard.level_mode != config.level_modes.front()) part.baselines.clear();
+    return part;
+}
+
+SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text) {
+    const std::size_t colon = text.find(':');
+    auto fail = [&](const std::string& what) { throw InputError("boxlod sweep: --shard '" + text + "': " + what); };
+    if (colon == std::string::npos) fail("expected M:MODE, the model's position from 1 and a level mode of the config");
+    const std::string position = text.substr(0, colon), mode_name = text.substr(colon + 1);
+    const NumberRange models{1, double(config.models.size())};
+    char* end = nullptr;
+    const double m = std::strtod(position.c_str(), &end);
+    if (position.empty() || *end || !models.contains(m) || m != std::floor(m)) fail(out_of_range_message(models, position));
+    SweepShard shard{std::size_t(m) - 1, LevelMode::top_down};
+    if (!parse_level_mode(mode_name, shard.level_mode) ||
+        std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) == config.level_modes.end())
+        fail("'" + mode_name + "' is not one of the config's level modes");
+    return shard;
 }
 
 }  // namespace boxlod

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages boxlod needs that are missing; nothing else.
 # Usage: scripts/install-deps.sh [demo|bench|fuzz|paper]   (demo: only what `make demo` needs;
+# the default, for make test, includes SLURM and munge for the scheduler test;
 # bench adds the benchmarks' peers, fuzz clang;
 # paper: the workflow, notebooks and LaTeX, which the default list also holds
 # because `make test` builds the paper on tiny inputs)
@@ -41,7 +42,11 @@ paper_packages=(snakemake python3-yaml python3-pandas python3-matplotlib
   python3-nbformat python3-nbclient python3-nbconvert python3-ipykernel
   texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk)
 
-wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}")
+# The workflow on a real scheduler (tests/workflow_on_slurm.sh, make test-cluster):
+# a one-node SLURM cluster, its daemons and their authentication.
+cluster_packages=(slurmctld slurmd slurm-client munge)
+
+wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}" "${cluster_packages[@]}")
 # make demo: the program, the FZK-Haus and the plot; no tests, benchmarks, viewer test or LaTeX.
 [ "${1:-}" = demo ] && wanted=("${program_packages[@]}" assimp-testmodels python3-matplotlib)
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")

@@ -304,6 +304,56 @@ TEST(Sweep, ResumingFillsInOnlyTheMissingRows) {
     EXPECT_EQ(test::read_text(out / "results.csv"), full);
 }
 
+// Two models x two level modes, with a baseline: four shards, run apart and
+// merged, give the whole sweep's results.csv byte for byte.
+TEST(Sweep, ShardsMergeIntoTheWholeSweepsBytes) {
+    SmallSweep s = small_sweep("sweep_shards", "baselines = simplification\n");
+    std::filesystem::copy_file(s.folder / "building.glb", s.folder / "second.glb");
+    std::string text = test::read_text(s.folder / "sweep.txt");
+    text.replace(text.find("models = building.glb"), 21, "models = building.glb, second.glb");
+    test::write_text(s.folder / "sweep.txt", text);
+    SweepConfig config = load_sweep_config((s.folder / "sweep.txt").string());
+    ASSERT_EQ(config.models.size(), 2u);
+    run_sweep(config, (s.folder / "whole").string(), 2);
+    const std::string whole = test::read_text(s.folder / "whole" / "results.csv");
+
+    const std::vector<SweepShard> shards = sweep_shards(config);
+    ASSERT_EQ(shards.size(), 4u);
+    EXPECT_EQ(shards[1].model, 0u);
+    EXPECT_EQ(shards[1].level_mode, LevelMode::bottom_up);
+    EXPECT_EQ(shard_config(config, shards[0]).baselines.size(), 1u);  // the baselines follow the first level mode
+    EXPECT_TRUE(shard_config(config, shards[1]).baselines.empty());
+    std::size_t rows = 0;
+    for (std::size_t k = 0; k < shards.size(); ++k) {
+        const auto folder = s.folder / "shards" / std::to_string(k);
+        rows += run_sweep(shard_config(config, shards[k]), folder.string(), 1).rows;
+    }
+    EXPECT_EQ(rows, 2u * (8 + 4));  // per model: 2 modes x 2 levels x 2 views, and the baseline's 2 levels x 2 views
+
+    // Merged in any order of the shards: the same bytes, nothing computed again.
+    const std::vector<std::string> folders{(s.folder / "shards" / "3").string(), (s.folder / "shards" / "0").string(),
+                                           (s.folder / "shards" / "2").string(), (s.folder / "shards" / "1").string()};
+    SweepReport merged = merge_sweep(config, folders, (s.folder / "merged").string(), 2);
+    EXPECT_EQ(merged.rows_computed, 0u);
+    EXPECT_EQ(merged.lods_built, 0u);
+    EXPECT_EQ(test::read_text(s.folder / "merged" / "results.csv"), whole);
+
+    // A missing shard is computed by the merge (resuming); a shard that disagrees is refused.
+    SweepReport resumed = merge_sweep(config, {folders[0], folders[1], folders[2]}, (s.folder / "resumed").string(), 2);
+    EXPECT_EQ(resumed.rows_computed, 4u);
+    EXPECT_EQ(test::read_text(s.folder / "resumed" / "results.csv"), whole);
+    std::string changed = test::read_text(s.folder / "shards" / "1" / "results.csv");
+    changed.insert(changed.rfind(',') + 1, "9");
+    test::write_text(s.folder / "shards" / "1" / "results.csv", changed);
+    EXPECT_THROW(merge_sweep(config, folders, (s.folder / "merged").string(), 2), InputError);
+
+    EXPECT_EQ(parse_sweep_shard(config, "2:bottom-up").model, 1u);
+    EXPECT_THROW(parse_sweep_shard(config, "3:top-down"), InputError);
+    EXPECT_THROW(parse_sweep_shard(config, "1:box-area"), InputError);  // not one of the config's modes
+    EXPECT_THROW(parse_sweep_shard(config, "1"), InputError);
+    EXPECT_THROW(parse_sweep_shard(config, "0:top-down"), InputError);
+}
+
 TEST(Sweep, RefusesAResultsFileWithOtherColumns) {
     SmallSweep s = small_sweep("sweep_columns");
     std::filesystem::create_directories(s.folder / "out");

@@ -6,7 +6,8 @@
 # per level mode of the sweep's CSV, the runs table one per job; no number
 # macro is nan; the PDF has more than one page; the executed notebooks hold
 # no error; a second run of snakemake has nothing to do; a notebook run again
-# writes byte-identical figures and tables.
+# writes byte-identical figures and tables; a sweep's merged shards equal the
+# same sweep run as one job.
 # Usage: workflow_end_to_end.sh BOXLOD REPO
 set -u
 boxlod=$(realpath "$1")
@@ -73,7 +74,10 @@ check(sorted(names) == sorted(modes) and len(rows) == len(modes),
 check(all(b in modes for b in ("simplification", "simplification-best", "single-box")), "the manual sweep has every baseline")
 profile = yaml.safe_load(open(os.path.join(out, "profile.yaml")))
 jobs = len(profile["sweeps"]) + len(profile["city"]["strategies"])
-check(len(body_rows("table_runs")) == jobs, f"table_runs: one row per job ({jobs})")
+check(len(body_rows("table_runs")) == jobs, f"table_runs: one row per sweep and city run ({jobs})")
+models = {row["model"] for row in csv.DictReader(open(os.path.join(out, "sweeps", "buildings", "results.csv")))}
+check(models == set(profile["buildings"]), f"the buildings sweep has the profile's {len(profile['buildings'])} buildings")
+check(len(body_rows("table_models")) == 5 + len(profile["buildings"]), "table_models: the five models and each building")
 check(len(body_rows("table_strategies")) == len(profile["city"]["strategies"]),
       "table_strategies: one row per strategy")
 for path in sorted(glob.glob(os.path.join(generated, "numbers_*.tex"))):
@@ -110,6 +114,13 @@ logged=$(sed -n 's/^Output written on paper.pdf (\([0-9]*\) pages.*/\1/p' "$out/
 if [ "${pages:-0}" -gt 1 ] && [ "$pages" = "$logged" ]; then ok "paper.pdf: $pages pages"
 else fail "paper.pdf: $pages pages in the file, LaTeX says '$logged'"; fi
 if grep -q 'undefined' "$out/paper/paper.log"; then fail "undefined references or citations in paper.log"; fi
+
+# Sharded and merged, a sweep writes what one job writes (docs/sweeps.md: Shards).
+shards=$(ls -d "$out"/sweeps/manual/shards/*/ | wc -l)
+"$boxlod" sweep "$out/configs/manual.txt" -o "$work/manual_whole" > /dev/null 2>&1 || fail "the manual sweep in one job failed"
+if [ "$shards" -gt 1 ] && cmp -s "$work/manual_whole/results.csv" "$out/sweeps/manual/results.csv"; then
+  ok "manual sweep: $shards shards merged = one job, byte for byte"
+else fail "manual sweep: $shards shards, merged results.csv differs from one job's"; fi
 
 # A second run has nothing to do.
 snake > "$work/run2.txt" 2>&1 || fail "second snakemake run failed"

@@ -156,7 +156,8 @@ float shininess_of_glossiness(float glossiness) {
 tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture) {
     tinygltf::Value::Object fields{{"diffuseFactor", number_array(material.base_color.data(), 4)},
                                    {"specularFactor", number_array(material.specular_color.data(), 3)},
-                                   {"glossinessFactor", tinygltf::Value(json_number(glossiness_of_shininess(material.shininess)))}};
+                                   {"glossinessFactor", tinygltf::Value(json_number(material.glossiness >= 0 ? material.glossiness
+                                                                                                  : glossiness_of_shininess(material.shininess)))}};
     auto texture_info = [](int index) { return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}}); };
     if (diffuse_texture >= 0) fields["diffuseTexture"] = texture_info(diffuse_texture);
     if (specular_texture >= 0) fields["specularGlossinessTexture"] = texture_info(specular_texture);
@@ -193,6 +194,7 @@ void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlac
         glossiness = float(g.GetNumberAsDouble());
     }
     material.shininess = shininess_of_glossiness(glossiness);
+    material.glossiness = glossiness;
     if (int diffuse = texture("diffuseTexture"); diffuse >= 0) material.base_color_texture = diffuse;
     material.specular_texture = texture("specularGlossinessTexture");
     material.specular_glossiness = true;

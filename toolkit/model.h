@@ -51,6 +51,7 @@ struct Material {
     // them back as that extension (docs/design.md: Files).
     bool specular_glossiness = false;
     int specular_texture = -1;  // the extension's specularGlossinessTexture: RGB specular, A glossiness
+    float glossiness = -1;      // its glossinessFactor as read (kept exactly); < 0: from the shininess
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
     float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK

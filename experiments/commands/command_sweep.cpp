@@ -5,11 +5,24 @@
 #include "experiments/commands/commands.h"
 #include "experiments/sweep.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 namespace boxlod {
 namespace {
+
+// The folders under `parent` that hold a results.csv, by name.
+std::vector<std::string> shard_folders(const std::string& parent) {
+    std::error_code error;
+    std::vector<std::string> folders;
+    for (const auto& entry : std::filesystem::directory_iterator(parent, error))
+        if (std::filesystem::is_regular_file(entry.path() / "results.csv")) folders.push_back(entry.path().string());
+    if (error) throw_input_error(parent, "", "cannot read the shards' folder: " + error.message());
+    if (folders.empty()) throw_input_error(parent, "", "no shard folder with a results.csv in it");
+    std::sort(folders.begin(), folders.end());
+    return folders;
+}
 
 int run_sweep_command(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod sweep: -o/--output OUTDIR is required");
@@ -17,7 +30,11 @@ int run_sweep_command(const Arguments& arguments) {
     int threads = arguments.integer("threads", -1);  // -1: the config's
     SweepConfig config = load_sweep_config(arguments.positionals[0]);
     const std::string& output = arguments.text("output");
-    SweepReport r = run_sweep(config, output, threads, stderr);
+    if (arguments.has("shard") && arguments.has("merge")) throw InputError("boxlod sweep: --shard and --merge exclude each other");
+    if (arguments.has("shard")) config = shard_config(config, parse_sweep_shard(config, arguments.text("shard")));
+    std::vector<std::string> shards;
+    if (arguments.has("merge")) shards = shard_folders(arguments.text("merge"));
+    SweepReport r = merge_sweep(config, shards, output, threads, stderr);
     KeyValues report{text_entry("results", (std::filesystem::path(output) / "results.csv").string()),
                      text_entry("timings", (std::filesystem::path(output) / "timings.csv").string()),
                      number_entry("rows", double(r.rows)),
@@ -47,6 +64,10 @@ Subcommand sweep_subcommand() {
              "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
              {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, 'o'},
               {"threads", "N", "threads to use (default: the config's threads, 0 = all cores)", thread_count_range},
+              {"shard", "M:MODE", "only model M (from 1) with level mode MODE, and the baselines if MODE is the config's first: "
+                                  "a part of the sweep that runs on its own (docs/sweeps.md: Shards)"},
+              {"merge", "SHARDS", "start from the rows of the shards' output folders under SHARDS; OUTDIR/results.csv "
+                                  "gets the bytes of the whole sweep's"},
               {"json", "", "print one JSON object instead of key = value lines"}},
              1, 1},
             run_sweep_command};

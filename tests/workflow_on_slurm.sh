@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The experiment workflow on a real scheduler: a one-node SLURM cluster started
+# here (tests/slurm_one_node.sh), the smoke profile run through
+# `snakemake --profile experiments/workflow/slurm`, and the same profile run
+# locally. Checks: every job but Snakemake's local rules went through sbatch
+# (each sweep shard, merge and city run records its SLURM job id, and
+# Snakemake submitted as many jobs as it ran); the sweeps' results.csv, the
+# city runs' frames.csv and every generated table, number and figure but the
+# runs' own (times, hosts) equal the local run's byte for byte. Prints one
+# SKIP line and exits 77 when this machine cannot start SLURM.
+# Usage: workflow_on_slurm.sh BOXLOD REPO [CPUS]
+#   CPUS: the CPUs slurmd offers (default: all); a job's threads are capped to them.
+set -u
+boxlod=$(realpath "$1")
+repo=$(realpath "$2")
+cpus=${3:-$(nproc)}
+work=$(mktemp -d)
+cluster=$work/cluster
+source "$repo/tests/slurm_one_node.sh"
+trap 'slurm_stop "$cluster"; [ -n "${KEEP_WORK:-}" ] || rm -rf "$work"' EXIT
+python=/usr/bin/python3
+export USER=${USER:-$(id -un)}  # Snakemake's SLURM executor reads it (a CI shell may not set it)
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+ok() { echo "ok   $*"; }
+
+if ! slurm_start "$cluster" "$cpus"; then
+  echo "SKIP workflow_on_slurm: cannot start a one-node SLURM cluster here: $SLURM_SKIP"
+  exit 77
+fi
+ok "one-node SLURM cluster up: $(sinfo -h -o '%P %D %c %t')"
+
+threads=()
+[ "$cpus" -lt 2 ] && threads=(--set-threads sweep_shard="$cpus" sweep="$cpus" city="$cpus")
+snake() {  # snake FOLDER ARGS...: the smoke profile into FOLDER/out, run from FOLDER
+  local folder=$1
+  shift
+  mkdir -p "$folder"
+  (cd "$folder" && /usr/bin/snakemake -s "$repo/experiments/Snakefile" \
+     --config profile=smoke out="$folder/out" boxlod="$boxlod" python="$python" "$@")
+}
+
+start=$(date +%s)
+if ! snake "$work/slurm" --profile "$repo/experiments/workflow/slurm" "${threads[@]}" > "$work/slurm.txt" 2>&1; then
+  tail -n 40 "$work/slurm.txt"
+  for log in "$work"/slurm/out/logs/*.log "$work"/slurm/.snakemake/slurm_logs/*/*.log; do
+    [ -s "$log" ] && { echo "--- $log"; tail -n 10 "$log"; }
+  done
+  echo "FAIL the workflow did not finish on SLURM"; exit 1
+fi
+slurm_seconds=$(( $(date +%s) - start ))
+ok "workflow on SLURM ($cpus CPUs) finished in $slurm_seconds s"
+start=$(date +%s)
+snake "$work/local" -j "$cpus" "${threads[@]}" > "$work/local.txt" 2>&1 || { tail -n 40 "$work/local.txt"; fail "the local run failed"; }
+ok "the same profile locally in $(( $(date +%s) - start )) s"
+
+# Every job went through the scheduler: Snakemake submitted each job it ran but
+# the local rules, and every job that records its host ran inside a SLURM job.
+ran=$(awk '/^Job stats:/ {on = 1; next} on && $1 == "total" {print $2; exit}' "$work/slurm.txt")
+local_jobs=$(awk '/^Job stats:/ {on = 1; next} on && ($1 == "all" || $1 == "profile" || $1 == "sweep_config") {n += $2} on && $1 == "total" {print n + 0; exit}' "$work/slurm.txt")
+submitted=$(grep -c 'has been submitted with SLURM jobid' "$work/slurm.txt")
+if [ -n "$ran" ] && [ "$submitted" -gt 0 ] && [ "$submitted" -eq $((ran - local_jobs)) ]; then
+  ok "$submitted of $ran jobs submitted with sbatch (the other $local_jobs: local rules)"
+else fail "jobs run: ${ran:-?}, local rules: ${local_jobs:-?}, submitted to SLURM: $submitted"; fi
+hosts=$(find "$work/slurm/out" -name host.txt | wc -l)
+outside=$(find "$work/slurm/out" -name host.txt -exec grep -l '^slurm_job = none$' {} + | wc -l)
+if [ "$hosts" -gt 0 ] && [ "$outside" -eq 0 ]; then ok "$hosts sweep shard, merge and city jobs ran inside SLURM jobs"
+else fail "$outside of $hosts jobs ran outside SLURM"; fi
+
+# The same bytes as the local run.
+compared=0
+while read -r file; do
+  compared=$((compared + 1))
+  cmp -s "$work/slurm/out/$file" "$work/local/out/$file" || fail "differs from the local run: $file"
+done < <(cd "$work/local/out" && find sweeps city paper/generated -type f \
+           \( -name results.csv -o -name frames.csv -o -name '*.tex' -o -name '*.png' \) \
+           ! -path '*/shards/*' ! -name '*_runs.tex' | sort)
+[ "$compared" -gt 20 ] && ok "$compared files equal the local run's byte for byte" || fail "only $compared files compared"
+
+echo "seconds_on_slurm = $slurm_seconds"
+[ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
+echo "all checks passed"
