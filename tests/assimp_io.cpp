@@ -84,7 +84,9 @@ TEST(AssimpIo, FzkHausGlassIsBlendedAndKeptByConvert) {
     ASSERT_NE(glass, model.materials.end());
     EXPECT_NEAR(glass->base_color.w(), 0.12f, 1e-6);
     for (const Material& m : model.materials)
-        if (!is_glass(m)) EXPECT_EQ(m.base_color.w(), 1) << m.name;
+        if (!is_glass(m)) {
+            EXPECT_EQ(m.base_color.w(), 1) << m.name;
+        }
     auto folder = test::scratch_folder("assimp_fzk_glass");
     save_model(model, (folder / "fzk.glb").string());
     Model again = load_model((folder / "fzk.glb").string());

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "test_support.h"
+#include "toolkit/cost.h"
 #include "toolkit/gltf_extras.h"
 #include "toolkit/model_io.h"
 
@@ -260,6 +261,50 @@ TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
     expect_input_error(file("diffuse.gltf", R"({"diffuseFactor": [1, 1]})"));
     expect_input_error(file("texture.gltf", R"({"diffuseTexture": {"index": 4}})"));
     expect_input_error(file("form.gltf", R"({"specularGlossinessTexture": {"texCoord": 0}})"));
+}
+
+// KHR_materials_specular (a metallic-roughness material's specular strength and
+// colour) is kept as read and written back, its textures with the model's.
+TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
+    auto folder = test::scratch_folder("gltf_khr_specular");
+    auto file = [&](const std::string& name, const std::string& extension) {
+        std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
+          "extensionsUsed": ["KHR_materials_specular"],
+          "materials": [{"extensions": {"KHR_materials_specular": )" + extension + "}}]";
+        body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
+        test::write_text(folder / name, gltf_with_buffer(triangle_bytes(), body));
+        return (folder / name).string();
+    };
+    Model model = load_model(file("specular.gltf", R"({"specularFactor": 0.25, "specularColorFactor": [2, 0.5, 1]})"));
+    ASSERT_TRUE(model.materials[0].specular_extension);
+    const SpecularExtension read = *model.materials[0].specular_extension;
+    EXPECT_EQ(read.factor, 0.25f);
+    EXPECT_EQ(read.color_factor, Eigen::Vector3f(2, 0.5f, 1));  // above 1 is allowed: it scales F0
+    EXPECT_EQ(read.texture, -1);
+    EXPECT_FALSE(model.materials[0].specular_glossiness);
+    // Written back with the model's textures, which a subtree copy renumbers.
+    model.textures.push_back({"strength.png", Image8(2, 2, 4, 200), {}});
+    model.textures.push_back({"tint.png", Image8(2, 2, 4, 100), {}});
+    model.materials[0].specular_extension->texture = 0;
+    model.materials[0].specular_extension->color_texture = 1;
+    save_model(model, (folder / "converted.glb").string());
+    Model back = load_model((folder / "converted.glb").string());
+    ASSERT_TRUE(back.materials[0].specular_extension);
+    const SpecularExtension& again = *back.materials[0].specular_extension;
+    EXPECT_EQ(again.factor, read.factor);
+    EXPECT_EQ(again.color_factor, read.color_factor);
+    ASSERT_GE(again.texture, 0);
+    ASSERT_GE(again.color_texture, 0);
+    EXPECT_EQ(back.textures[std::size_t(again.texture)].image.pixels, model.textures[0].image.pixels);
+    EXPECT_EQ(back.textures[std::size_t(again.color_texture)].image.pixels, model.textures[1].image.pixels);
+    EXPECT_GT(model_cost(back).texture_bytes, 0u);  // its textures are paid for
+    // Every factor has a range; textures must exist.
+    EXPECT_NE(expect_input_error(file("factor.gltf", R"({"specularFactor": 1.5})")).find("specularFactor"), std::string::npos);
+    EXPECT_NE(expect_input_error(file("colour.gltf", R"({"specularColorFactor": [0, -1, 0]})")).find("specularColorFactor"),
+              std::string::npos);
+    expect_input_error(file("huge.gltf", R"({"specularColorFactor": [1e30, 1, 1]})"));
+    expect_input_error(file("texture.gltf", R"({"specularTexture": {"index": 4}})"));
+    expect_input_error(file("form.gltf", R"({"specularColorTexture": {"texCoord": 0}})"));
 }
 
 TEST(GltfIo, GlossinessAndShininessConvertBothWays) {

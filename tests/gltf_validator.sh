@@ -29,6 +29,15 @@ quiet "$boxlod" convert "$fzk" -o "$work/fzk.gltf"
 quiet "$boxlod" convert "$work/house.glb" -o "$work/house_converted.gltf"
 specular_glossiness=/usr/share/assimp/models/glTF2/BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf
 quiet "$boxlod" convert "$specular_glossiness" -o "$work/specular_glossiness.glb"   # its extension kept
+# Debian's metallic-roughness BoxTextured with KHR_materials_specular added (strength, and tint from its logo).
+box=/usr/share/assimp/models/glTF2/BoxTextured-glTF
+mkdir "$work/specular" && cp "$box"/* "$work/specular/"
+node -e '
+const fs = require("fs"), path = process.argv[1], gltf = JSON.parse(fs.readFileSync(path));
+gltf.extensionsUsed = ["KHR_materials_specular"];
+gltf.materials[0].extensions = {KHR_materials_specular: {specularFactor: 0.5, specularColorFactor: [1, 0.75, 0.5], specularColorTexture: {index: 0}}};
+fs.writeFileSync(path, JSON.stringify(gltf));' "$work/specular/BoxTextured.gltf"
+quiet "$boxlod" convert "$work/specular/BoxTextured.gltf" -o "$work/specular.glb"
 quiet "$boxlod" build "$work/house.glb" -o "$work/level" --level 3 --resolution 256   # one level
 quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
 mkdir "$work/chain"
@@ -39,13 +48,18 @@ quiet "$boxlod" tiles "$work/city2.glb" -o "$work/tiles" --resolution 256
 
 cd "$work"
 node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" house.glb manual.gltf city.glb fzk.glb fzk.gltf \
-  house_converted.gltf specular_glossiness.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
+  house_converted.gltf specular_glossiness.glb specular.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
 # convert keeps the source's specular-glossiness material, factors as they were.
 node -e '
 const b = require("fs").readFileSync(process.argv[1]);
 const sg = JSON.parse(b.subarray(20, 20 + b.readUInt32LE(12))).materials[0].extensions.KHR_materials_pbrSpecularGlossiness;
 process.exit(sg && sg.glossinessFactor === 1 && sg.specularFactor[0] === 0.2 && sg.diffuseTexture.index === 0 ? 0 : 1);' \
   specular_glossiness.glb || { echo "gltf_validator: convert lost KHR_materials_pbrSpecularGlossiness" >&2; exit 1; }
+node -e '
+const b = require("fs").readFileSync(process.argv[1]);
+const s = JSON.parse(b.subarray(20, 20 + b.readUInt32LE(12))).materials[0].extensions.KHR_materials_specular;
+process.exit(s && s.specularFactor === 0.5 && s.specularColorFactor[1] === 0.75 && s.specularColorTexture.index >= 0 ? 0 : 1);' \
+  specular.glb || { echo "gltf_validator: convert lost KHR_materials_specular" >&2; exit 1; }
 # And the validator does fail: a node naming a mesh that does not exist.
 echo '{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 5}]}' > broken.gltf
 if node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" broken.gltf > /dev/null; then

@@ -21,9 +21,6 @@ std::uint64_t sum_over_mip_chain(int width, int height, PerLevel per_level) {
     return sum;
 }
 
-// The role a material gives a texture decides its GPU format.
-enum class Role { color, normal, height };
-
 // Whether any texel's alpha is below 255 (`partial`: strictly between 0 and 255).
 bool has_alpha(const Image8& image, bool partial = false) {
     if (image.channels != 4 && image.channels != 2) return false;
@@ -32,11 +29,11 @@ bool has_alpha(const Image8& image, bool partial = false) {
     return false;
 }
 
-GpuFormat gpu_format(const Texture& texture, Role role) {
+GpuFormat gpu_format(const Texture& texture, TextureUse role) {
     switch (role) {
-        case Role::normal: return GpuFormat::bc5;  // x and y; z is rebuilt in the shader
-        case Role::height: return GpuFormat::bc4;
-        case Role::color: break;
+        case TextureUse::normal: return GpuFormat::bc5;  // x and y; z is rebuilt in the shader
+        case TextureUse::scalar: return GpuFormat::bc4;
+        case TextureUse::color: break;
     }
     // BC1 keeps 1-bit alpha (cut-outs, baked coverage); anything in between needs BC7.
     return has_alpha(texture.image, true) ? GpuFormat::bc7 : GpuFormat::bc1;
@@ -44,9 +41,9 @@ GpuFormat gpu_format(const Texture& texture, Role role) {
 
 // At the format boxlod writes for the role: colour RGBA8 where some texel is
 // not opaque, else RGB8; normal RGB8; height 16-bit (8-bit if so stored) grey.
-std::uint64_t uncompressed_bytes(const Texture& texture, Role role) {
+std::uint64_t uncompressed_bytes(const Texture& texture, TextureUse role) {
     if (!texture.image16.empty()) return mip_chain_texels(texture.image16.width, texture.image16.height) * 2;
-    std::uint64_t texel_bytes = role == Role::height ? 1 : role == Role::normal ? 3 : has_alpha(texture.image) ? 4 : 3;
+    std::uint64_t texel_bytes = role == TextureUse::scalar ? 1 : role == TextureUse::normal ? 3 : has_alpha(texture.image) ? 4 : 3;
     return mip_chain_texels(texture.image.width, texture.image.height) * texel_bytes;
 }
 
@@ -71,13 +68,11 @@ CostParts cost_parts(const Model& model) {
         }
     parts.draw_calls = materials.size();
 
-    std::map<int, Role> roles;  // each texture once, in the role of the first material that uses it
+    std::map<int, TextureUse> roles;  // each texture once, in the role of the first material that uses it
     for (int m : materials) {
         if (m < 0 || m >= int(model.materials.size())) continue;
         const Material& material = model.materials[std::size_t(m)];
-        for (auto [index, role] : {std::pair{material.base_color_texture, Role::color}, std::pair{material.normal_texture, Role::normal},
-                                   std::pair{material.height_texture, Role::height},
-                                   std::pair{material.specular_texture, Role::color}})
+        for (auto [index, role] : texture_slots(material))
             if (index >= 0 && index < int(model.textures.size())) roles.emplace(index, role);
     }
     for (auto [index, role] : roles) {

@@ -210,13 +210,17 @@ void add_materials(Writer& w, const Model& model) {
         out.alphaMode = enum_name(alpha_modes(), material.alpha_mode);
         if (material.alpha_mode == AlphaMode::mask) out.alphaCutoff = json_number(material.alpha_cutoff);
         out.extras = material_extras(material, texture(material.height_texture));
-        if (material.specular_glossiness) {
-            out.extensions[specular_glossiness_name] =
-                specular_glossiness_extension(material, texture(material.base_color_texture), texture(material.specular_texture));
-            if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), specular_glossiness_name) ==
-                w.gltf.extensionsUsed.end())
-                w.gltf.extensionsUsed.push_back(specular_glossiness_name);
-        }
+        auto add_extension = [&](const char* name, tinygltf::Value value) {
+            out.extensions[name] = std::move(value);
+            if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), name) == w.gltf.extensionsUsed.end())
+                w.gltf.extensionsUsed.push_back(name);
+        };
+        if (material.specular_glossiness)
+            add_extension(specular_glossiness_name, specular_glossiness_extension(material, texture(material.base_color_texture),
+                                                                                  texture(material.specular_texture)));
+        if (const auto& specular = material.specular_extension)
+            add_extension(specular_extension_name,
+                          specular_extension_value(*specular, texture(specular->texture), texture(specular->color_texture)));
         auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
         w.materials.push_back(int(equal - w.gltf.materials.begin()));
         if (equal == w.gltf.materials.end()) w.gltf.materials.push_back(out);

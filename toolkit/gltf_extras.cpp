@@ -153,29 +153,35 @@ float shininess_of_glossiness(float glossiness) {
     return float(std::clamp(2 / std::pow(roughness, 4) - 2, shininess_range.min, shininess_range.max));
 }
 
-tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture) {
-    tinygltf::Value::Object fields{{"diffuseFactor", number_array(material.base_color.data(), 4)},
-                                   {"specularFactor", number_array(material.specular_color.data(), 3)},
-                                   {"glossinessFactor", tinygltf::Value(json_number(material.glossiness >= 0 ? material.glossiness
-                                                                                                  : glossiness_of_shininess(material.shininess)))}};
-    auto texture_info = [](int index) { return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}}); };
-    if (diffuse_texture >= 0) fields["diffuseTexture"] = texture_info(diffuse_texture);
-    if (specular_texture >= 0) fields["specularGlossinessTexture"] = texture_info(specular_texture);
-    return tinygltf::Value(std::move(fields));
-}
+namespace {
 
-void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
-                              const std::function<int(int)>& texture_image, Material& material) {
-    const ExtrasPlace here{at.file, at.place + " " + specular_glossiness_name};
-    if (!extension.IsObject()) throw_input_error(here.file, here.place, "expected an object");
-    auto factors = [&](const char* field, auto defaults) {
+tinygltf::Value texture_info(int index) { return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}}); }
+
+// A material extension's object, read field by field; `here` names it in errors.
+struct ExtensionReader {
+    const tinygltf::Value& extension;
+    ExtrasPlace here;
+    const std::function<int(int)>& texture_image;
+
+    // N numbers in [min, max], or `defaults` when the field is absent.
+    template <int N>
+    Eigen::Matrix<float, N, 1> factors(const char* field, const Eigen::Matrix<float, N, 1>& defaults, NumberRange range) const {
         if (!extension.Has(field)) return defaults;
-        auto values = read_numbers<int(decltype(defaults)::RowsAtCompileTime)>(extension.Get(field), here, field);
-        if (!((values.array() >= 0).all() && (values.array() <= 1).all()))
-            throw_input_error(here.file, here.place + " " + field, "expected numbers in [0, 1]");
+        auto values = read_numbers<N>(extension.Get(field), here, field);
+        if (!((values.array() >= range.min).all() && (values.array() <= range.max).all()))
+            throw_input_error(here.file, here.place + " " + field,
+                              "expected numbers in [" + format_number(range.min) + ", " + format_number(range.max) + "]");
         return values;
-    };
-    auto texture = [&](const char* field) {
+    }
+    float factor(const char* field, float fallback) const {
+        if (!extension.Has(field)) return fallback;
+        const tinygltf::Value& v = extension.Get(field);
+        if (!v.IsNumber() || !(v.GetNumberAsDouble() >= 0 && v.GetNumberAsDouble() <= 1))
+            throw_input_error(here.file, here.place + " " + field, "expected a number in [0, 1]");
+        return float(v.GetNumberAsDouble());
+    }
+    // boxlod's texture of a textureInfo field; -1 when absent.
+    int texture(const char* field) const {
         if (!extension.Has(field)) return -1;
         const tinygltf::Value& info = extension.Get(field);
         if (!info.IsObject() || !info.Get("index").IsNumber())
@@ -183,21 +189,60 @@ void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlac
         const double index = info.Get("index").GetNumberAsDouble();
         if (!(index >= 0 && index <= 1e9)) throw_input_error(here.file, here.place + " " + field, "texture index out of range");
         return texture_image(int(index));
-    };
-    material.base_color = factors("diffuseFactor", Eigen::Vector4f(1, 1, 1, 1));
-    material.specular_color = factors("specularFactor", Eigen::Vector3f(1, 1, 1));
-    float glossiness = 1;
-    if (extension.Has("glossinessFactor")) {
-        const tinygltf::Value& g = extension.Get("glossinessFactor");
-        if (!g.IsNumber() || !(g.GetNumberAsDouble() >= 0 && g.GetNumberAsDouble() <= 1))
-            throw_input_error(here.file, here.place + " glossinessFactor", "expected a number in [0, 1]");
-        glossiness = float(g.GetNumberAsDouble());
     }
+};
+
+ExtensionReader extension_reader(const tinygltf::Value& extension, const ExtrasPlace& at, const char* name,
+                                 const std::function<int(int)>& texture_image) {
+    ExtensionReader reader{extension, {at.file, at.place + " " + name}, texture_image};
+    if (!extension.IsObject()) throw_input_error(reader.here.file, reader.here.place, "expected an object");
+    return reader;
+}
+
+constexpr NumberRange unit_range{0, 1};
+
+}  // namespace
+
+tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture) {
+    tinygltf::Value::Object fields{{"diffuseFactor", number_array(material.base_color.data(), 4)},
+                                   {"specularFactor", number_array(material.specular_color.data(), 3)},
+                                   {"glossinessFactor", tinygltf::Value(json_number(material.glossiness >= 0 ? material.glossiness
+                                                                                                  : glossiness_of_shininess(material.shininess)))}};
+    if (diffuse_texture >= 0) fields["diffuseTexture"] = texture_info(diffuse_texture);
+    if (specular_texture >= 0) fields["specularGlossinessTexture"] = texture_info(specular_texture);
+    return tinygltf::Value(std::move(fields));
+}
+
+void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
+                              const std::function<int(int)>& texture_image, Material& material) {
+    const ExtensionReader in = extension_reader(extension, at, specular_glossiness_name, texture_image);
+    material.base_color = in.factors<4>("diffuseFactor", Eigen::Vector4f(1, 1, 1, 1), unit_range);
+    material.specular_color = in.factors<3>("specularFactor", Eigen::Vector3f(1, 1, 1), unit_range);
+    const float glossiness = in.factor("glossinessFactor", 1);
     material.shininess = shininess_of_glossiness(glossiness);
     material.glossiness = glossiness;
-    if (int diffuse = texture("diffuseTexture"); diffuse >= 0) material.base_color_texture = diffuse;
-    material.specular_texture = texture("specularGlossinessTexture");
+    if (int diffuse = in.texture("diffuseTexture"); diffuse >= 0) material.base_color_texture = diffuse;
+    material.specular_texture = in.texture("specularGlossinessTexture");
     material.specular_glossiness = true;
+}
+
+tinygltf::Value specular_extension_value(const SpecularExtension& specular, int texture, int color_texture) {
+    tinygltf::Value::Object fields{{"specularFactor", tinygltf::Value(json_number(specular.factor))},
+                                   {"specularColorFactor", number_array(specular.color_factor.data(), 3)}};
+    if (texture >= 0) fields["specularTexture"] = texture_info(texture);
+    if (color_texture >= 0) fields["specularColorTexture"] = texture_info(color_texture);
+    return tinygltf::Value(std::move(fields));
+}
+
+SpecularExtension read_specular_extension(const tinygltf::Value& extension, const ExtrasPlace& at,
+                                          const std::function<int(int)>& texture_image) {
+    const ExtensionReader in = extension_reader(extension, at, specular_extension_name, texture_image);
+    SpecularExtension specular;
+    specular.factor = in.factor("specularFactor", 1);
+    specular.color_factor = in.factors<3>("specularColorFactor", Eigen::Vector3f(1, 1, 1), specular_color_factor_range);
+    specular.texture = in.texture("specularTexture");
+    specular.color_texture = in.texture("specularColorTexture");
+    return specular;
 }
 
 }  // namespace boxlod

@@ -276,6 +276,15 @@ tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string
     return gltf;
 }
 
+// The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
+void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place, Material& material) {
+    auto texture = [&](int index) { return texture_image(reader, index, place); };
+    if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
+        read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
+    if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())
+        material.specular_extension = read_specular_extension(extension->second, {reader.file, place}, texture);
+}
+
 // One texture per image; an image that is only a height map keeps 16 bits.
 void read_textures(const Reader& reader, Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
@@ -284,13 +293,10 @@ void read_textures(const Reader& reader, Model& model) {
         const std::string place = "material " + std::to_string(m);
         for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
             if (int image = texture_image(reader, texture, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
-        if (auto extension = gltf.materials[m].extensions.find(specular_glossiness_name); extension != gltf.materials[m].extensions.end()) {
-            Material colours;  // only for the images it names
-            read_specular_glossiness(extension->second, {reader.file, place},
-                                     [&](int texture) { return texture_image(reader, texture, place); }, colours);
-            for (int image : {colours.base_color_texture, colours.specular_texture})
-                if (image >= 0) colour_or_normal[std::size_t(image)] = true;
-        }
+        Material extensions;  // only for the images they name, all 8-bit
+        read_material_extensions(reader, gltf.materials[m], place, extensions);
+        for (auto [image, use] : texture_slots(std::as_const(extensions)))
+            if (image >= 0) colour_or_normal[std::size_t(image)] = true;
     }
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
         model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
@@ -317,9 +323,7 @@ void read_materials(const Reader& reader, Model& model) {
         if (!alpha_cutoff_range.contains(in.alphaCutoff))
             reader.fail(place, "alphaCutoff " + out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
         material.alpha_cutoff = float(in.alphaCutoff);
-        if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
-            read_specular_glossiness(extension->second, {reader.file, place},
-                                     [&](int texture) { return texture_image(reader, texture, place); }, material);
+        read_material_extensions(reader, in, place, material);
         read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
         model.materials.push_back(material);
     }

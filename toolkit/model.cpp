@@ -24,6 +24,23 @@ TextureDigest texture_digest(const Texture& texture) {
     return d;
 }
 
+std::vector<std::pair<int*, TextureUse>> texture_slots(Material& m) {
+    std::vector<std::pair<int*, TextureUse>> slots = {{&m.base_color_texture, TextureUse::color},
+                                                      {&m.normal_texture, TextureUse::normal},
+                                                      {&m.height_texture, TextureUse::scalar},
+                                                      {&m.specular_texture, TextureUse::color}};
+    if (m.specular_extension)
+        slots.insert(slots.end(), {{&m.specular_extension->texture, TextureUse::scalar},
+                                   {&m.specular_extension->color_texture, TextureUse::color}});
+    return slots;
+}
+
+std::vector<std::pair<int, TextureUse>> texture_slots(const Material& material) {
+    std::vector<std::pair<int, TextureUse>> slots;
+    for (auto [index, use] : texture_slots(const_cast<Material&>(material))) slots.emplace_back(*index, use);
+    return slots;
+}
+
 int add_node(Model& model, int parent, std::string name) {
     int index = int(model.nodes.size());
     Node& node = model.nodes.emplace_back();
@@ -97,10 +114,15 @@ void validate_model(const Model& model) {
     }
     for (const Material& material : model.materials) {
         const std::string place = "material '" + material.name + "'";
-        for (int texture : {material.base_color_texture, material.normal_texture, material.height_texture, material.specular_texture})
+        for (auto [texture, use] : texture_slots(material))
             if (texture >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
         if (!material.base_color.allFinite() || !material.specular_color.allFinite())
             throw_input_error(file, place, "colour is NaN or infinite");
+        if (const auto& extension = material.specular_extension;
+            extension && !(extension->factor >= 0 && extension->factor <= 1 &&
+                           (extension->color_factor.array() >= specular_color_factor_range.min).all() &&
+                           (extension->color_factor.array() <= specular_color_factor_range.max).all()))
+            throw_input_error(file, place, "KHR_materials_specular factor out of range");
         if (!shininess_range.contains(material.shininess))
             throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
     }

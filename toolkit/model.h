@@ -38,6 +38,17 @@ struct Texture {
 using TextureDigest = std::pair<std::uint64_t, std::uint64_t>;
 TextureDigest texture_digest(const Texture& texture);
 
+// glTF KHR_materials_specular as the source stated it (a metallic-roughness
+// material's dielectric specular strength and colour): kept and written back
+// by the glTF export; boxlod shades with specular_color, not with it.
+struct SpecularExtension {
+    float factor = 1;                       // specularFactor, [0, 1]
+    Eigen::Vector3f color_factor{1, 1, 1};  // specularColorFactor, [0, specular_color_factor_range.max]
+    int texture = -1;                       // specularTexture: strength in A
+    int color_texture = -1;                 // specularColorTexture: RGB, sRGB
+};
+constexpr NumberRange specular_color_factor_range{0, 1000};  // the extension allows [0, inf): boxlod's bound
+
 struct Material {
     std::string name;
     Eigen::Vector4f base_color{1, 1, 1, 1};  // linear RGBA
@@ -52,10 +63,20 @@ struct Material {
     bool specular_glossiness = false;
     int specular_texture = -1;  // the extension's specularGlossinessTexture: RGB specular, A glossiness
     float glossiness = -1;      // its glossinessFactor as read (kept exactly); < 0: from the shininess
+    std::optional<SpecularExtension> specular_extension = std::nullopt;
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
     float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK
 };
+
+// What a material samples a texture for: it decides the texture's GPU format
+// and bytes (docs/design.md: Cost).
+enum class TextureUse { color, normal, scalar };  // scalar: one channel (height maps, specular strength)
+
+// Every texture index of a material with its use: the one list all code that
+// walks a material's textures (validation, cost, copying, export) reads.
+std::vector<std::pair<int*, TextureUse>> texture_slots(Material& material);
+std::vector<std::pair<int, TextureUse>> texture_slots(const Material& material);
 
 // A triangle list with one material. `polygon_count` is how many polygons the
 // source stored (a quad is one polygon, two triangles): the manual's # Faces.

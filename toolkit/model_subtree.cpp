@@ -14,10 +14,7 @@ int MaterialCopier::material(int index) {
     auto it = materials.find(index);
     if (it != materials.end()) return it->second;
     Material m = source.materials[index];
-    m.base_color_texture = texture(m.base_color_texture);
-    m.normal_texture = texture(m.normal_texture);
-    m.height_texture = texture(m.height_texture);
-    m.specular_texture = texture(m.specular_texture);
+    for (auto [index, use] : texture_slots(m)) *index = texture(*index);
     out.materials.push_back(m);
     return materials[index] = int(out.materials.size()) - 1;
 }

@@ -1,5 +1,7 @@
 #include "toolkit/vertex_layout.h"
 
+#include <algorithm>
+
 namespace boxlod {
 
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
@@ -9,7 +11,9 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
     VertexLayout layout;
     layout.normals = !primitive.normals.empty();
-    layout.uvs = !primitive.uvs.empty() && material && (material->base_color_texture >= 0 || material->specular_texture >= 0 || mapped);
+    const auto slots = material ? texture_slots(*material) : std::vector<std::pair<int, TextureUse>>{};
+    const bool sampled = std::any_of(slots.begin(), slots.end(), [](auto slot) { return slot.first >= 0; });
+    layout.uvs = !primitive.uvs.empty() && sampled;
     layout.tangents = !primitive.tangents.empty() && mapped;
     layout.index_bytes = primitive.positions.size() <= 65535 ? 2 : 4;
     return layout;
