@@ -34,12 +34,13 @@ matplotlib.rcParams.update({
 KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "distance", "render_mode"]
 # Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
-         "box-max-extent", "simplification", "simplification-best", "cgal", "single-box", "impostor"]
+         "box-max-extent", "error-greedy", "simplification", "simplification-best", "cgal", "single-box", "impostor"]
 BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
 STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, mode in enumerate(MODES[:7])}
+STYLE["error-greedy"] = dict(color=_CYCLE[7], marker="P", linestyle="-")
 STYLE["simplification"] = dict(color="black", marker="x", linestyle="--")
 STYLE["simplification-best"] = dict(color="dimgrey", marker="+", linestyle=":")
 STYLE["cgal"] = dict(color="grey", marker="1", linestyle="-.")
@@ -115,7 +116,7 @@ def per_level(frame, metrics=("psnr", "ssim", "flip")):
     for key, members in frame.groupby(group, sort=False):
         row = dict(zip(group, key))
         for column in ("obtained_levels", "faces", "triangles", "vertices", "texels", "face_texels", "pages",
-                       "page_size", "nodes_with_box", *COST_COLUMNS):
+                       "page_size", "nodes_with_box", "depth_error", *COST_COLUMNS):
             if column in members:
                 row[column] = members[column].iloc[0]
         if "covered_pixels" in members:  # the view's, so a mean over the views

@@ -4,6 +4,7 @@
 #include "golden.h"
 #include "lod_scene.h"
 #include "toolkit/drawable.h"
+#include "toolkit/error_greedy.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
@@ -46,6 +47,25 @@ TEST(LodBuilder, LevelZeroIsTheOriginalAndTheTopLevelOneBox) {
     EXPECT_EQ(statistic(top, "nodes_with_box"), "1");
     EXPECT_EQ(statistic(top, "lod_textures"), "1");
     EXPECT_THROW(build_lod(*session, n + 1, 2), InputError);
+}
+
+// depth_error: the error-greedy proxy of the cut, e(n) summed over its boxes (0 at the original).
+TEST(LodBuilder, EveryLevelStatesTheProxyErrorOfItsBoxes) {
+    Model model = test::lod_test_building();
+    auto session = start_lod(model, small_parameters(), 2);
+    const std::vector<double> errors = box_depth_errors(model, session->boxes);
+    double coarsest = -1;
+    for (int c = 0; c <= session->levels.obtained_levels; ++c) {
+        Lod lod = build_lod(*session, c, 2);
+        double sum = 0;
+        for (int node : lod.cut.box_nodes) sum += errors[std::size_t(node)];
+        EXPECT_EQ(lod.depth_error, sum) << c;
+        EXPECT_EQ(statistic(lod, "depth_error"), format_number(sum)) << c;
+        coarsest = sum;
+    }
+    EXPECT_EQ(build_lod(*session, 0, 2).depth_error, 0);
+    EXPECT_GT(coarsest, 0);  // the one box hides the building's recesses
+    EXPECT_EQ(coarsest, errors[0]);
 }
 
 TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {

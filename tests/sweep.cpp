@@ -144,7 +144,11 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
         auto box = row_of(t, std::string("building.glb,top-down,expanded,linear,4,") + view);
         EXPECT_GT(std::stoull(box[column(t, "texture_bytes_gpu")]), 0u);
         EXPECT_EQ(box[column(t, "draw_calls")], "1");
+        // The proxy error of a level: 0 at the original, its box's at the top; none for a baseline.
+        EXPECT_EQ(row_of(t, std::string("building.glb,top-down,expanded,linear,0,") + view)[column(t, "depth_error")], "0");
+        EXPECT_GT(std::stod(box[column(t, "depth_error")]), 0);
         auto simplified = row_of(t, std::string("building.glb,simplification,-,-,4,") + view);
+        EXPECT_EQ(simplified[column(t, "depth_error")], "");
         EXPECT_LE(std::stoul(simplified[triangles]), std::stoul(box[triangles]));
         EXPECT_GT(std::stoul(simplified[triangles]), 0u);
         EXPECT_EQ(simplified[faces], simplified[triangles]);

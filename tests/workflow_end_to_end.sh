@@ -84,6 +84,13 @@ for path in sorted(glob.glob(os.path.join(generated, "numbers_*.tex"))):
     values = re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", open(path).read())
     broken = [name for name, value in values if value.strip() == "" or "nan" in value.lower()]
     check(values and not broken, f"{os.path.basename(path)}: {len(values)} macros" + (f", broken: {broken}" if broken else ""))
+macros = dict(re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", open(os.path.join(generated, "numbers_bytes.tex")).read()))
+for sweep, model in (("manual_bytes", "Manual"), ("fzk_bytes", "Fzk")):
+    greedy = {row["level"] for row in csv.DictReader(open(os.path.join(out, "sweeps", sweep, "results.csv")))
+              if row["level_mode"] == "error-greedy"}
+    levels, beaten = macros.get(f"BytesGreedyLevels{model}", "-1"), macros.get(f"BytesGreedyBeaten{model}", "-1")
+    check(greedy and levels.isdigit() and beaten.isdigit() and 0 < int(levels) <= len(greedy) and int(beaten) <= int(levels),
+          f"{sweep}: error-greedy counted in the paper ({beaten} of {levels} levels beaten; {len(greedy)} in the CSV)")
 for path in sorted(glob.glob(os.path.join(out, "notebooks", "*.ipynb"))):
     import json
     cells = json.load(open(path))["cells"]

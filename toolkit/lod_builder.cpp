@@ -4,6 +4,7 @@
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "toolkit/cost.h"
+#include "toolkit/error_greedy.h"
 #include "toolkit/framing.h"
 #include "toolkit/kept_subtrees.h"
 #include "toolkit/model_subtree.h"
@@ -79,6 +80,7 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
 
     auto start = Clock::now();
     session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
+    session->depth_errors = box_depth_errors(model, session->boxes);
     session->times.boxes = seconds_since(start);
     start = Clock::now();
     session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes,
@@ -288,6 +290,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("page_texels", double(page_texels(lod.atlas))),
         number_entry("face_texels", double(lod.face_texels)),
         number_entry("occupancy", occupancy),
+        number_entry("depth_error", lod.depth_error),
     };
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
@@ -312,6 +315,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     Lod lod;
     lod.current_level = current_level;
     lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
+    for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
 
     auto start = Clock::now();
     if (textured) bake_new_boxes(session, lod.cut, threads);

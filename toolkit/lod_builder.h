@@ -28,6 +28,7 @@ struct LodSession {
     LevelValues levels;
     TextureSizing sizing;
     std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
+    std::vector<double> depth_errors;  // per node with a box, error_greedy.h's proxy e(n) in m^3
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
     ModelCost original_cost;
     LodTimes times;
@@ -52,6 +53,7 @@ struct Lod {
     Cut cut;
     Atlas atlas;  // no pages in untextured mode (no baking)
     std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
+    double depth_error = 0;  // the proxy error of the cut: e(n) summed over its boxes (error_greedy.h), m^3
     CostParts cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // docs/design.md: Statistics
 };
