@@ -126,10 +126,9 @@ std::array<float, 256> make_srgb_table() {
     }
     return table;
 }
-const std::array<float, 256> srgb_table = make_srgb_table();
 }  // namespace
 
-float srgb_to_linear(std::uint8_t value) { return srgb_table[value]; }
+const std::array<float, 256> srgb_to_linear_table = make_srgb_table();
 
 std::uint8_t linear_to_srgb(float value) {
     // The code is the number of midpoints between the decode table's values (in
@@ -138,7 +137,7 @@ std::uint8_t linear_to_srgb(float value) {
     static const std::array<float, 255> midpoints = [] {
         std::array<float, 255> m{};
         for (int i = 0; i < 255; ++i) {
-            double a = srgb_table[i], b = srgb_table[i + 1];
+            double a = srgb_to_linear_table[i], b = srgb_to_linear_table[i + 1];
             double ea = a <= 0.0031308 ? a * 12.92 : 1.055 * std::pow(a, 1 / 2.4) - 0.055;
             double eb = b <= 0.0031308 ? b * 12.92 : 1.055 * std::pow(b, 1 / 2.4) - 0.055;
             double mid = (ea + eb) / 2;

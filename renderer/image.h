@@ -1,6 +1,7 @@
 // Images: plain pixel arrays, PNG in (stb) and out (libspng), sRGB <-> linear.
 #pragma once
 #include "base/input_error.h"
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -45,7 +46,9 @@ Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string&
 // A 16-bit single-channel image (a height map) whose 16 bits decode_image16 keeps.
 bool is_grey16(std::span<const std::uint8_t> encoded);
 
-float srgb_to_linear(std::uint8_t value);  // exact table lookup
+// IEC 61966-2-1 decoding of each 8-bit code; inline, as texture fetches decode every texel.
+extern const std::array<float, 256> srgb_to_linear_table;
+inline float srgb_to_linear(std::uint8_t value) { return srgb_to_linear_table[value]; }
 std::uint8_t linear_to_srgb(float value);  // clamps to [0, 1], rounds to nearest
 
 }  // namespace boxlod

@@ -182,11 +182,29 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
         step_y[k] = dx * one;
     }
     const double inv_area = 1.0 / double(area);
+    // Wide triangles: each row's run of inside pixels solved from the edge equations
+    // (exact integers, so the same pixels as testing each one); narrow ones test each pixel,
+    // cheaper than three divisions per row.
+    const bool solve_runs = x1 - x0 >= 16;
     for (int y = y0; y <= y1; ++y) {
-        std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+        int first = x0, last = x1;
+        if (solve_runs) {
+            for (int k = 0; k < 3; ++k) {  // E(x) = row + (x - x0) step_x >= 0
+                const std::int64_t e = row[k], step = step_x[k];
+                if (step > 0) {
+                    if (e < 0) first = int(std::clamp<std::int64_t>(x0 + (-e + step - 1) / step, first, x1 + 1));
+                } else if (step < 0) {
+                    last = e < 0 ? x0 - 1 : int(std::min<std::int64_t>(last, x0 + e / -step));
+                } else if (e < 0) {
+                    last = x0 - 1;
+                }
+            }
+        }
+        std::int64_t e0 = row[0] + (first - x0) * step_x[0], e1 = row[1] + (first - x0) * step_x[1],
+                     e2 = row[2] + (first - x0) * step_x[2];
         float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
         std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
-        for (int x = x0; x <= x1; ++x) {
+        for (int x = first; x <= last; ++x) {
             if ((e0 | e1 | e2) >= 0) {
                 // Depth straight from the exact edge values: the same at a pixel however the screen is split.
                 double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
