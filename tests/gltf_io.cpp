@@ -223,17 +223,25 @@ TEST(GltfIo, IndicesAttributesAndExtensionsAsAClientReadsThem) {
     expect_same_model(as_written(model), load_model((folder / "house.glb").string()));
 }
 
+namespace {
+
+// A one-triangle glTF at `path` whose material states `extension` with `fields` (JSON).
+std::string extension_file(const fs::path& path, const std::string& extension, const std::string& fields) {
+    std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
+      "extensionsUsed": [")" + extension + R"("], "materials": [{"extensions": {")" + extension + "\": " + fields + "}}]";
+    body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
+    test::write_text(path, gltf_with_buffer(triangle_bytes(), body));
+    return path.string();
+}
+
+}  // namespace
+
 // A file from another tool: its specular-glossiness material is what boxlod
 // renders (diffuse as base colour) and what convert writes back.
 TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
     auto folder = test::scratch_folder("gltf_specular_glossiness");
-    auto file = [&](const std::string& name, const std::string& extension) {
-        std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
-          "extensionsUsed": ["KHR_materials_pbrSpecularGlossiness"],
-          "materials": [{"extensions": {"KHR_materials_pbrSpecularGlossiness": )" + extension + "}}]";
-        body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
-        test::write_text(folder / name, gltf_with_buffer(triangle_bytes(), body));
-        return (folder / name).string();
+    auto file = [&](const std::string& name, const std::string& fields) {
+        return extension_file(folder / name, "KHR_materials_pbrSpecularGlossiness", fields);
     };
     Model model = load_model(file("sg.gltf", R"({"diffuseFactor": [0.5, 0.25, 1, 1], "specularFactor": [0.75, 0.5, 0.25],
                                                "glossinessFactor": 0.5})"));
@@ -267,13 +275,8 @@ TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
 // colour) is kept as read and written back, its textures with the model's.
 TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
     auto folder = test::scratch_folder("gltf_khr_specular");
-    auto file = [&](const std::string& name, const std::string& extension) {
-        std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
-          "extensionsUsed": ["KHR_materials_specular"],
-          "materials": [{"extensions": {"KHR_materials_specular": )" + extension + "}}]";
-        body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
-        test::write_text(folder / name, gltf_with_buffer(triangle_bytes(), body));
-        return (folder / name).string();
+    auto file = [&](const std::string& name, const std::string& fields) {
+        return extension_file(folder / name, "KHR_materials_specular", fields);
     };
     Model model = load_model(file("specular.gltf", R"({"specularFactor": 0.25, "specularColorFactor": [2, 0.5, 1]})"));
     ASSERT_TRUE(model.materials[0].specular_extension);
