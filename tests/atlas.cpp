@@ -107,6 +107,26 @@ TEST(Atlas, OccupancyOnFixedInputs) {
     }
 }
 
+// Gutters counted inside the page only: one 200x50 face on its 256x64 page, and
+// on many small faces what is neither face nor gutter (free space) stays small.
+TEST(Atlas, GutterTexelsAreTheBlocksButTheFacesInsideThePage) {
+    std::vector<Eigen::Vector2i> one = {{200, 50}};
+    Atlas atlas = pack_atlas(one, 32, 1024, 2);
+    ASSERT_EQ(atlas.pages[0], Eigen::Vector2i(256, 64));
+    const AtlasPlacement at = atlas.placements[0];
+    const int x0 = std::max(at.x - 2, 0), x1 = std::min(at.x + 200 + 2, 256), y0 = std::max(at.y - 2, 0), y1 = std::min(at.y + 50 + 2, 64);
+    EXPECT_EQ(gutter_texels(atlas, one, 2), std::uint64_t((x1 - x0) * (y1 - y0) - 200 * 50));
+    EXPECT_EQ(gutter_texels(atlas, one, 0), 0u);
+    std::vector<Eigen::Vector2i> many = faces(400, 5);
+    Atlas packed = pack_atlas(many, 64, 4096, 2);
+    std::uint64_t face = 0;
+    for (const Eigen::Vector2i& s : many) face += std::uint64_t(s.x()) * std::uint64_t(s.y());
+    const std::uint64_t gutter = gutter_texels(packed, many, 2);
+    EXPECT_GT(gutter, face / 4);  // small faces: the gutters are a large share
+    EXPECT_LE(face + gutter, page_texels(packed));
+    EXPECT_GE(double(face + gutter), 0.85 * double(page_texels(packed)));  // and the packer leaves little free
+}
+
 TEST(Atlas, PackingIsDeterministic) {
     std::vector<Eigen::Vector2i> sizes = faces(200, 4);
     Atlas a = pack_atlas(sizes, 64, 512, 2), b = pack_atlas(sizes, 64, 512, 2);

@@ -121,6 +121,18 @@ std::uint64_t page_texels(const Atlas& atlas) {
     return texels;
 }
 
+std::uint64_t gutter_texels(const Atlas& atlas, const std::vector<Eigen::Vector2i>& face_sizes, int gutter) {
+    std::uint64_t texels = 0;
+    for (std::size_t i = 0; i < face_sizes.size(); ++i) {
+        const AtlasPlacement& at = atlas.placements[i];
+        const Eigen::Vector2i block = placed_size(face_sizes[i], at), page = atlas.pages[std::size_t(at.page)];
+        const int x0 = std::max(at.x - gutter, 0), x1 = std::min(at.x + block.x() + gutter, page.x());
+        const int y0 = std::max(at.y - gutter, 0), y1 = std::min(at.y + block.y() + gutter, page.y());
+        texels += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) - area(block);
+    }
+    return texels;
+}
+
 Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter) {
     for (const Eigen::Vector2i& s : face_sizes)
         if (s.x() > max_texture_size || s.y() > max_texture_size)

@@ -32,4 +32,8 @@ Eigen::Vector2i placed_size(const Eigen::Vector2i& face_size, const AtlasPlaceme
 
 std::uint64_t page_texels(const Atlas& atlas);  // sum of width x height over the pages
 
+// The gutter texels the faces' blocks take inside their pages (a block at the
+// page's border has none beyond it): page texels = face texels + gutter texels + free texels.
+std::uint64_t gutter_texels(const Atlas& atlas, const std::vector<Eigen::Vector2i>& face_sizes, int gutter);
+
 }  // namespace boxlod

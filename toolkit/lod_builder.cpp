@@ -140,7 +140,7 @@ struct PackedFace {
 struct Packing {
     std::vector<PackedFace> faces;
     Atlas atlas;
-    std::uint64_t face_texels = 0;
+    std::uint64_t face_texels = 0, gutter_texels = 0;
     float longest_face = 0;  // metres, for min_distance
 };
 
@@ -163,7 +163,10 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
             packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
     }
-    if (textured) packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
+    if (textured) {
+        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
+        packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.sizing.gutter);
+    }
     return packing;
 }
 
@@ -289,6 +292,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         text_entry("texture_pages", page_list),
         number_entry("page_texels", double(page_texels(lod.atlas))),
         number_entry("face_texels", double(lod.face_texels)),
+        number_entry("gutter_texels", double(packing.gutter_texels)),
         number_entry("occupancy", occupancy),
         number_entry("depth_error", lod.depth_error),
     };
