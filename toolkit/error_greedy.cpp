@@ -17,10 +17,10 @@ std::vector<double> box_depth_errors(const Model& model, const std::vector<std::
         const Eigen::Matrix3d to_box = box.axes.cast<double>().transpose();
         const Eigen::Vector3d half = box.half_extents.cast<double>(), center = box.center.cast<double>();
         double error = 0;
-        for (std::vector<int> todo{int(n)}; !todo.empty();) {
-            const Node& node = model.nodes[std::size_t(todo.back())];
-            todo.pop_back();
-            todo.insert(todo.end(), node.children.begin(), node.children.end());
+        for (std::vector<int> pending{int(n)}; !pending.empty();) {
+            const Node& node = model.nodes[std::size_t(pending.back())];
+            pending.pop_back();
+            pending.insert(pending.end(), node.children.begin(), node.children.end());
             for (const Primitive& p : node.primitives)
                 for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
                     const Eigen::Vector3d a = p.positions[p.indices[t]].cast<double>(),

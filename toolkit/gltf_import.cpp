@@ -357,14 +357,14 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
     // a file keeps outside it, such as MSFT_lod's coarser levels, do not count).
     std::vector<int> mesh_users(gltf.meshes.size(), 0);
     std::vector<char> reached(gltf.nodes.size(), 0);
-    for (std::vector<int> todo = roots; !todo.empty();) {
-        int n = todo.back();
-        todo.pop_back();
+    for (std::vector<int> pending = roots; !pending.empty();) {
+        int n = pending.back();
+        pending.pop_back();
         if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;
         reached[std::size_t(n)] = 1;
         const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
-        todo.insert(todo.end(), node.children.begin(), node.children.end());
+        pending.insert(pending.end(), node.children.begin(), node.children.end());
     }
     struct Visit { int gltf_node; int parent; Eigen::Matrix4d parent_world; };
     std::vector<Visit> stack;

@@ -76,10 +76,10 @@ double cut_geometric_error(const Model& model, const Cut& cut, const std::vector
     for (int boxed : cut.box_nodes) {
         const OrientedBox& box = *boxes[std::size_t(boxed)];
         const Eigen::Matrix3d to_box = box.axes.cast<double>().transpose();
-        for (std::vector<int> todo{boxed}; !todo.empty();) {
-            const Node& node = model.nodes[std::size_t(todo.back())];
-            todo.pop_back();
-            todo.insert(todo.end(), node.children.begin(), node.children.end());
+        for (std::vector<int> pending{boxed}; !pending.empty();) {
+            const Node& node = model.nodes[std::size_t(pending.back())];
+            pending.pop_back();
+            pending.insert(pending.end(), node.children.begin(), node.children.end());
             for (const Primitive& primitive : node.primitives)
                 for (const Eigen::Vector3f& p : primitive.positions) {
                     const Eigen::Vector3d local = to_box * (p - box.center).cast<double>();

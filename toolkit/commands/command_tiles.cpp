@@ -37,11 +37,11 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
 }
 
 bool has_geometry_below(const Model& model, int node) {
-    for (std::vector<int> todo{node}; !todo.empty();) {
-        const Node& n = model.nodes[std::size_t(todo.back())];
+    for (std::vector<int> pending{node}; !pending.empty();) {
+        const Node& n = model.nodes[std::size_t(pending.back())];
         if (n.has_geometry()) return true;
-        todo.pop_back();
-        todo.insert(todo.end(), n.children.begin(), n.children.end());
+        pending.pop_back();
+        pending.insert(pending.end(), n.children.begin(), n.children.end());
     }
     return false;
 }
