@@ -8,8 +8,29 @@
 namespace boxlod {
 namespace {
 
-Eigen::Vector4f sample_surface(const MipTexture& texture, const Fragment& f, const Eigen::Vector2f& uv) {
-    return sample(texture, uv, mip_level(texture, f.duv_dx, f.duv_dy));
+// The mip level of a fragment depends on a texture only through its size: the
+// maps of a baked face share one, and a ray march samples one map many times,
+// so it is computed once per size met.
+class MipLevels {
+public:
+    explicit MipLevels(const Fragment& f) : fragment_(f) {}
+    float of(const MipTexture& texture) {
+        const MipTexture::Level& top = texture.levels[0];
+        if (top.width != width_ || top.height != height_) {
+            width_ = top.width, height_ = top.height;
+            level_ = mip_level(texture, fragment_.duv_dx, fragment_.duv_dy);
+        }
+        return level_;
+    }
+
+private:
+    const Fragment& fragment_;
+    int width_ = -1, height_ = -1;
+    float level_ = 0;
+};
+
+Eigen::Vector4f sample_surface(const MipTexture& texture, MipLevels& levels, const Eigen::Vector2f& uv) {
+    return sample(texture, uv, levels.of(texture));
 }
 
 // The unit vector to the eye; two-sided lighting turns the fragment's frame towards it.
@@ -62,10 +83,11 @@ public:
         Eigen::Vector4f albedo = s.base_color;
         Eigen::Vector3f normal = f.normal;
         if (f.has_uv) {
-            Eigen::Vector2f uv = s.height ? displaced_uv(*s.height, f, view) : f.uv;
-            if (s.color) albedo = albedo.cwiseProduct(sample_surface(*s.color, f, uv));
+            MipLevels levels(f);
+            Eigen::Vector2f uv = s.height ? displaced_uv(*s.height, f, levels, view) : f.uv;
+            if (s.color) albedo = albedo.cwiseProduct(sample_surface(*s.color, levels, uv));
             if (s.normal) {
-                Eigen::Vector4f texel = sample_surface(*s.normal, f, uv);
+                Eigen::Vector4f texel = sample_surface(*s.normal, levels, uv);
                 Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
                 Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();
                 if (mapped.squaredNorm() > 0) normal = mapped.normalized();
@@ -77,7 +99,9 @@ public:
 
 protected:
     // Where the maps are sampled: the fragment's uv, or displaced by the height map.
-    virtual Eigen::Vector2f displaced_uv(const MipTexture&, const Fragment& f, const Eigen::Vector3f&) const { return f.uv; }
+    virtual Eigen::Vector2f displaced_uv(const MipTexture&, const Fragment& f, MipLevels&, const Eigen::Vector3f&) const {
+        return f.uv;
+    }
     // The view vector in the tangent frame, and its direction in uv (v grows down the image, the bitangent points up).
     static Eigen::Vector3f tangent_view(const Fragment& f, const Eigen::Vector3f& view, Eigen::Vector2f& uv_direction) {
         Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
@@ -98,10 +122,11 @@ public:
         : MappedShader(light, eye, true), scale_(scale), bias_(bias) {}
 
 protected:
-    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, const Eigen::Vector3f& view) const override {
+    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, MipLevels& levels,
+                                 const Eigen::Vector3f& view) const override {
         Eigen::Vector2f direction;
         tangent_view(f, view, direction);
-        float h = sample_surface(height, f, f.uv).x();
+        float h = sample_surface(height, levels, f.uv).x();
         return f.uv + direction * (h * scale_ + bias_);
     }
 
@@ -116,7 +141,8 @@ public:
     OcclusionShader(const Light& light, const Eigen::Vector3f& eye, float scale) : MappedShader(light, eye, true), scale_(scale) {}
 
 protected:
-    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, const Eigen::Vector3f& view) const override {
+    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, MipLevels& levels,
+                                 const Eigen::Vector3f& view) const override {
         Eigen::Vector2f direction;
         Eigen::Vector3f v = tangent_view(f, view, direction);
         float cos_view = std::max(v.z(), 0.05f);
@@ -125,12 +151,12 @@ protected:
         Eigen::Vector2f step = total / float(steps);
         float layer = 1.0f / float(steps), ray = 1, previous_ray = 1;
         Eigen::Vector2f uv = f.uv, previous_uv = f.uv;
-        float h = sample_surface(height, f, uv).x(), previous_h = h;
+        float h = sample_surface(height, levels, uv).x(), previous_h = h;
         for (int i = 0; i < steps && h < ray; ++i) {
             previous_uv = uv, previous_ray = ray, previous_h = h;
             uv -= step;
             ray -= layer;
-            h = sample_surface(height, f, uv).x();
+            h = sample_surface(height, levels, uv).x();
         }
         float before = previous_h - previous_ray, after = h - ray;  // sign change between the two samples
         float t = before - after != 0 ? before / (before - after) : 0;

@@ -93,3 +93,34 @@ TEST(Shading, TwoSidedLightingTurnsTheFragmentTowardsTheEye) {
     EXPECT_EQ(pixel.normal, Eigen::Vector3f(0, 0, 1));
     EXPECT_EQ(f.bitangent, Eigen::Vector3f(0, -1, 0));
 }
+
+TEST(Shading, ColourAndNormalMapsOfDifferentSizesEachGetTheirOwnMipLevel) {
+    auto patterned = [](int side, int seed) {
+        Image8 image(side, side, 4);
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint8_t((i * 37 + seed) * 91 % 256);
+        return image;
+    };
+    MipTexture color = make_texture(patterned(8, 1), ColorSpace::srgb);
+    MipTexture normal_map = make_texture(patterned(4, 2), ColorSpace::linear);
+    Surface surface;
+    surface.color = &color;
+    surface.normal = &normal_map;
+    Fragment f;
+    f.position = {0, 0, 0};
+    f.normal = f.geometric_normal = {0, 0, 1};
+    f.has_uv = true;
+    f.uv = {0.3f, 0.6f};
+    f.duv_dx = {0.25f, 0};  // 2 texels of the colour map per pixel (level 1), 1 of the normal map (level 0)
+    f.duv_dy = {0, 0.25f};
+    ASSERT_EQ(mip_level(color, f.duv_dx, f.duv_dy), 1);
+    ASSERT_EQ(mip_level(normal_map, f.duv_dx, f.duv_dy), 0);
+    RenderSettings settings;
+    settings.mode = RenderMode::albedo;
+    Fragment fragment = f;
+    ShadedPixel pixel = make_shader(settings, {0, 0, 5})->shade(surface, fragment);
+    EXPECT_EQ(pixel.color, sample(color, f.uv, 1).head<3>());
+    Eigen::Vector4f texel = sample(normal_map, f.uv, 0);
+    Eigen::Vector3f expected = Eigen::Vector3f(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1).normalized();
+    EXPECT_EQ(pixel.normal, expected);
+    EXPECT_NE(sample(normal_map, f.uv, 1), texel);  // so the normal map's level matters
+}
