@@ -96,6 +96,19 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
     return arguments;
 }
 
+namespace {
+
+// An option's help names its range: "(default 9)" becomes "(default 9; range [1, 10000])".
+std::string help_with_range(const Option& o) {
+    if (!o.range) return o.help;
+    const std::string range = "range " + range_text(*o.range);
+    if (o.help.find("(default ") != std::string::npos && o.help.back() == ')')
+        return o.help.substr(0, o.help.size() - 1) + "; " + range + ")";
+    return o.help + " (" + range + ")";
+}
+
+}  // namespace
+
 std::string help_text(const Command& command) {
     std::string out = "usage: boxlod " + command.name + (command.arguments.empty() ? "" : " " + command.arguments) +
                       " [options]\n\n" + command.summary + "\n\noptions:\n";
@@ -103,7 +116,7 @@ std::string help_text(const Command& command) {
         std::string left = std::string(o.short_name ? std::string("  -") + o.short_name + ", " : "  ") + "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
         if (left.size() < 28) left.resize(28, ' ');
         else left += "\n" + std::string(28, ' ');
-        out += left + o.help + "\n";
+        out += left + help_with_range(o) + "\n";
     }
     out += std::string("  --help") + std::string(20, ' ') + "show this help\n";
     return out;

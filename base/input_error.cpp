@@ -14,13 +14,17 @@ std::string input_message(const std::string& file, const std::string& place, con
     return message;
 }
 
-std::string out_of_range_message(const NumberRange& range, const std::string& text) {
+std::string range_text(const NumberRange& range) {
     auto number = [](double v) {
         char buffer[32];
         std::snprintf(buffer, sizeof buffer, "%.10g", v);
         return std::string(buffer);
     };
-    return "expected a number in [" + number(range.min) + ", " + number(range.max) + "], got '" + text + "'";
+    return "[" + number(range.min) + ", " + number(range.max) + "]";
+}
+
+std::string out_of_range_message(const NumberRange& range, const std::string& text) {
+    return "expected a number in " + range_text(range) + ", got '" + text + "'";
 }
 
 std::string nesting_message() { return "nested more than " + std::to_string(max_nesting_depth) + " levels deep"; }

@@ -29,6 +29,7 @@ struct NumberRange {
     double min, max;
     constexpr bool contains(double value) const { return value >= min && value <= max; }  // false for NaN
 };
+std::string range_text(const NumberRange& range);  // "[min, max]"
 // "expected a number in [min, max], got 'text'"
 std::string out_of_range_message(const NumberRange& range, const std::string& text);
 

@@ -66,3 +66,12 @@ TEST(CommandLine, HelpListsEveryOption) {
     for (const char* text : {"usage: boxlod render MODEL", "-o, --output FILE", "--width W", "--axes", "--help"})
         EXPECT_NE(help.find(text), std::string::npos) << text;
 }
+
+TEST(CommandLine, HelpNamesTheRangeOfEveryNumericOption) {
+    Command command = render_like();
+    command.options[2].help = "height (default 480)";
+    std::string help = help_text(command);
+    EXPECT_NE(help.find("width (range [1, 16384])\n"), std::string::npos) << help;
+    EXPECT_NE(help.find("height (default 480; range [1, 16384])\n"), std::string::npos) << help;
+    EXPECT_NE(help.find("a name\n"), std::string::npos) << help;  // no range, nothing added
+}

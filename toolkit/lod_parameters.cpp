@@ -37,8 +37,7 @@ ParameterDeclaration number_parameter(const char* key, const char* option, const
         if (power_of_two) {
             auto whole = static_cast<long long>(value);
             if (whole <= 0 || (whole & (whole - 1)) != 0)
-                return "expected a power of two in [" + format_number(range.min) + ", " + format_number(range.max) +
-                       "], got '" + text + "'";
+                return "expected a power of two in " + range_text(range) + ", got '" + text + "'";
         }
         p.*field = value;
         return "";
@@ -109,9 +108,9 @@ std::vector<ParameterDeclaration> make_declarations() {
                                        &P::distance, r::distance)),
         number_parameter("resolution", "resolution", "R", "texture sizing: screen height in pixels", &P::resolution,
                          r::resolution),
-        number_parameter("min_texture_size", "min-texture-size", "S", "smallest LoD texture page side",
+        number_parameter("min_texture_size", "min-texture-size", "S", "smallest LoD texture page side, a power of two",
                          &P::min_texture_size, r::texture_size, true),
-        number_parameter("max_texture_size", "max-texture-size", "S", "largest LoD texture page side",
+        number_parameter("max_texture_size", "max-texture-size", "S", "largest LoD texture page side, a power of two",
                          &P::max_texture_size, r::texture_size, true),
         enum_parameter("render_mode", "render-mode", "M", "how the LoD is drawn (untextured LoDs are not baked): ",
                        &P::render_mode, render_modes()),
