@@ -114,24 +114,47 @@ void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uin
     }
 }
 
-Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double py) {
-    double s = 1.0 / (1 << subpixel_bits);
-    double x0 = t.x[0] * s, y0 = t.y[0] * s, x1 = t.x[1] * s, y1 = t.y[1] * s, x2 = t.x[2] * s, y2 = t.y[2] * s;
-    double area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
-    double l0 = ((x2 - x1) * (py - y1) - (y2 - y1) * (px - x1)) / area;
-    double l1 = ((x0 - x2) * (py - y2) - (y0 - y2) * (px - x2)) / area;
+namespace {
+// The set-up without the clipped triangle's weights (screen barycentrics need none).
+BarycentricSetup screen_setup(const ScreenTriangle& t) {
+    const double s = 1.0 / (1 << subpixel_bits);
+    BarycentricSetup b;
+    b.x0 = t.x[0] * s, b.y0 = t.y[0] * s, b.x1 = t.x[1] * s, b.y1 = t.y[1] * s, b.x2 = t.x[2] * s, b.y2 = t.y[2] * s;
+    b.area = (b.x1 - b.x0) * (b.y2 - b.y0) - (b.y1 - b.y0) * (b.x2 - b.x0);
+    for (int i = 0; i < 3; ++i) b.inv_w[i] = t.inv_w[i];
+    return b;
+}
+}  // namespace
+
+BarycentricSetup barycentric_setup(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights) {
+    BarycentricSetup b = screen_setup(t);
+    if (t.clipped >= 0) b.clipped = &weights[std::size_t(t.clipped)];
+    return b;
+}
+
+Eigen::Vector3d screen_barycentrics(const BarycentricSetup& s, double px, double py) {
+    double l0 = ((s.x2 - s.x1) * (py - s.y1) - (s.y2 - s.y1) * (px - s.x1)) / s.area;
+    double l1 = ((s.x0 - s.x2) * (py - s.y2) - (s.y0 - s.y2) * (px - s.x2)) / s.area;
     return {l0, l1, 1 - l0 - l1};
+}
+
+Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double py) {
+    return screen_barycentrics(screen_setup(t), px, py);
+}
+
+Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double py) {
+    Eigen::Vector3d l = screen_barycentrics(s, px, py);
+    Eigen::Vector3d q(l[0] * s.inv_w[0], l[1] * s.inv_w[1], l[2] * s.inv_w[2]);
+    double sum = q.sum();
+    Eigen::Vector3f b = sum != 0 ? Eigen::Vector3f((q / sum).cast<float>()) : Eigen::Vector3f(1, 0, 0);
+    if (!s.clipped) return b;
+    const ClippedWeights& w = *s.clipped;
+    return w.weights[0] * b[0] + w.weights[1] * b[1] + w.weights[2] * b[2];
 }
 
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
                                     double py) {
-    Eigen::Vector3d l = screen_barycentrics(t, px, py);
-    Eigen::Vector3d q(l[0] * t.inv_w[0], l[1] * t.inv_w[1], l[2] * t.inv_w[2]);
-    double sum = q.sum();
-    Eigen::Vector3f b = sum != 0 ? Eigen::Vector3f((q / sum).cast<float>()) : Eigen::Vector3f(1, 0, 0);
-    if (t.clipped < 0) return b;
-    const ClippedWeights& w = weights[t.clipped];
-    return w.weights[0] * b[0] + w.weights[1] * b[1] + w.weights[2] * b[2];
+    return source_barycentrics(barycentric_setup(t, weights), px, py);
 }
 
 bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1) {

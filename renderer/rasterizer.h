@@ -40,9 +40,20 @@ enum class Culling { none, back, front };
 void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
 
+// What barycentrics read of a screen triangle, gathered once so that pixels
+// of one triangle share it; evaluating from it gives the very same doubles.
+struct BarycentricSetup {
+    double x0, y0, x1, y1, x2, y2, area;  // window coordinates, doubled signed area
+    float inv_w[3];
+    const ClippedWeights* clipped = nullptr;  // set for clipped triangles
+};
+BarycentricSetup barycentric_setup(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights);
+
 // Screen-space barycentric coordinates (linear in x, y) at a window point.
+Eigen::Vector3d screen_barycentrics(const BarycentricSetup& s, double px, double py);
 Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double py);
 // Perspective-correct barycentrics of the source triangle at a window point.
+Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double py);
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
                                     double py);
 

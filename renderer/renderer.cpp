@@ -96,19 +96,55 @@ T interpolate(const std::vector<T>& values, const std::uint32_t* v, const Eigen:
     return values[v[0]] * b[0] + values[v[1]] * b[1] + values[v[2]] * b[2];
 }
 
-Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y,
-                       bool reads_uv) {
-    const Mesh& mesh = *c.batches[t.batch].mesh;
-    const std::uint32_t* v = &mesh.indices[std::size_t(t.triangle) * 3];
+// What shading reads of one visible triangle, gathered once for all of its
+// pixels (a tile is shaded row by row, and neighbours mostly share a
+// triangle); every value is computed as it would be per pixel.
+struct TriangleSetup {
+    const ScreenTriangle* screen;
+    const Batch* batch;
+    const std::uint32_t* v;  // the source triangle's vertex indices
+    BarycentricSetup barycentrics;
+    Eigen::Vector3f geometric_normal;
+    // The tangent frame from the uv gradient (Lengyel 2001), for meshes with uvs
+    // but no tangents, before it is made orthogonal to each pixel's normal.
+    bool has_uv_frame;
+    Eigen::Vector3f uv_tangent, uv_bitangent;
+};
+
+void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
+    const std::vector<ClippedWeights>* weights;
+    s.screen = &triangle_of(c, id, weights);
+    s.batch = &c.batches[s.screen->batch];
+    const Mesh& mesh = *s.batch->mesh;
+    s.v = &mesh.indices[std::size_t(s.screen->triangle) * 3];
+    s.barycentrics = barycentric_setup(*s.screen, *weights);
+    const Eigen::Vector3f &p0 = mesh.positions[s.v[0]], &p1 = mesh.positions[s.v[1]], &p2 = mesh.positions[s.v[2]];
+    const Eigen::Vector3f e1 = p1 - p0, e2 = p2 - p0;
+    s.geometric_normal = e1.cross(e2);
+    float length = s.geometric_normal.norm();
+    s.geometric_normal = length > 0 ? Eigen::Vector3f(s.geometric_normal / length) : Eigen::Vector3f(0, 0, 1);
+    if (!mesh.uvs.empty() && mesh.tangents.empty()) {
+        const Eigen::Vector2f &u0 = mesh.uvs[s.v[0]], &u1 = mesh.uvs[s.v[1]], &u2 = mesh.uvs[s.v[2]];
+        Eigen::Vector2f d1 = u1 - u0, d2 = u2 - u0;
+        float det = d1.x() * d2.y() - d2.x() * d1.y();
+        if (det != 0) {
+            s.has_uv_frame = true;
+            s.uv_tangent = (e1 * d2.y() - e2 * d1.y()) / det;
+            s.uv_bitangent = (e2 * d1.x() - e1 * d2.x()) / det;
+            return;
+        }
+    }
+    s.has_uv_frame = false;
+}
+
+Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
+    const Mesh& mesh = *s.batch->mesh;
+    const std::uint32_t* v = s.v;
     double px = x + 0.5, py = y + 0.5;
-    Eigen::Vector3f b = source_barycentrics(t, weights, px, py);
+    Eigen::Vector3f b = source_barycentrics(s.barycentrics, px, py);
     Fragment f;
-    const Eigen::Vector3f &p0 = mesh.positions[v[0]], &p1 = mesh.positions[v[1]], &p2 = mesh.positions[v[2]];
-    f.position = p0 * b[0] + p1 * b[1] + p2 * b[2];
-    Eigen::Vector3f e1 = p1 - p0, e2 = p2 - p0;
-    f.geometric_normal = e1.cross(e2);
-    float length = f.geometric_normal.norm();
-    f.geometric_normal = length > 0 ? Eigen::Vector3f(f.geometric_normal / length) : Eigen::Vector3f(0, 0, 1);
+    f.position = mesh.positions[v[0]] * b[0] + mesh.positions[v[1]] * b[1] + mesh.positions[v[2]] * b[2];
+    f.geometric_normal = s.geometric_normal;
     f.normal = f.geometric_normal;
     if (!mesh.normals.empty()) {
         Eigen::Vector3f n = interpolate(mesh.normals, v, b);
@@ -117,8 +153,8 @@ Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vec
     if (reads_uv && !mesh.uvs.empty()) {
         f.has_uv = true;
         f.uv = interpolate(mesh.uvs, v, b);
-        f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px + 1, py)) - f.uv;
-        f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(t, weights, px, py + 1)) - f.uv;
+        f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(s.barycentrics, px + 1, py)) - f.uv;
+        f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(s.barycentrics, px, py + 1)) - f.uv;
         if (!mesh.tangents.empty()) {
             Eigen::Vector4f t4 = interpolate(mesh.tangents, v, b);
             Eigen::Vector3f tangent = t4.head<3>();
@@ -127,21 +163,14 @@ Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vec
                 f.tangent = tangent.normalized();
                 f.bitangent = f.normal.cross(f.tangent) * (t4.w() < 0 ? -1.0f : 1.0f);
             }
-        } else {
-            // Tangent frame from the triangle's uv gradient (Lengyel 2001).
-            const Eigen::Vector2f &u0 = mesh.uvs[v[0]], &u1 = mesh.uvs[v[1]], &u2 = mesh.uvs[v[2]];
-            Eigen::Vector2f d1 = u1 - u0, d2 = u2 - u0;
-            float det = d1.x() * d2.y() - d2.x() * d1.y();
-            if (det != 0) {
-                Eigen::Vector3f tangent = (e1 * d2.y() - e2 * d1.y()) / det;
-                Eigen::Vector3f bitangent = (e2 * d1.x() - e1 * d2.x()) / det;
-                tangent -= f.normal * f.normal.dot(tangent);
-                if (tangent.squaredNorm() > 0) {
-                    f.tangent = tangent.normalized();
-                    // The bitangent points up the image, against dp/dv (glTF: uv origin at the top left).
-                    float handedness = f.normal.cross(f.tangent).dot(bitangent) > 0 ? -1.0f : 1.0f;
-                    f.bitangent = f.normal.cross(f.tangent) * handedness;
-                }
+        } else if (s.has_uv_frame) {
+            Eigen::Vector3f tangent = s.uv_tangent;
+            tangent -= f.normal * f.normal.dot(tangent);
+            if (tangent.squaredNorm() > 0) {
+                f.tangent = tangent.normalized();
+                // The bitangent points up the image, against dp/dv (glTF: uv origin at the top left).
+                float handedness = f.normal.cross(f.tangent).dot(s.uv_bitangent) > 0 ? -1.0f : 1.0f;
+                f.bitangent = f.normal.cross(f.tangent) * handedness;
             }
         }
     }
@@ -149,13 +178,14 @@ Fragment make_fragment(const Context& c, const ScreenTriangle& t, const std::vec
 }
 
 // Distance in pixels from a pixel centre to the nearest edge of the source triangle.
-float edge_distance(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y) {
-    Eigen::Vector3d l = screen_barycentrics(t, x + 0.5, y + 0.5);
-    Eigen::Vector3d lx = screen_barycentrics(t, x + 1.5, y + 0.5) - l, ly = screen_barycentrics(t, x + 0.5, y + 1.5) - l;
+float edge_distance(const TriangleSetup& s, int x, int y) {
+    Eigen::Vector3d l = screen_barycentrics(s.barycentrics, x + 0.5, y + 0.5);
+    Eigen::Vector3d lx = screen_barycentrics(s.barycentrics, x + 1.5, y + 0.5) - l,
+                    ly = screen_barycentrics(s.barycentrics, x + 0.5, y + 1.5) - l;
     float nearest = std::numeric_limits<float>::infinity();
     for (int k = 0; k < 3; ++k) {
-        if (t.clipped >= 0) {  // edges made by clipping are not edges of the model
-            const ClippedWeights& w = weights[t.clipped];
+        if (s.barycentrics.clipped) {  // edges made by clipping are not edges of the model
+            const ClippedWeights& w = *s.barycentrics.clipped;
             int a = (k + 1) % 3, b = (k + 2) % 3;
             bool original = false;
             for (int m = 0; m < 3; ++m) original = original || (w.weights[a][m] == 0 && w.weights[b][m] == 0);
@@ -214,10 +244,10 @@ void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, co
         return za != zb ? za > zb : a < b;
     });
     for (std::uint32_t id : blended) {
-        const std::vector<ClippedWeights>* weights;
-        const ScreenTriangle& t = triangle_of(c, id, weights);
-        visit_triangle(t, opaque, [&](int x, int y, float depth) {
-            ShadedPixel shaded = shade(t, *weights, x, y);
+        TriangleSetup setup;
+        set_up_triangle(c, id, setup);
+        visit_triangle(*setup.screen, opaque, [&](int x, int y, float depth) {
+            ShadedPixel shaded = shade(setup, x, y);
             float a = std::clamp(shaded.alpha, 0.0f, 1.0f);
             std::size_t pixel = std::size_t(y) * frame.width + x;
             Eigen::Vector4f& color = frame.color[pixel];
@@ -260,9 +290,10 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
                 rasterize_triangle(t, id, target, nullptr);
                 continue;
             }
+            const BarycentricSetup barycentrics = barycentric_setup(t, chunk.weights);
             FragmentTest keep = [&](const ScreenTriangle& tri, int x, int y) {
                 const Mesh& mesh = *batch.mesh;
-                Eigen::Vector3f b = source_barycentrics(tri, chunk.weights, x + 0.5, y + 0.5);
+                Eigen::Vector3f b = source_barycentrics(barycentrics, x + 0.5, y + 0.5);
                 Eigen::Vector2f uv = interpolate(mesh.uvs, &mesh.indices[std::size_t(tri.triangle) * 3], b);
                 return surface.base_color.w() * sample(*surface.color, uv).w() >= surface.alpha_cutoff;
             };
@@ -271,20 +302,21 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     }
 
     bool reads_uv = c.shader.reads_uv();
-    auto shade = [&](const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, int x, int y) {
-        Fragment fragment = make_fragment(c, t, weights, x, y, reads_uv);
-        ShadedPixel shaded = c.shader.shade(c.batches[t.batch].surface, fragment);
-        if (c.settings.wireframe && edge_distance(t, weights, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
+    auto shade = [&](const TriangleSetup& setup, int x, int y) {
+        Fragment fragment = make_fragment(setup, x, y, reads_uv);
+        ShadedPixel shaded = c.shader.shade(setup.batch->surface, fragment);
+        if (c.settings.wireframe && edge_distance(setup, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
         return shaded;
     };
+    std::uint32_t setup_id = no_triangle;
+    TriangleSetup setup;
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             int local = (y - y0) * tile_size + (x - x0);
             std::uint32_t id = ids[local];
             if (id == no_triangle) continue;
-            const std::vector<ClippedWeights>* weights;
-            const ScreenTriangle& t = triangle_of(c, id, weights);
-            ShadedPixel shaded = shade(t, *weights, x, y);
+            if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
+            ShadedPixel shaded = shade(setup, x, y);
             std::size_t pixel = std::size_t(y) * frame.width + x;
             frame.color[pixel] = Eigen::Vector4f(shaded.color.x(), shaded.color.y(), shaded.color.z(), 1);
             frame.depth[pixel] = depth[local];
