@@ -205,36 +205,64 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
         step_y[k] = dx * one;
     }
     const double inv_area = 1.0 / double(area);
-    // Wide triangles: each row's run of inside pixels solved from the edge equations
-    // (exact integers, so the same pixels as testing each one); narrow ones test each pixel,
-    // cheaper than three divisions per row.
-    const bool solve_runs = x1 - x0 >= 16;
-    for (int y = y0; y <= y1; ++y) {
-        int first = x0, last = x1;
-        if (solve_runs) {
-            for (int k = 0; k < 3; ++k) {  // E(x) = row + (x - x0) step_x >= 0
-                const std::int64_t e = row[k], step = step_x[k];
-                if (step > 0) {
-                    if (e < 0) first = int(std::clamp<std::int64_t>(x0 + (-e + step - 1) / step, first, x1 + 1));
-                } else if (step < 0) {
-                    last = e < 0 ? x0 - 1 : int(std::min<std::int64_t>(last, x0 + e / -step));
-                } else if (e < 0) {
-                    last = x0 - 1;
+    auto shade_pixel = [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2, float* depth,
+                           std::uint32_t* ids) {
+        // Depth straight from the exact edge values: the same at a pixel however the screen is split.
+        double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
+        float zf = float(z);
+        int i = x - tile.x0;
+        if (zf < depth[i]) on_pixel(x, y, zf, depth[i], ids[i]);
+    };
+    // Triangles 8 or more pixels wide: each row's run of inside pixels solved from
+    // the edge equations, E(x) = E(x0) + (x - x0) step_x >= 0 (exact integers,
+    // so the same pixels as testing each centre). The division that solves it
+    // is carried from row to row: with m = |step_x|, E(x0) = f m + r, 0 <= r < m,
+    // and a row down adds step_y = fb m + rb. Narrower ones test each pixel.
+    if (x1 - x0 >= 7) {
+        std::int64_t f[3], r[3], m[3], fb[3], rb[3];
+        auto floor_divide = [](std::int64_t a, std::int64_t b, std::int64_t& quotient, std::int64_t& remainder) {
+            quotient = a / b;
+            if (a % b != 0 && a < 0) --quotient;
+            remainder = a - quotient * b;
+        };
+        for (int k = 0; k < 3; ++k) {
+            m[k] = step_x[k] < 0 ? -step_x[k] : step_x[k];
+            if (m[k] == 0) continue;
+            floor_divide(row[k], m[k], f[k], r[k]);
+            floor_divide(step_y[k], m[k], fb[k], rb[k]);
+        }
+        for (int y = y0; y <= y1; ++y) {
+            std::int64_t first = x0, last = x1;
+            for (int k = 0; k < 3; ++k) {
+                if (step_x[k] > 0) first = std::max(first, std::int64_t(x0) - std::min<std::int64_t>(f[k], 0));
+                else if (step_x[k] < 0) last = std::min(last, std::int64_t(x0) + f[k]);
+                else if (row[k] < 0) last = x0 - 1;
+            }
+            if (first <= last) {
+                const std::int64_t offset = first - x0;
+                std::int64_t e0 = row[0] + offset * step_x[0], e1 = row[1] + offset * step_x[1], e2 = row[2] + offset * step_x[2];
+                float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
+                std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
+                for (int x = int(first); x <= int(last); ++x) {
+                    shade_pixel(x, y, e0, e1, e2, depth, ids);
+                    e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
                 }
             }
+            for (int k = 0; k < 3; ++k) {
+                row[k] += step_y[k];
+                if (m[k] == 0) continue;
+                f[k] += fb[k], r[k] += rb[k];
+                if (r[k] >= m[k]) r[k] -= m[k], ++f[k];
+            }
         }
-        std::int64_t e0 = row[0] + (first - x0) * step_x[0], e1 = row[1] + (first - x0) * step_x[1],
-                     e2 = row[2] + (first - x0) * step_x[2];
+        return;
+    }
+    for (int y = y0; y <= y1; ++y) {
+        std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
         float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
         std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
-        for (int x = first; x <= last; ++x) {
-            if ((e0 | e1 | e2) >= 0) {
-                // Depth straight from the exact edge values: the same at a pixel however the screen is split.
-                double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
-                float zf = float(z);
-                int i = x - tile.x0;
-                if (zf < depth[i]) on_pixel(x, y, zf, depth[i], ids[i]);
-            }
+        for (int x = x0; x <= x1; ++x) {
+            if ((e0 | e1 | e2) >= 0) shade_pixel(x, y, e0, e1, e2, depth, ids);
             e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
         }
         row[0] += step_y[0], row[1] += step_y[1], row[2] += step_y[2];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace boxlod {
 namespace {
@@ -85,9 +86,14 @@ public:
         if (f.has_uv) {
             MipLevels levels(f);
             Eigen::Vector2f uv = s.height ? displaced_uv(*s.height, f, levels, view) : f.uv;
-            if (s.color) albedo = albedo.cwiseProduct(sample_surface(*s.color, levels, uv));
+            Eigen::Vector4f color_texel, normal_texel;
+            if (s.color && s.normal)
+                std::tie(color_texel, normal_texel) = sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);
+            else if (s.color) color_texel = sample_surface(*s.color, levels, uv);
+            else if (s.normal) normal_texel = sample_surface(*s.normal, levels, uv);
+            if (s.color) albedo = albedo.cwiseProduct(color_texel);
             if (s.normal) {
-                Eigen::Vector4f texel = sample_surface(*s.normal, levels, uv);
+                const Eigen::Vector4f& texel = normal_texel;
                 Eigen::Vector3f n(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1);
                 Eigen::Vector3f mapped = f.tangent * n.x() + f.bitangent * n.y() + f.normal * n.z();
                 if (mapped.squaredNorm() > 0) normal = mapped.normalized();

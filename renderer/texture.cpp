@@ -7,8 +7,8 @@
 namespace boxlod {
 namespace {
 
-// Decoding with the format known at compile time: a fetch reads four texels or eight, so
-// sample_level picks the decoder once per fetch instead of once per texel.
+// Decoding with the format known at compile time: a fetch reads four texels, so
+// fetch picks the decoder once per fetch instead of once per texel.
 // v / 255 for every 8-bit v: the same floats as dividing, without a division per channel.
 const std::array<float, 256> unorm8_table = [] {
     std::array<float, 256> table{};
@@ -91,42 +91,103 @@ int wrap_next(int wrapped, int next, int size, Wrap wrap) {
     return wrapped + 1 == size ? 0 : wrapped + 1;
 }
 
-template <TexelFormat format>
-Eigen::Vector4f sample_level_as(const MipTexture& texture, int index, Eigen::Vector2f uv, bool nearest) {
-    const MipTexture::Level& level = texture.levels[index];
+// Where one fetch from one level reads: a bilinear fetch four texels and
+// their weights, a nearest one (or one at a non-finite coordinate) a single texel.
+struct Footprint {
+    std::size_t k00 = 0, k10 = 0, k01 = 0, k11 = 0;
+    float s = 0, t = 0;
+    bool single = true;
+};
+
+Footprint footprint(const MipTexture::Level& level, Wrap wrap, Eigen::Vector2f uv, bool nearest) {
+    Footprint f;
     float x = uv.x() * float(level.width) - 0.5f, y = uv.y() * float(level.height) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return decode_as<format>(level, 0);
+    if (!std::isfinite(x) || !std::isfinite(y)) return f;
     // Keep huge repeat coordinates in range before converting to int.
     x = std::clamp(x, -1e7f, 1e7f);
     y = std::clamp(y, -1e7f, 1e7f);
-    auto wrapped = [&](int i, int j) {
-        return std::size_t(wrap_index(j, level.height, texture.wrap)) * level.width + wrap_index(i, level.width, texture.wrap);
-    };
-    if (nearest) return decode_as<format>(level, wrapped(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f))));
+    if (nearest) {
+        f.k00 = std::size_t(wrap_index(int(std::floor(y + 0.5f)), level.height, wrap)) * level.width +
+                wrap_index(int(std::floor(x + 0.5f)), level.width, wrap);
+        return f;
+    }
     float fx = std::floor(x), fy = std::floor(y);
     int i = int(fx), j = int(fy);
-    float s = x - fx, t = y - fy;
-    std::size_t k00, k10, k01, k11;
+    f.single = false;
+    f.s = x - fx, f.t = y - fy;
     if (i >= 0 && j >= 0 && i + 1 < level.width && j + 1 < level.height) {  // inside: no wrapping (most samples)
-        k00 = std::size_t(j) * level.width + i, k10 = k00 + 1, k01 = k00 + std::size_t(level.width), k11 = k01 + 1;
+        f.k00 = std::size_t(j) * level.width + i, f.k10 = f.k00 + 1, f.k01 = f.k00 + std::size_t(level.width), f.k11 = f.k01 + 1;
     } else {  // each coordinate wrapped once, its neighbour from it (a tiled texture's every sample lands here)
-        const int i0 = wrap_index(i, level.width, texture.wrap), j0 = wrap_index(j, level.height, texture.wrap);
-        const int i1 = wrap_next(i0, i + 1, level.width, texture.wrap), j1 = wrap_next(j0, j + 1, level.height, texture.wrap);
+        const int i0 = wrap_index(i, level.width, wrap), j0 = wrap_index(j, level.height, wrap);
+        const int i1 = wrap_next(i0, i + 1, level.width, wrap), j1 = wrap_next(j0, j + 1, level.height, wrap);
         const std::size_t row0 = std::size_t(j0) * level.width, row1 = std::size_t(j1) * level.width;
-        k00 = row0 + i0, k10 = row0 + i1, k01 = row1 + i0, k11 = row1 + i1;
+        f.k00 = row0 + i0, f.k10 = row0 + i1, f.k01 = row1 + i0, f.k11 = row1 + i1;
     }
-    auto at = [&](std::size_t k) { return decode_as<format>(level, k); };
-    return (at(k00) * (1 - s) + at(k10) * s) * (1 - t) + (at(k01) * (1 - s) + at(k11) * s) * t;
+    return f;
 }
 
-Eigen::Vector4f sample_level(const MipTexture& texture, int index, Eigen::Vector2f uv, bool nearest) {
+template <TexelFormat format>
+Eigen::Vector4f fetch_as(const MipTexture::Level& level, const Footprint& f) {
+    auto at = [&](std::size_t k) { return decode_as<format>(level, k); };
+    if (f.single) return at(f.k00);
+    const float s = f.s, t = f.t;
+    return (at(f.k00) * (1 - s) + at(f.k10) * s) * (1 - t) + (at(f.k01) * (1 - s) + at(f.k11) * s) * t;
+}
+
+Eigen::Vector4f fetch(const MipTexture& texture, int index, const Footprint& f) {
+    const MipTexture::Level& level = texture.levels[std::size_t(index)];
     switch (texture.format) {
-        case TexelFormat::srgb8: return sample_level_as<TexelFormat::srgb8>(texture, index, uv, nearest);
-        case TexelFormat::unorm8: return sample_level_as<TexelFormat::unorm8>(texture, index, uv, nearest);
-        case TexelFormat::unorm16: return sample_level_as<TexelFormat::unorm16>(texture, index, uv, nearest);
+        case TexelFormat::srgb8: return fetch_as<TexelFormat::srgb8>(level, f);
+        case TexelFormat::unorm8: return fetch_as<TexelFormat::unorm8>(level, f);
+        case TexelFormat::unorm16: return fetch_as<TexelFormat::unorm16>(level, f);
         case TexelFormat::float32: break;
     }
-    return sample_level_as<TexelFormat::float32>(texture, index, uv, nearest);
+    return fetch_as<TexelFormat::float32>(level, f);
+}
+
+// What a sample reads: one level, or two blended by `blend` (trilinear,
+// OpenGL 4.6 8.14.2), each with its footprint.
+struct SamplePlan {
+    int level[2] = {0, 0};
+    int count = 1;
+    float blend = 0;
+    Footprint at[2];
+};
+
+SamplePlan plan_sample(const MipTexture& texture, Eigen::Vector2f uv, float lod) {
+    SamplePlan plan;
+    if (texture.filter == Filter::nearest) {
+        plan.at[0] = footprint(texture.levels[0], texture.wrap, uv, true);
+        return plan;
+    }
+    if (texture.filter == Filter::bilinear || !(lod > 0)) {
+        plan.at[0] = footprint(texture.levels[0], texture.wrap, uv, false);
+        return plan;
+    }
+    float top = float(texture.levels.size() - 1);
+    lod = std::min(lod, top);
+    int fine = int(std::floor(lod));
+    plan.level[0] = fine;
+    plan.at[0] = footprint(texture.levels[std::size_t(fine)], texture.wrap, uv, false);
+    plan.blend = lod - float(fine);
+    if (plan.blend == 0) return plan;
+    plan.count = 2;
+    plan.level[1] = fine + 1;
+    plan.at[1] = footprint(texture.levels[std::size_t(fine) + 1], texture.wrap, uv, false);
+    return plan;
+}
+
+Eigen::Vector4f sample_planned(const MipTexture& texture, const SamplePlan& plan) {
+    Eigen::Vector4f a = fetch(texture, plan.level[0], plan.at[0]);
+    if (plan.count == 1) return a;
+    Eigen::Vector4f b = fetch(texture, plan.level[1], plan.at[1]);
+    return a * (1 - plan.blend) + b * plan.blend;
+}
+
+// Two textures read the same texels where they share size, wrap and filter.
+bool same_layout(const MipTexture& a, const MipTexture& b) {
+    return a.wrap == b.wrap && a.filter == b.filter && a.levels.size() == b.levels.size() &&
+           a.levels[0].width == b.levels[0].width && a.levels[0].height == b.levels[0].height;
 }
 
 // Height maps: the first channel of the image, stored as it is.
@@ -178,16 +239,14 @@ Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y) {
 }
 
 Eigen::Vector4f sample(const MipTexture& texture, Eigen::Vector2f uv, float lod) {
-    if (texture.filter == Filter::nearest) return sample_level(texture, 0, uv, true);
-    if (texture.filter == Filter::bilinear || !(lod > 0)) return sample_level(texture, 0, uv, false);
-    float top = float(texture.levels.size() - 1);
-    lod = std::min(lod, top);
-    int fine = int(std::floor(lod));
-    float t = lod - float(fine);
-    Eigen::Vector4f a = sample_level(texture, fine, uv, false);
-    if (t == 0) return a;
-    Eigen::Vector4f b = sample_level(texture, fine + 1, uv, false);
-    return a * (1 - t) + b * t;
+    return sample_planned(texture, plan_sample(texture, uv, lod));
+}
+
+std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b, float lod_b,
+                                                        Eigen::Vector2f uv) {
+    const SamplePlan plan = plan_sample(a, uv, lod_a);
+    if (lod_a == lod_b && same_layout(a, b)) return {sample_planned(a, plan), sample_planned(b, plan)};
+    return {sample_planned(a, plan), sample(b, uv, lod_b)};
 }
 
 float mip_level(const MipTexture& texture, const Eigen::Vector2f& duv_dx, const Eigen::Vector2f& duv_dy) {

@@ -5,6 +5,7 @@
 #include "renderer/image.h"
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace boxlod {
@@ -42,6 +43,11 @@ Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y);
 // uv as in glTF: (0, 0) is the top-left corner of the image, texel centres at
 // (i + 0.5) / width. `lod` is the mip level (log2 of texels per pixel).
 Eigen::Vector4f sample(const MipTexture& texture, Eigen::Vector2f uv, float lod = 0);
+// sample(a, uv, lod_a) and sample(b, uv, lod_b); where both have one size, wrap
+// and filter and the lods are equal (a face's colour and normal maps), the
+// texels and weights are found once for both.
+std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b, float lod_b,
+                                                        Eigen::Vector2f uv);
 
 // Mip level for the screen-space derivatives of uv (OpenGL 4.6, 8.14.1).
 float mip_level(const MipTexture& texture, const Eigen::Vector2f& duv_dx, const Eigen::Vector2f& duv_dy);

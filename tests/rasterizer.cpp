@@ -103,22 +103,28 @@ TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
         }
 }
 
-// Wide triangles have each row's run of pixels solved from the edge equations;
-// it must give exactly the pixels whose centres the top-left rule puts inside,
-// here checked centre by centre for triangles of every orientation and width.
+// Wide triangles have each row's run of pixels solved from the edge equations
+// (the division carried from row to row); it must give exactly the pixels whose
+// centres the top-left rule puts inside, here checked centre by centre for
+// triangles of every orientation and width, the last 200 with corners far
+// outside the tile (guard-band sizes: edge values near 2^58).
 TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
     std::uint64_t state = 12345;
     auto next = [&](int range) {  // a small LCG: the same triangles on every machine
         state = state * 6364136223846793005ull + 1442695040888963407ull;
         return int((state >> 33) % std::uint64_t(range));
     };
-    for (int n = 0; n < 300; ++n) {
+    for (int n = 0; n < 500; ++n) {
         ScreenTriangle t;
         for (int i = 0; i < 3; ++i) {
             // Corners on a coarse grid too, so edges run through pixel centres.
             const bool on_centre = next(3) == 0;
             t.x[i] = on_centre ? next(size) * 256 + 128 : next(size * 256);
             t.y[i] = on_centre ? next(size) * 256 + 128 : next(size * 256);
+            if (n >= 300 && next(2) == 0) {  // up to 2^28 subpixels away, either side
+                t.x[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
+                t.y[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
+            }
             t.z[i] = 0.5f, t.inv_w[i] = 1;
         }
         const std::int64_t area = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);

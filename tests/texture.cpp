@@ -80,3 +80,31 @@ TEST(Texture, SrgbTexturesDecodeToLinear) {
     pair.pixels[0] = pair.pixels[1] = pair.pixels[2] = 0;
     EXPECT_NEAR(texel(make_texture(pair, ColorSpace::srgb), 1, 0, 0).x(), 0.5f, 0.01f);
 }
+
+// A face's colour and normal maps are sampled together: the same values as
+// sampling each alone, whether they share a layout (one footprint for both)
+// or not (other size, wrap or level: each its own).
+TEST(Texture, SamplingTwoMapsTogetherEqualsSamplingEach) {
+    auto seeded_image = [](int width, int height, std::uint32_t seed) {
+        Image8 image(width, height, 4, 255);
+        for (std::uint8_t& v : image.pixels) seed = seed * 1664525u + 1013904223u, v = std::uint8_t(seed >> 24);
+        return image;
+    };
+    const MipTexture color = make_texture(seeded_image(16, 8, 1), ColorSpace::srgb, Wrap::repeat);
+    const MipTexture normal = make_texture(seeded_image(16, 8, 2), ColorSpace::linear, Wrap::repeat);
+    const MipTexture other_size = make_texture(seeded_image(8, 8, 3), ColorSpace::linear, Wrap::repeat);
+    const MipTexture other_wrap = make_texture(seeded_image(16, 8, 4), ColorSpace::linear, Wrap::clamp);
+    int compared = 0;
+    for (float lod : {0.0f, 0.4f, 1.0f, 2.7f, 9.0f})
+        for (int i = 0; i < 40; ++i) {
+            const Eigen::Vector2f uv(float(i) * 0.137f - 1.3f, float(i % 7) * 0.29f - 0.5f);
+            for (const MipTexture* second : {&normal, &other_size, &other_wrap})
+                for (float second_lod : {lod, lod + 0.5f}) {
+                    const auto [a, b] = sample_both(color, lod, *second, second_lod, uv);
+                    ASSERT_EQ(a, sample(color, uv, lod)) << "lod " << lod << ", sample " << i;
+                    ASSERT_EQ(b, sample(*second, uv, second_lod)) << "lod " << second_lod << ", sample " << i;
+                    ++compared;
+                }
+        }
+    EXPECT_EQ(compared, 5 * 40 * 6);
+}
