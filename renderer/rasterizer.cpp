@@ -54,64 +54,85 @@ std::int64_t doubled_area(const ScreenTriangle& t) {
 
 }  // namespace
 
-void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
+namespace {
+
+// A clip-space point's snapped window position, depth and 1/w (docs/design.md: Rendering).
+void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v) {
+    const float scale = float(1 << subpixel_bits);
+    v.inv_w = 1 / p.w();
+    float wx = (p.x() * v.inv_w + 1) * 0.5f * float(viewport.width);
+    float wy = (1 - p.y() * v.inv_w) * 0.5f * float(viewport.height);
+    v.x = std::int32_t(std::floor(wx * scale + 0.5f));
+    v.y = std::int32_t(std::floor(wy * scale + 0.5f));
+    v.z = std::clamp((p.z() * v.inv_w + 1) * 0.5f, 0.0f, 1.0f);
+}
+
+// Appends the triangle of three snapped corners unless it has no area or faces the culled way.
+bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c, std::uint32_t batch,
+                     std::uint32_t triangle, Culling culling, std::vector<ScreenTriangle>& out) {
+    ScreenTriangle t;
+    const ProjectedVertex* corner[3] = {&a, &b, &c};
+    for (int i = 0; i < 3; ++i)
+        t.x[i] = corner[i]->x, t.y[i] = corner[i]->y, t.z[i] = corner[i]->z, t.inv_w[i] = corner[i]->inv_w;
+    std::int64_t area = doubled_area(t);
+    if (area == 0) return false;
+    // Counter-clockwise in NDC (y up) is negative area in window space (y down).
+    bool front = area < 0;
+    if ((culling == Culling::back && !front) || (culling == Culling::front && front)) return false;
+    t.batch = batch;
+    t.triangle = triangle;
+    out.push_back(t);
+    return true;
+}
+
+}  // namespace
+
+ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport) {
+    ProjectedVertex v;
+    v.clip = clip;
+    for (int plane = 0; plane < 6; ++plane)
+        if (!(plane_distance(clip, plane) >= 0)) v.outcode |= 1 << plane;  // NaN counts as outside
+    if (v.outcode == 0) snap(clip, viewport, v);
+    return v;
+}
+
+void setup_triangle(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
-    int outside_all = 0x3f, outside_any = 0;
-    for (int i = 0; i < 3; ++i) {
-        int code = 0;
-        for (int plane = 0; plane < 6; ++plane)
-            if (!(plane_distance(clip[i], plane) >= 0)) code |= 1 << plane;  // NaN counts as outside
-        outside_all &= code;
-        outside_any |= code;
-    }
+    const int outside_all = corner[0]->outcode & corner[1]->outcode & corner[2]->outcode;
+    const int outside_any = corner[0]->outcode | corner[1]->outcode | corner[2]->outcode;
     if (outside_all) return;
+    // Inside every plane (nearly every triangle): the corners as the vertex stage snapped them.
+    if (!outside_any) {
+        append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
+        return;
+    }
 
     ClipVertex buffers[2][max_polygon];
     ClipVertex* polygon = buffers[0];
     int count = 3;
-    for (int i = 0; i < 3; ++i) polygon[i] = {clip[i], Eigen::Vector3f::Unit(i)};
-    if (outside_any) {
-        for (int plane = 0; plane < 6 && count >= 3; ++plane) {
-            if (!(outside_any & (1 << plane))) continue;
-            ClipVertex* next = polygon == buffers[0] ? buffers[1] : buffers[0];
-            count = clip_polygon(polygon, count, plane, next);
-            polygon = next;
-        }
-        if (count < 3) return;
+    for (int i = 0; i < 3; ++i) polygon[i] = {corner[i]->clip, Eigen::Vector3f::Unit(i)};
+    for (int plane = 0; plane < 6 && count >= 3; ++plane) {
+        if (!(outside_any & (1 << plane))) continue;
+        ClipVertex* next = polygon == buffers[0] ? buffers[1] : buffers[0];
+        count = clip_polygon(polygon, count, plane, next);
+        polygon = next;
     }
+    if (count < 3) return;
+    ProjectedVertex snapped[max_polygon];
+    for (int i = 0; i < count; ++i) snap(polygon[i].position, viewport, snapped[i]);
+    for (int k = 1; k + 1 < count; ++k) {  // a fan over the clipped polygon
+        if (!append_triangle(snapped[0], snapped[k], snapped[k + 1], batch, triangle, culling, out)) continue;
+        out.back().clipped = std::int32_t(weights.size());
+        weights.push_back({{polygon[0].weights, polygon[k].weights, polygon[k + 1].weights}});
+    }
+}
 
-    ScreenTriangle snapped[max_polygon];
-    float scale = float(1 << subpixel_bits);
-    for (int i = 0; i < count; ++i) {
-        const Eigen::Vector4f& p = polygon[i].position;
-        float inv_w = 1 / p.w();
-        float wx = (p.x() * inv_w + 1) * 0.5f * float(viewport.width);
-        float wy = (1 - p.y() * inv_w) * 0.5f * float(viewport.height);
-        snapped[i].x[0] = std::int32_t(std::floor(wx * scale + 0.5f));
-        snapped[i].y[0] = std::int32_t(std::floor(wy * scale + 0.5f));
-        snapped[i].z[0] = std::clamp((p.z() * inv_w + 1) * 0.5f, 0.0f, 1.0f);
-        snapped[i].inv_w[0] = inv_w;
-    }
-    for (int k = 1; k + 1 < count; ++k) {
-        ScreenTriangle t;
-        const int corners[3] = {0, k, k + 1};
-        for (int i = 0; i < 3; ++i) {
-            const ScreenTriangle& v = snapped[corners[i]];
-            t.x[i] = v.x[0], t.y[i] = v.y[0], t.z[i] = v.z[0], t.inv_w[i] = v.inv_w[0];
-        }
-        std::int64_t area = doubled_area(t);
-        if (area == 0) continue;
-        // Counter-clockwise in NDC (y up) is negative area in window space (y down).
-        bool front = area < 0;
-        if ((culling == Culling::back && !front) || (culling == Culling::front && front)) continue;
-        t.batch = batch;
-        t.triangle = triangle;
-        if (outside_any) {
-            t.clipped = std::int32_t(weights.size());
-            weights.push_back({{polygon[corners[0]].weights, polygon[corners[1]].weights, polygon[corners[2]].weights}});
-        }
-        out.push_back(t);
-    }
+void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+    const ProjectedVertex projected[3] = {project_vertex(clip[0], viewport), project_vertex(clip[1], viewport),
+                                          project_vertex(clip[2], viewport)};
+    const ProjectedVertex* corners[3] = {&projected[0], &projected[1], &projected[2]};
+    setup_triangle(corners, batch, triangle, culling, viewport, out, weights);
 }
 
 namespace {

@@ -34,9 +34,22 @@ struct Viewport {
 
 enum class Culling { none, back, front };
 
-// Clips one clip-space triangle against the view volume (near and far exactly,
-// x and y against a guard band) and appends the snapped pieces. Triangles
-// facing away are dropped when culled, otherwise reordered to positive area.
+// A vertex after the vertex stage: its clip-space position, the planes of the
+// view volume it lies outside of, and (inside all of them) its snapped window
+// position, so that triangles sharing it do not snap it again.
+struct ProjectedVertex {
+    Eigen::Vector4f clip;
+    int outcode = 0;          // bit per plane: near, far, then x and y against the guard band; NaN is outside
+    std::int32_t x = 0, y = 0;  // snapped window coordinates, as in ScreenTriangle
+    float z = 0, inv_w = 0;
+};
+ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport);
+
+// Clips one triangle against the view volume (near and far exactly, x and y
+// against a guard band) and appends the snapped pieces. Triangles facing away
+// are dropped when culled; the stored corners keep their order.
+void setup_triangle(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
 void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
 

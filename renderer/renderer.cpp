@@ -339,22 +339,23 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     Eigen::Matrix4f view_projection =
         projection_matrix(settings.camera, float(frame.width) / float(frame.height)) * view_matrix(settings.camera);
 
-    // Vertex stage: clip-space positions, in parallel over vertex ranges.
+    // Vertex stage: clip-space positions, outcodes and snapped window positions,
+    // in parallel over vertex ranges.
     // Scratch kept per calling thread: a frame of a million triangles needs
     // ~100 MB, and fresh allocations every frame cost more in page faults than
     // the rasterization itself (measured: 1 thread 416 ms -> 256 ms).
     // (Worker lambdas must see the caller's copies: bind references first.)
-    thread_local std::vector<std::vector<Eigen::Vector4f>> clip_scratch;
+    thread_local std::vector<std::vector<ProjectedVertex>> vertex_scratch;
     thread_local std::vector<Chunk> chunk_scratch;
-    std::vector<std::vector<Eigen::Vector4f>>& clip = clip_scratch;
+    std::vector<std::vector<ProjectedVertex>>& projected = vertex_scratch;
     std::vector<Chunk>& chunks = chunk_scratch;
-    clip.resize(std::max(clip.size(), batches.size()));
+    projected.resize(std::max(projected.size(), batches.size()));
     struct Range { std::size_t batch, begin, end; };
     std::vector<Range> vertex_ranges, triangle_ranges;
     for (std::size_t b = 0; b < batches.size(); ++b) {
-        clip[b].resize(batches[b].mesh->positions.size());
-        for (std::size_t i = 0; i < clip[b].size(); i += triangles_per_chunk)
-            vertex_ranges.push_back({b, i, std::min(clip[b].size(), i + triangles_per_chunk)});
+        projected[b].resize(batches[b].mesh->positions.size());
+        for (std::size_t i = 0; i < projected[b].size(); i += triangles_per_chunk)
+            vertex_ranges.push_back({b, i, std::min(projected[b].size(), i + triangles_per_chunk)});
         std::size_t triangles = batches[b].mesh->indices.size() / 3;
         for (std::size_t i = 0; i < triangles; i += triangles_per_chunk)
             triangle_ranges.push_back({b, i, std::min(triangles, i + triangles_per_chunk)});
@@ -363,7 +364,7 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const Range& range = vertex_ranges[r];
         const auto& positions = batches[range.batch].mesh->positions;
         for (std::size_t i = range.begin; i < range.end; ++i)
-            clip[range.batch][i] = view_projection * positions[i].homogeneous();
+            projected[range.batch][i] = project_vertex(view_projection * positions[i].homogeneous(), viewport);
     });
 
     // Set-up and binning, in parallel over chunks of triangles.
@@ -377,10 +378,10 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const Range& range = triangle_ranges[r];
         Chunk& chunk = chunks[r];
         const Mesh& mesh = *batches[range.batch].mesh;
-        const auto& positions = clip[range.batch];
+        const std::vector<ProjectedVertex>& vertices = projected[range.batch];
         for (std::size_t t = range.begin; t < range.end; ++t) {
             const std::uint32_t* v = &mesh.indices[t * 3];
-            Eigen::Vector4f corners[3] = {positions[v[0]], positions[v[1]], positions[v[2]]};
+            const ProjectedVertex* corners[3] = {&vertices[v[0]], &vertices[v[1]], &vertices[v[2]]};
             setup_triangle(corners, std::uint32_t(range.batch), std::uint32_t(t), settings.culling, viewport,
                            chunk.triangles, chunk.weights);
         }
