@@ -81,6 +81,9 @@ void build_mips(MipTexture& texture) {
 
 int wrap_index(int i, int size, Wrap wrap) {
     if (wrap == Wrap::clamp) return std::clamp(i, 0, size - 1);
+    // A power-of-two size (nearly every texture) wraps by a mask: the same
+    // index for negative i too (two's complement), without a division.
+    if ((size & (size - 1)) == 0) return i & (size - 1);
     i %= size;
     return i < 0 ? i + size : i;
 }

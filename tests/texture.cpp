@@ -108,3 +108,24 @@ TEST(Texture, SamplingTwoMapsTogetherEqualsSamplingEach) {
         }
     EXPECT_EQ(compared, 5 * 40 * 6);
 }
+
+// Repeat wraps a texel index of any sign into the texture, by a mask for
+// power-of-two sizes and by a remainder for others: sampling whole periods
+// away (either side) reads the same texels as sampling inside.
+TEST(Texture, RepeatWrapsWholePeriodsForEverySize) {
+    for (int width : {3, 4, 5, 8})
+        for (Filter filter : {Filter::nearest, Filter::bilinear}) {
+            Image8 image(width, 2, 4, 255);
+            for (int i = 0; i < width * 2; ++i) image.pixels[std::size_t(i) * 4] = std::uint8_t(i * 25);
+            MipTexture t = make_texture(image, ColorSpace::linear, Wrap::repeat);
+            t.filter = filter;
+            for (int x = 0; x < width; ++x)
+                for (float offset : {0.0f, 0.25f}) {  // a texel centre, and a quarter texel right of it
+                    const Eigen::Vector2f inside((float(x) + 0.5f + offset) / float(width), 0.25f);
+                    const Eigen::Vector4f expected = sample(t, inside);
+                    for (float periods : {-7.0f, -2.0f, -1.0f, 1.0f, 3.0f})
+                        EXPECT_NEAR(sample(t, inside + Eigen::Vector2f(periods, 0)).x(), expected.x(), 1e-5f)
+                            << "width " << width << ", texel " << x << ", periods " << periods;
+                }
+        }
+}
