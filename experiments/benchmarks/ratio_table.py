@@ -36,11 +36,22 @@ def load(folder, stem):
 
 
 def find(benchmarks, name):
+    """The benchmark's median over its repetitions where it was repeated
+    (`make bench` repeats the rasterizer, interleaved at random with its peer,
+    so both see the same states of a noisy machine), else its one run."""
     pattern = re.compile(re.escape(name) + r"(/(min_time|iterations|real_time|repeats)[^/]*)*$")
-    for b in benchmarks or []:
-        if b.get("run_type", "iteration") == "iteration" and pattern.match(b["name"]):
+    runs = [b for b in benchmarks or [] if pattern.match(b.get("run_name", b["name"]))]
+    for b in runs:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median":
+            return b
+    for b in runs:
+        if b.get("run_type", "iteration") == "iteration":
             return b
     return None
+
+
+def repetitions(b):
+    return int(b.get("repetitions", 1)) if b.get("run_type") == "aggregate" else 1
 
 
 def milliseconds(b):
@@ -63,6 +74,8 @@ def main():
             continue
         ratio = milliseconds(b) / milliseconds(a)
         shown = [show_ms(milliseconds(a)), show_ms(milliseconds(b))]
+        if repetitions(a) > 1 and repetitions(b) > 1:
+            what = f"{what} (medians of {min(repetitions(a), repetitions(b))}, interleaved)"
         if "faces" in a and "faces" in b:  # simplifiers: where each stopped
             shown = [f"{t}, {int(x['faces']):,} faces" for t, x in zip(shown, (a, b))]
         reads = f"faster than {peer_name}" if ratio >= 1 else f"{1 / ratio:.2f}x slower than {peer_name}"
