@@ -63,7 +63,7 @@ fuzz:
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_targets
 	@scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
-# Benchmarks against their peers, in one run each (docs/performance.md).
+# Benchmarks against their peers, in one run each (the rasterizer repeated, below; docs/performance.md).
 # Each writes its JSON to $(BUILD)/bench/; ratio_table.py prints them as one table.
 BENCHMARKS = rasterizer metrics png simplification city
 # The rasterizer against llvmpipe, the noisiest ratios on a shared machine:
