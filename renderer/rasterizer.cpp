@@ -52,10 +52,6 @@ std::int64_t doubled_area(const ScreenTriangle& t) {
     return edge(t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2]);
 }
 
-}  // namespace
-
-namespace {
-
 // A clip-space point's snapped window position, depth and 1/w (docs/design.md: Rendering).
 void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v) {
     const float scale = float(1 << subpixel_bits);
