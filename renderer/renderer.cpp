@@ -109,7 +109,25 @@ struct TriangleSetup {
     // but no tangents, before it is made orthogonal to each pixel's normal.
     bool has_uv_frame;
     Eigen::Vector3f uv_tangent, uv_bitangent;
+    // The uv gradient, where the surface's height map states its depth.
+    bool has_uv_gradient;
+    UvGradient uv_gradient;
 };
+
+// The gradients g of u and v in the plane of a triangle with edges e1, e2
+// and uv changes d1, d2 along them: g . e1 = d1 and g . e2 = d2, so
+// g = [e1 e2] G^-1 d (G the edges' Gram matrix). False for a degenerate
+// triangle. Out of line, from the mesh: only metric parallax needs it, and
+// inlined its registers would cost every other triangle's setup.
+[[gnu::noinline]] bool uv_gradient_of(const Mesh& mesh, const std::uint32_t* v, UvGradient& gradient) {
+    const Eigen::Vector3f e1 = mesh.positions[v[1]] - mesh.positions[v[0]], e2 = mesh.positions[v[2]] - mesh.positions[v[0]];
+    const Eigen::Vector2f d1 = mesh.uvs[v[1]] - mesh.uvs[v[0]], d2 = mesh.uvs[v[2]] - mesh.uvs[v[0]];
+    float a = e1.dot(e1), b = e1.dot(e2), d = e2.dot(e2), det = a * d - b * b;
+    if (!(det > 0)) return false;
+    gradient.du_dposition = (e1 * (d * d1.x() - b * d2.x()) + e2 * (a * d2.x() - b * d1.x())) / det;
+    gradient.dv_dposition = (e1 * (d * d1.y() - b * d2.y()) + e2 * (a * d2.y() - b * d1.y())) / det;
+    return true;
+}
 
 void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
     const std::vector<ClippedWeights>* weights;
@@ -123,7 +141,9 @@ void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
     s.geometric_normal = e1.cross(e2);
     float length = s.geometric_normal.norm();
     s.geometric_normal = length > 0 ? Eigen::Vector3f(s.geometric_normal / length) : Eigen::Vector3f(0, 0, 1);
-    if (!mesh.uvs.empty() && mesh.tangents.empty()) {
+    s.has_uv_frame = s.has_uv_gradient = false;
+    if (mesh.uvs.empty()) return;
+    if (mesh.tangents.empty()) {
         const Eigen::Vector2f &u0 = mesh.uvs[s.v[0]], &u1 = mesh.uvs[s.v[1]], &u2 = mesh.uvs[s.v[2]];
         Eigen::Vector2f d1 = u1 - u0, d2 = u2 - u0;
         float det = d1.x() * d2.y() - d2.x() * d1.y();
@@ -131,10 +151,10 @@ void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
             s.has_uv_frame = true;
             s.uv_tangent = (e1 * d2.y() - e2 * d1.y()) / det;
             s.uv_bitangent = (e2 * d1.x() - e1 * d2.x()) / det;
-            return;
         }
     }
-    s.has_uv_frame = false;
+    const Surface& surface = s.batch->surface;
+    if (surface.height && surface.height_depth > 0) s.has_uv_gradient = uv_gradient_of(mesh, s.v, s.uv_gradient);
 }
 
 Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
@@ -155,6 +175,7 @@ Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
         f.uv = interpolate(mesh.uvs, v, b);
         f.duv_dx = interpolate(mesh.uvs, v, source_barycentrics(s.barycentrics, px + 1, py)) - f.uv;
         f.duv_dy = interpolate(mesh.uvs, v, source_barycentrics(s.barycentrics, px, py + 1)) - f.uv;
+        if (s.has_uv_gradient) f.uv_gradient = &s.uv_gradient;
         if (!mesh.tangents.empty()) {
             Eigen::Vector4f t4 = interpolate(mesh.tangents, v, b);
             Eigen::Vector3f tangent = t4.head<3>();

@@ -53,6 +53,9 @@ struct Surface {
     const MipTexture* color = nullptr;          // sRGB-decoded albedo, alpha
     const MipTexture* normal = nullptr;         // tangent-space normal map
     const MipTexture* height = nullptr;         // 1 = surface, 0 = deepest
+    // Metres from height 1 to height 0 (baked LoD pages); 0: unstated, and
+    // parallax offsets are the manual's, in the texture's own uv (docs/design.md: Rendering).
+    float height_depth = 0;
     Eigen::Vector3f specular{0.2f, 0.2f, 0.2f};
     float shininess = 32;
     AlphaMode alpha_mode = AlphaMode::opaque;

@@ -85,7 +85,7 @@ public:
         Eigen::Vector3f normal = f.normal;
         if (f.has_uv) {
             MipLevels levels(f);
-            Eigen::Vector2f uv = s.height ? displaced_uv(*s.height, f, levels, view) : f.uv;
+            Eigen::Vector2f uv = s.height ? displaced_uv(s, f, levels, view) : f.uv;
             Eigen::Vector4f color_texel, normal_texel;
             if (s.color && s.normal)
                 std::tie(color_texel, normal_texel) = sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);
@@ -104,14 +104,22 @@ public:
     }
 
 protected:
-    // Where the maps are sampled: the fragment's uv, or displaced by the height map.
-    virtual Eigen::Vector2f displaced_uv(const MipTexture&, const Fragment& f, MipLevels&, const Eigen::Vector3f&) const {
+    // Where the maps are sampled: the fragment's uv, or displaced by s's height map.
+    virtual Eigen::Vector2f displaced_uv(const Surface&, const Fragment& f, MipLevels&, const Eigen::Vector3f&) const {
         return f.uv;
     }
-    // The view vector in the tangent frame, and its direction in uv (v grows down the image, the bitangent points up).
-    static Eigen::Vector3f tangent_view(const Fragment& f, const Eigen::Vector3f& view, Eigen::Vector2f& uv_direction) {
+    // The view vector in the tangent frame, and the uv offset of the point one
+    // unit of depth below the surface on the line of sight, with offset limiting
+    // (Welsh 2004): V.xy in uv (v grows down the image, the bitangent points up)
+    // where the height map is in uv units (the manual's), the view's component
+    // in the surface mapped through the uv gradient and times the depth where the
+    // height map states its depth in metres (docs/design.md: Rendering).
+    static Eigen::Vector3f tangent_view(const Surface& s, const Fragment& f, const Eigen::Vector3f& view,
+                                        Eigen::Vector2f& uv_per_depth) {
         Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
-        uv_direction = Eigen::Vector2f(v.x(), -v.y());
+        if (s.height_depth <= 0) uv_per_depth = Eigen::Vector2f(v.x(), -v.y());
+        else if (!f.uv_gradient) uv_per_depth = Eigen::Vector2f::Zero();  // no uv gradient (degenerate uvs): no offset
+        else uv_per_depth = Eigen::Vector2f(f.uv_gradient->du_dposition.dot(view), f.uv_gradient->dv_dposition.dot(view)) * s.height_depth;
         return v;
     }
 
@@ -121,19 +129,20 @@ private:
     bool lit_;
 };
 
-// Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy.
+// Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy
+// in uv; for a height map with a depth, the exact depth (1 - h) below the surface.
 class ParallaxShader : public MappedShader {
 public:
     ParallaxShader(const Light& light, const Eigen::Vector3f& eye, float scale, float bias)
         : MappedShader(light, eye, true), scale_(scale), bias_(bias) {}
 
 protected:
-    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, MipLevels& levels,
+    Eigen::Vector2f displaced_uv(const Surface& s, const Fragment& f, MipLevels& levels,
                                  const Eigen::Vector3f& view) const override {
         Eigen::Vector2f direction;
-        tangent_view(f, view, direction);
-        float h = sample_surface(height, levels, f.uv).x();
-        return f.uv + direction * (h * scale_ + bias_);
+        tangent_view(s, f, view, direction);
+        float h = sample_surface(*s.height, levels, f.uv).x();
+        return f.uv + direction * (s.height_depth > 0 ? h - 1 : h * scale_ + bias_);
     }
 
 private:
@@ -142,18 +151,20 @@ private:
 
 // Parallax occlusion mapping (Tatarchuk 2006): march the view ray down from the
 // surface (height 1) in steps; refine linearly between the last two samples.
+// The ray crosses `scale` in uv, or the height map's stated depth.
 class OcclusionShader : public MappedShader {
 public:
     OcclusionShader(const Light& light, const Eigen::Vector3f& eye, float scale) : MappedShader(light, eye, true), scale_(scale) {}
 
 protected:
-    Eigen::Vector2f displaced_uv(const MipTexture& height, const Fragment& f, MipLevels& levels,
+    Eigen::Vector2f displaced_uv(const Surface& s, const Fragment& f, MipLevels& levels,
                                  const Eigen::Vector3f& view) const override {
+        const MipTexture& height = *s.height;
         Eigen::Vector2f direction;
-        Eigen::Vector3f v = tangent_view(f, view, direction);
+        Eigen::Vector3f v = tangent_view(s, f, view, direction);
         float cos_view = std::max(v.z(), 0.05f);
         int steps = int(std::lround(8 + 24 * (1 - cos_view)));
-        Eigen::Vector2f total = direction / cos_view * scale_;
+        Eigen::Vector2f total = direction / cos_view * (s.height_depth > 0 ? 1 : scale_);
         Eigen::Vector2f step = total / float(steps);
         float layer = 1.0f / float(steps), ray = 1, previous_ray = 1;
         Eigen::Vector2f uv = f.uv, previous_uv = f.uv;

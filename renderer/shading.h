@@ -10,6 +10,11 @@
 
 namespace boxlod {
 
+// A triangle's uv gradient in world space: uv per metre.
+struct UvGradient {
+    Eigen::Vector3f du_dposition, dv_dposition;
+};
+
 // The interpolated inputs of one pixel, in world space.
 struct Fragment {
     Eigen::Vector3f position, normal, geometric_normal;
@@ -17,6 +22,9 @@ struct Fragment {
     // Tangent frame: tangent along +u, bitangent up the image (against +v), as
     // glTF's B = cross(N, T) * w; normal maps store (T, B, N) components.
     Eigen::Vector3f tangent{1, 0, 0}, bitangent{0, 1, 0};
+    // Set only where the surface's height map states its depth: a metric
+    // parallax offset maps to uv through it (docs/design.md: Rendering).
+    const UvGradient* uv_gradient = nullptr;
     bool has_uv = false;
 };
 

@@ -53,6 +53,7 @@ Model sample_model() {
     brick.base_color_texture = 0;
     brick.normal_texture = 1;
     brick.height_texture = 2;
+    brick.height_depth = 0.375f;
     brick.specular_color = {0.1f, 0.2f, 0.3f};
     brick.shininess = 12.5f;
     brick.specular_glossiness = true;  // written back as KHR_materials_pbrSpecularGlossiness
@@ -123,6 +124,7 @@ void expect_same_model(const Model& a, const Model& b) {
         EXPECT_EQ(a.materials[i].base_color_texture, b.materials[i].base_color_texture);
         EXPECT_EQ(a.materials[i].normal_texture, b.materials[i].normal_texture);
         EXPECT_EQ(a.materials[i].height_texture, b.materials[i].height_texture);
+        EXPECT_EQ(a.materials[i].height_depth, b.materials[i].height_depth);
         EXPECT_EQ(a.materials[i].specular_color, b.materials[i].specular_color);
         EXPECT_EQ(a.materials[i].shininess, b.materials[i].shininess);
         EXPECT_EQ(a.materials[i].specular_glossiness, b.materials[i].specular_glossiness);

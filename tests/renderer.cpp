@@ -4,7 +4,9 @@
 #include "render_scene.h"
 #include "renderer/exr_io.h"
 #include "renderer/overlays.h"
+#include "renderer/shading.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -212,4 +214,55 @@ TEST(ExrIo, WritesAReadableFileAtomically) {
     std::size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) files += entry.is_regular_file();
     EXPECT_EQ(files, 2u);
+}
+
+namespace {
+
+// Writes the uv gradient the pipeline hands over: colour = du/dposition, normal = dv/dposition.
+class UvGradientShader : public Shader {
+public:
+    bool reads_uv() const override { return true; }
+    ShadedPixel shade(const Surface&, Fragment& f) const override {
+        if (!f.uv_gradient) return {Eigen::Vector3f::Zero(), Eigen::Vector3f::Zero()};
+        return {f.uv_gradient->du_dposition, f.uv_gradient->dv_dposition};
+    }
+};
+
+}  // namespace
+
+// A slanted quad with a sheared, anisotropic mapping: every pixel gets the
+// triangle's uv gradient in world space, exactly where the height map states
+// its depth (a metric parallax offset maps through it), and none elsewhere.
+TEST(Renderer, FragmentsCarryTheUvGradientWhereTheHeightMapStatesItsDepth) {
+    const Eigen::Matrix3f tilt = Eigen::AngleAxisf(0.5f, Eigen::Vector3f(1, 2, 0).normalized()).toRotationMatrix();
+    // uv = M (x, y) in the quad's plane before the tilt: u = 0.25 x + 0.1 y, v = -0.5 y.
+    Eigen::Matrix<float, 2, 3> m;
+    m << 0.25f, 0.1f, 0, 0, -0.5f, 0;
+    Mesh quad;
+    for (const Eigen::Vector3f& corner : {Eigen::Vector3f(-1, -1, 0), Eigen::Vector3f(1, -1, 0), Eigen::Vector3f(1, 1, 0), Eigen::Vector3f(-1, 1, 0)}) {
+        quad.positions.push_back(tilt * corner);
+        quad.uvs.push_back(m * corner);
+    }
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    MipTexture height = make_texture(Image16(2, 2, 1, 65535));
+    Surface surface;
+    surface.height = &height;
+    UvGradientShader shader;
+    RenderSettings settings;
+    settings.shader = &shader;
+    settings.camera.position = {0.5f, 0.3f, 4};
+    const Eigen::Vector3f du = tilt * m.row(0).transpose(), dv = tilt * m.row(1).transpose();
+    for (float depth : {0.0f, 0.3f}) {
+        surface.height_depth = depth;
+        Frame frame = make_frame(32, 32, {1, 1, 1});
+        render({{&quad, surface}}, settings, frame);
+        int covered = 0;
+        for (std::size_t i = 0; i < frame.color.size(); ++i) {
+            if (frame.color[i].w() == 0) continue;
+            ++covered;
+            EXPECT_NEAR((frame.color[i].head<3>() - (depth > 0 ? du : Eigen::Vector3f::Zero())).norm(), 0, 1e-5) << i;
+            EXPECT_NEAR((frame.normal[i] - (depth > 0 ? dv : Eigen::Vector3f::Zero())).norm(), 0, 1e-5) << i;
+        }
+        EXPECT_GT(covered, 200);
+    }
 }

@@ -124,3 +124,55 @@ TEST(Shading, ColourAndNormalMapsOfDifferentSizesEachGetTheirOwnMipLevel) {
     EXPECT_EQ(pixel.normal, expected);
     EXPECT_NE(sample(normal_map, f.uv, 1), texel);  // so the normal map's level matters
 }
+
+// Parallax moves the lookup to the point of the map seen along the view ray:
+// in the manual's uv units when the height map states no depth, in metres
+// through the uv gradient when it does (docs/design.md: Rendering).
+TEST(Shading, ParallaxOffsetsAreInUvOrInMetresAsTheHeightMapStates) {
+    Image8 ramp(64, 64, 4, 255);  // red along u, green along v: the colour says where the lookup landed
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) ramp.at(x, y)[0] = std::uint8_t(x * 4), ramp.at(x, y)[1] = std::uint8_t(y * 4);
+    MipTexture color = make_texture(ramp, ColorSpace::linear);
+    MipTexture height = make_texture(Image16(4, 4, 1, 16384));  // h = 0.25 everywhere
+    Fragment f;
+    f.position = {0, 0, 0};
+    f.normal = f.geometric_normal = {0, 0, 1};
+    f.tangent = {1, 0, 0}, f.bitangent = {0, 1, 0};
+    f.has_uv = true;
+    f.uv = {0.5f, 0.5f};
+    const UvGradient gradient{{0.5f, 0, 0}, {0, -0.25f, 0}};  // u = x / 2, v = -y / 4: v runs down the image, the bitangent up
+    f.uv_gradient = &gradient;
+    const Eigen::Vector3f eye(3, 2, 6);
+    const Eigen::Vector3f view = eye.normalized();
+    const float h = 16384.0f / 65535.0f;
+    RenderSettings settings;
+    settings.light.position = {0, 0, 10};
+    auto shade_at = [&](RenderMode mode, float depth, const Eigen::Vector2f* uv) {
+        Surface surface;
+        surface.color = &color;
+        surface.height = uv ? nullptr : &height;
+        surface.height_depth = depth;
+        Fragment fragment = f;
+        if (uv) fragment.uv = *uv;
+        settings.mode = mode;
+        return make_shader(settings, eye)->shade(surface, fragment).color;
+    };
+    const Eigen::Vector2f per_metre(view.x() * 0.5f, -view.y() * 0.25f), in_uv(view.x(), -view.y());
+    const float depth = 0.4f;
+    struct Case {
+        RenderMode mode;
+        float depth;
+        Eigen::Vector2f expected_uv;
+    } cases[] = {
+        {RenderMode::parallax, 0, f.uv + in_uv * (h * settings.parallax_scale + settings.parallax_bias)},
+        {RenderMode::parallax, depth, f.uv + per_metre * ((h - 1) * depth)},      // offset limiting: no 1 / cos
+        {RenderMode::pom, depth, f.uv + per_metre * ((h - 1) * depth / view.z())},  // the ray meets h at depth 0.75
+    };
+    const float tolerance = 2e-4f;  // the colour of a uv a rounding step away
+    for (const Case& c : cases) {
+        Eigen::Vector3f displaced = shade_at(c.mode, c.depth, nullptr), expected = shade_at(RenderMode::normal, 0, &c.expected_uv);
+        EXPECT_NEAR((displaced - expected).norm(), 0, tolerance) << render_mode_name(c.mode) << " depth " << c.depth;
+        Eigen::Vector3f undisplaced = shade_at(RenderMode::normal, 0, &f.uv);
+        EXPECT_GT((displaced - undisplaced).norm(), 10 * tolerance) << render_mode_name(c.mode) << " depth " << c.depth;
+    }
+}

@@ -131,6 +131,7 @@ Surface material_surface(const Material& material, const DecodedTextures& textur
     surface.color = texture(textures.color, material.base_color_texture);
     surface.normal = texture(textures.linear, material.normal_texture);
     surface.height = texture(textures.linear, material.height_texture);
+    surface.height_depth = material.height_depth;
     surface.specular = material.specular_color;
     surface.shininess = material.shininess;
     surface.alpha_mode = material.alpha_mode;

@@ -76,6 +76,7 @@ tinygltf::Value material_extras(const Material& material, int height_image) {
                                    {"shininess", tinygltf::Value(json_number(material.shininess))}};
     // glTF has no height-map slot; the image index travels in extras.
     if (height_image >= 0) extras["height_texture"] = tinygltf::Value(height_image);
+    if (height_image >= 0 && material.height_depth > 0) extras["height_depth"] = tinygltf::Value(json_number(material.height_depth));
     return boxlod_object(std::move(extras));
 }
 
@@ -121,6 +122,10 @@ void read_material_extras(const tinygltf::Value& extras, int image_count, const 
         int texture = int(fields->Get("height_texture").GetNumberAsDouble());
         if (texture < 0 || texture >= image_count) throw_input_error(at.file, at.place, "height_texture out of range");
         material.height_texture = texture;
+    }
+    if (fields->Has("height_depth")) {
+        if (!fields->Get("height_depth").IsNumber()) throw_input_error(at.file, at.place, "height_depth must be a number");
+        material.height_depth = float(fields->Get("height_depth").GetNumberAsDouble());  // range: validate_model
     }
 }
 

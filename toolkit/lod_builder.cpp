@@ -18,9 +18,10 @@ namespace {
 // Copies the `region` of a baked face into a page with its gutter: the face's
 // own texels around the region where it has them (so a cropped face samples
 // the neighbours it had uncropped), its edge texels repeated beyond; clipped
-// to the page's border.
-void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, Texture& color,
-                Texture& normal, Texture& height) {
+// to the page's border. Heights go from the face's own depth (0 at the box's
+// opposite face) to the pages' common depth: depth_ratio = face depth / page depth.
+void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, float depth_ratio,
+                Texture& color, Texture& normal, Texture& height) {
     const Eigen::Vector2i block = placed_size({region.width, region.height}, at);
     const int page_width = color.image.width, page_height = color.image.height;
     for (int by = -gutter; by < block.y() + gutter; ++by)
@@ -32,7 +33,8 @@ void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlace
             const int sx = std::clamp(region.x + rx, 0, face.color.width - 1), sy = std::clamp(region.y + ry, 0, face.color.height - 1);
             std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
             std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
-            height.image16.at(px, py)[0] = face.height.at(sx, sy)[0];
+            const float below = float(65535 - face.height.at(sx, sy)[0]) * depth_ratio;
+            height.image16.at(px, py)[0] = std::uint16_t(65535 - std::lround(below));
         }
 }
 
@@ -142,6 +144,7 @@ struct Packing {
     Atlas atlas;
     std::uint64_t face_texels = 0, gutter_texels = 0;
     float longest_face = 0;  // metres, for min_distance
+    float height_depth = 0;  // metres: the deepest packed face's box depth, height 0 on every page
 };
 
 // Pack: the kept rectangles of the cut's faces into pages.
@@ -159,6 +162,7 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
             const TexelRect region = p.crop_faces ? session.baked.at(node)[f].covered : TexelRect{0, 0, texels.x(), texels.y()};
             if (region.empty()) continue;
             packing.faces.push_back({node, f, region});
+            packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
             sizes.emplace_back(region.width, region.height);
             packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
@@ -166,13 +170,14 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
     if (textured) {
         packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
         packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.sizing.gutter);
+        if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
     }
     return packing;
 }
 
 // Page: one material per atlas page with its three empty textures (uncovered
 // texels: transparent colour, the flat normal, height 0); untextured, one grey material.
-void add_pages(Model& out, const Atlas& atlas, bool textured) {
+void add_pages(Model& out, const Atlas& atlas, float height_depth, bool textured) {
     if (!textured) {
         Material material;
         material.name = "lod_box";
@@ -197,6 +202,7 @@ void add_pages(Model& out, const Atlas& atlas, bool textured) {
         material.base_color_texture = textures.color;
         material.normal_texture = textures.normal;
         material.height_texture = textures.height;
+        material.height_depth = height_depth;
         material.alpha_mode = AlphaMode::mask;
         // boxlod measures with both sides drawn; through a face's cut-out texels one sees the
         // inside of the box's far faces, so engines must draw both sides too (docs/design.md: Files).
@@ -250,8 +256,9 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), region, &at,
                              atlas.pages[std::size_t(at.page)]);
             const LodPage page = lod_page(at.page);
-            place_face(session.baked.at(n)[f], region, at, session.sizing.gutter, out.textures[std::size_t(page.color)],
-                       out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
+            place_face(session.baked.at(n)[f], region, at, session.sizing.gutter, 2 * faces[f].half_depth / packing.height_depth,
+                       out.textures[std::size_t(page.color)], out.textures[std::size_t(page.normal)],
+                       out.textures[std::size_t(page.height)]);
         }
         for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
     }
@@ -338,7 +345,7 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     LodParameters saved = p;
     saved.current_level = current_level;
     for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
-    add_pages(out, lod.atlas, textured);
+    add_pages(out, lod.atlas, packing.height_depth, textured);
     add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
     session.times.mesh += seconds_since(start);
 

@@ -114,9 +114,9 @@ std::vector<ParameterDeclaration> make_declarations() {
                          &P::max_texture_size, r::texture_size, true),
         enum_parameter("render_mode", "render-mode", "M", "how the LoD is drawn (untextured LoDs are not baked): ",
                        &P::render_mode, render_modes()),
-        number_parameter("parallax_scale", "parallax-scale", "S", "parallax height scale, in texture units",
+        number_parameter("parallax_scale", "parallax-scale", "S", "parallax height scale, in texture units, for height maps that state no depth (LoD pages state theirs, in metres)",
                          &P::parallax_scale, r::parallax),
-        number_parameter("parallax_bias", "parallax-bias", "B", "parallax height bias, in texture units",
+        number_parameter("parallax_bias", "parallax-bias", "B", "parallax height bias, in texture units, as the scale",
                          &P::parallax_bias, r::parallax),
     };
 }

@@ -47,7 +47,7 @@ constexpr NumberRange distance{0, 1e6};         // metres; 0: the distance that 
 constexpr double min_positive_distance = 1e-3;  // a sizing camera nearer than 1 mm sizes nothing sensible
 constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two
-constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units
+constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units (docs/design.md: Rendering)
 }  // namespace parameter_range
 
 struct ParameterDeclaration {

@@ -125,6 +125,9 @@ void validate_model(const Model& model) {
             throw_input_error(file, place, "KHR_materials_specular factor out of range");
         if (!shininess_range.contains(material.shininess))
             throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
+        if (!height_depth_range.contains(material.height_depth))
+            throw_input_error(file, place,
+                              "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
     }
     if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
 }

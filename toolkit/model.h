@@ -48,13 +48,17 @@ struct SpecularExtension {
     int color_texture = -1;                 // specularColorTexture: RGB, sRGB
 };
 constexpr NumberRange specular_color_factor_range{0, 1000};  // the extension allows [0, inf): boxlod's bound
+constexpr NumberRange height_depth_range{0, 1e6};             // metres, as a scope's extents
 
 struct Material {
     std::string name;
     Eigen::Vector4f base_color{1, 1, 1, 1};  // linear RGBA
     int base_color_texture = -1;             // index into Model::textures
     int normal_texture = -1;
-    int height_texture = -1;  // baked LoD faces: 1 at the face plane, 0 at the opposite face
+    int height_texture = -1;  // baked LoD faces: 1 at the face plane, 0 at height_depth below it
+    // Metres from height 1 to height 0; 0: unstated (the manual's parallax scale
+    // and bias apply, in uv). LoD pages state it (docs/design.md: Rendering).
+    float height_depth = 0;
     Eigen::Vector3f specular_color{0.2f, 0.2f, 0.2f};  // Blinn-Phong, as the renderer shades
     float shininess = 32;
     // The source stated its specular terms (glTF KHR_materials_pbrSpecularGlossiness,
