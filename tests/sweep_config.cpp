@@ -115,5 +115,17 @@ TEST(SweepConfig, LoadNamesAMissingFile) {
     EXPECT_EQ(c.models.at(0).path, (folder / "m.glb").lexically_normal().string());
 }
 
+// The configs the README and docs point to load as shipped (their models exist once make test has installed them).
+TEST(SweepConfig, EveryShippedConfigLoads) {
+    const std::filesystem::path configs = std::filesystem::path(BOXLOD_TEST_DATA).parent_path().parent_path() / "experiments" / "configs";
+    int loaded = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(configs)) {
+        if (entry.path().extension() != ".txt") continue;
+        EXPECT_NO_THROW(load_sweep_config(entry.path().string())) << entry.path();
+        ++loaded;
+    }
+    EXPECT_GE(loaded, 6);
+}
+
 }  // namespace
 }  // namespace boxlod
