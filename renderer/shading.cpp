@@ -34,12 +34,14 @@ Eigen::Vector4f sample_surface(const MipTexture& texture, MipLevels& levels, con
     return sample(texture, uv, levels.of(texture));
 }
 
-// The unit vector to the eye; two-sided lighting turns the fragment's frame towards it.
-[[gnu::always_inline]] inline Eigen::Vector3f face_the_viewer(const Eigen::Vector3f& eye, Fragment& f) {
+// The unit vector to the eye; two-sided lighting turns the fragment's frame
+// towards it, and `turned` says whether it did (the surface is seen from behind).
+[[gnu::always_inline]] inline Eigen::Vector3f face_the_viewer(const Eigen::Vector3f& eye, Fragment& f, bool& turned) {
     Eigen::Vector3f view = (eye - f.position);
     float view_length = view.norm();
     view = view_length > 0 ? Eigen::Vector3f(view / view_length) : Eigen::Vector3f(0, 0, 1);
-    if (f.geometric_normal.dot(view) < 0) {
+    turned = f.geometric_normal.dot(view) < 0;
+    if (turned) {
         f.geometric_normal = -f.geometric_normal;
         f.normal = -f.normal;
         f.bitangent = -f.bitangent;
@@ -64,7 +66,8 @@ public:
     UntexturedShader(const Light& light, const Eigen::Vector3f& eye) : light_(light), eye_(eye) {}
     bool reads_uv() const override { return false; }
     ShadedPixel shade(const Surface& s, Fragment& f) const override {
-        Eigen::Vector3f view = face_the_viewer(eye_, f);
+        bool turned;
+        Eigen::Vector3f view = face_the_viewer(eye_, f, turned);
         return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal, s.base_color.w()};
     }
 
@@ -80,12 +83,16 @@ public:
     MappedShader(const Light& light, const Eigen::Vector3f& eye, bool lit) : light_(light), eye_(eye), lit_(lit) {}
     bool reads_uv() const override { return true; }
     ShadedPixel shade(const Surface& s, Fragment& f) const override {
-        Eigen::Vector3f view = face_the_viewer(eye_, f);
+        bool turned;
+        Eigen::Vector3f view = face_the_viewer(eye_, f, turned);
         Eigen::Vector4f albedo = s.base_color;
         Eigen::Vector3f normal = f.normal;
         if (f.has_uv) {
             MipLevels levels(f);
-            Eigen::Vector2f uv = s.height ? displaced_uv(s, f, levels, view) : f.uv;
+            // A metric height map describes what lies behind the surface seen from
+            // its front; from behind (inside a box, through cut-out texels) no offset fits.
+            const bool displace = s.height && !(turned && s.height_depth > 0);
+            Eigen::Vector2f uv = displace ? displaced_uv(s, f, levels, view) : f.uv;
             Eigen::Vector4f color_texel, normal_texel;
             if (s.color && s.normal)
                 std::tie(color_texel, normal_texel) = sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);

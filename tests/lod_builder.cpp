@@ -201,9 +201,9 @@ TEST(LodBuilder, ParallaxOnPagesShowsTheRecessesBehindTheFaces) {
                  error_pom = mean_difference(pom, original, moved), error_page_uv = mean_difference(page_uv_parallax, original, moved);
     std::cout << "mean difference: normal " << error_normal << ", parallax " << error_parallax << ", pom " << error_pom
               << ", parallax in page uv " << error_page_uv << ", over " << std::count(moved.begin(), moved.end(), true) << " pixels\n";
-    EXPECT_LT(error_parallax, 0.8 * error_normal);  // measured 0.63
-    EXPECT_LT(error_pom, 0.8 * error_normal);  // 0.70
-    EXPECT_LT(error_parallax, 0.7 * error_page_uv);  // 0.52
+    EXPECT_LT(error_parallax, 0.8 * error_normal);  // measured 0.62
+    EXPECT_LT(error_pom, 0.8 * error_normal);  // 0.69
+    EXPECT_LT(error_parallax, 0.7 * error_page_uv);  // 0.51
 }
 
 TEST(LodBuilder, AnLodCannotBeSimplifiedAgain) {

@@ -175,4 +175,12 @@ TEST(Shading, ParallaxOffsetsAreInUvOrInMetresAsTheHeightMapStates) {
         Eigen::Vector3f undisplaced = shade_at(RenderMode::normal, 0, &f.uv);
         EXPECT_GT((displaced - undisplaced).norm(), 10 * tolerance) << render_mode_name(c.mode) << " depth " << c.depth;
     }
+    // Seen from behind (inside a box, through a cut-out), a metric height map
+    // offsets nothing; one in uv units keeps the manual's offset.
+    f.geometric_normal = f.normal = {0, 0, -1};
+    f.bitangent = {0, -1, 0};
+    for (RenderMode mode : {RenderMode::parallax, RenderMode::pom}) {
+        EXPECT_EQ(shade_at(mode, depth, nullptr), shade_at(RenderMode::normal, 0, &f.uv)) << render_mode_name(mode);
+        EXPECT_NE(shade_at(mode, 0, nullptr), shade_at(RenderMode::normal, 0, &f.uv)) << render_mode_name(mode);
+    }
 }
