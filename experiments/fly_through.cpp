@@ -38,11 +38,14 @@ Light city_light(const Bounds& bounds) {
     return light;
 }
 
+// The city draws in normal mode: height maps are neither read, nor packed, nor paid for.
+constexpr RenderMode city_render_mode = RenderMode::normal;
+
 Image8 render_batches(const std::vector<Batch>& batches, const Camera& camera, const Light& light, int width,
                       int height, int threads) {
     RenderSettings settings;
     settings.camera = camera;
-    settings.mode = RenderMode::normal;
+    settings.mode = city_render_mode;
     settings.light = light;
     settings.threads = threads;
     Frame frame = make_frame(width, height, sky);
@@ -65,16 +68,13 @@ struct BuiltBuilding {
     SelectionObject object;
 };
 
-// The city draws in normal mode, which never reads height maps: packed without them.
-constexpr bool city_height_maps = false;
-
 BuiltBuilding build_building(const Model& city, TextureCache& cache, int node, const FlyThroughOptions& options,
                              bool measure_error, const Light& light) {
     BuiltBuilding built;
     built.levels.name = city.nodes[node].name;
     built.levels.node = node;
     Model model = extract_subtree(city, node);
-    built.levels.levels.push_back(pack_drawable(model, &cache, city_height_maps));
+    built.levels.levels.push_back(pack_drawable(model, &cache, maps_drawn(city_render_mode).height));
     MeshCounts original = mesh_counts(model);
     std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
     built.levels.triangles = {original.triangles};
@@ -93,7 +93,7 @@ BuiltBuilding build_building(const Model& city, TextureCache& cache, int node, c
         levels.push_back({counts.faces, session->sizing, std::nullopt});
         built.levels.triangles.push_back(counts.triangles);
         built.levels.costs.push_back(lod.cost);
-        built.levels.levels.push_back(pack_drawable(lod.model, &cache, city_height_maps));
+        built.levels.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));
     }
     if (boxes[0]) {
         built.object = selection_object(*boxes[0], std::move(levels));
@@ -121,7 +121,7 @@ void record_cost(const CityLevels& city, const FrameRecord* previous, FrameRecor
         drawn.push_back(&city.buildings[b].costs[std::size_t(record.levels[b])]);
         if (previous && record.levels[b] != previous->levels[b]) ++record.levels_changed;
     }
-    record.cost = combined_cost(drawn);
+    record.cost = drawn_cost(drawn, city_render_mode);
 }
 
 std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width + 239) / 240)); }

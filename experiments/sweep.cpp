@@ -162,7 +162,7 @@ struct Candidate {
     std::size_t nodes_with_box = 0;
     std::string depth_error;  // an LoD's proxy error (LodSession::depth_errors summed over its boxes); empty for baselines
     int obtained_levels = 0;
-    ModelCost cost;
+    CostParts cost;  // each row states the cost of the maps its render mode draws
     std::unique_ptr<DrawableModel> drawable;  // made by run_group unless `make` made it
     double seconds = 0;  // building it and making it drawable
     std::string variant;  // a baseline's variant (results.csv baseline_variant)
@@ -171,7 +171,7 @@ struct Candidate {
 // `cost`: the model's, when its builder has it already (an LoD); else computed here.
 Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels, const CostParts* cost = nullptr) {
     Candidate c;
-    c.cost = cost ? combined_cost({cost}) : model_cost(model);
+    c.cost = cost ? *cost : cost_parts(model);
     c.model = std::move(model);
     c.atlas = std::move(atlas);
     c.nodes_with_box = nodes_with_box;
@@ -316,7 +316,8 @@ const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report,
 }
 
 // The results.csv fields of a row after its key.
-std::vector<std::string> result_fields(const Candidate& c, const Shot& original, const Metrics& metrics) {
+std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, const Shot& original, const Metrics& metrics) {
+    const ModelCost cost = drawn_cost({&c.cost}, mode);
     MeshCounts counts = mesh_counts(c.model);
     int largest_page = 0;
     for (const Eigen::Vector2i& page : c.atlas.pages) largest_page = std::max({largest_page, page.x(), page.y()});
@@ -326,8 +327,8 @@ std::vector<std::string> result_fields(const Candidate& c, const Shot& original,
         std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
         std::to_string(c.face_texels),
         std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
-        std::to_string(c.nodes_with_box), c.depth_error, std::to_string(c.cost.draw_calls), std::to_string(c.cost.mesh_bytes),
-        std::to_string(c.cost.texture_bytes), std::to_string(c.cost.texture_bytes_gpu), std::to_string(c.cost.bytes()),
+        std::to_string(c.nodes_with_box), c.depth_error, std::to_string(cost.draw_calls), std::to_string(cost.mesh_bytes),
+        std::to_string(cost.texture_bytes), std::to_string(cost.texture_bytes_gpu), std::to_string(cost.bytes()),
         std::to_string(covered_pixels(original.coverage)), c.variant};
     fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
     return fields;
@@ -392,7 +393,7 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
             report.metric_seconds += metric_seconds;
             mean_error[std::size_t(a)] += metrics.error / double(missing.size());
             drawn[std::size_t(a)].push_back(
-                {extend_row(row.key, result_fields(c, original_shot, metrics)),
+                {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
                  extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
                  out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap)});
         }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace boxlod {
 
@@ -35,6 +36,17 @@ std::span<const EnumEntry<RenderMode>> render_modes() { return render_mode_table
 bool parse_render_mode(const std::string& name, RenderMode& mode) { return parse_enum(render_modes(), name, mode); }
 
 const char* render_mode_name(RenderMode mode) { return enum_name(render_modes(), mode); }
+
+MapsDrawn maps_drawn(RenderMode mode) {
+    switch (mode) {
+    case RenderMode::untextured: return {};
+    case RenderMode::normal: return {.color = true, .normal = true};
+    case RenderMode::parallax:
+    case RenderMode::pom: return {.color = true, .normal = true, .height = true};
+    case RenderMode::albedo: return {.color = true};
+    }
+    throw std::logic_error("maps_drawn: unknown render mode");
+}
 
 Light light_for_camera(const Camera& camera) {
     Eigen::Vector3f eye = camera.position - camera.target;

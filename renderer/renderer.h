@@ -29,6 +29,14 @@ std::span<const EnumEntry<RenderMode>> render_modes();  // names ("untextured", 
 bool parse_render_mode(const std::string& name, RenderMode& mode);
 const char* render_mode_name(RenderMode mode);
 
+// The maps a mode's colour image reads: what an engine drawing that way loads
+// (docs/design.md: Cost). Albedo's normal output reads the normal map too, but
+// its picture does not.
+struct MapsDrawn {
+    bool color = false, normal = false, height = false;
+};
+MapsDrawn maps_drawn(RenderMode mode);
+
 // A triangle list; every attribute but positions may be empty.
 struct Mesh {
     std::vector<Eigen::Vector3f> positions, normals;

@@ -72,6 +72,42 @@ TEST(Cost, SharedTexturesArePaidOnceWhenModelsAreCombined) {
     EXPECT_EQ(other.texture_bytes, one.texture_bytes + 4u * (64 + 16 + 4 + 1));
 }
 
+// A render mode pays for the maps it draws: none untextured, colour for
+// albedo, colour and normal for normal mapping, and the height map too for
+// parallax and pom. A texture two maps share is paid where either is drawn.
+TEST(Cost, EachRenderModePaysForTheMapsItDraws) {
+    Model model = textured_quad(0);
+    const std::uint64_t color = 4u * (64 + 16 + 4 + 1), normal = 3u * (16 + 4 + 1), height = 2u * (16 + 4 + 1);
+    const std::uint64_t color_gpu = 7u * 8, normal_gpu = 3u * 16, height_gpu = 3u * 8;
+    CostParts parts = cost_parts(model);
+    auto texture_bytes = [&](RenderMode mode) { return drawn_cost({&parts}, mode).texture_bytes; };
+    EXPECT_EQ(texture_bytes(RenderMode::untextured), 0u);
+    EXPECT_EQ(texture_bytes(RenderMode::albedo), color);
+    EXPECT_EQ(texture_bytes(RenderMode::normal), color + normal);
+    EXPECT_EQ(texture_bytes(RenderMode::parallax), color + normal + height);
+    EXPECT_EQ(texture_bytes(RenderMode::pom), color + normal + height);
+    EXPECT_EQ(drawn_cost({&parts}, RenderMode::normal).texture_bytes_gpu, color_gpu + normal_gpu);
+    EXPECT_EQ(drawn_cost({&parts}, RenderMode::pom).texture_bytes_gpu, combined_cost({&parts}).texture_bytes_gpu);
+    for (const EnumEntry<RenderMode>& mode : render_modes()) {
+        const ModelCost drawn = drawn_cost({&parts}, mode.value);
+        EXPECT_EQ(drawn.mesh_bytes, parts.mesh_bytes) << mode.name;  // vertex buffers as exported
+        EXPECT_EQ(drawn.draw_calls, 1u) << mode.name;
+    }
+    EXPECT_EQ(texture_bytes(RenderMode::normal) + height, model_cost(model).texture_bytes);
+
+    // A second quad whose colour map is the first one's height map: albedo loads it, stored as first sampled.
+    Primitive second = model.nodes[0].primitives[0];
+    second.material = 1;
+    model.nodes[0].primitives.push_back(second);
+    Material colored_by_height;
+    colored_by_height.base_color_texture = 2;
+    model.materials.push_back(colored_by_height);
+    CostParts shared = cost_parts(model);
+    EXPECT_EQ(drawn_cost({&shared}, RenderMode::albedo).texture_bytes, color + height);
+    EXPECT_EQ(drawn_cost({&shared}, RenderMode::pom).texture_bytes, color + normal + height);  // paid once
+    EXPECT_EQ(drawn_cost({&shared}, RenderMode::albedo).texture_bytes_gpu, color_gpu + height_gpu);
+}
+
 // mesh_bytes is what the export writes: an exported LoD's .bin holds exactly its
 // vertex and index buffers, and the statistics report the same numbers.
 TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {

@@ -127,6 +127,27 @@ TEST(FlyThrough, FramesDoNotDependOnTheMemoryBudget) {
     EXPECT_GT(unpacked[0], unpacked[1]);  // with no budget, level 0 and the frame's level take turns
 }
 
+// The city draws in normal mapping, so a frame pays for no height page: its
+// cost is what that mode loads of the streets and each building's level.
+TEST(FlyThrough, FrameCostIsWhatNormalMappingLoads) {
+    const OneBuilding& b = one_building();
+    FlyThroughOptions options = b.options;
+    options.strategy = parse_strategy("distance:40,80,160,320,640", "test");
+    std::size_t boxed_frames = 0;
+    for (const FrameRecord& frame : fly_through(b.levels, dolly(b.levels.objects[0], 12), options)) {
+        std::vector<const CostParts*> drawn = {&b.levels.street_cost,
+                                               &b.levels.buildings[0].costs[std::size_t(frame.levels[0])]};
+        const ModelCost expected = drawn_cost(drawn, RenderMode::normal), every_map = combined_cost(drawn);
+        EXPECT_EQ(frame.cost.texture_bytes_gpu, expected.texture_bytes_gpu);
+        EXPECT_EQ(frame.cost.bytes(), expected.bytes());
+        if (frame.levels[0] > 0) {
+            EXPECT_LT(frame.cost.texture_bytes, every_map.texture_bytes);  // the level's height pages
+            ++boxed_frames;
+        }
+    }
+    EXPECT_GT(boxed_frames, 0u);
+}
+
 TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
     Model city = small_city(4);
     FlyThroughOptions options = tiny_frames();

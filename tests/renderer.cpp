@@ -68,6 +68,26 @@ TEST(Renderer, ModesDifferFromEachOther) {
         for (std::size_t j = i + 1; j < images.size(); ++j) EXPECT_NE(images[i], images[j]) << i << " vs " << j;
 }
 
+// maps_drawn says which maps each mode's picture reads (what a mode's cost
+// counts): taking a map away changes the picture exactly where it says so.
+TEST(Renderer, EachModesPictureReadsTheMapsItsCostCounts) {
+    auto scene = test::make_render_scene();
+    for (const EnumEntry<RenderMode>& mode : render_modes()) {
+        RenderSettings settings = scene->settings;
+        settings.mode = mode.value;
+        const std::vector<std::uint8_t> all = frame_to_srgb8(render_scene(*scene, settings)).pixels;
+        const MapsDrawn drawn = maps_drawn(mode.value);
+        for (auto [map, read] : {std::pair{&Surface::color, drawn.color}, {&Surface::normal, drawn.normal},
+                                 {&Surface::height, drawn.height}}) {
+            std::vector<Batch> without = scene->batches;
+            without[0].surface.*map = nullptr;  // the floor's
+            Frame frame = make_frame(96, 72, {1, 1, 1});
+            render(without, settings, frame);
+            EXPECT_EQ(frame_to_srgb8(frame).pixels != all, read) << mode.name;
+        }
+    }
+}
+
 TEST(Renderer, OutputIsIdenticalForAnyThreadCount) {
     auto scene = test::make_render_scene();
     RenderSettings settings = scene->settings;

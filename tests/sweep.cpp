@@ -161,6 +161,28 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
     }
 }
 
+// A row pays for the maps its render mode draws: the same boxes cost their
+// height pages (BC4, 8 of the 32 bytes per block of BC1 colour + BC5 normal +
+// BC4 height) under parallax and not under normal mapping.
+TEST(Sweep, EachRowPaysForTheMapsItsRenderModeDraws) {
+    SmallSweep s = small_sweep("sweep_mode_cost", "render_modes = normal, parallax\n");
+    run_sweep(s.config, (s.folder / "out").string(), 2);
+    Table t = read_csv(s.folder / "out" / "results.csv");
+    const std::size_t gpu = column(t, "texture_bytes_gpu"), bytes = column(t, "bytes"), mesh = column(t, "mesh_bytes");
+    auto row = [&](const std::string& level, const std::string& mode) {
+        return row_of(t, "building.glb,top-down,expanded,linear," + level + ",+X+Y+Z,1," + mode);
+    };
+    const auto normal = row("4", "normal"), parallax = row("4", "parallax");
+    const std::uint64_t normal_gpu = std::stoull(normal[gpu]), parallax_gpu = std::stoull(parallax[gpu]);
+    EXPECT_GT(normal_gpu, 0u);
+    EXPECT_EQ(parallax_gpu - normal_gpu, parallax_gpu / 4);
+    EXPECT_EQ(normal[mesh], parallax[mesh]);
+    EXPECT_EQ(std::stoull(normal[bytes]), std::stoull(normal[mesh]) + normal_gpu);
+    // The original has no height maps: the same cost in both modes, as it states.
+    EXPECT_EQ(row("0", "normal")[bytes], std::to_string(s.original_cost.bytes()));
+    EXPECT_EQ(row("0", "parallax")[bytes], std::to_string(s.original_cost.bytes()));
+}
+
 // simplification-best draws every meshoptimizer variant and keeps, per level, the one
 // with the lowest mean FLIP over the views: never worse than plain simplification
 // (its `collapse` variant), never above the level's triangles, and named in its rows;

@@ -3,7 +3,9 @@
 # folder: sweeps and city runs (boxlod), the notebooks executed headless, the
 # paper compiled. Checks the outputs: every file the paper \inputs or
 # \includegraphics exists and is not empty; the level-mode table has one row
-# per level mode of the sweep's CSV, the runs table one per job; no number
+# per level mode of the sweep's CSV, the runs table one per job, the render
+# modes table one per model and mode, whose parallax rows pay for height
+# pages; no number
 # macro is nan; the PDF has more than one page; the executed notebooks hold
 # no error; a second run of snakemake has nothing to do; a notebook run again
 # writes byte-identical figures and tables; a sweep's merged shards equal the
@@ -80,6 +82,15 @@ check(models == set(profile["buildings"]), f"the buildings sweep has the profile
 check(len(body_rows("table_models")) == 5 + len(profile["buildings"]), "table_models: the five models and each building")
 check(len(body_rows("table_strategies")) == len(profile["city"]["strategies"]),
       "table_strategies: one row per strategy")
+render = list(csv.DictReader(open(os.path.join(out, "sweeps", "render_modes", "results.csv"))))
+pairs = {(row["model"], row["render_mode"]) for row in render if row["render_mode"] != "normal"}
+check(len(body_rows("table_render_modes")) == len(pairs) > 0,
+      f"table_render_modes: one row per model and render mode beside normal ({len(pairs)})")
+# The same LoD costs more where its mode reads the height pages: the cost columns follow the render mode.
+cost = {(row["model"], row["level"], row["view"], row["render_mode"]): int(row["texture_bytes_gpu"]) for row in render}
+dearer = [key for key, value in cost.items() if key[3] == "parallax" and value > cost[key[:3] + ("normal",)]]
+check(dearer and all(cost[key] >= cost[key[:3] + ("normal",)] for key in cost),
+      f"render_modes: parallax rows pay for height pages ({len(dearer)} rows dearer than normal, none cheaper)")
 for path in sorted(glob.glob(os.path.join(generated, "numbers_*.tex"))):
     values = re.findall(r"\\newcommand\{\\(\w+)\}\{(.*)\}", open(path).read())
     broken = [name for name, value in values if value.strip() == "" or "nan" in value.lower()]

@@ -47,6 +47,25 @@ std::uint64_t uncompressed_bytes(const Texture& texture, TextureUse role) {
     return mip_chain_texels(texture.image.width, texture.image.height) * texel_bytes;
 }
 
+unsigned map_bit(MaterialMap map) { return 1u << unsigned(map); }
+
+// Draw calls and meshes add up; each texture sampled as one of `maps` is paid
+// once however many parts use it, known by its digest.
+ModelCost cost_of_maps(const std::vector<const CostParts*>& parts, unsigned maps) {
+    ModelCost cost;
+    std::set<TextureDigest> paid;
+    for (const CostParts* part : parts) {
+        cost.draw_calls += part->draw_calls;
+        cost.mesh_bytes += part->mesh_bytes;
+        for (const TextureCost& texture : part->textures)
+            if ((texture.maps & maps) && paid.insert(texture.digest).second) {
+                cost.texture_bytes += texture.bytes;
+                cost.texture_bytes_gpu += texture.bytes_gpu;
+            }
+    }
+    return cost;
+}
+
 }  // namespace
 
 std::uint64_t mip_chain_texels(int width, int height) {
@@ -68,37 +87,40 @@ CostParts cost_parts(const Model& model) {
         }
     parts.draw_calls = materials.size();
 
-    std::map<int, TextureUse> roles;  // each texture once, in the role of the first material that uses it
+    // Each texture once, stored in the use of the first material that samples
+    // it, with every map any material samples it as.
+    struct Sampled { TextureUse use; unsigned maps = 0; };
+    std::map<int, Sampled> sampled;
     for (int m : materials) {
         if (m < 0 || m >= int(model.materials.size())) continue;
         const Material& material = model.materials[std::size_t(m)];
-        for (auto [index, role] : texture_slots(material))
-            if (index >= 0 && index < int(model.textures.size())) roles.emplace(index, role);
+        for (auto [index, use, map] : texture_slots(material))
+            if (index >= 0 && index < int(model.textures.size()))
+                sampled.emplace(index, Sampled{use}).first->second.maps |= map_bit(map);
     }
-    for (auto [index, role] : roles) {
+    for (auto [index, texture_sampled] : sampled) {
         const Texture& texture = model.textures[std::size_t(index)];
+        const TextureUse use = texture_sampled.use;
         const bool wide = !texture.image16.empty();
         const int width = wide ? texture.image16.width : texture.image.width;
         const int height = wide ? texture.image16.height : texture.image.height;
-        parts.textures.push_back({texture_digest(texture), uncompressed_bytes(texture, role),
-                                  block_compressed_bytes(width, height, gpu_format(texture, role))});
+        parts.textures.push_back({texture_digest(texture), uncompressed_bytes(texture, use),
+                                  block_compressed_bytes(width, height, gpu_format(texture, use)), texture_sampled.maps});
     }
     return parts;
 }
 
-ModelCost combined_cost(const std::vector<const CostParts*>& parts) {
-    ModelCost cost;
-    std::set<TextureDigest> paid;
-    for (const CostParts* part : parts) {
-        cost.draw_calls += part->draw_calls;
-        cost.mesh_bytes += part->mesh_bytes;
-        for (const TextureCost& texture : part->textures)
-            if (paid.insert(texture.digest).second) {
-                cost.texture_bytes += texture.bytes;
-                cost.texture_bytes_gpu += texture.bytes_gpu;
-            }
-    }
-    return cost;
+ModelCost combined_cost(const std::vector<const CostParts*>& parts) { return cost_of_maps(parts, ~0u); }
+
+ModelCost drawn_cost(const std::vector<const CostParts*>& parts, RenderMode mode) {
+    const MapsDrawn drawn = maps_drawn(mode);
+    unsigned maps = 0;
+    if (drawn.color) maps |= map_bit(MaterialMap::base_color);
+    // Specular maps go with lit, mapped shading (boxlod's own shading reads the
+    // material's specular colour; an engine's would sample them).
+    if (drawn.normal) maps |= map_bit(MaterialMap::normal) | map_bit(MaterialMap::specular);
+    if (drawn.height) maps |= map_bit(MaterialMap::height);
+    return cost_of_maps(parts, maps);
 }
 
 ModelCost model_cost(const Model& model) {

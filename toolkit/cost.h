@@ -3,6 +3,7 @@
 // uncompressed and in GPU block compression, each with its full mip chain.
 #pragma once
 #include "base/key_values.h"
+#include "renderer/renderer.h"  // RenderMode, maps_drawn
 #include "toolkit/model.h"
 #include "toolkit/vertex_layout.h"  // primitive_mesh_bytes
 
@@ -34,13 +35,18 @@ ModelCost model_cost(const Model& model);
 struct TextureCost {
     TextureDigest digest;
     std::uint64_t bytes = 0, bytes_gpu = 0;
+    unsigned maps = 0;  // bit 1 << MaterialMap for each map some material samples it as
 };
 struct CostParts {
     std::uint64_t draw_calls = 0, mesh_bytes = 0;
     std::vector<TextureCost> textures;  // every texture a material uses
 };
 CostParts cost_parts(const Model& model);
+// Every texture counted: what the files hold (build, info, chains).
 ModelCost combined_cost(const std::vector<const CostParts*>& parts);
+// Only the textures of the maps `mode` draws (renderer.h: maps_drawn): what an
+// engine drawing that way loads (sweeps, city frames). Meshes as exported.
+ModelCost drawn_cost(const std::vector<const CostParts*>& parts, RenderMode mode);
 
 // Texels of a full mip chain: level i is max(1, w >> i) x max(1, h >> i), down to 1 x 1.
 std::uint64_t mip_chain_texels(int width, int height);

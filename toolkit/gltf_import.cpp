@@ -295,8 +295,8 @@ void read_textures(const Reader& reader, Model& model) {
             if (int image = texture_image(reader, texture, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
         Material extensions;  // only for the images they name, all 8-bit
         read_material_extensions(reader, gltf.materials[m], place, extensions);
-        for (auto [image, use] : texture_slots(std::as_const(extensions)))
-            if (image >= 0) colour_or_normal[std::size_t(image)] = true;
+        for (const auto& slot : texture_slots(std::as_const(extensions)))
+            if (slot.index >= 0) colour_or_normal[std::size_t(slot.index)] = true;
     }
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
         model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));

@@ -24,20 +24,20 @@ TextureDigest texture_digest(const Texture& texture) {
     return d;
 }
 
-std::vector<std::pair<int*, TextureUse>> texture_slots(Material& m) {
-    std::vector<std::pair<int*, TextureUse>> slots = {{&m.base_color_texture, TextureUse::color},
-                                                      {&m.normal_texture, TextureUse::normal},
-                                                      {&m.height_texture, TextureUse::scalar},
-                                                      {&m.specular_texture, TextureUse::color}};
+std::vector<TextureSlot<int*>> texture_slots(Material& m) {
+    std::vector<TextureSlot<int*>> slots = {{&m.base_color_texture, TextureUse::color, MaterialMap::base_color},
+                                            {&m.normal_texture, TextureUse::normal, MaterialMap::normal},
+                                            {&m.height_texture, TextureUse::scalar, MaterialMap::height},
+                                            {&m.specular_texture, TextureUse::color, MaterialMap::specular}};
     if (m.specular_extension)
-        slots.insert(slots.end(), {{&m.specular_extension->texture, TextureUse::scalar},
-                                   {&m.specular_extension->color_texture, TextureUse::color}});
+        slots.insert(slots.end(), {{&m.specular_extension->texture, TextureUse::scalar, MaterialMap::specular},
+                                   {&m.specular_extension->color_texture, TextureUse::color, MaterialMap::specular}});
     return slots;
 }
 
-std::vector<std::pair<int, TextureUse>> texture_slots(const Material& material) {
-    std::vector<std::pair<int, TextureUse>> slots;
-    for (auto [index, use] : texture_slots(const_cast<Material&>(material))) slots.emplace_back(*index, use);
+std::vector<TextureSlot<int>> texture_slots(const Material& material) {
+    std::vector<TextureSlot<int>> slots;
+    for (auto [index, use, map] : texture_slots(const_cast<Material&>(material))) slots.push_back({*index, use, map});
     return slots;
 }
 
@@ -114,8 +114,8 @@ void validate_model(const Model& model) {
     }
     for (const Material& material : model.materials) {
         const std::string place = "material '" + material.name + "'";
-        for (auto [texture, use] : texture_slots(material))
-            if (texture >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
+        for (const auto& slot : texture_slots(material))
+            if (slot.index >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
         if (!material.base_color.allFinite() || !material.specular_color.allFinite())
             throw_input_error(file, place, "colour is NaN or infinite");
         if (const auto& extension = material.specular_extension;

@@ -77,10 +77,20 @@ struct Material {
 // and bytes (docs/design.md: Cost).
 enum class TextureUse { color, normal, scalar };  // scalar: one channel (height maps, specular strength)
 
-// Every texture index of a material with its use: the one list all code that
-// walks a material's textures (validation, cost, copying, export) reads.
-std::vector<std::pair<int*, TextureUse>> texture_slots(Material& material);
-std::vector<std::pair<int, TextureUse>> texture_slots(const Material& material);
+// Which map of a material a texture is: a render mode loads only the maps it
+// draws (renderer.h: maps_drawn; docs/design.md: Cost).
+enum class MaterialMap { base_color, normal, height, specular };
+
+// Every texture index of a material with its use and map: the one list all
+// code that walks a material's textures (validation, cost, copying, export) reads.
+template <typename Index>
+struct TextureSlot {
+    Index index;  // int* to rewrite it, int to read it
+    TextureUse use;
+    MaterialMap map;
+};
+std::vector<TextureSlot<int*>> texture_slots(Material& material);
+std::vector<TextureSlot<int>> texture_slots(const Material& material);
 
 // A triangle list with one material. `polygon_count` is how many polygons the
 // source stored (a quad is one polygon, two triangles): the manual's # Faces.

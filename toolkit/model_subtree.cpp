@@ -14,7 +14,7 @@ int MaterialCopier::material(int index) {
     auto it = materials.find(index);
     if (it != materials.end()) return it->second;
     Material m = source.materials[index];
-    for (auto [index, use] : texture_slots(m)) *index = texture(*index);
+    for (const auto& slot : texture_slots(m)) *slot.index = texture(*slot.index);
     out.materials.push_back(m);
     return materials[index] = int(out.materials.size()) - 1;
 }

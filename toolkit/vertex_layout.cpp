@@ -11,8 +11,8 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
     VertexLayout layout;
     layout.normals = !primitive.normals.empty();
-    const auto slots = material ? texture_slots(*material) : std::vector<std::pair<int, TextureUse>>{};
-    const bool sampled = std::any_of(slots.begin(), slots.end(), [](auto slot) { return slot.first >= 0; });
+    const auto slots = material ? texture_slots(*material) : std::vector<TextureSlot<int>>{};
+    const bool sampled = std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.index >= 0; });
     layout.uvs = !primitive.uvs.empty() && sampled;
     layout.tangents = !primitive.tangents.empty() && mapped;
     layout.index_bytes = primitive.positions.size() <= 65535 ? 2 : 4;
