@@ -40,6 +40,8 @@ fs.writeFileSync(path, JSON.stringify(gltf));' "$work/specular/BoxTextured.gltf"
 quiet "$boxlod" convert "$work/specular/BoxTextured.gltf" -o "$work/specular.glb"
 quiet "$boxlod" build "$work/house.glb" -o "$work/level" --level 3 --resolution 256   # one level
 quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
+quiet "$boxlod" build "$work/house.glb" -o "$work/flat_level" --level 3 --resolution 128 --min-texture-size 16 --flat-faces 8
+grep -q '^flat_faces = [1-9]' "$work/flat_level/house_lod.stats.txt" || { echo "gltf_validator: no flat faces to validate" >&2; exit 1; }
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)
 quiet "$boxlod" build "$fzk" --chain -o "$work/fzk_chain.glb" --resolution 256
@@ -48,7 +50,7 @@ quiet "$boxlod" tiles "$work/city2.glb" -o "$work/tiles" --resolution 256
 
 cd "$work"
 node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" house.glb manual.gltf city.glb fzk.glb fzk.gltf \
-  house_converted.gltf specular_glossiness.glb specular.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
+  house_converted.gltf specular_glossiness.glb specular.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf flat_level/house_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
 # convert keeps the source's specular-glossiness material, factors as they were.
 node -e '
 const b = require("fs").readFileSync(process.argv[1]);

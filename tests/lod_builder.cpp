@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -113,6 +115,73 @@ TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
         EXPECT_GE(double(same) / double(pixels), 0.995) << render_mode_name(mode);
         EXPECT_LT(error / double(3 * pixels), 0.2) << render_mode_name(mode);  // mean difference in levels of 255
     }
+}
+
+// Flat faces (docs/design.md: Atlas): faces of at most `flat_faces` texels
+// are drawn from one 4x4 swatch of their mean colour, all four uvs at its
+// centre, so bilinear filtering reads only the swatch and mip level 0 is
+// chosen (the uvs do not change over the face); no gutter, fewer texels.
+TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
+    Model model = test::lod_test_building();
+    LodParameters plain = small_parameters(), flat = small_parameters();
+    plain.min_texture_size = flat.min_texture_size = 16;
+    flat.flat_faces = 64;  // every face of this small sizing, where at least half covered
+    auto plain_session = start_lod(model, plain, 2), flat_session = start_lod(model, flat, 2);
+    Lod with_texels = build_lod(*plain_session, 2, 2), with_swatches = build_lod(*flat_session, 2, 2);
+    const int flat_faces = std::stoi(statistic(with_swatches, "flat_faces")), swatches = std::stoi(statistic(with_swatches, "swatches"));
+    EXPECT_EQ(statistic(with_texels, "flat_faces"), "0");
+    EXPECT_GE(flat_faces, 5);
+    EXPECT_GE(swatches, 1);
+    EXPECT_LT(swatches, flat_faces);  // faces of one colour share their swatch
+    EXPECT_EQ(statistic(with_swatches, "faces_lod"), statistic(with_texels, "faces_lod"));
+    EXPECT_LT(page_texels(with_swatches.atlas), page_texels(with_texels.atlas));
+    EXPECT_LT(std::stoull(statistic(with_swatches, "gutter_texels")), std::stoull(statistic(with_texels, "gutter_texels")));
+
+    // Every quad whose uvs are all one point samples a uniform, aligned, opaque
+    // swatch, with the flat normal and height 1, and exactly its colour.
+    int flat_quads = 0;
+    for (const Node& node : with_swatches.model.nodes)
+        for (const Primitive& primitive : node.primitives) {
+            if (primitive.uvs.empty()) continue;
+            const Material& material = with_swatches.model.materials[std::size_t(primitive.material)];
+            if (material.height_texture < 0) continue;  // a kept node's own material, not a page
+            const Texture& color = with_swatches.model.textures[std::size_t(material.base_color_texture)];
+            const Texture& normal = with_swatches.model.textures[std::size_t(material.normal_texture)];
+            const Texture& height = with_swatches.model.textures[std::size_t(material.height_texture)];
+            for (std::size_t q = 0; q + 4 <= primitive.uvs.size(); q += 4) {
+                const Eigen::Vector2f uv = primitive.uvs[q];
+                if (!std::all_of(primitive.uvs.begin() + std::ptrdiff_t(q), primitive.uvs.begin() + std::ptrdiff_t(q + 4),
+                                 [&](const Eigen::Vector2f& corner) { return corner == uv; }))
+                    continue;
+                ++flat_quads;
+                const float cx = uv.x() * float(color.image.width) - 2, cy = uv.y() * float(color.image.height) - 2;
+                ASSERT_EQ(cx, std::floor(cx));
+                const int x0 = int(cx), y0 = int(cy);
+                EXPECT_EQ(x0 % 4, 0);
+                EXPECT_EQ(y0 % 4, 0);
+                const std::uint8_t* swatch = color.image.at(x0, y0);
+                EXPECT_EQ(swatch[3], 255);
+                for (int y = y0; y < y0 + 4; ++y)
+                    for (int x = x0; x < x0 + 4; ++x) {
+                        EXPECT_TRUE(std::equal(swatch, swatch + 4, color.image.at(x, y)));
+                        EXPECT_EQ(normal.image.at(x, y)[0], 128);
+                        EXPECT_EQ(normal.image.at(x, y)[2], 255);
+                        EXPECT_EQ(height.image16.at(x, y)[0], 65535);
+                    }
+                const MipTexture texture = make_texture(color.image, ColorSpace::srgb, Wrap::clamp);
+                const Eigen::Vector4f sampled = sample(texture, uv, mip_level(texture, Eigen::Vector2f::Zero(), Eigen::Vector2f::Zero()));
+                for (int c = 0; c < 3; ++c) EXPECT_EQ(sampled[c], srgb_to_linear(swatch[c]));
+            }
+        }
+    EXPECT_EQ(flat_quads, flat_faces);
+
+    // The picture keeps each face's colour on average; misplaced uvs would draw other texels.
+    plain_session->parameters.render_mode = flat_session->parameters.render_mode = RenderMode::albedo;
+    Image8 a = render_lod_preview(with_texels, *plain_session, 240, 180, 2), b = render_lod_preview(with_swatches, *flat_session, 240, 180, 2);
+    double error = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) error += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+    EXPECT_GT(error, 0);
+    EXPECT_LT(error / double(a.pixels.size()), 2.0);  // mean difference in levels of 255
 }
 
 namespace {

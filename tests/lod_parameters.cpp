@@ -17,7 +17,7 @@ TEST(LodParameters, KeysAndOptionsAreDeclaredOnce) {
         EXPECT_EQ(find_lod_parameter(d.key), &d);
     }
     EXPECT_EQ(find_lod_parameter("smoothness"), nullptr);
-    EXPECT_EQ(keys.size(), 16u);
+    EXPECT_EQ(keys.size(), 17u);
 }
 
 TEST(LodParameters, EveryValueReadsBackAsWritten) {

@@ -11,6 +11,7 @@
 #include "toolkit/statistics.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace boxlod {
 namespace {
@@ -137,21 +138,65 @@ void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
 struct PackedFace {
     int node, face;
     TexelRect region;
+    int placement = -1;  // its block in the atlas; -1: drawn flat from `swatch`
+    int swatch = -1;
+};
+
+// Flat faces (docs/design.md: Atlas): one 4x4 swatch per distinct colour, in
+// one square block of the atlas whose swatches lie on 4-texel boundaries of
+// the page (one GPU compression block each); 3 spare texels per side find them.
+constexpr int swatch_side = 4;
+
+struct Swatches {
+    std::vector<std::array<std::uint8_t, 4>> colors;  // sRGB RGBA, opaque
+    std::map<std::array<std::uint8_t, 4>, int> index;  // of each colour in `colors`
+    int columns = 0;
+    int block_side() const { return swatch_side * columns + swatch_side - 1; }
 };
 
 struct Packing {
     std::vector<PackedFace> faces;
     Atlas atlas;
+    Swatches swatches;
+    int swatch_placement = -1;  // the swatches' block in the atlas
     std::uint64_t face_texels = 0, gutter_texels = 0;
+    int flat_faces = 0;
     float longest_face = 0;  // metres, for min_distance
     float height_depth = 0;  // metres: the deepest packed face's box depth, height 0 on every page
 };
 
-// Pack: the kept rectangles of the cut's faces into pages.
-Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
+// A face `region` small enough for `flat_faces` and at least half covered gets
+// its covered texels' mean colour, averaged in linear light as mip-maps are.
+std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region, int flat_faces) {
+    if (std::max(region.width, region.height) > flat_faces) return std::nullopt;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int covered = 0;
+    for (int y = region.y; y < region.y + region.height; ++y)
+        for (int x = region.x; x < region.x + region.width; ++x) {
+            const std::uint8_t* texel = face.color.at(x, y);
+            if (texel[3] < 128) continue;  // cut out by the pages' MASK cutoff 0.5
+            ++covered;
+            for (int c = 0; c < 3; ++c) sum[c] += srgb_to_linear(texel[c]);
+        }
+    if (2 * covered < region.width * region.height) return std::nullopt;
+    std::array<std::uint8_t, 4> color{0, 0, 0, 255};
+    for (int c = 0; c < 3; ++c) color[std::size_t(c)] = linear_to_srgb(float(sum[c] / covered));
+    return color;
+}
+
+// The page texel where swatch k starts, in the block placed at `at`.
+Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at, int k) {
+    auto aligned = [](int v) { return v + (swatch_side - v % swatch_side) % swatch_side; };
+    return {aligned(at.x) + swatch_side * (k % swatches.columns), aligned(at.y) + swatch_side * (k / swatches.columns)};
+}
+
+// Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as swatches.
+Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces) {
     const LodParameters& p = session.parameters;
     Packing packing;
     std::vector<Eigen::Vector2i> sizes;
+    const int most_columns = (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
+    const std::size_t max_swatches = std::size_t(most_columns) * std::size_t(most_columns);
     for (int node : cut.box_nodes) {
         const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[node]);
         for (int f = 0; f < 6; ++f) {
@@ -159,13 +204,33 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured) {
             packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
             if (!textured) continue;
             const Eigen::Vector2i texels = texels_of(face, session.sizing);
-            const TexelRect region = p.crop_faces ? session.baked.at(node)[f].covered : TexelRect{0, 0, texels.x(), texels.y()};
+            const BakedFace& baked = session.baked.at(node)[f];
+            const TexelRect region = p.crop_faces ? baked.covered : TexelRect{0, 0, texels.x(), texels.y()};
             if (region.empty()) continue;
-            packing.faces.push_back({node, f, region});
             packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
+            if (auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt) {
+                Swatches& swatches = packing.swatches;
+                auto known = swatches.index.find(*color);
+                if (known == swatches.index.end() && swatches.colors.size() < max_swatches) {
+                    known = swatches.index.emplace(*color, int(swatches.colors.size())).first;
+                    swatches.colors.push_back(*color);
+                }
+                if (known != swatches.index.end()) {  // else the swatches are full: it keeps its texels
+                    packing.faces.push_back({node, f, region, -1, known->second});
+                    ++packing.flat_faces;
+                    continue;
+                }
+            }
+            packing.faces.push_back({node, f, region, int(sizes.size())});
             sizes.emplace_back(region.width, region.height);
             packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
         }
+    }
+    if (Swatches& swatches = packing.swatches; !swatches.colors.empty()) {
+        swatches.columns = int(std::ceil(std::sqrt(double(swatches.colors.size()))));
+        packing.swatch_placement = int(sizes.size());
+        sizes.emplace_back(swatches.block_side(), swatches.block_side());  // square: never turned
+        packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
     }
     if (textured) {
         packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
@@ -211,6 +276,30 @@ void add_pages(Model& out, const Atlas& atlas, float height_depth, bool textured
     }
 }
 
+// The swatches into their block and its gutter: each texel takes the nearest
+// swatch's colour, the flat normal and height 1 (a flat face lies on its box).
+void place_swatches(const Packing& packing, const Atlas& atlas, int gutter, Model& out) {
+    const Swatches& swatches = packing.swatches;
+    const AtlasPlacement& at = atlas.placements[std::size_t(packing.swatch_placement)];
+    const LodPage page = lod_page(at.page);
+    Texture &color = out.textures[std::size_t(page.color)], &normal = out.textures[std::size_t(page.normal)],
+            &height = out.textures[std::size_t(page.height)];
+    const Eigen::Vector2i first = swatch_texel(swatches, at, 0);
+    const int count = int(swatches.colors.size()), rows = (count + swatches.columns - 1) / swatches.columns;
+    auto swatch_of = [](int texel, int start, int n) {
+        return std::clamp(texel < start ? -1 : (texel - start) / swatch_side, 0, n - 1);
+    };
+    for (int py = std::max(at.y - gutter, 0); py < std::min(at.y + swatches.block_side() + gutter, color.image.height); ++py)
+        for (int px = std::max(at.x - gutter, 0); px < std::min(at.x + swatches.block_side() + gutter, color.image.width); ++px) {
+            const int k = std::min(swatch_of(py, first.y(), rows) * swatches.columns + swatch_of(px, first.x(), swatches.columns),
+                                   count - 1);
+            std::copy_n(swatches.colors[std::size_t(k)].data(), 4, color.image.at(px, py));
+            const std::uint8_t flat_normal[3] = {128, 128, 255};
+            std::copy_n(flat_normal, 3, normal.image.at(px, py));
+            height.image16.at(px, py)[0] = 65535;
+        }
+}
+
 // Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
 // materials and textures), a box node becomes a leaf with one quad per packed
 // face, its baked texels placed in its page.
@@ -249,19 +338,28 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             }
             const std::vector<PackedFace>& packed = packing.faces;
             if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
-            const TexelRect& region = packed[next_packed].region;
-            const AtlasPlacement& at = atlas.placements[next_packed++];
+            const PackedFace& face = packed[next_packed++];
+            const bool flat = face.placement < 0;
+            const AtlasPlacement& at = atlas.placements[std::size_t(flat ? packing.swatch_placement : face.placement)];
+            const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
             Primitive& primitive = by_page[at.page];
             primitive.material = at.page;
-            append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), region, &at,
-                             atlas.pages[std::size_t(at.page)]);
+            append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), face.region, &at, page_size);
+            if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
+                const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
+                const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
+                                             float(texel.y() + swatch_side / 2) / float(page_size.y()));
+                std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), center);
+                continue;
+            }
             const LodPage page = lod_page(at.page);
-            place_face(session.baked.at(n)[f], region, at, session.sizing.gutter, 2 * faces[f].half_depth / packing.height_depth,
-                       out.textures[std::size_t(page.color)], out.textures[std::size_t(page.normal)],
-                       out.textures[std::size_t(page.height)]);
+            place_face(session.baked.at(n)[f], face.region, at, session.sizing.gutter,
+                       2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
+                       out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
         }
         for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
     }
+    if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.sizing.gutter, out);
 }
 
 // Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
@@ -301,6 +399,8 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("face_texels", double(lod.face_texels)),
         number_entry("gutter_texels", double(packing.gutter_texels)),
         number_entry("occupancy", occupancy),
+        number_entry("flat_faces", packing.flat_faces),
+        number_entry("swatches", double(packing.swatches.colors.size())),
         number_entry("depth_error", lod.depth_error),
     };
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
@@ -333,8 +433,12 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     session.times.bake += seconds_since(start);
 
     start = Clock::now();
-    Packing packing = pack_faces(session, lod.cut, textured);
-    lod.atlas = std::move(packing.atlas);  // placed faces: packing.faces[i] at lod.atlas.placements[i]
+    Packing packing = pack_faces(session, lod.cut, textured, 0);
+    if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
+        Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces);
+        if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
+    }
+    lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
     lod.face_texels = packing.face_texels;
     session.times.pack += seconds_since(start);
 

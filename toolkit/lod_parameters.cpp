@@ -101,6 +101,11 @@ std::vector<ParameterDeclaration> make_declarations() {
                          "keep every baked face whole instead of cropping it to its covered texels (and dropping "
                          "faces with none)",
                          &P::crop_faces),
+        number_parameter("flat_faces", "flat-faces", "N",
+                         "beyond the manual: a face whose (cropped) texels are at most N on its longer side and at "
+                         "least half covered is drawn in one colour, its covered texels' mean, from a shared 4x4 "
+                         "swatch without gutters, in levels whose pages it makes smaller (docs/design.md: Atlas); 0: off",
+                         &P::flat_faces, r::flat_faces),
         number_parameter("fovy", "fovy", "DEG", "texture sizing: vertical field of view in degrees", &P::fovy, r::fovy),
         // A sweep sizes for its own `distances` (multiples of the framing distance).
         not_in_sweeps(number_parameter("distance", "distance", "D",

@@ -25,6 +25,7 @@ struct LodParameters {
     bool keep_small_subtrees = false;    // beyond the manual: no box for a sub-tree of <= 6 faces (kept_subtrees.h)
     bool keep_cheaper_subtrees = false;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
     bool crop_faces = true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
+    int flat_faces = 0;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model
@@ -48,6 +49,7 @@ constexpr double min_positive_distance = 1e-3;  // a sizing camera nearer than 1
 constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two
 constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units (docs/design.md: Rendering)
+constexpr NumberRange flat_faces{0, 64};        // texels on a face's longer side; 0: off
 }  // namespace parameter_range
 
 struct ParameterDeclaration {
