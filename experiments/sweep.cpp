@@ -223,16 +223,37 @@ namespace {
 // and every row key of the cross product so far, in the sweep's order.
 struct SweepOutput {
     KeyedTable results, timings;
+    fs::path settings_path;
+    std::string settings;
     std::vector<std::string> order;
     fs::path images;
     bool keep_images = false;
 };
 
+// settings.txt: what the folder's rows were made with (sweep_settings). A re-run
+// with other settings would skip rows that no longer answer its config.
+// Written with the tables (write_tables).
+void check_settings(const fs::path& path, const std::string& settings) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
+    std::istringstream now(settings);
+    for (std::string was, is;;) {
+        const bool more_was = bool(std::getline(in, was)), more_is = bool(std::getline(now, is));
+        if (!more_was && !more_is) return;
+        if (!more_was || !more_is || was != is)
+            throw_input_error(path.string(), "", "the rows here were made with '" + (more_was ? was : "") +
+                                                     "', this sweep's config says '" + (more_is ? is : "") +
+                                                     "'; use another output folder");
+    }
+}
+
 SweepOutput open_output(const SweepConfig& config, const std::string& output_folder) {
     fs::create_directories(output_folder);
     SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns(config)),
-                    open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns()), {},
+                    open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns()),
+                    fs::path(output_folder) / "settings.txt", sweep_settings(config), {},
                     fs::path(output_folder) / "images", config.keep_images != KeptImages::none};
+    check_settings(out.settings_path, out.settings);
     if (out.keep_images) fs::create_directories(out.images);
     return out;
 }
@@ -243,6 +264,7 @@ void save_image(const SweepOutput& out, const std::string& name, const Image8& i
 
 // Rewritten after every group, so an interrupted sweep keeps what it has.
 void write_tables(const SweepOutput& out) {
+    write_text_atomically(out.settings_path.string(), out.settings);
     write_table(out.results, out.order);
     write_table(out.timings, out.order);
 }

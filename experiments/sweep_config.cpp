@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/key_values.h"
 #include "base/key_value_lines.h"
 #include "base/parallel.h"
 #include "data_gen/samples.h"
@@ -40,6 +41,27 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
 }  // namespace
 
 std::span<const EnumEntry<Baseline>> baselines() { return baseline_table; }
+
+constexpr EnumEntry<SizingRule> sizing_table[] = {
+    {SizingRule::nearest, "nearest", "one LoD per level, sized for the smallest distance"},
+    {SizingRule::each_distance, "each-distance", "an LoD per level and distance, sized for it"},
+    {SizingRule::per_level, "per-level", "level c sized for the smallest distance x 2^(c-1)"},
+};
+
+std::span<const EnumEntry<SizingRule>> sizing_rules() { return sizing_table; }
+
+std::string sweep_settings(const SweepConfig& config) {
+    std::string text;
+    auto add = [&](const std::string& key, const std::string& value) { text += key + " = " + value + "\n"; };
+    add("width", std::to_string(config.width));
+    add("height", std::to_string(config.height));
+    add("ppd", format_number(config.pixels_per_degree));
+    add("sizing", enum_name(sizing_rules(), config.sizing));
+    add("impostor_directions", std::to_string(config.impostor_directions));
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (d.sweep_key) add(d.key, d.format(config.lod));
+    return text;
+}
 
 namespace {
 
@@ -158,10 +180,8 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
         {"metrics", [&](const Line& l) { c.metrics = l.words(metrics()); }},
         {"ppd", [&](const Line& l) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
         {"sizing", [&](const Line& l) {
-             if (l.line.value == "nearest") c.sizing = SizingRule::nearest;
-             else if (l.line.value == "each-distance") c.sizing = SizingRule::each_distance;
-             else if (l.line.value == "per-level") c.sizing = SizingRule::per_level;
-             else l.fail("expected nearest, each-distance or per-level, got '" + l.line.value + "'");
+             if (!parse_enum(sizing_rules(), l.line.value, c.sizing))
+                 l.fail("expected " + enum_names(sizing_rules(), ", ", " or ") + ", got '" + l.line.value + "'");
          }},
         {"impostor_directions", [&](const Line& l) {
              c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});

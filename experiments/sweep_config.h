@@ -30,6 +30,7 @@ enum class SizingRule { nearest, each_distance, per_level };
 // The baselines a sweep compares the LoDs with (docs/sweeps.md).
 enum class Baseline { simplification, simplification_best, cgal, single_box, impostor };
 std::span<const EnumEntry<Baseline>> baselines();  // names and help
+std::span<const EnumEntry<SizingRule>> sizing_rules();
 
 struct SweepModel {
     std::string name;  // as written in the config: the CSV's `model` column
@@ -68,5 +69,11 @@ struct SweepConfig {
 // model paths are resolved against file's folder. Throws InputError.
 SweepConfig parse_sweep_config(const std::string& text, const std::string& file);
 SweepConfig load_sweep_config(const std::string& path);
+
+// What every row of a sweep shares but its key columns do not name (image size,
+// FLIP's pixels per degree, sizing rule, impostor directions, the LoD parameters
+// it does not vary), as `key = value` lines: a re-run into a folder made with
+// other settings would mix rows of two experiments.
+std::string sweep_settings(const SweepConfig& config);
 
 }  // namespace boxlod

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <sstream>
 
 namespace boxlod {
@@ -385,6 +386,31 @@ TEST(Sweep, RefusesAResultsFileWithOtherColumns) {
     std::filesystem::create_directories(s.folder / "out");
     test::write_text(s.folder / "out" / "results.csv", "model,level_mode,psnr\n");
     EXPECT_THROW(run_sweep(s.config, (s.folder / "out").string(), 1), InputError);
+}
+
+// A re-run may extend a sweep (more levels, views, models) but not change what
+// its rows share: their rows would no longer answer the config.
+TEST(Sweep, RefusesAFolderMadeWithOtherSettings) {
+    SmallSweep s = small_sweep("sweep_settings");
+    const std::string out = (s.folder / "out").string();
+    run_sweep(s.config, out, 2);
+    SweepConfig more_views = s.config;
+    more_views.views.push_back("+X");
+    EXPECT_EQ(run_sweep(more_views, out, 2).rows_skipped, 8u);
+    const std::string results = test::read_text(s.folder / "out" / "results.csv");
+    for (auto change : std::vector<std::function<void(SweepConfig&)>>{
+             [](SweepConfig& c) { c.lod.flat_faces = 4; }, [](SweepConfig& c) { c.lod.resolution = 96; },
+             [](SweepConfig& c) { c.width = 128; }, [](SweepConfig& c) { c.sizing = SizingRule::per_level; }}) {
+        SweepConfig changed = s.config;
+        change(changed);
+        try {
+            run_sweep(changed, out, 2);
+            ADD_FAILURE() << "a changed setting reused the folder's rows";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find("settings.txt"), std::string::npos) << error.what();
+        }
+    }
+    EXPECT_EQ(test::read_text(s.folder / "out" / "results.csv"), results);
 }
 
 }  // namespace
