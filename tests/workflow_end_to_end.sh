@@ -102,6 +102,16 @@ for sweep, model in (("manual_bytes", "Manual"), ("fzk_bytes", "Fzk")):
     levels, beaten = macros.get(f"BytesGreedyLevels{model}", "-1"), macros.get(f"BytesGreedyBeaten{model}", "-1")
     check(greedy and levels.isdigit() and beaten.isdigit() and 0 < int(levels) <= len(greedy) and int(beaten) <= int(levels),
           f"{sweep}: error-greedy counted in the paper ({beaten} of {levels} levels beaten; {len(greedy)} in the CSV)")
+# Flat faces shrink the chains' textures (the paying chain against the same chain with flat_faces).
+for chain, flat in (("manual_bytes", "manual_flat"), ("fzk_bytes", "fzk_flat")):
+    gpu = lambda sweep: {(row["level_mode"], row["level"]): int(row["texture_bytes_gpu"])
+                         for row in csv.DictReader(open(os.path.join(out, "sweeps", sweep, "results.csv")))
+                         if row["level_mode"] == "top-down"}
+    without, with_flat = gpu(chain), gpu(flat)
+    check(with_flat.keys() == without.keys() and all(with_flat[k] <= without[k] for k in with_flat)
+          and sum(with_flat.values()) < sum(without.values()),
+          f"{flat}: top-down textures {sum(with_flat.values())} bytes against {sum(without.values())} without flat faces")
+check(len(body_rows("table_bytes")[0]) == 9, "table_bytes: a column for the chain with flat faces")
 for path in sorted(glob.glob(os.path.join(out, "notebooks", "*.ipynb"))):
     import json
     cells = json.load(open(path))["cells"]
