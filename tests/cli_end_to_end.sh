@@ -154,6 +154,10 @@ over_original="awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"bytes_orig
 check "a box-everything chain has a level dearer than the original" bash -c "$over_original '$work/out'"
 check "build --keep-cheaper-subtrees succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --keep-cheaper-subtrees)" = 0
 check "with boxes that pay their way no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L3.params.txt'"
+# Flat faces (docs/design.md: Atlas): some faces drawn from swatches, the same bytes on one thread as on two.
+flat_chain="build '$work/house.glb' --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --keep-cheaper-subtrees --flat-faces 8"
+check "a chain with flat faces draws some faces flat" bash -c "'$boxlod' $flat_chain -o '$work/flat1' --threads 1 > '$work/flat1.txt' && grep -q '^flat_faces = [1-9]' '$work/flat1.txt'"
+check "a chain with flat faces is identical on two threads" bash -c "'$boxlod' $flat_chain -o '$work/flat2' --threads 2 >/dev/null && diff -r '$work/flat1' '$work/flat2'"
 bad "level distances that do not ascend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 20,10,30,40,50,60,70,80,90
 bad "a negative level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances -5,10,20,30,40,50,60,70,80
 bad "a NaN level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances nan,10,20,30,40,50,60,70,80
