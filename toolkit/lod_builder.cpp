@@ -286,6 +286,7 @@ void place_swatches(const Packing& packing, const Atlas& atlas, int gutter, Mode
             &height = out.textures[std::size_t(page.height)];
     const Eigen::Vector2i first = swatch_texel(swatches, at, 0);
     const int count = int(swatches.colors.size()), rows = (count + swatches.columns - 1) / swatches.columns;
+    const std::uint8_t flat_normal[3] = {128, 128, 255};
     auto swatch_of = [](int texel, int start, int n) {
         return std::clamp(texel < start ? -1 : (texel - start) / swatch_side, 0, n - 1);
     };
@@ -294,7 +295,6 @@ void place_swatches(const Packing& packing, const Atlas& atlas, int gutter, Mode
             const int k = std::min(swatch_of(py, first.y(), rows) * swatches.columns + swatch_of(px, first.x(), swatches.columns),
                                    count - 1);
             std::copy_n(swatches.colors[std::size_t(k)].data(), 4, color.image.at(px, py));
-            const std::uint8_t flat_normal[3] = {128, 128, 255};
             std::copy_n(flat_normal, 3, normal.image.at(px, py));
             height.image16.at(px, py)[0] = 65535;
         }
