@@ -23,12 +23,15 @@
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 
+#include <libdeflate.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -230,9 +233,20 @@ struct SweepOutput {
     bool keep_images = false;
 };
 
-// settings.txt: what the folder's rows were made with (sweep_settings). A re-run
-// with other settings would skip rows that no longer answer its config.
-// Written with the tables (write_tables).
+// The build of boxlod that is running: its executable's size and CRC-32.
+// Another build may draw other pixels, so its rows are not this one's.
+std::string this_build() {
+    std::ifstream in("/proc/self/exe", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in || bytes.empty()) return "unknown";  // no /proc: every build looks alike
+    char crc[9];
+    std::snprintf(crc, sizeof crc, "%08x", unsigned(libdeflate_crc32(0, bytes.data(), bytes.size())));
+    return std::to_string(bytes.size()) + " bytes, crc32 " + crc;
+}
+
+// settings.txt: what the folder's rows were made with (sweep_settings) and by
+// which build. A re-run with other settings or another build would skip rows
+// that no longer answer it. Written with the tables (write_tables).
 void check_settings(const fs::path& path, const std::string& settings) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
@@ -242,7 +256,7 @@ void check_settings(const fs::path& path, const std::string& settings) {
         if (!more_was && !more_is) return;
         if (!more_was || !more_is || was != is)
             throw_input_error(path.string(), "", "the rows here were made with '" + (more_was ? was : "") +
-                                                     "', this sweep's config says '" + (more_is ? is : "") +
+                                                     "', this sweep runs with '" + (more_is ? is : "") +
                                                      "'; use another output folder");
     }
 }
@@ -251,7 +265,7 @@ SweepOutput open_output(const SweepConfig& config, const std::string& output_fol
     fs::create_directories(output_folder);
     SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns(config)),
                     open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns()),
-                    fs::path(output_folder) / "settings.txt", sweep_settings(config), {},
+                    fs::path(output_folder) / "settings.txt", sweep_settings(config) + "boxlod_build = " + this_build() + "\n", {},
                     fs::path(output_folder) / "images", config.keep_images != KeptImages::none};
     check_settings(out.settings_path, out.settings);
     if (out.keep_images) fs::create_directories(out.images);

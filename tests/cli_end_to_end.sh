@@ -119,6 +119,11 @@ check "sweep level 0 is the original" grep -q "^$ifc,top-down,expanded,linear,0,
 check "sweep level 8 is one box" grep -q "^$ifc,top-down,expanded,linear,8,-Z,1,normal,8,6," "$work/sweep/results.csv"
 check "sweep reports progress on stderr" grep -q "ETA" "$work/err"
 check "sweep again skips every row" bash -c "'$boxlod' sweep '$work/sweep.txt' -o '$work/sweep' 2>/dev/null | grep -qx 'rows_skipped = 2'"
+# Another build (here the same executable with one byte more) may draw other pixels: it does not take these rows.
+cp "$boxlod" "$work/boxlod_rebuilt" && printf '\0' >> "$work/boxlod_rebuilt"
+check "another build of boxlod refuses the sweep's folder" test "$(status_of "$work/boxlod_rebuilt" sweep "$work/sweep.txt" -o "$work/sweep")" = 2
+check "in one line naming settings.txt and the build" bash -c "test \$(wc -l < '$work/err') = 1 && grep -q 'settings.txt: .*boxlod_build = ' '$work/err'"
+check "and leaves the rows as they were" test "$(wc -l < "$work/sweep/results.csv")" = 3
 printf 'models = %s\nlevel_modes = sideways\n' "$ifc" > "$work/bad_sweep.txt"
 bad "sweep with a bad config" sweep "$work/bad_sweep.txt" -o "$work/bad_sweep"
 check "the sweep error names file:line:key" grep -q "bad_sweep.txt: line 2: level_modes: unknown value 'sideways'" "$work/err"

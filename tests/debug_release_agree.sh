@@ -49,6 +49,7 @@ commands() {  # commands BOXLOD
   sed 's/^levels = .*/levels = 2, 5/' "$root/experiments/configs/demo.txt" > demo_sweep.txt
   step sweep sweep demo_sweep.txt -o experiment
   rm -f experiment/timings.csv  # seconds, not results
+  sed -i '/^boxlod_build = /d' experiment/settings.txt  # names the executable, which differs by design
   sed -i '/seconds/d' stdout_*.txt
 }
 

@@ -413,5 +413,27 @@ TEST(Sweep, RefusesAFolderMadeWithOtherSettings) {
     EXPECT_EQ(test::read_text(s.folder / "out" / "results.csv"), results);
 }
 
+// settings.txt names the build that made the rows (its executable's size and
+// CRC-32): rows of another build are not taken, as it may draw other pixels.
+TEST(Sweep, RefusesAFolderMadeByAnotherBuild) {
+    SmallSweep s = small_sweep("sweep_build");
+    const std::string out = (s.folder / "out").string();
+    run_sweep(s.config, out, 2);
+    const std::filesystem::path settings = s.folder / "out" / "settings.txt";
+    const std::string text = test::read_text(settings);
+    const std::size_t line = text.find("boxlod_build = ");
+    ASSERT_NE(line, std::string::npos) << text;
+    EXPECT_NE(text.find(" bytes, crc32 ", line), std::string::npos) << text;  // /proc/self/exe was read
+    EXPECT_EQ(run_sweep(s.config, out, 2).rows_skipped, 8u);  // the same build resumes
+    test::write_text(settings, text.substr(0, line) + "boxlod_build = 1 bytes, crc32 00000000\n");
+    try {
+        run_sweep(s.config, out, 2);
+        ADD_FAILURE() << "another build's rows were reused";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("settings.txt"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("boxlod_build = 1 bytes"), std::string::npos) << error.what();
+    }
+}
+
 }  // namespace
 }  // namespace boxlod
