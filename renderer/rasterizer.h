@@ -69,6 +69,8 @@ Eigen::Vector3d screen_barycentrics(const ScreenTriangle& t, double px, double p
 Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double py);
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
                                     double py);
+// Barycentrics of a clipped piece's corners as barycentrics of its source triangle.
+Eigen::Vector3f source_of_clipped(const ClippedWeights& w, const Eigen::Vector3f& b);
 
 // Pixels [x0, x1) x [y0, y1) of the visibility buffer, row stride `stride`.
 struct TileTarget {

@@ -4,11 +4,13 @@
 #include "renderer/renderer.h"
 
 #include "base/parallel.h"
+#include "renderer/lanes.h"
 #include "renderer/shading.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 
@@ -210,6 +212,105 @@ Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
     return f;
 }
 
+// make_fragment without uvs for the visible pixels `ids` at x, row y, each of
+// its own triangle, computing what set_up_triangle and make_fragment compute,
+// with the same operations, in lanes (renderer/lanes.h): where a run of pixels
+// shares a triangle, that is one pixel, so nothing is kept per triangle.
+// Lanes from `count` on repeat lane 0.
+FragmentLanes make_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], IntLanes x, int y, int count) {
+    static_assert(offsetof(ScreenTriangle, y) == offsetof(ScreenTriangle, x) + 12 &&
+                  offsetof(ScreenTriangle, inv_w) + 16 <= sizeof(ScreenTriangle));
+    static const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
+    FragmentLanes f;
+    f.count = count;
+    __m128i corners_x[lane_count], corners_y[lane_count];
+    __m128 inv_w[lane_count];
+    const Eigen::Vector3f *positions[3][lane_count], *normals[3][lane_count];
+    IntLanes has_normals;
+    const ClippedWeights* clipped[lane_count];
+    for (int j = 0; j < lane_count; ++j) {
+        const std::vector<ClippedWeights>* weights;
+        const ScreenTriangle& t = triangle_of(c, ids[j], weights);
+        const auto* bytes = reinterpret_cast<const char*>(&t);
+        corners_x[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, x)));
+        corners_y[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, y)));
+        inv_w[j] = _mm_loadu_ps(reinterpret_cast<const float*>(bytes + offsetof(ScreenTriangle, inv_w)));
+        clipped[j] = t.clipped >= 0 ? &(*weights)[std::size_t(t.clipped)] : nullptr;
+        const Batch& batch = c.batches[t.batch];
+        const Mesh& mesh = *batch.mesh;
+        const std::uint32_t* v = &mesh.indices[std::size_t(t.triangle) * 3];
+        has_normals[j] = mesh.normals.empty() ? 0 : -1;
+        for (int k = 0; k < 3; ++k) {
+            positions[k][j] = &mesh.positions[v[k]];
+            normals[k][j] = mesh.normals.empty() ? &no_normal : &mesh.normals[v[k]];
+        }
+        f.surface[j] = &batch.surface;
+    }
+    auto transpose = [](__m128 r0, __m128 r1, __m128 r2, __m128 r3, FloatLanes* out) {
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
+    };
+    auto transpose_ints = [&](const __m128i* r, IntLanes* out) {
+        FloatLanes lanes[4];
+        transpose(_mm_castsi128_ps(r[0]), _mm_castsi128_ps(r[1]), _mm_castsi128_ps(r[2]), _mm_castsi128_ps(r[3]), lanes);
+        for (int i = 0; i < 3; ++i) out[i] = IntLanes(lanes[i]);
+    };
+    // Three floats at each lane's pointer, read as two and one: no read past a vector's end.
+    auto gather = [&](const Eigen::Vector3f* const* p) {
+        __m128 r[lane_count];
+        for (int j = 0; j < lane_count; ++j)
+            r[j] = _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p[j]->data()))),
+                                 _mm_load_ss(p[j]->data() + 2));
+        FloatLanes lanes[4];
+        transpose(r[0], r[1], r[2], r[3], lanes);
+        return Vector3Lanes{lanes[0], lanes[1], lanes[2]};
+    };
+    IntLanes screen_x[3], screen_y[3];
+    transpose_ints(corners_x, screen_x);
+    transpose_ints(corners_y, screen_y);
+    FloatLanes corner_inv_w[4];
+    transpose(inv_w[0], inv_w[1], inv_w[2], inv_w[3], corner_inv_w);
+    const Vector3Lanes p0 = gather(positions[0]), p1 = gather(positions[1]), p2 = gather(positions[2]);
+
+    // The geometric normal as set_up_triangle computes it (Eigen's cross and norm).
+    const Vector3Lanes e1 = p1 - p0, e2 = p2 - p0;
+    const Vector3Lanes cross{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+    const FloatLanes length = square_root(dot(cross, cross));
+    f.geometric_normal = select(length > 0, cross / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+
+    // Screen barycentrics as barycentric_setup and screen_barycentrics compute
+    // them, then the perspective correction of source_barycentrics, in doubles.
+    const double scale = 1.0 / (1 << subpixel_bits);
+    DoubleLanes sx[3], sy[3], w[3];
+    for (int k = 0; k < 3; ++k) {
+        sx[k] = to_doubles(screen_x[k]) * scale;
+        sy[k] = to_doubles(screen_y[k]) * scale;
+        w[k] = to_doubles(corner_inv_w[k]);
+    }
+    const DoubleLanes area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
+    const DoubleLanes px = to_doubles(x) + 0.5, py = broadcast(y + 0.5);
+    const DoubleLanes l0 = ((sx[2] - sx[1]) * (py - sy[1]) - (sy[2] - sy[1]) * (px - sx[1])) / area;
+    const DoubleLanes l1 = ((sx[0] - sx[2]) * (py - sy[2]) - (sy[0] - sy[2]) * (px - sx[2])) / area;
+    const DoubleLanes l2 = 1 - l0 - l1;
+    const DoubleLanes q0 = l0 * w[0], q1 = l1 * w[1], q2 = l2 * w[2];
+    const DoubleLanes sum = q0 + q1 + q2;
+    const IntLanes nonzero = not_zero(sum);
+    FloatLanes b0 = select(nonzero, to_floats(q0 / sum), broadcast(1.0f));
+    FloatLanes b1 = select(nonzero, to_floats(q1 / sum), broadcast(0.0f));
+    FloatLanes b2 = select(nonzero, to_floats(q2 / sum), broadcast(0.0f));
+    for (int j = 0; j < count; ++j)
+        if (clipped[j]) {
+            Eigen::Vector3f b = source_of_clipped(*clipped[j], Eigen::Vector3f(b0[j], b1[j], b2[j]));
+            b0[j] = b[0], b1[j] = b[1], b2[j] = b[2];
+        }
+
+    f.position = p0 * b0 + p1 * b1 + p2 * b2;
+    const Vector3Lanes normal = gather(normals[0]) * b0 + gather(normals[1]) * b1 + gather(normals[2]) * b2;
+    const FloatLanes squared = dot(normal, normal);
+    f.normal = select(has_normals & (squared > 0), normal / square_root(squared), f.geometric_normal);
+    return f;
+}
+
 // Distance in pixels from a pixel centre to the nearest edge of the source triangle.
 float edge_distance(const TriangleSetup& s, int x, int y) {
     Eigen::Vector3d l = screen_barycentrics(s.barycentrics, x + 0.5, y + 0.5);
@@ -341,20 +442,62 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
         if (c.settings.wireframe && edge_distance(setup, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
         return shaded;
     };
-    std::uint32_t setup_id = no_triangle;
-    TriangleSetup setup;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            int local = (y - y0) * tile_size + (x - x0);
-            std::uint32_t id = ids[local];
-            if (id == no_triangle) continue;
-            if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
-            ShadedPixel shaded = shade(setup, x, y);
-            std::size_t pixel = std::size_t(y) * frame.width + x;
-            frame.color[pixel] = Eigen::Vector4f(shaded.color.x(), shaded.color.y(), shaded.color.z(), 1);
-            frame.depth[pixel] = depth[local];
-            frame.normal[pixel] = shaded.normal;
+    auto write = [&](int x, int y, const Eigen::Vector3f& color, const Eigen::Vector3f& normal) {
+        std::size_t pixel = std::size_t(y) * frame.width + x;
+        frame.color[pixel] = Eigen::Vector4f(color.x(), color.y(), color.z(), 1);
+        frame.depth[pixel] = depth[(y - y0) * tile_size + (x - x0)];
+        frame.normal[pixel] = normal;
+    };
+    if (reads_uv) {
+        std::uint32_t setup_id = no_triangle;
+        TriangleSetup setup;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
+                if (id == no_triangle) continue;
+                if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
+                ShadedPixel shaded = shade(setup, x, y);
+                write(x, y, shaded.color, shaded.normal);
+            }
+    } else {
+        // lane_count visible pixels of a row at a time. Their x are shifted into
+        // lanes from the top, in registers: see DoubleLanes (renderer/lanes.h).
+        for (int y = y0; y < y1; ++y) {
+            std::uint32_t lanes[lane_count];
+            __m128i xs = _mm_setzero_si128();
+            int count = 0;
+            auto shade_lanes = [&] {
+                switch (count) {  // the first pixel into lane 0
+                case 1: xs = _mm_srli_si128(xs, 12); break;
+                case 2: xs = _mm_srli_si128(xs, 8); break;
+                case 3: xs = _mm_srli_si128(xs, 4); break;
+                }
+                for (int j = count; j < lane_count; ++j) lanes[j] = lanes[0];
+                ShadedLanes shaded;
+                c.shader.shade_lanes(make_fragment_lanes(c, lanes, IntLanes(xs), y, count), shaded);
+                alignas(16) int x[lane_count];
+                _mm_store_si128(reinterpret_cast<__m128i*>(x), xs);
+                for (int j = 0; j < count; ++j) {
+                    Eigen::Vector3f color = lane(shaded.color, j);
+                    if (c.settings.wireframe) {
+                        TriangleSetup setup;
+                        set_up_triangle(c, lanes[j], setup);
+                        if (edge_distance(setup, x[j], y) < 0.75f) color = c.settings.wireframe_color;
+                    }
+                    write(x[j], y, color, lane(shaded.normal, j));
+                }
+                count = 0;
+            };
+            for (int x = x0; x < x1; ++x) {
+                std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
+                if (id == no_triangle) continue;
+                lanes[count++] = id;
+                xs = _mm_or_si128(_mm_srli_si128(xs, 4), _mm_slli_si128(_mm_cvtsi32_si128(x), 12));
+                if (count == lane_count) shade_lanes();
+            }
+            if (count > 0) shade_lanes();
         }
+    }
     if (!blended.empty()) composite_blended(c, blended, target, frame, shade);
 }
 

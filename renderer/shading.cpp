@@ -70,6 +70,41 @@ public:
         Eigen::Vector3f view = face_the_viewer(eye_, f, turned);
         return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal, s.base_color.w()};
     }
+    // shade() in lanes, operation for operation (face_the_viewer, blinn_phong);
+    // glibc's powf stays per lane, for its bits.
+    void shade_lanes(const FragmentLanes& f, ShadedLanes& shaded) const override {
+        Vector3Lanes view = broadcast(eye_) - f.position;
+        FloatLanes view_length = square_root(dot(view, view));
+        view = select(view_length > 0, view / view_length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+        Vector3Lanes normal = select(dot(f.geometric_normal, view) < 0, -f.normal, f.normal);
+        Vector3Lanes to_light = normalized(broadcast(light_.position) - f.position);
+        Vector3Lanes halfway = normalized(to_light + view);
+        FloatLanes diffuse = max_zero(dot(normal, to_light)), specular_base = max_zero(dot(normal, halfway));
+        Vector3Lanes albedo, specular_color;
+        float specular[lane_count] = {};
+        const bool one_surface = f.surface[1] == f.surface[0] && f.surface[2] == f.surface[0] && f.surface[3] == f.surface[0];
+        if (one_surface) {
+            const Surface& s = *f.surface[0];
+            albedo = broadcast(Eigen::Vector3f(s.base_color.head<3>()));
+            specular_color = broadcast(s.specular);
+            shaded.alpha = broadcast(s.base_color.w());
+        }
+        for (int j = 0; j < lane_count; ++j) {
+            const Surface& s = *f.surface[j];
+            if (!one_surface) {
+                set_lane(albedo, j, s.base_color.head<3>());
+                set_lane(specular_color, j, s.specular);
+                shaded.alpha[j] = s.base_color.w();
+            }
+            float shininess = light_.shininess > 0 ? light_.shininess : s.shininess;
+            if (j < f.count && diffuse[j] > 0) specular[j] = std::pow(specular_base[j], shininess);
+        }
+        FloatLanes lit = broadcast(light_.ambient) + broadcast(light_.diffuse) * diffuse;
+        FloatLanes highlight = broadcast(light_.specular) * from_scalars(specular[0], specular[1], specular[2], specular[3]);
+        shaded.color = {albedo.x * lit + specular_color.x * highlight, albedo.y * lit + specular_color.y * highlight,
+                        albedo.z * lit + specular_color.z * highlight};
+        shaded.normal = normal;
+    }
 
 private:
     Light light_;
@@ -192,6 +227,19 @@ private:
 };
 
 }  // namespace
+
+void Shader::shade_lanes(const FragmentLanes& fragments, ShadedLanes& shaded) const {
+    for (int j = 0; j < fragments.count; ++j) {
+        Fragment f;
+        f.position = lane(fragments.position, j);
+        f.normal = lane(fragments.normal, j);
+        f.geometric_normal = lane(fragments.geometric_normal, j);
+        ShadedPixel pixel = shade(*fragments.surface[j], f);
+        set_lane(shaded.color, j, pixel.color);
+        set_lane(shaded.normal, j, pixel.normal);
+        shaded.alpha[j] = pixel.alpha;
+    }
+}
 
 std::unique_ptr<Shader> make_shader(const RenderSettings& settings, const Eigen::Vector3f& eye) {
     switch (settings.mode) {

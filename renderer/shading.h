@@ -3,6 +3,7 @@
 // into a Fragment; a Shader turns that into a colour and a normal. A new render
 // mode is a new Shader; the rasterizer does not change (docs/design.md: Rendering).
 #pragma once
+#include "renderer/lanes.h"
 #include "renderer/renderer.h"
 
 #include <Eigen/Core>
@@ -34,6 +35,20 @@ struct ShadedPixel {
     float alpha = 1;         // base colour alpha x colour map alpha: the blend weight of AlphaMode::blend
 };
 
+// The inputs of lane_count pixels at once, for shaders that read no uvs: the
+// pipeline makes these in lanes (renderer/lanes.h). Lanes from `count` on
+// repeat lane 0 and are not written.
+struct FragmentLanes {
+    Vector3Lanes position, normal, geometric_normal;
+    const Surface* surface[lane_count];
+    int count;
+};
+
+struct ShadedLanes {
+    Vector3Lanes color, normal;
+    FloatLanes alpha;
+};
+
 class Shader {
 public:
     virtual ~Shader() = default;
@@ -42,6 +57,9 @@ public:
     virtual bool reads_uv() const = 0;
     // `fragment` may be turned to face the viewer on the way.
     virtual ShadedPixel shade(const Surface& surface, Fragment& fragment) const = 0;
+    // A shader that reads no uvs is handed lane_count pixels at once, with the
+    // same result as shade() on each; by default each lane goes through shade().
+    virtual void shade_lanes(const FragmentLanes& fragments, ShadedLanes& shaded) const;
 };
 
 // The shader of a render mode, lit by settings.light and seen from `eye`.

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 
 using namespace boxlod;
 
@@ -285,4 +286,96 @@ TEST(Renderer, FragmentsCarryTheUvGradientWhereTheHeightMapStatesItsDepth) {
         }
         EXPECT_GT(covered, 200);
     }
+}
+
+namespace {
+
+// The untextured mode's shading, one pixel at a time: reads_uv() true sends the
+// pipeline's scalar path (make_fragment), false its lanes with the default
+// shade_lanes (each lane through shade()).
+class OnePixelAtATime : public Shader {
+public:
+    OnePixelAtATime(const Shader& inner, bool reads_uv) : inner_(inner), reads_uv_(reads_uv) {}
+    bool reads_uv() const override { return reads_uv_; }
+    ShadedPixel shade(const Surface& s, Fragment& f) const override { return inner_.shade(s, f); }
+
+private:
+    const Shader& inner_;
+    bool reads_uv_;
+};
+
+// A wavy grid of small triangles over the floor, so that a lane group holds
+// several triangles; some vertex normals are zero (the geometric normal stands in).
+Mesh wavy_grid(int cells, bool with_normals) {
+    Mesh mesh;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            float x = float(i) / float(cells) * 3 - 1.5f, z = float(j) / float(cells) * 3 - 1.5f;
+            mesh.positions.emplace_back(x, 0.1f + 0.05f * std::sin(x * 9) * std::cos(z * 7), z);
+            if (with_normals)
+                mesh.normals.push_back((i + j) % 7 == 0 ? Eigen::Vector3f::Zero() : Eigen::Vector3f(std::sin(x * 5), 2, std::cos(z * 3)).normalized());
+        }
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells) + 1, d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
+        }
+    return mesh;
+}
+
+bool same_bits(const Frame& a, const Frame& b) {
+    auto same = [](const auto& x, const auto& y) {
+        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+    };
+    return same(a.color, b.color) && same(a.depth, b.depth) && same(a.normal, b.normal);
+}
+
+}  // namespace
+
+// Untextured pixels are made and shaded four at a time in SIMD lanes
+// (docs/performance.md: Lanes); each must have the bits of the one-pixel path,
+// with clipped triangles, surfaces seen from behind, meshes with and without
+// normals and several surfaces in one group of lanes, in every camera.
+TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
+    auto scene = test::make_render_scene();
+    Mesh with_normals = wavy_grid(23, true), without_normals = wavy_grid(17, false);
+    std::vector<Batch> batches = scene->batches;
+    batches.push_back({&with_normals, {}});
+    batches.back().surface.base_color = {0.2f, 0.7f, 0.4f, 0.6f};
+    batches.back().surface.specular = {0.5f, 0.4f, 0.1f};
+    batches.push_back({&without_normals, {}});
+    batches.back().surface.shininess = 64;
+    for (std::size_t i = 2; i < 4; ++i)  // the grids a little apart, interleaved with the floor
+        for (Eigen::Vector3f& p : (i == 2 ? with_normals : without_normals).positions) p.y() += i == 2 ? 0.05f : 0.0f;
+
+    RenderSettings settings = scene->settings;
+    settings.mode = RenderMode::untextured;
+    std::vector<Camera> cameras{settings.camera, camera_at_position({1, 0.4f, 0.2f}, {0, 0.2f, 0}, 1.2f, 70, 3)};
+    cameras[1].near_plane = 0.5f;                      // cuts the floor and the grids: clipped triangles
+    cameras.push_back(cameras[0]);
+    cameras[2].position = {0.1f, 0.55f, -0.05f};     // inside the box: every face seen from behind
+    cameras.push_back(cameras[0]);
+    cameras[3].orthographic = true;
+    int drawn = 0;
+    for (std::size_t k = 0; k < cameras.size(); ++k)
+        for (bool wireframe : {false, true}) {
+            settings.camera = cameras[k];
+            settings.wireframe = wireframe;
+            settings.shader = nullptr;
+            Frame lanes = make_frame(131, 97, {1, 1, 1});
+            render(batches, settings, lanes);
+            Eigen::Vector3f eye = settings.camera.position;  // an orthographic eye as the pipeline places it
+            if (settings.camera.orthographic) eye -= (settings.camera.target - eye).normalized() * 1e6f;
+            std::unique_ptr<Shader> untextured = make_shader(settings, eye);
+            for (bool scalar_fragments : {true, false}) {
+                OnePixelAtATime one(*untextured, scalar_fragments);
+                settings.shader = &one;
+                Frame reference = make_frame(131, 97, {1, 1, 1});
+                render(batches, settings, reference);
+                EXPECT_TRUE(same_bits(lanes, reference)) << "camera " << k << (wireframe ? ", wireframe" : "")
+                                                         << (scalar_fragments ? ", scalar fragments" : ", lane fragments");
+            }
+            for (const Eigen::Vector4f& c : lanes.color) drawn += c.w() > 0;
+        }
+    EXPECT_GT(drawn, 131 * 97);  // the views are not empty
 }
