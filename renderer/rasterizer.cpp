@@ -164,11 +164,8 @@ Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double
     Eigen::Vector3d q(l[0] * s.inv_w[0], l[1] * s.inv_w[1], l[2] * s.inv_w[2]);
     double sum = q.sum();
     Eigen::Vector3f b = sum != 0 ? Eigen::Vector3f((q / sum).cast<float>()) : Eigen::Vector3f(1, 0, 0);
-    return s.clipped ? source_of_clipped(*s.clipped, b) : b;
-}
-
-Eigen::Vector3f source_of_clipped(const ClippedWeights& w, const Eigen::Vector3f& b) {
-    return w.weights[0] * b[0] + w.weights[1] * b[1] + w.weights[2] * b[2];
+    if (!s.clipped) return b;
+    return source_of_clipped(*s.clipped, b);
 }
 
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,

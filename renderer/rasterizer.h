@@ -70,7 +70,9 @@ Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
                                     double py);
 // Barycentrics of a clipped piece's corners as barycentrics of its source triangle.
-Eigen::Vector3f source_of_clipped(const ClippedWeights& w, const Eigen::Vector3f& b);
+inline Eigen::Vector3f source_of_clipped(const ClippedWeights& w, const Eigen::Vector3f& b) {
+    return w.weights[0] * b[0] + w.weights[1] * b[1] + w.weights[2] * b[2];
+}
 
 // Pixels [x0, x1) x [y0, y1) of the visibility buffer, row stride `stride`.
 struct TileTarget {
