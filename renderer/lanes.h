@@ -17,6 +17,10 @@ struct Vector3Lanes {
     FloatLanes x, y, z;
 };
 
+struct Vector4Lanes {
+    FloatLanes x, y, z, w;
+};
+
 inline FloatLanes broadcast(float value) { return FloatLanes{value, value, value, value}; }
 // In registers (see DoubleLanes).
 inline FloatLanes from_scalars(float a, float b, float c, float d) {
@@ -52,6 +56,7 @@ inline DoubleLanes to_doubles(IntLanes v) {
     return {_mm_cvtepi32_pd(__m128i(v)), _mm_cvtepi32_pd(_mm_shuffle_epi32(__m128i(v), 0xee))};
 }
 inline DoubleLanes to_doubles(FloatLanes v) { return {_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v))}; }
+inline DoubleLanes square_root(const DoubleLanes& v) { return {_mm_sqrt_pd(v.low), _mm_sqrt_pd(v.high)}; }
 inline FloatLanes to_floats(const DoubleLanes& v) { return _mm_movelh_ps(_mm_cvtpd_ps(v.low), _mm_cvtpd_ps(v.high)); }
 inline DoubleLanes operator+(const DoubleLanes& a, const DoubleLanes& b) { return {a.low + b.low, a.high + b.high}; }
 inline DoubleLanes operator-(const DoubleLanes& a, const DoubleLanes& b) { return {a.low - b.low, a.high - b.high}; }
@@ -68,6 +73,10 @@ inline IntLanes not_zero(const DoubleLanes& v) {
 
 // Eigen sums three terms as x + (y + z): its reductions split in halves.
 inline FloatLanes dot(const Vector3Lanes& a, const Vector3Lanes& b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
+// Eigen's cross() of 3-vectors.
+inline Vector3Lanes cross(const Vector3Lanes& a, const Vector3Lanes& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 // Eigen's normalized(): v / sqrt(|v|^2) where |v|^2 > 0, else v.
 inline Vector3Lanes normalized(const Vector3Lanes& v) {
     FloatLanes squared = dot(v, v);

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace boxlod {
 
@@ -212,103 +213,226 @@ Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
     return f;
 }
 
-// make_fragment without uvs for the visible pixels `ids` at x, row y, each of
-// its own triangle, computing what set_up_triangle and make_fragment compute,
-// with the same operations, in lanes (renderer/lanes.h): where a run of pixels
-// shares a triangle, that is one pixel, so nothing is kept per triangle.
-// Lanes from `count` on repeat lane 0.
-FragmentLanes make_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], IntLanes x, int y, int count) {
+// What make_fragment_lanes reads of the triangles of lane_count pixels, in
+// lanes: what set_up_triangle gathers and computes, with the same operations.
+// Lanes past a group's count repeat its last pixel.
+struct TriangleLanes {
+    std::uint32_t ids[lane_count];
+    DoubleLanes screen_x[3], screen_y[3], inv_w[3], area;  // barycentric_setup
+    const ClippedWeights* clipped[lane_count];
+    Vector3Lanes position[3], edge1, edge2, geometric_normal, normal[3];
+    IntLanes has_normals;
+    const Surface* surface[lane_count];
+    bool any_uv = false;
+};
+
+// And what shaders that read uvs need besides.
+struct TexturedTriangleLanes : TriangleLanes {
+    IntLanes has_uv, has_tangents, has_uv_frame;
+    FloatLanes u[3], v[3], tangent_w[3];
+    Vector3Lanes tangent[3], uv_tangent, uv_bitangent;
+    UvGradient uv_gradient[lane_count];
+    const UvGradient* uv_gradient_of_lane[lane_count];
+};
+
+// A 4x4 transpose: out[i] holds element i of each row.
+void transpose(__m128 r0, __m128 r1, __m128 r2, __m128 r3, FloatLanes* out) {
+    _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+    out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
+}
+
+// Three floats at each lane's pointer, read as two and one: no read past a vector's end.
+Vector3Lanes gather(const Eigen::Vector3f* const* p) {
+    __m128 r[lane_count];
+    for (int j = 0; j < lane_count; ++j)
+        r[j] = _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p[j]->data()))),
+                             _mm_load_ss(p[j]->data() + 2));
+    FloatLanes lanes[4];
+    transpose(r[0], r[1], r[2], r[3], lanes);
+    return Vector3Lanes{lanes[0], lanes[1], lanes[2]};
+}
+
+// (A template on reads_uv: the untextured instance keeps no uv code.)
+template <bool reads_uv>
+using TrianglesOf = std::conditional_t<reads_uv, TexturedTriangleLanes, TriangleLanes>;
+
+template <bool reads_uv>
+[[gnu::always_inline]] inline void gather_triangles(const Context& c, const std::uint32_t ids[lane_count], TrianglesOf<reads_uv>& t) {
     static_assert(offsetof(ScreenTriangle, y) == offsetof(ScreenTriangle, x) + 12 &&
                   offsetof(ScreenTriangle, inv_w) + 16 <= sizeof(ScreenTriangle));
     static const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
-    FragmentLanes f;
-    f.count = count;
+    static const Eigen::Vector2f no_uv = Eigen::Vector2f::Zero();
+    static const Eigen::Vector4f no_tangent = Eigen::Vector4f::Zero();
     __m128i corners_x[lane_count], corners_y[lane_count];
     __m128 inv_w[lane_count];
     const Eigen::Vector3f *positions[3][lane_count], *normals[3][lane_count];
-    IntLanes has_normals;
-    const ClippedWeights* clipped[lane_count];
+    const Eigen::Vector2f* uvs[3][lane_count];
+    const Eigen::Vector4f* tangents[3][lane_count];
+    t.any_uv = false;
     for (int j = 0; j < lane_count; ++j) {
+        t.ids[j] = ids[j];
         const std::vector<ClippedWeights>* weights;
-        const ScreenTriangle& t = triangle_of(c, ids[j], weights);
-        const auto* bytes = reinterpret_cast<const char*>(&t);
+        const ScreenTriangle& screen = triangle_of(c, ids[j], weights);
+        const auto* bytes = reinterpret_cast<const char*>(&screen);
         corners_x[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, x)));
         corners_y[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, y)));
         inv_w[j] = _mm_loadu_ps(reinterpret_cast<const float*>(bytes + offsetof(ScreenTriangle, inv_w)));
-        clipped[j] = t.clipped >= 0 ? &(*weights)[std::size_t(t.clipped)] : nullptr;
-        const Batch& batch = c.batches[t.batch];
+        t.clipped[j] = screen.clipped >= 0 ? &(*weights)[std::size_t(screen.clipped)] : nullptr;
+        const Batch& batch = c.batches[screen.batch];
         const Mesh& mesh = *batch.mesh;
-        const std::uint32_t* v = &mesh.indices[std::size_t(t.triangle) * 3];
-        has_normals[j] = mesh.normals.empty() ? 0 : -1;
+        const std::uint32_t* v = &mesh.indices[std::size_t(screen.triangle) * 3];
+        t.has_normals[j] = mesh.normals.empty() ? 0 : -1;
         for (int k = 0; k < 3; ++k) {
             positions[k][j] = &mesh.positions[v[k]];
             normals[k][j] = mesh.normals.empty() ? &no_normal : &mesh.normals[v[k]];
         }
-        f.surface[j] = &batch.surface;
+        t.surface[j] = &batch.surface;
+        if constexpr (reads_uv) {
+            const bool with_uv = !mesh.uvs.empty(), with_tangents = with_uv && !mesh.tangents.empty();
+            t.any_uv = t.any_uv || with_uv;
+            t.has_uv[j] = with_uv ? -1 : 0;
+            t.has_tangents[j] = with_tangents ? -1 : 0;
+            for (int k = 0; k < 3; ++k) {
+                uvs[k][j] = with_uv ? &mesh.uvs[v[k]] : &no_uv;
+                tangents[k][j] = with_tangents ? &mesh.tangents[v[k]] : &no_tangent;
+            }
+            const Surface& surface = batch.surface;
+            t.uv_gradient_of_lane[j] = nullptr;
+            if (!with_uv || !surface.height || !(surface.height_depth > 0)) continue;
+            if (j > 0 && ids[j] == ids[j - 1]) t.uv_gradient_of_lane[j] = t.uv_gradient_of_lane[j - 1];
+            else if (uv_gradient_of(mesh, v, t.uv_gradient[j])) t.uv_gradient_of_lane[j] = &t.uv_gradient[j];
+        }
     }
-    auto transpose = [](__m128 r0, __m128 r1, __m128 r2, __m128 r3, FloatLanes* out) {
-        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-        out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
-    };
-    auto transpose_ints = [&](const __m128i* r, IntLanes* out) {
-        FloatLanes lanes[4];
-        transpose(_mm_castsi128_ps(r[0]), _mm_castsi128_ps(r[1]), _mm_castsi128_ps(r[2]), _mm_castsi128_ps(r[3]), lanes);
-        for (int i = 0; i < 3; ++i) out[i] = IntLanes(lanes[i]);
-    };
-    // Three floats at each lane's pointer, read as two and one: no read past a vector's end.
-    auto gather = [&](const Eigen::Vector3f* const* p) {
-        __m128 r[lane_count];
-        for (int j = 0; j < lane_count; ++j)
-            r[j] = _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p[j]->data()))),
-                                 _mm_load_ss(p[j]->data() + 2));
-        FloatLanes lanes[4];
-        transpose(r[0], r[1], r[2], r[3], lanes);
-        return Vector3Lanes{lanes[0], lanes[1], lanes[2]};
-    };
-    IntLanes screen_x[3], screen_y[3];
-    transpose_ints(corners_x, screen_x);
-    transpose_ints(corners_y, screen_y);
-    FloatLanes corner_inv_w[4];
-    transpose(inv_w[0], inv_w[1], inv_w[2], inv_w[3], corner_inv_w);
-    const Vector3Lanes p0 = gather(positions[0]), p1 = gather(positions[1]), p2 = gather(positions[2]);
+    FloatLanes lanes[4];
+    const double scale = 1.0 / (1 << subpixel_bits);
+    for (const auto& [corners, out] : {std::pair{corners_x, t.screen_x}, std::pair{corners_y, t.screen_y}}) {
+        transpose(_mm_castsi128_ps(corners[0]), _mm_castsi128_ps(corners[1]), _mm_castsi128_ps(corners[2]),
+                  _mm_castsi128_ps(corners[3]), lanes);
+        for (int k = 0; k < 3; ++k) out[k] = to_doubles(IntLanes(lanes[k])) * scale;
+    }
+    transpose(inv_w[0], inv_w[1], inv_w[2], inv_w[3], lanes);
+    for (int k = 0; k < 3; ++k) t.inv_w[k] = to_doubles(lanes[k]);
+    const DoubleLanes *sx = t.screen_x, *sy = t.screen_y;
+    t.area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
 
     // The geometric normal as set_up_triangle computes it (Eigen's cross and norm).
-    const Vector3Lanes e1 = p1 - p0, e2 = p2 - p0;
-    const Vector3Lanes cross{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
-    const FloatLanes length = square_root(dot(cross, cross));
-    f.geometric_normal = select(length > 0, cross / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+    for (int k = 0; k < 3; ++k) t.position[k] = gather(positions[k]), t.normal[k] = gather(normals[k]);
+    t.edge1 = t.position[1] - t.position[0], t.edge2 = t.position[2] - t.position[0];
+    const Vector3Lanes across = cross(t.edge1, t.edge2);
+    const FloatLanes length = square_root(dot(across, across));
+    t.geometric_normal = select(length > 0, across / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+    if constexpr (reads_uv) {
+        if (!t.any_uv) return;
 
-    // Screen barycentrics as barycentric_setup and screen_barycentrics compute
-    // them, then the perspective correction of source_barycentrics, in doubles.
-    const double scale = 1.0 / (1 << subpixel_bits);
-    DoubleLanes sx[3], sy[3], w[3];
-    for (int k = 0; k < 3; ++k) {
-        sx[k] = to_doubles(screen_x[k]) * scale;
-        sy[k] = to_doubles(screen_y[k]) * scale;
-        w[k] = to_doubles(corner_inv_w[k]);
-    }
-    const DoubleLanes area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
-    const DoubleLanes px = to_doubles(x) + 0.5, py = broadcast(y + 0.5);
-    const DoubleLanes l0 = ((sx[2] - sx[1]) * (py - sy[1]) - (sy[2] - sy[1]) * (px - sx[1])) / area;
-    const DoubleLanes l1 = ((sx[0] - sx[2]) * (py - sy[2]) - (sy[0] - sy[2]) * (px - sx[2])) / area;
-    const DoubleLanes l2 = 1 - l0 - l1;
-    const DoubleLanes q0 = l0 * w[0], q1 = l1 * w[1], q2 = l2 * w[2];
-    const DoubleLanes sum = q0 + q1 + q2;
-    const IntLanes nonzero = not_zero(sum);
-    FloatLanes b0 = select(nonzero, to_floats(q0 / sum), broadcast(1.0f));
-    FloatLanes b1 = select(nonzero, to_floats(q1 / sum), broadcast(0.0f));
-    FloatLanes b2 = select(nonzero, to_floats(q2 / sum), broadcast(0.0f));
-    for (int j = 0; j < count; ++j)
-        if (clipped[j]) {
-            Eigen::Vector3f b = source_of_clipped(*clipped[j], Eigen::Vector3f(b0[j], b1[j], b2[j]));
-            b0[j] = b[0], b1[j] = b[1], b2[j] = b[2];
+        for (int k = 0; k < 3; ++k) {  // (u, v) pairs of lanes 0 1 and 2 3, then split
+            auto pair = [&](int j) { return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(uvs[k][j]->data()))); };
+            const __m128 low = _mm_movelh_ps(pair(0), pair(1)), high = _mm_movelh_ps(pair(2), pair(3));
+            t.u[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0));
+            t.v[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(3, 1, 3, 1));
+            transpose(_mm_loadu_ps(tangents[k][0]->data()), _mm_loadu_ps(tangents[k][1]->data()),
+                      _mm_loadu_ps(tangents[k][2]->data()), _mm_loadu_ps(tangents[k][3]->data()), lanes);
+            t.tangent[k] = {lanes[0], lanes[1], lanes[2]};
+            t.tangent_w[k] = lanes[3];
         }
+        // The tangent frame from the uv gradient, for lanes without mesh tangents.
+        const FloatLanes d1u = t.u[1] - t.u[0], d1v = t.v[1] - t.v[0], d2u = t.u[2] - t.u[0], d2v = t.v[2] - t.v[0];
+        const FloatLanes det = d1u * d2v - d2u * d1v;
+        t.has_uv_frame = det != 0;
+        t.uv_tangent = (t.edge1 * d2v - t.edge2 * d1v) / det;
+        t.uv_bitangent = (t.edge2 * d1u - t.edge1 * d2u) / det;
+    }
+}
 
-    f.position = p0 * b0 + p1 * b1 + p2 * b2;
-    const Vector3Lanes normal = gather(normals[0]) * b0 + gather(normals[1]) * b1 + gather(normals[2]) * b2;
+// make_fragment for lane_count visible pixels at x, row y, of the triangles
+// `t` (each pixel of its own triangle), with the same operations in lanes
+// (renderer/lanes.h).
+template <bool reads_uv>
+[[gnu::always_inline]] inline FragmentLanes make_fragment_lanes(const TrianglesOf<reads_uv>& t, IntLanes x, int y, int count) {
+    FragmentLanes f;
+    f.count = count;
+    std::copy(t.surface, t.surface + lane_count, f.surface);
+    f.has_uv = IntLanes{};
+    // Screen barycentrics as screen_barycentrics computes them, then the
+    // perspective correction of source_barycentrics, in doubles.
+    const DoubleLanes *sx = t.screen_x, *sy = t.screen_y, *w = t.inv_w;
+    auto source_barycentrics = [&](const DoubleLanes& px, const DoubleLanes& py, FloatLanes b[3]) {
+        const DoubleLanes l0 = ((sx[2] - sx[1]) * (py - sy[1]) - (sy[2] - sy[1]) * (px - sx[1])) / t.area;
+        const DoubleLanes l1 = ((sx[0] - sx[2]) * (py - sy[2]) - (sy[0] - sy[2]) * (px - sx[2])) / t.area;
+        const DoubleLanes l2 = 1 - l0 - l1;
+        const DoubleLanes q0 = l0 * w[0], q1 = l1 * w[1], q2 = l2 * w[2];
+        const DoubleLanes sum = q0 + q1 + q2;
+        const IntLanes nonzero = not_zero(sum);
+        b[0] = select(nonzero, to_floats(q0 / sum), broadcast(1.0f));
+        b[1] = select(nonzero, to_floats(q1 / sum), broadcast(0.0f));
+        b[2] = select(nonzero, to_floats(q2 / sum), broadcast(0.0f));
+        for (int j = 0; j < count; ++j)
+            if (t.clipped[j]) {
+                Eigen::Vector3f s = source_of_clipped(*t.clipped[j], Eigen::Vector3f(b[0][j], b[1][j], b[2][j]));
+                b[0][j] = s[0], b[1][j] = s[1], b[2][j] = s[2];
+            }
+    };
+    const DoubleLanes px = to_doubles(x) + 0.5, py = broadcast(y + 0.5);
+    FloatLanes b[3];
+    source_barycentrics(px, py, b);
+
+    f.position = t.position[0] * b[0] + t.position[1] * b[1] + t.position[2] * b[2];
+    f.geometric_normal = t.geometric_normal;
+    const Vector3Lanes normal = t.normal[0] * b[0] + t.normal[1] * b[1] + t.normal[2] * b[2];
     const FloatLanes squared = dot(normal, normal);
-    f.normal = select(has_normals & (squared > 0), normal / square_root(squared), f.geometric_normal);
+    f.normal = select(t.has_normals & (squared > 0), normal / square_root(squared), t.geometric_normal);
+    if constexpr (reads_uv) {
+        if (!t.any_uv) return f;
+
+        // Uvs, their change one pixel right and down, and the tangent frame, as make_fragment makes them.
+        f.has_uv = t.has_uv;
+        std::copy(t.uv_gradient_of_lane, t.uv_gradient_of_lane + lane_count, f.uv_gradient);
+        auto interpolate = [&](const FloatLanes* values, const FloatLanes* weights) {
+            return values[0] * weights[0] + values[1] * weights[1] + values[2] * weights[2];
+        };
+        FloatLanes right[3], down[3];
+        source_barycentrics(px + 1, py, right);
+        source_barycentrics(px, broadcast(y + 0.5 + 1), down);
+        const FloatLanes zero{};
+        f.u = select(t.has_uv, interpolate(t.u, b), zero);
+        f.v = select(t.has_uv, interpolate(t.v, b), zero);
+        f.du_dx = select(t.has_uv, interpolate(t.u, right) - f.u, zero);
+        f.dv_dx = select(t.has_uv, interpolate(t.v, right) - f.v, zero);
+        f.du_dy = select(t.has_uv, interpolate(t.u, down) - f.u, zero);
+        f.dv_dy = select(t.has_uv, interpolate(t.v, down) - f.v, zero);
+
+        // Mesh tangents interpolated (w gives the bitangent's sign), else the uv frame.
+        const Vector3Lanes mesh_tangent = t.tangent[0] * b[0] + t.tangent[1] * b[1] + t.tangent[2] * b[2];
+        const FloatLanes mesh_w = interpolate(t.tangent_w, b);
+        Vector3Lanes tangent = select(t.has_tangents, mesh_tangent, t.uv_tangent);
+        tangent = tangent - f.normal * dot(f.normal, tangent);  // Gram-Schmidt against the shading normal
+        const FloatLanes tangent_squared = dot(tangent, tangent);
+        tangent = tangent / square_root(tangent_squared);
+        const Vector3Lanes across = cross(f.normal, tangent);
+        // The bitangent points up the image, against dp/dv (glTF: uv origin at the top left).
+        const FloatLanes handedness = select(t.has_tangents, select(mesh_w < 0, broadcast(-1.0f), broadcast(1.0f)),
+                                             select(dot(across, t.uv_bitangent) > 0, broadcast(-1.0f), broadcast(1.0f)));
+        const IntLanes framed = t.has_uv & (t.has_tangents | t.has_uv_frame) & (tangent_squared > 0);
+        f.tangent = select(framed, tangent, Vector3Lanes{broadcast(1.0f), broadcast(0.0f), broadcast(0.0f)});
+        f.bitangent = select(framed, across * handedness, Vector3Lanes{broadcast(0.0f), broadcast(1.0f), broadcast(0.0f)});
+    }
     return f;
+}
+
+// Textured pixels reuse the lanes of their triangles (`t`, gathered again
+// where `ids` differ from its own), which pays for large triangles; untextured
+// ones gather them each time into a local: in the benchmark's frame of a
+// million small triangles, keeping them for reuse made it about 20 % slower
+// (docs/performance.md: Lanes).
+FragmentLanes make_textured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], bool other_triangles,
+                                           TexturedTriangleLanes& t, IntLanes x, int y, int count) {
+    if (other_triangles) gather_triangles<true>(c, ids, t);
+    return make_fragment_lanes<true>(t, x, y, count);
+}
+
+FragmentLanes make_untextured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], IntLanes x, int y, int count) {
+    TriangleLanes t;
+    gather_triangles<false>(c, ids, t);
+    return make_fragment_lanes<false>(t, x, y, count);
 }
 
 // Distance in pixels from a pixel centre to the nearest edge of the source triangle.
@@ -448,7 +572,7 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
         frame.depth[pixel] = depth[(y - y0) * tile_size + (x - x0)];
         frame.normal[pixel] = normal;
     };
-    if (reads_uv) {
+    if (!c.shader.takes_lanes()) {
         std::uint32_t setup_id = no_triangle;
         TriangleSetup setup;
         for (int y = y0; y < y1; ++y)
@@ -462,6 +586,12 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     } else {
         // lane_count visible pixels of a row at a time. Their x are shifted into
         // lanes from the top, in registers: see DoubleLanes (renderer/lanes.h).
+        // Groups of one triangle's pixels reuse its gathered lanes. (Whether the
+        // group's triangles changed is noted as ids come: a load of several
+        // ids just stored would wait for every store before, the frame's too.)
+        TexturedTriangleLanes triangles;
+        std::fill(triangles.ids, triangles.ids + lane_count, no_triangle);
+        bool other_triangles = false;
         for (int y = y0; y < y1; ++y) {
             std::uint32_t lanes[lane_count];
             __m128i xs = _mm_setzero_si128();
@@ -472,9 +602,15 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
                 case 2: xs = _mm_srli_si128(xs, 8); break;
                 case 3: xs = _mm_srli_si128(xs, 4); break;
                 }
-                for (int j = count; j < lane_count; ++j) lanes[j] = lanes[0];
+                for (int j = count; j < lane_count; ++j) {
+                    lanes[j] = lanes[count - 1];
+                    other_triangles = other_triangles || lanes[j] != triangles.ids[j];
+                }
                 ShadedLanes shaded;
-                c.shader.shade_lanes(make_fragment_lanes(c, lanes, IntLanes(xs), y, count), shaded);
+                c.shader.shade_lanes(reads_uv ? make_textured_fragment_lanes(c, lanes, other_triangles, triangles, IntLanes(xs), y, count)
+                                              : make_untextured_fragment_lanes(c, lanes, IntLanes(xs), y, count),
+                                     shaded);
+                other_triangles = false;
                 alignas(16) int x[lane_count];
                 _mm_store_si128(reinterpret_cast<__m128i*>(x), xs);
                 for (int j = 0; j < count; ++j) {
@@ -491,6 +627,7 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
             for (int x = x0; x < x1; ++x) {
                 std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
                 if (id == no_triangle) continue;
+                other_triangles = other_triangles || id != triangles.ids[count];
                 lanes[count++] = id;
                 xs = _mm_or_si128(_mm_srli_si128(xs, 4), _mm_slli_si128(_mm_cvtsi32_si128(x), 12));
                 if (count == lane_count) shade_lanes();

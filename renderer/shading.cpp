@@ -60,6 +60,37 @@ Eigen::Vector4f sample_surface(const MipTexture& texture, MipLevels& levels, con
     return albedo.head<3>() * (light.ambient + light.diffuse * diffuse) + s.specular * (light.specular * specular);
 }
 
+// face_the_viewer in lanes: the view vector; `turned` marks the lanes seen from behind.
+Vector3Lanes face_the_viewer(const Eigen::Vector3f& eye, const FragmentLanes& f, IntLanes& turned) {
+    Vector3Lanes view = broadcast(eye) - f.position;
+    FloatLanes view_length = square_root(dot(view, view));
+    view = select(view_length > 0, view / view_length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+    turned = dot(f.geometric_normal, view) < 0;
+    return view;
+}
+
+// blinn_phong in lanes, each lane with its surface's specular colour and
+// shininess; glibc's powf stays per lane, for its bits.
+[[gnu::always_inline]] inline Vector3Lanes blinn_phong(const Light& light, const FragmentLanes& f, const Vector3Lanes& view, const Vector3Lanes& albedo,
+                         const Vector3Lanes& specular_color, const Vector3Lanes& normal) {
+    Vector3Lanes to_light = normalized(broadcast(light.position) - f.position);
+    Vector3Lanes halfway = normalized(to_light + view);
+    FloatLanes diffuse = max_zero(dot(normal, to_light)), specular_base = max_zero(dot(normal, halfway));
+    float specular[lane_count] = {};
+    for (int j = 0; j < f.count; ++j) {
+        float shininess = light.shininess > 0 ? light.shininess : f.surface[j]->shininess;
+        if (diffuse[j] > 0) specular[j] = std::pow(specular_base[j], shininess);
+    }
+    FloatLanes lit = broadcast(light.ambient) + broadcast(light.diffuse) * diffuse;
+    FloatLanes highlight = broadcast(light.specular) * from_scalars(specular[0], specular[1], specular[2], specular[3]);
+    return {albedo.x * lit + specular_color.x * highlight, albedo.y * lit + specular_color.y * highlight,
+            albedo.z * lit + specular_color.z * highlight};
+}
+
+bool one_surface(const FragmentLanes& f) {
+    return f.surface[1] == f.surface[0] && f.surface[2] == f.surface[0] && f.surface[3] == f.surface[0];
+}
+
 // Material colour and vertex normals only.
 class UntexturedShader : public Shader {
 public:
@@ -70,39 +101,26 @@ public:
         Eigen::Vector3f view = face_the_viewer(eye_, f, turned);
         return {blinn_phong(light_, s, f, view, s.base_color, f.normal), f.normal, s.base_color.w()};
     }
-    // shade() in lanes, operation for operation (face_the_viewer, blinn_phong);
-    // glibc's powf stays per lane, for its bits.
+    // shade() in lanes, operation for operation (face_the_viewer, blinn_phong).
     void shade_lanes(const FragmentLanes& f, ShadedLanes& shaded) const override {
-        Vector3Lanes view = broadcast(eye_) - f.position;
-        FloatLanes view_length = square_root(dot(view, view));
-        view = select(view_length > 0, view / view_length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
-        Vector3Lanes normal = select(dot(f.geometric_normal, view) < 0, -f.normal, f.normal);
-        Vector3Lanes to_light = normalized(broadcast(light_.position) - f.position);
-        Vector3Lanes halfway = normalized(to_light + view);
-        FloatLanes diffuse = max_zero(dot(normal, to_light)), specular_base = max_zero(dot(normal, halfway));
+        IntLanes turned;
+        const Vector3Lanes view = face_the_viewer(eye_, f, turned);
+        const Vector3Lanes normal = select(turned, -f.normal, f.normal);
         Vector3Lanes albedo, specular_color;
-        float specular[lane_count] = {};
-        const bool one_surface = f.surface[1] == f.surface[0] && f.surface[2] == f.surface[0] && f.surface[3] == f.surface[0];
-        if (one_surface) {
+        if (one_surface(f)) {
             const Surface& s = *f.surface[0];
             albedo = broadcast(Eigen::Vector3f(s.base_color.head<3>()));
             specular_color = broadcast(s.specular);
             shaded.alpha = broadcast(s.base_color.w());
-        }
-        for (int j = 0; j < lane_count; ++j) {
-            const Surface& s = *f.surface[j];
-            if (!one_surface) {
+        } else {
+            for (int j = 0; j < lane_count; ++j) {
+                const Surface& s = *f.surface[j];
                 set_lane(albedo, j, s.base_color.head<3>());
                 set_lane(specular_color, j, s.specular);
                 shaded.alpha[j] = s.base_color.w();
             }
-            float shininess = light_.shininess > 0 ? light_.shininess : s.shininess;
-            if (j < f.count && diffuse[j] > 0) specular[j] = std::pow(specular_base[j], shininess);
         }
-        FloatLanes lit = broadcast(light_.ambient) + broadcast(light_.diffuse) * diffuse;
-        FloatLanes highlight = broadcast(light_.specular) * from_scalars(specular[0], specular[1], specular[2], specular[3]);
-        shaded.color = {albedo.x * lit + specular_color.x * highlight, albedo.y * lit + specular_color.y * highlight,
-                        albedo.z * lit + specular_color.z * highlight};
+        shaded.color = blinn_phong(light_, f, view, albedo, specular_color, normal);
         shaded.normal = normal;
     }
 
@@ -115,8 +133,34 @@ private:
 // Blinn-Phong, or unlit (albedo mode: what baking records, the mapped normal too).
 class MappedShader : public Shader {
 public:
-    MappedShader(const Light& light, const Eigen::Vector3f& eye, bool lit) : light_(light), eye_(eye), lit_(lit) {}
+    // `displaces`: a subclass offsets uvs by the height map (displaced_uv).
+    MappedShader(const Light& light, const Eigen::Vector3f& eye, bool lit, bool displaces = false)
+        : light_(light), eye_(eye), lit_(lit), displaces_(displaces) {}
     bool reads_uv() const override { return true; }
+    // shade() in lanes, operation for operation, for the common case: one
+    // surface with colour and normal maps of one layout, every lane with uvs,
+    // no displacement. Other groups go lane by lane through shade().
+    void shade_lanes(const FragmentLanes& f, ShadedLanes& shaded) const override {
+        const Surface& s = *f.surface[0];
+        if (!one_surface(f) || !s.color || !s.normal || (displaces_ && s.height) || !same_layout(*s.color, *s.normal) ||
+            _mm_movemask_ps(__m128(f.has_uv)) != 0xf)
+            return Shader::shade_lanes(f, shaded);
+        IntLanes turned;
+        const Vector3Lanes view = face_the_viewer(eye_, f, turned);
+        const Vector3Lanes surface_normal = select(turned, -f.normal, f.normal);
+        const Vector3Lanes bitangent = select(turned, -f.bitangent, f.bitangent);
+        const FloatLanes lod = mip_level(*s.color, f.du_dx, f.dv_dx, f.du_dy, f.dv_dy, f.count);
+        Vector4Lanes color_texel{}, normal_texel{};  // lanes from f.count on stay 0
+        sample_both(*s.color, *s.normal, f.u, f.v, lod, f.count, color_texel, normal_texel);
+        const Vector3Lanes albedo{broadcast(s.base_color.x()) * color_texel.x, broadcast(s.base_color.y()) * color_texel.y,
+                                  broadcast(s.base_color.z()) * color_texel.z};
+        shaded.alpha = broadcast(s.base_color.w()) * color_texel.w;
+        const Vector3Lanes mapped = f.tangent * (normal_texel.x * 2 - 1) + bitangent * (normal_texel.y * 2 - 1) +
+                                    surface_normal * (normal_texel.z * 2 - 1);
+        const FloatLanes squared = dot(mapped, mapped);
+        shaded.normal = select(squared > 0, mapped / square_root(squared), surface_normal);
+        shaded.color = lit_ ? blinn_phong(light_, f, view, albedo, broadcast(s.specular), shaded.normal) : albedo;
+    }
     ShadedPixel shade(const Surface& s, Fragment& f) const override {
         bool turned;
         Eigen::Vector3f view = face_the_viewer(eye_, f, turned);
@@ -168,7 +212,7 @@ protected:
 private:
     Light light_;
     Eigen::Vector3f eye_;
-    bool lit_;
+    bool lit_, displaces_;
 };
 
 // Parallax mapping with offset limiting (Welsh 2004): offset = (h * scale + bias) * V.xy
@@ -176,7 +220,7 @@ private:
 class ParallaxShader : public MappedShader {
 public:
     ParallaxShader(const Light& light, const Eigen::Vector3f& eye, float scale, float bias)
-        : MappedShader(light, eye, true), scale_(scale), bias_(bias) {}
+        : MappedShader(light, eye, true, true), scale_(scale), bias_(bias) {}
 
 protected:
     Eigen::Vector2f displaced_uv(const Surface& s, const Fragment& f, MipLevels& levels,
@@ -196,7 +240,8 @@ private:
 // The ray crosses `scale` in uv, or the height map's stated depth.
 class OcclusionShader : public MappedShader {
 public:
-    OcclusionShader(const Light& light, const Eigen::Vector3f& eye, float scale) : MappedShader(light, eye, true), scale_(scale) {}
+    OcclusionShader(const Light& light, const Eigen::Vector3f& eye, float scale)
+        : MappedShader(light, eye, true, true), scale_(scale) {}
 
 protected:
     Eigen::Vector2f displaced_uv(const Surface& s, const Fragment& f, MipLevels& levels,
@@ -228,12 +273,25 @@ private:
 
 }  // namespace
 
+Fragment fragment_of(const FragmentLanes& lanes, int j) {
+    Fragment f;
+    f.position = lane(lanes.position, j);
+    f.normal = lane(lanes.normal, j);
+    f.geometric_normal = lane(lanes.geometric_normal, j);
+    if (!lanes.has_uv[j]) return f;
+    f.has_uv = true;
+    f.uv = {lanes.u[j], lanes.v[j]};
+    f.duv_dx = {lanes.du_dx[j], lanes.dv_dx[j]};
+    f.duv_dy = {lanes.du_dy[j], lanes.dv_dy[j]};
+    f.tangent = lane(lanes.tangent, j);
+    f.bitangent = lane(lanes.bitangent, j);
+    f.uv_gradient = lanes.uv_gradient[j];
+    return f;
+}
+
 void Shader::shade_lanes(const FragmentLanes& fragments, ShadedLanes& shaded) const {
     for (int j = 0; j < fragments.count; ++j) {
-        Fragment f;
-        f.position = lane(fragments.position, j);
-        f.normal = lane(fragments.normal, j);
-        f.geometric_normal = lane(fragments.geometric_normal, j);
+        Fragment f = fragment_of(fragments, j);
         ShadedPixel pixel = shade(*fragments.surface[j], f);
         set_lane(shaded.color, j, pixel.color);
         set_lane(shaded.normal, j, pixel.normal);

@@ -35,14 +35,22 @@ struct ShadedPixel {
     float alpha = 1;         // base colour alpha x colour map alpha: the blend weight of AlphaMode::blend
 };
 
-// The inputs of lane_count pixels at once, for shaders that read no uvs: the
-// pipeline makes these in lanes (renderer/lanes.h). Lanes from `count` on
-// repeat lane 0 and are not written.
+// The inputs of lane_count pixels at once, made by the pipeline in lanes
+// (renderer/lanes.h), each lane with the bits make_fragment gives its pixel.
+// Lanes from `count` on repeat lane 0 and are not written.
 struct FragmentLanes {
     Vector3Lanes position, normal, geometric_normal;
+    // Made only for shaders that read uvs (Fragment's defaults elsewhere).
+    FloatLanes u, v, du_dx, dv_dx, du_dy, dv_dy;
+    Vector3Lanes tangent, bitangent;
+    IntLanes has_uv;
+    const UvGradient* uv_gradient[lane_count];  // as Fragment's
     const Surface* surface[lane_count];
     int count;
 };
+
+// Lane j as a Fragment.
+Fragment fragment_of(const FragmentLanes& lanes, int j);
 
 struct ShadedLanes {
     Vector3Lanes color, normal;
@@ -57,9 +65,12 @@ public:
     virtual bool reads_uv() const = 0;
     // `fragment` may be turned to face the viewer on the way.
     virtual ShadedPixel shade(const Surface& surface, Fragment& fragment) const = 0;
-    // A shader that reads no uvs is handed lane_count pixels at once, with the
-    // same result as shade() on each; by default each lane goes through shade().
+    // Opaque pixels are handed over lane_count at once, with the same result
+    // as shade() on each; by default each lane goes through shade().
     virtual void shade_lanes(const FragmentLanes& fragments, ShadedLanes& shaded) const;
+    // False: the pipeline makes each pixel's fragment on its own, as for
+    // blended surfaces, and calls shade() (the reference lanes are tested against).
+    virtual bool takes_lanes() const { return true; }
 };
 
 // The shader of a render mode, lit by settings.light and seen from `eye`.

@@ -3,6 +3,7 @@
 // Built once from an 8-bit image (sRGB or linear) or a 16-bit height map.
 #pragma once
 #include "renderer/image.h"
+#include "renderer/lanes.h"
 
 #include <Eigen/Core>
 #include <utility>
@@ -51,5 +52,16 @@ std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, flo
 
 // Mip level for the screen-space derivatives of uv (OpenGL 4.6, 8.14.1).
 float mip_level(const MipTexture& texture, const Eigen::Vector2f& duv_dx, const Eigen::Vector2f& duv_dy);
+
+// The same, in lanes (renderer/lanes.h), with mip_level's bits in each of
+// the first `count` lanes.
+FloatLanes mip_level(const MipTexture& texture, FloatLanes du_dx, FloatLanes dv_dx, FloatLanes du_dy, FloatLanes dv_dy,
+                     int count);
+// Whether two textures have one size, wrap and filter: then they read the same texels.
+bool same_layout(const MipTexture& a, const MipTexture& b);
+// sample_both(a, lod, b, lod, uv) for two textures of one layout, in lanes,
+// at the first `count` lanes' uvs and mip levels.
+void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod, int count,
+                 Vector4Lanes& from_a, Vector4Lanes& from_b);
 
 }  // namespace boxlod

@@ -290,23 +290,26 @@ TEST(Renderer, FragmentsCarryTheUvGradientWhereTheHeightMapStatesItsDepth) {
 
 namespace {
 
-// The untextured mode's shading, one pixel at a time: reads_uv() true sends the
-// pipeline's scalar path (make_fragment), false its lanes with the default
+// A render mode's shading, one pixel at a time: takes_lanes() false sends the
+// pipeline's scalar path (make_fragment), true its lanes with the default
 // shade_lanes (each lane through shade()).
 class OnePixelAtATime : public Shader {
 public:
-    OnePixelAtATime(const Shader& inner, bool reads_uv) : inner_(inner), reads_uv_(reads_uv) {}
-    bool reads_uv() const override { return reads_uv_; }
+    OnePixelAtATime(const Shader& inner, bool scalar_fragments) : inner_(inner), scalar_fragments_(scalar_fragments) {}
+    bool reads_uv() const override { return inner_.reads_uv(); }
+    bool takes_lanes() const override { return !scalar_fragments_; }
     ShadedPixel shade(const Surface& s, Fragment& f) const override { return inner_.shade(s, f); }
 
 private:
     const Shader& inner_;
-    bool reads_uv_;
+    bool scalar_fragments_;
 };
 
 // A wavy grid of small triangles over the floor, so that a lane group holds
-// several triangles; some vertex normals are zero (the geometric normal stands in).
-Mesh wavy_grid(int cells, bool with_normals) {
+// several triangles; some vertex normals are zero (the geometric normal
+// stands in). With uvs, some triangles' uvs are degenerate (no uv frame);
+// with tangents too, their w changes sign across the grid.
+Mesh wavy_grid(int cells, bool with_normals, bool with_uvs = false, bool with_tangents = false) {
     Mesh mesh;
     for (int j = 0; j <= cells; ++j)
         for (int i = 0; i <= cells; ++i) {
@@ -314,6 +317,8 @@ Mesh wavy_grid(int cells, bool with_normals) {
             mesh.positions.emplace_back(x, 0.1f + 0.05f * std::sin(x * 9) * std::cos(z * 7), z);
             if (with_normals)
                 mesh.normals.push_back((i + j) % 7 == 0 ? Eigen::Vector3f::Zero() : Eigen::Vector3f(std::sin(x * 5), 2, std::cos(z * 3)).normalized());
+            if (with_uvs) mesh.uvs.emplace_back(i % 5 == 0 ? 0.0f : x * 1.7f + z * 0.3f, (i + j) % 5 == 0 ? 0.0f : z * 2.1f);
+            if (with_tangents) mesh.tangents.emplace_back(std::cos(z * 4), 0.3f * x, std::sin(z * 4), i % 3 == 0 ? -1.0f : 1.0f);
         }
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
@@ -332,24 +337,30 @@ bool same_bits(const Frame& a, const Frame& b) {
 
 }  // namespace
 
-// Untextured pixels are made and shaded four at a time in SIMD lanes
-// (docs/performance.md: Lanes); each must have the bits of the one-pixel path,
-// with clipped triangles, surfaces seen from behind, meshes with and without
-// normals and several surfaces in one group of lanes, in every camera.
+// Opaque pixels are made four at a time in SIMD lanes, and untextured ones
+// shaded so (docs/performance.md: Lanes); each must have the bits of the
+// one-pixel path in every mode, with clipped triangles, surfaces seen from
+// behind, meshes with and without normals, uvs and tangents, degenerate uvs,
+// height maps with a stated depth, and several surfaces in one group of lanes.
 TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
     auto scene = test::make_render_scene();
     Mesh with_normals = wavy_grid(23, true), without_normals = wavy_grid(17, false);
+    Mesh with_tangents = wavy_grid(19, true, true, true), with_uvs = wavy_grid(13, false, true);
+    for (Eigen::Vector3f& p : with_normals.positions) p.y() += 0.05f;  // a little apart, interleaved with the floor
+    for (Eigen::Vector3f& p : with_tangents.positions) p.y() += 0.02f;
+    for (Eigen::Vector3f& p : with_uvs.positions) p.y() -= 0.03f;
     std::vector<Batch> batches = scene->batches;
     batches.push_back({&with_normals, {}});
     batches.back().surface.base_color = {0.2f, 0.7f, 0.4f, 0.6f};
     batches.back().surface.specular = {0.5f, 0.4f, 0.1f};
     batches.push_back({&without_normals, {}});
     batches.back().surface.shininess = 64;
-    for (std::size_t i = 2; i < 4; ++i)  // the grids a little apart, interleaved with the floor
-        for (Eigen::Vector3f& p : (i == 2 ? with_normals : without_normals).positions) p.y() += i == 2 ? 0.05f : 0.0f;
+    batches.push_back({&with_tangents, batches[0].surface});
+    batches.back().surface.height_depth = 0.05f;  // metric parallax: fragments carry the uv gradient
+    batches.push_back({&with_uvs, batches[0].surface});
+    batches.back().surface.normal = nullptr;
 
     RenderSettings settings = scene->settings;
-    settings.mode = RenderMode::untextured;
     std::vector<Camera> cameras{settings.camera, camera_at_position({1, 0.4f, 0.2f}, {0, 0.2f, 0}, 1.2f, 70, 3)};
     cameras[1].near_plane = 0.5f;                      // cuts the floor and the grids: clipped triangles
     cameras.push_back(cameras[0]);
@@ -357,25 +368,28 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
     cameras.push_back(cameras[0]);
     cameras[3].orthographic = true;
     int drawn = 0;
-    for (std::size_t k = 0; k < cameras.size(); ++k)
-        for (bool wireframe : {false, true}) {
-            settings.camera = cameras[k];
-            settings.wireframe = wireframe;
-            settings.shader = nullptr;
-            Frame lanes = make_frame(131, 97, {1, 1, 1});
-            render(batches, settings, lanes);
-            Eigen::Vector3f eye = settings.camera.position;  // an orthographic eye as the pipeline places it
-            if (settings.camera.orthographic) eye -= (settings.camera.target - eye).normalized() * 1e6f;
-            std::unique_ptr<Shader> untextured = make_shader(settings, eye);
-            for (bool scalar_fragments : {true, false}) {
-                OnePixelAtATime one(*untextured, scalar_fragments);
-                settings.shader = &one;
-                Frame reference = make_frame(131, 97, {1, 1, 1});
-                render(batches, settings, reference);
-                EXPECT_TRUE(same_bits(lanes, reference)) << "camera " << k << (wireframe ? ", wireframe" : "")
-                                                         << (scalar_fragments ? ", scalar fragments" : ", lane fragments");
+    for (const auto& mode : render_modes())
+        for (std::size_t k = 0; k < cameras.size(); ++k)
+            for (bool wireframe : {false, true}) {
+                if (wireframe && mode.value != RenderMode::untextured && mode.value != RenderMode::normal) continue;
+                settings.mode = mode.value;
+                settings.camera = cameras[k];
+                settings.wireframe = wireframe;
+                settings.shader = nullptr;
+                Frame lanes = make_frame(131, 97, {1, 1, 1});
+                render(batches, settings, lanes);
+                Eigen::Vector3f eye = settings.camera.position;  // an orthographic eye as the pipeline places it
+                if (settings.camera.orthographic) eye -= (settings.camera.target - eye).normalized() * 1e6f;
+                std::unique_ptr<Shader> shader = make_shader(settings, eye);
+                for (bool scalar_fragments : {true, false}) {
+                    OnePixelAtATime one(*shader, scalar_fragments);
+                    settings.shader = &one;
+                    Frame reference = make_frame(131, 97, {1, 1, 1});
+                    render(batches, settings, reference);
+                    EXPECT_TRUE(same_bits(lanes, reference)) << mode.name << ", camera " << k << (wireframe ? ", wireframe" : "")
+                                                             << (scalar_fragments ? ", scalar fragments" : ", lane fragments");
+                }
+                for (const Eigen::Vector4f& c : lanes.color) drawn += c.w() > 0;
             }
-            for (const Eigen::Vector4f& c : lanes.color) drawn += c.w() > 0;
-        }
-    EXPECT_GT(drawn, 131 * 97);  // the views are not empty
+    EXPECT_GT(drawn, 131 * 97 * int(render_modes().size()));  // the views are not empty
 }
