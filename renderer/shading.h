@@ -37,7 +37,7 @@ struct ShadedPixel {
 
 // The inputs of lane_count pixels at once, made by the pipeline in lanes
 // (renderer/lanes.h), each lane with the bits make_fragment gives its pixel.
-// Lanes from `count` on repeat lane 0 and are not written.
+// Lanes from `count` on repeat the last pixel and are not written.
 struct FragmentLanes {
     Vector3Lanes position, normal, geometric_normal;
     // Made only for shaders that read uvs (Fragment's defaults elsewhere).
