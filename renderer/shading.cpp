@@ -91,6 +91,23 @@ bool one_surface(const FragmentLanes& f) {
     return f.surface[1] == f.surface[0] && f.surface[2] == f.surface[0] && f.surface[3] == f.surface[0];
 }
 
+// Each lane's surface's base colour (rgb, alpha) and specular colour.
+void materials(const FragmentLanes& f, Vector3Lanes& base_color, FloatLanes& base_alpha, Vector3Lanes& specular_color) {
+    if (one_surface(f)) {
+        const Surface& s = *f.surface[0];
+        base_color = broadcast(Eigen::Vector3f(s.base_color.head<3>()));
+        base_alpha = broadcast(s.base_color.w());
+        specular_color = broadcast(s.specular);
+        return;
+    }
+    for (int j = 0; j < lane_count; ++j) {
+        const Surface& s = *f.surface[j];
+        set_lane(base_color, j, s.base_color.head<3>());
+        base_alpha[j] = s.base_color.w();
+        set_lane(specular_color, j, s.specular);
+    }
+}
+
 // Material colour and vertex normals only.
 class UntexturedShader : public Shader {
 public:
@@ -107,19 +124,7 @@ public:
         const Vector3Lanes view = face_the_viewer(eye_, f, turned);
         const Vector3Lanes normal = select(turned, -f.normal, f.normal);
         Vector3Lanes albedo, specular_color;
-        if (one_surface(f)) {
-            const Surface& s = *f.surface[0];
-            albedo = broadcast(Eigen::Vector3f(s.base_color.head<3>()));
-            specular_color = broadcast(s.specular);
-            shaded.alpha = broadcast(s.base_color.w());
-        } else {
-            for (int j = 0; j < lane_count; ++j) {
-                const Surface& s = *f.surface[j];
-                set_lane(albedo, j, s.base_color.head<3>());
-                set_lane(specular_color, j, s.specular);
-                shaded.alpha[j] = s.base_color.w();
-            }
-        }
+        materials(f, albedo, shaded.alpha, specular_color);
         shaded.color = blinn_phong(light_, f, view, albedo, specular_color, normal);
         shaded.normal = normal;
     }
@@ -137,29 +142,38 @@ public:
     MappedShader(const Light& light, const Eigen::Vector3f& eye, bool lit, bool displaces = false)
         : light_(light), eye_(eye), lit_(lit), displaces_(displaces) {}
     bool reads_uv() const override { return true; }
-    // shade() in lanes, operation for operation, for the common case: one
-    // surface with colour and normal maps of one layout, every lane with uvs,
-    // no displacement. Other groups go lane by lane through shade().
+    // shade() in lanes, operation for operation, where each lane either has
+    // no maps to read (no uvs, or a surface without maps) or reads colour and
+    // normal maps of one layout, and nothing is displaced. Other groups go
+    // lane by lane through shade().
     void shade_lanes(const FragmentLanes& f, ShadedLanes& shaded) const override {
-        const Surface& s = *f.surface[0];
-        if (!one_surface(f) || !s.color || !s.normal || (displaces_ && s.height) || !same_layout(*s.color, *s.normal) ||
-            _mm_movemask_ps(__m128(f.has_uv)) != 0xf)
-            return Shader::shade_lanes(f, shaded);
+        IntLanes mapped{};
+        for (int j = 0; j < f.count; ++j) {
+            const Surface& s = *f.surface[j];
+            if (!f.has_uv[j]) continue;
+            if ((displaces_ && s.height) || bool(s.color) != bool(s.normal) || (s.color && !same_layout(*s.color, *s.normal)))
+                return Shader::shade_lanes(f, shaded);
+            mapped[j] = s.color ? -1 : 0;
+        }
         IntLanes turned;
         const Vector3Lanes view = face_the_viewer(eye_, f, turned);
         const Vector3Lanes surface_normal = select(turned, -f.normal, f.normal);
-        const Vector3Lanes bitangent = select(turned, -f.bitangent, f.bitangent);
-        const FloatLanes lod = mip_level(*s.color, f.du_dx, f.dv_dx, f.du_dy, f.dv_dy, f.count);
-        Vector4Lanes color_texel{}, normal_texel{};  // lanes from f.count on stay 0
-        sample_both(*s.color, *s.normal, f.u, f.v, lod, f.count, color_texel, normal_texel);
-        const Vector3Lanes albedo{broadcast(s.base_color.x()) * color_texel.x, broadcast(s.base_color.y()) * color_texel.y,
-                                  broadcast(s.base_color.z()) * color_texel.z};
-        shaded.alpha = broadcast(s.base_color.w()) * color_texel.w;
-        const Vector3Lanes mapped = f.tangent * (normal_texel.x * 2 - 1) + bitangent * (normal_texel.y * 2 - 1) +
-                                    surface_normal * (normal_texel.z * 2 - 1);
-        const FloatLanes squared = dot(mapped, mapped);
-        shaded.normal = select(squared > 0, mapped / square_root(squared), surface_normal);
-        shaded.color = lit_ ? blinn_phong(light_, f, view, albedo, broadcast(s.specular), shaded.normal) : albedo;
+        Vector3Lanes albedo, specular_color;
+        materials(f, albedo, shaded.alpha, specular_color);
+        shaded.normal = surface_normal;
+        if (_mm_movemask_ps(__m128(mapped)) != 0) {
+            // Lanes without maps read texels of 1 (albedo x 1 is albedo) and keep their normal.
+            Vector4Lanes color_texel{broadcast(1.0f), broadcast(1.0f), broadcast(1.0f), broadcast(1.0f)}, normal_texel{};
+            sample_maps(f, mapped, color_texel, normal_texel);
+            albedo = {albedo.x * color_texel.x, albedo.y * color_texel.y, albedo.z * color_texel.z};
+            shaded.alpha = shaded.alpha * color_texel.w;
+            const Vector3Lanes bitangent = select(turned, -f.bitangent, f.bitangent);
+            const Vector3Lanes normal = f.tangent * (normal_texel.x * 2 - 1) + bitangent * (normal_texel.y * 2 - 1) +
+                                        surface_normal * (normal_texel.z * 2 - 1);
+            const FloatLanes squared = dot(normal, normal);
+            shaded.normal = select(mapped & (squared > 0), normal / square_root(squared), surface_normal);
+        }
+        shaded.color = lit_ ? blinn_phong(light_, f, view, albedo, specular_color, shaded.normal) : albedo;
     }
     ShadedPixel shade(const Surface& s, Fragment& f) const override {
         bool turned;
@@ -172,7 +186,7 @@ public:
             // its front; from behind (inside a box, through cut-out texels) no offset fits.
             const bool displace = s.height && !(turned && s.height_depth > 0);
             Eigen::Vector2f uv = displace ? displaced_uv(s, f, levels, view) : f.uv;
-            Eigen::Vector4f color_texel, normal_texel;
+            Eigen::Vector4f color_texel = Eigen::Vector4f::Ones(), normal_texel = Eigen::Vector4f::Zero();  // set where read
             if (s.color && s.normal)
                 std::tie(color_texel, normal_texel) = sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);
             else if (s.color) color_texel = sample_surface(*s.color, levels, uv);
@@ -187,6 +201,25 @@ public:
         }
         if (!lit_) return {albedo.head<3>(), normal, albedo.w()};
         return {blinn_phong(light_, s, f, view, albedo, normal), normal, albedo.w()};
+    }
+
+private:
+    // The colour and normal texels of the `mapped` lanes (shade()'s sample_both).
+    static void sample_maps(const FragmentLanes& f, IntLanes mapped, Vector4Lanes& color_texel, Vector4Lanes& normal_texel) {
+        const Surface& s = *f.surface[0];
+        if (one_surface(f) && _mm_movemask_ps(__m128(mapped)) == (1 << f.count) - 1) {
+            const FloatLanes lod = mip_level(*s.color, f.du_dx, f.dv_dx, f.du_dy, f.dv_dy, f.count);
+            sample_both(*s.color, *s.normal, f.u, f.v, lod, f.count, color_texel, normal_texel);
+            return;
+        }
+        for (int j = 0; j < f.count; ++j) {
+            if (!mapped[j]) continue;
+            const Surface& lane_surface = *f.surface[j];
+            const float lod = mip_level(*lane_surface.color, {f.du_dx[j], f.dv_dx[j]}, {f.du_dy[j], f.dv_dy[j]});
+            const auto [color, normal] = sample_both(*lane_surface.color, lod, *lane_surface.normal, lod, {f.u[j], f.v[j]});
+            color_texel.x[j] = color.x(), color_texel.y[j] = color.y(), color_texel.z[j] = color.z(), color_texel.w[j] = color.w();
+            normal_texel.x[j] = normal.x(), normal_texel.y[j] = normal.y(), normal_texel.z[j] = normal.z();
+        }
     }
 
 protected:
