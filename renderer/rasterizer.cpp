@@ -1,5 +1,7 @@
 #include "renderer/rasterizer.h"
 
+#include "renderer/lanes.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -221,6 +223,17 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
         step_y[k] = dx * one;
     }
     const double inv_area = 1.0 / double(area);
+    // Whether a run of n + 1 centres from edge values e keeps every |E| below 2^50
+    // (E is linear along the run, so its ends bound it).
+    auto exact_in_doubles = [&](std::int64_t e0, std::int64_t e1, std::int64_t e2, std::int64_t n) {
+        const std::int64_t limit = std::int64_t(1) << 50;
+        const std::int64_t e[3] = {e0, e1, e2};
+        for (int k = 0; k < 3; ++k) {
+            const std::int64_t a = e[k] + bias[k], b = a + n * step_x[k];
+            if (a <= -limit || a >= limit || b <= -limit || b >= limit) return false;
+        }
+        return true;
+    };
     auto shade_pixel = [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2, float* depth,
                            std::uint32_t* ids) {
         // Depth straight from the exact edge values: the same at a pixel however the screen is split.
@@ -259,7 +272,32 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
                 std::int64_t e0 = row[0] + offset * step_x[0], e1 = row[1] + offset * step_x[1], e2 = row[2] + offset * step_x[2];
                 float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
                 std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
-                for (int x = int(first); x <= int(last); ++x) {
+                int x = int(first);
+                if (last - first >= 3 && exact_in_doubles(e0, e1, e2, last - first)) {
+                    // Four centres at once: while |E| < 2^50 every E + n step_x is an exact
+                    // double, so adding steps in doubles gives shade_pixel's double(E) and depth.
+                    auto lanes = [](std::int64_t e, std::int64_t step, std::int64_t bias_k) {
+                        const double d = double(e + bias_k), s = double(step);
+                        return DoubleLanes{_mm_setr_pd(d, d + s), _mm_setr_pd(d + 2 * s, d + 3 * s)};
+                    };
+                    DoubleLanes d0 = lanes(e0, step_x[0], bias[0]), d1 = lanes(e1, step_x[1], bias[1]),
+                                d2 = lanes(e2, step_x[2], bias[2]);
+                    const DoubleLanes s0 = broadcast(double(4 * step_x[0])), s1 = broadcast(double(4 * step_x[1])),
+                                      s2 = broadcast(double(4 * step_x[2]));
+                    for (; x + 3 <= int(last); x += 4) {
+                        const FloatLanes z = to_floats((d0 * Z[0] + d1 * Z[1] + d2 * Z[2]) * inv_area);
+                        const int i = x - tile.x0;
+                        int passed = _mm_movemask_ps(_mm_cmplt_ps(z, _mm_loadu_ps(depth + i)));
+                        for (; passed; passed &= passed - 1) {
+                            const int j = __builtin_ctz(unsigned(passed));
+                            on_pixel(x + j, y, z[j], depth[i + j], ids[i + j]);
+                        }
+                        d0 = d0 + s0, d1 = d1 + s1, d2 = d2 + s2;
+                    }
+                    const std::int64_t done = x - first;
+                    e0 += done * step_x[0], e1 += done * step_x[1], e2 += done * step_x[2];
+                }
+                for (; x <= int(last); ++x) {
                     shade_pixel(x, y, e0, e1, e2, depth, ids);
                     e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
                 }

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -107,7 +108,9 @@ TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
 // (the division carried from row to row); it must give exactly the pixels whose
 // centres the top-left rule puts inside, here checked centre by centre for
 // triangles of every orientation and width, the last 200 with corners far
-// outside the tile (guard-band sizes: edge values near 2^58).
+// outside the tile (guard-band sizes: edge values near 2^58). Each pixel's
+// depth must be the one from its exact edge values, summed in the walk's
+// order (runs take four centres at once in doubles while that is exact).
 TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
     std::uint64_t state = 12345;
     auto next = [&](int range) {  // a small LCG: the same triangles on every machine
@@ -125,16 +128,21 @@ TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
                 t.x[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
                 t.y[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
             }
-            t.z[i] = 0.5f, t.inv_w[i] = 1;
+            t.z[i] = float(next(1 << 20)) / 1048573.0f, t.inv_w[i] = 1;  // every mantissa bit used
         }
         const std::int64_t area = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
         if (area == 0) continue;
         std::vector<int> counts = coverage_counts({t});
+        std::vector<float> depth(size * size, std::numeric_limits<float>::infinity());
+        std::vector<std::uint32_t> ids(size * size, no_triangle);
+        rasterize_triangle(t, 0, {0, 0, size, size, size, depth.data(), ids.data()}, nullptr);
         const int sign = area > 0 ? 1 : -1;
+        const int order[3] = {0, sign > 0 ? 1 : 2, sign > 0 ? 2 : 1};  // the walk's corners, oriented to positive area
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
                 const std::int64_t px = x * 256 + 128, py = y * 256 + 128;
                 bool inside = true;
+                std::int64_t weight[3];  // the edge value opposite each corner
                 for (int k = 0; k < 3; ++k) {
                     const int a = (k + 1) % 3, b = (k + 2) % 3;
                     // Oriented to positive area; inside is E >= 0 on top and left edges, E > 0 elsewhere.
@@ -142,8 +150,15 @@ TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
                     const std::int64_t e = dx * (py - t.y[a]) - dy * (px - t.x[a]);
                     const bool top_left = dy < 0 || (dy == 0 && dx > 0);
                     inside = inside && (top_left ? e >= 0 : e > 0);
+                    weight[k] = e;
                 }
                 ASSERT_EQ(counts[std::size_t(y * size + x)], inside ? 1 : 0) << "triangle " << n << ", pixel " << x << "," << y;
+                if (!inside) continue;
+                double z = 0;
+                for (int k : order) z += double(weight[k]) * double(t.z[k]);
+                const float expected = float(z * (1.0 / double(area * sign)));
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(depth[std::size_t(y * size + x)]), std::bit_cast<std::uint32_t>(expected))
+                    << "triangle " << n << ", pixel " << x << "," << y;
             }
     }
 }
