@@ -522,6 +522,10 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     x0 = std::max(x0, viewport.scissor_x0), y0 = std::max(y0, viewport.scissor_y0);
     x1 = std::min(x1, viewport.scissor_x1), y1 = std::min(y1, viewport.scissor_y1);
     if (x0 >= x1 || y0 >= y1) return;
+    bool any_triangle = false;  // an empty tile (sky, background) writes nothing: skip its buffers
+    for (std::size_t chunk_index = 0; chunk_index < c.chunk_count && !any_triangle; ++chunk_index)
+        any_triangle = c.chunks[chunk_index].bin_start[tile + 1] > c.chunks[chunk_index].bin_start[tile];
+    if (!any_triangle) return;
     float depth[tile_size * tile_size];
     std::uint32_t ids[tile_size * tile_size];
     std::fill(depth, depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
