@@ -5,6 +5,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>
+#include <cstring>
 #include <immintrin.h>
 
 namespace boxlod {
@@ -22,6 +23,13 @@ struct Vector4Lanes {
 };
 
 inline FloatLanes broadcast(float value) { return FloatLanes{value, value, value, value}; }
+// Floats p[0] and p[1] into lanes 0 and 1, the others 0: one 8-byte load
+// (memcpy, since floats need not lie on 8-byte boundaries).
+inline __m128 load_two(const float* p) {
+    double two;
+    std::memcpy(&two, p, sizeof two);
+    return _mm_castpd_ps(_mm_set_sd(two));
+}
 // In registers (see DoubleLanes).
 inline FloatLanes from_scalars(float a, float b, float c, float d) {
     return _mm_movelh_ps(_mm_unpacklo_ps(_mm_set_ss(a), _mm_set_ss(b)), _mm_unpacklo_ps(_mm_set_ss(c), _mm_set_ss(d)));

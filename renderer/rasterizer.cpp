@@ -189,145 +189,232 @@ bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, in
 
 namespace {
 
+// A triangle's edge functions over its pixel bounds in one tile. Edge k runs
+// from corner k+1 to corner k+2 (opposite corner k) of the triangle oriented
+// to positive area; a pixel is inside when every E_k - bias_k >= 0, bias 0 on
+// top and left edges and 1 elsewhere (the top-left fill rule).
+struct EdgeSetup {
+    int x0, y0, x1, y1;       // the pixels to walk, inclusive
+    std::int64_t row[3];      // E_k - bias_k at the centre of (x0, y0)
+    std::int64_t step_x[3], step_y[3], bias[3];
+    std::int64_t area;        // doubled, positive
+    double z[3], inv_area;    // corner depths and 1 / area
+};
+
+// Depth straight from the exact edge values: the same at a pixel however the
+// screen is split. The four-lane walk repeats this expression term for term.
+double depth_of(const EdgeSetup& s, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+    return (double(e0 + s.bias[0]) * s.z[0] + double(e1 + s.bias[1]) * s.z[1] + double(e2 + s.bias[2]) * s.z[2]) * s.inv_area;
+}
+
+void floor_divide(std::int64_t a, std::int64_t b, std::int64_t& quotient, std::int64_t& remainder) {
+    quotient = a / b;
+    if (a % b != 0 && (a < 0) != (b < 0)) --quotient;
+    remainder = a - quotient * b;
+}
+
+// False when `t` has no pixel in the tile.
+bool edge_setup(const ScreenTriangle& t, const TileTarget& tile, EdgeSetup& s) {
+    std::int64_t area = doubled_area(t);
+    int o[3] = {0, 1, 2};  // corner i here is corner o[i] of the stored triangle
+    if (area < 0) std::swap(o[1], o[2]), area = -area;
+    const std::int64_t X[3] = {t.x[o[0]], t.x[o[1]], t.x[o[2]]}, Y[3] = {t.y[o[0]], t.y[o[1]], t.y[o[2]]};
+    const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
+    const std::int64_t min_x = std::min({X[0], X[1], X[2]}), max_x = std::max({X[0], X[1], X[2]});
+    const std::int64_t min_y = std::min({Y[0], Y[1], Y[2]}), max_y = std::max({Y[0], Y[1], Y[2]});
+    s.x0 = std::max<int>(int((min_x - half + one - 1) >> subpixel_bits), tile.x0);
+    s.y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
+    s.x1 = std::min<int>(int((max_x - half) >> subpixel_bits), tile.x1 - 1);
+    s.y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
+    if (s.x0 > s.x1 || s.y0 > s.y1) return false;
+    const std::int64_t px = std::int64_t(s.x0) * one + half, py = std::int64_t(s.y0) * one + half;
+    for (int k = 0; k < 3; ++k) {
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        const std::int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
+        // Top-left rule (y down): a left edge has dy < 0, a top edge dy == 0 and dx > 0.
+        s.bias[k] = dy < 0 || (dy == 0 && dx > 0) ? 0 : 1;
+        s.row[k] = edge(X[a], Y[a], X[b], Y[b], px, py) - s.bias[k];
+        s.step_x[k] = -dy * one;
+        s.step_y[k] = dx * one;
+        s.z[k] = t.z[o[k]];
+    }
+    s.area = area;
+    s.inv_area = 1.0 / double(area);
+    return true;
+}
+
+// Narrow triangles: every pixel centre tested.
+template <typename OnPixel>
+void walk_each_centre(const EdgeSetup& s, const TileTarget& tile, OnPixel& on_pixel) {
+    std::int64_t row[3] = {s.row[0], s.row[1], s.row[2]};
+    for (int y = s.y0; y <= s.y1; ++y) {
+        std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
+        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
+        for (int x = s.x0; x <= s.x1; ++x) {
+            if ((e0 | e1 | e2) >= 0) {
+                const float z = float(depth_of(s, e0, e1, e2));
+                const int i = x - tile.x0;
+                if (z < depth[i]) on_pixel(x, y, z, depth[i], ids[i]);
+            }
+            e0 += s.step_x[0], e1 += s.step_x[1], e2 += s.step_x[2];
+        }
+        for (int k = 0; k < 3; ++k) row[k] += s.step_y[k];
+    }
+}
+
+// One sloped edge's bound on every row's run of inside pixels, solved from
+// E(x) = E(x0) + (x - x0) step_x >= 0 in exact integers: with m = |step_x|,
+// E(x0) = f m + r (0 <= r < m), so a left edge (step_x > 0) admits x >= x0 - f
+// and a right edge x <= x0 + f. A row down adds step_y = fb m + rb: the
+// division is carried from row to row, not redone.
+struct RunBound {
+    std::int64_t f, r, m, fb, rb;
+    void next_row() {
+        f += fb, r += rb;
+        if (r >= m) r -= m, ++f;
+    }
+};
+
+// Where every |E| of the walked pixels stays below 2^50, E + n step_x is an
+// exact double for the few n of a group of four, so depths computed four at a
+// time in doubles have depth_of's bits. E is linear: its corners bound it.
+bool exact_in_doubles(const EdgeSetup& s) {
+    const std::int64_t limit = std::int64_t(1) << 50, width = s.x1 - s.x0, height = s.y1 - s.y0;
+    for (int k = 0; k < 3; ++k)
+        for (std::int64_t corner : {std::int64_t(0), width * s.step_x[k], height * s.step_y[k],
+                                    width * s.step_x[k] + height * s.step_y[k]}) {
+            const std::int64_t e = s.row[k] + s.bias[k] + corner;
+            if (e <= -limit || e >= limit) return false;
+        }
+    return true;
+}
+
+// The runs firsts[n]..lasts[n] of rows top + n, their depths four pixels at a
+// time: E_0 and E_1 in doubles, E_2 = doubled area - E_0 - E_1 (the three sum
+// to it), every one an integer below 2^50 (exact_in_doubles), so exact.
+template <typename OnPixel>
+void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_t* firsts, const std::int32_t* lasts,
+                        const TileTarget& tile, OnPixel& on_pixel) {
+    double row0 = double(s.row[0] + s.bias[0] + (top - s.y0) * s.step_y[0]);
+    double row1 = double(s.row[1] + s.bias[1] + (top - s.y0) * s.step_y[1]);
+    const double step_x0 = double(s.step_x[0]), step_x1 = double(s.step_x[1]), area = double(s.area);
+    // Lane j of a group starts at E + j step_x; a group on adds 4 step_x.
+    const DoubleLanes offset0{_mm_setr_pd(0, step_x0), _mm_setr_pd(2 * step_x0, 3 * step_x0)},
+                      offset1{_mm_setr_pd(0, step_x1), _mm_setr_pd(2 * step_x1, 3 * step_x1)};
+    const DoubleLanes group0 = broadcast(4 * step_x0), group1 = broadcast(4 * step_x1);
+    for (int n = 0; n < rows; ++n, row0 += double(s.step_y[0]), row1 += double(s.step_y[1])) {
+        const int first = firsts[n], last = lasts[n], y = top + n;
+        if (first > last) continue;
+        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride + (first - tile.x0);
+        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride + (first - tile.x0);
+        const double offset = first - s.x0;
+        DoubleLanes e0 = broadcast(row0 + offset * step_x0) + offset0, e1 = broadcast(row1 + offset * step_x1) + offset1;
+        for (int x = first; x <= last; x += 4, depth += 4, ids += 4) {
+            const DoubleLanes e2 = area - e0 - e1;
+            const FloatLanes z = to_floats((e0 * s.z[0] + e1 * s.z[1] + e2 * s.z[2]) * s.inv_area);
+            const int count = std::min(last - x + 1, 4);
+            // A row's last group may reach past the tile's row: then only its pixels are read.
+            const FloatLanes old = x + 3 < tile.x1 ? _mm_loadu_ps(depth)
+                                                  : from_scalars(depth[0], count > 1 ? depth[1] : 0, count > 2 ? depth[2] : 0, 0);
+            for (int passed = _mm_movemask_ps(_mm_cmplt_ps(z, old)) & ((1 << count) - 1); passed; passed &= passed - 1) {
+                const int j = __builtin_ctz(unsigned(passed));
+                on_pixel(x + j, y, z[j], depth[j], ids[j]);
+            }
+            e0 = e0 + group0, e1 = e1 + group1;
+        }
+    }
+}
+
+// The same runs where some E reaches 2^50: depth_of at each pixel.
+template <typename OnPixel>
+void walk_runs(const EdgeSetup& s, int top, int rows, const std::int32_t* firsts, const std::int32_t* lasts,
+               const TileTarget& tile, OnPixel& on_pixel) {
+    for (int n = 0; n < rows; ++n) {
+        const int y = top + n;
+        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
+        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
+        std::int64_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = s.row[k] + (y - s.y0) * s.step_y[k] + (firsts[n] - s.x0) * s.step_x[k];
+        for (int x = firsts[n]; x <= lasts[n]; ++x) {
+            const float z = float(depth_of(s, e[0], e[1], e[2]));
+            const int i = x - tile.x0;
+            if (z < depth[i]) on_pixel(x, y, z, depth[i], ids[i]);
+            for (int k = 0; k < 3; ++k) e[k] += s.step_x[k];
+        }
+    }
+}
+
+// Wide triangles: each row's run of inside pixels solved from its `Left` and
+// `Right` bounding edges (s.y0..s.y1 are the rows a horizontal edge admits),
+// in a loop of its own that keeps the bounds in registers, then walked.
+template <int Left, int Right, typename OnPixel>
+void walk_solved_runs(const EdgeSetup& s, const RunBound* left_bounds, const RunBound* right_bounds,
+                      const TileTarget& tile, OnPixel& on_pixel) {
+    RunBound left[Left], right[Right];
+    std::copy(left_bounds, left_bounds + Left, left);
+    std::copy(right_bounds, right_bounds + Right, right);
+    const bool in_lanes = exact_in_doubles(s);
+    constexpr int chunk = 64;  // rows solved at a time: a tile's
+    std::int32_t firsts[chunk], lasts[chunk];
+    for (int top = s.y0; top <= s.y1; top += chunk) {
+        const int rows = std::min(chunk, s.y1 - top + 1);
+        for (int n = 0; n < rows; ++n) {
+            std::int64_t first = s.x0, last = s.x1;
+            for (const RunBound& bound : left) first = std::max(first, s.x0 - bound.f);
+            for (const RunBound& bound : right) last = std::min(last, s.x0 + bound.f);
+            firsts[n] = std::int32_t(std::min<std::int64_t>(first, s.x1 + 1));  // an empty run stays in int
+            lasts[n] = std::int32_t(std::max<std::int64_t>(last, s.x0 - 1));
+            for (RunBound& bound : left) bound.next_row();
+            for (RunBound& bound : right) bound.next_row();
+        }
+        if (in_lanes) walk_runs_in_lanes(s, top, rows, firsts, lasts, tile, on_pixel);
+        else walk_runs(s, top, rows, firsts, lasts, tile, on_pixel);
+    }
+}
+
 // Walks the pixels of `t` in the tile that the fill rule gives it and that pass
 // depth LESS; `on_pixel(x, y, depth, depth_slot, id_slot)` decides what to write.
 template <typename OnPixel>
 void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on_pixel) {
-    // Orient to positive area; vertex o[i] of the stored triangle is corner i here.
-    std::int64_t area = doubled_area(t);
-    int o[3] = {0, 1, 2};
-    if (area < 0) std::swap(o[1], o[2]), area = -area;
-    const std::int64_t X[3] = {t.x[o[0]], t.x[o[1]], t.x[o[2]]}, Y[3] = {t.y[o[0]], t.y[o[1]], t.y[o[2]]};
-    const double Z[3] = {t.z[o[0]], t.z[o[1]], t.z[o[2]]};
-
-    const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
-    std::int64_t min_x = std::min({X[0], X[1], X[2]}), max_x = std::max({X[0], X[1], X[2]});
-    std::int64_t min_y = std::min({Y[0], Y[1], Y[2]}), max_y = std::max({Y[0], Y[1], Y[2]});
-    int x0 = std::max<int>(int((min_x - half + one - 1) >> subpixel_bits), tile.x0);
-    int y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
-    int x1 = std::min<int>(int((max_x - half) >> subpixel_bits), tile.x1 - 1);
-    int y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
-    if (x0 > x1 || y0 > y1) return;
-
-    // Edge k runs from corner k+1 to corner k+2 (opposite corner k); inside is E >= 0.
-    std::int64_t step_x[3], step_y[3], row[3], bias[3];
-    const std::int64_t px = std::int64_t(x0) * one + half, py = std::int64_t(y0) * one + half;
+    EdgeSetup s;
+    if (!edge_setup(t, tile, s)) return;
+    if (s.x1 - s.x0 < 7) return walk_each_centre(s, tile, on_pixel);
+    // A horizontal edge (step_x 0) admits the rows where E(y0) + (y - y0) step_y >= 0:
+    // a top one (step_y > 0) all of them (the bounds start at or below it), a bottom one up to its last.
+    for (int k = 0; k < 3; ++k)
+        if (s.step_x[k] == 0 && s.step_y[k] < 0) {
+            std::int64_t rows, unused;
+            floor_divide(s.row[k], -s.step_y[k], rows, unused);  // the last row: floor(E / -step_y)
+            s.y1 = s.y0 + int(std::clamp<std::int64_t>(rows, -1, s.y1 - s.y0));
+        }
+    if (s.y0 > s.y1) return;
+    RunBound left[2], right[2];
+    int left_count = 0, right_count = 0;
     for (int k = 0; k < 3; ++k) {
-        int a = (k + 1) % 3, b = (k + 2) % 3;
-        std::int64_t dx = X[b] - X[a], dy = Y[b] - Y[a];
-        // Top-left rule (y down): a left edge has dy < 0, a top edge dy == 0 and dx > 0.
-        bool top_left = dy < 0 || (dy == 0 && dx > 0);
-        bias[k] = top_left ? 0 : 1;  // E >= 0 becomes E > 0 off the top and left edges
-        row[k] = edge(X[a], Y[a], X[b], Y[b], px, py) - bias[k];
-        step_x[k] = -dy * one;
-        step_y[k] = dx * one;
+        if (s.step_x[k] == 0) continue;
+        RunBound& bound = s.step_x[k] > 0 ? left[left_count++] : right[right_count++];
+        bound.m = std::abs(s.step_x[k]);
+        floor_divide(s.row[k], bound.m, bound.f, bound.r);
+        floor_divide(s.step_y[k], bound.m, bound.fb, bound.rb);
     }
-    const double inv_area = 1.0 / double(area);
-    // Whether a run of n + 1 centres from edge values e keeps every |E| below 2^50
-    // (E is linear along the run, so its ends bound it).
-    auto exact_in_doubles = [&](std::int64_t e0, std::int64_t e1, std::int64_t e2, std::int64_t n) {
-        const std::int64_t limit = std::int64_t(1) << 50;
-        const std::int64_t e[3] = {e0, e1, e2};
-        for (int k = 0; k < 3; ++k) {
-            const std::int64_t a = e[k] + bias[k], b = a + n * step_x[k];
-            if (a <= -limit || a >= limit || b <= -limit || b >= limit) return false;
-        }
-        return true;
-    };
-    auto shade_pixel = [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2, float* depth,
-                           std::uint32_t* ids) {
-        // Depth straight from the exact edge values: the same at a pixel however the screen is split.
-        double z = (double(e0 + bias[0]) * Z[0] + double(e1 + bias[1]) * Z[1] + double(e2 + bias[2]) * Z[2]) * inv_area;
-        float zf = float(z);
-        int i = x - tile.x0;
-        if (zf < depth[i]) on_pixel(x, y, zf, depth[i], ids[i]);
-    };
-    // Triangles 8 or more pixels wide: each row's run of inside pixels solved from
-    // the edge equations, E(x) = E(x0) + (x - x0) step_x >= 0 (exact integers,
-    // so the same pixels as testing each centre). The division that solves it
-    // is carried from row to row: with m = |step_x|, E(x0) = f m + r, 0 <= r < m,
-    // and a row down adds step_y = fb m + rb. Narrower ones test each pixel.
-    if (x1 - x0 >= 7) {
-        std::int64_t f[3], r[3], m[3], fb[3], rb[3];
-        auto floor_divide = [](std::int64_t a, std::int64_t b, std::int64_t& quotient, std::int64_t& remainder) {
-            quotient = a / b;
-            if (a % b != 0 && a < 0) --quotient;
-            remainder = a - quotient * b;
-        };
-        for (int k = 0; k < 3; ++k) {
-            m[k] = step_x[k] < 0 ? -step_x[k] : step_x[k];
-            if (m[k] == 0) continue;
-            floor_divide(row[k], m[k], f[k], r[k]);
-            floor_divide(step_y[k], m[k], fb[k], rb[k]);
-        }
-        for (int y = y0; y <= y1; ++y) {
-            std::int64_t first = x0, last = x1;
-            for (int k = 0; k < 3; ++k) {
-                if (step_x[k] > 0) first = std::max(first, std::int64_t(x0) - std::min<std::int64_t>(f[k], 0));
-                else if (step_x[k] < 0) last = std::min(last, std::int64_t(x0) + f[k]);
-                else if (row[k] < 0) last = x0 - 1;
-            }
-            if (first <= last) {
-                const std::int64_t offset = first - x0;
-                std::int64_t e0 = row[0] + offset * step_x[0], e1 = row[1] + offset * step_x[1], e2 = row[2] + offset * step_x[2];
-                float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
-                std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
-                int x = int(first);
-                if (last - first >= 3 && exact_in_doubles(e0, e1, e2, last - first)) {
-                    // Four centres at once: while |E| < 2^50 every E + n step_x is an exact
-                    // double, so adding steps in doubles gives shade_pixel's double(E) and depth.
-                    auto lanes = [](std::int64_t e, std::int64_t step, std::int64_t bias_k) {
-                        const double d = double(e + bias_k), s = double(step);
-                        return DoubleLanes{_mm_setr_pd(d, d + s), _mm_setr_pd(d + 2 * s, d + 3 * s)};
-                    };
-                    DoubleLanes d0 = lanes(e0, step_x[0], bias[0]), d1 = lanes(e1, step_x[1], bias[1]),
-                                d2 = lanes(e2, step_x[2], bias[2]);
-                    const DoubleLanes s0 = broadcast(double(4 * step_x[0])), s1 = broadcast(double(4 * step_x[1])),
-                                      s2 = broadcast(double(4 * step_x[2]));
-                    for (; x + 3 <= int(last); x += 4) {
-                        const FloatLanes z = to_floats((d0 * Z[0] + d1 * Z[1] + d2 * Z[2]) * inv_area);
-                        const int i = x - tile.x0;
-                        int passed = _mm_movemask_ps(_mm_cmplt_ps(z, _mm_loadu_ps(depth + i)));
-                        for (; passed; passed &= passed - 1) {
-                            const int j = __builtin_ctz(unsigned(passed));
-                            on_pixel(x + j, y, z[j], depth[i + j], ids[i + j]);
-                        }
-                        d0 = d0 + s0, d1 = d1 + s1, d2 = d2 + s2;
-                    }
-                    const std::int64_t done = x - first;
-                    e0 += done * step_x[0], e1 += done * step_x[1], e2 += done * step_x[2];
-                }
-                for (; x <= int(last); ++x) {
-                    shade_pixel(x, y, e0, e1, e2, depth, ids);
-                    e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
-                }
-            }
-            for (int k = 0; k < 3; ++k) {
-                row[k] += step_y[k];
-                if (m[k] == 0) continue;
-                f[k] += fb[k], r[k] += rb[k];
-                if (r[k] >= m[k]) r[k] -= m[k], ++f[k];
-            }
-        }
-        return;
-    }
-    for (int y = y0; y <= y1; ++y) {
-        std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
-        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
-        for (int x = x0; x <= x1; ++x) {
-            if ((e0 | e1 | e2) >= 0) shade_pixel(x, y, e0, e1, e2, depth, ids);
-            e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
-        }
-        row[0] += step_y[0], row[1] += step_y[1], row[2] += step_y[2];
-    }
+    // Positive area: two sloped edges on one side and one on the other, or one
+    // on each side of a horizontal edge.
+    if (left_count == 2) return walk_solved_runs<2, 1>(s, left, right, tile, on_pixel);
+    if (right_count == 2) return walk_solved_runs<1, 2>(s, left, right, tile, on_pixel);
+    walk_solved_runs<1, 1>(s, left, right, tile, on_pixel);
 }
 
 }  // namespace
 
 void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep) {
+    // Two walks: without a test, no call in the loop makes the compiler keep its lanes in memory.
+    if (!keep) return walk_triangle(t, tile, [id](int, int, float depth, float& depth_slot, std::uint32_t& id_slot) {
+        depth_slot = depth;
+        id_slot = id;
+    });
     walk_triangle(t, tile, [&](int x, int y, float depth, float& depth_slot, std::uint32_t& id_slot) {
-        if (keep && !(*keep)(t, x, y)) return;
+        if (!(*keep)(t, x, y)) return;
         depth_slot = depth;
         id_slot = id;
     });

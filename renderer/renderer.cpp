@@ -245,8 +245,7 @@ void transpose(__m128 r0, __m128 r1, __m128 r2, __m128 r3, FloatLanes* out) {
 Vector3Lanes gather(const Eigen::Vector3f* const* p) {
     __m128 r[lane_count];
     for (int j = 0; j < lane_count; ++j)
-        r[j] = _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p[j]->data()))),
-                             _mm_load_ss(p[j]->data() + 2));
+        r[j] = _mm_movelh_ps(load_two(p[j]->data()), _mm_load_ss(p[j]->data() + 2));
     FloatLanes lanes[4];
     transpose(r[0], r[1], r[2], r[3], lanes);
     return Vector3Lanes{lanes[0], lanes[1], lanes[2]};
@@ -325,7 +324,7 @@ template <bool reads_uv>
         if (!t.any_uv) return;
 
         for (int k = 0; k < 3; ++k) {  // (u, v) pairs of lanes 0 1 and 2 3, then split
-            auto pair = [&](int j) { return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(uvs[k][j]->data()))); };
+            auto pair = [&](int j) { return load_two(uvs[k][j]->data()); };
             const __m128 low = _mm_movelh_ps(pair(0), pair(1)), high = _mm_movelh_ps(pair(2), pair(3));
             t.u[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0));
             t.v[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(3, 1, 3, 1));

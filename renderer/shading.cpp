@@ -149,8 +149,12 @@ public:
     void shade_lanes(const FragmentLanes& f, ShadedLanes& shaded) const override {
         IntLanes mapped{};
         for (int j = 0; j < f.count; ++j) {
-            const Surface& s = *f.surface[j];
             if (!f.has_uv[j]) continue;
+            if (j > 0 && f.has_uv[j - 1] && f.surface[j] == f.surface[j - 1]) {  // checked already
+                mapped[j] = mapped[j - 1];
+                continue;
+            }
+            const Surface& s = *f.surface[j];
             if ((displaces_ && s.height) || bool(s.color) != bool(s.normal) || (s.color && !same_layout(*s.color, *s.normal)))
                 return Shader::shade_lanes(f, shaded);
             mapped[j] = s.color ? -1 : 0;
