@@ -180,6 +180,74 @@ SamplePlan plan_sample(const MipTexture& texture, Eigen::Vector2f uv, float lod)
     return plan;
 }
 
+// std::floor for |x| < 2^31 (footprint clamps to 1e7), in SSE2: the truncation, less one where it rounded up.
+FloatLanes floor_lanes(FloatLanes x) {
+    const FloatLanes truncated = _mm_cvtepi32_ps(_mm_cvttps_epi32(x));
+    return truncated - select(truncated > x, broadcast(1.0f), broadcast(0.0f));
+}
+
+// plan_sample at the first `count` lanes, its footprints' arithmetic four lanes
+// at a time (the same operations, so the same floats and texels): the
+// coordinates, their floors, weights and wrapped texels. Lanes at non-finite
+// coordinates or repeating a level whose size is not a power of two go
+// through footprint().
+void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLanes lod, int count, SamplePlan* plans) {
+    if (texture.filter != Filter::trilinear) {
+        for (int j = 0; j < count; ++j) plans[j] = plan_sample(texture, {u[j], v[j]}, lod[j]);
+        return;
+    }
+    const float top = float(texture.levels.size() - 1);
+    for (int j = 0; j < count; ++j) {  // plan_sample's levels
+        SamplePlan& plan = plans[j];
+        if (!(lod[j] > 0)) continue;  // level 0 alone
+        const float level = std::min(lod[j], top);
+        const int fine = int(std::floor(level));
+        plan.level[0] = fine;
+        plan.blend = level - float(fine);
+        if (plan.blend != 0) plan.count = 2, plan.level[1] = fine + 1;
+    }
+    for (int slot = 0; slot < 2; ++slot) {
+        IntLanes width{}, height{};
+        for (int j = 0; j < count; ++j) {
+            const MipTexture::Level& level = texture.levels[std::size_t(plans[j].level[slot])];
+            width[j] = level.width, height[j] = level.height;
+        }
+        FloatLanes x = u * __builtin_convertvector(width, FloatLanes) - 0.5f;
+        FloatLanes y = v * __builtin_convertvector(height, FloatLanes) - 0.5f;
+        const IntLanes finite = (x - x == 0) & (y - y == 0);  // inf - inf and NaN - NaN are NaN
+        x = _mm_min_ps(_mm_max_ps(x, broadcast(-1e7f)), broadcast(1e7f));  // std::clamp for finite x
+        y = _mm_min_ps(_mm_max_ps(y, broadcast(-1e7f)), broadcast(1e7f));
+        const FloatLanes fx = floor_lanes(x), fy = floor_lanes(y);
+        const IntLanes i = IntLanes(_mm_cvttps_epi32(fx)), jy = IntLanes(_mm_cvttps_epi32(fy));
+        const FloatLanes s = x - fx, t = y - fy;
+        // wrap_index and wrap_next in lanes; repeat where the level's size is a power of two.
+        const IntLanes last_x = width - 1, last_y = height - 1, zero{};
+        IntLanes i0, i1, j0, j1, in_lanes = finite;
+        auto clamp = [&](IntLanes value, IntLanes last) { return value < 0 ? zero : (last < value ? last : value); };
+        if (texture.wrap == Wrap::clamp) {
+            i0 = clamp(i, last_x), i1 = clamp(i + 1, last_x), j0 = clamp(jy, last_y), j1 = clamp(jy + 1, last_y);
+        } else {
+            in_lanes &= ((width & last_x) == 0) & ((height & last_y) == 0);
+            i0 = i & last_x, j0 = jy & last_y;
+            i1 = i0 + 1 == width ? zero : i0 + 1, j1 = j0 + 1 == height ? zero : j0 + 1;
+        }
+        for (int j = 0; j < count; ++j) {
+            SamplePlan& plan = plans[j];
+            if (slot == 1 && plan.count == 1) continue;
+            Footprint& f = plan.at[slot];
+            if (!in_lanes[j]) {
+                f = footprint(texture.levels[std::size_t(plan.level[slot])], texture.wrap, {u[j], v[j]}, false);
+                continue;
+            }
+            f.single = false;
+            f.s = s[j], f.t = t[j];
+            const std::size_t row0 = std::size_t(j0[j]) * std::size_t(width[j]), row1 = std::size_t(j1[j]) * std::size_t(width[j]);
+            f.k00 = row0 + std::size_t(i0[j]), f.k10 = row0 + std::size_t(i1[j]);
+            f.k01 = row1 + std::size_t(i0[j]), f.k11 = row1 + std::size_t(i1[j]);
+        }
+    }
+}
+
 Eigen::Vector4f sample_planned(const MipTexture& texture, const SamplePlan& plan) {
     Eigen::Vector4f a = fetch(texture, plan.level[0], plan.at[0]);
     if (plan.count == 1) return a;
@@ -255,8 +323,10 @@ bool same_layout(const MipTexture& a, const MipTexture& b) {
 
 void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod, int count,
                  Vector4Lanes& from_a, Vector4Lanes& from_b) {
+    SamplePlan plans[lane_count];
+    plan_samples(a, u, v, lod, count, plans);
     for (int j = 0; j < count; ++j) {
-        const SamplePlan plan = plan_sample(a, {u[j], v[j]}, lod[j]);
+        const SamplePlan& plan = plans[j];
         const Eigen::Vector4f texel_a = sample_planned(a, plan), texel_b = sample_planned(b, plan);
         from_a.x[j] = texel_a.x(), from_a.y[j] = texel_a.y(), from_a.z[j] = texel_a.z(), from_a.w[j] = texel_a.w();
         from_b.x[j] = texel_b.x(), from_b.y[j] = texel_b.y(), from_b.z[j] = texel_b.z(), from_b.w[j] = texel_b.w();

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
 using namespace boxlod;
 
 namespace {
@@ -128,4 +133,53 @@ TEST(Texture, RepeatWrapsWholePeriodsForEverySize) {
                             << "width " << width << ", texel " << x << ", periods " << periods;
                 }
         }
+}
+
+// Four lanes sampled at once read what each lane's uv and level read alone:
+// bit for bit, for both maps, at levels below 0, between levels, past the
+// last one, at uvs far outside the texture and at non-finite ones, repeated
+// (sizes a power of two or not) or clamped, for every filter.
+TEST(Texture, SamplingInLanesEqualsSamplingEachLane) {
+    auto seeded_image = [](int width, int height, std::uint32_t seed) {
+        Image8 image(width, height, 4, 255);
+        for (std::uint8_t& v : image.pixels) seed = seed * 1664525u + 1013904223u, v = std::uint8_t(seed >> 24);
+        return image;
+    };
+    std::uint32_t state = 7;
+    auto next = [&] { return state = state * 1664525u + 1013904223u, float(state >> 8) / float(1 << 24); };
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    int compared = 0;
+    for (auto [width, height] : {std::pair{16, 8}, std::pair{12, 5}})
+        for (Wrap wrap : {Wrap::repeat, Wrap::clamp})
+            for (Filter filter : {Filter::nearest, Filter::bilinear, Filter::trilinear}) {
+                MipTexture color = make_texture(seeded_image(width, height, 1), ColorSpace::srgb, wrap);
+                MipTexture normal = make_texture(seeded_image(width, height, 2), ColorSpace::linear, wrap);
+                color.filter = normal.filter = filter;
+                for (int group = 0; group < 200; ++group) {
+                    FloatLanes u, v, lod;
+                    for (int j = 0; j < lane_count; ++j) {
+                        u[j] = (next() - 0.5f) * (group % 5 == 0 ? 2e6f : 6.0f);
+                        v[j] = (next() - 0.3f) * 3.0f;
+                        lod[j] = next() * 7.0f - 1.5f;
+                        if (group % 7 == 0) lod[j] = float(int(lod[j]));  // on a level: one level read
+                    }
+                    if (group == 1) u[1] = nan, v[2] = inf, lod[3] = nan;
+                    const int count = 1 + group % lane_count;
+                    Vector4Lanes from_color{}, from_normal{};
+                    sample_both(color, normal, u, v, lod, count, from_color, from_normal);
+                    for (int j = 0; j < count; ++j) {
+                        const auto [expected_color, expected_normal] = sample_both(color, lod[j], normal, lod[j], {u[j], v[j]});
+                        const FloatLanes* lanes_color[4] = {&from_color.x, &from_color.y, &from_color.z, &from_color.w};
+                        const FloatLanes* lanes_normal[4] = {&from_normal.x, &from_normal.y, &from_normal.z, &from_normal.w};
+                        for (int c = 0; c < 4; ++c) {
+                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_color[c])[j]), std::bit_cast<std::uint32_t>(expected_color[c]))
+                                << width << "x" << height << ", group " << group << ", lane " << j << ", channel " << c;
+                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_normal[c])[j]), std::bit_cast<std::uint32_t>(expected_normal[c]))
+                                << width << "x" << height << ", group " << group << ", lane " << j << ", channel " << c;
+                        }
+                        ++compared;
+                    }
+                }
+            }
+    EXPECT_EQ(compared, 2 * 2 * 3 * 500);
 }
