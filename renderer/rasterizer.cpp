@@ -195,6 +195,7 @@ namespace {
 // top and left edges and 1 elsewhere (the top-left fill rule).
 struct EdgeSetup {
     int x0, y0, x1, y1;       // the pixels to walk, inclusive
+    bool cut_by_tile;         // x0 or x1 is the tile's, inside the triangle's own bounds
     std::int64_t row[3];      // E_k - bias_k at the centre of (x0, y0)
     std::int64_t step_x[3], step_y[3], bias[3];
     std::int64_t area;        // doubled, positive
@@ -222,9 +223,11 @@ bool edge_setup(const ScreenTriangle& t, const TileTarget& tile, EdgeSetup& s) {
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
     const std::int64_t min_x = std::min({X[0], X[1], X[2]}), max_x = std::max({X[0], X[1], X[2]});
     const std::int64_t min_y = std::min({Y[0], Y[1], Y[2]}), max_y = std::max({Y[0], Y[1], Y[2]});
-    s.x0 = std::max<int>(int((min_x - half + one - 1) >> subpixel_bits), tile.x0);
+    const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits), own_x1 = int((max_x - half) >> subpixel_bits);
+    s.x0 = std::max(own_x0, tile.x0);
     s.y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
-    s.x1 = std::min<int>(int((max_x - half) >> subpixel_bits), tile.x1 - 1);
+    s.x1 = std::min(own_x1, tile.x1 - 1);
+    s.cut_by_tile = s.x0 != own_x0 || s.x1 != own_x1;
     s.y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
     if (s.x0 > s.x1 || s.y0 > s.y1) return false;
     const std::int64_t px = std::int64_t(s.x0) * one + half, py = std::int64_t(s.y0) * one + half;
@@ -241,6 +244,20 @@ bool edge_setup(const ScreenTriangle& t, const TileTarget& tile, EdgeSetup& s) {
     s.area = area;
     s.inv_area = 1.0 / double(area);
     return true;
+}
+
+// Narrows rows y0..y1 to those where value + (y - top) step >= 0.
+void keep_rows_where(std::int64_t value, std::int64_t step, int top, int& y0, int& y1) {
+    std::int64_t rows, unused;
+    if (step > 0) {
+        floor_divide(-value + step - 1, step, rows, unused);  // the first: ceil(-value / step)
+        y0 = int(std::max<std::int64_t>(y0, top + std::min<std::int64_t>(rows, y1 - top + 1)));
+    } else if (step < 0) {
+        floor_divide(value, -step, rows, unused);  // the last: floor(value / -step)
+        y1 = int(std::min<std::int64_t>(y1, top + std::max<std::int64_t>(rows, -1)));
+    } else if (value < 0) {
+        y1 = y0 - 1;
+    }
 }
 
 // Narrow triangles: every pixel centre tested.
@@ -380,18 +397,22 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
     EdgeSetup s;
     if (!edge_setup(t, tile, s)) return;
     if (s.x1 - s.x0 < 7) return walk_each_centre(s, tile, on_pixel);
-    // A horizontal edge (step_x 0) admits the rows where E(y0) + (y - y0) step_y >= 0:
-    // a top one (step_y > 0) all of them (the bounds start at or below it), a bottom one up to its last.
-    for (int k = 0; k < 3; ++k)
-        if (s.step_x[k] == 0 && s.step_y[k] < 0) {
-            std::int64_t rows, unused;
-            floor_divide(s.row[k], -s.step_y[k], rows, unused);  // the last row: floor(E / -step_y)
-            s.y1 = s.y0 + int(std::clamp<std::int64_t>(rows, -1, s.y1 - s.y0));
-        }
+    // Only rows where some pixel of the bounds is inside every edge can hold a
+    // run: those where E_k at the bounds' column farthest inside it is >= 0.
+    // Such rows are a range per edge, E being linear in y. It matters for a
+    // bottom edge (its row's centres are outside) and, where the tile cut the
+    // bounds left or right, for sloped edges (rows of the triangle beside the tile).
+    const int top = s.y0;
+    for (int k = 0; k < 3; ++k) {
+        if (s.step_x[k] != 0 && !s.cut_by_tile) continue;
+        const std::int64_t widest = s.row[k] + (s.step_x[k] > 0 ? (s.x1 - s.x0) * s.step_x[k] : 0);
+        keep_rows_where(widest, s.step_y[k], top, s.y0, s.y1);
+    }
     if (s.y0 > s.y1) return;
     RunBound left[2], right[2];
     int left_count = 0, right_count = 0;
     for (int k = 0; k < 3; ++k) {
+        s.row[k] += std::int64_t(s.y0 - top) * s.step_y[k];
         if (s.step_x[k] == 0) continue;
         RunBound& bound = s.step_x[k] > 0 ? left[left_count++] : right[right_count++];
         bound.m = std::abs(s.step_x[k]);

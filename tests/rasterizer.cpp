@@ -136,6 +136,23 @@ TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
         std::vector<float> depth(size * size, std::numeric_limits<float>::infinity());
         std::vector<std::uint32_t> ids(size * size, no_triangle);
         rasterize_triangle(t, 0, {0, 0, size, size, size, depth.data(), ids.data()}, nullptr);
+        // Tile by tile (each tile its own buffer, so reads past a row show under
+        // ASan): the same pixels and depths, wherever tiles cut the triangle.
+        constexpr int tile_size = 16;
+        for (int tile_y = 0; tile_y < size; tile_y += tile_size)
+            for (int tile_x = 0; tile_x < size; tile_x += tile_size) {
+                std::vector<float> tile_depth(tile_size * tile_size, std::numeric_limits<float>::infinity());
+                std::vector<std::uint32_t> tile_ids(tile_size * tile_size, no_triangle);
+                rasterize_triangle(t, 0, {tile_x, tile_y, tile_x + tile_size, tile_y + tile_size, tile_size, tile_depth.data(), tile_ids.data()},
+                                   nullptr);
+                for (int y = 0; y < tile_size; ++y)
+                    for (int x = 0; x < tile_size; ++x) {
+                        const std::size_t in_tile = std::size_t(y * tile_size + x), in_frame = std::size_t((tile_y + y) * size + tile_x + x);
+                        ASSERT_EQ(tile_ids[in_tile], ids[in_frame]) << "triangle " << n << ", pixel " << tile_x + x << "," << tile_y + y;
+                        ASSERT_EQ(std::bit_cast<std::uint32_t>(tile_depth[in_tile]), std::bit_cast<std::uint32_t>(depth[in_frame]))
+                            << "triangle " << n << ", pixel " << tile_x + x << "," << tile_y + y;
+                    }
+            }
         const int sign = area > 0 ? 1 : -1;
         const int order[3] = {0, sign > 0 ? 1 : 2, sign > 0 ? 2 : 1};  // the walk's corners, oriented to positive area
         for (int y = 0; y < size; ++y)
