@@ -157,26 +157,26 @@ struct SamplePlan {
     Footprint at[2];
 };
 
+// Sets the levels a sample at `lod` reads and their blend into a plan as
+// constructed (level 0 alone); not its footprints.
+[[gnu::always_inline]] inline void plan_levels(const MipTexture& texture, float lod, SamplePlan& plan) {
+    if (texture.filter != Filter::trilinear || !(lod > 0)) return;
+    lod = std::min(lod, float(texture.levels.size() - 1));
+    const int fine = int(std::floor(lod));
+    plan.level[0] = fine;
+    plan.blend = lod - float(fine);
+    if (plan.blend != 0) plan.count = 2, plan.level[1] = fine + 1;
+}
+
 SamplePlan plan_sample(const MipTexture& texture, Eigen::Vector2f uv, float lod) {
     SamplePlan plan;
     if (texture.filter == Filter::nearest) {
         plan.at[0] = footprint(texture.levels[0], texture.wrap, uv, true);
         return plan;
     }
-    if (texture.filter == Filter::bilinear || !(lod > 0)) {
-        plan.at[0] = footprint(texture.levels[0], texture.wrap, uv, false);
-        return plan;
-    }
-    float top = float(texture.levels.size() - 1);
-    lod = std::min(lod, top);
-    int fine = int(std::floor(lod));
-    plan.level[0] = fine;
-    plan.at[0] = footprint(texture.levels[std::size_t(fine)], texture.wrap, uv, false);
-    plan.blend = lod - float(fine);
-    if (plan.blend == 0) return plan;
-    plan.count = 2;
-    plan.level[1] = fine + 1;
-    plan.at[1] = footprint(texture.levels[std::size_t(fine) + 1], texture.wrap, uv, false);
+    plan_levels(texture, lod, plan);
+    plan.at[0] = footprint(texture.levels[std::size_t(plan.level[0])], texture.wrap, uv, false);
+    if (plan.count == 2) plan.at[1] = footprint(texture.levels[std::size_t(plan.level[1])], texture.wrap, uv, false);
     return plan;
 }
 
@@ -196,16 +196,7 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
         for (int j = 0; j < count; ++j) plans[j] = plan_sample(texture, {u[j], v[j]}, lod[j]);
         return;
     }
-    const float top = float(texture.levels.size() - 1);
-    for (int j = 0; j < count; ++j) {  // plan_sample's levels
-        SamplePlan& plan = plans[j];
-        if (!(lod[j] > 0)) continue;  // level 0 alone
-        const float level = std::min(lod[j], top);
-        const int fine = int(std::floor(level));
-        plan.level[0] = fine;
-        plan.blend = level - float(fine);
-        if (plan.blend != 0) plan.count = 2, plan.level[1] = fine + 1;
-    }
+    for (int j = 0; j < count; ++j) plan_levels(texture, lod[j], plans[j]);
     for (int slot = 0; slot < 2; ++slot) {
         IntLanes width{}, height{};
         for (int j = 0; j < count; ++j) {
