@@ -68,18 +68,20 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 // Appends the triangle of three snapped corners unless it has no area or faces the culled way.
 bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c, std::uint32_t batch,
                      std::uint32_t triangle, Culling culling, std::vector<ScreenTriangle>& out) {
-    ScreenTriangle t;
-    const ProjectedVertex* corner[3] = {&a, &b, &c};
-    for (int i = 0; i < 3; ++i)
-        t.x[i] = corner[i]->x, t.y[i] = corner[i]->y, t.z[i] = corner[i]->z, t.inv_w[i] = corner[i]->inv_w;
-    std::int64_t area = doubled_area(t);
+    std::int64_t area = edge(a.x, a.y, b.x, b.y, c.x, c.y);  // doubled_area of the triangle to be
     if (area == 0) return false;
     // Counter-clockwise in NDC (y up) is negative area in window space (y down).
     bool front = area < 0;
     if ((culling == Culling::back && !front) || (culling == Culling::front && front)) return false;
+    // Filled in place: a copy built on the stack and then stored whole made
+    // the CPU wait on every triangle (its wide loads could not be forwarded
+    // from the narrow stores that built it).
+    ScreenTriangle& t = out.emplace_back();
+    const ProjectedVertex* corner[3] = {&a, &b, &c};
+    for (int i = 0; i < 3; ++i)
+        t.x[i] = corner[i]->x, t.y[i] = corner[i]->y, t.z[i] = corner[i]->z, t.inv_w[i] = corner[i]->inv_w;
     t.batch = batch;
     t.triangle = triangle;
-    out.push_back(t);
     return true;
 }
 
