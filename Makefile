@@ -2,15 +2,17 @@
 # packages, configure, build (Release, all cores) and run.
 BUILD ?= build
 DEBUG_BUILD ?= build-debug
+SANITIZE_BUILD ?= build-sanitize
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build debug-build demo test test-cluster test-sanitize fuzz bench paper paper-smoke clean
+.PHONY: all deps configure build debug-build sanitize-build demo test test-cluster test-sanitize fuzz bench paper paper-smoke clean
 all: build
 
 deps:
 	@scripts/install-deps.sh
 
-CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBOXLOD_DEBUG_BUILD=$(abspath $(DEBUG_BUILD)) >/dev/null
+CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DBOXLOD_DEBUG_BUILD=$(abspath $(DEBUG_BUILD)) \
+  -DBOXLOD_SANITIZE_BUILD=$(abspath $(SANITIZE_BUILD)) >/dev/null
 
 configure: deps
 	@$(CONFIGURE)
@@ -26,7 +28,7 @@ demo:
 	@cmake --build $(BUILD) -j $(JOBS) --target boxlod
 	@scripts/demo.sh $(BUILD)
 
-test: build debug-build
+test: build debug-build sanitize-build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The workflow's smoke profile through a one-node SLURM cluster started for the
@@ -43,13 +45,22 @@ debug-build: deps
 	  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
 	@cmake --build $(DEBUG_BUILD) -j $(JOBS) --target debug_check_programs
 
+# The lower layers' tests (base and renderer: the rasterizer's SIMD code, no
+# CGAL) under AddressSanitizer + UndefinedBehaviorSanitizer, for `make test`;
+# test-sanitize below builds the rest in the same folder.
+SANITIZE_CONFIGURE = cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+  -DBOXLOD_SANITIZE=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
+sanitize-build: deps
+	@$(SANITIZE_CONFIGURE)
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target base_tests renderer_tests
+
 # The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer, in a
 # Debug build (assertions on) at -O1: unoptimised Eigen and CGAL under ASan
 # are a hundred times slower. Its golden images must match Release's exactly.
 test-sanitize: deps
-	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DBOXLOD_SANITIZE=ON >/dev/null
-	@cmake --build build-sanitize -j $(JOBS)
-	@cd build-sanitize && ctest --output-on-failure -j $(JOBS)
+	@$(SANITIZE_CONFIGURE)
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	@cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # libFuzzer on every reader of untrusted bytes (tests/fuzz), ASan + UBSan, for
 # FUZZ_SECONDS each (default 60), starting from the corpora in tests/fuzz/corpus
@@ -99,4 +110,4 @@ paper paper-smoke:
 	@echo "paper: out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf (everything: out/workflow/$(PROFILE)/)"
 
 clean:
-	rm -rf $(BUILD) $(DEBUG_BUILD) build-sanitize
+	rm -rf $(BUILD) $(DEBUG_BUILD) $(SANITIZE_BUILD)
