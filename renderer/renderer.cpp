@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -515,6 +516,38 @@ void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, co
     }
 }
 
+// The tile's shaded pixels (`color`, `normal`, row stride tile.stride) into the
+// frame. Unless the tile will read them again (to blend over them), with
+// streaming stores, in one pass at the tile's end: a 1080p frame (66 MB) is
+// far larger than the caches, an ordinary store first reads the line it
+// writes, and streamed stores made one at a time while shading held the
+// buffers that texture reads wait for (docs/performance.md: Streaming stores).
+void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eigen::Vector3f* normal, bool streaming,
+                Frame& frame) {
+    auto stream = [](float* to, float value) {
+        std::int32_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        _mm_stream_si32(reinterpret_cast<int*>(to), bits);
+    };
+    static_assert(alignof(Eigen::Vector4f) == 16);  // each colour one aligned 16-byte store
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const int k = (y - tile.y0) * tile.stride + (x - tile.x0);
+            if (tile.id[k] == no_triangle) continue;
+            const std::size_t pixel = std::size_t(y) * frame.width + x;
+            if (!streaming) {
+                frame.color[pixel] = Eigen::Vector4f(color[k].x(), color[k].y(), color[k].z(), 1);
+                frame.depth[pixel] = tile.depth[k];
+                frame.normal[pixel] = normal[k];
+                continue;
+            }
+            _mm_stream_ps(frame.color[pixel].data(), _mm_setr_ps(color[k].x(), color[k].y(), color[k].z(), 1.0f));
+            stream(&frame.depth[pixel], tile.depth[k]);
+            for (int i = 0; i < 3; ++i) stream(frame.normal[pixel].data() + i, normal[k][i]);
+        }
+    _mm_sfence();  // streamed stores are weakly ordered: done before another thread reads the frame
+}
+
 void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
     int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
     int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
@@ -569,11 +602,10 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
         if (c.settings.wireframe && edge_distance(setup, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
         return shaded;
     };
+    Eigen::Vector3f shaded_color[tile_size * tile_size], shaded_normal[tile_size * tile_size];
     auto write = [&](int x, int y, const Eigen::Vector3f& color, const Eigen::Vector3f& normal) {
-        std::size_t pixel = std::size_t(y) * frame.width + x;
-        frame.color[pixel] = Eigen::Vector4f(color.x(), color.y(), color.z(), 1);
-        frame.depth[pixel] = depth[(y - y0) * tile_size + (x - x0)];
-        frame.normal[pixel] = normal;
+        const int k = (y - y0) * tile_size + (x - x0);
+        shaded_color[k] = color, shaded_normal[k] = normal;
     };
     if (!c.shader.takes_lanes()) {
         std::uint32_t setup_id = no_triangle;
@@ -638,6 +670,7 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
             if (count > 0) shade_lanes();
         }
     }
+    write_tile(target, shaded_color, shaded_normal, blended.empty(), frame);
     if (!blended.empty()) composite_blended(c, blended, target, frame, shade);
 }
 
