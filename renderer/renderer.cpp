@@ -530,21 +530,28 @@ void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eige
         _mm_stream_si32(reinterpret_cast<int*>(to), bits);
     };
     static_assert(alignof(Eigen::Vector4f) == 16);  // each colour one aligned 16-byte store
-    for (int y = tile.y0; y < tile.y1; ++y)
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            const int k = (y - tile.y0) * tile.stride + (x - tile.x0);
+    const int width = tile.x1 - tile.x0;
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        // Row pointers, so the stores cannot make the compiler reload them.
+        const std::size_t first = std::size_t(y) * frame.width + tile.x0;
+        Eigen::Vector4f* const color_row = frame.color.data() + first;
+        float* const depth_row = frame.depth.data() + first;
+        Eigen::Vector3f* const normal_row = frame.normal.data() + first;
+        const int row = (y - tile.y0) * tile.stride;
+        for (int x = 0; x < width; ++x) {
+            const int k = row + x;
             if (tile.id[k] == no_triangle) continue;
-            const std::size_t pixel = std::size_t(y) * frame.width + x;
             if (!streaming) {
-                frame.color[pixel] = Eigen::Vector4f(color[k].x(), color[k].y(), color[k].z(), 1);
-                frame.depth[pixel] = tile.depth[k];
-                frame.normal[pixel] = normal[k];
+                color_row[x] = Eigen::Vector4f(color[k].x(), color[k].y(), color[k].z(), 1);
+                depth_row[x] = tile.depth[k];
+                normal_row[x] = normal[k];
                 continue;
             }
-            _mm_stream_ps(frame.color[pixel].data(), _mm_setr_ps(color[k].x(), color[k].y(), color[k].z(), 1.0f));
-            stream(&frame.depth[pixel], tile.depth[k]);
-            for (int i = 0; i < 3; ++i) stream(frame.normal[pixel].data() + i, normal[k][i]);
+            _mm_stream_ps(color_row[x].data(), _mm_setr_ps(color[k].x(), color[k].y(), color[k].z(), 1.0f));
+            stream(depth_row + x, tile.depth[k]);
+            for (int i = 0; i < 3; ++i) stream(normal_row[x].data() + i, normal[k][i]);
         }
+    }
     _mm_sfence();  // streamed stores are weakly ordered: done before another thread reads the frame
 }
 
