@@ -66,8 +66,9 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 }
 
 // Appends the triangle of three snapped corners unless it has no area or faces the culled way.
-bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c, std::uint32_t batch,
-                     std::uint32_t triangle, Culling culling, std::vector<ScreenTriangle>& out) {
+[[gnu::always_inline]] inline bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
+                                                   std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                                                   std::vector<ScreenTriangle>& out) {
     std::int64_t area = edge(a.x, a.y, b.x, b.y, c.x, c.y);  // doubled_area of the triangle to be
     if (area == 0) return false;
     // Counter-clockwise in NDC (y up) is negative area in window space (y down).
@@ -85,28 +86,10 @@ bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const P
     return true;
 }
 
-}  // namespace
-
-ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport) {
-    ProjectedVertex v;
-    v.clip = clip;
-    for (int plane = 0; plane < 6; ++plane)
-        if (!(plane_distance(clip, plane) >= 0)) v.outcode |= 1 << plane;  // NaN counts as outside
-    if (v.outcode == 0) snap(clip, viewport, v);
-    return v;
-}
-
-void setup_triangle(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
-                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
-    const int outside_all = corner[0]->outcode & corner[1]->outcode & corner[2]->outcode;
-    const int outside_any = corner[0]->outcode | corner[1]->outcode | corner[2]->outcode;
-    if (outside_all) return;
-    // Inside every plane (nearly every triangle): the corners as the vertex stage snapped them.
-    if (!outside_any) {
-        append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
-        return;
-    }
-
+// The few triangles that cross a plane of the view volume.
+[[gnu::noinline]] void clip_and_append(const ProjectedVertex* corner[3], int outside_any, std::uint32_t batch,
+                                       std::uint32_t triangle, Culling culling, const Viewport& viewport,
+                                       std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
     ClipVertex buffers[2][max_polygon];
     ClipVertex* polygon = buffers[0];
     int count = 3;
@@ -127,12 +110,45 @@ void setup_triangle(const ProjectedVertex* corner[3], std::uint32_t batch, std::
     }
 }
 
+// One triangle of setup_triangles, inlined into its loop.
+[[gnu::always_inline]] inline void set_up(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle,
+                                          Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                                          std::vector<ClippedWeights>& weights) {
+    const int outside_all = corner[0]->outcode & corner[1]->outcode & corner[2]->outcode;
+    const int outside_any = corner[0]->outcode | corner[1]->outcode | corner[2]->outcode;
+    if (outside_all) return;
+    // Inside every plane (nearly every triangle): the corners as the vertex stage snapped them.
+    if (!outside_any) append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
+    else clip_and_append(corner, outside_any, batch, triangle, culling, viewport, out, weights);
+}
+
+}  // namespace
+
+ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport) {
+    ProjectedVertex v;
+    v.clip = clip;
+    for (int plane = 0; plane < 6; ++plane)
+        if (!(plane_distance(clip, plane) >= 0)) v.outcode |= 1 << plane;  // NaN counts as outside
+    if (v.outcode == 0) snap(clip, viewport, v);
+    return v;
+}
+
+void setup_triangles(const std::uint32_t* indices, std::size_t begin, std::size_t end, const ProjectedVertex* vertices,
+                     std::uint32_t batch, Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                     std::vector<ClippedWeights>& weights) {
+    for (std::size_t t = begin; t < end; ++t) {
+        const std::uint32_t* v = indices + t * 3;
+        const ProjectedVertex* corners[3] = {&vertices[v[0]], &vertices[v[1]], &vertices[v[2]]};
+        set_up(corners, batch, std::uint32_t(t), culling, viewport, out, weights);
+    }
+}
+
 void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
     const ProjectedVertex projected[3] = {project_vertex(clip[0], viewport), project_vertex(clip[1], viewport),
                                           project_vertex(clip[2], viewport)};
     const ProjectedVertex* corners[3] = {&projected[0], &projected[1], &projected[2]};
-    setup_triangle(corners, batch, triangle, culling, viewport, out, weights);
+    set_up(corners, batch, triangle, culling, viewport, out, weights);
 }
 
 namespace {
@@ -175,18 +191,6 @@ Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double
 Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
                                     double py) {
     return source_barycentrics(barycentric_setup(t, weights), px, py);
-}
-
-bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1) {
-    const std::int32_t half = 1 << (subpixel_bits - 1);
-    std::int32_t min_x = std::min({t.x[0], t.x[1], t.x[2]}), max_x = std::max({t.x[0], t.x[1], t.x[2]});
-    std::int32_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
-    // Pixel x is a candidate when its centre x * 256 + 128 lies in [min_x, max_x].
-    x0 = std::max({(min_x - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_x0});
-    y0 = std::max({(min_y - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_y0});
-    x1 = std::min({(max_x - half) >> subpixel_bits, viewport.width - 1, viewport.scissor_x1 - 1});
-    y1 = std::min({(max_y - half) >> subpixel_bits, viewport.height - 1, viewport.scissor_y1 - 1});
-    return x0 <= x1 && y0 <= y1;
 }
 
 namespace {

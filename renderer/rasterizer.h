@@ -4,6 +4,7 @@
 // pixel); shading happens afterwards, once per visible pixel.
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -45,11 +46,15 @@ struct ProjectedVertex {
 };
 ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport);
 
-// Clips one triangle against the view volume (near and far exactly, x and y
-// against a guard band) and appends the snapped pieces. Triangles facing away
-// are dropped when culled; the stored corners keep their order.
-void setup_triangle(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
-                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
+// Clips triangles [begin, end) of a mesh (three indices each, its vertices
+// as the vertex stage projected them) against the view volume (near and far
+// exactly, x and y against a guard band) and appends the snapped pieces, in
+// order. Triangles facing away are dropped when culled; the stored corners
+// keep their order.
+void setup_triangles(const std::uint32_t* indices, std::size_t begin, std::size_t end, const ProjectedVertex* vertices,
+                     std::uint32_t batch, Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                     std::vector<ClippedWeights>& weights);
+// The same for one triangle given in clip space, as triangle `triangle` of batch `batch`.
 void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
 
@@ -92,7 +97,18 @@ void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTar
 using PixelVisit = std::function<void(int x, int y, float depth)>;
 void visit_triangle(const ScreenTriangle& t, const TileTarget& tile, const PixelVisit& visit);
 
-// Pixel bounding box of a screen triangle, inclusive, clamped to the viewport and scissor.
-bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1);
+// Pixel bounding box of a screen triangle, inclusive, clamped to the viewport
+// and scissor. (Inline: binning calls it for every triangle.)
+inline bool triangle_pixel_bounds(const ScreenTriangle& t, const Viewport& viewport, int& x0, int& y0, int& x1, int& y1) {
+    const std::int32_t half = 1 << (subpixel_bits - 1);
+    std::int32_t min_x = std::min({t.x[0], t.x[1], t.x[2]}), max_x = std::max({t.x[0], t.x[1], t.x[2]});
+    std::int32_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
+    // Pixel x is a candidate when its centre x * 256 + 128 lies in [min_x, max_x].
+    x0 = std::max({(min_x - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_x0});
+    y0 = std::max({(min_y - half + (1 << subpixel_bits) - 1) >> subpixel_bits, 0, viewport.scissor_y0});
+    x1 = std::min({(max_x - half) >> subpixel_bits, viewport.width - 1, viewport.scissor_x1 - 1});
+    y1 = std::min({(max_y - half) >> subpixel_bits, viewport.height - 1, viewport.scissor_y1 - 1});
+    return x0 <= x1 && y0 <= y1;
+}
 
 }  // namespace boxlod

@@ -75,9 +75,14 @@ Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
 
 namespace {
 
-constexpr int tile_size = 64;
+constexpr int tile_bits = 6, tile_size = 1 << tile_bits;
 constexpr std::size_t triangles_per_chunk = 1 << 15;
 constexpr int chunk_index_bits = 19;  // a chunk of 2^15 triangles clips into at most 7 * 2^15 < 2^19 pieces
+
+// Columns x0..x1 and rows y0..y1 of tiles, inclusive.
+struct TileRange {
+    int x0, y0, x1, y1;
+};
 
 // Screen triangles of one chunk of the input, binned to tiles (CSR layout).
 struct Chunk {
@@ -85,7 +90,8 @@ struct Chunk {
     std::vector<ClippedWeights> weights;
     std::vector<std::uint32_t> bin_start;  // per tile, into bin_items; size tiles + 1
     std::vector<std::uint32_t> bin_items;  // triangle indices within this chunk, in submission order
-    std::vector<int> bounds;               // scratch: pixel bounds per triangle while binning
+    std::vector<TileRange> tiles_of;         // scratch while binning: the tiles of each triangle
+    std::vector<std::uint32_t> tile_counts;  // and the triangles of each tile
 };
 
 struct Tiling {
@@ -455,31 +461,47 @@ float edge_distance(const TriangleSetup& s, int x, int y) {
     return nearest;
 }
 
-// Sorts a chunk's set-up triangles into the tiles they touch: count per tile,
-// then fill, so each tile's bin keeps submission order.
-void bin_chunk(Chunk& chunk, const Tiling& tiling, const Viewport& viewport) {
-    std::vector<int>& bounds = chunk.bounds;
-    bounds.resize(chunk.triangles.size() * 4);
-    std::vector<std::uint32_t> counts(tiling.count() + 1, 0);
-    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-        int* b = &bounds[i * 4];
-        if (!triangle_pixel_bounds(chunk.triangles[i], viewport, b[0], b[1], b[2], b[3])) {
-            b[0] = 1, b[2] = 0;  // empty
+// The tiles each of the chunk's triangles from `first` on touches (a range
+// of columns and rows; empty when it has no pixel), and how many triangles
+// each tile gets: run on each block of triangles right after its set-up,
+// while they are in cache.
+void count_tiles(Chunk& chunk, std::size_t first, const Tiling& tiling, const Viewport& viewport) {
+    const std::size_t end = chunk.triangles.size();
+    chunk.tiles_of.resize(end);
+    // Locals: stores through them cannot make the compiler reload the vectors.
+    const ScreenTriangle* const triangles = chunk.triangles.data();
+    TileRange* const tiles_of = chunk.tiles_of.data();
+    std::uint32_t* const counts = chunk.tile_counts.data();
+    for (std::size_t i = first; i < end; ++i) {
+        int x0, y0, x1, y1;
+        TileRange& tiles = tiles_of[i];
+        if (!triangle_pixel_bounds(triangles[i], viewport, x0, y0, x1, y1)) {
+            tiles = {1, 0, 0, 0};
             continue;
         }
-        for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
-            for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx) ++counts[ty * tiling.columns + tx];
+        // Bounds are >= 0: a shift divides.
+        tiles = {x0 >> tile_bits, y0 >> tile_bits, x1 >> tile_bits, y1 >> tile_bits};
+        for (int row = tiles.y0; row <= tiles.y1; ++row)
+            for (int column = tiles.x0; column <= tiles.x1; ++column) ++counts[row * tiling.columns + column];
     }
+}
+
+// Sorts the chunk's triangles into the tiles they touch, as counted by
+// count_tiles, so that each tile's bin keeps submission order.
+void fill_bins(Chunk& chunk, const Tiling& tiling) {
     chunk.bin_start.assign(tiling.count() + 1, 0);
-    for (int tile = 0; tile < tiling.count(); ++tile) chunk.bin_start[tile + 1] = chunk.bin_start[tile] + counts[tile];
+    for (int tile = 0; tile < tiling.count(); ++tile)
+        chunk.bin_start[tile + 1] = chunk.bin_start[tile] + chunk.tile_counts[tile];
     chunk.bin_items.resize(chunk.bin_start.back());
-    std::vector<std::uint32_t> fill(chunk.bin_start.begin(), chunk.bin_start.end() - 1);
-    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-        const int* b = &bounds[i * 4];
-        if (b[0] > b[2]) continue;
-        for (int ty = b[1] / tile_size; ty <= b[3] / tile_size; ++ty)
-            for (int tx = b[0] / tile_size; tx <= b[2] / tile_size; ++tx)
-                chunk.bin_items[fill[ty * tiling.columns + tx]++] = std::uint32_t(i);
+    std::uint32_t* const next = chunk.tile_counts.data();  // from now on each bin's next slot
+    std::copy(chunk.bin_start.begin(), chunk.bin_start.end() - 1, next);
+    std::uint32_t* const items = chunk.bin_items.data();
+    const TileRange* const tiles_of = chunk.tiles_of.data();
+    for (std::size_t i = 0; i < chunk.tiles_of.size(); ++i) {
+        const TileRange tiles = tiles_of[i];
+        for (int row = tiles.y0; row <= tiles.y1; ++row)
+            for (int column = tiles.x0; column <= tiles.x1; ++column)
+                items[next[row * tiling.columns + column]++] = std::uint32_t(i);
     }
 }
 
@@ -734,14 +756,16 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const Range& range = triangle_ranges[r];
         Chunk& chunk = chunks[r];
         const Mesh& mesh = *batches[range.batch].mesh;
-        const std::vector<ProjectedVertex>& vertices = projected[range.batch];
-        for (std::size_t t = range.begin; t < range.end; ++t) {
-            const std::uint32_t* v = &mesh.indices[t * 3];
-            const ProjectedVertex* corners[3] = {&vertices[v[0]], &vertices[v[1]], &vertices[v[2]]};
-            setup_triangle(corners, std::uint32_t(range.batch), std::uint32_t(t), settings.culling, viewport,
-                           chunk.triangles, chunk.weights);
+        chunk.tile_counts.assign(std::size_t(tiling.count()), 0);
+        // In blocks, each binned while its screen triangles are still in cache.
+        constexpr std::size_t block = 1024;
+        for (std::size_t begin = range.begin; begin < range.end; begin += block) {
+            const std::size_t first = chunk.triangles.size();
+            setup_triangles(mesh.indices.data(), begin, std::min(range.end, begin + block), projected[range.batch].data(),
+                            std::uint32_t(range.batch), settings.culling, viewport, chunk.triangles, chunk.weights);
+            count_tiles(chunk, first, tiling, viewport);
         }
-        bin_chunk(chunk, tiling, viewport);
+        fill_bins(chunk, tiling);
     });
 
     // Tiles: each owned by one thread; triangles replayed in submission order.

@@ -7,6 +7,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using namespace boxlod;
@@ -259,6 +260,35 @@ TEST(Rasterizer, BackFacesAreCulledOnRequest) {
     EXPECT_EQ(out.size(), 2u);
     setup_triangle(cw, 0, 0, Culling::none, viewport(32, 32), out, weights);
     EXPECT_EQ(out.size(), 3u);
+}
+
+TEST(Rasterizer, SettingUpAMeshRangeIsSettingUpEachTriangleInOrder) {
+    // Triangles 1..4 of a mesh: in view, back-facing, crossing the far plane,
+    // without area; triangle 0 lies outside the range.
+    const std::vector<Eigen::Vector4f> clip = {{-0.5f, -0.5f, 0, 1}, {0.5f, -0.5f, 0, 1}, {0, 0.5f, 0, 1},
+                                               {0.2f, 0.1f, 2, 1},   {0, 0, 0.5f, 1}};
+    const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 1, 2, 0, 2, 1, 0, 1, 3, 0, 0, 4};
+    const Viewport view = viewport(32, 32);
+    std::vector<ProjectedVertex> projected;
+    for (const Eigen::Vector4f& c : clip) projected.push_back(project_vertex(c, view));
+    std::vector<ScreenTriangle> range, each;
+    std::vector<ClippedWeights> range_weights, each_weights;
+    setup_triangles(indices.data(), 1, 5, projected.data(), 3, Culling::back, view, range, range_weights);
+    for (std::uint32_t t = 1; t < 5; ++t) {
+        const Eigen::Vector4f corners[3] = {clip[indices[t * 3]], clip[indices[t * 3 + 1]], clip[indices[t * 3 + 2]]};
+        setup_triangle(corners, 3, t, Culling::back, view, each, each_weights);
+    }
+    ASSERT_EQ(range.size(), each.size());
+    ASSERT_GE(range.size(), 2u);  // triangle 1 and the pieces of triangle 3
+    EXPECT_EQ(range.front().triangle, 1u);
+    EXPECT_EQ(range.back().triangle, 3u);
+    ASSERT_EQ(range_weights.size(), each_weights.size());
+    for (std::size_t i = 0; i < range.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&range[i], &each[i], sizeof(ScreenTriangle)), 0) << "triangle " << i;
+        EXPECT_EQ(range[i].batch, 3u);
+    }
+    for (std::size_t i = 0; i < range_weights.size(); ++i)
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(range_weights[i].weights[k], each_weights[i].weights[k]);
 }
 
 TEST(Rasterizer, InterpolationIsPerspectiveCorrect) {
