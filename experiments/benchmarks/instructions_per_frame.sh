@@ -19,7 +19,9 @@ for scene in "FZK-Haus:boxlod_model/0/1/" "manual:boxlod_model/1/1/" "1M-triangl
     total=$(valgrind --tool=callgrind --callgrind-out-file="$out" --toggle-collect='boxlod::render(*' \
             "$benchmark" --benchmark_filter="$filter" --benchmark_min_time=0 2>&1 | awk '/Collected/ {print $4}')
     # callgrind names a function once, then refers to it by its number.
-    id=$(grep -o '^c\?fn=([0-9]*) boxlod::(anonymous namespace)::render_tile(' "$out" | head -1 | grep -o '([0-9]*)')
+    # (Its lambdas, when not inlined, are named after it: left out.)
+    id=$(grep '^c\?fn=([0-9]*) boxlod::(anonymous namespace)::render_tile(' "$out" | grep -v '::{lambda' | head -1 |
+         grep -o '^c\?fn=([0-9]*)' | grep -o '([0-9]*)')
     tiles=$(grep -A1 "^cfn=$id" "$out" | awk -F'[= ]' '/^calls=/ {s += $2} END {print s}')
     frames=$((tiles / 510))
     awk -v name="$name" -v frames="$frames" -v total="$total" \
