@@ -87,13 +87,13 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 }
 
 // The few triangles that cross a plane of the view volume.
-[[gnu::noinline]] void clip_and_append(const ProjectedVertex* corner[3], int outside_any, std::uint32_t batch,
+[[gnu::noinline]] void clip_and_append(const Eigen::Vector4f clip[3], int outside_any, std::uint32_t batch,
                                        std::uint32_t triangle, Culling culling, const Viewport& viewport,
                                        std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
     ClipVertex buffers[2][max_polygon];
     ClipVertex* polygon = buffers[0];
     int count = 3;
-    for (int i = 0; i < 3; ++i) polygon[i] = {corner[i]->clip, Eigen::Vector3f::Unit(i)};
+    for (int i = 0; i < 3; ++i) polygon[i] = {clip[i], Eigen::Vector3f::Unit(i)};
     for (int plane = 0; plane < 6 && count >= 3; ++plane) {
         if (!(outside_any & (1 << plane))) continue;
         ClipVertex* next = polygon == buffers[0] ? buffers[1] : buffers[0];
@@ -110,36 +110,47 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     }
 }
 
-// One triangle of setup_triangles, inlined into its loop.
-[[gnu::always_inline]] inline void set_up(const ProjectedVertex* corner[3], std::uint32_t batch, std::uint32_t triangle,
-                                          Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
-                                          std::vector<ClippedWeights>& weights) {
+// One triangle of setup_triangles, inlined into its loop; `clip_of` gives
+// the corners' clip-space positions when the triangle must be clipped.
+template <typename ClipOf>
+[[gnu::always_inline]] inline void set_up(const ProjectedVertex* corner[3], const ClipOf& clip_of, std::uint32_t batch,
+                                          std::uint32_t triangle, Culling culling, const Viewport& viewport,
+                                          std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
     const int outside_all = corner[0]->outcode & corner[1]->outcode & corner[2]->outcode;
     const int outside_any = corner[0]->outcode | corner[1]->outcode | corner[2]->outcode;
     if (outside_all) return;
     // Inside every plane (nearly every triangle): the corners as the vertex stage snapped them.
-    if (!outside_any) append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
-    else clip_and_append(corner, outside_any, batch, triangle, culling, viewport, out, weights);
+    if (!outside_any) {
+        append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
+        return;
+    }
+    Eigen::Vector4f clip[3];
+    clip_of(clip);
+    clip_and_append(clip, outside_any, batch, triangle, culling, viewport, out, weights);
 }
 
 }  // namespace
 
 ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport) {
     ProjectedVertex v;
-    v.clip = clip;
     for (int plane = 0; plane < 6; ++plane)
         if (!(plane_distance(clip, plane) >= 0)) v.outcode |= 1 << plane;  // NaN counts as outside
     if (v.outcode == 0) snap(clip, viewport, v);
     return v;
 }
 
-void setup_triangles(const std::uint32_t* indices, std::size_t begin, std::size_t end, const ProjectedVertex* vertices,
-                     std::uint32_t batch, Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
-                     std::vector<ClippedWeights>& weights) {
+void setup_triangles(const ProjectedMesh& mesh, std::size_t begin, std::size_t end, std::uint32_t batch, Culling culling,
+                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+    // Locals: stores to `out` cannot make the compiler reload them.
+    const std::uint32_t* const indices = mesh.indices;
+    const ProjectedVertex* const vertices = mesh.vertices;
     for (std::size_t t = begin; t < end; ++t) {
         const std::uint32_t* v = indices + t * 3;
         const ProjectedVertex* corners[3] = {&vertices[v[0]], &vertices[v[1]], &vertices[v[2]]};
-        set_up(corners, batch, std::uint32_t(t), culling, viewport, out, weights);
+        auto clip_of = [&](Eigen::Vector4f clip[3]) {
+            for (int k = 0; k < 3; ++k) clip[k] = clip_position(*mesh.to_clip, mesh.positions[v[k]]);
+        };
+        set_up(corners, clip_of, batch, std::uint32_t(t), culling, viewport, out, weights);
     }
 }
 
@@ -148,7 +159,8 @@ void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uin
     const ProjectedVertex projected[3] = {project_vertex(clip[0], viewport), project_vertex(clip[1], viewport),
                                           project_vertex(clip[2], viewport)};
     const ProjectedVertex* corners[3] = {&projected[0], &projected[1], &projected[2]};
-    set_up(corners, batch, triangle, culling, viewport, out, weights);
+    auto clip_of = [&](Eigen::Vector4f out_clip[3]) { std::copy(clip, clip + 3, out_clip); };
+    set_up(corners, clip_of, batch, triangle, culling, viewport, out, weights);
 }
 
 namespace {

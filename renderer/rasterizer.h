@@ -35,25 +35,37 @@ struct Viewport {
 
 enum class Culling { none, back, front };
 
-// A vertex after the vertex stage: its clip-space position, the planes of the
-// view volume it lies outside of, and (inside all of them) its snapped window
-// position, so that triangles sharing it do not snap it again.
+// A vertex after the vertex stage: the planes of the view volume its clip-space
+// position lies outside of and (inside all of them) its snapped window
+// position, so that triangles sharing it do not snap it again. The clip-space
+// position itself is not kept: set-up needs it only for the few triangles it
+// clips, and recomputes it (16 bytes a vertex less to write and to read).
 struct ProjectedVertex {
-    Eigen::Vector4f clip;
-    int outcode = 0;          // bit per plane: near, far, then x and y against the guard band; NaN is outside
+    int outcode = 0;            // bit per plane: near, far, then x and y against the guard band; NaN is outside
     std::int32_t x = 0, y = 0;  // snapped window coordinates, as in ScreenTriangle
     float z = 0, inv_w = 0;
 };
 ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& viewport);
+// The clip-space position of an object-space one: the vertex stage's and the
+// clipper's, the very same floats.
+inline Eigen::Vector4f clip_position(const Eigen::Matrix4f& to_clip, const Eigen::Vector3f& position) {
+    return to_clip.col(0) * position.x() + to_clip.col(1) * position.y() + to_clip.col(2) * position.z() + to_clip.col(3);
+}
 
-// Clips triangles [begin, end) of a mesh (three indices each, its vertices
-// as the vertex stage projected them) against the view volume (near and far
-// exactly, x and y against a guard band) and appends the snapped pieces, in
-// order. Triangles facing away are dropped when culled; the stored corners
+// A mesh as the vertex stage left it.
+struct ProjectedMesh {
+    const std::uint32_t* indices = nullptr;         // three per triangle
+    const ProjectedVertex* vertices = nullptr;      // project_vertex of each clip_position
+    const Eigen::Vector3f* positions = nullptr;     // in object space
+    const Eigen::Matrix4f* to_clip = nullptr;
+};
+
+// Clips triangles [begin, end) of a mesh against the view volume (near and
+// far exactly, x and y against a guard band) and appends the snapped pieces,
+// in order. Triangles facing away are dropped when culled; the stored corners
 // keep their order.
-void setup_triangles(const std::uint32_t* indices, std::size_t begin, std::size_t end, const ProjectedVertex* vertices,
-                     std::uint32_t batch, Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
-                     std::vector<ClippedWeights>& weights);
+void setup_triangles(const ProjectedMesh& mesh, std::size_t begin, std::size_t end, std::uint32_t batch, Culling culling,
+                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);
 // The same for one triangle given in clip space, as triangle `triangle` of batch `batch`.
 void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights);

@@ -742,7 +742,7 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const Range& range = vertex_ranges[r];
         const auto& positions = batches[range.batch].mesh->positions;
         for (std::size_t i = range.begin; i < range.end; ++i)
-            projected[range.batch][i] = project_vertex(view_projection * positions[i].homogeneous(), viewport);
+            projected[range.batch][i] = project_vertex(clip_position(view_projection, positions[i]), viewport);
     });
 
     // Set-up and binning, in parallel over chunks of triangles.
@@ -756,13 +756,15 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const Range& range = triangle_ranges[r];
         Chunk& chunk = chunks[r];
         const Mesh& mesh = *batches[range.batch].mesh;
+        const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(), mesh.positions.data(),
+                                           &view_projection};
         chunk.tile_counts.assign(std::size_t(tiling.count()), 0);
         // In blocks, each binned while its screen triangles are still in cache.
         constexpr std::size_t block = 1024;
         for (std::size_t begin = range.begin; begin < range.end; begin += block) {
             const std::size_t first = chunk.triangles.size();
-            setup_triangles(mesh.indices.data(), begin, std::min(range.end, begin + block), projected[range.batch].data(),
-                            std::uint32_t(range.batch), settings.culling, viewport, chunk.triangles, chunk.weights);
+            setup_triangles(projected_mesh, begin, std::min(range.end, begin + block), std::uint32_t(range.batch),
+                            settings.culling, viewport, chunk.triangles, chunk.weights);
             count_tiles(chunk, first, tiling, viewport);
         }
         fill_bins(chunk, tiling);

@@ -265,15 +265,24 @@ TEST(Rasterizer, BackFacesAreCulledOnRequest) {
 TEST(Rasterizer, SettingUpAMeshRangeIsSettingUpEachTriangleInOrder) {
     // Triangles 1..4 of a mesh: in view, back-facing, crossing the far plane,
     // without area; triangle 0 lies outside the range.
-    const std::vector<Eigen::Vector4f> clip = {{-0.5f, -0.5f, 0, 1}, {0.5f, -0.5f, 0, 1}, {0, 0.5f, 0, 1},
-                                               {0.2f, 0.1f, 2, 1},   {0, 0, 0.5f, 1}};
+    // Clip space is the positions moved back and squeezed along z (w stays 1).
+    const std::vector<Eigen::Vector3f> positions = {{-0.5f, -0.5f, 1}, {0.5f, -0.5f, 1}, {0, 0.5f, 1},
+                                                    {0.2f, 0.1f, 5}, {0, 0, 2}};
+    Eigen::Matrix4f to_clip = Eigen::Matrix4f::Identity();
+    to_clip(2, 2) = 0.5f, to_clip(2, 3) = -0.5f;
     const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 1, 2, 0, 2, 1, 0, 1, 3, 0, 0, 4};
     const Viewport view = viewport(32, 32);
+    std::vector<Eigen::Vector4f> clip;
     std::vector<ProjectedVertex> projected;
-    for (const Eigen::Vector4f& c : clip) projected.push_back(project_vertex(c, view));
+    for (const Eigen::Vector3f& p : positions) {
+        clip.push_back(clip_position(to_clip, p));
+        projected.push_back(project_vertex(clip.back(), view));
+    }
+    EXPECT_EQ(clip[3], Eigen::Vector4f(0.2f, 0.1f, 2, 1));  // beyond the far plane
     std::vector<ScreenTriangle> range, each;
     std::vector<ClippedWeights> range_weights, each_weights;
-    setup_triangles(indices.data(), 1, 5, projected.data(), 3, Culling::back, view, range, range_weights);
+    const ProjectedMesh mesh{indices.data(), projected.data(), positions.data(), &to_clip};
+    setup_triangles(mesh, 1, 5, 3, Culling::back, view, range, range_weights);
     for (std::uint32_t t = 1; t < 5; ++t) {
         const Eigen::Vector4f corners[3] = {clip[indices[t * 3]], clip[indices[t * 3 + 1]], clip[indices[t * 3 + 2]]};
         setup_triangle(corners, 3, t, Culling::back, view, each, each_weights);
