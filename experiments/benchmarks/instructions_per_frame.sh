@@ -4,6 +4,8 @@
 # Unlike the clock of a shared machine, the count repeats exactly, so it
 # separates a change of a few per cent. Frames are counted as render_tile
 # calls / 510 (30 x 17 tiles of 64 pixels): Google Benchmark picks the number.
+# A scene counted over one frame (the 1M-triangle frame) is counted over its
+# first, which also clears the renderer's scratch vectors as they grow.
 # Usage: instructions_per_frame.sh [BUILD]   (default build; needs valgrind)
 set -euo pipefail
 build=${1:-build}
