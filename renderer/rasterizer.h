@@ -39,7 +39,7 @@ enum class Culling { none, back, front };
 // position lies outside of and (inside all of them) its snapped window
 // position, so that triangles sharing it do not snap it again. The clip-space
 // position itself is not kept: set-up needs it only for the few triangles it
-// clips, and recomputes it (16 bytes a vertex less to write and to read).
+// clips, and recomputes it (20 bytes a vertex to write and to read, not 48).
 struct ProjectedVertex {
     int outcode = 0;            // bit per plane: near, far, then x and y against the guard band; NaN is outside
     std::int32_t x = 0, y = 0;  // snapped window coordinates, as in ScreenTriangle
