@@ -207,23 +207,51 @@ Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<C
 
 namespace {
 
-// A triangle's edge functions over its pixel bounds in one tile. Edge k runs
+// The pixels of one tile whose centres lie in a triangle's bounding box.
+struct PixelBox {
+    std::int64_t width, height;  // of the bounding box, in subpixels
+    int x0, y0, x1, y1;          // the pixels to walk, inclusive
+    bool cut_by_tile;            // x0 or x1 is the tile's, inside the triangle's own bounds
+};
+
+// False when the box holds no pixel centre of the tile.
+[[gnu::always_inline]] inline bool pixel_box(const ScreenTriangle& t, const TileTarget& tile, PixelBox& b) {
+    const std::int64_t min_x = std::min({t.x[0], t.x[1], t.x[2]}), max_x = std::max({t.x[0], t.x[1], t.x[2]});
+    const std::int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
+    const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
+    const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits), own_x1 = int((max_x - half) >> subpixel_bits);
+    b.width = max_x - min_x, b.height = max_y - min_y;
+    b.x0 = std::max(own_x0, tile.x0);
+    b.y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
+    b.x1 = std::min(own_x1, tile.x1 - 1);
+    b.cut_by_tile = b.x0 != own_x0 || b.x1 != own_x1;
+    b.y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
+    return b.x0 <= b.x1 && b.y0 <= b.y1;
+}
+
+// A triangle's edge functions over its pixel box in one tile. Edge k runs
 // from corner k+1 to corner k+2 (opposite corner k) of the triangle oriented
 // to positive area; a pixel is inside when every E_k - bias_k >= 0, bias 0 on
 // top and left edges and 1 elsewhere (the top-left fill rule).
 struct EdgeSetup {
     int x0, y0, x1, y1;       // the pixels to walk, inclusive
-    bool cut_by_tile;         // x0 or x1 is the tile's, inside the triangle's own bounds
+    bool cut_by_tile;         // as in PixelBox
     std::int64_t row[3];      // E_k - bias_k at the centre of (x0, y0)
     std::int64_t step_x[3], step_y[3], bias[3];
     std::int64_t area;        // doubled, positive
     double z[3], inv_area;    // corner depths and 1 / area
 };
 
-// Depth straight from the exact edge values: the same at a pixel however the
-// screen is split. The four-lane walk repeats this expression term for term.
+// Depth from the exact edge values E_k (bias added back), w_k as doubles:
+// the same at a pixel however the screen is split, and the one expression of
+// every walk, a pixel or four at a time (T double or DoubleLanes).
+template <typename T>
+T depth_from(const double z[3], double inv_area, const T& w0, const T& w1, const T& w2) {
+    return (w0 * z[0] + w1 * z[1] + w2 * z[2]) * inv_area;
+}
+
 double depth_of(const EdgeSetup& s, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-    return (double(e0 + s.bias[0]) * s.z[0] + double(e1 + s.bias[1]) * s.z[1] + double(e2 + s.bias[2]) * s.z[2]) * s.inv_area;
+    return depth_from(s.z, s.inv_area, double(e0 + s.bias[0]), double(e1 + s.bias[1]), double(e2 + s.bias[2]));
 }
 
 void floor_divide(std::int64_t a, std::int64_t b, std::int64_t& quotient, std::int64_t& remainder) {
@@ -232,22 +260,13 @@ void floor_divide(std::int64_t a, std::int64_t b, std::int64_t& quotient, std::i
     remainder = a - quotient * b;
 }
 
-// False when `t` has no pixel in the tile.
-bool edge_setup(const ScreenTriangle& t, const TileTarget& tile, EdgeSetup& s) {
+void edge_setup(const ScreenTriangle& t, const PixelBox& box, EdgeSetup& s) {
     std::int64_t area = doubled_area(t);
     int o[3] = {0, 1, 2};  // corner i here is corner o[i] of the stored triangle
     if (area < 0) std::swap(o[1], o[2]), area = -area;
     const std::int64_t X[3] = {t.x[o[0]], t.x[o[1]], t.x[o[2]]}, Y[3] = {t.y[o[0]], t.y[o[1]], t.y[o[2]]};
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
-    const std::int64_t min_x = std::min({X[0], X[1], X[2]}), max_x = std::max({X[0], X[1], X[2]});
-    const std::int64_t min_y = std::min({Y[0], Y[1], Y[2]}), max_y = std::max({Y[0], Y[1], Y[2]});
-    const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits), own_x1 = int((max_x - half) >> subpixel_bits);
-    s.x0 = std::max(own_x0, tile.x0);
-    s.y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
-    s.x1 = std::min(own_x1, tile.x1 - 1);
-    s.cut_by_tile = s.x0 != own_x0 || s.x1 != own_x1;
-    s.y1 = std::min<int>(int((max_y - half) >> subpixel_bits), tile.y1 - 1);
-    if (s.x0 > s.x1 || s.y0 > s.y1) return false;
+    s.x0 = box.x0, s.y0 = box.y0, s.x1 = box.x1, s.y1 = box.y1, s.cut_by_tile = box.cut_by_tile;
     const std::int64_t px = std::int64_t(s.x0) * one + half, py = std::int64_t(s.y0) * one + half;
     for (int k = 0; k < 3; ++k) {
         const int a = (k + 1) % 3, b = (k + 2) % 3;
@@ -261,7 +280,51 @@ bool edge_setup(const ScreenTriangle& t, const TileTarget& tile, EdgeSetup& s) {
     }
     s.area = area;
     s.inv_area = 1.0 / double(area);
-    return true;
+}
+
+// A triangle under 8 pixels a side, the bulk of a dense distant mesh:
+// edge_setup and walk_each_centre with the three edges in the lanes of one
+// vector, each centre tested by one add. Its edge values stay below 2^24 in
+// magnitude, so in 32-bit lanes they are edge_setup's integers exactly, and
+// the depths its depths.
+constexpr std::int64_t small_triangle = 8 << subpixel_bits;
+
+template <int order>
+IntLanes shuffled(IntLanes v) {
+    return IntLanes(_mm_shuffle_epi32(__m128i(v), order));
+}
+
+template <typename OnPixel>
+void walk_small_triangle(const ScreenTriangle& t, const PixelBox& box, const TileTarget& tile, OnPixel& on_pixel) {
+    static_assert(offsetof(ScreenTriangle, y) == offsetof(ScreenTriangle, x) + 12 &&
+                  offsetof(ScreenTriangle, z) == offsetof(ScreenTriangle, y) + 12);
+    // Corners in lanes 0-2 (lane 3 reads the next field; the shuffles below drop it).
+    IntLanes X = IntLanes(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.x)));
+    IntLanes Y = IntLanes(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.y)));
+    std::int64_t area = doubled_area(t);
+    const bool swapped = area < 0;  // oriented to positive area as in edge_setup
+    constexpr int swap_1_2 = _MM_SHUFFLE(3, 1, 2, 0), from = _MM_SHUFFLE(0, 0, 2, 1), to = _MM_SHUFFLE(0, 1, 0, 2);
+    if (swapped) X = shuffled<swap_1_2>(X), Y = shuffled<swap_1_2>(Y), area = -area;
+    // Lane k: edge k, from corner k + 1 to corner k + 2 (lane 3: corner 0 to itself).
+    const IntLanes ax = shuffled<from>(X), ay = shuffled<from>(Y), dx = shuffled<to>(X) - ax, dy = shuffled<to>(Y) - ay;
+    const IntLanes bias = ((dy < 0) | ((dy == 0) & (dx > 0))) + 1;  // 0 on top and left edges
+    const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
+    const IntLanes px = IntLanes{} + (box.x0 * one + half), py = IntLanes{} + (box.y0 * one + half);
+    const IntLanes step_x = -dy * one, step_y = dx * one;
+    IntLanes row = dx * (py - ay) - dy * (px - ax) - bias;
+    const double z[3] = {t.z[0], t.z[swapped ? 2 : 1], t.z[swapped ? 1 : 2]}, inv_area = 1.0 / double(area);
+    for (int y = box.y0; y <= box.y1; ++y, row += step_y) {
+        float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
+        std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
+        IntLanes e = row;
+        for (int x = box.x0; x <= box.x1; ++x, e += step_x) {
+            if (_mm_movemask_ps(__m128(e)) & 7) continue;  // some E_k - bias_k < 0: outside
+            const IntLanes w = e + bias;
+            const float depth_here = float(depth_from(z, inv_area, double(w[0]), double(w[1]), double(w[2])));
+            const int i = x - tile.x0;
+            if (depth_here < depth[i]) on_pixel(x, y, depth_here, depth[i], ids[i]);
+        }
+    }
 }
 
 // Narrows rows y0..y1 to those where value + (y - top) step >= 0.
@@ -347,7 +410,7 @@ void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_
         DoubleLanes e0 = broadcast(row0 + offset * step_x0) + offset0, e1 = broadcast(row1 + offset * step_x1) + offset1;
         for (int x = first; x <= last; x += 4, depth += 4, ids += 4) {
             const DoubleLanes e2 = area - e0 - e1;
-            const FloatLanes z = to_floats((e0 * s.z[0] + e1 * s.z[1] + e2 * s.z[2]) * s.inv_area);
+            const FloatLanes z = to_floats(depth_from(s.z, s.inv_area, e0, e1, e2));
             const int count = std::min(last - x + 1, 4);
             // A row's last group may reach past the tile's row: then only its pixels are read.
             const FloatLanes old = x + 3 < tile.x1 ? _mm_loadu_ps(depth)
@@ -412,8 +475,11 @@ void walk_solved_runs(const EdgeSetup& s, const RunBound* left_bounds, const Run
 // depth LESS; `on_pixel(x, y, depth, depth_slot, id_slot)` decides what to write.
 template <typename OnPixel>
 void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on_pixel) {
+    PixelBox box;
+    if (!pixel_box(t, tile, box)) return;
+    if (box.width < small_triangle && box.height < small_triangle) return walk_small_triangle(t, box, tile, on_pixel);
     EdgeSetup s;
-    if (!edge_setup(t, tile, s)) return;
+    edge_setup(t, box, s);
     if (s.x1 - s.x0 < 7) return walk_each_centre(s, tile, on_pixel);
     // Only rows where some pixel of the bounds is inside every edge can hold a
     // run: those where E_k at the bounds' column farthest inside it is >= 0.

@@ -112,22 +112,31 @@ TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
 // outside the tile (guard-band sizes: edge values near 2^58). Each pixel's
 // depth must be the one from its exact edge values, summed in the walk's
 // order (runs take four centres at once in doubles while that is exact).
-TEST(Rasterizer, SolvedRunsCoverTheSamePixelsAsTestingEachCentre) {
+// Every walk (small triangles in lanes, narrow ones centre by centre, wide
+// ones by solved runs, in lanes or not) against the edge functions themselves.
+TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
     std::uint64_t state = 12345;
     auto next = [&](int range) {  // a small LCG: the same triangles on every machine
         state = state * 6364136223846793005ull + 1442695040888963407ull;
         return int((state >> 33) % std::uint64_t(range));
     };
-    for (int n = 0; n < 500; ++n) {
+    for (int n = 0; n < 1100; ++n) {
         ScreenTriangle t;
+        // From triangle 500 on, small ones: corners within 9 pixels of a point,
+        // so their boxes are under and over the 8 pixels of the small walk.
+        const int centre_x = n >= 500 ? next(size) * 256 : 0, centre_y = n >= 500 ? next(size) * 256 : 0;
         for (int i = 0; i < 3; ++i) {
             // Corners on a coarse grid too, so edges run through pixel centres.
             const bool on_centre = next(3) == 0;
             t.x[i] = on_centre ? next(size) * 256 + 128 : next(size * 256);
             t.y[i] = on_centre ? next(size) * 256 + 128 : next(size * 256);
-            if (n >= 300 && next(2) == 0) {  // up to 2^28 subpixels away, either side
+            if (n >= 300 && n < 500 && next(2) == 0) {  // up to 2^28 subpixels away, either side
                 t.x[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
                 t.y[i] = (next(1 << 20) - (1 << 19)) * 512 + next(512);
+            }
+            if (n >= 500) {
+                t.x[i] = centre_x + (on_centre ? (next(19) - 9) * 256 + 128 : next(18 * 256) - 9 * 256);
+                t.y[i] = centre_y + (on_centre ? (next(19) - 9) * 256 + 128 : next(18 * 256) - 9 * 256);
             }
             t.z[i] = float(next(1 << 20)) / 1048573.0f, t.inv_w[i] = 1;  // every mantissa bit used
         }
