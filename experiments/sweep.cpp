@@ -13,7 +13,7 @@
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 #include "experiments/single_box.h"
 #include "toolkit/cgal_simplification.h"
 #include "toolkit/cost.h"
@@ -297,7 +297,7 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
     for (LevelMode mode : config.level_modes)
         for (BoxKind kind : config.box_kinds)
             for (Interpolation interpolation : config.interpolations) {
-                int obtained = compute_level_values(model, mode, config.lod.wanted_levels, interpolation, plan.boxes[kind]).obtained_levels;
+                const int obtained = obtained_levels(model, mode, config.lod.wanted_levels);
                 Variant variant{mode, kind, interpolation, obtained, {}};
                 for (int level = 0; level <= obtained; ++level)
                     if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))

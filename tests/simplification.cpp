@@ -1,4 +1,4 @@
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 
 #include "base/input_error.h"
 #include "lod_scene.h"

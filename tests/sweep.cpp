@@ -1,7 +1,7 @@
 #include "experiments/sweep.h"
 
 #include "base/input_error.h"
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/cost.h"

@@ -37,9 +37,9 @@ TEST(Tileset, GeometricErrorIsTheDepthTheBoxesLose) {
     unit.center = {0.5f, 0.5f, 0.5f};
     unit.half_extents = {0.5f, 0.5f, 0.5f};
     std::vector<std::optional<OrientedBox>> boxes{unit, unit};
-    Cut boxed{{0, 1}, {}, {1}};
+    Cut boxed{{0, 1}, {}, {1}, {}};
     EXPECT_NEAR(cut_geometric_error(model, boxed, boxes), 0.3, 1e-6);  // the quad lies 0.3 behind the -Z face
-    Cut kept{{0, 1}, {1}, {}};
+    Cut kept{{0, 1}, {1}, {}, {}};
     EXPECT_EQ(cut_geometric_error(model, kept, boxes), 0);
 }
 

@@ -8,6 +8,7 @@
 #include "toolkit/model.h"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace boxlod {
@@ -16,6 +17,7 @@ struct Cut {
     std::vector<int> used_nodes;      // every node the cut visits, in tree order
     std::vector<int> geometry_nodes;  // used nodes that keep their own geometry
     std::vector<int> box_nodes;       // used nodes replaced by their box (sub-trees with geometry)
+    std::vector<std::pair<int, int>> simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
 };
 
 Cut take_cut(const Model& model, const std::vector<int>& level, int current_level,

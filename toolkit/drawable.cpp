@@ -82,44 +82,51 @@ DecodedTextures decode_textures(const Model& model, TextureCache* cache, int thr
     return decoded;
 }
 
-Drawable make_drawable(const Model& model, const DecodedTextures& textures, int root) {
+Drawable make_drawable(const std::vector<Material>& materials, const DecodedTextures& textures,
+                       std::span<const Primitive* const> primitives) {
     Drawable drawable;
     // Primitives sharing a material and the same attribute set go into one mesh,
-    // in the order the sub-tree first uses them.
+    // in the order they first appear.
     using Key = std::tuple<int, bool, bool, bool>;
     std::map<Key, Mesh*> meshes;
     std::vector<Key> order;
-    std::vector<int> stack{root};
-    while (!stack.empty()) {
-        const Node& node = model.nodes[stack.back()];
-        stack.pop_back();
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
-        for (const Primitive& p : node.primitives) {
-            for (const Eigen::Vector3f& v : p.positions) drawable.bounds.add(v);
-            Key key{p.material, !p.normals.empty(), !p.uvs.empty(), !p.tangents.empty()};
-            Mesh*& mesh = meshes[key];
-            if (!mesh) {
-                drawable.meshes.push_back(std::make_unique<Mesh>());
-                mesh = drawable.meshes.back().get();
-                order.push_back(key);
-            }
-            auto base = std::uint32_t(mesh->positions.size());
-            mesh->positions.insert(mesh->positions.end(), p.positions.begin(), p.positions.end());
-            mesh->normals.insert(mesh->normals.end(), p.normals.begin(), p.normals.end());
-            mesh->uvs.insert(mesh->uvs.end(), p.uvs.begin(), p.uvs.end());
-            mesh->tangents.insert(mesh->tangents.end(), p.tangents.begin(), p.tangents.end());
-            for (std::uint32_t i : p.indices) mesh->indices.push_back(base + i);
+    for (const Primitive* p : primitives) {
+        for (const Eigen::Vector3f& v : p->positions) drawable.bounds.add(v);
+        Key key{p->material, !p->normals.empty(), !p->uvs.empty(), !p->tangents.empty()};
+        Mesh*& mesh = meshes[key];
+        if (!mesh) {
+            drawable.meshes.push_back(std::make_unique<Mesh>());
+            mesh = drawable.meshes.back().get();
+            order.push_back(key);
         }
+        auto base = std::uint32_t(mesh->positions.size());
+        mesh->positions.insert(mesh->positions.end(), p->positions.begin(), p->positions.end());
+        mesh->normals.insert(mesh->normals.end(), p->normals.begin(), p->normals.end());
+        mesh->uvs.insert(mesh->uvs.end(), p->uvs.begin(), p->uvs.end());
+        mesh->tangents.insert(mesh->tangents.end(), p->tangents.begin(), p->tangents.end());
+        for (std::uint32_t i : p->indices) mesh->indices.push_back(base + i);
     }
     for (const Key& key : order) {
         Batch batch;
         batch.mesh = meshes[key];
         const int m = std::get<0>(key);
-        if (m >= 0) batch.surface = material_surface(model.materials[m], textures);
+        if (m >= 0) batch.surface = material_surface(materials[std::size_t(m)], textures);
         drawable.batches.push_back(batch);
         drawable.materials.push_back(m);
     }
     return drawable;
+}
+
+Drawable make_drawable(const Model& model, const DecodedTextures& textures, int root) {
+    std::vector<const Primitive*> primitives;  // the sub-tree's, depth first
+    std::vector<int> stack{root};
+    while (!stack.empty()) {
+        const Node& node = model.nodes[stack.back()];
+        stack.pop_back();
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+        for (const Primitive& p : node.primitives) primitives.push_back(&p);
+    }
+    return make_drawable(model.materials, textures, primitives);
 }
 
 Surface material_surface(const Material& material, const DecodedTextures& textures) {

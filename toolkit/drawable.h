@@ -5,6 +5,7 @@
 #include "toolkit/model.h"
 
 #include <memory>
+#include <span>
 
 namespace boxlod {
 
@@ -54,6 +55,9 @@ Surface material_surface(const Material& material, const DecodedTextures& textur
 
 // The geometry of the sub-tree under `root` (the whole model by default).
 Drawable make_drawable(const Model& model, const DecodedTextures& textures, int root = 0);
+// Any primitives drawn with `materials` (a sub-tree's proxy: hybrid.h).
+Drawable make_drawable(const std::vector<Material>& materials, const DecodedTextures& textures,
+                       std::span<const Primitive* const> primitives);
 
 // A model with its own textures, for commands that just draw it.
 struct DrawableModel {

@@ -23,6 +23,9 @@ constexpr EnumEntry<LevelMode> level_mode_table[] = {
     {LevelMode::error_greedy, "error-greedy",
      "beyond the manual: from the root's box, open the node that buys the most estimated error per byte; "
      "N = the wanted levels, at byte budgets from the root's box to the original"},
+    {LevelMode::hybrid, "hybrid",
+     "beyond the manual: per node its box, its sub-tree simplified or its geometry, chosen by measured image error "
+     "per byte from the root's cheapest proxy; N = the wanted levels, budgets as error-greedy's"},
 };
 
 constexpr EnumEntry<Interpolation> interpolation_table[] = {
@@ -128,7 +131,7 @@ bool is_box_mode(LevelMode mode) {
            mode == LevelMode::box_max_extent;
 }
 
-bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || mode == LevelMode::error_greedy; }
+bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || mode == LevelMode::error_greedy || mode == LevelMode::hybrid; }
 
 LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
                                  const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing,
@@ -147,7 +150,13 @@ LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_
             throw std::invalid_argument("compute_level_values: one box (or none) per node expected");
         return error_greedy_levels(model, boxes, wanted_levels, sizing, textured);
     }
+    if (mode == LevelMode::hybrid) throw std::logic_error("compute_level_values: hybrid levels come from start_lod's plan");
     return box_levels(model, mode, wanted_levels, interpolation, boxes);
+}
+
+int obtained_levels(const Model& model, LevelMode mode, int wanted_levels) {
+    if (uses_boxes(mode)) return wanted_levels;
+    return compute_level_values(model, mode, wanted_levels, Interpolation::linear, {}).obtained_levels;
 }
 
 }  // namespace boxlod

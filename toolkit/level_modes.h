@@ -22,6 +22,7 @@ enum class LevelMode {
     box_diagonal,
     box_max_extent,
     error_greedy,  // beyond the manual: open the node that buys the most estimated error per byte (error_greedy.h)
+    hybrid,        // beyond the manual: per node a box, a simplified sub-tree or its geometry, by measured error per byte (hybrid.h)
 };
 enum class Interpolation { linear, log, rank };  // how box modes turn v into t
 
@@ -32,7 +33,7 @@ const char* level_mode_name(LevelMode mode);
 bool parse_interpolation(const std::string& name, Interpolation& interpolation);
 const char* interpolation_name(Interpolation interpolation);
 bool is_box_mode(LevelMode mode);
-bool uses_boxes(LevelMode mode);  // the box modes and error-greedy
+bool uses_boxes(LevelMode mode);  // the box modes, error-greedy and hybrid
 
 struct LevelValues {
     std::vector<int> level;  // per node
@@ -42,9 +43,14 @@ struct LevelValues {
 // `boxes` (from node_boxes) is used by the box modes and error-greedy; nodes
 // without a box take no part in vmin/vmax and get level 0. `wanted_levels` is N
 // for both. error-greedy prices boxes with `sizing` (its distance aside) and
-// `textured`.
+// `textured`. hybrid's levels come from its plan, which renders (hybrid.h:
+// hybrid_levels; start_lod makes it): not here.
 LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
                                  const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing = {},
                                  bool textured = true);
+
+// N alone: the wanted levels for the modes that take them (box modes,
+// error-greedy, hybrid), the hierarchy's for the others.
+int obtained_levels(const Model& model, LevelMode mode, int wanted_levels);
 
 }  // namespace boxlod

@@ -36,7 +36,8 @@ LevelSessions::LevelSessions(const Model& model, const LodParameters& parameters
     : model(model), threads(threads), first(start_lod(model, parameters, threads)) {}
 
 LodSession& LevelSessions::for_level(int level) {
-    if (distances.empty() || level == 0) return *first;
+    // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan made once.
+    if (distances.empty() || level == 0 || distances[std::size_t(level - 1)] == first->parameters.distance) return *first;
     std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
     if (!session) {
         LodParameters p = first->parameters;

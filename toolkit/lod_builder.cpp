@@ -85,14 +85,20 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
     session->depth_errors = box_depth_errors(model, session->boxes);
     session->times.boxes = seconds_since(start);
+    if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
     start = Clock::now();
-    session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes,
-                                           session->sizing, p.render_mode != RenderMode::untextured);
+    if (p.level_mode == LevelMode::hybrid) {
+        session->hybrid = std::make_shared<const HybridPlan>(
+            plan_hybrid(model, session->textures, session->boxes, {session->sizing, p.render_mode, threads}));
+        session->levels = hybrid_levels(model, *session->hybrid, p.wanted_levels, session->hybrid_steps);
+    } else {
+        session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes,
+                                               session->sizing, p.render_mode != RenderMode::untextured);
+    }
     session->times.levels = seconds_since(start);
-    if (p.keep_small_subtrees || p.keep_cheaper_subtrees)
+    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid)  // the plan keeps what pays (hybrid.h)
         session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
                                       p.render_mode != RenderMode::untextured);
-    if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
     session->original_cost = model_cost(model);
     return session;
 }
@@ -309,6 +315,8 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
     MaterialCopier writer{model, out};
     std::vector<bool> is_box(model.nodes.size(), false);
     for (int n : cut.box_nodes) is_box[n] = true;
+    std::map<int, const Proxy*> simplified;
+    for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
     std::map<int, int> new_index;
     std::size_t next_packed = 0;
     for (int n : cut.used_nodes) {
@@ -318,6 +326,14 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
         new_index[n] = index;
         out.nodes[index].rule = node.rule;
         out.nodes[index].scope = node.scope;
+        if (auto proxy = simplified.find(n); proxy != simplified.end()) {  // its sub-tree simplified, the source's materials
+            for (const Primitive& primitive : proxy->second->primitives) {
+                Primitive copy = primitive;
+                copy.material = writer.material(primitive.material);
+                out.nodes[index].primitives.push_back(std::move(copy));
+            }
+            continue;
+        }
         if (!is_box[n]) {  // kept: its own geometry (a replaced node without box has none)
             for (const Primitive& primitive : node.primitives) {
                 Primitive copy = primitive;
@@ -379,6 +395,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("used_nodes", double(lod.cut.used_nodes.size())),
         number_entry("nodes_with_geometry", double(lod.cut.geometry_nodes.size())),
         number_entry("nodes_with_box", double(lod.cut.box_nodes.size())),
+        number_entry("nodes_simplified", double(lod.cut.simplified_nodes.size())),
         number_entry("depth", tree_depth(model)),
         number_entry("batches_lod", double(lod_counts.batches)),
         number_entry("faces_lod", double(lod_counts.faces)),
@@ -425,7 +442,8 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     const bool textured = p.render_mode != RenderMode::untextured;
     Lod lod;
     lod.current_level = current_level;
-    lod.cut = take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
+    lod.cut = session.hybrid ? hybrid_cut(model, *session.hybrid, session.hybrid_steps[std::size_t(current_level)])
+                             : take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
     for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
 
     auto start = Clock::now();

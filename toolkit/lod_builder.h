@@ -7,6 +7,7 @@
 #include "toolkit/bake.h"
 #include "toolkit/cost.h"
 #include "toolkit/cut.h"
+#include "toolkit/hybrid.h"
 #include "toolkit/parameters.h"
 #include "toolkit/texture_sizing.h"
 
@@ -29,6 +30,8 @@ struct LodSession {
     TextureSizing sizing;
     std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
     std::vector<double> depth_errors;  // per node with a box, error_greedy.h's proxy e(n) in m^3
+    std::shared_ptr<const HybridPlan> hybrid;  // level mode hybrid: the plan its levels are prefixes of
+    std::vector<std::size_t> hybrid_steps;     // per current level c: the plan's steps drawn
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
     ModelCost original_cost;
     LodTimes times;

@@ -13,7 +13,7 @@
 // (boxlod simplify's default).
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 #include "toolkit/statistics.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

@@ -3,7 +3,7 @@
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "experiments/commands/commands.h"
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 

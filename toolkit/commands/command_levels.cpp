@@ -5,6 +5,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/level_modes.h"
+#include "toolkit/lod_builder.h"
 #include "toolkit/model_io.h"
 #include "toolkit/parameters.h"
 
@@ -35,7 +36,9 @@ static int run_levels(const Arguments& arguments) {
                 std::fprintf(stderr, "boxes: %.3f s on %d thread(s); minimal boxes for %zu nodes: %zu solved, %zu reused\n",
                      seconds_since(start), thread_count(threads), counts.nodes, counts.computed, counts.reused);
     }
-    LevelValues values = compute_level_values(model, mode, wanted_levels, interpolation, boxes);
+    // hybrid's levels are prefixes of a plan that measures its proxies by rendering them (hybrid.h).
+    LevelValues values = mode == LevelMode::hybrid ? start_lod(model, parameters, threads, &boxes)->levels
+                                                   : compute_level_values(model, mode, wanted_levels, interpolation, boxes);
 
     KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};
     if (uses_boxes(mode)) report.push_back(text_entry("box_kind", box_kind_name(kind)));

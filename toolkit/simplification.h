@@ -1,10 +1,12 @@
-// The classic baseline (docs/sweeps.md: baselines): quadric edge-collapse mesh
-// simplification (Garland-Heckbert, the lecture notes' method) with
-// meshoptimizer, keeping materials and texture coordinates.
+// Quadric edge-collapse mesh simplification (Garland-Heckbert, the lecture
+// notes' method) with meshoptimizer, keeping materials and texture
+// coordinates: the classic baseline (docs/sweeps.md: baselines) and the
+// simplified sub-trees among the hybrid level mode's candidates (hybrid.h).
 #pragma once
 #include "toolkit/model.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace boxlod {
 
@@ -38,6 +40,10 @@ struct SimplifyOptions {
 // the triangle count keeps every triangle. Deterministic.
 // Throws InputError for target_faces 0, an LoD model or a model without triangles.
 Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options);
+// The same for the sub-tree under `root` alone (the hybrid level mode's
+// candidates): its primitives merged and simplified, one per material and
+// attribute set, with the model's material indices.
+std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options);
 
 // What meshoptimizer 0.18 (Debian 12) offers for a face budget, as named
 // variants: `collapse` (edge collapse, then clustering: boxlod simplify's

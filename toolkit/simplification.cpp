@@ -1,4 +1,4 @@
-#include "experiments/simplification.h"
+#include "toolkit/simplification.h"
 
 #include "base/input_error.h"
 #include "base/parallel.h"
@@ -35,12 +35,26 @@ void append(Primitive& to, const Primitive& from) {
     for (std::uint32_t i : from.indices) to.indices.push_back(base + i);
 }
 
-// Groups in the order their first primitive appears in the tree.
-std::vector<Group> merge_by_material(const Model& model) {
+// The sub-tree's nodes in index order (for the root: every node).
+std::vector<int> subtree_nodes(const Model& model, int root) {
+    std::vector<int> nodes;
+    for (std::vector<int> pending{root}; !pending.empty();) {
+        const int n = pending.back();
+        pending.pop_back();
+        nodes.push_back(n);
+        const std::vector<int>& children = model.nodes[std::size_t(n)].children;
+        pending.insert(pending.end(), children.begin(), children.end());
+    }
+    std::sort(nodes.begin(), nodes.end());
+    return nodes;
+}
+
+// Groups in the order their first primitive appears in the node order.
+std::vector<Group> merge_by_material(const Model& model, const std::vector<int>& nodes) {
     std::map<GroupKey, std::size_t> index;
     std::vector<Group> groups;
-    for (const Node& node : model.nodes)
-        for (const Primitive& primitive : node.primitives) {
+    for (int n : nodes)
+        for (const Primitive& primitive : model.nodes[std::size_t(n)].primitives) {
             if (primitive.indices.empty()) continue;
             GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(), !primitive.tangents.empty()};
             auto [it, added] = index.try_emplace(key, groups.size());
@@ -169,10 +183,10 @@ std::vector<std::size_t> proportional_budget(std::size_t total, const std::vecto
 
 }  // namespace
 
-Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options) {
+std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options) {
     if (model.is_lod) throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
     if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
-    std::vector<Group> groups = merge_by_material(model);
+    std::vector<Group> groups = merge_by_material(model, subtree_nodes(model, root));
     if (groups.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
 
     std::vector<Primitive> welded(groups.size());
@@ -211,19 +225,26 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
         for (std::size_t g = 0; g < groups.size(); ++g) budget[g] += achieved[g];
     }
 
+    std::vector<Primitive> simplified;
+    for (Group& group : groups)
+        if (!group.mesh.indices.empty()) simplified.push_back(std::move(group.mesh));  // else its share came to nothing
+    return simplified;
+}
+
+Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options) {
+    std::vector<Primitive> simplified = simplify_subtree(model, 0, target_faces, options);
     Model result;
     result.source = model.source;
     result.materials = model.materials;
     result.textures = model.textures;
     add_node(result, -1, model.nodes.empty() ? "simplified" : model.nodes[0].name);
     std::map<int, int> node_of_material;
-    for (Group& group : groups) {
-        if (group.mesh.indices.empty()) continue;  // a material whose share came to nothing
-        int material = group.key.material;
+    for (Primitive& mesh : simplified) {
+        const int material = mesh.material;
         auto [it, added] = node_of_material.try_emplace(material, 0);
         if (added)
             it->second = add_node(result, 0, material >= 0 ? model.materials[std::size_t(material)].name : "default material");
-        result.nodes[std::size_t(it->second)].primitives.push_back(std::move(group.mesh));
+        result.nodes[std::size_t(it->second)].primitives.push_back(std::move(mesh));
     }
     return result;
 }

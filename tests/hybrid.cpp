@@ -1,0 +1,206 @@
+#include "toolkit/hybrid.h"
+
+#include "toolkit/boxes.h"
+#include "toolkit/cost.h"
+#include "toolkit/kept_subtrees.h"
+#include "toolkit/lod_builder.h"
+#include "toolkit/vertex_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace boxlod;
+
+namespace {
+
+void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f& right, const Eigen::Vector3f& up) {
+    const auto base = std::uint32_t(p.positions.size());
+    const Eigen::Vector3f normal = right.cross(up).normalized();
+    for (const Eigen::Vector3f& v : {corner, Eigen::Vector3f(corner + right), Eigen::Vector3f(corner + right + up),
+                                     Eigen::Vector3f(corner + up)})
+        p.positions.push_back(v), p.normals.push_back(normal);
+    p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    ++p.polygon_count;
+}
+
+// A flat, detailed facade: 48 x 48 tiles in four colours, flush in the plane
+// z = 0, under node `facade`. A box's front face shows it exactly; simplifying
+// its thousands of separate quads loses tiles.
+int add_facade(Model& model, int parent, float x0) {
+    const int first_material = int(model.materials.size());
+    const Eigen::Vector4f colors[4] = {{0.8f, 0.2f, 0.1f, 1}, {0.1f, 0.6f, 0.2f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.2f, 1}};
+    for (const Eigen::Vector4f& color : colors) model.materials.emplace_back().base_color = color;
+    const int facade = add_node(model, parent, "facade");
+    const int n = 48;
+    const float tile = 4.0f / n;
+    for (int k = 0; k < 4; ++k) model.nodes[std::size_t(facade)].primitives.emplace_back().material = first_material + k;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            add_quad(model.nodes[std::size_t(facade)].primitives[std::size_t((x * 7 + y * 3) % 4)],
+                     {x0 + float(x) * tile, float(y) * tile, 0}, {tile, 0, 0}, {0, tile, 0});
+    return facade;
+}
+
+// A curved part: a sphere of radius 1.5 centred at (cx, 2, 0), 64 x 32 segments.
+int add_sphere(Model& model, int parent, float cx) {
+    model.materials.emplace_back().base_color = {0.7f, 0.7f, 0.7f, 1};
+    const int sphere = add_node(model, parent, "sphere");
+    Primitive& p = model.nodes[std::size_t(sphere)].primitives.emplace_back();
+    p.material = int(model.materials.size()) - 1;
+    const int slices = 64, stacks = 32;
+    const double pi = 3.14159265358979323846;
+    for (int i = 0; i <= stacks; ++i)
+        for (int j = 0; j <= slices; ++j) {
+            const double theta = pi * i / stacks, phi = 2 * pi * j / slices;
+            const Eigen::Vector3f n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+            p.positions.push_back(Eigen::Vector3f(cx, 2, 0) + 1.5f * n);
+            p.normals.push_back(n);
+        }
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const auto a = std::uint32_t(i * (slices + 1) + j), b = a + std::uint32_t(slices + 1);
+            p.indices.insert(p.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+            p.polygon_count += 2;
+        }
+    return sphere;
+}
+
+struct Scene {
+    Model model;
+    int facade = -1, sphere = -1;
+    std::vector<std::optional<OrientedBox>> boxes;
+};
+
+Scene facade_and_sphere() {
+    Scene s;
+    s.model.source = "hybrid-test";
+    add_node(s.model, -1, "root");
+    s.facade = add_facade(s.model, 0, -6);
+    s.sphere = add_sphere(s.model, 0, 4);
+    validate_model(s.model);
+    s.boxes = node_boxes(s.model, BoxKind::minimal, 1);
+    return s;
+}
+
+HybridSettings settings_for(float pixel_metres, int threads) {
+    HybridSettings settings;
+    settings.sizing.fovy_degrees = 45;
+    settings.sizing.resolution = 1080;
+    settings.sizing.distance = float(pixel_metres * 1080 / (2 * std::tan(22.5 * 3.14159265358979323846 / 180)));
+    settings.threads = threads;
+    return settings;
+}
+
+}  // namespace
+
+TEST(Hybrid, PixelErrorCountsCoverageAndColour) {
+    const Eigen::Vector4f red(1, 0, 0, 1), black(0, 0, 0, 1), none(0, 0, 0, 0);
+    EXPECT_EQ(hybrid_pixel_error(red, red), 0);
+    EXPECT_EQ(hybrid_pixel_error(red, none), 1);              // covered against background
+    EXPECT_NEAR(hybrid_pixel_error(red, black), 1.0 / 3, 1e-12);  // one channel of three, fully apart
+    EXPECT_EQ(hybrid_pixel_error(none, none), 0);
+}
+
+TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
+    Scene s = facade_and_sphere();
+    const HybridPlan plan = plan_hybrid(s.model, decode_textures(s.model), s.boxes, settings_for(0.02f, 2));
+    const std::vector<Proxy>& facade = plan.proxies[std::size_t(s.facade)];
+    const std::vector<Proxy>& sphere = plan.proxies[std::size_t(s.sphere)];
+    ASSERT_FALSE(facade.empty());
+    ASSERT_FALSE(sphere.empty());
+    // The facade's box is kept, no cheaper proxy beats it, and it shows the facade nearly exactly.
+    auto box = std::find_if(facade.begin(), facade.end(), [](const Proxy& p) { return p.kind == ProxyKind::box; });
+    ASSERT_NE(box, facade.end());
+    for (auto p = facade.begin(); p != box; ++p) EXPECT_GT(p->error, box->error);
+    for (auto p = box + 1; p != facade.end(); ++p) EXPECT_GT(p->bytes, box->bytes);
+    const double facade_pixels = (4.0 / 0.02) * (4.0 / 0.02);
+    EXPECT_LT(box->error, 0.05 * facade_pixels);
+    // The sphere's box is beaten by a cheaper simplified sphere: it is not among its proxies.
+    for (const Proxy& p : sphere) EXPECT_EQ(p.kind, ProxyKind::simplified);
+    // Proxies by ascending bytes, descending error.
+    for (const std::vector<Proxy>* proxies : {&facade, &sphere})
+        for (std::size_t k = 1; k < proxies->size(); ++k) {
+            EXPECT_GT((*proxies)[k].bytes, (*proxies)[k - 1].bytes);
+            EXPECT_LT((*proxies)[k].error, (*proxies)[k - 1].error);
+        }
+}
+
+TEST(Hybrid, PlansTheSameForAnyThreadCount) {
+    Scene s = facade_and_sphere();
+    const DecodedTextures textures = decode_textures(s.model);
+    const HybridPlan one = plan_hybrid(s.model, textures, s.boxes, settings_for(0.04f, 1));
+    const HybridPlan two = plan_hybrid(s.model, textures, s.boxes, settings_for(0.04f, 2));
+    ASSERT_EQ(one.steps.size(), two.steps.size());
+    for (std::size_t k = 0; k < one.steps.size(); ++k) {
+        EXPECT_EQ(one.steps[k].node, two.steps[k].node);
+        EXPECT_EQ(one.steps[k].proxy, two.steps[k].proxy);
+    }
+    EXPECT_EQ(one.bytes, two.bytes);
+    EXPECT_EQ(one.error, two.error);
+}
+
+// Hand-set proxies where the best order is known: the root's proxy is cheap and
+// bad; opening it shows child a at a bad proxy and child b at a fair one; a's
+// better proxy buys the most error per byte, then b's, then opening b, then a.
+TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
+    Model model;
+    add_node(model, -1, "root");
+    const int a = add_node(model, 0, "a"), b = add_node(model, 0, "b");
+    for (int n : {a, b}) {  // each child's own geometry
+        Primitive& p = model.nodes[std::size_t(n)].primitives.emplace_back();
+        p.positions.assign(30, Eigen::Vector3f::Zero());
+        for (std::uint32_t i = 0; i < 30; ++i) p.indices.push_back(i);
+    }
+    const double own = double(primitive_mesh_bytes(model.nodes[std::size_t(a)].primitives[0], model));
+    ASSERT_GT(own, 300);
+    HybridPlan plan;
+    plan.proxies.resize(3);
+    auto proxy = [](double bytes, double error) {
+        Proxy p;
+        p.bytes = bytes, p.error = error;
+        return p;
+    };
+    plan.proxies[0] = {proxy(100, 1000)};
+    plan.proxies[std::size_t(a)] = {proxy(50, 400), proxy(150, 100)};  // +100 bytes: -300 error (3 per byte)
+    plan.proxies[std::size_t(b)] = {proxy(60, 200), proxy(100, 120)};  // +40 bytes: -80 error (2 per byte)
+    order_hybrid_plan(model, plan);
+    // Opening the root: 1000 -> 600 for +10 bytes (40 per byte; the root has no geometry of its own).
+    const std::vector<std::pair<int, int>> expected = {{0, -1}, {a, 1}, {b, 1}, {b, -1}, {a, -1}};
+    ASSERT_EQ(plan.steps.size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        EXPECT_EQ(plan.steps[k].node, expected[k].first) << "step " << k;
+        EXPECT_EQ(plan.steps[k].proxy, expected[k].second) << "step " << k;
+    }
+    const std::vector<double> bytes = {100, 110, 210, 250, 150 + own, 2 * own}, error = {1000, 600, 300, 220, 100, 0};
+    EXPECT_EQ(plan.bytes, bytes);
+    EXPECT_EQ(plan.error, error);
+}
+
+TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
+    Scene s = facade_and_sphere();
+    LodParameters parameters;
+    parameters.level_mode = LevelMode::hybrid;
+    parameters.wanted_levels = 6;
+    parameters.box_kind = BoxKind::minimal;
+    parameters.min_texture_size = 16;
+    parameters.distance = settings_for(0.04f, 1).sizing.distance;
+    auto session = start_lod(s.model, parameters, 2);
+    ASSERT_TRUE(session->hybrid);
+    bool some_box = false, some_simplified = false;
+    for (int c = 1; c <= 6; ++c) {
+        Lod lod = build_lod(*session, c, 2);
+        some_box |= !lod.cut.box_nodes.empty();
+        some_simplified |= !lod.cut.simplified_nodes.empty();
+        // A simplified node draws fewer triangles than its sub-tree.
+        for (auto [node, proxy] : lod.cut.simplified_nodes) {
+            std::size_t triangles = 0;
+            for (const Primitive& p : session->hybrid->proxies[std::size_t(node)][std::size_t(proxy)].primitives)
+                triangles += p.triangle_count();
+            EXPECT_LT(triangles, subtree_faces(s.model)[std::size_t(node)]);
+        }
+    }
+    EXPECT_TRUE(some_box);
+    EXPECT_TRUE(some_simplified);
+    EXPECT_EQ(build_lod(*session, 0, 2).cut.box_nodes.size(), 0u);  // level 0: the original
+}

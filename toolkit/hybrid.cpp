@@ -1,0 +1,369 @@
+#include "toolkit/hybrid.h"
+
+#include "base/parallel.h"
+#include "toolkit/bake.h"
+#include "toolkit/framing.h"
+#include "toolkit/kept_subtrees.h"
+#include "toolkit/simplification.h"
+#include "toolkit/vertex_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+namespace boxlod {
+namespace {
+
+// The sub-tree simplified to these shares of its triangles: a few error
+// targets from slight to coarse, each a quarter of the one before.
+constexpr double simplified_shares[] = {0.25, 1.0 / 16, 1.0 / 64};
+constexpr std::size_t fewest_simplified_triangles = 4;
+
+// Where a sub-tree is measured: its bounding sphere seen orthographically from
+// the 8 corner directions, `side` pixels of `pixel` metres a side.
+struct MeasuringView {
+    Framing sphere;
+    float pixel = 1;
+    int side = 1;
+};
+
+MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
+    MeasuringView view;
+    view.sphere = framing_of(bounds);
+    const float diameter = 2 * view.sphere.radius;
+    view.pixel = std::max(float(pixel_world_size(settings.sizing)), diameter / float(settings.max_side));
+    view.side = std::clamp(int(std::ceil(diameter / view.pixel)), 1, settings.max_side);
+    return view;
+}
+
+// Each view rendered at twice the side and averaged over 2 x 2 pixels: without
+// it, detail near the pixel's size aliases differently in the sub-tree and in
+// a texture baked from it, and the error measures the aliasing.
+constexpr int supersampling = 2;
+
+void downsample(Frame& frame) {
+    const int w = frame.width / supersampling, h = frame.height / supersampling;
+    std::vector<Eigen::Vector4f> color(std::size_t(w) * std::size_t(h), Eigen::Vector4f::Zero());
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x)
+            color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
+                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / float(supersampling * supersampling);
+    frame.width = w, frame.height = h, frame.color = std::move(color);
+    frame.depth.clear(), frame.normal.clear();
+}
+
+std::vector<Frame> render_views(const Drawable& drawable, const MeasuringView& view, RenderMode mode) {
+    std::vector<Frame> frames;
+    const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3f direction =
+            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
+        RenderSettings settings;
+        settings.mode = mode;
+        settings.threads = 1;  // nodes are measured in parallel
+        Camera& camera = settings.camera;
+        camera.orthographic = true;
+        camera.position = view.sphere.center + direction * (2 * r);
+        camera.target = view.sphere.center;
+        camera.left = camera.bottom = -half, camera.right = camera.top = half;
+        camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
+        settings.light = light_for_camera(camera);
+        frames.push_back(make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
+        render(drawable.batches, settings, frames.back());
+        downsample(frames.back());
+    }
+    return frames;
+}
+
+// Pixels of the sizing view that differ: the measuring pixels' errors, each
+// weighing (measuring pixel / sizing pixel)^2, mean over the directions.
+double measured_error(const std::vector<Frame>& original, const std::vector<Frame>& proxy, const MeasuringView& view,
+                      const HybridSettings& settings) {
+    double sum = 0;
+    for (std::size_t v = 0; v < original.size(); ++v)
+        for (std::size_t i = 0; i < original[v].color.size(); ++i) sum += hybrid_pixel_error(original[v].color[i], proxy[v].color[i]);
+    const double scale = double(view.pixel) / pixel_world_size(settings.sizing);
+    return sum * scale * scale / double(original.size());
+}
+
+// The box as a drawable: each face one quad over its whole baked texture.
+struct BoxProxyDrawable {
+    std::vector<Material> materials;
+    DecodedTextures textures;
+    std::vector<Primitive> quads;
+    Drawable drawable;
+};
+
+std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, const OrientedBox& box, const MeasuringView& view,
+                                                     const HybridSettings& settings) {
+    auto proxy = std::make_unique<BoxProxyDrawable>();
+    TextureSizing measuring = settings.sizing;  // texels of the measuring pixel's size
+    measuring.distance *= float(double(view.pixel) / pixel_world_size(settings.sizing));
+    const bool textured = settings.mode != RenderMode::untextured;
+    for (const OrientedBoxFace& face : oriented_box_faces(box)) {
+        Primitive quad;
+        quad.material = int(proxy->materials.size());
+        Material material;
+        material.base_color = textured ? Eigen::Vector4f(1, 1, 1, 1) : Eigen::Vector4f(0.7f, 0.7f, 0.7f, 1);
+        if (textured) {
+            const Eigen::Vector2i texels = face_texels(2 * face.half_width, 2 * face.half_height, measuring);
+            BakedFace baked = bake_face(subtree, face, texels, 1);
+            material.base_color_texture = int(proxy->textures.color.size());
+            material.normal_texture = int(proxy->textures.color.size());
+            material.alpha_mode = AlphaMode::mask;
+            proxy->textures.color.push_back(std::make_shared<const MipTexture>(make_texture(baked.color, ColorSpace::srgb, Wrap::clamp)));
+            proxy->textures.linear.push_back(std::make_shared<const MipTexture>(make_texture(baked.normal, ColorSpace::linear, Wrap::clamp)));
+        }
+        const float corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) over the face, as bake_face's image
+        for (const auto& c : corners) {
+            const float s = 2 * c[0] - 1, t = 1 - 2 * c[1];
+            quad.positions.push_back(face.center + face.tangent * (s * face.half_width) + face.bitangent * (t * face.half_height));
+            quad.normals.push_back(face.normal);
+            if (textured) {
+                quad.uvs.emplace_back(c[0], c[1]);
+                quad.tangents.emplace_back(face.tangent.x(), face.tangent.y(), face.tangent.z(), 1.0f);
+            }
+        }
+        quad.indices = {0, 1, 2, 0, 2, 3};
+        quad.polygon_count = 1;
+        proxy->quads.push_back(std::move(quad));
+        proxy->materials.push_back(material);
+    }
+    std::vector<const Primitive*> quads;
+    for (const Primitive& quad : proxy->quads) quads.push_back(&quad);
+    proxy->drawable = make_drawable(proxy->materials, proxy->textures, quads);
+    return proxy;
+}
+
+double mesh_bytes(const std::vector<Primitive>& primitives, const Model& model) {
+    double bytes = 0;
+    for (const Primitive& p : primitives) bytes += double(primitive_mesh_bytes(p, model));
+    return bytes;
+}
+
+std::size_t triangle_count(const std::vector<Primitive>& primitives) {
+    std::size_t triangles = 0;
+    for (const Primitive& p : primitives) triangles += p.triangle_count();
+    return triangles;
+}
+
+// Every proxy of node n, measured; then sorted by bytes, keeping only those
+// that beat every cheaper one and cost less than the sub-tree itself.
+std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                                   double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
+    const Drawable subtree = make_drawable(model, textures, n);
+    const MeasuringView view = measuring_view(subtree.bounds, settings);
+    const std::vector<Frame> original = render_views(subtree, view, settings.mode);
+
+    std::vector<Proxy> proxies;
+    {
+        Proxy proxy;
+        proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
+        const auto drawable = box_proxy_drawable(subtree, box, view, settings);
+        proxy.error = measured_error(original, render_views(drawable->drawable, view, settings.mode), view, settings);
+        proxies.push_back(std::move(proxy));
+    }
+    SimplifyOptions options;
+    options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
+    options.threads = 1;
+    std::size_t previous = subtree_triangles;
+    for (double share : simplified_shares) {
+        const auto target = std::size_t(double(subtree_triangles) * share);
+        if (target < fewest_simplified_triangles) break;
+        Proxy proxy;
+        proxy.kind = ProxyKind::simplified;
+        proxy.primitives = simplify_subtree(model, n, target, options);
+        const std::size_t triangles = triangle_count(proxy.primitives);
+        if (triangles == 0 || triangles >= previous) continue;  // nothing left, or no simpler than the last
+        previous = triangles;
+        proxy.bytes = mesh_bytes(proxy.primitives, model);
+        std::vector<const Primitive*> primitives;
+        for (const Primitive& p : proxy.primitives) primitives.push_back(&p);
+        const Drawable drawable = make_drawable(model.materials, textures, primitives);
+        proxy.error = measured_error(original, render_views(drawable, view, settings.mode), view, settings);
+        proxies.push_back(std::move(proxy));
+    }
+    std::stable_sort(proxies.begin(), proxies.end(), [](const Proxy& a, const Proxy& b) { return a.bytes < b.bytes; });
+    std::vector<Proxy> kept;
+    for (Proxy& proxy : proxies)
+        if (proxy.bytes < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+    return kept;
+}
+
+// The greedy order (docs/design.md: The hybrid level mode).
+class Planner {
+public:
+    Planner(const Model& model, HybridPlan& plan) : model_(model), plan_(plan), state_(model.nodes.size(), -1) {
+        subtree_bytes_.assign(model.nodes.size(), 0);
+        own_bytes_.assign(model.nodes.size(), 0);
+        const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
+        for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+            subtree_bytes_[n] = double(subtree[n]);
+            own_bytes_[n] = mesh_bytes(model.nodes[n].primitives, model);
+            if (!plan.proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
+        }
+    }
+
+    void run() {
+        plan_.bytes.push_back(drawn_bytes(0));
+        plan_.error.push_back(drawn_error(0));
+        if (state_[0] < 0) return;  // the root has no proxy: only the original
+        consider(0);
+        while (!frontier_.empty()) {
+            const Move move = std::get<3>(*frontier_.begin());
+            frontier_.erase(frontier_.begin());
+            plan_.steps.push_back({move.node, move.proxy});
+            plan_.bytes.push_back(plan_.bytes.back() + move.cost);
+            plan_.error.push_back(plan_.error.back() - move.gain);
+            state_[std::size_t(move.node)] = move.proxy;
+            if (move.proxy >= 0) {
+                consider(move.node);
+                continue;
+            }
+            for (int child : model_.nodes[std::size_t(move.node)].children)
+                if (state_[std::size_t(child)] >= 0) consider(child);
+        }
+    }
+
+private:
+    struct Move {
+        int node = 0, proxy = -1;
+        double gain = 0, cost = 0;
+    };
+    // Best first: changes that save bytes and lose nothing, then the largest
+    // gain per byte, then (so that the plan reaches the original) openings that
+    // gain nothing yet, cheapest first; ties to the lower node index.
+    using Key = std::tuple<int, double, int, Move>;
+    struct KeyOrder {
+        bool operator()(const Key& a, const Key& b) const {
+            return std::tie(std::get<0>(a), std::get<1>(a), std::get<2>(a)) < std::tie(std::get<0>(b), std::get<1>(b), std::get<2>(b));
+        }
+    };
+
+    // Bytes and error of node n's sub-tree as drawn when n is reached in its current state.
+    double drawn_bytes(int n) const {
+        const int s = state_[std::size_t(n)];
+        return s >= 0 ? plan_.proxies[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
+    }
+    double drawn_error(int n) const {
+        const int s = state_[std::size_t(n)];
+        return s >= 0 ? plan_.proxies[std::size_t(n)][std::size_t(s)].error : 0;
+    }
+
+    static Key key(const Move& m) {
+        if (m.gain >= 0 && m.cost <= 0) return {0, -m.gain, m.node, m};
+        if (m.gain > 0) return {1, -m.gain / m.cost, m.node, m};
+        return {2, m.cost, m.node, m};
+    }
+
+    // Puts node n's best change into the frontier.
+    void consider(int n) {
+        const std::vector<Proxy>& proxies = plan_.proxies[std::size_t(n)];
+        const Proxy& now = proxies[std::size_t(state_[std::size_t(n)])];
+        Move open{n, -1, now.error, own_bytes_[std::size_t(n)] - now.bytes};
+        for (int child : model_.nodes[std::size_t(n)].children) open.gain -= drawn_error(child), open.cost += drawn_bytes(child);
+        Key best = key(open);
+        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies.size(); ++j)
+            best = std::min(best, key({n, int(j), now.error - proxies[j].error, proxies[j].bytes - now.bytes}), KeyOrder{});
+        frontier_.insert(best);
+    }
+
+    const Model& model_;
+    HybridPlan& plan_;
+    std::vector<int> state_;
+    std::vector<double> subtree_bytes_, own_bytes_;
+    std::set<Key, KeyOrder> frontier_;
+};
+
+}  // namespace
+
+double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b) {
+    const float ca = std::clamp(a.w(), 0.0f, 1.0f), cb = std::clamp(b.w(), 0.0f, 1.0f);
+    double colour = 0;
+    for (int c = 0; c < 3; ++c) colour += std::abs(int(linear_to_srgb(a[c])) - int(linear_to_srgb(b[c])));
+    return double(std::abs(ca - cb)) + double(std::min(ca, cb)) * colour / (3 * 255.0);
+}
+
+HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
+                       const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings) {
+    HybridPlan plan;
+    plan.proxies.resize(model.nodes.size());
+    const bool textured = settings.mode != RenderMode::untextured;
+    const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
+    std::vector<std::size_t> triangles(model.nodes.size(), 0);
+    for (std::size_t n = model.nodes.size(); n-- > 0;) {  // children after their parent (model.h)
+        for (const Primitive& p : model.nodes[n].primitives) triangles[n] += p.triangle_count();
+        if (model.nodes[n].parent >= 0) triangles[std::size_t(model.nodes[n].parent)] += triangles[n];
+    }
+    // A node is measured where some proxy may cost less than its sub-tree's
+    // mesh: its box, or a simplified sub-tree (enough triangles for the first share).
+    std::vector<int> measured;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < bytes[n] ||
+                         double(triangles[n]) * simplified_shares[0] >= double(fewest_simplified_triangles)))
+            measured.push_back(int(n));
+    parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
+        const auto n = std::size_t(measured[i]);
+        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], double(bytes[n]), triangles[n], settings);
+    });
+    order_hybrid_plan(model, plan);
+    return plan;
+}
+
+void order_hybrid_plan(const Model& model, HybridPlan& plan) {
+    plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
+    Planner(model, plan).run();
+}
+
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) {
+    std::vector<int> state(plan.proxies.size(), -1);
+    for (std::size_t n = 0; n < plan.proxies.size(); ++n)
+        if (!plan.proxies[n].empty()) state[n] = 0;
+    for (std::size_t k = 0; k < std::min(steps, plan.steps.size()); ++k) state[std::size_t(plan.steps[k].node)] = plan.steps[k].proxy;
+    return state;
+}
+
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps) {
+    const std::vector<int> state = hybrid_state(plan, steps);
+    Cut cut;
+    for (std::vector<int> stack{0}; !stack.empty();) {
+        const int n = stack.back();
+        stack.pop_back();
+        const Node& node = model.nodes[std::size_t(n)];
+        cut.used_nodes.push_back(n);
+        if (const int s = state[std::size_t(n)]; s >= 0) {
+            if (plan.proxies[std::size_t(n)][std::size_t(s)].kind == ProxyKind::box) cut.box_nodes.push_back(n);
+            else cut.simplified_nodes.emplace_back(n, s);
+            continue;
+        }
+        if (node.has_geometry()) cut.geometry_nodes.push_back(n);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+    }
+    return cut;
+}
+
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted_levels, std::vector<std::size_t>& steps) {
+    LevelValues values;
+    values.obtained_levels = wanted_levels;
+    values.level.assign(model.nodes.size(), 0);
+    steps.assign(std::size_t(wanted_levels) + 1, plan.steps.size());
+    const double start = std::max(plan.bytes.front(), 1.0), original = std::max(plan.bytes.back(), 1.0);
+    for (int c = wanted_levels; c >= 1; --c) {  // B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's
+        const double t = double(c) / wanted_levels;
+        const std::size_t k = hybrid_steps_within(plan, std::exp((1 - t) * std::log(original) + t * std::log(start)));
+        steps[std::size_t(c)] = c == wanted_levels ? k : std::max(k, steps[std::size_t(c) + 1]);
+        for (int n : hybrid_cut(model, plan, steps[std::size_t(c)]).geometry_nodes)
+            values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, wanted_levels - 1));
+    }
+    return values;
+}
+
+std::size_t hybrid_steps_within(const HybridPlan& plan, double budget) {
+    std::size_t steps = 0;
+    for (std::size_t k = 0; k < plan.bytes.size(); ++k)
+        if (plan.bytes[k] <= budget * (1 + 1e-12)) steps = k;
+    return steps;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,93 @@
+// The hybrid level mode (beyond the manual; docs/design.md: The hybrid level
+// mode). Each node may stand in for its sub-tree by one of several proxies:
+// its textured box, or the sub-tree simplified on its own at a few face
+// targets (meshoptimizer, the sub-tree's own materials and textures). Each
+// proxy's error is measured, not guessed: the sub-tree and the proxy are
+// rendered alone, from the 8 corner directions, orthographically with pixels
+// of the sizing view's size (texel = pixel, texture_sizing.h), and the error
+// is the number of pixels that differ, summed as hybrid_pixel_error weighs
+// them. Starting from the root's cheapest proxy, a plan repeatedly takes the
+// change (swap a node's proxy for a better one, or open the node: its own
+// geometry and its children at their cheapest proxies) with the largest drop
+// of error per added byte; a level is a prefix of that plan within its byte
+// budget. No peer chooses by measured error per byte: boxes win on flat,
+// detailed facades, simplification on curved or thin parts.
+#pragma once
+#include "renderer/renderer.h"
+#include "toolkit/cut.h"
+#include "toolkit/drawable.h"
+#include "toolkit/level_modes.h"
+#include "toolkit/model.h"
+#include "toolkit/texture_sizing.h"
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace boxlod {
+
+enum class ProxyKind { box, simplified };
+
+// One way to draw a sub-tree instead of its geometry.
+struct Proxy {
+    ProxyKind kind = ProxyKind::box;
+    std::vector<Primitive> primitives;  // simplified: the sub-tree's simplified geometry (the model's materials)
+    double bytes = 0;  // box: box_bytes_estimate at the sizing distance; simplified: its mesh bytes
+    double error = 0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
+};
+
+struct HybridStep {
+    int node = 0;
+    int proxy = -1;  // the node's proxy from this step on; -1: the node is opened
+};
+
+struct HybridPlan {
+    // Per node, its proxies by ascending bytes and descending error (dominated
+    // ones dropped). Empty: the sub-tree is drawn as it is wherever it is
+    // reached (no geometry, or geometry cheaper than any proxy).
+    std::vector<std::vector<Proxy>> proxies;
+    std::vector<HybridStep> steps;      // from the root at its cheapest proxy to the original
+    std::vector<double> bytes, error;   // after k steps: bytes (mesh + box estimates) and the summed proxy errors
+};
+
+// What the plan's renders share with the LoD they plan.
+struct HybridSettings {
+    TextureSizing sizing;
+    RenderMode mode = RenderMode::normal;
+    int threads = 0;      // nodes measured in parallel; the plan never depends on it
+    int max_side = 48;    // measuring renders at most this many pixels a side (coarser pixels weigh more)
+};
+
+// The error of one pixel between two renders of the same view, in [0, 2]:
+// the coverage that differs, plus, where both cover, the mean absolute sRGB
+// difference of the colours, weighed by the coverage they share.
+double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b);
+
+// Measures every proxy and plans. `boxes` as node_boxes gives them; `textures`
+// the model's, decoded (unused when the mode is untextured).
+HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
+                       const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings);
+
+// The plan's steps, bytes and errors from its proxies (plan_hybrid's second
+// half): deterministic, ties to the lower node index.
+void order_hybrid_plan(const Model& model, HybridPlan& plan);
+
+// Per node, after `steps` steps of the plan: the proxy it is drawn by (an index
+// into plan.proxies[n]) or -1 where it keeps its own geometry. A node matters
+// only where every ancestor keeps its geometry.
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps);
+
+// The cut after `steps` steps (cut.h): nodes at a box proxy in box_nodes, at a
+// simplified one in simplified_nodes; the others keep their geometry.
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps);
+
+// The longest prefix of the plan whose bytes stay within `budget`.
+std::size_t hybrid_steps_within(const HybridPlan& plan, double budget);
+
+// Levels 1..N of the plan at byte budgets geometric from the root's cheapest
+// proxy to the original, B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's:
+// steps[c] is level c's prefix (steps[0]: the whole plan), never shorter at a
+// finer level; L(n) is the largest level at which n keeps its geometry.
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted_levels, std::vector<std::size_t>& steps);
+
+}  // namespace boxlod
