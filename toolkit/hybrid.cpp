@@ -351,8 +351,7 @@ LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted
     const double start = std::max(plan.bytes.front(), 1.0), original = std::max(plan.bytes.back(), 1.0);
     for (int c = wanted_levels; c >= 1; --c) {  // B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's
         const double t = double(c) / wanted_levels;
-        const std::size_t k = hybrid_steps_within(plan, std::exp((1 - t) * std::log(original) + t * std::log(start)));
-        steps[std::size_t(c)] = c == wanted_levels ? k : std::max(k, steps[std::size_t(c) + 1]);
+        steps[std::size_t(c)] = hybrid_steps_within(plan, std::exp((1 - t) * std::log(original) + t * std::log(start)));
         for (int n : hybrid_cut(model, plan, steps[std::size_t(c)]).geometry_nodes)
             values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, wanted_levels - 1));
     }
@@ -360,9 +359,10 @@ LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted
 }
 
 std::size_t hybrid_steps_within(const HybridPlan& plan, double budget) {
+    // Not the longest prefix: an opening that gains nothing yet can raise the error for a while.
     std::size_t steps = 0;
-    for (std::size_t k = 0; k < plan.bytes.size(); ++k)
-        if (plan.bytes[k] <= budget * (1 + 1e-12)) steps = k;
+    for (std::size_t k = 1; k < plan.bytes.size(); ++k)
+        if (plan.bytes[k] <= budget * (1 + 1e-12) && plan.error[k] < plan.error[steps]) steps = k;
     return steps;
 }
 

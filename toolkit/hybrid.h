@@ -81,13 +81,14 @@ std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps);
 // simplified one in simplified_nodes; the others keep their geometry.
 Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps);
 
-// The longest prefix of the plan whose bytes stay within `budget`.
+// The prefix of the plan with the lowest error among those whose bytes stay
+// within `budget` (the shortest of equal error); 0 when none does.
 std::size_t hybrid_steps_within(const HybridPlan& plan, double budget);
 
 // Levels 1..N of the plan at byte budgets geometric from the root's cheapest
 // proxy to the original, B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's:
-// steps[c] is level c's prefix (steps[0]: the whole plan), never shorter at a
-// finer level; L(n) is the largest level at which n keeps its geometry.
+// steps[c] is level c's prefix (steps[0]: the whole plan), the best within
+// B_c; L(n) is the largest level at which n keeps its geometry.
 LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted_levels, std::vector<std::size_t>& steps);
 
 }  // namespace boxlod
