@@ -291,11 +291,7 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     plan.proxies.resize(model.nodes.size());
     const bool textured = settings.mode != RenderMode::untextured;
     const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
-    std::vector<std::size_t> triangles(model.nodes.size(), 0);
-    for (std::size_t n = model.nodes.size(); n-- > 0;) {  // children after their parent (model.h)
-        for (const Primitive& p : model.nodes[n].primitives) triangles[n] += p.triangle_count();
-        if (model.nodes[n].parent >= 0) triangles[std::size_t(model.nodes[n].parent)] += triangles[n];
-    }
+    const std::vector<std::size_t> triangles = subtree_triangles(model);
     // A node is measured where some proxy may cost less than its sub-tree's
     // mesh: its box, or a simplified sub-tree (enough triangles for the first share).
     std::vector<int> measured;

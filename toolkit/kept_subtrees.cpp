@@ -24,6 +24,10 @@ std::vector<std::size_t> subtree_faces(const Model& model) {
     return sum_over_subtrees<std::size_t>(model, [](const Primitive& p) { return p.polygon_count; });
 }
 
+std::vector<std::size_t> subtree_triangles(const Model& model) {
+    return sum_over_subtrees<std::size_t>(model, [](const Primitive& p) { return p.triangle_count(); });
+}
+
 std::vector<std::uint64_t> subtree_mesh_bytes(const Model& model) {
     return sum_over_subtrees<std::uint64_t>(model, [&](const Primitive& p) { return primitive_mesh_bytes(p, model); });
 }

@@ -20,8 +20,9 @@
 
 namespace boxlod {
 
-// Faces (polygons as stored) of each node's whole sub-tree.
+// Faces (polygons as stored) and triangles of each node's whole sub-tree.
 std::vector<std::size_t> subtree_faces(const Model& model);
+std::vector<std::size_t> subtree_triangles(const Model& model);
 // Vertex and index bytes of each node's whole sub-tree as exported (cost.h).
 std::vector<std::uint64_t> subtree_mesh_bytes(const Model& model);
 
