@@ -13,6 +13,7 @@
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
+#include "toolkit/level_budgets.h"
 #include "toolkit/simplification.h"
 #include "experiments/single_box.h"
 #include "toolkit/cgal_simplification.h"
@@ -297,7 +298,9 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
     for (LevelMode mode : config.level_modes)
         for (BoxKind kind : config.box_kinds)
             for (Interpolation interpolation : config.interpolations) {
-                const int obtained = obtained_levels(model, mode, config.lod.wanted_levels);
+                LodParameters asked = config.lod;
+                asked.level_mode = mode;
+                const int obtained = obtained_levels(model, mode, asked_levels(asked));
                 Variant variant{mode, kind, interpolation, obtained, {}};
                 for (int level = 0; level <= obtained; ++level)
                     if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
@@ -486,6 +489,7 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
                 p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy) *
                              std::ldexp(1.0f, sizing_level - 1);
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
+                if (!orders_by_bytes(p.level_mode)) p.budgets.clear();  // the other modes make wanted_levels levels
                 session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
             }
             Lod lod = build_lod(*session, level, run.threads);
@@ -525,6 +529,21 @@ void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const st
     });
 }
 
+// The finest simplification whose bytes (cost.h, every texture) stay within
+// `budget`: from the original's triangles scaled by the bytes, down in
+// proportion to the overshoot (a few rounds: bytes follow the triangles closely).
+Model simplified_within(const Model& model, double budget, const std::function<Model(std::size_t)>& simplify) {
+    std::size_t target = std::max<std::size_t>(mesh_counts(model).triangles, 1);
+    Model simplified = simplify(target);
+    for (int round = 0; round < 16; ++round) {
+        const double bytes = double(model_cost(simplified).bytes());
+        if (bytes <= budget || target == 1) break;
+        target = std::max<std::size_t>(1, std::min(target - 1, std::size_t(double(target) * budget / bytes * 0.98)));
+        simplified = simplify(target);
+    }
+    return simplified;
+}
+
 // The baselines: the same rows, drawn by a mesh that depends on no view, distance or mode.
 void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first) {
     const SweepConfig& config = run.config;
@@ -554,17 +573,28 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
         }
         // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.
         const int alternatives = baseline == Baseline::simplification_best ? int(variants.size()) : 1;
+        // Levels by byte budget: each simplified as finely as its budget allows (equal bytes, not equal triangles).
+        const bool by_budget = orders_by_bytes(first.mode) && !config.lod.budgets.empty();
         for (int level : first.levels) {
-            std::size_t target = triangles_of_level(level);
+            const std::size_t target = triangles_of_level(level);
+            auto simplified = [&](const std::function<Model(std::size_t)>& simplify) {
+                if (!by_budget || level == 0) return simplify(target);
+                return simplified_within(run.model, budget_bytes(config.lod.budgets[std::size_t(level - 1)],
+                                                                 double(model_cost(run.model).bytes())),
+                                         simplify);
+            };
             run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
                       [&](int, int a) {
                           if (baseline == Baseline::cgal) {
-                              Candidate c = candidate(cgal_simplify(run.model, target), {}, 0, first.obtained_levels);
+                              Candidate c = candidate(simplified([&](std::size_t t) { return cgal_simplify(run.model, t); }),
+                                                      {}, 0, first.obtained_levels);
                               c.variant = "garland-heckbert";
                               return c;
                           }
                           const SimplifyVariant& v = variants[std::size_t(a)];
-                          Candidate c = candidate(simplify_model(run.model, target, v.options), {}, 0, first.obtained_levels);
+                          Candidate c = candidate(
+                              simplified([&](std::size_t t) { return simplify_model(run.model, t, v.options); }), {}, 0,
+                              first.obtained_levels);
                           c.variant = v.name;
                           return c;
                       },

@@ -3,6 +3,7 @@
 #include "toolkit/boxes.h"
 #include "toolkit/cost.h"
 #include "toolkit/kept_subtrees.h"
+#include "toolkit/level_budgets.h"
 #include "toolkit/lod_builder.h"
 #include "toolkit/vertex_layout.h"
 
@@ -24,7 +25,7 @@ void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f
     ++p.polygon_count;
 }
 
-// A flat, detailed facade: 48 x 48 tiles in four colours, flush in the plane
+// A flat, detailed facade: 96 x 96 tiles in four colours, flush in the plane
 // z = 0, under node `facade`. A box's front face shows it exactly; simplifying
 // its thousands of separate quads loses tiles.
 int add_facade(Model& model, int parent, float x0) {
@@ -32,7 +33,7 @@ int add_facade(Model& model, int parent, float x0) {
     const Eigen::Vector4f colors[4] = {{0.8f, 0.2f, 0.1f, 1}, {0.1f, 0.6f, 0.2f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.2f, 1}};
     for (const Eigen::Vector4f& color : colors) model.materials.emplace_back().base_color = color;
     const int facade = add_node(model, parent, "facade");
-    const int n = 48;
+    const int n = 96;  // its mesh, even welded, costs more than its box's pages
     const float tile = 4.0f / n;
     for (int k = 0; k < 4; ++k) model.nodes[std::size_t(facade)].primitives.emplace_back().material = first_material + k;
     for (int y = 0; y < n; ++y)
@@ -140,20 +141,24 @@ TEST(Hybrid, PlansTheSameForAnyThreadCount) {
     EXPECT_EQ(one.error, two.error);
 }
 
-// Hand-set proxies where the best order is known: the root's proxy is cheap and
-// bad; opening it shows child a at a bad proxy and child b at a fair one; a's
-// better proxy buys the most error per byte, then b's, then opening b, then a.
-TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
+namespace {
+
+// A root over two children a (node 1) and b (node 2) with 30 vertices each.
+Model two_children() {
     Model model;
     add_node(model, -1, "root");
-    const int a = add_node(model, 0, "a"), b = add_node(model, 0, "b");
-    for (int n : {a, b}) {  // each child's own geometry
-        Primitive& p = model.nodes[std::size_t(n)].primitives.emplace_back();
+    for (const char* name : {"a", "b"}) {
+        Primitive& p = model.nodes[std::size_t(add_node(model, 0, name))].primitives.emplace_back();
         p.positions.assign(30, Eigen::Vector3f::Zero());
         for (std::uint32_t i = 0; i < 30; ++i) p.indices.push_back(i);
     }
-    const double own = double(primitive_mesh_bytes(model.nodes[std::size_t(a)].primitives[0], model));
-    ASSERT_GT(own, 300);
+    return model;
+}
+
+// Hand-set proxies where the best order is known: the root's proxy is cheap and
+// bad; opening it shows child a at a bad proxy and child b at a fair one; a's
+// better proxy buys the most error per byte, then b's, then opening b, then a.
+HybridPlan hand_set_plan(const Model& model) {
     HybridPlan plan;
     plan.proxies.resize(3);
     auto proxy = [](double bytes, double error) {
@@ -162,9 +167,20 @@ TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
         return p;
     };
     plan.proxies[0] = {proxy(100, 1000)};
-    plan.proxies[std::size_t(a)] = {proxy(50, 400), proxy(150, 100)};  // +100 bytes: -300 error (3 per byte)
-    plan.proxies[std::size_t(b)] = {proxy(60, 200), proxy(100, 120)};  // +40 bytes: -80 error (2 per byte)
+    plan.proxies[1] = {proxy(50, 400), proxy(150, 100)};  // a: +100 bytes: -300 error (3 per byte)
+    plan.proxies[2] = {proxy(60, 200), proxy(100, 120)};  // b: +40 bytes: -80 error (2 per byte)
     order_hybrid_plan(model, plan);
+    return plan;
+}
+
+}  // namespace
+
+TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
+    const Model model = two_children();
+    const int a = 1, b = 2;
+    const double own = double(primitive_mesh_bytes(model.nodes[std::size_t(a)].primitives[0], model));
+    ASSERT_GT(own, 300);
+    const HybridPlan plan = hand_set_plan(model);
     // Opening the root: 1000 -> 600 for +10 bytes (40 per byte; the root has no geometry of its own).
     const std::vector<std::pair<int, int>> expected = {{0, -1}, {a, 1}, {b, 1}, {b, -1}, {a, -1}};
     ASSERT_EQ(plan.steps.size(), expected.size());
@@ -175,6 +191,45 @@ TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
     const std::vector<double> bytes = {100, 110, 210, 250, 150 + own, 2 * own}, error = {1000, 600, 300, 220, 100, 0};
     EXPECT_EQ(plan.bytes, bytes);
     EXPECT_EQ(plan.error, error);
+}
+
+// The same hand-set proxies within 160 bytes: the plan's next change (a's
+// better proxy, +100) does not fit after opening the root (110 bytes), so the
+// level takes b's (+40) instead of stopping at 110.
+TEST(Hybrid, ALevelFillsItsBudgetWithTheChangesThatFit) {
+    Model model = two_children();
+    HybridPlan plan = hand_set_plan(model);
+    EXPECT_EQ(best_prefix_within(plan.bytes, plan.error, 160), 1u);  // the plan's own prefix stops at 110 bytes
+    const HybridLevel level = hybrid_level_within(model, plan, 160);
+    EXPECT_EQ(level.bytes, 150);
+    EXPECT_EQ(level.error, 520);
+    EXPECT_EQ(level.state, (std::vector<int>{-1, 0, 1}));
+    EXPECT_EQ(hybrid_level_within(model, plan, 50).state, (std::vector<int>{0, 0, 0}));  // nothing fits: the root's cheapest
+}
+
+// Every level within its budget, real bytes (mesh + every texture), stated in
+// its statistics; a tight budget below what the estimates allow is met by stepping back.
+TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
+    Scene s = facade_and_sphere();
+    for (LevelMode mode : {LevelMode::hybrid, LevelMode::error_greedy}) {
+        LodParameters parameters;
+        parameters.level_mode = mode;
+        parameters.box_kind = BoxKind::minimal;
+        ASSERT_EQ(parse_budgets("0.6,0.3,0.1,0.03", parameters.budgets), "");
+        parameters.distance = settings_for(0.16f, 1).sizing.distance;
+        parameters.min_texture_size = 16;
+        auto session = start_lod(s.model, parameters, 2);
+        ASSERT_EQ(session->levels.obtained_levels, 4);
+        const double original = double(session->original_cost.bytes());
+        for (int c = 1; c <= 4; ++c) {
+            Lod lod = build_lod(*session, c, 2);
+            const double spent = double(combined_cost({&lod.cost}).bytes());
+            const double budget = budget_bytes(parameters.budgets[std::size_t(c - 1)], original);
+            EXPECT_LE(spent, budget) << level_mode_name(mode) << " level " << c;
+            EXPECT_EQ(value_of(lod.statistics, "budget_bytes"), format_number(std::floor(budget)));
+            EXPECT_EQ(value_of(lod.statistics, "bytes_lod"), format_number(spent));
+        }
+    }
 }
 
 TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
@@ -192,12 +247,13 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
         Lod lod = build_lod(*session, c, 2);
         some_box |= !lod.cut.box_nodes.empty();
         some_simplified |= !lod.cut.simplified_nodes.empty();
-        // A simplified node draws fewer triangles than its sub-tree.
+        // A simplified node draws no more triangles than its sub-tree, in fewer bytes (at share 1 only welded).
         for (auto [node, proxy] : lod.cut.simplified_nodes) {
+            const Proxy& drawn = session->hybrid->proxies[std::size_t(node)][std::size_t(proxy)];
             std::size_t triangles = 0;
-            for (const Primitive& p : session->hybrid->proxies[std::size_t(node)][std::size_t(proxy)].primitives)
-                triangles += p.triangle_count();
-            EXPECT_LT(triangles, subtree_faces(s.model)[std::size_t(node)]);
+            for (const Primitive& p : drawn.primitives) triangles += p.triangle_count();
+            EXPECT_LE(triangles, subtree_faces(s.model)[std::size_t(node)]);
+            EXPECT_LT(drawn.bytes, double(subtree_mesh_bytes(s.model)[std::size_t(node)]));
         }
     }
     EXPECT_TRUE(some_box);

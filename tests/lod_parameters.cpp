@@ -17,7 +17,7 @@ TEST(LodParameters, KeysAndOptionsAreDeclaredOnce) {
         EXPECT_EQ(find_lod_parameter(d.key), &d);
     }
     EXPECT_EQ(find_lod_parameter("smoothness"), nullptr);
-    EXPECT_EQ(keys.size(), 17u);
+    EXPECT_EQ(keys.size(), 18u);
 }
 
 TEST(LodParameters, EveryValueReadsBackAsWritten) {
@@ -25,6 +25,7 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
     changed.model = "m.glb";
     changed.level_mode = LevelMode::box_volume;
     changed.wanted_levels = 5;
+    changed.budgets = {{false, 2e6}, {false, 1024}};
     changed.box_kind = BoxKind::minimal;
     changed.keep_small_subtrees = true;
     changed.crop_faces = false;

@@ -2,6 +2,7 @@
 
 #include "toolkit/cost.h"
 #include "toolkit/kept_subtrees.h"
+#include "toolkit/level_budgets.h"
 
 #include <cmath>
 #include <set>
@@ -76,6 +77,28 @@ GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional
     return opening;
 }
 
+std::vector<std::size_t> greedy_prefixes(const GreedyOpening& opening, const std::vector<double>& budgets) {
+    const std::size_t levels = budgets.size();
+    std::vector<std::size_t> prefix(levels + 1, opening.order.size());
+    if (opening.order.empty()) return prefix;
+    for (std::size_t c = levels; c >= 1; --c) {  // never fewer openings than a coarser level
+        const std::size_t k = longest_prefix_within(opening.bytes, budgets[c - 1]);
+        prefix[c] = c == levels ? k : std::max(k, prefix[c + 1]);
+    }
+    return prefix;
+}
+
+std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening, const std::vector<std::size_t>& prefixes) {
+    std::vector<int> level(model.nodes.size(), 0);
+    for (std::size_t step = 0; step < opening.order.size(); ++step)
+        for (std::size_t c = prefixes.size() - 1; c >= 1; --c)
+            if (prefixes[c] > step) {  // opened at step + 1 <= prefix: open at level c
+                level[std::size_t(opening.order[step])] = int(c);
+                break;
+            }
+    return level;
+}
+
 LevelValues error_greedy_levels(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes,
                                 int wanted_levels, const TextureSizing& sizing, bool textured) {
     const GreedyOpening opening = greedy_opening(model, boxes, sizing, textured);
@@ -83,23 +106,8 @@ LevelValues error_greedy_levels(const Model& model, const std::vector<std::optio
     values.obtained_levels = wanted_levels;
     values.level.assign(model.nodes.size(), 0);
     if (opening.order.empty()) return values;
-    const double root = std::max(opening.bytes.front(), 1.0), original = std::max(opening.bytes.back(), 1.0);
-    // prefix[c]: openings kept at level c, never more at a coarser level.
-    std::vector<std::size_t> prefix(std::size_t(wanted_levels) + 1, 0);
-    for (int c = wanted_levels; c >= 1; --c) {
-        const double t = double(c) / wanted_levels;
-        const double budget = std::exp((1 - t) * std::log(original) + t * std::log(root));
-        std::size_t k = 0;
-        for (std::size_t j = 0; j < opening.bytes.size(); ++j)
-            if (opening.bytes[j] <= budget * (1 + 1e-12)) k = j;
-        prefix[std::size_t(c)] = c == wanted_levels ? k : std::max(k, prefix[std::size_t(c) + 1]);
-    }
-    for (std::size_t step = 0; step < opening.order.size(); ++step)
-        for (int c = wanted_levels; c >= 1; --c)
-            if (prefix[std::size_t(c)] > step) {  // opened at step + 1 <= prefix: open at level c
-                values.level[std::size_t(opening.order[step])] = c;
-                break;
-            }
+    values.level = opened_levels(
+        model, opening, greedy_prefixes(opening, geometric_budgets(opening.bytes.front(), opening.bytes.back(), wanted_levels)));
     return values;
 }
 

@@ -37,9 +37,16 @@ struct GreedyOpening {
 GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes,
                              const TextureSizing& sizing, bool textured);
 
-// Level values from the opening: N = wanted_levels; level c keeps the longest
-// prefix of openings whose cut costs at most B_c = B_orig^(1 - c/N) B_root^(c/N),
-// and L(n) is the largest c at which n is open (0: never in 1..N).
+// Per level c = 1..N of budgets B_1..B_N (bytes), the openings it keeps: the
+// longest prefix whose cut costs at most B_c, never fewer than a coarser
+// level's, so levels nest. [0]: every opening (the original).
+std::vector<std::size_t> greedy_prefixes(const GreedyOpening& opening, const std::vector<double>& budgets);
+
+// Per node, the largest c whose prefix opens it (0: none of 1..N), as level values.
+std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening, const std::vector<std::size_t>& prefixes);
+
+// Level values from the opening: N = wanted_levels, budgets geometric from the
+// root's box to the original (level_budgets.h: geometric_budgets).
 LevelValues error_greedy_levels(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes,
                                 int wanted_levels, const TextureSizing& sizing, bool textured);
 

@@ -4,11 +4,13 @@
 #include "toolkit/bake.h"
 #include "toolkit/framing.h"
 #include "toolkit/kept_subtrees.h"
+#include "toolkit/level_budgets.h"
 #include "toolkit/simplification.h"
 #include "toolkit/vertex_layout.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <tuple>
 
@@ -17,7 +19,7 @@ namespace {
 
 // The sub-tree simplified to these shares of its triangles: a few error
 // targets from slight to coarse, each a quarter of the one before.
-constexpr double simplified_shares[] = {0.25, 1.0 / 16, 1.0 / 64};
+constexpr double simplified_shares[] = {1, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 constexpr std::size_t fewest_simplified_triangles = 4;
 
 // Where a sub-tree is measured: its bounding sphere seen orthographically from
@@ -167,7 +169,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
     SimplifyOptions options;
     options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
     options.threads = 1;
-    std::size_t previous = subtree_triangles;
+    std::size_t previous = subtree_triangles + 1;
     for (double share : simplified_shares) {
         const auto target = std::size_t(double(subtree_triangles) * share);
         if (target < fewest_simplified_triangles) break;
@@ -178,10 +180,12 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         if (triangles == 0 || triangles >= previous) continue;  // nothing left, or no simpler than the last
         previous = triangles;
         proxy.bytes = mesh_bytes(proxy.primitives, model);
-        std::vector<const Primitive*> primitives;
-        for (const Primitive& p : proxy.primitives) primitives.push_back(&p);
-        const Drawable drawable = make_drawable(model.materials, textures, primitives);
-        proxy.error = measured_error(original, render_views(drawable, view, settings.mode), view, settings);
+        if (triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
+            std::vector<const Primitive*> primitives;
+            for (const Primitive& p : proxy.primitives) primitives.push_back(&p);
+            const Drawable drawable = make_drawable(model.materials, textures, primitives);
+            proxy.error = measured_error(original, render_views(drawable, view, settings.mode), view, settings);
+        }
         proxies.push_back(std::move(proxy));
     }
     std::stable_sort(proxies.begin(), proxies.end(), [](const Proxy& a, const Proxy& b) { return a.bytes < b.bytes; });
@@ -191,38 +195,46 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
     return kept;
 }
 
-// The greedy order (docs/design.md: The hybrid level mode).
+// The greedy order (docs/design.md: The hybrid level mode), within a byte
+// budget: a change that would exceed it gives way to the node's best change
+// that fits, if any, so a level fills its budget where the unbounded order
+// takes one large step past it.
 class Planner {
 public:
-    Planner(const Model& model, HybridPlan& plan) : model_(model), plan_(plan), state_(model.nodes.size(), -1) {
+    Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
+        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1) {
         subtree_bytes_.assign(model.nodes.size(), 0);
         own_bytes_.assign(model.nodes.size(), 0);
         const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
         for (std::size_t n = 0; n < model.nodes.size(); ++n) {
             subtree_bytes_[n] = double(subtree[n]);
             own_bytes_[n] = mesh_bytes(model.nodes[n].primitives, model);
-            if (!plan.proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
+            if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
         }
     }
 
-    void run() {
-        plan_.bytes.push_back(drawn_bytes(0));
-        plan_.error.push_back(drawn_error(0));
+    void run(std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
+        bytes.push_back(drawn_bytes(0));
+        error.push_back(drawn_error(0));
         if (state_[0] < 0) return;  // the root has no proxy: only the original
-        consider(0);
+        consider(0, budget_ - bytes.back());
         while (!frontier_.empty()) {
             const Move move = std::get<3>(*frontier_.begin());
             frontier_.erase(frontier_.begin());
-            plan_.steps.push_back({move.node, move.proxy});
-            plan_.bytes.push_back(plan_.bytes.back() + move.cost);
-            plan_.error.push_back(plan_.error.back() - move.gain);
+            if (bytes.back() + move.cost > budget_ * (1 + 1e-12)) {  // its best that fits, if any
+                consider(move.node, budget_ - bytes.back());
+                continue;
+            }
+            steps.push_back({move.node, move.proxy});
+            bytes.push_back(bytes.back() + move.cost);
+            error.push_back(error.back() - move.gain);
             state_[std::size_t(move.node)] = move.proxy;
             if (move.proxy >= 0) {
-                consider(move.node);
+                consider(move.node, budget_ - bytes.back());
                 continue;
             }
             for (int child : model_.nodes[std::size_t(move.node)].children)
-                if (state_[std::size_t(child)] >= 0) consider(child);
+                if (state_[std::size_t(child)] >= 0) consider(child, budget_ - bytes.back());
         }
     }
 
@@ -244,11 +256,11 @@ private:
     // Bytes and error of node n's sub-tree as drawn when n is reached in its current state.
     double drawn_bytes(int n) const {
         const int s = state_[std::size_t(n)];
-        return s >= 0 ? plan_.proxies[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
+        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
     }
     double drawn_error(int n) const {
         const int s = state_[std::size_t(n)];
-        return s >= 0 ? plan_.proxies[std::size_t(n)][std::size_t(s)].error : 0;
+        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].error : 0;
     }
 
     static Key key(const Move& m) {
@@ -257,24 +269,38 @@ private:
         return {2, m.cost, m.node, m};
     }
 
-    // Puts node n's best change into the frontier.
-    void consider(int n) {
-        const std::vector<Proxy>& proxies = plan_.proxies[std::size_t(n)];
+    // Puts node n's best change adding at most `room` bytes into the frontier.
+    void consider(int n, double room) {
+        const std::vector<Proxy>& proxies = proxies_[std::size_t(n)];
         const Proxy& now = proxies[std::size_t(state_[std::size_t(n)])];
+        std::optional<Key> best;
+        auto offer = [&](const Move& m) {
+            if (m.cost <= room * (1 + 1e-12) + 1e-9 && (!best || KeyOrder{}(key(m), *best))) best = key(m);
+        };
         Move open{n, -1, now.error, own_bytes_[std::size_t(n)] - now.bytes};
         for (int child : model_.nodes[std::size_t(n)].children) open.gain -= drawn_error(child), open.cost += drawn_bytes(child);
-        Key best = key(open);
+        offer(open);
         for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies.size(); ++j)
-            best = std::min(best, key({n, int(j), now.error - proxies[j].error, proxies[j].bytes - now.bytes}), KeyOrder{});
-        frontier_.insert(best);
+            offer({n, int(j), now.error - proxies[j].error, proxies[j].bytes - now.bytes});
+        if (best) frontier_.insert(*best);
     }
 
     const Model& model_;
-    HybridPlan& plan_;
+    const std::vector<std::vector<Proxy>>& proxies_;
+    double budget_;
     std::vector<int> state_;
     std::vector<double> subtree_bytes_, own_bytes_;
     std::set<Key, KeyOrder> frontier_;
 };
+
+// Per node, after the first `count` of `steps`: its proxy, or -1 where it keeps its geometry.
+std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps, std::size_t count) {
+    std::vector<int> state(plan.proxies.size(), -1);
+    for (std::size_t n = 0; n < plan.proxies.size(); ++n)
+        if (!plan.proxies[n].empty()) state[n] = 0;
+    for (std::size_t k = 0; k < std::min(count, steps.size()); ++k) state[std::size_t(steps[k].node)] = steps[k].proxy;
+    return state;
+}
 
 }  // namespace
 
@@ -293,11 +319,11 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
     const std::vector<std::size_t> triangles = subtree_triangles(model);
     // A node is measured where some proxy may cost less than its sub-tree's
-    // mesh: its box, or a simplified sub-tree (enough triangles for the first share).
+    // mesh: its box, or a simplified sub-tree (enough triangles for the first share that simplifies).
     std::vector<int> measured;
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
         if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < bytes[n] ||
-                         double(triangles[n]) * simplified_shares[0] >= double(fewest_simplified_triangles)))
+                         double(triangles[n]) * simplified_shares[1] >= double(fewest_simplified_triangles)))
             measured.push_back(int(n));
     parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
         const auto n = std::size_t(measured[i]);
@@ -309,19 +335,20 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
 
 void order_hybrid_plan(const Model& model, HybridPlan& plan) {
     plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
-    Planner(model, plan).run();
+    Planner(model, plan.proxies, std::numeric_limits<double>::infinity()).run(plan.steps, plan.bytes, plan.error);
 }
 
-std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) {
-    std::vector<int> state(plan.proxies.size(), -1);
-    for (std::size_t n = 0; n < plan.proxies.size(); ++n)
-        if (!plan.proxies[n].empty()) state[n] = 0;
-    for (std::size_t k = 0; k < std::min(steps, plan.steps.size()); ++k) state[std::size_t(plan.steps[k].node)] = plan.steps[k].proxy;
-    return state;
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { return state_after(plan, plan.steps, steps); }
+
+HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
+    std::vector<HybridStep> steps;
+    std::vector<double> bytes, error;
+    Planner(model, plan.proxies, budget).run(steps, bytes, error);
+    const std::size_t best = best_prefix_within(bytes, error, budget);
+    return {state_after(plan, steps, best), bytes[best], error[best]};
 }
 
-Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps) {
-    const std::vector<int> state = hybrid_state(plan, steps);
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state) {
     Cut cut;
     for (std::vector<int> stack{0}; !stack.empty();) {
         const int n = stack.back();
@@ -339,27 +366,19 @@ Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps) {
     return cut;
 }
 
-LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted_levels, std::vector<std::size_t>& steps) {
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, const std::vector<double>& budgets,
+                          std::vector<HybridLevel>& levels) {
+    const int count = int(budgets.size());
     LevelValues values;
-    values.obtained_levels = wanted_levels;
+    values.obtained_levels = count;
     values.level.assign(model.nodes.size(), 0);
-    steps.assign(std::size_t(wanted_levels) + 1, plan.steps.size());
-    const double start = std::max(plan.bytes.front(), 1.0), original = std::max(plan.bytes.back(), 1.0);
-    for (int c = wanted_levels; c >= 1; --c) {  // B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's
-        const double t = double(c) / wanted_levels;
-        steps[std::size_t(c)] = hybrid_steps_within(plan, std::exp((1 - t) * std::log(original) + t * std::log(start)));
-        for (int n : hybrid_cut(model, plan, steps[std::size_t(c)]).geometry_nodes)
-            values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, wanted_levels - 1));
+    levels.assign(budgets.size() + 1, {std::vector<int>(model.nodes.size(), -1), plan.bytes.back(), 0});
+    for (int c = count; c >= 1; --c) {
+        levels[std::size_t(c)] = hybrid_level_within(model, plan, budgets[std::size_t(c - 1)]);
+        for (int n : hybrid_cut(model, plan, levels[std::size_t(c)].state).geometry_nodes)
+            values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, count - 1));
     }
     return values;
-}
-
-std::size_t hybrid_steps_within(const HybridPlan& plan, double budget) {
-    // Not the longest prefix: an opening that gains nothing yet can raise the error for a while.
-    std::size_t steps = 0;
-    for (std::size_t k = 1; k < plan.bytes.size(); ++k)
-        if (plan.bytes[k] <= budget * (1 + 1e-12) && plan.error[k] < plan.error[steps]) steps = k;
-    return steps;
 }
 
 }  // namespace boxlod

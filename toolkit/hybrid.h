@@ -9,9 +9,10 @@
 // them. Starting from the root's cheapest proxy, a plan repeatedly takes the
 // change (swap a node's proxy for a better one, or open the node: its own
 // geometry and its children at their cheapest proxies) with the largest drop
-// of error per added byte; a level is a prefix of that plan within its byte
-// budget. No peer chooses by measured error per byte: boxes win on flat,
-// detailed facades, simplification on curved or thin parts.
+// of error per added byte; a level takes that order again within its byte
+// budget, changes that would exceed it giving way to those that still fit.
+// No peer chooses by measured error per byte: boxes win on flat, detailed
+// facades, simplification on curved or thin parts.
 #pragma once
 #include "renderer/renderer.h"
 #include "toolkit/cut.h"
@@ -77,18 +78,27 @@ void order_hybrid_plan(const Model& model, HybridPlan& plan);
 // only where every ancestor keeps its geometry.
 std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps);
 
-// The cut after `steps` steps (cut.h): nodes at a box proxy in box_nodes, at a
+// A level of the plan: its state (as hybrid_state's), estimated bytes and error.
+struct HybridLevel {
+    std::vector<int> state;
+    double bytes = 0, error = 0;
+};
+
+// The best level within `budget` bytes: the plan's order taken again, a change
+// that would exceed the budget giving way to the node's best change that fits;
+// of the states passed, the lowest error (the first of equal error). Beyond
+// the budget only when the root's cheapest proxy is.
+HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget);
+
+// The cut of a state (cut.h): nodes at a box proxy in box_nodes, at a
 // simplified one in simplified_nodes; the others keep their geometry.
-Cut hybrid_cut(const Model& model, const HybridPlan& plan, std::size_t steps);
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state);
 
-// The prefix of the plan with the lowest error among those whose bytes stay
-// within `budget` (the shortest of equal error); 0 when none does.
-std::size_t hybrid_steps_within(const HybridPlan& plan, double budget);
-
-// Levels 1..N of the plan at byte budgets geometric from the root's cheapest
-// proxy to the original, B_c = B_orig^(1 - c/N) B_start^(c/N), as error-greedy's:
-// steps[c] is level c's prefix (steps[0]: the whole plan), the best within
-// B_c; L(n) is the largest level at which n keeps its geometry.
-LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, int wanted_levels, std::vector<std::size_t>& steps);
+// Levels 1..N at byte budgets B_1..B_N (level_budgets.h; by default geometric
+// from the root's cheapest proxy to the original, as error-greedy's): levels[c]
+// is level c's (levels[0]: the original); L(n) is the largest level at which n
+// keeps its geometry.
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, const std::vector<double>& budgets,
+                          std::vector<HybridLevel>& levels);
 
 }  // namespace boxlod

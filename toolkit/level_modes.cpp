@@ -131,7 +131,9 @@ bool is_box_mode(LevelMode mode) {
            mode == LevelMode::box_max_extent;
 }
 
-bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || mode == LevelMode::error_greedy || mode == LevelMode::hybrid; }
+bool orders_by_bytes(LevelMode mode) { return mode == LevelMode::error_greedy || mode == LevelMode::hybrid; }
+
+bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || orders_by_bytes(mode); }
 
 LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
                                  const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing,

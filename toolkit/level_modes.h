@@ -34,6 +34,7 @@ bool parse_interpolation(const std::string& name, Interpolation& interpolation);
 const char* interpolation_name(Interpolation interpolation);
 bool is_box_mode(LevelMode mode);
 bool uses_boxes(LevelMode mode);  // the box modes, error-greedy and hybrid
+bool orders_by_bytes(LevelMode mode);  // error-greedy and hybrid: their levels can take byte budgets (level_budgets.h)
 
 struct LevelValues {
     std::vector<int> level;  // per node

@@ -7,6 +7,7 @@
 #include "toolkit/error_greedy.h"
 #include "toolkit/framing.h"
 #include "toolkit/kept_subtrees.h"
+#include "toolkit/level_budgets.h"
 #include "toolkit/model_subtree.h"
 #include "toolkit/statistics.h"
 
@@ -73,6 +74,9 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     if (model.is_lod)
         throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
     validate_parameters(parameters, model.source);
+    if (!parameters.budgets.empty() && !orders_by_bytes(parameters.level_mode))  // a sweep drops them for the other modes
+        throw_input_error(model.source, "", std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +
+                                                " does not order its cuts by bytes; budgets are for error-greedy and hybrid");
     auto session = std::make_unique<LodSession>();
     session->model = &model;
     session->parameters = parameters;
@@ -87,19 +91,29 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->times.boxes = seconds_since(start);
     if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
     start = Clock::now();
+    session->original_cost = model_cost(model);
+    const int levels = asked_levels(p);
+    std::vector<double> budgets;  // levels 1..N, bytes
+    for (const ByteBudget& b : p.budgets) budgets.push_back(budget_bytes(b, double(session->original_cost.bytes())));
+    const bool textured = p.render_mode != RenderMode::untextured;
     if (p.level_mode == LevelMode::hybrid) {
         session->hybrid = std::make_shared<const HybridPlan>(
             plan_hybrid(model, session->textures, session->boxes, {session->sizing, p.render_mode, threads}));
-        session->levels = hybrid_levels(model, *session->hybrid, p.wanted_levels, session->hybrid_steps);
+        const HybridPlan& plan = *session->hybrid;
+        if (budgets.empty()) budgets = geometric_budgets(plan.bytes.front(), plan.bytes.back(), levels);
+        session->levels = hybrid_levels(model, plan, budgets, session->hybrid_levels);
+    } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
+        session->opening = std::make_shared<const GreedyOpening>(greedy_opening(model, session->boxes, session->sizing, textured));
+        session->opening_steps = greedy_prefixes(*session->opening, budgets);
+        session->levels = {opened_levels(model, *session->opening, session->opening_steps), levels};
     } else {
-        session->levels = compute_level_values(model, p.level_mode, p.wanted_levels, p.interpolation, session->boxes,
-                                               session->sizing, p.render_mode != RenderMode::untextured);
+        session->levels = compute_level_values(model, p.level_mode, levels, p.interpolation, session->boxes, session->sizing,
+                                               textured);
     }
     session->times.levels = seconds_since(start);
     if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid)  // the plan keeps what pays (hybrid.h)
         session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
-                                      p.render_mode != RenderMode::untextured);
-    session->original_cost = model_cost(model);
+                                      textured);
     return session;
 }
 
@@ -422,6 +436,10 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
     };
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
+    const LodParameters& p = session.parameters;
+    if (!p.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
+        statistics.push_back(number_entry(
+            "budget_bytes", std::floor(budget_bytes(p.budgets[std::size_t(lod.current_level - 1)], double(session.original_cost.bytes())))));
     statistics.push_back(number_entry("obtained_levels", session.levels.obtained_levels));
     statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
     return statistics;
@@ -431,21 +449,17 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
 
 LodPage lod_page(int page) { return {3 * page, 3 * page + 1, 3 * page + 2}; }
 
-// The build as named steps: cut, bake, pack, page, mesh, statistics.
-Lod build_lod(LodSession& session, int current_level, int threads) {
+namespace {
+
+// The build as named steps from the cut: bake, pack, page, mesh, statistics.
+Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     const Model& model = *session.model;
     const LodParameters& p = session.parameters;
-    int obtained = session.levels.obtained_levels;
-    if (current_level < 0 || current_level > obtained)
-        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
-                         " (the obtained number of levels)");
     const bool textured = p.render_mode != RenderMode::untextured;
     Lod lod;
     lod.current_level = current_level;
-    lod.cut = session.hybrid ? hybrid_cut(model, *session.hybrid, session.hybrid_steps[std::size_t(current_level)])
-                             : take_cut(model, session.levels.level, current_level, session.boxes, session.kept);
+    lod.cut = std::move(cut);
     for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
-
     auto start = Clock::now();
     if (textured) bake_new_boxes(session, lod.cut, threads);
     session.times.bake += seconds_since(start);
@@ -474,6 +488,86 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
     lod.cost = cost_parts(out);
     lod.statistics = lod_statistics(session, lod, packing);
     return lod;
+}
+
+
+// The cut of level c as the session holds it: a hybrid state, error-greedy's
+// openings within a budget, or the level values.
+Cut level_cut(const LodSession& session, int c) {
+    const Model& model = *session.model;
+    if (session.hybrid) return hybrid_cut(model, *session.hybrid, session.hybrid_levels[std::size_t(c)].state);
+    if (session.opening && c >= 1) {
+        const std::size_t steps = session.opening_steps[std::size_t(c)];
+        return take_cut(model, opened_levels(model, *session.opening, {steps, steps}), 1, session.boxes, session.kept);
+    }
+    return take_cut(model, session.levels.level, c, session.boxes, session.kept);
+}
+
+double spent_bytes(const Lod& lod) { return double(combined_cost({&lod.cost}).bytes()); }
+
+std::string budget_problem(int level, double budget, double coarsest) {
+    return "--budgets: level " + std::to_string(level) + "'s budget of " + format_number(std::floor(budget)) +
+           " bytes is below the coarsest cut's " + format_number(coarsest) + " bytes";
+}
+
+double level_budget(const LodSession& session, int level) {
+    return budget_bytes(session.parameters.budgets[std::size_t(level - 1)], double(session.original_cost.bytes()));
+}
+
+// Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its box).
+void set_level_within(LodSession& session, int c, double estimate) {
+    if (session.hybrid)
+        session.hybrid_levels[std::size_t(c)] = hybrid_level_within(*session.model, *session.hybrid, estimate);
+    else
+        session.opening_steps[std::size_t(c)] = estimate < 0 ? 0 : longest_prefix_within(session.opening->bytes, estimate);
+}
+
+// The estimates miss a level's real bytes (pages round up to powers of two,
+// each face brings a gutter): while the level spends more than its budget,
+// ask for a level cheaper in proportion. Its estimated bytes fall every time,
+// so this ends; below the coarsest cut no level fits.
+Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
+    const int c = lod.current_level;
+    const double budget = level_budget(session, c);
+    const std::size_t level = std::size_t(c);
+    auto estimated = [&] {
+        return session.hybrid ? session.hybrid_levels[level].bytes : session.opening->bytes[session.opening_steps[level]];
+    };
+    bool coarsest = false;
+    for (double spent = spent_bytes(lod); spent > budget; spent = spent_bytes(lod)) {
+        const double now = estimated(), lower = std::min(now * budget / spent, std::nextafter(now, 0.0));
+        set_level_within(session, c, lower);
+        if (estimated() >= now) {  // no cheaper estimate: the coarsest cut, once
+            if (coarsest) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+            set_level_within(session, c, -1), coarsest = true;
+        }
+        lod = build_cut(session, c, level_cut(session, c), threads);
+    }
+    return lod;
+}
+
+}  // namespace
+
+Lod build_lod(LodSession& session, int current_level, int threads) {
+    const int obtained = session.levels.obtained_levels;
+    if (current_level < 0 || current_level > obtained)
+        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
+                         " (the obtained number of levels)");
+    Lod lod = build_cut(session, current_level, level_cut(session, current_level), threads);
+    return session.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
+}
+
+void check_budget_reachable(LodSession& session, int level, int threads) {
+    if (session.parameters.budgets.empty() || level < 1 || level > int(session.parameters.budgets.size())) return;
+    // The coarsest cut built for real, its level then set back as it was.
+    const HybridLevel hybrid_level = session.hybrid ? session.hybrid_levels[std::size_t(level)] : HybridLevel{};
+    const std::size_t opening_steps = session.opening ? session.opening_steps[std::size_t(level)] : 0;
+    set_level_within(session, level, -1);
+    const double coarsest = spent_bytes(build_cut(session, level, level_cut(session, level), threads));
+    if (session.hybrid) session.hybrid_levels[std::size_t(level)] = hybrid_level;
+    else session.opening_steps[std::size_t(level)] = opening_steps;
+    if (coarsest > level_budget(session, level))
+        throw_input_error(session.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
 }
 
 }  // namespace boxlod

@@ -7,6 +7,7 @@
 #include "toolkit/bake.h"
 #include "toolkit/cost.h"
 #include "toolkit/cut.h"
+#include "toolkit/error_greedy.h"
 #include "toolkit/hybrid.h"
 #include "toolkit/parameters.h"
 #include "toolkit/texture_sizing.h"
@@ -30,8 +31,10 @@ struct LodSession {
     TextureSizing sizing;
     std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
     std::vector<double> depth_errors;  // per node with a box, error_greedy.h's proxy e(n) in m^3
-    std::shared_ptr<const HybridPlan> hybrid;  // level mode hybrid: the plan its levels are prefixes of
-    std::vector<std::size_t> hybrid_steps;     // per current level c: the plan's steps drawn
+    std::shared_ptr<const HybridPlan> hybrid;      // level mode hybrid: the plan its levels are prefixes of
+    std::shared_ptr<const GreedyOpening> opening;  // error-greedy with budgets: the openings its levels are prefixes of
+    std::vector<HybridLevel> hybrid_levels;     // hybrid: per current level c, its state (build_lod fits it to the budget)
+    std::vector<std::size_t> opening_steps;     // error-greedy with budgets: per level c, the openings drawn (the same)
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
     ModelCost original_cost;
     LodTimes times;
@@ -62,6 +65,11 @@ struct Lod {
 };
 
 Lod build_lod(LodSession& session, int current_level, int threads);
+
+// Throws InputError when level c's byte budget lies below the real bytes of
+// the session's coarsest cut, where build_lod would fail: a command calls it
+// before it writes any level, so a refused build leaves nothing behind.
+void check_budget_reachable(LodSession& session, int level, int threads);
 
 // The camera of the parameters, or the default view: +X+Y+Z at the sizing distance.
 Camera preview_camera(const LodSession& session);

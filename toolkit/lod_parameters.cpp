@@ -70,6 +70,18 @@ ParameterDeclaration enum_parameter(const char* key, const char* option, const c
     return d;
 }
 
+ParameterDeclaration budgets_parameter() {
+    ParameterDeclaration d =
+        named("budgets", "budgets", "B1,...,BN",
+              "beyond the manual, for level modes error-greedy and hybrid: one level per byte budget, level c the best "
+              "cut whose bytes (mesh + GPU-compressed textures) stay within the c-th, descending: fractions of the "
+              "original's bytes (0.5,0.25,0.1,0.05) or sizes (2MB,500kB); none: wanted_levels levels at budgets "
+              "geometric from the coarsest cut to the original (docs/design.md: Levels by byte budget)");
+    d.format = [](const LodParameters& p) { return format_budgets(p.budgets); };
+    d.parse = [](const std::string& text, LodParameters& p) { return parse_budgets(text, p.budgets); };
+    return d;
+}
+
 ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
     declaration.sweep_key = false;
     return declaration;
@@ -82,6 +94,7 @@ std::vector<ParameterDeclaration> make_declarations() {
         enum_parameter("level_mode", "level-mode", "M", "how nodes get their level values: ", &P::level_mode, level_modes()),
         number_parameter("wanted_levels", "wanted-levels", "N", "wanted number of levels for the box modes",
                          &P::wanted_levels, r::wanted_levels),
+        budgets_parameter(),
         // A sweep measures every level it lists (`levels = ...`).
         not_in_sweeps(number_parameter("current_level", "level", "C",
                                        "current level, 0 (original) .. obtained levels (one box)", &P::current_level,
@@ -142,6 +155,10 @@ const ParameterDeclaration* find_lod_parameter(const std::string& key) {
     for (const ParameterDeclaration& d : lod_parameter_declarations())
         if (d.key == key) return &d;
     return nullptr;
+}
+
+int asked_levels(const LodParameters& p) {
+    return p.budgets.empty() || !orders_by_bytes(p.level_mode) ? p.wanted_levels : int(p.budgets.size());
 }
 
 void validate_parameters(const LodParameters& p, const std::string& where) {

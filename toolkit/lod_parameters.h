@@ -6,12 +6,14 @@
 #include "base/input_error.h"
 #include "renderer/renderer.h"
 #include "toolkit/boxes.h"
+#include "toolkit/level_budgets.h"
 #include "toolkit/level_modes.h"
 
 #include <functional>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace boxlod {
 
@@ -19,6 +21,7 @@ struct LodParameters {
     std::string model;  // the model file (relative paths are relative to the parameter file)
     LevelMode level_mode = LevelMode::top_down;
     int wanted_levels = 8;
+    std::vector<ByteBudget> budgets;  // beyond the manual: one level per budget (level_budgets.h); empty: wanted_levels
     int current_level = 1;
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
@@ -73,6 +76,10 @@ struct ParameterDeclaration {
 // they are the file's and the view's, not the LoD's.
 std::span<const ParameterDeclaration> lod_parameter_declarations();
 const ParameterDeclaration* find_lod_parameter(const std::string& key);  // nullptr when unknown
+
+// The levels 1..N the parameters ask for: one per budget where the level mode
+// takes budgets (orders_by_bytes), else wanted_levels.
+int asked_levels(const LodParameters& parameters);
 
 // Checks every declared range and what binds several parameters (min <= max
 // texture size, the camera, the light); throws InputError naming `where`.

@@ -154,6 +154,7 @@ int run_build(const Arguments& a) {
         levels.push_back(parameters.current_level);
     if (a.has("level-distances") || chain_file)
         sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->parameters.distance, obtained);
+    for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
     ChainCost chain;
     if (chain_file)
         write_chain(a, sessions, levels, chain);

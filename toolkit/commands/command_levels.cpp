@@ -36,14 +36,17 @@ static int run_levels(const Arguments& arguments) {
                 std::fprintf(stderr, "boxes: %.3f s on %d thread(s); minimal boxes for %zu nodes: %zu solved, %zu reused\n",
                      seconds_since(start), thread_count(threads), counts.nodes, counts.computed, counts.reused);
     }
-    // hybrid's levels are prefixes of a plan that measures its proxies by rendering them (hybrid.h).
-    LevelValues values = mode == LevelMode::hybrid ? start_lod(model, parameters, threads, &boxes)->levels
-                                                   : compute_level_values(model, mode, wanted_levels, interpolation, boxes);
+    // hybrid's levels are prefixes of a plan that measures its proxies by rendering them (hybrid.h); budgets
+    // are fractions of the original's bytes and price boxes at the sizing distance: both need a session.
+    LevelValues values = mode == LevelMode::hybrid || !parameters.budgets.empty()
+                             ? start_lod(model, parameters, threads, &boxes)->levels
+                             : compute_level_values(model, mode, wanted_levels, interpolation, boxes);
 
     KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};
     if (uses_boxes(mode)) report.push_back(text_entry("box_kind", box_kind_name(kind)));
     if (is_box_mode(mode)) report.push_back(text_entry("interpolation", interpolation_name(interpolation)));
-    if (uses_boxes(mode)) report.push_back(number_entry("wanted_levels", wanted_levels));
+    if (uses_boxes(mode) && parameters.budgets.empty()) report.push_back(number_entry("wanted_levels", wanted_levels));
+    if (!parameters.budgets.empty()) report.push_back(text_entry("budgets", format_budgets(parameters.budgets)));
     report.push_back(number_entry("obtained_levels", values.obtained_levels));
     report.push_back(number_entry("nodes", double(model.nodes.size())));
     for (std::size_t i = 0; i < values.level.size(); ++i)
@@ -54,7 +57,7 @@ static int run_levels(const Arguments& arguments) {
 }
 
 Subcommand levels_subcommand() {
-    std::vector<Option> options = lod_options({"level_mode", "wanted_levels", "box_kind", "interpolation"});
+    std::vector<Option> options = lod_options({"level_mode", "wanted_levels", "budgets", "box_kind", "interpolation"});
     options[0].help = enum_names(level_modes(), ", ", " or ") + " (required)";  // level_mode comes first
     return {{"levels",
              "MODEL",

@@ -26,6 +26,7 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
     sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
+    for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
         LodSession& session = sessions.for_level(c);
         Lod lod = build_lod(session, c, 1);
