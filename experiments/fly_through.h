@@ -33,14 +33,10 @@ struct FlyThroughOptions {
     int error_every = 10;  // compare frames 0, K, 2K, ... with full detail; 0: never
     double pixels_per_degree = 67;  // FLIP's observer
     // The levels: every building's LoD parameters (level mode, wanted levels,
-    // kept sub-trees, ...; 64-texel minimum pages), level c baked for
-    // base_distance · 2^(c-1) on a screen `height` pixels high with `fovy`
-    // (texel = pixel there), so those three are set per level.
-    LodParameters levels = [] {
-        LodParameters p;
-        p.min_texture_size = 64;
-        return p;
-    }();
+    // kept sub-trees, ...; by default the chain that pays its way), level c
+    // baked for base_distance · 2^(c-1) on a screen `height` pixels high with
+    // `fovy` (texel = pixel there), so those three are set per level.
+    LodParameters levels;
     float base_distance = 20;
     // Unpacked levels kept between frames (docs/city.md: Memory); a frame's own levels are always unpacked.
     std::size_t memory_budget = std::size_t(1) << 30;

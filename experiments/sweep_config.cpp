@@ -183,6 +183,11 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
              if (!parse_enum(sizing_rules(), l.line.value, c.sizing))
                  l.fail("expected " + enum_names(sizing_rules(), ", ", " or ") + ", got '" + l.line.value + "'");
          }},
+        // The manual's program (set_manual, one sizing distance); the keys after it change single settings.
+        {"manual", [&](const Line& l) {
+             if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false, got '" + l.line.value + "'");
+             if (l.line.value == "true") set_manual(c.lod), c.sizing = SizingRule::nearest;
+         }},
         {"impostor_directions", [&](const Line& l) {
              c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});
          }},

@@ -58,7 +58,7 @@ struct SweepConfig {
         p.resolution = 512;  // texel = pixel on the sweep's default 512-pixel-high images
         return p;
     }();
-    SizingRule sizing = SizingRule::nearest;
+    SizingRule sizing = SizingRule::per_level;  // `manual = true`: nearest, the manual's one distance
     std::vector<Baseline> baselines;  // none by default; they run in the table's order
     int impostor_directions = 8;      // K: the impostor baseline's K x K captured directions
     KeptImages keep_images = KeptImages::none;

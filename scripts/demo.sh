@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job on built-in defaults: a generated building and a real one, each
 # built into every level of its textured-box LoD, with a table and renders;
-# then the first experiment, quality against triangles for three level modes
-# and the simplification baseline.
+# then the first experiment, quality against triangles and bytes for five
+# level modes (hybrid among them) and the simplification baseline.
 set -euo pipefail
 build=${1:-build}
 boxlod="$build/boxlod"
@@ -26,15 +26,16 @@ demo_model() {  # demo_model NAME MODEL
   echo "== $name: $model"
   "$boxlod" info "$model" | grep -E '^(nodes|nodes_with_geometry|depth|faces_original|mesh_(width|height|depth)|draw_calls_original|bytes_original) '
   mkdir -p "$out/$name"
-  "$boxlod" build "$model" -o "$out/$name" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
+  # The manual's program: every level at one sizing distance, every sub-tree boxed.
+  "$boxlod" build "$model" -o "$out/$name" --name "$name" --all-levels --manual --level-mode top-down --resolution 1080 \
     --timings > "$out/$name/build.txt" 2>/dev/null
   level_table < "$out/$name/build.txt"
   grep '^time_' "$out/$name/build.txt" | tr '\n' ' '; echo
-  # The same chain as an engine would ship it (docs/cost.md: Boxes that pay their way): each
-  # level sized for where it is used, no box dearer than the geometry it replaces.
-  echo "-- $name, a chain that pays its way: --level-distances auto --keep-cheaper-subtrees --min-texture-size 16"
+  # The same levels as an engine would ship them, boxlod's defaults (docs/cost.md: Boxes that pay
+  # their way): each level sized for where it is used, no box dearer than the geometry it replaces.
+  echo "-- $name, the chain that pays its way (the defaults; the above: --manual)"
   "$boxlod" build "$model" -o "$out/$name/chain" --name "$name" --all-levels --level-mode top-down --resolution 1080 \
-    --level-distances auto --keep-cheaper-subtrees --min-texture-size 16 > "$out/$name/chain.txt" 2>/dev/null
+    > "$out/$name/chain.txt" 2>/dev/null
   level_table < "$out/$name/chain.txt"
   grep -E '^(bytes_chain|texture_bytes_gpu_chain) ' "$out/$name/chain.txt" | tr '\n' ' '; echo
   "$boxlod" render "$model" -o "$out/$name/original.png" > /dev/null
@@ -49,9 +50,9 @@ demo_model() {  # demo_model NAME MODEL
 demo_model house "$out/house.glb"
 demo_model fzk-haus /usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
 
-# The first experiment: every level of three level modes of the house,
+# The first experiment: every level of five level modes of the house,
 # compared with the original from three views (experiments/configs/demo.txt).
-echo "== experiment: quality against triangles, textured boxes and mesh simplification (PSNR, SSIM, FLIP over 3 views)"
+echo "== experiment: quality against triangles and bytes, textured boxes (hybrid among them) and mesh simplification (PSNR, SSIM, FLIP over 3 views)"
 "$boxlod" sweep experiments/configs/demo.txt -o "$out/experiment" > /dev/null 2>&1
 /usr/bin/python3 experiments/plot_quality.py "$out/experiment/results.csv" "$out/experiment/quality.png"
 echo

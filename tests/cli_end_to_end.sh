@@ -147,9 +147,10 @@ check "the keyframe error names file:line" grep -q "bad_keys.txt: line 2: expect
 bad "city with a missing keyframe file" city --buildings 1 --path "$work/nope.txt" -o "$work/city_bad"
 bad "city with zero frames" city --buildings 1 --frames 0 -o "$work/city_bad"
 bad "city with a bad detail" city --buildings 1 --detail 1,-2 -o "$work/city_bad"
-# A chain sized per level: level c for the sizing distance x 2^(c-1); its pages shrink with c.
+# A chain sized per level: level c for the sizing distance x 2^(c-1); its pages shrink with c
+# (the manual's cut, every sub-tree boxed, so that every level has pages).
 "$boxlod" generate --sample house -o "$work/house.glb" > /dev/null
-check "build --level-distances auto succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/chain" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24)" = 0
+check "build --level-distances auto succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/chain" --all-levels --manual --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24)" = 0
 check "each level is sized for twice the previous level's distance" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { for (c = 3; c <= n; ++c) if ((d[c] - 2 * d[c - 1]) ^ 2 > (1e-6 * d[c]) ^ 2) exit 1; exit n < 5 }' '$work/out'"
 check "coarser levels of the chain pay fewer texture bytes" bash -c "awk -F' = ' '\$1 == \"page_texels\" { t[++n] = \$2 } END { exit !(t[2] > t[4] && t[4] > t[6]) }' '$work/out'"
 check "the chain's cost follows its levels" bash -c "grep -qx 'name = house_lod_chain' '$work/out' && grep -q '^texture_bytes_gpu_chain = [1-9]' '$work/out' && grep -q '^chain_texture_ratio = ' '$work/out'"
@@ -157,8 +158,10 @@ check "a level's parameter file records its distance" bash -c "grep -qx \"distan
 # Without the rule the house's level 1 boxes single quads and costs more than the original; with it no level does.
 over_original="awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"bytes_original\" && b > \$2 { over = 1 } END { exit !over }'"
 check "a box-everything chain has a level dearer than the original" bash -c "$over_original '$work/out'"
-check "build --keep-cheaper-subtrees succeeds" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --keep-cheaper-subtrees)" = 0
-check "with boxes that pay their way no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L3.params.txt'"
+check "build --all-levels succeeds with the defaults" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --resolution 256 --preview-width 32 --preview-height 24)" = 0
+check "by default boxes pay their way: no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L3.params.txt'"
+check "by default levels are sized per level" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { exit !(n > 4 && d[4] > 1.99 * d[3]) }' '$work/out'"
+check "--manual sizes every level for one distance and boxes every sub-tree" bash -c "'$boxlod' build '$work/house.glb' -o '$work/manual' --all-levels --manual --resolution 256 --preview-width 32 --preview-height 24 > '$work/manual.txt' && test \$(awk -F' = ' '\$1 == \"sizing_distance\"' '$work/manual.txt' | sort -u | wc -l) = 1 && grep -qx 'keep_cheaper_subtrees = false' '$work/manual/house_lod_L3.params.txt' && grep -qx 'min_texture_size = 256' '$work/manual/house_lod_L3.params.txt'"
 # Levels by byte budget (docs/design.md: Levels by byte budget): each level's bytes within its budget, stated beside them.
 check "build --budgets keeps every level within its budget" bash -c "'$boxlod' build '$work/house.glb' -o '$work/budgets' --all-levels --level-mode hybrid --budgets 0.5,0.25 --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 > '$work/budgets.txt' && awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"budget_bytes\" { n++; if (b > \$2) exit 1 } END { exit n != 2 }' '$work/budgets.txt'"
 bad "budgets that do not descend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-mode hybrid --budgets 0.1,0.5
@@ -166,7 +169,7 @@ check "the budgets error names the option" grep -q "^boxlod: --budgets: '0.5' co
 bad "a budget below the coarsest cut" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-mode hybrid --budgets 0.5,0.01 --resolution 256 --min-texture-size 16
 check "the refusal names the level and the coarsest cut's bytes" grep -q "level 2's budget of [0-9]* bytes is below the coarsest cut's [0-9]* bytes\$" "$work/err"
 # Flat faces (docs/design.md: Atlas): some faces drawn from swatches, the same bytes on one thread as on two.
-flat_chain="build '$work/house.glb' --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --keep-cheaper-subtrees --flat-faces 8"
+flat_chain="build '$work/house.glb' --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --flat-faces 8"
 check "a chain with flat faces draws some faces flat" bash -c "'$boxlod' $flat_chain -o '$work/flat1' --threads 1 > '$work/flat1.txt' && grep -q '^flat_faces = [1-9]' '$work/flat1.txt'"
 check "a chain with flat faces is identical on two threads" bash -c "'$boxlod' $flat_chain -o '$work/flat2' --threads 2 >/dev/null && diff -r '$work/flat1' '$work/flat2'"
 bad "level distances that do not ascend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 20,10,30,40,50,60,70,80,90

@@ -113,6 +113,7 @@ TEST(Cost, EachRenderModePaysForTheMapsItDraws) {
 TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     Model model = test::lod_test_building();
     LodParameters p;
+    set_manual(p);  // every sub-tree boxed: pages at level 2
     p.distance = 20;
     p.resolution = 200;
     p.min_texture_size = 64;

@@ -40,7 +40,7 @@ fs.writeFileSync(path, JSON.stringify(gltf));' "$work/specular/BoxTextured.gltf"
 quiet "$boxlod" convert "$work/specular/BoxTextured.gltf" -o "$work/specular.glb"
 quiet "$boxlod" build "$work/house.glb" -o "$work/level" --level 3 --resolution 256   # one level
 quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
-quiet "$boxlod" build "$work/house.glb" -o "$work/flat_level" --level 3 --resolution 128 --min-texture-size 16 --flat-faces 8
+quiet "$boxlod" build "$work/house.glb" -o "$work/flat_level" --level 3 --resolution 128 --manual --min-texture-size 16 --flat-faces 8
 grep -q '^flat_faces = [1-9]' "$work/flat_level/house_lod.stats.txt" || { echo "gltf_validator: no flat faces to validate" >&2; exit 1; }
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)

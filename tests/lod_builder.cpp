@@ -5,6 +5,7 @@
 #include "lod_scene.h"
 #include "toolkit/drawable.h"
 #include "toolkit/error_greedy.h"
+#include "toolkit/level_sessions.h"
 #include "toolkit/lod_export.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
@@ -22,8 +23,10 @@ namespace {
 
 std::string statistic(const Lod& lod, const std::string& key) { return value_of(lod.statistics, key); }
 
+// The manual's program: the builder's mechanics on a cut that boxes every sub-tree.
 LodParameters small_parameters() {
     LodParameters p;
+    set_manual(p);
     p.level_mode = LevelMode::top_down;
     p.box_kind = BoxKind::expanded;
     p.resolution = 64;  // small textures keep the tests fast
@@ -364,6 +367,23 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
     EXPECT_GT(glass, 0);
     auto opaque_session = start_lod(model, p, 2);
     EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels, original.pixels);
+}
+
+// The defaults (docs/design.md: Defaults): the FZK-Haus's chain that pays its
+// way as `build --all-levels` makes it, levels sized per level, seen from the
+// first level's view. Level 2 keeps what is cheaper than its box and boxes the
+// rest; level 4 is sized for 8x the distance.
+TEST(LodGolden, FzkHausDefaultChain) {
+    Model model = load_model(test::fzk_haus_ifc);
+    LodParameters p;
+    p.resolution = 128;
+    LevelSessions sessions(model, p, 2);
+    sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    for (int c : {2, 4}) {
+        Lod lod = build_lod(sessions.for_level(c), c, 2);
+        EXPECT_LT(combined_cost({&lod.cost}).bytes(), sessions.first->original_cost.bytes()) << "level " << c;
+        test::expect_golden(render_lod_preview(lod, *sessions.first, 200, 150, 2), "lod_fzk_default_chain_level" + std::to_string(c));
+    }
 }
 
 // Real data: the FZK-Haus at every level of every level mode and box kind.

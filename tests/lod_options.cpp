@@ -17,7 +17,7 @@ LodParameters parse(const std::vector<std::string>& words) {
 
 TEST(LodOptions, OneOptionPerDeclaredParameterWithItsRange) {
     std::vector<Option> options = lod_options();
-    ASSERT_EQ(options.size(), lod_parameter_declarations().size() + 1);  // and --params
+    ASSERT_EQ(options.size(), lod_parameter_declarations().size() + 2);  // and --params, --manual
     for (const ParameterDeclaration& d : lod_parameter_declarations()) {
         auto o = std::find_if(options.begin(), options.end(), [&](const Option& o) { return o.name == d.option; });
         ASSERT_NE(o, options.end()) << d.option;
@@ -37,9 +37,22 @@ TEST(LodOptions, OptionsSetTheirParameters) {
     EXPECT_EQ(p.box_kind, BoxKind::minimal);
     EXPECT_FALSE(p.crop_faces);  // a flag sets the opposite of the default
     EXPECT_TRUE(p.keep_small_subtrees);
-    EXPECT_FALSE(p.keep_cheaper_subtrees);
+    EXPECT_TRUE(p.keep_cheaper_subtrees);  // the default: the chain that pays its way
     EXPECT_EQ(p.resolution, 720);
     EXPECT_EQ(p.min_texture_size, 64);
+    EXPECT_FALSE(parse({"--box-cheaper-subtrees"}).keep_cheaper_subtrees);
+}
+
+TEST(LodOptions, ManualSetsTheManualsProgramAndOptionsChangeSingleParameters) {
+    const LodParameters defaults = parse({});
+    EXPECT_TRUE(defaults.keep_cheaper_subtrees);
+    EXPECT_EQ(defaults.min_texture_size, 16);
+    EXPECT_EQ(defaults.flat_faces, 8);
+    const LodParameters manual = parse({"--manual"});
+    EXPECT_FALSE(manual.keep_cheaper_subtrees);
+    EXPECT_EQ(manual.min_texture_size, 256);
+    EXPECT_EQ(manual.flat_faces, 0);
+    EXPECT_EQ(parse({"--manual", "--flat-faces", "4"}).flat_faces, 4);
 }
 
 TEST(LodOptions, ErrorsNameTheOption) {

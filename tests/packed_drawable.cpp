@@ -14,6 +14,7 @@ Model baked_level() {
     static const Model level = [] {
         Model model = test::lod_test_building();
         LodParameters p;
+        set_manual(p);  // every sub-tree boxed: level 1 has pages
         p.level_mode = LevelMode::top_down;
         p.resolution = 128;
         p.min_texture_size = 16;

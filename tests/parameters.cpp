@@ -16,7 +16,7 @@ TEST(Parameters, SaveThenLoadGivesTheSameValuesExactly) {
     p.box_kind = BoxKind::minimal;
     p.interpolation = Interpolation::rank;
     p.keep_small_subtrees = true;
-    p.keep_cheaper_subtrees = true;
+    p.keep_cheaper_subtrees = false;
     p.fovy = 37.123456f;
     p.distance = 1.0f / 3.0f;
     p.resolution = 720;

@@ -52,7 +52,8 @@ SmallSweep small_sweep(const std::string& name, const std::string& extra = "") {
     s.original_cost = model_cost(building);
     save_model(building, (s.folder / "building.glb").string());
     test::write_text(s.folder / "sweep.txt",
-                     "models = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, 4\nviews = +X+Y+Z, -Z\n"
+                     // The manual's program: the test building's small parts are boxed too.
+                     "manual = true\nmodels = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, 4\nviews = +X+Y+Z, -Z\n"
                      "width = 64\nheight = 48\nmetrics = rmse, psnr, ssim, flip, iou\nresolution = 48\n" + extra);
     s.config = load_sweep_config((s.folder / "sweep.txt").string());
     return s;

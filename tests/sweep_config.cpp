@@ -23,7 +23,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
         "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
-        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\nkeep_cheaper_subtrees = true\n",
+        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\nkeep_cheaper_subtrees = false\n",
         "/work/sweeps/config.txt");
     ASSERT_EQ(c.models.size(), 3u);
     EXPECT_EQ(c.models[0].name, "house.glb");
@@ -50,7 +50,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.sizing, SizingRule::each_distance);
     EXPECT_EQ(c.baselines, (std::vector<Baseline>{Baseline::single_box, Baseline::simplification}));
     EXPECT_TRUE(c.lod.keep_small_subtrees);
-    EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
+    EXPECT_FALSE(c.lod.keep_cheaper_subtrees);
 }
 
 TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
@@ -59,8 +59,15 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_EQ(c.views.size(), 26u);
     EXPECT_TRUE(c.levels.empty());
     EXPECT_EQ(c.metrics.size(), 5u);  // default: every metric
-    EXPECT_EQ(c.sizing, SizingRule::nearest);
+    EXPECT_EQ(c.sizing, SizingRule::per_level);  // the chain that pays its way
+    EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
     EXPECT_TRUE(c.baselines.empty());
+    // manual = true: the manual's one sizing distance and cut; keys after it change single settings.
+    SweepConfig manual = parse_sweep_config("models = a.glb\nmanual = true\nflat_faces = 4\n", "c.txt");
+    EXPECT_EQ(manual.sizing, SizingRule::nearest);
+    EXPECT_FALSE(manual.lod.keep_cheaper_subtrees);
+    EXPECT_EQ(manual.lod.min_texture_size, 256);
+    EXPECT_EQ(manual.lod.flat_faces, 4);
     SweepConfig none = parse_sweep_config("models = a.glb\nbaselines = none\n", "c.txt");
     EXPECT_TRUE(none.baselines.empty());
     SweepConfig best = parse_sweep_config("models = a.glb\nbaselines = simplification-best, simplification\n", "c.txt");

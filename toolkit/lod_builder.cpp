@@ -111,7 +111,8 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
                                                textured);
     }
     session->times.levels = seconds_since(start);
-    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid)  // the plan keeps what pays (hybrid.h)
+    // hybrid's plan keeps what pays (hybrid.h); with budgets the budget decides (level_budgets.h).
+    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid && p.budgets.empty())
         session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
                                       textured);
     return session;
@@ -523,9 +524,12 @@ void set_level_within(LodSession& session, int c, double estimate) {
 }
 
 // The estimates miss a level's real bytes (pages round up to powers of two,
-// each face brings a gutter): while the level spends more than its budget,
-// ask for a level cheaper in proportion. Its estimated bytes fall every time,
-// so this ends; below the coarsest cut no level fits.
+// each face brings a gutter; error-greedy's leave out the original's
+// textures): while the level spends more than its budget, ask for a level
+// whose estimate lies below every one tried so far, in proportion to the
+// overshoot, and failing that build the coarsest cut once. The estimates fall
+// every time, so this ends. When nothing fits, a sweep (budgets_strict off)
+// takes the cheapest level built.
 Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
     const int c = lod.current_level;
     const double budget = level_budget(session, c);
@@ -533,15 +537,22 @@ Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
     auto estimated = [&] {
         return session.hybrid ? session.hybrid_levels[level].bytes : session.opening->bytes[session.opening_steps[level]];
     };
+    double ceiling = estimated(), spent = spent_bytes(lod);
+    Lod cheapest = lod;
     bool coarsest = false;
-    for (double spent = spent_bytes(lod); spent > budget; spent = spent_bytes(lod)) {
-        const double now = estimated(), lower = std::min(now * budget / spent, std::nextafter(now, 0.0));
-        set_level_within(session, c, lower);
-        if (estimated() >= now) {  // no cheaper estimate: the coarsest cut, once
-            if (coarsest) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+    while (spent > budget) {
+        set_level_within(session, c, std::min(ceiling * budget / spent, std::nextafter(ceiling, 0.0)));
+        if (estimated() >= ceiling) {  // no cheaper estimate
+            if (coarsest) {
+                if (session.budgets_strict) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+                return cheapest;  // over its budget, as its statistics say
+            }
             set_level_within(session, c, -1), coarsest = true;
         }
+        ceiling = std::min(ceiling, estimated());
         lod = build_cut(session, c, level_cut(session, c), threads);
+        spent = spent_bytes(lod);
+        if (spent < spent_bytes(cheapest)) cheapest = lod;
     }
     return lod;
 }

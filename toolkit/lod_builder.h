@@ -35,6 +35,7 @@ struct LodSession {
     std::shared_ptr<const GreedyOpening> opening;  // error-greedy with budgets: the openings its levels are prefixes of
     std::vector<HybridLevel> hybrid_levels;     // hybrid: per current level c, its state (build_lod fits it to the budget)
     std::vector<std::size_t> opening_steps;     // error-greedy with budgets: per level c, the openings drawn (the same)
+    bool budgets_strict = true;  // false (sweeps): a level no cut fits draws the coarsest instead of failing
     std::map<int, std::array<BakedFace, 6>> baked;  // per box node, baked once for all levels
     ModelCost original_cost;
     LodTimes times;

@@ -106,9 +106,9 @@ std::vector<ParameterDeclaration> make_declarations() {
                          "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a 6-face "
                          "box, so no level draws more faces than the original",
                          &P::keep_small_subtrees),
-        yes_no_parameter("keep_cheaper_subtrees", "keep-cheaper-subtrees",
-                         "beyond the manual: a node whose sub-tree's mesh costs fewer bytes than its textured box "
-                         "would keeps its geometry, so no box costs more than what it replaces",
+        yes_no_parameter("keep_cheaper_subtrees", "box-cheaper-subtrees",
+                         "as the manual, box every sub-tree, also those whose mesh costs fewer bytes than their textured "
+                         "box would (by default such a node keeps its geometry, so no box costs more than what it replaces)",
                          &P::keep_cheaper_subtrees),
         yes_no_parameter("crop_faces", "no-crop",
                          "keep every baked face whole instead of cropping it to its covered texels (and dropping "
@@ -155,6 +155,12 @@ const ParameterDeclaration* find_lod_parameter(const std::string& key) {
     for (const ParameterDeclaration& d : lod_parameter_declarations())
         if (d.key == key) return &d;
     return nullptr;
+}
+
+void set_manual(LodParameters& p) {
+    p.keep_small_subtrees = false, p.keep_cheaper_subtrees = false;
+    p.min_texture_size = 256;
+    p.flat_faces = 0;
 }
 
 int asked_levels(const LodParameters& p) {

@@ -26,14 +26,15 @@ struct LodParameters {
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
     bool keep_small_subtrees = false;    // beyond the manual: no box for a sub-tree of <= 6 faces (kept_subtrees.h)
-    bool keep_cheaper_subtrees = false;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
+    // The defaults are the chain that pays its way (docs/cost.md); set_manual gives the manual's program.
+    bool keep_cheaper_subtrees = true;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
     bool crop_faces = true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
-    int flat_faces = 0;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
+    int flat_faces = 8;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model
     float resolution = 1080;
-    int min_texture_size = 256, max_texture_size = 4096;
+    int min_texture_size = 16, max_texture_size = 4096;
     RenderMode render_mode = RenderMode::normal;
     float parallax_scale = 0.04f, parallax_bias = -0.02f;
     // The view for the preview; unset: camera +X+Y+Z at the sizing distance.
@@ -76,6 +77,12 @@ struct ParameterDeclaration {
 // they are the file's and the view's, not the LoD's.
 std::span<const ParameterDeclaration> lod_parameter_declarations();
 const ParameterDeclaration* find_lod_parameter(const std::string& key);  // nullptr when unknown
+
+// The manual's program (docs/design.md: Level values and the cut): every
+// sub-tree boxed, pages of at least 256 texels a side, no flat faces. With
+// one sizing distance for every level, the commands' --manual (a sweep's
+// `manual = true`) sets this.
+void set_manual(LodParameters& parameters);
 
 // The levels 1..N the parameters ask for: one per budget where the level mode
 // takes budgets (orders_by_bytes), else wanted_levels.

@@ -152,7 +152,7 @@ int run_build(const Arguments& a) {
         for (int c = 0; c <= obtained; ++c) levels.push_back(c);
     else
         levels.push_back(parameters.current_level);
-    if (a.has("level-distances") || chain_file)
+    if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
         sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->parameters.distance, obtained);
     for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
     ChainCost chain;
@@ -181,14 +181,15 @@ Subcommand build_subcommand() {
                  {"output", "OUTDIR", "folder for the files (required)", {}, 'o'},
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
-                 {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces"},
+                 {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces, sized by --level-distances"},
                  {"glb", "", "write each level as one NAME.glb, its pages inside, instead of NAME.gltf + .bin + PNGs"},
                  {"chain", "",
                   "write every level 0..N into one file, -o OUT.glb or OUT.gltf: glTF's MSFT_lod, switch hints in "
-                  "extras.MSFT_screencoverage, shared textures stored once; levels sized by --level-distances (default auto)"},
+                  "extras.MSFT_screencoverage, shared textures stored once; levels sized by --level-distances"},
                  {"level-distances", "auto|D1,...,DN",
-                  "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto: "
-                  "the sizing distance x 2^(c-1), so each level is as sharp as the screen where it is used"},
+                  "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto "
+                  "(the default; --manual: every level at the sizing distance): the sizing distance x 2^(c-1), so each level "
+                  "is as sharp as the screen where it is used"},
                  {"preview-width", "W", "preview image width (default 1024)", image_side_range},
                  {"preview-height", "H", "preview image height (default 768)", image_side_range},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},

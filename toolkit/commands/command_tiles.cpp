@@ -19,11 +19,12 @@ namespace {
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
 // One object's chain: every level as OUTDIR/object_K_L<c>.glb, sized per level
-// (auto distances), with its geometric error.
-TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, const std::string& folder) {
+// (auto distances; --manual: all at one distance), with its geometric error.
+TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
+                        const std::string& folder) {
     Model model = extract_subtree(city, node);
     LevelSessions sessions(model, parameters, 1);
-    sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    if (per_level) sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
@@ -64,7 +65,7 @@ int run_tiles(const Arguments& a) {
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(city, nodes[k], int(k), parameters, folder.string());
+        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), folder.string());
     });
     const std::string tileset = (folder / "tileset.json").string();
     write_text_atomically(tileset, tileset_json(objects, origin));

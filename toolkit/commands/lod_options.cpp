@@ -21,7 +21,11 @@ bool is_parameter_file(const std::string& path) { return std::filesystem::path(p
 }  // namespace
 
 std::vector<Option> lod_options() {
-    std::vector<Option> options{{"params", "FILE", "load only the parameters from FILE (the model is MODEL)"}};
+    std::vector<Option> options{
+        {"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
+        {"manual", "",
+         "the manual's program instead of the chain that pays its way: every level at one sizing distance, every "
+         "sub-tree boxed, pages of at least 256 texels, no flat faces (other options change single parameters)"}};
     for (const ParameterDeclaration& d : lod_parameter_declarations()) options.push_back(option_of(d));
     return options;
 }
@@ -44,6 +48,7 @@ void apply_lod_options(const Arguments& a, LodParameters& p, const std::vector<s
 
 LodParameters lod_parameters_from(const Arguments& a) {
     LodParameters p;
+    if (a.has("manual")) set_manual(p);
     const std::string& input = a.positionals[0];
     if (is_parameter_file(input)) {
         p = load_parameters(input);
