@@ -2,7 +2,10 @@
 """Per model and byte budget (a share of the original's bytes), the views in
 which the hybrid level mode is on or below the best row of every other family
 within the budget, and each family's mean best FLIP (docs/cost.md: The hybrid
-level mode). Usage: hybrid_budgets.py results.csv"""
+level mode); then how well the hybrid plan's measured error ranks its levels
+as FLIP does (Spearman's rank correlation over the hybrid levels, level 0
+aside: each level's measured_error against its mean FLIP over the views).
+Usage: hybrid_budgets.py results.csv"""
 import collections
 import csv
 import sys
@@ -44,5 +47,44 @@ def main(path):
                   f"hybrid behind the best other by {gap:+.4f}")
 
 
+def ranks(values):
+    """Ranks 1..n, ties given their mean rank."""
+    order = sorted(range(len(values)), key=lambda i: values[i])
+    result = [0.0] * len(values)
+    i = 0
+    while i < len(order):
+        j = i
+        while j + 1 < len(order) and values[order[j + 1]] == values[order[i]]:
+            j += 1
+        for k in range(i, j + 1):
+            result[order[k]] = (i + j) / 2 + 1
+        i = j + 1
+    return result
+
+
+def spearman(xs, ys):
+    """Pearson's correlation of the ranks (Spearman 1904)."""
+    rx, ry = ranks(xs), ranks(ys)
+    mx, my = sum(rx) / len(rx), sum(ry) / len(ry)
+    sxy = sum((a - mx) * (b - my) for a, b in zip(rx, ry))
+    sxx, syy = sum((a - mx) ** 2 for a in rx), sum((b - my) ** 2 for b in ry)
+    return sxy / (sxx * syy) ** 0.5 if sxx > 0 and syy > 0 else float("nan")
+
+
+def measured_against_flip(path):
+    rows = [r for r in csv.DictReader(open(path, newline="")) if r["level_mode"] == "hybrid" and r["level"] != "0"]
+    levels = collections.defaultdict(list)
+    for r in rows:
+        levels[(r["model"], r["level"])].append(r)
+    for model in sorted({m for m, _ in levels}):  # errors are in each model's sizing-view pixels: per model
+        ours = [v for (m, _), v in levels.items() if m == model]
+        measured = [float(v[0]["measured_error"]) for v in ours]
+        flip = [sum(float(r["flip"]) for r in v) / len(v) for v in ours]
+        if len(measured) > 2:
+            print(f"{model.split('/')[-1]}: Spearman rank correlation of the hybrid levels' measured_error and "
+                  f"mean FLIP {spearman(measured, flip):.3f} over {len(measured)} levels")
+
+
 if __name__ == "__main__":
     main(sys.argv[1])
+    measured_against_flip(sys.argv[1])

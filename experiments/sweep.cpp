@@ -165,6 +165,7 @@ struct Candidate {
     std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
     std::size_t nodes_with_box = 0;
     std::string depth_error;  // an LoD's proxy error (LodSession::depth_errors summed over its boxes); empty for baselines
+    std::string measured_error;  // a hybrid level's measured proxy error (Lod::measured_error); empty for the others
     int obtained_levels = 0;
     CostParts cost;  // each row states the cost of the maps its render mode draws
     std::unique_ptr<DrawableModel> drawable;  // made by run_group unless `make` made it
@@ -208,7 +209,7 @@ std::string eta_text(double seconds) {
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = key_columns;
     for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
-                          "nodes_with_box", "depth_error", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
+                          "nodes_with_box", "depth_error", "measured_error", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
                           "covered_pixels", "baseline_variant"})
         columns.push_back(c);
     for (Metric metric : config.metrics) columns.push_back(enum_name(metrics(), metric));
@@ -366,7 +367,7 @@ std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, cons
         std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
         std::to_string(c.face_texels),
         std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
-        std::to_string(c.nodes_with_box), c.depth_error, std::to_string(cost.draw_calls), std::to_string(cost.mesh_bytes),
+        std::to_string(c.nodes_with_box), c.depth_error, c.measured_error, std::to_string(cost.draw_calls), std::to_string(cost.mesh_bytes),
         std::to_string(cost.texture_bytes), std::to_string(cost.texture_bytes_gpu), std::to_string(cost.bytes()),
         std::to_string(covered_pixels(original.coverage)), c.variant};
     fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
@@ -498,6 +499,7 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
                                     variant.obtained_levels, &lod.cost);
             c.face_texels = lod.face_texels;
             c.depth_error = format_number(lod.depth_error);
+            if (variant.mode == LevelMode::hybrid) c.measured_error = format_number(lod.measured_error);
             return c;
         });
     }

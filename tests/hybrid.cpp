@@ -228,6 +228,9 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
             EXPECT_LE(spent, budget) << level_mode_name(mode) << " level " << c;
             EXPECT_EQ(value_of(lod.statistics, "budget_bytes"), format_number(std::floor(budget)));
             EXPECT_EQ(value_of(lod.statistics, "bytes_lod"), format_number(spent));
+            if (mode == LevelMode::hybrid) {  // its proxies' measured errors, stated
+                EXPECT_EQ(value_of(lod.statistics, "measured_error"), format_number(hybrid_cut_error(*session->hybrid, lod.cut)));
+            }
         }
     }
 }
@@ -258,5 +261,8 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
     }
     EXPECT_TRUE(some_box);
     EXPECT_TRUE(some_simplified);
-    EXPECT_EQ(build_lod(*session, 0, 2).cut.box_nodes.size(), 0u);  // level 0: the original
+    const Lod original = build_lod(*session, 0, 2);
+    EXPECT_EQ(original.cut.box_nodes.size(), 0u);  // level 0: the original, nothing measured against it
+    EXPECT_EQ(original.measured_error, 0);
+    EXPECT_GT(build_lod(*session, 6, 2).measured_error, 0);
 }

@@ -366,6 +366,15 @@ Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int
     return cut;
 }
 
+double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
+    double error = 0;
+    for (int n : cut.box_nodes)
+        for (const Proxy& proxy : plan.proxies[std::size_t(n)])
+            if (proxy.kind == ProxyKind::box) error += proxy.error;
+    for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
+    return error;
+}
+
 LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, const std::vector<double>& budgets,
                           std::vector<HybridLevel>& levels) {
     const int count = int(budgets.size());

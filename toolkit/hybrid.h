@@ -94,6 +94,10 @@ HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, doub
 // simplified one in simplified_nodes; the others keep their geometry.
 Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state);
 
+// The measured error of a cut of the plan: its proxies' errors summed (its
+// box nodes' box proxies, its simplified nodes' proxies), pixels of the sizing view.
+double hybrid_cut_error(const HybridPlan& plan, const Cut& cut);
+
 // Levels 1..N at byte budgets B_1..B_N (level_budgets.h; by default geometric
 // from the root's cheapest proxy to the original, as error-greedy's): levels[c]
 // is level c's (levels[0]: the original); L(n) is the largest level at which n

@@ -434,6 +434,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("flat_faces", packing.flat_faces),
         number_entry("swatches", double(packing.swatches.colors.size())),
         number_entry("depth_error", lod.depth_error),
+        number_entry("measured_error", lod.measured_error),
     };
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
@@ -461,6 +462,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     lod.current_level = current_level;
     lod.cut = std::move(cut);
     for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
+    if (session.hybrid) lod.measured_error = hybrid_cut_error(*session.hybrid, lod.cut);
     auto start = Clock::now();
     if (textured) bake_new_boxes(session, lod.cut, threads);
     session.times.bake += seconds_since(start);

@@ -61,6 +61,7 @@ struct Lod {
     Atlas atlas;  // no pages in untextured mode (no baking)
     std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
     double depth_error = 0;  // the proxy error of the cut: e(n) summed over its boxes (error_greedy.h), m^3
+    double measured_error = 0;  // hybrid: its proxies' measured errors summed (hybrid_cut_error), sizing-view pixels
     CostParts cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // docs/design.md: Statistics
 };
