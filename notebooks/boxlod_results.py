@@ -34,13 +34,14 @@ matplotlib.rcParams.update({
 KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "distance", "render_mode"]
 # Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
-         "box-max-extent", "error-greedy", "simplification", "simplification-best", "cgal", "single-box", "impostor"]
+         "box-max-extent", "error-greedy", "hybrid", "simplification", "simplification-best", "cgal", "single-box", "impostor"]
 BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
 STYLE = {mode: dict(color=_CYCLE[i], marker="os^vD<>"[i], linestyle="-") for i, mode in enumerate(MODES[:7])}
 STYLE["error-greedy"] = dict(color=_CYCLE[7], marker="P", linestyle="-")
+STYLE["hybrid"] = dict(color=_CYCLE[8], marker="X", linestyle="-")
 STYLE["simplification"] = dict(color="black", marker="x", linestyle="--")
 STYLE["simplification-best"] = dict(color="dimgrey", marker="+", linestyle=":")
 STYLE["cgal"] = dict(color="grey", marker="1", linestyle="-.")

@@ -24,6 +24,8 @@ TEST(LevelBudgets, ReadsFractionsAndSizesAndWritesThemBack) {
     ASSERT_EQ(again.size(), budgets.size());
     for (std::size_t i = 0; i < again.size(); ++i) EXPECT_EQ(again[i].value, budgets[i].value);
 
+    ASSERT_EQ(parse_budgets("0.5, 0.25", budgets), "");  // spaces around items, as in sweep configs
+    EXPECT_EQ(format_budgets(budgets), "0.5,0.25");
     ASSERT_EQ(parse_budgets("none", budgets), "");
     EXPECT_TRUE(budgets.empty());
     EXPECT_EQ(format_budgets(budgets), "none");

@@ -53,6 +53,8 @@ std::string parse_budgets(const std::string& text, std::vector<ByteBudget>& budg
     if (text != "none") {
         std::stringstream in(text);
         for (std::string item; std::getline(in, item, ',');) {
+            item.erase(0, item.find_first_not_of(' '));  // "0.5, 0.25" as a sweep config's lists read
+            item.erase(item.find_last_not_of(' ') + 1);
             ByteBudget budget;
             if (std::string problem = parse_budget(item, budget); !problem.empty()) return problem;
             if (!parsed.empty() && budget.fraction != parsed.back().fraction)
