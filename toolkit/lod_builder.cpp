@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace boxlod {
 namespace {
@@ -540,21 +541,22 @@ Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
         return session.hybrid ? session.hybrid_levels[level].bytes : session.opening->bytes[session.opening_steps[level]];
     };
     double ceiling = estimated(), spent = spent_bytes(lod);
-    Lod cheapest = lod;
+    std::optional<Lod> cheapest;  // kept only where nothing fitting is no error
+    if (!session.budgets_strict) cheapest = lod;
     bool coarsest = false;
     while (spent > budget) {
         set_level_within(session, c, std::min(ceiling * budget / spent, std::nextafter(ceiling, 0.0)));
         if (estimated() >= ceiling) {  // no cheaper estimate
             if (coarsest) {
-                if (session.budgets_strict) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
-                return cheapest;  // over its budget, as its statistics say
+                if (!cheapest) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+                return std::move(*cheapest);  // over its budget, as its statistics say
             }
             set_level_within(session, c, -1), coarsest = true;
         }
         ceiling = std::min(ceiling, estimated());
         lod = build_cut(session, c, level_cut(session, c), threads);
         spent = spent_bytes(lod);
-        if (spent < spent_bytes(cheapest)) cheapest = lod;
+        if (cheapest && spent < spent_bytes(*cheapest)) cheapest = lod;
     }
     return lod;
 }
