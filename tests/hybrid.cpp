@@ -127,6 +127,35 @@ TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
         }
 }
 
+// Proxies are measured among their siblings: a detailed facade sealed inside a
+// closed shell is never seen, so no proxy of it has any error and only the
+// cheapest is kept; measured alone, its box would show the facade's tiles.
+TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
+    Model model;
+    model.source = "hybrid-test";
+    add_node(model, -1, "root");
+    const int facade = add_facade(model, 0, -2);  // x in [-2, 2], y in [0, 4], z = 0
+    model.materials.emplace_back().base_color = {0.5f, 0.5f, 0.5f, 1};
+    Primitive& shell = model.nodes[std::size_t(add_node(model, 0, "shell"))].primitives.emplace_back();
+    shell.material = int(model.materials.size()) - 1;
+    const Eigen::Vector3f lo(-2.2f, -0.2f, -1), hi(2.2f, 4.2f, 1);
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {  // each face of the box [lo, hi], facing out
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            Eigen::Vector3f corner = lo, right = Eigen::Vector3f::Zero(), up = Eigen::Vector3f::Zero();
+            corner[axis] = side ? hi[axis] : lo[axis];
+            right[u] = hi[u] - lo[u], up[v] = hi[v] - lo[v];
+            if (side) add_quad(shell, corner, right, up);
+            else add_quad(shell, corner + up, right, -up);
+        }
+    validate_model(model);
+    const auto boxes = node_boxes(model, BoxKind::minimal, 1);
+    const HybridPlan plan = plan_hybrid(model, decode_textures(model), boxes, settings_for(0.02f, 1));
+    const std::vector<Proxy>& hidden = plan.proxies[std::size_t(facade)];
+    ASSERT_EQ(hidden.size(), 1u);
+    EXPECT_EQ(hidden[0].error, 0);
+}
+
 TEST(Hybrid, PlansTheSameForAnyThreadCount) {
     Scene s = facade_and_sphere();
     const DecodedTextures textures = decode_textures(s.model);

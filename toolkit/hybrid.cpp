@@ -55,7 +55,7 @@ void downsample(Frame& frame) {
     frame.depth.clear(), frame.normal.clear();
 }
 
-std::vector<Frame> render_views(const Drawable& drawable, const MeasuringView& view, RenderMode mode) {
+std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode) {
     std::vector<Frame> frames;
     const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
     for (int corner = 0; corner < 8; ++corner) {
@@ -72,7 +72,7 @@ std::vector<Frame> render_views(const Drawable& drawable, const MeasuringView& v
         camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
         settings.light = light_for_camera(camera);
         frames.push_back(make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
-        render(drawable.batches, settings, frames.back());
+        render(batches, settings, frames.back());
         downsample(frames.back());
     }
     return frames;
@@ -87,6 +87,17 @@ double measured_error(const std::vector<Frame>& original, const std::vector<Fram
         for (std::size_t i = 0; i < original[v].color.size(); ++i) sum += hybrid_pixel_error(original[v].color[i], proxy[v].color[i]);
     const double scale = double(view.pixel) / pixel_world_size(settings.sizing);
     return sum * scale * scale / double(original.size());
+}
+
+std::vector<int> subtree_nodes_of(const Model& model, int root) {
+    std::vector<int> nodes;
+    for (std::vector<int> pending{root}; !pending.empty();) {
+        const int k = pending.back();
+        pending.pop_back();
+        nodes.push_back(k);
+        pending.insert(pending.end(), model.nodes[std::size_t(k)].children.begin(), model.nodes[std::size_t(k)].children.end());
+    }
+    return nodes;
 }
 
 // The box as a drawable: each face one quad over its whole baked texture.
@@ -156,14 +167,39 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
                                    double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
     const Drawable subtree = make_drawable(model, textures, n);
     const MeasuringView view = measuring_view(subtree.bounds, settings);
-    const std::vector<Frame> original = render_views(subtree, view, settings.mode);
+    // Among its siblings: the parent's sub-tree but n's own, drawn in every measuring render.
+    std::vector<const Primitive*> others;
+    if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
+        std::vector<bool> mine(model.nodes.size(), false);
+        for (int k : subtree_nodes_of(model, n)) mine[std::size_t(k)] = true;
+        // Only what the measuring renders can see: within 2 radii of the centre (camera at 2r, view r wide).
+        const Eigen::Vector3f center = view.sphere.center;
+        const float reach = 2 * view.sphere.radius;
+        for (int k : subtree_nodes_of(model, parent))
+            if (!mine[std::size_t(k)])
+                for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
+                    Eigen::AlignedBox3f bounds;
+                    for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
+                    if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
+                }
+    }
+    // Drawn in its materials' base colours, untextured: it only hides and is hidden, the same in every render.
+    std::vector<Material> plain = model.materials;
+    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
+    const Drawable context = make_drawable(plain, DecodedTextures{}, others);
+    auto with_context = [&](const Drawable& d) {
+        std::vector<Batch> batches = context.batches;
+        batches.insert(batches.end(), d.batches.begin(), d.batches.end());
+        return batches;
+    };
+    const std::vector<Frame> original = render_views(with_context(subtree), view, settings.mode);
 
     std::vector<Proxy> proxies;
     {
         Proxy proxy;
         proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
         const auto drawable = box_proxy_drawable(subtree, box, view, settings);
-        proxy.error = measured_error(original, render_views(drawable->drawable, view, settings.mode), view, settings);
+        proxy.error = measured_error(original, render_views(with_context(drawable->drawable), view, settings.mode), view, settings);
         proxies.push_back(std::move(proxy));
     }
     SimplifyOptions options;
@@ -184,7 +220,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
             std::vector<const Primitive*> primitives;
             for (const Primitive& p : proxy.primitives) primitives.push_back(&p);
             const Drawable drawable = make_drawable(model.materials, textures, primitives);
-            proxy.error = measured_error(original, render_views(drawable, view, settings.mode), view, settings);
+            proxy.error = measured_error(original, render_views(with_context(drawable), view, settings.mode), view, settings);
         }
         proxies.push_back(std::move(proxy));
     }

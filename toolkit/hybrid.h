@@ -3,7 +3,7 @@
 // its textured box, or the sub-tree simplified on its own at a few face
 // targets (meshoptimizer, the sub-tree's own materials and textures). Each
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
-// rendered alone, from the 8 corner directions, orthographically with pixels
+// rendered among their siblings, from the 8 corner directions, orthographically with pixels
 // of the sizing view's size (texel = pixel, texture_sizing.h), and the error
 // is the number of pixels that differ, summed as hybrid_pixel_error weighs
 // them. Starting from the root's cheapest proxy, a plan repeatedly takes the
