@@ -5,6 +5,7 @@
 #include "toolkit/framing.h"
 #include "toolkit/kept_subtrees.h"
 #include "toolkit/level_budgets.h"
+#include "toolkit/model_subtree.h"
 #include "toolkit/simplification.h"
 #include "toolkit/vertex_layout.h"
 
@@ -89,17 +90,6 @@ double measured_error(const std::vector<Frame>& original, const std::vector<Fram
     return sum * scale * scale / double(original.size());
 }
 
-std::vector<int> subtree_nodes_of(const Model& model, int root) {
-    std::vector<int> nodes;
-    for (std::vector<int> pending{root}; !pending.empty();) {
-        const int k = pending.back();
-        pending.pop_back();
-        nodes.push_back(k);
-        pending.insert(pending.end(), model.nodes[std::size_t(k)].children.begin(), model.nodes[std::size_t(k)].children.end());
-    }
-    return nodes;
-}
-
 // The box as a drawable: each face one quad over its whole baked texture.
 struct BoxProxyDrawable {
     std::vector<Material> materials;
@@ -171,11 +161,11 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
     std::vector<const Primitive*> others;
     if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
         std::vector<bool> mine(model.nodes.size(), false);
-        for (int k : subtree_nodes_of(model, n)) mine[std::size_t(k)] = true;
+        for (int k : subtree_nodes(model, n)) mine[std::size_t(k)] = true;
         // Only what the measuring renders can see: within 2 radii of the centre (camera at 2r, view r wide).
         const Eigen::Vector3f center = view.sphere.center;
         const float reach = 2 * view.sphere.radius;
-        for (int k : subtree_nodes_of(model, parent))
+        for (int k : subtree_nodes(model, parent))
             if (!mine[std::size_t(k)])
                 for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
                     Eigen::AlignedBox3f bounds;

@@ -1,5 +1,7 @@
 #include "toolkit/model_subtree.h"
 
+#include <algorithm>
+
 namespace boxlod {
 
 int MaterialCopier::texture(int index) {
@@ -41,6 +43,19 @@ Model extract_subtree(const Model& model, int root) {
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, index});
     }
     return out;
+}
+
+std::vector<int> subtree_nodes(const Model& model, int root) {
+    std::vector<int> nodes;
+    for (std::vector<int> pending{root}; !pending.empty();) {
+        const int n = pending.back();
+        pending.pop_back();
+        nodes.push_back(n);
+        const std::vector<int>& children = model.nodes[std::size_t(n)].children;
+        pending.insert(pending.end(), children.begin(), children.end());
+    }
+    std::sort(nodes.begin(), nodes.end());
+    return nodes;
 }
 
 }  // namespace boxlod

@@ -5,6 +5,7 @@
 #include "toolkit/model.h"
 
 #include <map>
+#include <vector>
 
 namespace boxlod {
 
@@ -19,6 +20,9 @@ struct MaterialCopier {
     int material(int index);
     int texture(int index);
 };
+
+// The nodes of the sub-tree under `root`, in index order (for the root: every node).
+std::vector<int> subtree_nodes(const Model& model, int root);
 
 // The sub-tree under `root` (names, rules, scopes, geometry, instance_of), root first;
 // `source` is kept.

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/parallel.h"
+#include "toolkit/model_subtree.h"
 
 #include <meshoptimizer.h>
 
@@ -33,20 +34,6 @@ void append(Primitive& to, const Primitive& from) {
     to.uvs.insert(to.uvs.end(), from.uvs.begin(), from.uvs.end());
     to.tangents.insert(to.tangents.end(), from.tangents.begin(), from.tangents.end());
     for (std::uint32_t i : from.indices) to.indices.push_back(base + i);
-}
-
-// The sub-tree's nodes in index order (for the root: every node).
-std::vector<int> subtree_nodes(const Model& model, int root) {
-    std::vector<int> nodes;
-    for (std::vector<int> pending{root}; !pending.empty();) {
-        const int n = pending.back();
-        pending.pop_back();
-        nodes.push_back(n);
-        const std::vector<int>& children = model.nodes[std::size_t(n)].children;
-        pending.insert(pending.end(), children.begin(), children.end());
-    }
-    std::sort(nodes.begin(), nodes.end());
-    return nodes;
 }
 
 // Groups in the order their first primitive appears in the node order.
