@@ -18,6 +18,11 @@
 namespace boxlod {
 namespace {
 
+// Level c's budget in bytes (level_budgets.h), c >= 1 when the parameters give budgets.
+double level_budget(const LodSession& session, int level) {
+    return budget_bytes(session.parameters.budgets[std::size_t(level - 1)], double(session.original_cost.bytes()));
+}
+
 // Copies the `region` of a baked face into a page with its gutter: the face's
 // own texels around the region where it has them (so a cropped face samples
 // the neighbours it had uncropped), its edge texels repeated beyond; clipped
@@ -95,7 +100,7 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->original_cost = model_cost(model);
     const int levels = asked_levels(p);
     std::vector<double> budgets;  // levels 1..N, bytes
-    for (const ByteBudget& b : p.budgets) budgets.push_back(budget_bytes(b, double(session->original_cost.bytes())));
+    for (std::size_t c = 1; c <= p.budgets.size(); ++c) budgets.push_back(level_budget(*session, int(c)));
     const bool textured = p.render_mode != RenderMode::untextured;
     if (p.level_mode == LevelMode::hybrid) {
         session->hybrid = std::make_shared<const HybridPlan>(
@@ -439,10 +444,8 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
     };
     for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
-    const LodParameters& p = session.parameters;
-    if (!p.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
-        statistics.push_back(number_entry(
-            "budget_bytes", std::floor(budget_bytes(p.budgets[std::size_t(lod.current_level - 1)], double(session.original_cost.bytes())))));
+    if (!session.parameters.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
+        statistics.push_back(number_entry("budget_bytes", std::floor(level_budget(session, lod.current_level))));
     statistics.push_back(number_entry("obtained_levels", session.levels.obtained_levels));
     statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
     return statistics;
@@ -494,7 +497,6 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     return lod;
 }
 
-
 // The cut of level c as the session holds it: a hybrid state, error-greedy's
 // openings within a budget, or the level values.
 Cut level_cut(const LodSession& session, int c) {
@@ -512,10 +514,6 @@ double spent_bytes(const Lod& lod) { return double(combined_cost({&lod.cost}).by
 std::string budget_problem(int level, double budget, double coarsest) {
     return "--budgets: level " + std::to_string(level) + "'s budget of " + format_number(std::floor(budget)) +
            " bytes is below the coarsest cut's " + format_number(coarsest) + " bytes";
-}
-
-double level_budget(const LodSession& session, int level) {
-    return budget_bytes(session.parameters.budgets[std::size_t(level - 1)], double(session.original_cost.bytes()));
 }
 
 // Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its box).
