@@ -81,6 +81,10 @@ void check_writable_directory(const fs::path& directory, const std::string& path
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
     // The pid keeps two processes writing the same file from sharing a temporary.
     const std::string temporary = path + temporary_suffix + std::to_string(::getpid());
+    const fs::path folder = fs::path(path).parent_path();  // made here, as check_output_file allows
+    std::error_code folder_error;
+    if (!folder.empty()) fs::create_directories(folder, folder_error);
+    if (folder_error) throw_input_error(path, "", "cannot make its folder: " + folder_error.message());
     PartialOutputs& outputs = partial_outputs();
     {
         std::lock_guard lock(outputs.mutex);
@@ -109,27 +113,35 @@ void write_atomically(const std::string& path, const std::function<void(const st
     }
 }
 
+namespace {
+
+// The folder that takes `path`'s files: `wanted` or, where it does not exist
+// yet, its nearest ancestor that does (the rest is made when writing).
+void check_folder_or_ancestor(const fs::path& wanted, const std::string& path) {
+    std::error_code error;
+    const fs::path absolute = fs::absolute(wanted, error).lexically_normal();
+    fs::path existing = absolute;
+    while (!fs::exists(existing, error) && existing.has_relative_path()) existing = existing.parent_path();
+    if (!fs::is_directory(existing, error))
+        throw_input_error(path, "", existing != absolute          ? quoted(existing) + " is not a folder"
+                                    : wanted == fs::path(path) ? "exists and is not a folder"
+                                                               : quoted(wanted) + " is not a folder");
+    check_writable_directory(existing, path);
+}
+
+}  // namespace
+
 void check_output_file(const std::string& path) {
     std::error_code error;
     if (path.empty()) throw_input_error("''", "", "an empty file name where an output file was expected");
     if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
     fs::path directory = fs::path(path).parent_path();
-    if (directory.empty()) directory = ".";
-    if (!fs::exists(directory, error)) throw_input_error(path, "", std::string("no such folder ").append(quoted(directory)));
-    if (!fs::is_directory(directory, error)) throw_input_error(path, "", quoted(directory) + " is not a folder");
-    check_writable_directory(directory, path);
+    check_folder_or_ancestor(directory.empty() ? fs::path(".") : directory, path);
 }
 
 void check_output_directory(const std::string& path) {
-    std::error_code error;
     if (path.empty()) throw_input_error("''", "", "an empty folder name where an output folder was expected");
-    // The folder, or the nearest ancestor that exists (the rest is made when writing).
-    const fs::path wanted = fs::absolute(path, error).lexically_normal();
-    fs::path existing = wanted;
-    while (!fs::exists(existing, error) && existing.has_relative_path()) existing = existing.parent_path();
-    if (!fs::is_directory(existing, error))
-        throw_input_error(path, "", existing == wanted ? "exists and is not a folder" : quoted(existing) + " is not a folder");
-    check_writable_directory(existing, path);
+    check_folder_or_ancestor(path, path);
 }
 
 OutputGroup::OutputGroup() {

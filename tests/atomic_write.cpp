@@ -25,14 +25,24 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
     EXPECT_EQ(output_problem(check_output_file, folder.string()), folder.string() + ": is a directory, not a file to write");
     EXPECT_EQ(output_problem(check_output_file, (folder / "file" / "a.png").string()),
               (folder / "file" / "a.png").string() + ": '" + (folder / "file").string() + "' is not a folder");
-    EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()),
-              (folder / "none" / "a.png").string() + ": no such folder '" + (folder / "none").string() + "'");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()), "");  // made when written
+    EXPECT_FALSE(fs::exists(folder / "none"));  // checked, not made
     EXPECT_EQ(output_problem(check_output_file, "/proc/a.png").rfind("/proc/a.png: cannot write here: ", 0), 0u);
     EXPECT_EQ(output_problem(check_output_directory, (folder / "new" / "deeper").string()), "");
     EXPECT_FALSE(fs::exists(folder / "new"));  // checked, not made
     EXPECT_EQ(output_problem(check_output_directory, (folder / "file").string()), (folder / "file").string() + ": exists and is not a folder");
     EXPECT_EQ(output_problem(check_output_directory, (folder / "file" / "sub").string()),
               (folder / "file" / "sub").string() + ": '" + (folder / "file").string() + "' is not a folder");
+}
+
+TEST(AtomicWrite, AFileInAFolderThatDoesNotExistYetMakesItsFolder) {
+    fs::path folder = test::scratch_folder("atomic_write_folder");
+    write_text_atomically((folder / "new" / "deeper" / "a.txt").string(), "made");
+    EXPECT_EQ(test::read_text(folder / "new" / "deeper" / "a.txt"), "made");
+    test::write_text(folder / "file", "x");
+    EXPECT_EQ(test::input_error_of([&] { write_text_atomically((folder / "file" / "a.txt").string(), "no"); })
+                  .rfind((folder / "file" / "a.txt").string() + ": cannot make its folder: ", 0),
+              0u);
 }
 
 TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {

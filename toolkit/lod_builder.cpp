@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 namespace boxlod {
@@ -487,6 +488,9 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     out.is_lod = true;
     LodParameters saved = p;
     saved.current_level = current_level;
+    // A shipped asset names its model by file name: no builder's folder leaks
+    // into it, and a build in any folder gives the same bytes.
+    saved.model = std::filesystem::path(p.model).filename().string();
     for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
     add_pages(out, lod.atlas, packing.height_depth, textured);
     add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
