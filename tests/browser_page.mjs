@@ -1,7 +1,7 @@
-// Opens tests/tiles_cesium.html in Debian's Chromium (headless, WebGL on
-// SwiftShader) through playwright-core, waits for its result, saves a
-// screenshot and prints the result as JSON.
-//   node tiles_cesium.mjs PLAYWRIGHT_DIR URL SCREENSHOT.png
+// Opens a test page (tests/tiles_cesium.html, tests/chain_babylon.html) in
+// Debian's Chromium (headless, WebGL on SwiftShader) through playwright-core,
+// waits for its result, saves a screenshot and prints the result as JSON.
+//   node browser_page.mjs PLAYWRIGHT_DIR URL SCREENSHOT.png
 import { createRequire } from "node:module";
 import path from "node:path";
 
@@ -14,7 +14,10 @@ const browser = await chromium.launch({
 });
 try {
     const page = await browser.newPage({ viewport: { width: 640, height: 480 } });
-    page.on("console", (message) => { if (message.type() === "error") console.error("page:", message.text()); });
+    // BOXLOD_PAGE_LOG=1 passes every console message on (the loaders' logs), else only errors.
+    page.on("console", (message) => {
+        if (message.type() === "error" || process.env.BOXLOD_PAGE_LOG) console.error("page:", message.text());
+    });
     await page.goto(url);
     await page.waitForFunction(() => window.result !== undefined, null, { timeout: 150000 });
     const result = await page.evaluate(() => window.result);

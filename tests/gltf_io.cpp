@@ -360,13 +360,25 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(0).GetNumberAsDouble(), 0.25);
         EXPECT_EQ(gltf.extensionsUsed, (std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness", "MSFT_lod"}));
         EXPECT_EQ(gltf.images.size(), finest.textures.size());
-        // Equal materials and meshes are shared too: the coarse mass is level 0's mass, brick and all;
+        // Equal materials and geometry are shared too: the coarse mass draws level 0's mass, brick and all;
         // only the renamed glass is new.
         ASSERT_EQ(gltf.materials.size(), 3u);
         EXPECT_EQ(gltf.materials[2].name, "glass_coarse");
         EXPECT_EQ(gltf.materials[2].pbrMetallicRoughness.baseColorTexture.index, -1);
-        EXPECT_EQ(gltf.meshes.size(), 3u);  // level 0's mass and two windows
-        EXPECT_EQ(gltf.nodes[std::size_t(coarse_root) + 1].mesh, gltf.nodes[1].mesh);
+        // Level 0's mass and two windows, and the coarse level's own mesh of the mass (Babylon.js disposes
+        // a replaced level's meshes) on the same accessors.
+        ASSERT_EQ(gltf.meshes.size(), 4u);
+        const tinygltf::Mesh &mass = gltf.meshes[std::size_t(gltf.nodes[1].mesh)],
+                             &coarse_mass = gltf.meshes[std::size_t(gltf.nodes[std::size_t(coarse_root) + 1].mesh)];
+        EXPECT_NE(&mass, &coarse_mass);
+        EXPECT_EQ(coarse_mass.primitives[0].attributes, mass.primitives[0].attributes);
+        // Level 0 (not the coarsest, which Babylon.js loads first) keeps one index list in a buffer of its
+        // own, a data URI even in a .glb, so that a client that defers URIs loads the levels in order.
+        ASSERT_EQ(gltf.buffers.size(), 2u);
+        int deferred = 0;
+        for (const tinygltf::Accessor& accessor : gltf.accessors)
+            deferred += accessor.bufferView >= 0 && gltf.bufferViews[std::size_t(accessor.bufferView)].buffer == 1;
+        EXPECT_EQ(deferred, 1);
     }
     EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {0.25}, (folder / "bad.glb").string()), std::logic_error);
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 using namespace boxlod;
 
 TEST(Tileset, BoxesTurnFromYUpToZUp) {
@@ -25,22 +27,16 @@ TEST(Tileset, EastNorthUpFrameOnTheEllipsoid) {
     EXPECT_NEAR(pole[12], 0, 1e-6);
 }
 
-TEST(Tileset, GeometricErrorIsTheDepthTheBoxesLose) {
-    Model model;
-    add_node(model, -1, "root");
-    int part = add_node(model, 0, "part");
-    Primitive quad;
-    quad.positions = {{0.4f, 0.4f, 0.3f}, {0.6f, 0.4f, 0.3f}, {0.6f, 0.6f, 0.3f}};
-    quad.indices = {0, 1, 2};
-    model.nodes[std::size_t(part)].primitives.push_back(quad);
-    OrientedBox unit;
-    unit.center = {0.5f, 0.5f, 0.5f};
-    unit.half_extents = {0.5f, 0.5f, 0.5f};
-    std::vector<std::optional<OrientedBox>> boxes{unit, unit};
-    Cut boxed{{0, 1}, {}, {1}, {}};
-    EXPECT_NEAR(cut_geometric_error(model, boxed, boxes), 0.3, 1e-6);  // the quad lies 0.3 behind the -Z face
-    Cut kept{{0, 1}, {1}, {}, {}};
-    EXPECT_EQ(cut_geometric_error(model, kept, boxes), 0);
+TEST(Tileset, ClientsRefineALevelNearerThanItsSwitchDistance) {
+    TextureSizing view;
+    view.fovy_degrees = 90;
+    view.resolution = 100;
+    const double error = level_geometric_error(50, view);
+    EXPECT_NEAR(error, 16, 1e-4);  // a pixel at 50 m is 2 x 50 x tan(45 degrees) / 100 = 1 m
+    // CesiumJS's and 3d-tiles-renderer's projection of a tile's error on a screen as tall as the view.
+    auto screen_space_error = [&](double distance) { return error * view.resolution / (2 * distance * std::tan(M_PI / 4)); };
+    EXPECT_GT(screen_space_error(49.5), client_screen_space_error);  // nearer: level c - 1
+    EXPECT_LT(screen_space_error(50.5), client_screen_space_error);  // farther: level c stays
 }
 
 TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
@@ -57,6 +53,9 @@ TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
     EXPECT_EQ(root["transform"].size(), 16u);
     ASSERT_EQ(root["children"].size(), 2u);
     EXPECT_GE(root["geometricError"].get<double>(), 11.0);  // the city's diameter: 12 x 2 x 2 m of boxes
+    EXPECT_LT(root["geometricError"].get<double>(), 13.0);
+    shed.levels[1].geometric_error = 10;  // a coarsest level drawn up to twice its switch distance
+    EXPECT_EQ(nlohmann::json::parse(tileset_json({house, shed}, {}))["root"]["geometricError"].get<double>(), 20.0);
     // house: L2 (error raised to L1's 0.5) > L1 > L0, each replacing its parent.
     const nlohmann::json* tile = &root["children"][0];
     std::vector<std::pair<std::string, double>> chain;

@@ -50,6 +50,13 @@ struct Writer {
         int mesh;
     };
     std::unordered_multimap<std::uint64_t, WrittenMesh> meshes;
+    // Babylon.js disposes a level's meshes, and their instances, when the next
+    // level replaces it: a level's nodes use glTF meshes of its own, copies
+    // that share the accessors of a mesh an earlier level wrote.
+    int level_first_mesh = 0;
+    std::map<int, int> level_copies;  // a mesh of an earlier level -> this level's copy
+    std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
+    std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
     std::set<std::string> image_files;        // .gltf: the PNG names taken
 
     Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}}, vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
@@ -121,9 +128,24 @@ struct Writer {
         return int(gltf.accessors.size()) - 1;
     }
 
-    // Lays the streams out in one buffer, in a fixed order, and places the views.
+    int level_mesh(int mesh) {
+        if (mesh >= level_first_mesh) return mesh;
+        auto [at, added] = level_copies.try_emplace(mesh, int(gltf.meshes.size()));
+        if (added) gltf.meshes.push_back(tinygltf::Mesh(gltf.meshes[std::size_t(mesh)]));
+        return at->second;
+    }
+
+    void start_level() {
+        level_first_mesh = int(gltf.meshes.size());
+        level_meshes_begin.push_back(level_first_mesh);
+        level_copies.clear();
+    }
+
+    // Lays the streams out in buffer 0, in a fixed order, and places the views;
+    // the level buffers follow it.
     const std::vector<unsigned char>& finish() {
-        gltf.buffers.resize(1);
+        gltf.buffers.resize(1 + level_buffers.size());
+        for (std::size_t k = 0; k < level_buffers.size(); ++k) gltf.buffers[1 + k].data = level_buffers[k];
         std::vector<unsigned char>& data = gltf.buffers[0].data;
         for (Stream* stream : {&vec3, &vec2, &vec4, &indices, &blobs}) {
             if (stream->bytes.empty()) continue;
@@ -278,7 +300,7 @@ void add_nodes(Writer& w, const Model& model) {
         const std::uint64_t hash = w.share && node.has_geometry() ? geometry_hash(node) : 0;
         const int shared = w.share && node.has_geometry() ? written_mesh(w, node, hash, materials) : -1;
         if (shared >= 0) {
-            out.mesh = shared;
+            out.mesh = w.level_mesh(shared);
         } else if (node.has_geometry()) {
             tinygltf::Mesh mesh;
             mesh.name = node.name;
@@ -300,6 +322,51 @@ void add_nodes(Writer& w, const Model& model) {
             if (w.share) w.meshes.emplace(hash, Writer::WrittenMesh{&node, materials, out.mesh});
         }
         w.gltf.nodes.push_back(std::move(out));
+    }
+}
+
+// Babylon.js loads MSFT_lod levels coarsest first, all at once, each level on
+// completion disposing the one before; a level that finishes before a coarser
+// one (all its parts already loading for another level) breaks the load. It
+// holds a level's first request of a URI back until the coarser level is done,
+// so each level but the coarsest keeps the indices of its smallest primitive
+// in a buffer of its own, written as a data URI (bytes: one small index list
+// a level, base64): the levels then complete in order in any client.
+void sequence_levels(Writer& w) {
+    const std::size_t levels = w.level_meshes_begin.size();
+    auto meshes_of = [&](std::size_t k) {
+        return std::pair{std::size_t(w.level_meshes_begin[k]), k + 1 < levels ? std::size_t(w.level_meshes_begin[k + 1]) : w.gltf.meshes.size()};
+    };
+    std::map<int, std::set<std::size_t>> levels_of;  // an index accessor -> the levels drawing it
+    for (std::size_t k = 0; k < levels; ++k)
+        for (std::size_t m = meshes_of(k).first; m < meshes_of(k).second; ++m)
+            for (const tinygltf::Primitive& p : w.gltf.meshes[m].primitives) levels_of[p.indices].insert(k);
+    for (std::size_t k = 0; k + 1 < levels; ++k) {  // the coarsest, loaded first, waits for nothing
+        tinygltf::Primitive* smallest = nullptr;
+        for (std::size_t m = meshes_of(k).first; m < meshes_of(k).second; ++m)
+            for (tinygltf::Primitive& p : w.gltf.meshes[m].primitives)
+                if (!smallest || w.gltf.accessors[std::size_t(p.indices)].count < w.gltf.accessors[std::size_t(smallest->indices)].count)
+                    smallest = &p;
+        if (!smallest) continue;
+        tinygltf::Accessor accessor = w.gltf.accessors[std::size_t(smallest->indices)];
+        const std::size_t bytes = accessor.count * std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)));
+        const auto begin = w.indices.bytes.begin() + std::ptrdiff_t(accessor.byteOffset);  // the indices' view starts the stream
+        w.level_buffers.emplace_back(begin, begin + std::ptrdiff_t(bytes));
+        tinygltf::BufferView view;
+        view.buffer = int(w.level_buffers.size());
+        view.byteLength = bytes;
+        view.target = TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
+        w.gltf.bufferViews.push_back(view);
+        accessor.bufferView = int(w.gltf.bufferViews.size()) - 1;
+        accessor.byteOffset = 0;
+        std::set<std::size_t>& drawn_by = levels_of[smallest->indices];
+        if (drawn_by.size() == 1) {  // the level's own accessor moves
+            w.gltf.accessors[std::size_t(smallest->indices)] = accessor;
+        } else {  // shared with other levels: this level draws a copy, they the original
+            drawn_by.erase(k);
+            w.gltf.accessors.push_back(accessor);
+            smallest->indices = int(w.gltf.accessors.size()) - 1;
+        }
     }
 }
 
@@ -345,10 +412,12 @@ void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector
     for (const Model* model : levels) {
         w.node_offset = int(w.gltf.nodes.size());
         roots.push_back(w.node_offset);
+        w.start_level();
         add_images(w, *model, target, binary, threads);
         add_materials(w, *model);
         add_nodes(w, *model);
     }
+    if (w.share) sequence_levels(w);
     add_scene(w, roots, screen_coverage);
 
     const std::vector<unsigned char>& data = w.finish();

@@ -71,24 +71,10 @@ std::array<double, 16> east_north_up_to_ecef(const Geodetic& at) {
     return m;
 }
 
-double cut_geometric_error(const Model& model, const Cut& cut, const std::vector<std::optional<OrientedBox>>& boxes) {
-    double error = 0;
-    for (int boxed : cut.box_nodes) {
-        const OrientedBox& box = *boxes[std::size_t(boxed)];
-        const Eigen::Matrix3d to_box = box.axes.cast<double>().transpose();
-        for (std::vector<int> pending{boxed}; !pending.empty();) {
-            const Node& node = model.nodes[std::size_t(pending.back())];
-            pending.pop_back();
-            pending.insert(pending.end(), node.children.begin(), node.children.end());
-            for (const Primitive& primitive : node.primitives)
-                for (const Eigen::Vector3f& p : primitive.positions) {
-                    const Eigen::Vector3d local = to_box * (p - box.center).cast<double>();
-                    const Eigen::Vector3d inside = box.half_extents.cast<double>() - local.cwiseAbs();
-                    error = std::max(error, std::max(0.0, inside.minCoeff()));
-                }
-        }
-    }
-    return error;
+double level_geometric_error(double switch_distance, const TextureSizing& view) {
+    TextureSizing at = view;
+    at.distance = float(switch_distance);
+    return client_screen_space_error * pixel_world_size(at);
 }
 
 std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin) {
@@ -103,7 +89,12 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
         }
     }
     const Eigen::Vector3d center = bounds.center().cast<double>(), half = bounds.size().cast<double>() / 2;
-    const double diameter = 2 * half.norm();
+    // The root is refined while the city is more than a few pixels tall, and
+    // at least as far as one doubling of distance beyond every coarsest
+    // level's switch (where the next level would be), so those levels are
+    // drawn over a range as every other level is.
+    double root_error = 2 * half.norm();
+    for (const TileObject& object : objects) root_error = std::max(root_error, 2 * monotone_errors(object.levels).back());
     nlohmann::json children = nlohmann::json::array();
     for (const TileObject& object : objects) children.push_back(object_chain(object));
     nlohmann::json root = {
@@ -111,12 +102,12 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
         {"boundingVolume",
          {{"box", {center.x(), center.y(), center.z(), std::max(half.x(), minimum_half_extent), 0, 0, 0,
                    std::max(half.y(), minimum_half_extent), 0, 0, 0, std::max(half.z(), minimum_half_extent)}}}},
-        {"geometricError", diameter},
+        {"geometricError", root_error},
         {"refine", "ADD"},
         {"children", std::move(children)},
     };
     nlohmann::json tileset = {{"asset", {{"version", "1.1"}, {"generator", "boxlod"}}},
-                              {"geometricError", diameter},
+                              {"geometricError", root_error},
                               {"root", std::move(root)}};
     return tileset.dump(1) + "\n";
 }

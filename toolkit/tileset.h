@@ -4,11 +4,10 @@
 // only child its next finer level (REPLACE refinement) down to the original;
 // glb content; the tileset placed on the WGS84 ellipsoid at a geodetic origin.
 #pragma once
-#include "toolkit/cut.h"
 #include "toolkit/model.h"
+#include "toolkit/texture_sizing.h"
 
 #include <array>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +19,7 @@ struct Geodetic {
 
 struct TileLevel {
     std::string content;     // the glb's URI, relative to the tileset
-    double geometric_error;  // metres: what is lost when this level is drawn instead of the original
+    double geometric_error;  // metres (level_geometric_error; 0 for the original)
 };
 
 struct TileObject {
@@ -31,14 +30,23 @@ struct TileObject {
 
 // The tileset JSON. The root (ADD, no content) holds every object's chain; its
 // geometric error is the objects' bounding sphere diameter, so a client opens
-// it whenever the city is more than a few pixels tall. A level's error is made
-// at least that of every finer level, as refinement requires.
+// it whenever the city is more than a few pixels tall, and at least twice each
+// coarsest level's error, so a coarsest level is drawn over one doubling of
+// distance as every other level is. A level's error is made at least that of
+// every finer level, as refinement requires.
 std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin);
 
-// A level's geometric error: the largest distance from a vertex of a boxed
-// sub-tree to the surface of its box, over the cut's boxes (0: nothing boxed).
-// What the box loses in depth; its faces' textures keep the rest.
-double cut_geometric_error(const Model& model, const Cut& cut, const std::vector<std::optional<OrientedBox>>& boxes);
+// The screen-space error, in pixels, at which 3D Tiles clients refine a tile
+// by default (CesiumJS's maximumScreenSpaceError, 3d-tiles-renderer's errorTarget).
+constexpr double client_screen_space_error = 16;
+
+// The geometric error of a level drawn from `switch_distance` on (d_c,
+// docs/cost.md: Switching levels): the metres that client_screen_space_error
+// pixels of the sizing view cover there. A client projects it as
+// e H / (2 d tan(fovy / 2)) pixels (3D Tiles 1.1: Geometric error), which
+// passes its limit nearer than d_c: on a screen as tall as the view it draws
+// level c - 1 exactly where boxlod switches. view.distance is not read.
+double level_geometric_error(double switch_distance, const TextureSizing& view);
 
 // The east-north-up frame at `at` in Earth-centred Earth-fixed metres (WGS84),
 // column-major as 3D Tiles' `transform`.

@@ -65,6 +65,8 @@ KeyValues level_report(const std::string& name, const Lod& lod, const LodSession
     return report;
 }
 
+constexpr int max_chain_levels = 10;
+
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
 void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<int>& levels, ChainCost& chain) {
     const std::string output = a.text("output");
@@ -148,8 +150,14 @@ int run_build(const Arguments& a) {
     LevelSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
     std::vector<int> levels;
+    // Babylon.js loads at most 10 levels of MSFT_lod, the coarsest (its
+    // maxLODsToLoad): a chain keeps the 10 finest, the ones drawn nearest.
+    const int last = chain_file ? std::min(obtained, max_chain_levels - 1) : obtained;
+    if (chain_file && last < obtained)
+        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", last,
+                     obtained, max_chain_levels);
     if (all_levels)
-        for (int c = 0; c <= obtained; ++c) levels.push_back(c);
+        for (int c = 0; c <= last; ++c) levels.push_back(c);
     else
         levels.push_back(parameters.current_level);
     if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
@@ -184,8 +192,9 @@ Subcommand build_subcommand() {
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces, sized by --level-distances"},
                  {"glb", "", "write each level as one NAME.glb, its pages inside, instead of NAME.gltf + .bin + PNGs"},
                  {"chain", "",
-                  "write every level 0..N into one file, -o OUT.glb or OUT.gltf: glTF's MSFT_lod, switch hints in "
-                  "extras.MSFT_screencoverage, shared textures stored once; levels sized by --level-distances"},
+                  "write every level 0..N (at most the 10 finest, as MSFT_lod clients load) into one file, -o OUT.glb or "
+                  "OUT.gltf: glTF's MSFT_lod, switch hints in extras.MSFT_screencoverage, shared textures stored once; "
+                  "levels sized by --level-distances"},
                  {"level-distances", "auto|D1,...,DN",
                   "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto "
                   "(the default; --manual: every level at the sizing distance): the sizing distance x 2^(c-1), so each level "

@@ -19,12 +19,16 @@ namespace {
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
 // One object's chain: every level as OUTDIR/object_K_L<c>.glb, sized per level
-// (auto distances; --manual: all at one distance), with its geometric error.
+// (auto distances; --manual: all at one distance), with the geometric error
+// that makes clients switch where a chain does.
 TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
                         const std::string& folder) {
     Model model = extract_subtree(city, node);
     LevelSessions sessions(model, parameters, 1);
-    if (per_level) sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    // Level c is drawn from d_c on, as a chain switches (auto distances), also
+    // where --manual sizes every level at one distance.
+    const std::vector<float> switches = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    if (per_level) sessions.distances = switches;
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
@@ -33,7 +37,7 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
         Lod lod = build_lod(session, c, 1);
         std::string content = "object_" + std::to_string(index) + "_L" + std::to_string(c) + ".glb";
         export_gltf(lod.model, (std::filesystem::path(folder) / content).string(), 1);
-        object.levels.push_back({content, cut_geometric_error(model, lod.cut, session.boxes)});
+        object.levels.push_back({content, c == 0 ? 0 : level_geometric_error(switches[std::size_t(c - 1)], session.sizing)});
     }
     return object;
 }
@@ -82,7 +86,8 @@ Subcommand tiles_subcommand() {
     Subcommand tiles{{"tiles", "MODEL|PARAMS.txt",
                       "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and streets) "
                       "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down to the "
-                      "original; glb content, boxes from boxlod's boxes, geometric errors in metres; "
+                      "original; glb content, boxes from boxlod's boxes, geometric errors in metres that make clients "
+                      "switch levels where a chain does (16 pixels at the level's switch distance); "
                       "OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
                       {
                           {"output", "OUTDIR", "folder for the tileset (required)", {}, 'o'},
