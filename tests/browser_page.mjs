@@ -1,6 +1,7 @@
-// Opens a test page (tests/tiles_cesium.html, tests/chain_babylon.html) in
-// Debian's Chromium (headless, WebGL on SwiftShader) through playwright-core,
-// waits for its result, saves a screenshot and prints the result as JSON.
+// Opens a test page (tests/tiles_cesium.html, tests/chain_babylon.html,
+// clients/chain_three.html) in Debian's Chromium (headless, WebGL on
+// SwiftShader) through playwright-core, waits for its result, saves a
+// screenshot and prints the result as JSON.
 //   node browser_page.mjs PLAYWRIGHT_DIR URL SCREENSHOT.png
 import { createRequire } from "node:module";
 import path from "node:path";

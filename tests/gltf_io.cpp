@@ -340,7 +340,7 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
     coarse.materials[1].name = "glass_coarse";
     for (const char* name : {"chain.glb", "chain.gltf"}) {
         std::string path = (folder / name).string();
-        export_gltf_lods({&finest, &coarse}, {0.25, 0}, path, 2);
+        export_gltf_lods({&finest, &coarse}, {LodSwitch{40, 0.25, 0, 0}}, path, 2);
         Model read_back = load_model(path);  // (materials and textures: every level's)
         read_back.materials.resize(finest.materials.size());
         read_back.textures.resize(finest.textures.size());
@@ -358,6 +358,8 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         ASSERT_EQ(lod.Get("ids").ArrayLen(), 1u);
         EXPECT_EQ(lod.Get("ids").Get(0).GetNumberAsInt(), coarse_root);
         EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(0).GetNumberAsDouble(), 0.25);
+        EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(1).GetNumberAsDouble(), 0);
+        EXPECT_EQ(gltf.nodes[0].extras.Get("boxlod").Get("switch_distances").Get(0).GetNumberAsDouble(), 40);
         EXPECT_EQ(gltf.extensionsUsed, (std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness", "MSFT_lod"}));
         EXPECT_EQ(gltf.images.size(), finest.textures.size());
         // Equal materials and geometry are shared too: the coarse mass draws level 0's mass, brick and all;
@@ -380,7 +382,7 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
             deferred += accessor.bufferView >= 0 && gltf.bufferViews[std::size_t(accessor.bufferView)].buffer == 1;
         EXPECT_EQ(deferred, 1);
     }
-    EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {0.25}, (folder / "bad.glb").string()), std::logic_error);
+    EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {}, (folder / "bad.glb").string()), std::logic_error);
 }
 
 TEST(GltfIo, ExportIsByteIdenticalEveryTime) {

@@ -372,20 +372,27 @@ void sequence_levels(Writer& w) {
 
 // The finest level's root is the scene; the others hang off its MSFT_lod
 // extension, coarsest last, with switch hints in extras.MSFT_screencoverage
-// (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod).
-void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<double>& screen_coverage) {
+// (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod) and extras.boxlod.switch_distances.
+void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches) {
     tinygltf::Scene scene;
     scene.nodes = {roots[0]};
     w.gltf.scenes.push_back(scene);
     w.gltf.defaultScene = 0;
     if (roots.size() < 2) return;
     tinygltf::Node& finest = w.gltf.nodes[std::size_t(roots[0])];
-    tinygltf::Value::Array ids, coverage;
+    tinygltf::Value::Array ids, coverage, distances;
     for (std::size_t k = 1; k < roots.size(); ++k) ids.emplace_back(roots[k]);
-    for (double c : screen_coverage) coverage.emplace_back(json_number(c));
+    for (const LodSwitch& s : switches) {
+        coverage.emplace_back(json_number(float(s.screen_coverage)));
+        distances.emplace_back(json_number(float(s.distance)));
+    }
+    coverage.emplace_back(0.0);  // the coarsest level is drawn however small: culling is the engine's call
     finest.extensions["MSFT_lod"] = tinygltf::Value(tinygltf::Value::Object{{"ids", tinygltf::Value(ids)}});
     tinygltf::Value::Object extras = finest.extras.IsObject() ? finest.extras.Get<tinygltf::Value::Object>() : tinygltf::Value::Object{};
     extras["MSFT_screencoverage"] = tinygltf::Value(coverage);
+    tinygltf::Value::Object fields = extras.count("boxlod") ? extras["boxlod"].Get<tinygltf::Value::Object>() : tinygltf::Value::Object{};
+    fields["switch_distances"] = tinygltf::Value(distances);
+    extras["boxlod"] = tinygltf::Value(fields);
     finest.extras = tinygltf::Value(extras);
     w.gltf.extensionsUsed.push_back("MSFT_lod");
 }
@@ -394,10 +401,10 @@ void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<doubl
 
 void export_gltf(const Model& model, const std::string& path, int threads) { export_gltf_lods({&model}, {}, path, threads); }
 
-void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<double>& screen_coverage,
+void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
                       const std::string& path, int threads) {
-    if (levels.empty() || (levels.size() > 1 && screen_coverage.size() != levels.size()))
-        throw std::logic_error("export_gltf_lods: one screen coverage per level");
+    if (levels.empty() || switches.size() + 1 != levels.size())
+        throw std::logic_error("export_gltf_lods: one switch per level after the first");
     // Nothing is written that boxlod would refuse to read (NaN, no triangles, ...).
     for (const Model* model : levels) validate_model(*model);
     OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
@@ -418,7 +425,7 @@ void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector
         add_nodes(w, *model);
     }
     if (w.share) sequence_levels(w);
-    add_scene(w, roots, screen_coverage);
+    add_scene(w, roots, switches);
 
     const std::vector<unsigned char>& data = w.finish();
     tinygltf::TinyGLTF writer;

@@ -2,6 +2,7 @@
 // Node transforms are applied and shared meshes expanded on import; scopes,
 // rules and the LoD mark travel in `extras.boxlod` (docs/design.md: Scene model).
 #pragma once
+#include "toolkit/lod_switch.h"
 #include "toolkit/model.h"
 
 #include <string>
@@ -21,10 +22,13 @@ void export_gltf(const Model& model, const std::string& path, int threads = 0);
 
 // Several levels of detail in one file, finest first: only levels[0] is in the
 // scene (what a client without the extension draws); its root's MSFT_lod
-// extension lists the others' roots and extras.MSFT_screencoverage holds
-// `screen_coverage`, one value per level: level k is drawn while the model
-// covers at least screen_coverage[k] of the screen. Equal textures are stored once.
-void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<double>& screen_coverage,
+// extension lists the others' roots. `switches` holds where levels 1..N take
+// over: extras.MSFT_screencoverage gets their screen coverages (level k is
+// drawn while the model covers at least value k of the screen; the coarsest,
+// 0: always) and extras.boxlod.switch_distances their distances, which
+// viewers switch by (clients/chain_three.html). Equal textures and geometry
+// are stored once (docs/cost.md: Switching levels).
+void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
                       const std::string& path, int threads = 0);
 
 }  // namespace boxlod

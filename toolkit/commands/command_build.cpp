@@ -73,23 +73,22 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
     const std::string stem = std::filesystem::path(output).stem().string();
     const Bounds bounds = model_bounds(sessions.model);
     std::vector<Model> models;
-    std::vector<double> coverage;
+    std::vector<LodSwitch> switches;
     for (int level : levels) {
         LodSession& session = sessions.for_level(level);
         Lod lod = build_lod(session, level, sessions.threads);
         chain.add(lod);
         const std::string name = stem + "_L" + std::to_string(level);
         name_pages(lod, name);
-        if (level >= 1) coverage.push_back(lod_switch(session.parameters.distance, bounds, session.sizing).screen_coverage);
+        if (level >= 1) switches.push_back(lod_switch(session.parameters.distance, bounds, session.sizing));
         std::fprintf(stderr, "boxlod build: level %d of %d\n", level, sessions.obtained_levels());
         std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
         models.push_back(std::move(lod.model));
     }
-    coverage.push_back(0);  // the coarsest level is drawn however small: culling is the engine's call
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
     auto start = Clock::now();
-    export_gltf_lods(pointers, coverage, output, sessions.threads);
+    export_gltf_lods(pointers, switches, output, sessions.threads);
     sessions.first->times.write += seconds_since(start);
     std::printf("chain = %s\n", output.c_str());
 }
