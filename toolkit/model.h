@@ -46,6 +46,7 @@ struct SpecularExtension {
     Eigen::Vector3f color_factor{1, 1, 1};  // specularColorFactor, [0, specular_color_factor_range.max]
     int texture = -1;                       // specularTexture: strength in A
     int color_texture = -1;                 // specularColorTexture: RGB, sRGB
+    bool operator==(const SpecularExtension&) const = default;
 };
 constexpr NumberRange specular_color_factor_range{0, 1000};  // the extension allows [0, inf): boxlod's bound
 constexpr NumberRange height_depth_range{0, 1e6};             // metres, as a scope's extents
@@ -71,6 +72,7 @@ struct Material {
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
     float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK
+    bool operator==(const Material&) const = default;
 };
 
 // What a material samples a texture for: it decides the texture's GPU format

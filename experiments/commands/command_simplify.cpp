@@ -3,6 +3,8 @@
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "experiments/commands/commands.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/material_merge.h"
 #include "toolkit/simplification.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
@@ -26,6 +28,7 @@ int run_simplify(const Arguments& arguments) {
     auto start = Clock::now();
     Model simplified = simplify_model(model, std::size_t(faces), options);
     double seconds = seconds_since(start);
+    if (!arguments.has("keep-materials")) merge_materials(simplified);
     save_model(simplified, arguments.text("output"));
 
     MeshCounts original = mesh_counts(model), result = mesh_counts(simplified);
@@ -45,11 +48,13 @@ int run_simplify(const Arguments& arguments) {
 Subcommand simplify_subcommand() {
     return {{"simplify", "MODEL",
              "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
-             "baseline LoD. Materials and textures are kept, geometry is merged into one node per material.",
+             "baseline LoD. Textures and the materials still drawn are kept (equal ones merged), geometry is merged into "
+             "one node per material.",
              {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
               {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
               {"lock-border", "", "never move vertices on open mesh borders"},
               {"threads", "N", "threads, one material at a time (default: all cores)", thread_count_range},
+              keep_materials_option(),
               {"json", "", "print one JSON object instead of key = value lines"}},
              1, 1},
             run_simplify};

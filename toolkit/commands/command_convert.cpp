@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "toolkit/commands/commands.h"
+#include "toolkit/material_merge.h"
 #include "toolkit/model_io.h"
 
 #include <cstdio>
@@ -10,6 +11,7 @@ static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"));
     Model model = load_model(arguments.positionals[0]);
+    if (!arguments.has("keep-materials")) merge_materials(model);
     save_model(model, arguments.text("output"));
     std::printf("output = %s\n", arguments.text("output").c_str());
     return 0;
@@ -17,8 +19,8 @@ static int run_convert(const Arguments& arguments) {
 
 Subcommand convert_subcommand() {
     return {{"convert", "MODEL", "Convert any model boxlod reads into glTF (.gltf + .bin + textures, or one .glb), "
-                                 "hierarchy, scopes and rules kept.",
-             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'}}, 1, 1},
+                                 "hierarchy, scopes and rules kept; equal materials merged, unused ones dropped.",
+             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'}, keep_materials_option()}, 1, 1},
             run_convert};
 }
 

@@ -13,6 +13,12 @@ Subcommand build_subcommand();
 Subcommand tiles_subcommand();
 Subcommand view_subcommand();
 
+// For the commands that write a model (convert, simplify), which merge equal
+// materials and drop unused ones (toolkit/material_merge.h) unless told not to.
+inline Option keep_materials_option() {
+    return {"keep-materials", "", "keep every material as read, unused ones and an importer's copies too"};
+}
+
 inline std::vector<Subcommand> toolkit_commands() {
     return {info_subcommand(),   convert_subcommand(), render_subcommand(), levels_subcommand(),
             build_subcommand(),  tiles_subcommand(),   view_subcommand()};
