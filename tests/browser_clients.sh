@@ -1,5 +1,5 @@
 # Sourced by the tests that open boxlod's outputs in real web clients
-# (tiles_cesium.sh, chain_clients.sh): npm packages pinned and installed into
+# (tiles_clients.sh, chain_clients.sh): npm packages pinned and installed into
 # a cache folder on first use, never committed; pages served on localhost;
 # tests/browser_page.mjs drives Debian's headless Chromium.
 

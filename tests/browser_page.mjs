@@ -1,4 +1,4 @@
-// Opens a test page (tests/tiles_cesium.html, tests/chain_babylon.html,
+// Opens a test page (tests/tiles_cesium.html, tests/tiles_three.html, tests/chain_babylon.html,
 // clients/chain_three.html) in Debian's Chromium (headless, WebGL on
 // SwiftShader) through playwright-core, waits for its result, saves a
 // screenshot and prints the result as JSON.

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# A city as 3D Tiles, loaded by real clients in Debian's headless Chromium,
+# npm packages pinned and installed into a cache folder on first use
+# (tests/browser_clients.sh): CesiumJS and 3d-tiles-renderer (three.js).
+# Passes when CesiumJS has loaded every tile in view and the picture shows the
+# city: more than 1 % of the pixels are not the black background; and when
+# both clients, a metre from the building with the most levels, draw its
+# original (level 0), and far from it (the root refined, its coarsest level
+# not) that coarsest level.
+# Usage: tiles_clients.sh BOXLOD   (BOXLOD_TILES_SCREENSHOT=FILE keeps CesiumJS's picture)
+set -euo pipefail
+boxlod=$1
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/browser_clients.sh"
+npm_client 3d-tiles-renderer-0.5.3-three-0.187.0-playwright-1.57.0 3d-tiles-renderer@0.5.3 three@0.187.0 playwright-core@1.57.0
+tiles_three=$client
+npm_client cesium-1.145.0-playwright-1.57.0 cesium@1.145.0 playwright-core@1.57.0
+work=$(mktemp -d)
+server=
+cleanup() { [ -n "$server" ] && kill "$server" 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+
+"$boxlod" generate --city 4 -o "$work/city.glb" > /dev/null
+"$boxlod" tiles "$work/city.glb" -o "$work/site/tiles" --resolution 256 > "$work/tiles.txt"
+ln -s "$client/node_modules/cesium/Build/Cesium" "$work/site/Cesium"
+cp "$here/tiles_cesium.html" "$work/site/index.html"
+ln -s "$tiles_three/node_modules/three" "$work/site/three"
+ln -s "$tiles_three/node_modules/3d-tiles-renderer" "$work/site/3d-tiles-renderer"
+cp "$here/tiles_three.html" "$work/site/three.html"
+serve "$work/site"
+for view in city near far; do
+  open_page "http://127.0.0.1:$port/index.html?view=$view" "$work/cesium_$view.json" "$work/screenshot_$view.png"
+done
+for view in near far; do
+  open_page "http://127.0.0.1:$port/three.html?view=$view" "$work/three_$view.json" "$work/three_$view.png"
+done
+[ -n "${BOXLOD_TILES_SCREENSHOT:-}" ] && cp "$work/screenshot_city.png" "$BOXLOD_TILES_SCREENSHOT"
+/usr/bin/python3 - "$work" <<'PY'
+import json, sys
+results = {view: json.load(open(f"{sys.argv[1]}/cesium_{view}.json")) for view in ("city", "near", "far")}
+for view, result in results.items():
+    print(f"tiles_clients CesiumJS {view}:", result)
+    assert "error" not in result, result["error"]
+    assert result["tilesLoaded"], f"{view}: CesiumJS did not finish loading the tiles in view"
+    assert result["drawn"] > 0.01 * result["pixels"] or view == "far", f"{view}: the picture is blank"
+for client in ("cesium", "three"):
+    near, far = (json.load(open(f"{sys.argv[1]}/{client}_{view}.json")) for view in ("near", "far"))
+    name = {"cesium": "CesiumJS", "three": "3d-tiles-renderer"}[client]
+    if client == "three": print(f"tiles_clients {name} near: {near}\ntiles_clients {name} far: {far}")
+    assert "error" not in near and "error" not in far, near.get("error") or far.get("error")
+    assert near.get("settled", True) and far.get("settled", True), f"{name} did not settle"
+    assert far.get("errorTarget", 16) == 16, f"{name}'s default limit is no longer 16 pixels"
+    coarsest = near["coarsest"]
+    prefix = coarsest[:coarsest.rindex("_L") + 1]  # object_K_
+    assert prefix + "L0.glb" in near["tiles"], f"near {prefix[:-1]} {name} draws {near['tiles']}, not its original"
+    drawn_far = [t for t in far["tiles"] if t.startswith(prefix)]
+    assert drawn_far == [coarsest], f"far from {prefix[:-1]} {name} draws {far['tiles']}, not {coarsest}"
+PY
