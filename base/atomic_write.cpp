@@ -21,9 +21,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A file being written: unnamed (Linux O_TMPFILE), so that even SIGKILL leaves
+// nothing, and linked into place when complete; or, where the file system has
+// no unnamed files (or a group already holds many open), a named temporary
+// PATH.tmpPID that the next run in its folder removes if a kill left it.
+struct Temporary {
+    int fd = -1;       // the unnamed file, or -1
+    std::string name;  // what a writer opens: /proc/self/fd/N, or the named temporary
+};
+
 // A file written inside a group, waiting as its temporary for the group's commit.
 struct PendingRename {
-    std::string temporary, path;
+    Temporary temporary;
+    std::string path;
 };
 
 // What an interruption must remove: temporaries being written or waiting for
@@ -35,6 +45,7 @@ struct PartialOutputs {
     std::vector<PendingRename> pending;
     std::vector<std::string> group_files;
     int open_groups = 0;
+    int unnamed_pending = 0;  // unnamed files open (written, or waiting for their group)
 };
 PartialOutputs& partial_outputs() {
     static PartialOutputs outputs;
@@ -42,6 +53,65 @@ PartialOutputs& partial_outputs() {
 }
 
 const std::string temporary_suffix = ".tmp";
+constexpr int max_unnamed_pending = 256;  // well below the usual limit of 1024 open files
+
+std::string named_temporary(const std::string& path) { return path + temporary_suffix + std::to_string(::getpid()); }
+
+// Called with the outputs' mutex held.
+Temporary new_temporary(const std::string& path, PartialOutputs& outputs) {
+    if (outputs.unnamed_pending < max_unnamed_pending) {
+        const fs::path folder = fs::path(path).parent_path();
+        const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ++outputs.unnamed_pending;  // until place() or discard() closes it
+            return {fd, "/proc/self/fd/" + std::to_string(fd)};
+        }
+    }
+    Temporary named{-1, named_temporary(path)};
+    outputs.temporaries.insert(named.name);
+    return named;
+}
+
+// Into place at `path`, replacing what was there. An unnamed file is linked
+// under its named temporary first (a link cannot replace a file), then
+// renamed: only a kill between the two leaves a temporary. Mutex held.
+// The temporary is used up, placed or not (a failed link leaves it to discard()).
+void place(Temporary& temporary, const std::string& path, PartialOutputs& outputs) {
+    std::string from = temporary.name;
+    if (temporary.fd >= 0) {
+        from = named_temporary(path);
+        outputs.temporaries.insert(from);
+        ::unlink(from.c_str());
+        if (::linkat(AT_FDCWD, temporary.name.c_str(), AT_FDCWD, from.c_str(), AT_SYMLINK_FOLLOW) != 0) {
+            outputs.temporaries.erase(from);
+            throw_input_error(path, "", std::string("cannot write: ") + std::strerror(errno));
+        }
+        ::close(temporary.fd);
+        --outputs.unnamed_pending;
+    }
+    temporary = {-1, ""};
+    std::error_code error;
+    fs::rename(from, path, error);
+    if (error) {
+        fs::remove(from, error);
+        outputs.temporaries.erase(from);
+        throw_input_error(path, "", "cannot write: " + error.message());
+    }
+    outputs.temporaries.erase(from);
+}
+
+// Gone without a trace. Mutex held.
+void discard(const Temporary& temporary, PartialOutputs& outputs) {
+    if (temporary.name.empty()) return;  // placed already
+    if (temporary.fd >= 0) {
+        ::close(temporary.fd);
+        --outputs.unnamed_pending;
+        return;
+    }
+    std::error_code ignored;
+    fs::remove(temporary.name, ignored);
+    outputs.temporaries.erase(temporary.name);
+}
 
 // "name.png.tmp1234" -> 1234; 0 when the name is not one of our temporaries.
 long temporary_owner(const std::string& filename) {
@@ -79,36 +149,30 @@ void check_writable_directory(const fs::path& directory, const std::string& path
 }  // namespace
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-    // The pid keeps two processes writing the same file from sharing a temporary.
-    const std::string temporary = path + temporary_suffix + std::to_string(::getpid());
     const fs::path folder = fs::path(path).parent_path();  // made here, as check_output_file allows
     std::error_code folder_error;
     if (!folder.empty()) fs::create_directories(folder, folder_error);
     if (folder_error) throw_input_error(path, "", "cannot make its folder: " + folder_error.message());
     PartialOutputs& outputs = partial_outputs();
+    Temporary temporary;
     {
         std::lock_guard lock(outputs.mutex);
-        outputs.temporaries.insert(temporary);
+        temporary = new_temporary(path, outputs);
     }
     try {
-        write(temporary);
+        write(temporary.name);
         std::lock_guard lock(outputs.mutex);
         if (outputs.open_groups > 0) {
-            // Renamed at the group's commit: a kill before it leaves only temporaries.
+            // Placed at the group's commit: a kill before it leaves nothing (unnamed) or only temporaries.
             bool known = std::any_of(outputs.pending.begin(), outputs.pending.end(),
-                                     [&](const PendingRename& p) { return p.temporary == temporary; });
+                                     [&](const PendingRename& p) { return p.temporary.name == temporary.name && p.temporary.fd < 0; });
             if (!known) outputs.pending.push_back({temporary, path});
             return;
         }
-        std::error_code error;
-        fs::rename(temporary, path, error);
-        if (error) throw_input_error(path, "", "cannot write: " + error.message());
-        outputs.temporaries.erase(temporary);
+        place(temporary, path, outputs);
     } catch (...) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
         std::lock_guard lock(outputs.mutex);
-        outputs.temporaries.erase(temporary);
+        discard(temporary, outputs);
         throw;
     }
 }
@@ -160,15 +224,20 @@ void OutputGroup::commit() {
     }
     // Renamed in the order written, so the file naming the others (a .gltf) comes
     // last; the interrupt thread cannot run between two renames (it needs the mutex).
-    for (const PendingRename& file : outputs.pending) {
-        std::error_code error;
-        // Take back only the files this group made: one it replaced (a texture
-        // shared with a level written before) may be needed by others.
-        bool made = !fs::exists(file.path, error);
-        fs::rename(file.temporary, file.path, error);
-        if (error) throw_input_error(file.path, "", "cannot write: " + error.message());
-        outputs.temporaries.erase(file.temporary);
-        if (made) outputs.group_files.push_back(file.path);
+    std::size_t placed = 0;
+    try {
+        for (; placed < outputs.pending.size(); ++placed) {
+            PendingRename& file = outputs.pending[placed];
+            std::error_code error;
+            // Take back only the files this group made: one it replaced (a texture
+            // shared with a level written before) may be needed by others.
+            bool made = !fs::exists(file.path, error);
+            place(file.temporary, file.path, outputs);
+            if (made) outputs.group_files.push_back(file.path);
+        }
+    } catch (...) {  // the destructor discards the rest and takes back what was placed
+        outputs.pending.erase(outputs.pending.begin(), outputs.pending.begin() + std::ptrdiff_t(placed));
+        throw;
     }
     outputs.pending.clear();
     outputs.group_files.clear();
@@ -179,11 +248,7 @@ OutputGroup::~OutputGroup() {
     PartialOutputs& outputs = partial_outputs();
     std::lock_guard lock(outputs.mutex);
     if (!committed_) {
-        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i) {
-            std::error_code ignored;
-            fs::remove(outputs.pending[i].temporary, ignored);
-            outputs.temporaries.erase(outputs.pending[i].temporary);
-        }
+        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i) discard(outputs.pending[i].temporary, outputs);
         outputs.pending.resize(std::min(first_pending_, outputs.pending.size()));
         for (const std::string& file : outputs.group_files) {  // a commit that failed half way
             std::error_code ignored;

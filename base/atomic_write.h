@@ -1,5 +1,6 @@
-// Files appear whole or not at all: write to a temporary name beside the
-// target, then rename (docs/design.md: Files). Files that belong together (one LoD
+// Files appear whole or not at all: write an unnamed file in the target's
+// folder (Linux O_TMPFILE) and link it into place, or where the file system
+// has none, a temporary name beside the target, then rename (docs/design.md: Files). Files that belong together (one LoD
 // level) appear together or not at all, even when the run is interrupted.
 #pragma once
 #include <cstdint>
@@ -9,9 +10,11 @@
 
 namespace boxlod {
 
-// Calls write(temporary_path), then renames it to path. If write throws, the
-// temporary file is removed and the exception passes on; a failed rename is an
-// InputError naming path. Temporaries are named PATH.tmpPID.
+// Calls write(temporary_path), then puts it at path (making path's folders).
+// If write throws, the temporary file is removed and the exception passes on;
+// a failed rename is an InputError naming path. temporary_path is
+// /proc/self/fd/N for an unnamed file, which a kill of any kind removes, else
+// PATH.tmpPID (also, for an instant, between linking and renaming).
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
 void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes);
@@ -27,8 +30,9 @@ void check_output_directory(const std::string& path);  // a folder that takes ne
 // leave their temporaries, and the outermost group's commit() renames them all
 // in the order written (so the file naming the others goes last). A group
 // destroyed without commit() (an exception passing) removes its files; a kill
-// of any kind before the commit leaves only temporaries. Groups nest, the
-// outermost decides.
+// of any kind before the commit leaves nothing (at most 256 unnamed files wait
+// at once; later ones wait as named temporaries). Groups nest, the outermost
+// decides.
 class OutputGroup {
 public:
     OutputGroup();
@@ -45,7 +49,8 @@ private:
 // Call first in main(), before any thread starts: SIGINT, SIGTERM and SIGHUP
 // then remove every temporary being written and every file of an open group,
 // and end the process with status 128 + the signal. (SIGKILL cannot be caught:
-// its temporaries go at the next run, see check_output_file.)
+// unnamed files vanish with the process, named temporaries go at the next run,
+// see check_output_file.)
 void remove_partial_outputs_on_interrupt();
 
 }  // namespace boxlod

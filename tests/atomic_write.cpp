@@ -58,20 +58,36 @@ TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
 
 TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
     fs::path folder = test::scratch_folder("atomic_write_commit");
-    const std::string temporary_of_b = (folder / "b.gltf").string() + ".tmp" + std::to_string(::getpid());
     {
         OutputGroup group;
         write_text_atomically((folder / "a.png").string(), "page");
         write_text_atomically((folder / "b.gltf").string(), "names a.png");
-        // A kill now, even one nothing can catch, leaves no file a reader could take for whole.
-        EXPECT_FALSE(fs::exists(folder / "a.png"));
-        EXPECT_FALSE(fs::exists(folder / "b.gltf"));
-        EXPECT_TRUE(fs::exists(temporary_of_b));
+        // A kill now, even one nothing can catch, leaves nothing: the files wait unnamed.
+        EXPECT_TRUE(fs::is_empty(folder));
         group.commit();
     }
     EXPECT_EQ(test::read_text(folder / "a.png"), "page");
     EXPECT_EQ(test::read_text(folder / "b.gltf"), "names a.png");
-    EXPECT_FALSE(fs::exists(temporary_of_b));
+    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_EQ(entry.path().extension().string().find(".tmp"), std::string::npos);
+}
+
+TEST(AtomicWrite, ManyFilesInAGroupWaitAsNamedTemporariesBeyondTheOpenFileBudget) {
+    fs::path folder = test::scratch_folder("atomic_write_many");
+    {
+        OutputGroup group;
+        for (int i = 0; i < 300; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), std::to_string(i));
+        std::size_t named = 0;
+        for (const auto& entry : fs::directory_iterator(folder)) named += entry.path().string().find(".tmp") != std::string::npos;
+        EXPECT_EQ(named, 300u - 256u);  // the first 256 unnamed, the rest named
+        group.commit();
+    }
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        ++files;
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos);
+    }
+    EXPECT_EQ(files, 300u);
+    EXPECT_EQ(test::read_text(folder / "299.txt"), "299");
 }
 
 TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItReplaced) {
