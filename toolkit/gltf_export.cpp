@@ -41,7 +41,7 @@ struct Writer {
     std::vector<int> textures, materials;
     int node_offset = 0;
     // A chain's levels share what is equal: textures by content, materials, and
-    // the meshes of the parts a level keeps (its nodes stay its own).
+    // the geometry of the parts a level keeps (its nodes and meshes stay its own).
     bool share = false;
     std::map<TextureDigest, int> texture_of;
     struct WrittenMesh {
@@ -53,7 +53,6 @@ struct Writer {
     // Babylon.js disposes a level's meshes, and their instances, when the next
     // level replaces it: a level's nodes use glTF meshes of its own, copies
     // that share the accessors of a mesh an earlier level wrote.
-    int level_first_mesh = 0;
     std::map<int, int> level_copies;  // a mesh of an earlier level -> this level's copy
     std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
     std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
@@ -129,15 +128,14 @@ struct Writer {
     }
 
     int level_mesh(int mesh) {
-        if (mesh >= level_first_mesh) return mesh;
+        if (mesh >= level_meshes_begin.back()) return mesh;
         auto [at, added] = level_copies.try_emplace(mesh, int(gltf.meshes.size()));
         if (added) gltf.meshes.push_back(tinygltf::Mesh(gltf.meshes[std::size_t(mesh)]));
         return at->second;
     }
 
     void start_level() {
-        level_first_mesh = int(gltf.meshes.size());
-        level_meshes_begin.push_back(level_first_mesh);
+        level_meshes_begin.push_back(int(gltf.meshes.size()));
         level_copies.clear();
     }
 
@@ -331,7 +329,8 @@ void add_nodes(Writer& w, const Model& model) {
 // holds a level's first request of a URI back until the coarser level is done,
 // so each level but the coarsest keeps the indices of its smallest primitive
 // in a buffer of its own, written as a data URI (bytes: one small index list
-// a level, base64): the levels then complete in order in any client.
+// a level, base64): Babylon then completes the levels in order, and a client
+// that does not defer reads one more small buffer.
 void sequence_levels(Writer& w) {
     const std::size_t levels = w.level_meshes_begin.size();
     auto meshes_of = [&](std::size_t k) {
