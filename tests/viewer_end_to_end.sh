@@ -47,5 +47,14 @@ check "a bad event file exits 2" test "$status" = 2
 check "a bad event file names file and line" grep -q "bad.txt: line 2" "$work/err"
 check "no screenshot after a bad event file" test ! -e "$work/bad.png"
 
+# An action that fails (F5 saving into a folder under a file) is reported on stderr too, and ends a replay with 2.
+printf 'key f5\n' > "$work/save.txt"
+xvfb-run -a "$boxlod" view "$model" --replay "$work/save.txt" --screenshot "$work/save.png" --params-out /etc/passwd/p.txt \
+  --width 320 --height 240 > /dev/null 2> "$work/err"
+status=$?
+check "a replay whose F5 fails exits 2" test "$status" = 2
+check "and says so in one stderr line naming the file" bash -c "test \$(wc -l < '$work/err') = 1 && grep -q '/etc/passwd/p.txt' '$work/err'"
+check "and leaves no screenshot" test ! -e "$work/save.png"
+
 if [ "$failures" -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi
 echo "all checks passed"

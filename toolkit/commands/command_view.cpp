@@ -153,13 +153,16 @@ ViewerState start_state(const Arguments& a, const Model& model, LodParameters pa
 
 // What the keys asked of the front end: a screenshot, parameters saved or
 // loaded, the LoD exported. A file that cannot be written or read is shown in
-// the window, not the end of the session. Returns true when the frame must be redrawn.
-bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, int threads, int& screenshots) {
+// the window and on stderr, and counted in `failures`, not the end of the
+// session. Returns true when the frame must be redrawn.
+bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, int threads, int& screenshots, int& failures) {
     auto shown = [&](auto action) {
         try {
             action();
         } catch (const InputError& error) {
             state.message = error.what();
+            std::fprintf(stderr, "boxlod view: %s\n", error.what());
+            ++failures;
         }
     };
     const std::string params_out = a.text("params-out", "boxlod-view.params.txt");
@@ -228,7 +231,7 @@ int run_view(const Arguments& a) {
         SDL_Event event = to_sdl(e);
         SDL_PushEvent(&event);
     }
-    int threads = state.settings.threads, screenshots = 0;
+    int threads = state.settings.threads, screenshots = 0, failures = 0;
     bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
     Frame frame;
     while (!state.quit) {
@@ -239,7 +242,7 @@ int run_view(const Arguments& a) {
             if (event.type == SDL_QUIT) break;
             if (auto e = translate(event)) redraw = apply_event(state, *e) || redraw;
         } else if (replaying) {
-            state.screenshot = a.has("screenshot");
+            state.screenshot = a.has("screenshot") && failures == 0;  // a failed replay leaves no screenshot
             state.quit = true;
         }
         if (redraw || state.screenshot) {
@@ -247,9 +250,9 @@ int run_view(const Arguments& a) {
             window.show(compose(state, frame));
             redraw = false;
         }
-        redraw = serve_requests(state, frame, a, threads, screenshots) || redraw;
+        redraw = serve_requests(state, frame, a, threads, screenshots, failures) || redraw;
     }
-    return 0;
+    return replaying && failures > 0 ? 2 : 0;  // a script whose action failed is bad input; a person saw the message
 }
 
 }  // namespace
