@@ -54,6 +54,10 @@ mkdir -p "$logs" "$tmp/cases"
 
 # ---------------------------------------------------------------- generated inputs (@D)
 python3 "$here/bad_inputs_generate.py" "$generated" || { echo "FAIL setup: bad_inputs_generate.py"; exit 1; }
+# An LoD chain boxlod wrote: viewable, never built from again (a city of two buildings, for tiles).
+"$boxlod" generate --city 2 -o "$generated/city.glb" > /dev/null &&
+  "$boxlod" build "$generated/city.glb" --chain -o "$generated/lod_chain.glb" --resolution 16 > /dev/null 2>&1 ||
+  { echo "FAIL setup: the LoD chain"; exit 1; }
 ifc=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc  # Debian assimp-testmodels
 if [ -r "$ifc" ]; then
   size=$(stat -c %s "$ifc")

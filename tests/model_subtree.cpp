@@ -80,3 +80,10 @@ TEST(ModelSubtree, TheRootGivesTheWholeTree) {
     EXPECT_EQ(whole.textures.size(), 3u);
     EXPECT_EQ(tree_depth(whole), tree_depth(model));
 }
+
+TEST(ModelSubtree, APartOfAnLodIsAnLod) {
+    Model lod = two_branches();
+    lod.is_lod = true;  // built from never again, whole or in part (tiles builds each object's sub-tree)
+    EXPECT_TRUE(extract_subtree(lod, 1).is_lod);
+    EXPECT_FALSE(extract_subtree(two_branches(), 1).is_lod);
+}
