@@ -1,5 +1,6 @@
 #include "base/key_values.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -57,6 +58,18 @@ std::string format_json(const KeyValues& entries) {
         out += (i ? ",\n  " : "\n  ") + json_string(e.key) + ": " + (e.number ? e.value : json_string(e.value));
     }
     return out + "\n}\n";
+}
+
+std::vector<std::string> comma_list(std::string_view text) {
+    std::vector<std::string> items;
+    for (std::size_t begin = 0;; ) {
+        const std::size_t end = std::min(text.find(',', begin), text.size());
+        std::string_view item = text.substr(begin, end - begin);
+        const std::size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+        items.emplace_back(first == std::string_view::npos ? std::string_view() : item.substr(first, last - first + 1));
+        if (end == text.size()) return items;
+        begin = end + 1;
+    }
 }
 
 }  // namespace boxlod

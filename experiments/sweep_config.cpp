@@ -18,7 +18,6 @@
 #include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace boxlod {
 namespace {
@@ -76,14 +75,9 @@ struct Line {
         throw_input_error(file, "line " + std::to_string(line.line) + ": " + line.key, what);
     }
     std::vector<std::string> items() const {
-        std::vector<std::string> out;
-        std::stringstream words(line.value);
-        for (std::string word; std::getline(words, word, ',');) {
-            std::size_t begin = word.find_first_not_of(" \t"), end = word.find_last_not_of(" \t");
-            if (begin == std::string::npos) fail("empty item in the list '" + line.value + "'");
-            out.push_back(word.substr(begin, end - begin + 1));
-        }
-        if (out.empty()) fail("expected a comma-separated list");
+        if (line.value.find_first_not_of(" \t") == std::string::npos) fail("expected a comma-separated list");
+        std::vector<std::string> out = comma_list(line.value);
+        if (std::find(out.begin(), out.end(), "") != out.end()) fail("empty item in the list '" + line.value + "'");
         return out;
     }
     template <typename T>

@@ -26,3 +26,12 @@ TEST(KeyValues, LinesAndJson) {
     EXPECT_EQ(format_key_values(entries), "nodes = 12\nname = a \"b\"\n");
     EXPECT_EQ(format_json(entries), "{\n  \"nodes\": 12,\n  \"name\": \"a \\\"b\\\"\"\n}\n");
 }
+
+TEST(KeyValues, ACommaListKeepsEveryItemEvenEmptyOnes) {
+    EXPECT_EQ(comma_list("0.5, 0.25,0.1"), (std::vector<std::string>{"0.5", "0.25", "0.1"}));
+    EXPECT_EQ(comma_list("10,20,"), (std::vector<std::string>{"10", "20", ""}));  // a trailing comma is an empty item
+    EXPECT_EQ(comma_list(",a"), (std::vector<std::string>{"", "a"}));
+    EXPECT_EQ(comma_list("a,, b"), (std::vector<std::string>{"a", "", "b"}));
+    EXPECT_EQ(comma_list(""), (std::vector<std::string>{""}));
+    EXPECT_EQ(comma_list(" \t"), (std::vector<std::string>{""}));
+}

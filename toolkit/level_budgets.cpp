@@ -2,10 +2,10 @@
 
 #include "base/key_values.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <sstream>
 
 namespace boxlod {
 namespace {
@@ -51,10 +51,10 @@ std::string parse_budget(const std::string& item, ByteBudget& budget) {
 std::string parse_budgets(const std::string& text, std::vector<ByteBudget>& budgets) {
     std::vector<ByteBudget> parsed;
     if (text != "none") {
-        std::stringstream in(text);
-        for (std::string item; std::getline(in, item, ',');) {
-            item.erase(0, item.find_first_not_of(' '));  // "0.5, 0.25" as a sweep config's lists read
-            item.erase(item.find_last_not_of(' ') + 1);
+        const std::vector<std::string> items = comma_list(text);
+        if (std::find(items.begin(), items.end(), "") != items.end())
+            return "'" + text + "' is no list of budgets (0.5,0.25 or 2MB,500kB), or none";
+        for (const std::string& item : items) {
             ByteBudget budget;
             if (std::string problem = parse_budget(item, budget); !problem.empty()) return problem;
             if (!parsed.empty() && budget.fraction != parsed.back().fraction)
@@ -64,7 +64,6 @@ std::string parse_budgets(const std::string& text, std::vector<ByteBudget>& budg
                        "': budgets must descend, level 1 (the finest) first";
             parsed.push_back(budget);
         }
-        if (parsed.empty() || text.back() == ',') return "'" + text + "' is no list of budgets (0.5,0.25 or 2MB,500kB), or none";
         if (parsed.size() > max_budgets) return std::to_string(parsed.size()) + " budgets: at most 64 levels";
     }
     budgets = std::move(parsed);

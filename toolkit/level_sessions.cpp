@@ -5,7 +5,6 @@
 #include "toolkit/parameters.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace boxlod {
 
@@ -15,8 +14,7 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
         for (int c = 1; c <= levels; ++c) distances.push_back(distance * std::ldexp(1.0f, c - 1));
         return distances;
     }
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');) {
+    for (const std::string& item : comma_list(text)) {
         char* end = nullptr;
         const double d = std::strtod(item.c_str(), &end);
         if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 
 namespace boxlod {
 namespace {
@@ -57,8 +56,7 @@ FlyThroughOptions fly_through_options(const Arguments& arguments) {
 // --detail K[,K...]: distinct numbers in the detail range.
 std::vector<double> details_option(const Arguments& arguments) {
     std::vector<double> details;
-    std::stringstream list(arguments.text("detail", "1"));
-    for (std::string item; std::getline(list, item, ',');) {
+    for (const std::string& item : comma_list(arguments.text("detail", "1"))) {
         char* end = nullptr;
         double detail = std::strtod(item.c_str(), &end);
         require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&

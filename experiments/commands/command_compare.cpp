@@ -11,18 +11,14 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <sstream>
 
 namespace boxlod {
 
 namespace {
 
 std::vector<Metric> metrics_option(const std::string& list) {
-    std::vector<std::string> names;
-    std::stringstream words(list);
-    for (std::string word; std::getline(words, word, ',');) names.push_back(word);
-    if (names.empty()) throw InputError("boxlod compare: --metric: expected a list such as rmse,psnr");
-    return parse_metrics(names, "boxlod compare: --metric");
+    if (list.empty()) throw InputError("boxlod compare: --metric: expected a list such as rmse,psnr");
+    return parse_metrics(comma_list(list), "boxlod compare: --metric");
 }
 
 void require_same_size(const Image8& a, const std::string& a_name, const Image8& b, const std::string& b_name) {
