@@ -33,6 +33,9 @@ fuzz_packages=(clang libclang-rt-14-dev)
 data_packages+=(nodejs chromium)
 command -v npm > /dev/null 2>&1 || data_packages+=(npm)  # (a Node.js from elsewhere may bring its own npm)
 
+# The chain test in Blender (tests/chain_blender.sh): its own glTF importer, run headless.
+data_packages+=(blender)
+
 # The viewer's test runs it in a virtual X server.
 data_packages+=(xvfb xauth)
 

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/parallel.h"
+#include "toolkit/draw_calls.h"
 #include "toolkit/model_subtree.h"
 
 #include <meshoptimizer.h>
@@ -15,76 +16,11 @@
 namespace boxlod {
 namespace {
 
-// Primitives that can share one vertex layout: same material and attributes.
-struct GroupKey {
-    int material = -1;
-    bool normals = false, uvs = false, tangents = false;
-    auto operator<=>(const GroupKey&) const = default;
-};
-
-struct Group {
-    GroupKey key;
-    Primitive mesh;
-};
-
-void append(Primitive& to, const Primitive& from) {
-    auto base = std::uint32_t(to.positions.size());
-    to.positions.insert(to.positions.end(), from.positions.begin(), from.positions.end());
-    to.normals.insert(to.normals.end(), from.normals.begin(), from.normals.end());
-    to.uvs.insert(to.uvs.end(), from.uvs.begin(), from.uvs.end());
-    to.tangents.insert(to.tangents.end(), from.tangents.begin(), from.tangents.end());
-    for (std::uint32_t i : from.indices) to.indices.push_back(base + i);
-}
-
-// Groups in the order their first primitive appears in the node order.
-std::vector<Group> merge_by_material(const Model& model, const std::vector<int>& nodes) {
-    std::map<GroupKey, std::size_t> index;
-    std::vector<Group> groups;
-    for (int n : nodes)
-        for (const Primitive& primitive : model.nodes[std::size_t(n)].primitives) {
-            if (primitive.indices.empty()) continue;
-            GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(), !primitive.tangents.empty()};
-            auto [it, added] = index.try_emplace(key, groups.size());
-            if (added) groups.push_back({key, {}}), groups.back().mesh.material = key.material;
-            append(groups[it->second].mesh, primitive);
-        }
-    return groups;
-}
-
-template <typename T>
-void remap_attribute(std::vector<T>& values, const std::vector<unsigned>& remap, std::size_t unique) {
-    if (values.empty()) return;
-    std::vector<T> out(unique);
-    meshopt_remapVertexBuffer(out.data(), values.data(), values.size(), sizeof(T), remap.data());
-    values = std::move(out);
-}
-
-// Keeps the vertices `remap` maps (to `unique` new ones) and renumbers the indices.
-void apply_remap(Primitive& mesh, const std::vector<unsigned>& remap, std::size_t unique) {
-    meshopt_remapIndexBuffer(mesh.indices.data(), mesh.indices.data(), mesh.indices.size(), remap.data());
-    remap_attribute(mesh.positions, remap, unique);
-    remap_attribute(mesh.normals, remap, unique);
-    remap_attribute(mesh.uvs, remap, unique);
-    remap_attribute(mesh.tangents, remap, unique);
-}
-
-// Vertices equal in every attribute become one, so edges are shared.
-void weld(Primitive& mesh) {
-    std::vector<meshopt_Stream> streams = {{mesh.positions.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)}};
-    if (!mesh.normals.empty()) streams.push_back({mesh.normals.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)});
-    if (!mesh.uvs.empty()) streams.push_back({mesh.uvs.data(), sizeof(Eigen::Vector2f), sizeof(Eigen::Vector2f)});
-    if (!mesh.tangents.empty()) streams.push_back({mesh.tangents.data(), sizeof(Eigen::Vector4f), sizeof(Eigen::Vector4f)});
-    std::vector<unsigned> remap(mesh.positions.size());
-    std::size_t unique = meshopt_generateVertexRemapMulti(remap.data(), mesh.indices.data(), mesh.indices.size(),
-                                                          mesh.positions.size(), streams.data(), streams.size());
-    apply_remap(mesh, remap, unique);
-}
-
 // Drops the vertices the simplified indices no longer use.
 void compact(Primitive& mesh) {
     std::vector<unsigned> remap(mesh.positions.size());
     std::size_t unique = meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
-    apply_remap(mesh, remap, unique);
+    remap_vertices(mesh, remap, unique);
 }
 
 using Indices = std::vector<unsigned>;
@@ -173,11 +109,11 @@ std::vector<std::size_t> proportional_budget(std::size_t total, const std::vecto
 std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options) {
     if (model.is_lod) throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
     if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
-    std::vector<Group> groups = merge_by_material(model, subtree_nodes(model, root));
+    std::vector<Primitive> groups = merge_primitives(model, subtree_nodes(model, root));
     if (groups.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
 
     std::vector<Primitive> welded(groups.size());
-    parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g].mesh)); });
+    parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g])); });
     std::vector<std::size_t> triangles;
     std::vector<double> weights;  // each material's share of the budget
     for (const Primitive& mesh : welded) {
@@ -197,7 +133,7 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
         parallel_for(groups.size(), options.threads, [&](std::size_t g) {
             if (done[g] || (round > 0 && budget[g] == achieved[g])) return;
             Primitive mesh = simplify_mesh(welded[g], budget[g], options);
-            if (round == 0 || mesh.triangle_count() > achieved[g]) groups[g].mesh = std::move(mesh), achieved[g] = groups[g].mesh.triangle_count();
+            if (round == 0 || mesh.triangle_count() > achieved[g]) groups[g] = std::move(mesh), achieved[g] = groups[g].triangle_count();
             else stuck[g] = true;
         });
         std::size_t sum = std::accumulate(achieved.begin(), achieved.end(), std::size_t(0));
@@ -213,27 +149,14 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     }
 
     std::vector<Primitive> simplified;
-    for (Group& group : groups)
-        if (!group.mesh.indices.empty()) simplified.push_back(std::move(group.mesh));  // else its share came to nothing
+    for (Primitive& group : groups)
+        if (!group.indices.empty()) simplified.push_back(std::move(group));  // else its share came to nothing
     return simplified;
 }
 
 Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options) {
-    std::vector<Primitive> simplified = simplify_subtree(model, 0, target_faces, options);
-    Model result;
-    result.source = model.source;
-    result.materials = model.materials;
-    result.textures = model.textures;
-    add_node(result, -1, model.nodes.empty() ? "simplified" : model.nodes[0].name);
-    std::map<int, int> node_of_material;
-    for (Primitive& mesh : simplified) {
-        const int material = mesh.material;
-        auto [it, added] = node_of_material.try_emplace(material, 0);
-        if (added)
-            it->second = add_node(result, 0, material >= 0 ? model.materials[std::size_t(material)].name : "default material");
-        result.nodes[std::size_t(it->second)].primitives.push_back(std::move(mesh));
-    }
-    return result;
+    return model_of_primitives(model, simplify_subtree(model, 0, target_faces, options),
+                               model.nodes.empty() ? "simplified" : model.nodes[0].name);
 }
 
 std::vector<SimplifyVariant> simplify_variants(int threads) {

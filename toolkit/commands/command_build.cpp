@@ -6,6 +6,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/cost.h"
+#include "toolkit/draw_calls.h"
 #include "toolkit/gltf_io.h"
 #include "toolkit/level_sessions.h"
 #include "toolkit/lod_export.h"
@@ -83,7 +84,7 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
         if (level >= 1) switches.push_back(lod_switch(session.parameters.distance, bounds, session.sizing));
         std::fprintf(stderr, "boxlod build: level %d of %d\n", level, sessions.obtained_levels());
         std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
-        models.push_back(std::move(lod.model));
+        models.push_back(a.has("keep-hierarchy") ? std::move(lod.model) : merge_draw_calls(std::move(lod.model), name));
     }
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
@@ -145,6 +146,7 @@ int run_build(const Arguments& a) {
     const bool all_levels = a.has("all-levels") || chain_file;
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
     if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
+    if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
     int threads = a.integer("threads", 0);
     LevelSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
@@ -194,6 +196,7 @@ Subcommand build_subcommand() {
                   "write every level 0..N (at most the 10 finest, as MSFT_lod clients load) into one file, -o OUT.glb or "
                   "OUT.gltf: glTF's MSFT_lod, switch hints in extras.MSFT_screencoverage, shared textures stored once; "
                   "levels sized by --level-distances"},
+                 keep_hierarchy_option(),
                  {"level-distances", "auto|D1,...,DN",
                   "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto "
                   "(the default; --manual: every level at the sizing distance): the sizing distance x 2^(c-1), so each level "

@@ -4,6 +4,7 @@
 #include "toolkit/boxes.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
+#include "toolkit/draw_calls.h"
 #include "toolkit/gltf_io.h"
 #include "toolkit/level_sessions.h"
 #include "toolkit/model_io.h"
@@ -22,7 +23,7 @@ constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, heigh
 // (auto distances; --manual: all at one distance), with the geometric error
 // that makes clients switch where a chain does.
 TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
-                        const std::string& folder) {
+                        bool keep_hierarchy, const std::string& folder) {
     Model model = extract_subtree(city, node);
     LevelSessions sessions(model, parameters, 1);
     // Level c is drawn from d_c on, as a chain switches (auto distances), also
@@ -35,8 +36,9 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
         LodSession& session = sessions.for_level(c);
         Lod lod = build_lod(session, c, 1);
-        std::string content = "object_" + std::to_string(index) + "_L" + std::to_string(c) + ".glb";
-        export_gltf(lod.model, (std::filesystem::path(folder) / content).string(), 1);
+        const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c), content = name + ".glb";
+        export_gltf(keep_hierarchy ? lod.model : merge_draw_calls(std::move(lod.model), name),
+                    (std::filesystem::path(folder) / content).string(), 1);
         object.levels.push_back({content, c == 0 ? 0 : level_geometric_error(switches[std::size_t(c - 1)], session.sizing)});
     }
     return object;
@@ -69,7 +71,7 @@ int run_tiles(const Arguments& a) {
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), folder.string());
+        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), folder.string());
     });
     const std::string tileset = (folder / "tileset.json").string();
     write_text_atomically(tileset, tileset_json(objects, origin));
@@ -94,6 +96,7 @@ Subcommand tiles_subcommand() {
                           {"latitude", "DEG", "where the model's origin lies on the WGS84 ellipsoid (default 49.0094)", latitude_range},
                           {"longitude", "DEG", "(default 8.412: Karlsruhe)", longitude_range},
                           {"height", "M", "above the ellipsoid (default 0)", height_range},
+                          keep_hierarchy_option(),
                           {"threads", "N", "threads to use (default: all cores)", thread_count_range},
                       },
                       1, 1},

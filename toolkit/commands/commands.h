@@ -19,6 +19,14 @@ inline Option keep_materials_option() {
     return {"keep-materials", "", "keep every material as read, unused ones and an importer's copies too"};
 }
 
+// For the commands that write levels for engines (build --chain, tiles): a
+// level is one node per material (toolkit/draw_calls.h) unless told not to.
+inline Option keep_hierarchy_option() {
+    return {"keep-hierarchy", "",
+            "keep one node per kept part and box in each level, with its scope and rule in extras, instead of one node per "
+            "material (draw call)"};
+}
+
 inline std::vector<Subcommand> toolkit_commands() {
     return {info_subcommand(),   convert_subcommand(), render_subcommand(), levels_subcommand(),
             build_subcommand(),  tiles_subcommand(),   view_subcommand()};
