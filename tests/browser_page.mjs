@@ -1,5 +1,5 @@
-// Opens a test page (tests/tiles_cesium.html, tests/tiles_three.html, tests/chain_babylon.html,
-// clients/chain_three.html) in Debian's Chromium (headless, WebGL on
+// Opens a test page (tests/tiles_cesium.html, tests/tiles_three.html, tests/chain_msft_lod.html,
+// clients/chain_three.html, clients/chain_babylon.html) in Debian's Chromium (headless, WebGL on
 // SwiftShader) through playwright-core, waits for its result, saves a
 // screenshot and prints the result as JSON.
 //   node browser_page.mjs PLAYWRIGHT_DIR URL SCREENSHOT.png

@@ -6,9 +6,14 @@
 #   completes without an error, showing the coarsest level's triangles when
 #   ready and level 0's when complete (every level whole, none overlaid), and
 #   draws a picture;
-# - three.js in boxlod's viewer page (clients/chain_three.html: a THREE.LOD at
-#   boxlod's switch distances) draws level 0 near, a middle level in the middle
-#   of its distances and the coarsest far, each with boxlod's triangle count.
+# - three.js and Babylon.js in boxlod's viewer pages, as build --chain --viewer
+#   writes them beside the chain (clients/chain_three.html: a THREE.LOD,
+#   clients/chain_babylon.html: Mesh.addLODLevel, both at boxlod's switch
+#   distances) draw level 0 near, a middle level in the middle
+#   of its distances and the coarsest far, each with boxlod's triangle count,
+#   and cover the pixels boxlod's own render of that level covers (render
+#   --level, same camera): only pixels on boxlod's silhouette (antialiased
+#   edges) may differ, but 0.5 % of the union or 4 pixels.
 # Usage: chain_clients.sh BOXLOD [SAMPLE...]   (default samples: house office classical manual)
 set -euo pipefail
 boxlod=$1; shift
@@ -27,8 +32,7 @@ mkdir -p "$work/site"
 ln -s "$client/node_modules/babylonjs" "$work/site/babylon"
 ln -s "$client/node_modules/babylonjs-loaders" "$work/site/loaders"
 ln -s "$three/node_modules/three" "$work/site/three"
-cp "$here/chain_babylon.html" "$work/site/babylon.html"
-cp "$here/../clients/chain_three.html" "$work/site/three.html"
+cp "$here/chain_msft_lod.html" "$work/site/msft_lod.html"
 models=fzk
 cp /usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc "$work/fzk.ifc"
 for sample in $samples; do
@@ -37,36 +41,59 @@ for sample in $samples; do
 done
 for model in $models; do
   input=$work/$model.glb; [ "$model" = fzk ] && input=$work/fzk.ifc
-  "$boxlod" build "$input" --chain -o "$work/site/$model.glb" > "$work/$model.txt"
+  "$boxlod" build "$input" --chain --viewer -o "$work/site/$model.glb" > "$work/$model.txt"  # + $model.three.html, $model.babylon.html
 done
 serve "$work/site"
 failures=0
 for model in $models; do
-  open_page "http://127.0.0.1:$port/babylon.html?file=$model.glb" "$work/$model.babylon.json" "$work/$model.png"
+  open_page "http://127.0.0.1:$port/msft_lod.html?file=$model.glb" "$work/$model.msft_lod.json" "$work/$model.png"
   levels=$(grep -c "^triangles_lod = " "$work/$model.txt")
   for at in 0 $(((levels - 1) / 2)) $((levels - 1)); do
-    open_page "http://127.0.0.1:$port/three.html?file=$model.glb&at=$at" "$work/$model.three$at.json" "$work/$model.three$at.png"
+    for page in three babylon; do  # the pages boxlod wrote, opening the chain by default
+      open_page "http://127.0.0.1:$port/$model.$page.html?at=$at" "$work/$model.$page$at.json" "$work/$model.$page$at.png"
+      # boxlod's render of the level the page should show, from the page's camera.
+      read -r distance width height < <(/usr/bin/python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); print(r.get("distance", 1), r.get("width", 1), r.get("height", 1))' "$work/$model.$page$at.json")
+      "$boxlod" render "$work/site/$model.glb" --level "$at" --distance "$distance" --fovy 45 --width "$width" --height "$height" \
+        -o "$work/$model.$page$at.boxlod.png" --coverage "$work/$model.$page$at.mask.png" > /dev/null
+    done
   done
   /usr/bin/python3 - "$work" "$model" <<'PY' || failures=$((failures + 1))
 import glob, json, re, sys
+import imageio
+import numpy
 work, model = sys.argv[1:]
 triangles = [int(t) for t in re.findall(r"^triangles_lod = (\d+)$", open(f"{work}/{model}.txt").read(), re.M)]  # levels 0..N
-result = json.load(open(f"{work}/{model}.babylon.json"))
+result = json.load(open(f"{work}/{model}.msft_lod.json"))
 print(f"chain_clients {model}: {len(triangles)} levels, triangles {triangles[0]}..{triangles[-1]}; Babylon.js: {result}")
 assert "error" not in result, result["error"]
 assert result["state"] == "complete" and not result["errors"], "the loader did not complete cleanly"
 assert result["ready"] == triangles[-1], f"ready with {result['ready']} triangles, not the coarsest level's {triangles[-1]}"
 assert result["complete"] == triangles[0], f"complete with {result['complete']} triangles, not level 0's {triangles[0]}"
 assert result["drawn"] > 0.01 * result["pixels"], "the picture is blank"
-for path in sorted(glob.glob(f"{work}/{model}.three*.json")):
-    at = int(path.split(".three")[1].split(".")[0])
-    result = json.load(open(path))
-    print(f"chain_clients {model}: three.js at level {at}'s distances: {result}")
-    assert "error" not in result, result["error"]
-    assert result["levels"] == len(triangles), f"three.js found {result['levels']} levels, boxlod wrote {len(triangles)}"
-    assert result["shown"] == at, f"three.js shows level {result['shown']} where boxlod switches to level {at}"
-    assert result["triangles"] == triangles[at], f"level {at} has {result['triangles']} triangles, boxlod's {triangles[at]}"
-    assert result["drawn"] > 0, "three.js drew nothing"
+for page, client in (("three", "three.js"), ("babylon", "Babylon.js addLODLevel")):
+    for path in sorted(glob.glob(f"{work}/{model}.{page}[0-9]*.json")):
+        at = int(path[len(f"{work}/{model}.{page}"):-len(".json")])
+        result = json.load(open(path))
+        assert "error" not in result, f"{client}: {result['error']}"
+        assert result["levels"] == len(triangles), f"{client} found {result['levels']} levels, boxlod wrote {len(triangles)}"
+        assert result["shown"] == at, f"{client} shows level {result['shown']} where boxlod switches to level {at}"
+        assert result["triangles"] == triangles[at], f"{client}: level {at} has {result['triangles']} triangles, boxlod's {triangles[at]}"
+        # The pixels the page covers (not its magenta background) against boxlod's coverage mask.
+        shot = imageio.imread(path[:-len(".json")] + ".png")[:, :, :3].astype(int)
+        drawn = numpy.abs(shot - [255, 0, 255]).sum(axis=2) > 96
+        covered = imageio.imread(path[:-len(".json")] + ".mask.png") > 127
+        if covered.ndim == 3: covered = covered[:, :, 0]
+        # Antialiased edges differ: a pixel is on the silhouette if a neighbour (3x3) is on its other side.
+        padded = numpy.pad(covered, 1, mode="edge")
+        shifts = [padded[1 + dy:padded.shape[0] - 1 + dy, 1 + dx:padded.shape[1] - 1 + dx] for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+        edge = numpy.logical_or.reduce(shifts) & ~numpy.logical_and.reduce(shifts)
+        union, differ = int((drawn | covered).sum()), drawn ^ covered
+        inside = int((differ & ~edge).sum())
+        print(f"chain_clients {model}: {client} at level {at}'s distances ({result['distance']:.1f} m): "
+              f"{result['triangles']} triangles, {int(drawn.sum())} pixels drawn, boxlod {int(covered.sum())}, "
+              f"{int(differ.sum())} differ, {inside} of them off the silhouette")
+        assert covered.sum() > 0, "boxlod's render of the level is empty"
+        assert inside <= max(0.005 * union, 4), f"{client}: {inside} of {union} pixels differ from boxlod's render of level {at}"
 PY
 done
 [ "$failures" = 0 ]

@@ -162,9 +162,9 @@ const char* triangle_mesh = R"(
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
   "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}])";
 
-std::string expect_input_error(const std::string& path) {
+std::string expect_input_error(const std::string& path, int chain_level = 0) {
     try {
-        load_model(path);
+        load_model(path, chain_level);
     } catch (const InputError& error) {
         std::string message = error.what();
         EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -345,6 +345,13 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         read_back.materials.resize(finest.materials.size());
         read_back.textures.resize(finest.textures.size());
         expect_same_model(as_written(finest), read_back);
+        // Level 1 on request (render --level), as an MSFT_lod client draws it; past the last, refused.
+        Model level_1 = load_model(path, 1);
+        ASSERT_EQ(level_1.nodes.size(), coarse.nodes.size());
+        EXPECT_EQ(level_1.nodes[1].primitives.at(0).positions, coarse.nodes[1].primitives.at(0).positions);
+        EXPECT_EQ(level_1.materials[std::size_t(level_1.nodes[1].primitives[0].material)].name,
+                  coarse.materials[std::size_t(coarse.nodes[1].primitives[0].material)].name);
+        EXPECT_NE(expect_input_error(path, 2).find("the chain has levels 0..1"), std::string::npos);
         tinygltf::Model gltf;
         std::string error, warning;
         tinygltf::TinyGLTF reader;
@@ -383,6 +390,8 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         EXPECT_EQ(deferred, 1);
     }
     EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {}, (folder / "bad.glb").string()), std::logic_error);
+    save_model(finest, (folder / "one_level.glb").string());
+    EXPECT_NE(expect_input_error((folder / "one_level.glb").string(), 1).find("not an LoD chain"), std::string::npos);
 }
 
 TEST(GltfIo, ExportIsByteIdenticalEveryTime) {

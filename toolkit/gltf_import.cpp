@@ -348,6 +348,24 @@ std::vector<int> scene_roots(const Reader& reader) {
     return roots;
 }
 
+// Level K of a chain: the scene's one root, or the K-th of its MSFT_lod.ids.
+std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>& roots, int chain_level) {
+    if (chain_level == 0) return roots;
+    const std::string place = "level " + std::to_string(chain_level);
+    const tinygltf::Value* ids = nullptr;
+    if (roots.size() == 1 && roots[0] >= 0 && roots[0] < int(reader.gltf.nodes.size())) {
+        const auto& extensions = reader.gltf.nodes[std::size_t(roots[0])].extensions;
+        auto lod = extensions.find("MSFT_lod");
+        if (lod != extensions.end() && lod->second.Has("ids") && lod->second.Get("ids").IsArray()) ids = &lod->second.Get("ids");
+    }
+    if (!ids) reader.fail(place, "not an LoD chain: the scene's root has no MSFT_lod ids (build --chain writes them)");
+    if (chain_level > int(ids->ArrayLen())) reader.fail(place, "the chain has levels 0.." + std::to_string(ids->ArrayLen()));
+    const tinygltf::Value& id = ids->Get(chain_level - 1);
+    if (!id.IsInt() || id.GetNumberAsInt() < 0 || id.GetNumberAsInt() >= int(reader.gltf.nodes.size()))
+        reader.fail(place, "MSFT_lod id is not a node index");
+    return {id.GetNumberAsInt()};
+}
+
 // The node tree under the roots (several roots get a common one, named after
 // the file), geometry in world space; depth-first, parents before children,
 // with an explicit stack so that a deep chain cannot overflow.
@@ -399,14 +417,14 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
 
 }  // namespace
 
-Model import_gltf(const std::string& path) {
+Model import_gltf(const std::string& path, int chain_level) {
     const bool binary = fs::path(path).extension() == ".glb";
-    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path);
+    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path, chain_level);
 }
 
 // The steps: the structure checked, tinygltf's model, textures, materials, the
 // LoD mark, the node tree; then the whole model validated.
-Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path) {
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level) {
     check_gltf_structure(bytes, binary, path);
     const tinygltf::Model gltf = load_gltf(bytes, binary, path);
     Reader reader{gltf, path};
@@ -415,7 +433,7 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_textures(reader, model);
     read_materials(reader, model);
     read_asset_extras(gltf.asset.extras, model);
-    read_nodes(reader, scene_roots(reader), model);
+    read_nodes(reader, chain_level_roots(reader, scene_roots(reader), chain_level), model);
     validate_model(model);
     return model;
 }

@@ -11,9 +11,12 @@
 
 namespace boxlod {
 
-Model import_gltf(const std::string& path);
+// `chain_level` K > 0 reads level K of an LoD chain (build --chain) instead
+// of its scene: the root that the scene's root lists K-th in MSFT_lod.ids,
+// what an MSFT_lod client draws at that level.
+Model import_gltf(const std::string& path, int chain_level = 0);
 // The same from the file's bytes; `path` names it in errors and places the files it refers to.
-Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path);
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level = 0);
 
 // Writes .gltf (+ .bin and one PNG per texture beside it) or a single .glb,
 // chosen by the extension; every file atomically. Geometry is stored in

@@ -17,10 +17,11 @@ std::string lower_extension(const std::string& path) {
 }
 }  // namespace
 
-Model load_model(const std::string& path) {
+Model load_model(const std::string& path, int chain_level) {
     check_input_file(path, "model file");
     std::string extension = lower_extension(path);
-    if (extension == ".gltf" || extension == ".glb") return import_gltf(path);
+    if (extension == ".gltf" || extension == ".glb") return import_gltf(path, chain_level);
+    if (chain_level > 0) throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
     static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",
                                            ".blend", ".ase", ".lwo", ".ms3d", ".x", ".3mf", ".ac"};
     for (const char* known : assimp_formats)

@@ -7,7 +7,8 @@
 
 namespace boxlod {
 
-Model load_model(const std::string& path);
+// `chain_level` > 0: that level of a glTF LoD chain (toolkit/gltf_io.h).
+Model load_model(const std::string& path, int chain_level = 0);
 void save_model(const Model& model, const std::string& path);  // .gltf or .glb
 
 }  // namespace boxlod

@@ -5,6 +5,7 @@
 #include "renderer/image.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
+#include "toolkit/commands/viewer_pages.h"
 #include "toolkit/cost.h"
 #include "toolkit/draw_calls.h"
 #include "toolkit/gltf_io.h"
@@ -89,9 +90,13 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
     auto start = Clock::now();
+    OutputGroup files;  // the chain and its viewer pages, or nothing
     export_gltf_lods(pointers, switches, output, sessions.threads);
+    const std::vector<std::string> pages = a.has("viewer") ? write_viewer_pages(output) : std::vector<std::string>{};
+    files.commit();
     sessions.first->times.write += seconds_since(start);
     std::printf("chain = %s\n", output.c_str());
+    for (const std::string& page : pages) std::printf("viewer = %s\n", page.c_str());
 }
 
 // Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
@@ -147,6 +152,7 @@ int run_build(const Arguments& a) {
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
     if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
     if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
+    if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");
     int threads = a.integer("threads", 0);
     LevelSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
@@ -197,6 +203,9 @@ Subcommand build_subcommand() {
                   "OUT.gltf: glTF's MSFT_lod, switch hints in extras.MSFT_screencoverage, shared textures stored once; "
                   "levels sized by --level-distances"},
                  keep_hierarchy_option(),
+                 {"viewer", "",
+                  "with --chain: also write OUT.three.html and OUT.babylon.html beside it, viewers that switch its levels at "
+                  "its switch distances in three.js and Babylon.js (docs/cost.md: Switching levels)"},
                  {"level-distances", "auto|D1,...,DN",
                   "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto "
                   "(the default; --manual: every level at the sizing distance): the sizing distance x 2^(c-1), so each level "

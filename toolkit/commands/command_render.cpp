@@ -15,7 +15,7 @@ static int run_render(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod render: -o/--output OUT.png is required");
     for (const char* output : {"output", "exr", "coverage"})
         if (arguments.has(output)) check_output_file(arguments.text(output));
-    Model model = load_model(arguments.positionals[0]);
+    Model model = load_model(arguments.positionals[0], arguments.integer("level", 0));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
     View view = view_from_arguments(arguments, drawable.bounds);
@@ -63,6 +63,7 @@ Subcommand render_subcommand() {
         {"coverage", "FILE", "also write the coverage mask as a PNG"},
         {"axes", "", "draw the coordinate cross (X red, Y green, Z blue) at the model's corner"},
         {"split-view", "MODEL", "left half this model, right half MODEL (the manual's split view)"},
+        {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does (default 0)", NumberRange{0, 63}},
     };
     for (const Option& o : render_options()) options.push_back(o);
     return {{"render", "MODEL", "Render a model with the deterministic CPU renderer.", options, 1, 1}, run_render};
