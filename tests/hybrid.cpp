@@ -264,6 +264,25 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
     }
 }
 
+// A textured part under untextured levels: the plan still measures it (it
+// read textures never decoded: a crash in build --render-mode untextured and sweeps).
+TEST(Hybrid, PlansTexturedPartsForUntexturedLevels) {
+    Scene s = facade_and_sphere();
+    s.model.textures.push_back({"checker", Image8(2, 2, 3, 200)});
+    Primitive& sphere = s.model.nodes[std::size_t(s.sphere)].primitives[0];
+    s.model.materials[std::size_t(sphere.material)].base_color_texture = 0;
+    for (const Eigen::Vector3f& v : sphere.positions) sphere.uvs.push_back({v.x(), v.y()});
+    validate_model(s.model);
+    LodParameters parameters;
+    parameters.level_mode = LevelMode::hybrid;
+    parameters.render_mode = RenderMode::untextured;
+    parameters.box_kind = BoxKind::minimal;
+    parameters.distance = settings_for(0.04f, 1).sizing.distance;
+    auto session = start_lod(s.model, parameters, 2);
+    ASSERT_TRUE(session->hybrid);
+    EXPECT_GT(build_lod(*session, session->levels.obtained_levels, 2).measured_error, 0);
+}
+
 TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
     Scene s = facade_and_sphere();
     LodParameters parameters;

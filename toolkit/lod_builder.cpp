@@ -96,7 +96,8 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
     session->depth_errors = box_depth_errors(model, session->boxes);
     session->times.boxes = seconds_since(start);
-    if (p.render_mode != RenderMode::untextured) session->textures = decode_textures(model);
+    // hybrid measures its proxies against the textured original, whatever the levels' render mode.
+    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid) session->textures = decode_textures(model);
     start = Clock::now();
     session->original_cost = model_cost(model);
     const int levels = asked_levels(p);
