@@ -1,5 +1,11 @@
 #include "base/csv.h"
 
+#include "base/input_error.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+
 namespace boxlod {
 
 std::string csv_row(const std::vector<std::string>& fields) {
@@ -35,6 +41,72 @@ std::vector<std::string> csv_fields(std::string_view line) {
         }
     }
     return fields;
+}
+
+namespace {
+
+bool is_count(const std::string& field) {
+    std::uint64_t value = 0;
+    auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+    return !field.empty() && error == std::errc() && end == field.data() + field.size();
+}
+
+// A whole field read as a double (inf allowed; what it may be is the caller's).
+bool as_number(const std::string& field, double& value) {
+    if (field.empty() || field.find_first_of(" \t\n") != std::string::npos) return false;
+    auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+    return error == std::errc() && end == field.data() + field.size();
+}
+
+// "" when `field` is of `kind`, else what is wrong.
+std::string field_problem(const std::string& field, CsvValue kind) {
+    if (field.size() > max_csv_field_bytes)
+        return "a field of " + std::to_string(field.size()) + " bytes (at most " + std::to_string(max_csv_field_bytes) + ")";
+    double value = 0;
+    switch (kind) {
+        case CsvValue::text: return "";
+        case CsvValue::count: return is_count(field) ? "" : "'" + field + "' is not a count (a whole number >= 0)";
+        case CsvValue::optional_number:
+            if (field.empty()) return "";
+            [[fallthrough]];
+        case CsvValue::number:
+            return as_number(field, value) && std::isfinite(value) && value >= 0 ? "" : "'" + field + "' is not a finite number >= 0";
+        case CsvValue::metric:
+            return as_number(field, value) && !std::isnan(value) && value != -INFINITY ? "" : "'" + field + "' is not a metric value";
+    }
+    return "";
+}
+
+}  // namespace
+
+std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file, const std::vector<CsvColumn>& columns) {
+    std::vector<std::string> names;
+    for (const CsvColumn& column : columns) names.push_back(column.name);
+    const std::string header = csv_row(names);
+    std::vector<CsvRecord> records;
+    std::size_t start = 0;
+    for (int number = 1; start < text.size(); ++number) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        const std::string place = "line " + std::to_string(number);
+        if (number == 1) {
+            if (line != header) throw_input_error(file, "", "its columns are not " + header + " (a table of another run or kind)");
+            continue;
+        }
+        if (line.empty()) continue;
+        if (line.size() > columns.size() * (max_csv_field_bytes + 3))
+            throw_input_error(file, place, "a line of " + std::to_string(line.size()) + " bytes, longer than any row");
+        std::vector<std::string> fields = csv_fields(line);
+        if (fields.size() != columns.size())
+            throw_input_error(file, place, std::to_string(fields.size()) + " fields, not " + std::to_string(columns.size()));
+        for (std::size_t k = 0; k < fields.size(); ++k)
+            if (std::string problem = field_problem(fields[k], columns[k].value); !problem.empty())
+                throw_input_error(file, place + ": " + columns[k].name, problem);
+        records.push_back({number, std::move(fields)});
+    }
+    return records;
 }
 
 }  // namespace boxlod

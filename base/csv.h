@@ -13,4 +13,29 @@ std::string csv_row(const std::vector<std::string>& fields);  // one line, witho
 // The fields of one line csv_row wrote.
 std::vector<std::string> csv_fields(std::string_view line);
 
+// Tables boxlod writes and reads back (a sweep's results and timings) are
+// input like any other (docs/testing.md: Hardening): what each column holds.
+enum class CsvValue {
+    text,             // any text
+    count,            // a non-negative integer below 2^64
+    number,           // a finite number >= 0
+    optional_number,  // empty, or a finite number >= 0
+    metric,           // a number, finite or inf (PSNR of equal images), never NaN
+};
+struct CsvColumn {
+    std::string name;
+    CsvValue value = CsvValue::text;
+};
+struct CsvRecord {
+    int line = 0;  // 1-based, the header being line 1
+    std::vector<std::string> fields;
+};
+constexpr std::size_t max_csv_field_bytes = 4096;
+
+// The rows of `text` under the header `columns` (after a header equal to
+// theirs; an empty text has none). Throws InputError "file: line N: COLUMN:
+// what" for a row with another field count, a field too long or not of its
+// column's kind, and "file: ..." for a header that differs.
+std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file, const std::vector<CsvColumn>& columns);
+
 }  // namespace boxlod

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 
+#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -18,9 +19,16 @@ std::string trim(const std::string& s) {
 std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const std::string& file) {
     std::vector<KeyValueLine> lines;
     std::map<std::string, int> first_line;
-    std::istringstream in(text);
+    // A UTF-8 byte-order mark, as some editors write, is no part of the first key.
+    std::istringstream in(text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text);
     std::string raw;
     for (int number = 1; std::getline(in, raw); ++number) {
+        for (unsigned char c : raw)
+            if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+                char byte[8];
+                std::snprintf(byte, sizeof byte, "0x%02x", unsigned(c));
+                throw_input_error(file, "line " + std::to_string(number), std::string("not text (byte ") + byte + ")");
+            }
         std::string content = trim(raw.substr(0, raw.find('#')));
         if (content.empty()) continue;
         std::size_t equals = content.find('=');

@@ -3,6 +3,8 @@
 #include "base/atomic_write.h"
 #include "base/csv.h"
 #include "base/input_error.h"
+#include "base/input_file.h"
+#include "base/key_value_lines.h"
 #include "base/key_values.h"
 #include "base/timing.h"
 #include "data_gen/interpreter.h"
@@ -56,21 +58,36 @@ struct KeyedTable {
     std::vector<std::string> file_order;      // keys as they were in the file
 };
 
+// What each column of results.csv and timings.csv holds, checked when a
+// folder's tables are read back (a resumed sweep, --merge): metric columns
+// hold metrics, the others are counts unless listed.
+CsvValue column_value(const std::string& column) {
+    static const std::map<std::string, CsvValue> listed = {
+        {"model", CsvValue::text},           {"level_mode", CsvValue::text},       {"box_kind", CsvValue::text},
+        {"interpolation", CsvValue::text},   {"view", CsvValue::text},             {"render_mode", CsvValue::text},
+        {"baseline_variant", CsvValue::text}, {"distance", CsvValue::number},      {"depth_error", CsvValue::optional_number},
+        {"measured_error", CsvValue::optional_number}, {"build_seconds", CsvValue::number},
+        {"render_seconds", CsvValue::number}, {"metric_seconds", CsvValue::number}};
+    if (auto found = listed.find(column); found != listed.end()) return found->second;
+    Metric metric;
+    return parse_enum(metrics(), column, metric) ? CsvValue::metric : CsvValue::count;
+}
+
 KeyedTable open_table(const std::string& path, const std::vector<std::string>& columns) {
     KeyedTable table{path, csv_row(columns), {}, {}};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return table;
-    std::string line;
-    if (std::getline(in, line) && line != table.header)
-        throw_input_error(path, "", "its columns differ from this sweep's (" + table.header + "); use another output folder");
-    for (int number = 2; std::getline(in, line); ++number) {
-        if (line.empty()) continue;
-        std::vector<std::string> fields = csv_fields(line);
-        if (fields.size() <= key_columns.size())
-            throw_input_error(path, "line " + std::to_string(number), "a row with too few columns");
-        fields.resize(key_columns.size());
-        std::string key = csv_row(fields);
-        if (table.rows.emplace(key, line).second) table.file_order.push_back(key);
+    if (!fs::exists(path)) return table;
+    std::vector<CsvColumn> kinds;
+    for (const std::string& column : columns) kinds.push_back({column, column_value(column)});
+    std::map<std::string, int> first_line;
+    for (CsvRecord& record : read_csv_table(read_input_file(path, "sweep table"), path, kinds)) {
+        const std::string line = csv_row(record.fields);
+        record.fields.resize(key_columns.size());
+        std::string key = csv_row(record.fields);
+        if (auto [first, added] = first_line.emplace(key, record.line); !added)
+            throw_input_error(path, "line " + std::to_string(record.line),
+                              "the row of line " + std::to_string(first->second) + " again");
+        table.rows.emplace(key, line);
+        table.file_order.push_back(key);
     }
     return table;
 }
@@ -250,17 +267,17 @@ std::string this_build() {
 // which build. A re-run with other settings or another build would skip rows
 // that no longer answer it. Written with the tables (write_tables).
 void check_settings(const fs::path& path, const std::string& settings) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
-    std::istringstream now(settings);
-    for (std::string was, is;;) {
-        const bool more_was = bool(std::getline(in, was)), more_is = bool(std::getline(now, is));
-        if (!more_was && !more_is) return;
-        if (!more_was || !more_is || was != is)
-            throw_input_error(path.string(), "", "the rows here were made with '" + (more_was ? was : "") +
-                                                     "', this sweep runs with '" + (more_is ? is : "") +
-                                                     "'; use another output folder");
-    }
+    if (!fs::exists(path)) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
+    const std::vector<KeyValueLine> was = parse_key_value_lines(read_input_file(path.string(), "sweep settings"), path.string()),
+                                    is = parse_key_value_lines(settings, "this sweep");
+    auto text = [](const std::vector<KeyValueLine>& lines, std::size_t k) {
+        return k < lines.size() ? "'" + lines[k].key + " = " + lines[k].value + "'" : std::string("nothing more");
+    };
+    for (std::size_t k = 0; k < std::max(was.size(), is.size()); ++k)
+        if (k >= was.size() || k >= is.size() || was[k].key != is[k].key || was[k].value != is[k].value)
+            throw_input_error(path.string(), k < was.size() ? "line " + std::to_string(was[k].line) : "",
+                              "the rows here were made with " + text(was, k) + ", this sweep runs with " + text(is, k) +
+                                  "; use another output folder");
 }
 
 SweepOutput open_output(const SweepConfig& config, const std::string& output_folder) {

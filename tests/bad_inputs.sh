@@ -80,6 +80,25 @@ printf 'a regular file, not a folder\n' > "$generated/a_file"
 for f in zero.gltf zero.glb zero.obj zero.txt; do ln -s /dev/zero "$generated/$f"; done
 mkdir -p "$generated/sweep_foreign_results"
 printf 'some,other,columns\n1,2,3\n' > "$generated/sweep_foreign_results/results.csv"
+# A sweep's folder read back (a resume, --merge): made by the good config, then
+# damaged one way each, as a hand edit or a full disk would.
+"$boxlod" sweep "$corpus/good/sweep.txt" -o "$generated/sweep_made" > /dev/null 2>&1 || { echo "FAIL setup: the good sweep"; exit 1; }
+damaged_sweep() {  # NAME FILE SED-SCRIPT: a copy of the good folder with FILE edited
+  cp -r "$generated/sweep_made" "$generated/sweep_$1"
+  sed -i "$3" "$generated/sweep_$1/$2"
+  if cmp -s "$generated/sweep_made/$2" "$generated/sweep_$1/$2"; then echo "FAIL setup: sweep_$1 is not damaged"; exit 1; fi
+}
+damaged_sweep non_number results.csv '2s/,1,\([0-9]*\),/,1,x\1,/'
+damaged_sweep cut_row results.csv '2s/,[^,]*,[^,]*$//'
+damaged_sweep nan_metric results.csv '2s/,[^,]*$/,nan/'
+damaged_sweep duplicate_row results.csv '2p'
+damaged_sweep timings_negative timings.csv '2s/,[^,]*$/,-1/'
+damaged_sweep settings_binary settings.txt '1s/$/\x01\x02/'
+damaged_sweep settings_cut settings.txt '3,$d'
+cp -r "$generated/sweep_made" "$generated/sweep_huge_field"
+/usr/bin/python3 -c 'import sys; p = sys.argv[1]; t = open(p).read().split("\n"); t[1] = "x" * 1000000 + t[1][t[1].index(","):]; open(p, "w").write("\n".join(t))' \
+  "$generated/sweep_huge_field/results.csv"
+mkdir -p "$generated/sweep_shards_damaged" && cp -r "$generated/sweep_nan_metric" "$generated/sweep_shards_damaged/shard"
 
 # Everything in @C and @D, to notice files a case leaves there (directories by name only:
 # a temporary that was removed again changes a folder's time, not what it holds).
