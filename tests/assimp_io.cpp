@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "test_support.h"
+#include "toolkit/model_bytes.h"
 #include "toolkit/model_io.h"
 #include "toolkit/statistics.h"
 
@@ -64,6 +65,21 @@ TEST(AssimpIo, EveryFormatReadsWithItsHierarchy) {
     Model textured = load_model("/usr/share/assimp/models/3DS/cube_with_diffuse_texture.3DS");
     ASSERT_EQ(textured.textures.size(), 1u);
     EXPECT_GT(textured.textures[0].image.width, 0);
+}
+
+// Every command reads through the isolated reader (a child process, the scene
+// handed back field for field); it gives the model the reader gives in this
+// process, textures and all.
+TEST(AssimpIo, TheIsolatedReadIsTheInProcessRead) {
+    for (const char* file : {"FBX/cubes_with_names.fbx", "Collada/duck.dae", "PLY/cube.ply", "OFF/Cube.off", "3DS/fels.3ds",
+                             "OBJ/box.obj", "3DS/cube_with_diffuse_texture.3DS", "IFC/AC14-FZK-Haus.ifc"}) {
+        const std::string path = std::string("/usr/share/assimp/models/") + file;
+        const Model isolated = import_with_assimp(path), in_process = import_with_assimp_in_process(path);
+        EXPECT_EQ(isolated.source, in_process.source) << file;
+        EXPECT_EQ(isolated.nodes.size(), in_process.nodes.size()) << file;
+        EXPECT_EQ(isolated.materials, in_process.materials) << file;
+        EXPECT_TRUE(model_bytes(isolated) == model_bytes(in_process)) << file;  // every field
+    }
 }
 
 // Real data made by others: the KIT FZK-Haus, read from IFC directly and from

@@ -1,8 +1,10 @@
 #include "toolkit/assimp_io.h"
 
+#include "base/child_process.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "toolkit/assimp_input_check.h"
+#include "toolkit/model_bytes.h"
 
 #include <Eigen/LU>
 #include <assimp/Importer.hpp>
@@ -11,9 +13,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sys/resource.h>
-#include <unistd.h>
 
 namespace boxlod {
 namespace {
@@ -100,56 +99,33 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
     return int(model.textures.size()) - 1;
 }
 
-// assimp allocates whatever a header claims. While it reads, the process's
-// address space may grow by a bounded allowance only, so a claim of 10^9
-// vertices in a 170-byte file becomes std::bad_alloc, which assimp reports,
-// instead of exhausting the machine. Off under AddressSanitizer, whose shadow
-// memory needs terabytes of address space.
-class AddressSpaceCeiling {
-public:
-    static std::size_t allowance(std::size_t file_bytes) { return (std::size_t(2) << 30) + 256 * file_bytes; }
-
-    explicit AddressSpaceCeiling(std::size_t file_bytes) {
-#if !defined(__SANITIZE_ADDRESS__)
-        long pages = 0;
-        std::ifstream statm("/proc/self/statm");
-        if (!(statm >> pages) || ::getrlimit(RLIMIT_AS, &saved_) != 0) return;
-        rlimit limit = saved_;
-        limit.rlim_cur = std::min<rlim_t>(saved_.rlim_cur, rlim_t(pages) * ::getpagesize() + allowance(file_bytes));
-        active_ = ::setrlimit(RLIMIT_AS, &limit) == 0;
-#else
-        (void)file_bytes;
-#endif
-    }
-    ~AddressSpaceCeiling() {
-        if (active_) ::setrlimit(RLIMIT_AS, &saved_);
-    }
-    AddressSpaceCeiling(const AddressSpaceCeiling&) = delete;
-    AddressSpaceCeiling& operator=(const AddressSpaceCeiling&) = delete;
-
-private:
-    rlimit saved_{};
-    bool active_ = false;
-};
+// assimp allocates whatever a header claims: while it reads, the address
+// space may grow by this much only, so a claim of 10^9 vertices in a 170-byte
+// file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine.
+std::size_t address_space_allowance(std::size_t file_bytes) { return (std::size_t(2) << 30) + 256 * file_bytes; }
 
 }  // namespace
 
 Model import_with_assimp(const std::string& path) {
+    const std::size_t file_bytes = check_input_file(path, "model file");
+    // A minute, and a second more per megabyte (the FZK-Haus's 4 MB: 0.4 s).
+    const ChildLimits limits{address_space_allowance(file_bytes), 60 + double(file_bytes) / 1e6};
+    return model_from_bytes(
+        run_in_child([&] { return model_bytes(import_with_assimp_in_process(path)); }, limits, path, "assimp's importer"));
+}
+
+Model import_with_assimp_in_process(const std::string& path) {
     std::string bytes = read_input_file(path, "model file");
     std::string extension = fs::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     check_assimp_input(bytes, extension, path);
     Assimp::Importer importer;
-    const aiScene* scene = nullptr;
-    {
-        AddressSpaceCeiling ceiling(bytes.size());
-        // No triangulation here (see convert_mesh); validation rejects inconsistent data.
-        scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);  // from the path: OBJ and others read files beside it
-    }
+    // No triangulation here (see convert_mesh); validation rejects inconsistent data.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);  // from the path: OBJ and others read files beside it
     if (!scene || !scene->mRootNode) {
         std::string reason = importer.GetErrorString();
         if (reason.find("bad_alloc") != std::string::npos)
-            reason = "it would need more than " + std::to_string(AddressSpaceCeiling::allowance(bytes.size()) >> 20) +
+            reason = "it would need more than " + std::to_string(address_space_allowance(bytes.size()) >> 20) +
                      " MiB for a " + std::to_string(bytes.size()) + "-byte file (counts in the file too large?)";
         else if (reason.starts_with("std::"))  // a bare C++ exception from deep in a reader
             reason = "malformed " + extension.substr(1) + " file (" + reason + ")";

@@ -396,20 +396,14 @@ void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSw
     w.gltf.extensionsUsed.push_back("MSFT_lod");
 }
 
-}  // namespace
-
-void export_gltf(const Model& model, const std::string& path, int threads) { export_gltf_lods({&model}, {}, path, threads); }
-
-void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
-                      const std::string& path, int threads) {
+// The glTF document of `levels` (finest first) in `w`; for a .gltf the images
+// are written beside `target` (into the caller's output group).
+void build_document(Writer& w, const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
+                    const fs::path& target, bool binary, int threads) {
     if (levels.empty() || switches.size() + 1 != levels.size())
         throw std::logic_error("export_gltf_lods: one switch per level after the first");
     // Nothing is written that boxlod would refuse to read (NaN, no triangles, ...).
     for (const Model* model : levels) validate_model(*model);
-    OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
-    fs::path target(path);
-    bool binary = target.extension() == ".glb";
-    Writer w;
     w.gltf.asset.version = "2.0";
     w.gltf.asset.generator = "boxlod";
     w.gltf.asset.extras = asset_extras(*levels[0]);
@@ -425,17 +419,44 @@ void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector
     }
     if (w.share) sequence_levels(w);
     add_scene(w, roots, switches);
+}
 
+// The .glb bytes of a finished document.
+std::string glb_bytes(Writer& w) {
+    w.finish();
+    tinygltf::TinyGLTF writer;
+    writer.SetImageWriter(nullptr, nullptr);  // images are in the buffer already
+    std::ostringstream stream;
+    writer.WriteGltfSceneToStream(&w.gltf, stream, false, true);
+    return stream.str();
+}
+
+}  // namespace
+
+void export_gltf(const Model& model, const std::string& path, int threads) { export_gltf_lods({&model}, {}, path, threads); }
+
+std::string gltf_binary(const Model& model, int threads) {
+    Writer w;
+    build_document(w, {&model}, {}, "model.glb", true, threads);
+    return glb_bytes(w);
+}
+
+void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
+                      const std::string& path, int threads) {
+    OutputGroup files;  // images, .bin and .gltf: all or none; the .gltf, which names the others, comes last
+    fs::path target(path);
+    bool binary = target.extension() == ".glb";
+    Writer w;
+    build_document(w, levels, switches, target, binary, threads);
+    if (binary) {
+        write_text_atomically(path, glb_bytes(w));
+        files.commit();
+        return;
+    }
     const std::vector<unsigned char>& data = w.finish();
     tinygltf::TinyGLTF writer;
     writer.SetImageWriter(nullptr, nullptr);  // images are written above, atomically
     std::ostringstream stream;
-    if (binary) {
-        writer.WriteGltfSceneToStream(&w.gltf, stream, false, true);
-        write_text_atomically(path, stream.str());
-        files.commit();
-        return;
-    }
     std::string bin_name = target.stem().string() + ".bin";
     write_file_atomically((target.parent_path() / bin_name).string(), data);
     writer.WriteGltfSceneToStream(&w.gltf, stream, true, false);

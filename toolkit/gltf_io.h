@@ -22,6 +22,8 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
 // chosen by the extension; every file atomically. Geometry is stored in
 // world space, so exported nodes have no transforms.
 void export_gltf(const Model& model, const std::string& path, int threads = 0);
+// The same model as the bytes of a .glb, in memory (import_gltf_bytes reads it back exactly).
+std::string gltf_binary(const Model& model, int threads = 0);
 
 // Several levels of detail in one file, finest first: only levels[0] is in the
 // scene (what a client without the extension draws); its root's MSFT_lod

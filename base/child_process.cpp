@@ -1,0 +1,141 @@
+#include "base/child_process.h"
+
+#include "base/input_error.h"
+#include "base/key_values.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <new>
+#include <stdexcept>
+#include <thread>
+
+namespace boxlod {
+namespace {
+
+// The child's answer: one tag byte, then the payload.
+constexpr char answer_bytes = 'M', answer_input_error = 'E', answer_other_error = 'X';
+
+void write_all(int fd, const char* data, std::size_t size) {
+    while (size > 0) {
+        const ssize_t written = ::write(fd, data, size);
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) return;  // the parent is gone: nothing to tell
+        data += written;
+        size -= std::size_t(written);
+    }
+}
+
+// Limits the address space to what the child uses now plus `extra` bytes. Off
+// under AddressSanitizer, whose shadow memory needs terabytes of address space.
+void limit_address_space(std::size_t extra) {
+#if !defined(__SANITIZE_ADDRESS__)
+    long pages = 0;
+    rlimit limit{};
+    std::ifstream statm("/proc/self/statm");
+    if (extra == 0 || !(statm >> pages) || ::getrlimit(RLIMIT_AS, &limit) != 0) return;
+    const rlim_t wanted = rlim_t(pages) * rlim_t(::getpagesize()) + rlim_t(extra);
+    if (limit.rlim_cur == RLIM_INFINITY || wanted < limit.rlim_cur) limit.rlim_cur = wanted;
+    ::setrlimit(RLIMIT_AS, &limit);
+#else
+    (void)extra;
+#endif
+}
+
+[[noreturn]] void run_child(int fd, const std::function<std::string()>& work, const ChildLimits& limits,
+                            const std::string& file) {
+    // The parent's interrupt handlers clean up the parent's files: not the child's business. A fault
+    // kills the child by its signal, which the parent names (also under a sanitizer's handlers).
+    for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+    limit_address_space(limits.extra_address_space);
+    char tag = answer_bytes;
+    std::string payload;
+    try {
+        payload = work();
+    } catch (const InputError& error) {
+        tag = answer_input_error, payload = error.what();
+    } catch (const std::bad_alloc&) {
+        tag = answer_input_error;
+        payload = file + ": reading it would take more than " + std::to_string(limits.extra_address_space >> 20) +
+                  " MiB (counts in the file too large?)";
+    } catch (const std::exception& error) {
+        tag = answer_other_error, payload = error.what();
+    } catch (...) {
+        tag = answer_other_error, payload = "unknown exception";
+    }
+    const std::uint64_t size = payload.size();
+    write_all(fd, &tag, 1);
+    write_all(fd, reinterpret_cast<const char*>(&size), sizeof size);
+    write_all(fd, payload.data(), payload.size());
+    ::close(fd);  // the parent has its answer now, not after this process's memory is torn down
+    ::_exit(0);   // no destructors, no atexit handlers, no flushing of the parent's stdio buffers
+}
+
+}  // namespace
+
+std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits, const std::string& file,
+                         const std::string& reader) {
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]), ::close(fds[1]);
+        throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+    }
+    if (pid == 0) {
+        ::close(fds[0]);
+        run_child(fds[1], work, limits, file);
+    }
+    ::close(fds[1]);
+    std::string answer;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
+    bool timed_out = false;
+    for (char buffer[65536];;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        pollfd poll_fd{fds[0], POLLIN, 0};
+        const int ready = ::poll(&poll_fd, 1, int(std::max<long long>(left.count(), 0)));
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready == 0) {
+            timed_out = true;
+            break;
+        }
+        const ssize_t got = ::read(fds[0], buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) break;
+        answer.append(buffer, std::size_t(got));
+    }
+    ::close(fds[0]);
+    const std::size_t header = 1 + sizeof(std::uint64_t);
+    std::uint64_t size = 0;
+    if (answer.size() >= header) std::memcpy(&size, answer.data() + 1, sizeof size);
+    if (!timed_out && answer.size() >= header && answer.size() - header == size) {
+        // A whole answer: the child only exits now; reap it without waiting for its memory to go.
+        std::thread([pid] { while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {} }).detach();
+    } else {
+        if (timed_out) ::kill(pid, SIGKILL);
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        if (timed_out)
+            throw_input_error(file, "", reader + " took longer than " + format_number(limits.seconds) + " s; stopped");
+        if (WIFSIGNALED(status))
+            throw_input_error(file, "", reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
+        throw_input_error(file, "", reader + " ended without an answer (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+    }
+    const char tag = answer[0];
+    answer.erase(0, header);
+    if (tag == answer_input_error) throw InputError(answer);
+    if (tag == answer_other_error) throw std::runtime_error(answer);
+    return answer;
+}
+
+}  // namespace boxlod
