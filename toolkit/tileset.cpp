@@ -28,7 +28,8 @@ nlohmann::json object_chain(const TileObject& object) {
         nlohmann::json tile = {{"boundingVolume", {{"box", box}}},
                                {"geometricError", errors[c]},
                                {"content", {{"uri", object.levels[c].content}}}};
-        if (c == object.levels.size() - 1) tile["extras"] = {{"name", object.name}};
+        tile["extras"] = {{"boxlod", {{"surface_deviation", object.levels[c].surface_deviation}}}};
+        if (c == object.levels.size() - 1) tile["extras"]["name"] = object.name;
         if (c > 0) {
             tile["refine"] = "REPLACE";
             tile["children"] = nlohmann::json::array({std::move(finer)});
@@ -71,10 +72,10 @@ std::array<double, 16> east_north_up_to_ecef(const Geodetic& at) {
     return m;
 }
 
-double level_geometric_error(double switch_distance, const TextureSizing& view) {
+double level_geometric_error(double switch_distance, const TextureSizing& view, double surface_deviation) {
     TextureSizing at = view;
     at.distance = float(switch_distance);
-    return client_screen_space_error * pixel_world_size(at);
+    return std::max(surface_deviation, client_screen_space_error * pixel_world_size(at));
 }
 
 std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin) {

@@ -20,6 +20,7 @@ struct Geodetic {
 struct TileLevel {
     std::string content;     // the glb's URI, relative to the tileset
     double geometric_error;  // metres (level_geometric_error; 0 for the original)
+    double surface_deviation = 0;  // metres (surface_deviation.h), written in the tile's extras
 };
 
 struct TileObject {
@@ -41,12 +42,15 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
 constexpr double client_screen_space_error = 16;
 
 // The geometric error of a level drawn from `switch_distance` on (d_c,
-// docs/cost.md: Switching levels): the metres that client_screen_space_error
-// pixels of the sizing view cover there. A client projects it as
-// e H / (2 d tan(fovy / 2)) pixels (3D Tiles 1.1: Geometric error), which
-// passes its limit nearer than d_c: on a screen as tall as the view it draws
-// level c - 1 exactly where boxlod switches. view.distance is not read.
-double level_geometric_error(double switch_distance, const TextureSizing& view);
+// docs/cost.md: Switching levels): the larger of its measured deviation from
+// the original (surface_deviation.h, metres) and the metres that
+// client_screen_space_error pixels of the sizing view cover at d_c. A client
+// projects it as e H / (2 d tan(fovy / 2)) pixels (3D Tiles 1.1: Geometric
+// error) and refines while that exceeds its limit: where the level's lost
+// depth would show as more than the limit, and at the latest, on a screen as
+// tall as the view, where boxlod switches (its texels there are a pixel).
+// view.distance is not read.
+double level_geometric_error(double switch_distance, const TextureSizing& view, double surface_deviation);
 
 // The east-north-up frame at `at` in Earth-centred Earth-fixed metres (WGS84),
 // column-major as 3D Tiles' `transform`.

@@ -9,6 +9,7 @@
 #include "toolkit/level_sessions.h"
 #include "toolkit/model_io.h"
 #include "toolkit/model_subtree.h"
+#include "toolkit/surface_deviation.h"
 #include "toolkit/tileset.h"
 
 #include <cstdio>
@@ -20,8 +21,9 @@ namespace {
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
 // One object's chain: every level as OUTDIR/object_K_L<c>.glb, sized per level
-// (auto distances; --manual: all at one distance), with the geometric error
-// that makes clients switch where a chain does.
+// (auto distances; --manual: all at one distance), with a geometric error from
+// the level's measured deviation that makes clients switch where a chain does
+// at the latest (level_geometric_error).
 TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
                         bool keep_hierarchy, const std::string& folder) {
     Model model = extract_subtree(city, node);
@@ -33,13 +35,19 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
+    const SurfaceViews original = surface_views(model, object.box);
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
         LodSession& session = sessions.for_level(c);
         Lod lod = build_lod(session, c, 1);
-        const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c), content = name + ".glb";
+        const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c);
+        TileLevel level{name + ".glb", 0, 0};
+        if (c > 0) {
+            level.surface_deviation = surface_deviation(original, surface_views(lod.model, object.box));
+            level.geometric_error = level_geometric_error(switches[std::size_t(c - 1)], session.sizing, level.surface_deviation);
+        }
         export_gltf(keep_hierarchy ? lod.model : merge_draw_calls(std::move(lod.model), name),
-                    (std::filesystem::path(folder) / content).string(), 1);
-        object.levels.push_back({content, c == 0 ? 0 : level_geometric_error(switches[std::size_t(c - 1)], session.sizing)});
+                    (std::filesystem::path(folder) / level.content).string(), 1);
+        object.levels.push_back(std::move(level));
     }
     return object;
 }
