@@ -1,6 +1,7 @@
 #include "base/command_registry.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 
 #include <cstdio>
 #include <exception>
@@ -33,11 +34,14 @@ int run_subcommands(const std::vector<Subcommand>& subcommands, int argc, char**
     try {
         for (const auto& s : subcommands) {
             if (s.command.name != words[0]) continue;
-            Arguments arguments = parse_arguments(s.command, std::vector<std::string>(words.begin() + 1, words.end()));
+            Command command = s.command;  // with the options every command takes
+            command.options = with_options(command.options, {max_memory_option()});
+            Arguments arguments = parse_arguments(command, std::vector<std::string>(words.begin() + 1, words.end()));
             if (arguments.has("help")) {
-                std::fputs(help_text(s.command).c_str(), stdout);
+                std::fputs(help_text(command).c_str(), stdout);
                 return 0;
             }
+            if (arguments.has("max-memory")) set_memory_budget(arguments.number("max-memory", 0) * 1e9);
             return s.run(arguments);
         }
         std::fprintf(stderr, "boxlod: unknown command '%s' (see boxlod --help)\n", words[0].c_str());

@@ -80,4 +80,6 @@ Model generate_city(const CityOptions& options) {
     return model;
 }
 
+double city_file_memory(int buildings) { return 16e6 * double(buildings); }
+
 }  // namespace boxlod

@@ -329,6 +329,11 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
 
 }  // namespace
 
+double fly_through_memory(int buildings, const FlyThroughOptions& options) {
+    return 3e6 * double(buildings) + render_memory(options.width, options.height) +
+           (options.error_every > 0 ? metrics_memory(options.width, options.height) : 0);
+}
+
 std::vector<FlyThroughReport> run_fly_through(const Model& city, const std::vector<CameraPose>& path,
                                               const FlyThroughOptions& options, const std::vector<double>& details,
                                               const std::string& output_folder, std::FILE* progress) {

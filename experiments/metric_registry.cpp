@@ -38,6 +38,8 @@ std::vector<Metric> parse_metrics(const std::vector<std::string>& names, const s
     return out;
 }
 
+double metrics_memory(int width, int height) { return 84.0 * double(width) * double(height); }
+
 MetricValues measure_metrics(const std::vector<Metric>& wanted, const MetricPair& pair) {
     MetricValues out;
     std::optional<double> error;

@@ -2,6 +2,7 @@
 
 #include "base/atomic_write.h"
 #include "base/csv.h"
+#include "base/memory_budget.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_value_lines.h"
@@ -654,6 +655,9 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
                        const std::vector<std::string>& shard_folders = {}) {
     auto sweep_start = Clock::now();
     if (threads < 0) threads = config.threads;
+    // A row holds its view's reference shot and the one it measures, both compared.
+    check_memory("boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) + " pixels",
+                 2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
     SweepReport report;
     SweepOutput out = open_output(config, output_folder);
     merge_shards(config, out, shard_folders);

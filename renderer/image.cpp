@@ -3,6 +3,7 @@
 #include "base/atomic_write.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/memory_budget.h"
 
 #include <spng.h>
 #include <stb_image.h>
@@ -29,6 +30,9 @@ void check_image_header(std::span<const std::uint8_t> encoded, const std::string
     if (width > max_image_side || height > max_image_side)
         throw_input_error(name, "", "image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than " +
                                         std::to_string(max_image_side) + " per side");
+    // Decoding is bounded by the size the header declares: RGBA8, and stb's copy of it.
+    check_memory(name + ": decoding its " + std::to_string(width) + "x" + std::to_string(height) + " pixels",
+                 8.0 * double(width) * double(height));
 }
 }  // namespace
 

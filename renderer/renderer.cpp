@@ -3,6 +3,7 @@
 // pixel handed to the Shader (renderer/shading.h).
 #include "renderer/renderer.h"
 
+#include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "renderer/lanes.h"
 #include "renderer/shading.h"
@@ -63,6 +64,9 @@ Light light_for_camera(const Camera& camera) {
 }
 
 Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
+    constexpr double frame_bytes_per_pixel = sizeof(Eigen::Vector4f) + sizeof(float) + sizeof(Eigen::Vector3f);
+    check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame",
+                 frame_bytes_per_pixel * double(width) * double(height));
     Frame frame;
     frame.width = width;
     frame.height = height;
@@ -72,6 +76,8 @@ Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
     frame.normal.assign(n, Eigen::Vector3f::Zero());
     return frame;
 }
+
+double render_memory(int width, int height) { return 40.0 * double(width) * double(height); }
 
 namespace {
 

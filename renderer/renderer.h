@@ -114,7 +114,12 @@ struct Frame {
     std::vector<Eigen::Vector3f> normal;  // world-space shading normal, facing the camera
 };
 
+// Refuses (InputError, base/memory_budget.h) a frame larger than the memory budget.
 Frame make_frame(int width, int height, const Eigen::Vector3f& background);
+// What rendering a width x height image and writing it needs: the frame, its
+// visibility buffer and its encoded copy, 40 bytes a pixel (measured with
+// `boxlod render` from 1024 to 4096 pixels a side: 35).
+double render_memory(int width, int height);
 void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame);
 
 Image8 frame_to_srgb8(const Frame& frame);  // RGB, sRGB-encoded

@@ -6,6 +6,7 @@ import json
 import os
 import struct
 import sys
+import zlib
 
 out = sys.argv[1]
 os.makedirs(out, exist_ok=True)
@@ -87,3 +88,19 @@ put("dae_xml_100000.dae", '<?xml version="1.0"?>\n<COLLADA version="1.4.1">' + "
 
 # ---------------------------------------------------------------- a PLY whose header is one huge line
 put("ply_header_16mb.ply", "ply\nformat ascii 1.0\ncomment " + "x" * (16 << 20) + "\nend_header\n")
+
+# ---------------------------------------------------------------- a 270 KB PNG that declares 16384 x 16384 grey pixels
+side = 16384
+packer = zlib.compressobj(9)
+idat = b"".join(packer.compress(b"\0" * (side + 1)) for _ in range(side)) + packer.flush()
+
+
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+put("declared_16384.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", side, side, 8, 0, 0, 0, 0)) +
+    chunk(b"IDAT", idat) + chunk(b"IEND", b""))
+# and a real 128 x 128 one, whose metrics (84 bytes a pixel) need more than 1 MB
+put("grey_128.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 128, 128, 8, 0, 0, 0, 0)) +
+    chunk(b"IDAT", zlib.compress(b"\0" * (129 * 128))) + chunk(b"IEND", b""))

@@ -1,5 +1,6 @@
 #include "renderer/renderer.h"
 
+#include "base/memory_budget.h"
 #include "golden.h"
 #include "render_scene.h"
 #include "renderer/exr_io.h"
@@ -392,4 +393,11 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
                 for (const Eigen::Vector4f& c : lanes.color) drawn += c.w() > 0;
             }
     EXPECT_GT(drawn, 131 * 97 * int(render_modes().size()));  // the views are not empty
+}
+
+TEST(Renderer, AFrameOverTheMemoryBudgetIsRefusedBeforeItIsAllocated) {
+    set_memory_budget(32.0 * 512 * 512);  // a frame is 32 bytes a pixel
+    EXPECT_NO_THROW(make_frame(512, 512, {0, 0, 0}));
+    EXPECT_THROW(make_frame(513, 512, {0, 0, 0}), InputError);
+    set_memory_budget(0);
 }

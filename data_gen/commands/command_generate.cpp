@@ -1,4 +1,5 @@
 #include "base/atomic_write.h"
+#include "base/memory_budget.h"
 #include "data_gen/city.h"
 #include "data_gen/commands/commands.h"
 #include "data_gen/grammar_parser.h"
@@ -46,6 +47,7 @@ int run_generate(const Arguments& arguments) {
             throw InputError(std::string(prefix) + "--start and --lot apply to one building, not to --city");
         CityOptions city;
         city.buildings = arguments.integer("city", 0);
+        check_memory(std::string(prefix) + "a city of " + std::to_string(city.buildings) + " buildings", city_file_memory(city.buildings));
         city.seed = std::uint64_t(seed);
         model = generate_city(city);
         report.push_back(number_entry("buildings", city.buildings));

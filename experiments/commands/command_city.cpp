@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "data_gen/city.h"
 #include "experiments/camera_path.h"
@@ -124,6 +125,7 @@ int run_city(const Arguments& arguments) {
     bool built_in = path_name == "orbit" || path_name == "street";
     std::vector<Keyframe> keys;
     if (!built_in) keys = load_keyframes(path_name);
+    check_memory("boxlod city: a fly-through of " + std::to_string(city.buildings) + " buildings", fly_through_memory(city.buildings, options));
 
     Model model = generate_city(city);
     std::vector<CameraPose> path =

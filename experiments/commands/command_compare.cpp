@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "experiments/commands/commands.h"
 #include "experiments/heatmap.h"
@@ -63,6 +64,8 @@ int run_compare(const Arguments& arguments) {
 
     Image8 a = read_image(a_name), b = read_image(b_name);
     require_same_size(a, a_name, b, b_name);
+    check_memory("boxlod compare: measuring two " + std::to_string(a.width) + "x" + std::to_string(a.height) + " images",
+                 metrics_memory(a.width, a.height));
     auto asks = [&](Metric m) { return std::find(asked.begin(), asked.end(), m) != asked.end(); };
     if (asks(Metric::ssim) && (a.width < 11 || a.height < 11))
         throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");

@@ -1,6 +1,7 @@
 #include "toolkit/commands/render_options.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "renderer/image.h"
 #include "toolkit/framing.h"
@@ -54,6 +55,8 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     View view;
     view.width = a.integer("width", 1024);
     view.height = a.integer("height", 768);
+    check_memory("--width " + std::to_string(view.width) + " --height " + std::to_string(view.height) + ": the image",
+                 render_memory(view.width, view.height));
     float fovy = float(a.number("fovy", 45));
     std::string position = a.text("camera", "+X+Y+Z");
     auto direction = camera_direction(position);
