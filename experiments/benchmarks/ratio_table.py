@@ -4,6 +4,7 @@
 peer measured in the same run, and the ratio (docs/performance.md).
 Usage: ratio_table.py BENCH_DIR"""
 import json
+import os
 import pathlib
 import re
 import sys
@@ -63,6 +64,17 @@ def show_ms(ms):
     return f"{ms * 1000:.0f} us" if ms < 1 else f"{ms:,.1f} ms" if ms < 100 else f"{ms:,.0f} ms"
 
 
+def cpu_model():
+    """The CPU the table was measured on, as /proc/cpuinfo names it."""
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "an unnamed CPU"
+
+
 def main():
     folder = pathlib.Path(sys.argv[1])
     rows = []
@@ -89,6 +101,7 @@ def main():
     if select:
         rows.append(("selecting the levels of 1,000 buildings, one frame", show_ms(milliseconds(select)), "1 ms target",
                      f"{1 / milliseconds(select):.1f}x", "under the target"))
+    print(f"Measured on {cpu_model()} ({os.cpu_count()} cores); compare ratios, not times, across machines.\n")
     print("| what | boxlod | peer | ratio | |")
     print("|---|---:|---:|---:|---|")
     for row in rows:
