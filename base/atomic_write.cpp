@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -201,6 +202,17 @@ void check_output_file(const std::string& path) {
     if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
     fs::path directory = fs::path(path).parent_path();
     check_folder_or_ancestor(directory.empty() ? fs::path(".") : directory, path);
+}
+
+void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions) {
+    check_output_file(path);
+    std::string extension = fs::path(path).extension().string(), names;
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    for (std::string_view wanted : extensions) {
+        if (extension == wanted) return;
+        names += (names.empty() ? "" : " or ") + std::string(wanted);
+    }
+    throw_input_error(path, "", "this output is written as " + names + ": name the file so");
 }
 
 void check_output_directory(const std::string& path) {

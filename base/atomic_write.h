@@ -5,8 +5,10 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace boxlod {
 
@@ -24,6 +26,9 @@ void write_text_atomically(const std::string& path, const std::string& text);
 // InputError "path: what" unless a file can be created there. Both also remove
 // the temporaries a killed run of boxlod left in that folder.
 void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder
+// ... and its name ends in one of `extensions` (".png"; case aside): a file
+// named .exr that holds PNG bytes misleads every reader after it.
+void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions);
 void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
 
 // Files that appear together or not at all: inside a group, atomic writes

@@ -35,6 +35,19 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
               (folder / "file" / "sub").string() + ": '" + (folder / "file").string() + "' is not a folder");
 }
 
+TEST(AtomicWrite, AnOutputIsNamedForTheFormatItHolds) {
+    fs::path folder = test::scratch_folder("atomic_write_extensions");
+    auto problem = [&](const std::string& name) {
+        return test::input_error_of([&] { check_output_file((folder / name).string(), {".gltf", ".glb"}); });
+    };
+    EXPECT_EQ(problem("a.glb"), "");
+    EXPECT_EQ(problem("a.GLTF"), "");  // case aside
+    EXPECT_EQ(problem("a.obj"), (folder / "a.obj").string() + ": this output is written as .gltf or .glb: name the file so");
+    EXPECT_NE(problem("glb"), "");  // no extension at all
+    EXPECT_EQ(test::input_error_of([&] { check_output_file(folder.string(), {".png"}); }),
+              folder.string() + ": is a directory, not a file to write");  // the path is checked first
+}
+
 TEST(AtomicWrite, AFileInAFolderThatDoesNotExistYetMakesItsFolder) {
     fs::path folder = test::scratch_folder("atomic_write_folder");
     write_text_atomically((folder / "new" / "deeper" / "a.txt").string(), "made");

@@ -37,7 +37,7 @@ int run_generate(const Arguments& arguments) {
     int sources = int(arguments.positionals.size()) + arguments.has("sample") + arguments.has("city");
     if (sources != 1) throw InputError(std::string(prefix) + "give exactly one of GRAMMAR, --sample NAME or --city N");
     if (!arguments.has("output")) throw InputError(std::string(prefix) + "-o/--output OUT.gltf|OUT.glb is required");
-    check_output_file(arguments.text("output"));
+    check_output_file(arguments.text("output"), {".gltf", ".glb"});
     int seed = arguments.integer("seed", 0);
 
     Model model;

@@ -58,7 +58,7 @@ int run_compare(const Arguments& arguments) {
     std::string heatmap_metric = arguments.text("heatmap-metric", "flip");
     if (heatmap_metric != "flip" && heatmap_metric != "rmse")
         throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
-    if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"));
+    if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"), {".png"});
     double ppd = arguments.number("ppd", 67);
     int threads = arguments.integer("threads", 0);
 

@@ -18,7 +18,7 @@ int run_simplify(const Arguments& arguments) {
     const std::string prefix = "boxlod simplify: ";
     if (!arguments.has("output")) throw InputError(prefix + "-o/--output OUT.gltf|OUT.glb is required");
     if (!arguments.has("faces")) throw InputError(prefix + "--faces N is required");
-    check_output_file(arguments.text("output"));
+    check_output_file(arguments.text("output"), {".gltf", ".glb"});
     const int faces = arguments.integer("faces", 0);
     SimplifyOptions options;
     options.lock_border = arguments.has("lock-border");

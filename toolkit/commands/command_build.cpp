@@ -137,10 +137,7 @@ int run_build(const Arguments& a) {
     const bool chain_file = a.has("chain");
     if (!a.has("output")) throw InputError("boxlod build: -o/--output " + std::string(chain_file ? "OUT.glb" : "OUTDIR") + " is required");
     if (chain_file) {
-        std::string extension = std::filesystem::path(a.text("output")).extension().string();
-        if (extension != ".glb" && extension != ".gltf")
-            throw InputError("--chain: -o '" + a.text("output") + "' must name a .glb or .gltf file");
-        check_output_file(a.text("output"));
+        check_output_file(a.text("output"), {".glb", ".gltf"});
     } else {
         check_output_directory(a.text("output"));
     }

@@ -9,7 +9,7 @@ namespace boxlod {
 
 static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
-    check_output_file(arguments.text("output"));
+    check_output_file(arguments.text("output"), {".gltf", ".glb"});
     Model model = load_model(arguments.positionals[0]);
     if (!arguments.has("keep-materials")) merge_materials(model);
     save_model(model, arguments.text("output"));

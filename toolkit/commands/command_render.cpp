@@ -13,8 +13,9 @@ namespace boxlod {
 
 static int run_render(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod render: -o/--output OUT.png is required");
-    for (const char* output : {"output", "exr", "coverage"})
-        if (arguments.has(output)) check_output_file(arguments.text(output));
+    check_output_file(arguments.text("output"), {".png"});
+    if (arguments.has("coverage")) check_output_file(arguments.text("coverage"), {".png"});
+    if (arguments.has("exr")) check_output_file(arguments.text("exr"), {".exr"});
     Model model = load_model(arguments.positionals[0], arguments.integer("level", 0));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;

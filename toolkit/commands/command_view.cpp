@@ -218,7 +218,7 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
 }
 
 int run_view(const Arguments& a) {
-    if (a.has("screenshot")) check_output_file(a.text("screenshot"));
+    if (a.has("screenshot")) check_output_file(a.text("screenshot"), {".png"});
     LodParameters parameters = lod_parameters_from(a);
     bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
