@@ -7,6 +7,7 @@
 
 #include <spng.h>
 #include <stb_image.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <bit>
@@ -21,6 +22,33 @@
 
 namespace boxlod {
 namespace {
+std::uint32_t big_endian_u32(const std::uint8_t* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | std::uint32_t(p[3]);
+}
+
+// A PNG's chunks, each (length, type, data, CRC-32 of type and data) up to
+// IEND (PNG, ISO/IEC 15948, 5.3), inside the file and with the checksums they
+// state: stb decodes without reading them, so a damaged file gave whatever
+// pixels its damage made.
+void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& name) {
+    static constexpr std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (encoded.size() < 8 || !std::equal(signature, signature + 8, encoded.begin())) return;
+    for (std::size_t at = 8;;) {
+        if (!range_fits(at, 12, encoded.size())) throw_input_error(name, "byte " + std::to_string(at), "PNG ends without its IEND chunk");
+        const std::size_t length = big_endian_u32(&encoded[at]);
+        if (!range_fits(at + 8, length + 4, encoded.size()))
+            throw_input_error(name, "byte " + std::to_string(at), "PNG chunk runs past the end of the file");
+        const std::uint8_t* type = &encoded[at + 4];
+        const std::string type_name(reinterpret_cast<const char*>(type), 4);
+#ifndef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION  // renderer/CMakeLists.txt
+        if (std::uint32_t(crc32(crc32(0, nullptr, 0), type, uInt(length + 4))) != big_endian_u32(&encoded[at + 8 + length]))
+            throw_input_error(name, "byte " + std::to_string(at), "PNG chunk " + type_name + " fails its checksum (a damaged file)");
+#endif
+        if (type_name == "IEND") return;
+        at += 12 + length;
+    }
+}
+
 // The header read before decoding: no allocation for a size the file only claims.
 void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
     int width = 0, height = 0, channels = 0;
@@ -33,6 +61,7 @@ void check_image_header(std::span<const std::uint8_t> encoded, const std::string
     // Decoding is bounded by the size the header declares: RGBA8, and stb's copy of it.
     check_memory(name + ": decoding its " + std::to_string(width) + "x" + std::to_string(height) + " pixels",
                  8.0 * double(width) * double(height));
+    check_png_chunks(encoded, name);
 }
 }  // namespace
 

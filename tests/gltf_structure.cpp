@@ -66,3 +66,21 @@ TEST(GltfStructure, NamesMalformedJson) {
     EXPECT_EQ(problem(R"({"buffers":[)").rfind("m.gltf: malformed JSON: ", 0), 0u);
     EXPECT_EQ(problem("[1, 2]"), "m.gltf: the JSON is not an object");
 }
+
+TEST(GltfStructure, MembersBoxlodReadsHaveTheirSchemasKind) {
+    // tinygltf skipped each of these without a word, as if the member were absent.
+    EXPECT_EQ(problem(R"({"materials":[{"alphaCutoff":"x"}]})"), "m.gltf: materials[0].alphaCutoff: must be a number");
+    EXPECT_EQ(problem(R"({"materials":[{},{"doubleSided":"yes"}]})"), "m.gltf: materials[1].doubleSided: must be true or false");
+    EXPECT_EQ(problem(R"({"materials":[{"pbrMetallicRoughness":{"baseColorFactor":[1,1,1]}}]})"),
+              "m.gltf: materials[0].pbrMetallicRoughness.baseColorFactor: must be an array of numbers of length 4");
+    EXPECT_EQ(problem(R"({"meshes":[{"primitives":[{"attributes":{},"material":-1}]}]})"),
+              "m.gltf: meshes[0].primitives[0].material: must be a non-negative integer");
+    EXPECT_EQ(problem(R"({"nodes":[{"children":[1,"2"]}]})"), "m.gltf: nodes[0].children: must be an array of non-negative integers");
+    EXPECT_EQ(problem(R"({"extensionsUsed":"KHR_materials_specular"})"), "m.gltf: extensionsUsed: must be an array of strings");
+    EXPECT_EQ(problem(R"({"meshes":{}})"), "m.gltf: meshes: must be an array");
+    // Extensions are objects wherever they are; extras may hold anything.
+    EXPECT_EQ(problem(R"({"nodes":[{"extensions":null}]})"), "m.gltf: nodes[0].extensions: must be an object");
+    EXPECT_EQ(problem(R"({"materials":[{"normalTexture":{"index":0,"extensions":[]}}]})"),
+              "m.gltf: materials[0].normalTexture.extensions: must be an object");
+    EXPECT_EQ(problem(R"({"asset":{"version":"2.0","extras":{"extensions":[1]}},"materials":[{"alphaCutoff":0.5,"doubleSided":true}]})"), "");
+}

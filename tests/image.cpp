@@ -42,6 +42,24 @@ TEST(Image, UndecodableBytesAreAnInputError) {
     EXPECT_THROW(read_image("/nonexistent/file.png"), InputError);
 }
 
+TEST(Image, APngChunkThatFailsItsChecksumIsRefused) {
+    Image8 image(4, 3, 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint8_t(i * 7);
+    std::vector<std::uint8_t> png = encode_png(image);
+    EXPECT_EQ(decode_image(png, "ok.png").width, 4);
+    std::vector<std::uint8_t> damaged = png;
+    damaged[damaged.size() - 20] ^= 1;  // a bit inside the IDAT data: stb decoded it without a word
+    try {
+        decode_image(damaged, "damaged.png");
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("damaged.png: byte 33: PNG chunk IDAT fails its checksum"), std::string::npos)
+            << error.what();
+    }
+    std::vector<std::uint8_t> cut(png.begin(), png.end() - 12);  // no IEND
+    EXPECT_THROW(decode_image(cut, "cut.png"), InputError);
+}
+
 TEST(Image, ASizeBeyondTheLimitIsRefusedBeforeDecoding) {
     // A valid PNG header claiming 100000 x 1 pixels, with no pixel data.
     std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 using namespace boxlod;
 
 namespace {
@@ -53,6 +55,18 @@ TEST(LodOptions, ManualSetsTheManualsProgramAndOptionsChangeSingleParameters) {
     EXPECT_EQ(manual.min_texture_size, 256);
     EXPECT_EQ(manual.flat_faces, 0);
     EXPECT_EQ(parse({"--manual", "--flat-faces", "4"}).flat_faces, 4);
+}
+
+TEST(LodOptions, ManualAndOptionsWinOverAParameterFile) {
+    const std::string file = testing::TempDir() + "lod_options_params.txt";
+    std::FILE* out = std::fopen(file.c_str(), "w");
+    std::fputs("min_texture_size = 32\nflat_faces = 4\n", out);
+    std::fclose(out);
+    const LodParameters manual = parse({"--params", file, "--manual"});
+    EXPECT_EQ(manual.min_texture_size, 256);  // before, the file's values replaced what --manual set
+    EXPECT_EQ(manual.flat_faces, 0);
+    EXPECT_EQ(parse({"--params", file, "--manual", "--flat-faces", "2"}).flat_faces, 2);
+    EXPECT_EQ(parse({"--params", file}).min_texture_size, 32);
 }
 
 TEST(LodOptions, ErrorsNameTheOption) {

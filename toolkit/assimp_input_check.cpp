@@ -98,10 +98,11 @@ void check_off(std::string_view bytes, const std::string& file) {
         if (!next_line()) return;  // assimp reports a short file
     for (std::size_t f = 0; f < faces && next_line(); ++f) {
         std::istringstream face(line);
-        std::size_t corners = 0, index = 0;
+        std::size_t corners = 0;
+        long long index = 0;  // signed: a "-1" is reported as itself, not wrapped around
         face >> corners;
         for (std::size_t k = 0; k < corners && face >> index; ++k)
-            if (index >= vertices)
+            if (index < 0 || std::size_t(index) >= vertices)
                 throw_input_error(file, "line " + std::to_string(number), "vertex index " + std::to_string(index) + " out of range (" +
                                                                           std::to_string(vertices) + " vertices)");
     }
@@ -218,7 +219,7 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
             Frame& frame = stack.back();
             if (frame.next < edges[frame.node].size()) {
                 std::uint32_t child = edges[frame.node][frame.next++];
-                std::string place = "#" + std::to_string(graph.ids[child]);
+                std::string place = std::to_string(graph.ids[child]).insert(0, 1, '#');  // not "#" + ...: GCC 12's false -Wrestrict
                 if (state[child] == open) throw_input_error(file, place, what + " form a cycle");
                 if (state[child] == unseen) {
                     if (stack.size() >= std::size_t(max_nesting_depth))

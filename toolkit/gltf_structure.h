@@ -3,7 +3,9 @@
 // overflow the stack (glTF 2.0 spec, sections 4.4 "Binary glTF" and 5.11
 // "bufferView"): the glb header and chunks inside the file, the JSON nested at
 // most max_nesting_depth deep, every buffer view inside its buffer, every
-// image's buffer view present.
+// image's buffer view present; every member boxlod reads of the kind the
+// schema gives it (an alphaCutoff that is a string, an `extensions` that is
+// an array), where tinygltf would skip it without a word.
 #pragma once
 #include <string>
 #include <string_view>

@@ -100,6 +100,8 @@ void validate_model(const Model& model) {
                 if (!v.allFinite()) throw_input_error(file, where, "normal is NaN or infinite");
             for (const auto& v : primitive.uvs)
                 if (!v.allFinite()) throw_input_error(file, where, "texture coordinate is NaN or infinite");
+            for (const auto& v : primitive.tangents)
+                if (!v.allFinite()) throw_input_error(file, where, "tangent is NaN or infinite");
             if (primitive.material >= int(model.materials.size()))
                 throw_input_error(file, where, "material index out of range");
             for (std::size_t t = 0; !any_triangle && t < primitive.indices.size(); t += 3) {

@@ -46,17 +46,21 @@ void apply_lod_options(const Arguments& a, LodParameters& p, const std::vector<s
     }
 }
 
+// The parameters come from a file (the input, or --params), then --manual,
+// then each option given: what the command line says wins.
 LodParameters lod_parameters_from(const Arguments& a) {
     LodParameters p;
-    if (a.has("manual")) set_manual(p);
     const std::string& input = a.positionals[0];
     if (is_parameter_file(input)) {
+        if (a.has("params"))
+            throw InputError("--params: " + input + " is a parameter file already (--params takes the parameters for a model)");
         p = load_parameters(input);
         if (p.model.empty()) throw_input_error(input, "", "the parameter file names no model (key 'model')");
     } else {
         if (a.has("params")) p = load_parameters(a.text("params"));
         p.model = input;
     }
+    if (a.has("manual")) set_manual(p);
     apply_lod_options(a, p);
     validate_parameters(p, "command line");
     return p;
