@@ -170,6 +170,35 @@ TEST(Hybrid, PlansTheSameForAnyThreadCount) {
     EXPECT_EQ(one.error, two.error);
 }
 
+TEST(Hybrid, MeasurementsReusedAtAnotherDistancePlanAsMeasuringAgain) {
+    Scene s = facade_and_sphere();
+    const DecodedTextures textures = decode_textures(s.model);
+    const std::shared_ptr<HybridMeasurements> measurements = make_hybrid_measurements(s.model);
+    HybridSettings near = settings_for(0.04f, 2), far = settings_for(0.11f, 2);
+    near.measurements = far.measurements = measurements.get();
+    plan_hybrid(s.model, textures, s.boxes, near);
+    // At 11 cm the facade (5.66 m across its box: 48 measuring pixels of 11.8 cm)
+    // is measured in the same view as at 4 cm and reuses its sums; the sphere
+    // (5.2 m: 10.8 cm pixels at 4 cm) is measured again, in 11 cm pixels.
+    const HybridPlan reused = plan_hybrid(s.model, textures, s.boxes, far);
+    far.measurements = nullptr;
+    const HybridPlan again = plan_hybrid(s.model, textures, s.boxes, far);
+    ASSERT_EQ(reused.proxies.size(), again.proxies.size());
+    for (std::size_t n = 0; n < again.proxies.size(); ++n) {
+        ASSERT_EQ(reused.proxies[n].size(), again.proxies[n].size()) << n;
+        for (std::size_t k = 0; k < again.proxies[n].size(); ++k) {
+            EXPECT_EQ(reused.proxies[n][k].error, again.proxies[n][k].error) << n << " " << k;
+            EXPECT_EQ(reused.proxies[n][k].bytes, again.proxies[n][k].bytes) << n << " " << k;
+            EXPECT_EQ(reused.proxies[n][k].primitives.size(), again.proxies[n][k].primitives.size());
+        }
+    }
+    EXPECT_EQ(reused.bytes, again.bytes);
+    EXPECT_EQ(reused.error, again.error);
+    // The far plan is not the near one: the reuse is not of the whole plan.
+    const HybridPlan near_plan = plan_hybrid(s.model, textures, s.boxes, settings_for(0.04f, 2));
+    EXPECT_NE(near_plan.bytes, again.bytes);
+}
+
 namespace {
 
 // A root over two children a (node 1) and b (node 2) with 30 vertices each.

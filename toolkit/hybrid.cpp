@@ -40,6 +40,38 @@ MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& setting
     return view;
 }
 
+constexpr int measuring_directions = 8;  // the corners of a cube
+
+// A sub-tree simplified to one of simplified_shares, and the error sums it
+// was measured with, per measuring view.
+struct SimplifiedSubtree {
+    std::vector<Primitive> primitives;
+    std::size_t triangles = 0;
+};
+
+struct NodeMeasurement {
+    bool simplified_made = false;
+    std::vector<SimplifiedSubtree> simplified;  // those that simplify further than the one before, in share order
+    float pixel = 0;  // the measuring view the sums below are of (0: none yet)
+    int side = 0;
+    double box_sum = 0;
+    std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
+};
+
+}  // namespace
+
+struct HybridMeasurements {
+    std::vector<NodeMeasurement> nodes;
+};
+
+std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model) {
+    auto measurements = std::make_shared<HybridMeasurements>();
+    measurements->nodes.resize(model.nodes.size());
+    return measurements;
+}
+
+namespace {
+
 // Each view rendered at twice the side and averaged over 2 x 2 pixels: without
 // it, detail near the pixel's size aliases differently in the sub-tree and in
 // a texture baked from it, and the error measures the aliasing.
@@ -59,7 +91,7 @@ void downsample(Frame& frame) {
 std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode) {
     std::vector<Frame> frames;
     const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
-    for (int corner = 0; corner < 8; ++corner) {
+    for (int corner = 0; corner < measuring_directions; ++corner) {
         const Eigen::Vector3f direction =
             Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
         RenderSettings settings;
@@ -79,15 +111,19 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
     return frames;
 }
 
-// Pixels of the sizing view that differ: the measuring pixels' errors, each
-// weighing (measuring pixel / sizing pixel)^2, mean over the directions.
-double measured_error(const std::vector<Frame>& original, const std::vector<Frame>& proxy, const MeasuringView& view,
-                      const HybridSettings& settings) {
+// The measuring pixels' errors summed over every direction.
+double pixel_error_sum(const std::vector<Frame>& original, const std::vector<Frame>& proxy) {
     double sum = 0;
     for (std::size_t v = 0; v < original.size(); ++v)
         for (std::size_t i = 0; i < original[v].color.size(); ++i) sum += hybrid_pixel_error(original[v].color[i], proxy[v].color[i]);
+    return sum;
+}
+
+// Pixels of the sizing view that differ: the measuring pixels' errors, each
+// weighing (measuring pixel / sizing pixel)^2, mean over the directions.
+double measured_error(double pixel_error_sum, const MeasuringView& view, const HybridSettings& settings) {
     const double scale = double(view.pixel) / pixel_world_size(settings.sizing);
-    return sum * scale * scale / double(original.size());
+    return pixel_error_sum * scale * scale / measuring_directions;
 }
 
 // The box as a drawable: each face one quad over its whole baked texture.
@@ -151,12 +187,33 @@ std::size_t triangle_count(const std::vector<Primitive>& primitives) {
     return triangles;
 }
 
-// Every proxy of node n, measured; then sorted by bytes, keeping only those
-// that beat every cheaper one and cost less than the sub-tree itself.
-std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
-                                   double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
-    const Drawable subtree = make_drawable(model, textures, n);
-    const MeasuringView view = measuring_view(subtree.bounds, settings);
+// Node n's simplified sub-trees, each simpler than the one before (made once per model).
+const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n, std::size_t subtree_triangles,
+                                                           NodeMeasurement& measurement) {
+    if (measurement.simplified_made) return measurement.simplified;
+    SimplifyOptions options;
+    options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
+    options.threads = 1;
+    std::size_t previous = subtree_triangles + 1;
+    for (double share : simplified_shares) {
+        const auto target = std::size_t(double(subtree_triangles) * share);
+        if (target < fewest_simplified_triangles) break;
+        SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0};
+        simplified.triangles = triangle_count(simplified.primitives);
+        if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
+        previous = simplified.triangles;
+        measurement.simplified.push_back(std::move(simplified));
+    }
+    measurement.simplified_made = true;
+    return measurement.simplified;
+}
+
+// The error sums of node n's box and simplified sub-trees in `view`, rendered
+// among their siblings, unless `measurement` holds them for this view.
+void measure_error_sums(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                        std::size_t subtree_triangles, const Drawable& subtree, const MeasuringView& view,
+                        const HybridSettings& settings, NodeMeasurement& measurement) {
+    if (measurement.pixel == view.pixel && measurement.side == view.side) return;
     // Among its siblings: the parent's sub-tree but n's own, drawn in every measuring render.
     std::vector<const Primitive*> others;
     if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
@@ -183,35 +240,43 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         return batches;
     };
     const std::vector<Frame> original = render_views(with_context(subtree), view, settings.mode);
+    measurement.box_sum = pixel_error_sum(original, render_views(with_context(box_proxy_drawable(subtree, box, view, settings)->drawable),
+                                                                 view, settings.mode));
+    measurement.simplified_sums.clear();
+    for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
+        double sum = 0;
+        if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
+            std::vector<const Primitive*> primitives;
+            for (const Primitive& p : simplified.primitives) primitives.push_back(&p);
+            sum = pixel_error_sum(original, render_views(with_context(make_drawable(model.materials, textures, primitives)), view,
+                                                         settings.mode));
+        }
+        measurement.simplified_sums.push_back(sum);
+    }
+    measurement.pixel = view.pixel, measurement.side = view.side;
+}
+
+// Every proxy of node n, measured (or its measurements reused); then sorted by
+// bytes, keeping only those that beat every cheaper one and cost less than the sub-tree itself.
+std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                                   double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
+    const Drawable subtree = make_drawable(model, textures, n);
+    const MeasuringView view = measuring_view(subtree.bounds, settings);
+    NodeMeasurement own;
+    NodeMeasurement& measurement = settings.measurements ? settings.measurements->nodes[std::size_t(n)] : own;
+    measure_error_sums(model, textures, n, box, subtree_triangles, subtree, view, settings, measurement);
 
     std::vector<Proxy> proxies;
-    {
-        Proxy proxy;
-        proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
-        const auto drawable = box_proxy_drawable(subtree, box, view, settings);
-        proxy.error = measured_error(original, render_views(with_context(drawable->drawable), view, settings.mode), view, settings);
-        proxies.push_back(std::move(proxy));
-    }
-    SimplifyOptions options;
-    options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
-    options.threads = 1;
-    std::size_t previous = subtree_triangles + 1;
-    for (double share : simplified_shares) {
-        const auto target = std::size_t(double(subtree_triangles) * share);
-        if (target < fewest_simplified_triangles) break;
+    Proxy box_proxy;
+    box_proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
+    box_proxy.error = measured_error(measurement.box_sum, view, settings);
+    proxies.push_back(std::move(box_proxy));
+    for (std::size_t k = 0; k < measurement.simplified.size(); ++k) {
         Proxy proxy;
         proxy.kind = ProxyKind::simplified;
-        proxy.primitives = simplify_subtree(model, n, target, options);
-        const std::size_t triangles = triangle_count(proxy.primitives);
-        if (triangles == 0 || triangles >= previous) continue;  // nothing left, or no simpler than the last
-        previous = triangles;
+        proxy.primitives = measurement.simplified[k].primitives;
         proxy.bytes = mesh_bytes(proxy.primitives, model);
-        if (triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
-            std::vector<const Primitive*> primitives;
-            for (const Primitive& p : proxy.primitives) primitives.push_back(&p);
-            const Drawable drawable = make_drawable(model.materials, textures, primitives);
-            proxy.error = measured_error(original, render_views(with_context(drawable), view, settings.mode), view, settings);
-        }
+        proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));
     }
     std::stable_sort(proxies.begin(), proxies.end(), [](const Proxy& a, const Proxy& b) { return a.bytes < b.bytes; });

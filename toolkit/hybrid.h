@@ -22,6 +22,7 @@
 #include "toolkit/texture_sizing.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -51,12 +52,21 @@ struct HybridPlan {
     std::vector<double> bytes, error;   // after k steps: bytes (mesh + box estimates) and the summed proxy errors
 };
 
+// What plan_hybrid measured, kept for the plans of the same model at other
+// sizing distances (level_sessions.h: one plan per distance): a node measured
+// again in the same measuring view takes its proxies' errors from here, and
+// its simplified sub-trees, which no distance changes, are made once. Each
+// node's entry is written by the one thread that measures it.
+struct HybridMeasurements;
+std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model);
+
 // What the plan's renders share with the LoD they plan.
 struct HybridSettings {
     TextureSizing sizing;
     RenderMode mode = RenderMode::normal;
     int threads = 0;      // nodes measured in parallel; the plan never depends on it
     int max_side = 48;    // measuring renders at most this many pixels a side (coarser pixels weigh more)
+    HybridMeasurements* measurements = nullptr;  // set: reused and filled (the same plan as without)
 };
 
 // The error of one pixel between two renders of the same view, in [0, 2]:

@@ -31,7 +31,9 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
 }
 
 LevelSessions::LevelSessions(const Model& model, const LodParameters& parameters, int threads)
-    : model(model), threads(threads), first(start_lod(model, parameters, threads)) {}
+    : model(model), threads(threads),
+      measurements(parameters.level_mode == LevelMode::hybrid ? make_hybrid_measurements(model) : nullptr),
+      first(start_lod(model, parameters, threads, nullptr, measurements.get())) {}
 
 LodSession& LevelSessions::for_level(int level) {
     // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan made once.
@@ -40,7 +42,7 @@ LodSession& LevelSessions::for_level(int level) {
     if (!session) {
         LodParameters p = first->parameters;
         p.distance = distances[std::size_t(level - 1)];
-        session = start_lod(model, p, threads, &first->boxes);
+        session = start_lod(model, p, threads, &first->boxes, measurements.get());
     }
     return *session;
 }
@@ -48,6 +50,7 @@ LodSession& LevelSessions::for_level(int level) {
 LodTimes LevelSessions::times() const {
     LodTimes t = first->times;
     for (const auto& [distance, session] : sized) {
+        t.levels += session->times.levels;  // each distance plans its own levels (hybrid measures again)
         t.bake += session->times.bake, t.pack += session->times.pack;
         t.mesh += session->times.mesh, t.write += session->times.write;
     }

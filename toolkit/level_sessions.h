@@ -21,6 +21,7 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
 struct LevelSessions {
     const Model& model;
     int threads;
+    std::shared_ptr<HybridMeasurements> measurements;  // level mode hybrid: made once, reused at every distance
     std::unique_ptr<LodSession> first;  // at the parameters' distance; level 0 and its boxes
     std::vector<float> distances;       // of levels 1..N; empty: every level at the first's distance
     std::map<float, std::unique_ptr<LodSession>> sized;

@@ -77,7 +77,7 @@ Eigen::Vector2i texels_of(const OrientedBoxFace& face, const TextureSizing& sizi
 }  // namespace
 
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
-                                      const std::vector<std::optional<OrientedBox>>* boxes) {
+                                      const std::vector<std::optional<OrientedBox>>* boxes, HybridMeasurements* measurements) {
     if (model.is_lod)
         throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
     validate_parameters(parameters, model.source);
@@ -106,7 +106,8 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     const bool textured = p.render_mode != RenderMode::untextured;
     if (p.level_mode == LevelMode::hybrid) {
         session->hybrid = std::make_shared<const HybridPlan>(
-            plan_hybrid(model, session->textures, session->boxes, {session->sizing, p.render_mode, threads}));
+            plan_hybrid(model, session->textures, session->boxes,
+                        {.sizing = session->sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements}));
         const HybridPlan& plan = *session->hybrid;
         if (budgets.empty()) budgets = geometric_budgets(plan.bytes.front(), plan.bytes.back(), levels);
         session->levels = hybrid_levels(model, plan, budgets, session->hybrid_levels);

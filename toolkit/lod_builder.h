@@ -43,8 +43,11 @@ struct LodSession {
 
 // Throws InputError for an LoD model (boxlod does not simplify its own output) or bad parameters.
 // `boxes`, when given, are the model's node_boxes for parameters.box_kind (computed once, reused).
+// `measurements`, when given, are shared with the sessions of the same model at
+// other distances (level mode hybrid: level_sessions.h).
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
-                                      const std::vector<std::optional<OrientedBox>>* boxes = nullptr);
+                                      const std::vector<std::optional<OrientedBox>>* boxes = nullptr,
+                                      HybridMeasurements* measurements = nullptr);
 
 // The textures of atlas page K in an LoD's model: its colour, normal and
 // height maps (color_K.png, normal_K.png, height_K.png); material K draws it.
