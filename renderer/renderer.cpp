@@ -596,6 +596,10 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     float depth[tile_size * tile_size];
     std::uint32_t ids[tile_size * tile_size];
     std::fill(depth, depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
+    if (c.settings.depth_from_frame)
+        for (int y = y0; y < y1; ++y)
+            std::copy_n(&frame.depth[std::size_t(y) * std::size_t(frame.width) + std::size_t(x0)], x1 - x0,
+                        &depth[(y - y0) * tile_size]);
     std::fill(ids, ids + tile_size * tile_size, no_triangle);
     TileTarget target{x0, y0, x1, y1, tile_size, depth, ids};
 

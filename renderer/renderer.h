@@ -101,6 +101,11 @@ struct RenderSettings {
     int threads = 0;  // 0 = all cores
     // Pixels outside [x0, x1) x [y0, y1) are left untouched (split view).
     int scissor_x0 = 0, scissor_y0 = 0, scissor_x1 = 1 << 30, scissor_y1 = 1 << 30;
+    // The depth test starts from the frame's depth instead of +infinity: a
+    // render over an earlier one with the same camera gives the picture of
+    // both drawn in one render, the earlier first, when the earlier drew no
+    // blended surface (its depth hides what the blend would show).
+    bool depth_from_frame = false;
 };
 
 // What a render leaves per pixel. Uncovered pixels keep the background,

@@ -105,6 +105,39 @@ TEST(Renderer, OutputIsIdenticalForAnyThreadCount) {
     }
 }
 
+TEST(Renderer, ARenderOverAnEarlierOneFromItsDepthIsBothInOne) {
+    // The box first, then the floor behind it and a blended pane with the depth
+    // test from the box's depth: the picture of one render of all three.
+    auto scene = test::make_render_scene();
+    const Batch& floor = scene->batches[0];
+    const Batch& box = scene->batches[1];
+    Batch pane = box;
+    pane.surface.alpha_mode = AlphaMode::blend;
+    pane.surface.base_color = {0.2f, 0.4f, 0.9f, 0.5f};
+    Mesh moved = scene->box;
+    for (Eigen::Vector3f& p : moved.positions) p += Eigen::Vector3f(0.4f, 0.2f, 0.5f);
+    pane.mesh = &moved;
+    for (RenderMode mode : {RenderMode::untextured, RenderMode::pom}) {
+        RenderSettings settings = scene->settings;
+        settings.mode = mode;
+        Frame both = make_frame(150, 110, {1, 1, 1});
+        render({box, floor, pane}, settings, both);
+        Frame layered = make_frame(150, 110, {1, 1, 1});
+        render({box}, settings, layered);
+        settings.depth_from_frame = true;
+        render({floor, pane}, settings, layered);
+        EXPECT_EQ(layered.color, both.color) << render_mode_name(mode);
+        EXPECT_EQ(layered.depth, both.depth);
+        EXPECT_EQ(layered.normal, both.normal);
+        // From +infinity instead, the floor is drawn over the box.
+        settings.depth_from_frame = false;
+        Frame over = make_frame(150, 110, {1, 1, 1});
+        render({box}, settings, over);
+        render({floor, pane}, settings, over);
+        EXPECT_NE(over.color, both.color);
+    }
+}
+
 TEST(Renderer, ScissorLeavesOtherPixelsUntouched) {
     auto scene = test::make_render_scene();
     RenderSettings settings = scene->settings;

@@ -88,7 +88,11 @@ void downsample(Frame& frame) {
     frame.depth.clear(), frame.normal.clear();
 }
 
-std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode) {
+// The measuring renders of `batches`, from every direction. Over `underlay`
+// (full-size renders of what every candidate is drawn among) when given, from
+// its depth: the picture of the underlay's batches and these in one render.
+std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode,
+                                const std::vector<Frame>* underlay = nullptr, bool downsampled = true) {
     std::vector<Frame> frames;
     const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
     for (int corner = 0; corner < measuring_directions; ++corner) {
@@ -97,6 +101,7 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
         RenderSettings settings;
         settings.mode = mode;
         settings.threads = 1;  // nodes are measured in parallel
+        settings.depth_from_frame = underlay != nullptr;
         Camera& camera = settings.camera;
         camera.orthographic = true;
         camera.position = view.sphere.center + direction * (2 * r);
@@ -104,9 +109,10 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
         camera.left = camera.bottom = -half, camera.right = camera.top = half;
         camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
         settings.light = light_for_camera(camera);
-        frames.push_back(make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
+        frames.push_back(underlay ? (*underlay)[std::size_t(corner)]
+                                  : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
         render(batches, settings, frames.back());
-        downsample(frames.back());
+        if (downsampled) downsample(frames.back());
     }
     return frames;
 }
@@ -230,26 +236,32 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
                     if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
                 }
     }
-    // Drawn in its materials' base colours, untextured: it only hides and is hidden, the same in every render.
+    // Drawn in its materials' base colours, untextured: it only hides and is
+    // hidden, the same in every render. Its opaque part is rendered once per
+    // direction and each candidate over it from its depth (renderer.h:
+    // depth_from_frame), its blended part with each candidate: the pictures of
+    // one render of the context and the candidate, at a fraction of the cost.
     std::vector<Material> plain = model.materials;
     for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
     const Drawable context = make_drawable(plain, DecodedTextures{}, others);
-    auto with_context = [&](const Drawable& d) {
-        std::vector<Batch> batches = context.batches;
+    std::vector<Batch> opaque_context, blended_context;
+    for (const Batch& batch : context.batches)
+        (batch.surface.alpha_mode == AlphaMode::blend ? blended_context : opaque_context).push_back(batch);
+    const std::vector<Frame> underlay = render_views(opaque_context, view, settings.mode, nullptr, false);
+    auto among_context = [&](const Drawable& d) {
+        std::vector<Batch> batches = blended_context;
         batches.insert(batches.end(), d.batches.begin(), d.batches.end());
-        return batches;
+        return render_views(batches, view, settings.mode, &underlay);
     };
-    const std::vector<Frame> original = render_views(with_context(subtree), view, settings.mode);
-    measurement.box_sum = pixel_error_sum(original, render_views(with_context(box_proxy_drawable(subtree, box, view, settings)->drawable),
-                                                                 view, settings.mode));
+    const std::vector<Frame> original = among_context(subtree);
+    measurement.box_sum = pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, view, settings)->drawable));
     measurement.simplified_sums.clear();
     for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
         double sum = 0;
         if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
             std::vector<const Primitive*> primitives;
             for (const Primitive& p : simplified.primitives) primitives.push_back(&p);
-            sum = pixel_error_sum(original, render_views(with_context(make_drawable(model.materials, textures, primitives)), view,
-                                                         settings.mode));
+            sum = pixel_error_sum(original, among_context(make_drawable(model.materials, textures, primitives)));
         }
         measurement.simplified_sums.push_back(sum);
     }
