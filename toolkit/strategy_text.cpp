@@ -37,7 +37,7 @@ std::vector<double> parse_numbers(const std::vector<std::string>& parts, const s
 
 std::string join_numbers(const std::vector<double>& numbers) {
     std::string out;
-    for (double n : numbers) out += (out.empty() ? "" : ",") + format_number(n);
+    for (double n : numbers) out.append(out.empty() ? "" : ",").append(format_number(n));  // not "," + ...: GCC 12's false -Wrestrict
     return out;
 }
 
