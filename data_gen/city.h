@@ -2,7 +2,7 @@
 // from a sample grammar, its kind and seed drawn per lot.
 #pragma once
 #include "data_gen/interpreter.h"
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <cstdint>
 #include <string>

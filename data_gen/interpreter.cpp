@@ -5,7 +5,7 @@
 #include "data_gen/primitives.h"
 #include "data_gen/random.h"
 #include "data_gen/split.h"
-#include "toolkit/model_io.h"
+#include "toolkit/formats/model_io.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

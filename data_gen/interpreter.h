@@ -6,7 +6,7 @@
 #include "data_gen/grammar.h"
 #include "data_gen/materials.h"
 #include "data_gen/scope_box.h"
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <cstdint>
 #include <optional>

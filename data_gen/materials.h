@@ -2,7 +2,7 @@
 // materials the interpreter makes from a shape's appearance (a material,
 // optionally tinted by color(...) or given another texture(...)).
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <map>
 #include <optional>

@@ -3,7 +3,7 @@
 // `polygon_count` (a box has 6, a quad 1) and carries a normal and a tangent.
 #pragma once
 #include "data_gen/scope_box.h"
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <array>
 #include <string>

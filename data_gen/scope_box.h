@@ -2,7 +2,7 @@
 // orthonormal `axes` (columns) and a `size` along them, as in CGA. Stored in
 // the model as a boxlod::Scope (center and half-extents).
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <Eigen/Core>
 

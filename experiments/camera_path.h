@@ -2,7 +2,7 @@
 // file and interpolated, or the built-in `orbit` and `street` paths of a
 // generated city. A path is sampled into one pose (eye + target) per frame.
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <string>
 #include <vector>

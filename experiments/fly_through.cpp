@@ -9,13 +9,13 @@
 #include "experiments/flip.h"
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
-#include "toolkit/boxes.h"
-#include "toolkit/face_budget.h"
-#include "toolkit/lod_builder.h"
-#include "toolkit/model_subtree.h"
-#include "toolkit/resident_drawables.h"
-#include "toolkit/statistics.h"
-#include "toolkit/strategy_text.h"
+#include "toolkit/lod/boxes.h"
+#include "toolkit/selection/face_budget.h"
+#include "toolkit/lod/lod_builder.h"
+#include "toolkit/model/model_subtree.h"
+#include "toolkit/drawing/resident_drawables.h"
+#include "toolkit/model/statistics.h"
+#include "toolkit/selection/strategy_text.h"
 
 #include <algorithm>
 #include <cmath>

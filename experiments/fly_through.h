@@ -7,12 +7,12 @@
 // compared with full detail (every building at level 0).
 #pragma once
 #include "experiments/camera_path.h"
-#include "toolkit/cost.h"
-#include "toolkit/drawable.h"
-#include "toolkit/level_modes.h"
-#include "toolkit/lod_selection.h"
-#include "toolkit/packed_drawable.h"
-#include "toolkit/parameters.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/lod/level_modes.h"
+#include "toolkit/selection/lod_selection.h"
+#include "toolkit/drawing/packed_drawable.h"
+#include "toolkit/lod/parameters.h"
 
 #include <cstdio>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "experiments/impostor.h"
 
 #include "base/parallel.h"
-#include "toolkit/drawable.h"
+#include "toolkit/drawing/drawable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,7 +102,7 @@ Model impostor_model(const ImpostorAtlas& atlas, const Eigen::Vector3f& eye, con
     const OrientedBoxFace& f = atlas.frames[std::size_t(i)];
     const float side = float(k * atlas.cell), u0 = float(i % k * atlas.cell) / side, v0 = float(i / k * atlas.cell) / side;
     const float u1 = u0 + float(atlas.cell) / side, v1 = v0 + float(atlas.cell) / side;
-    // TL, BL, BR, TR seen from the viewer, as a baked box face's quad (toolkit/lod_builder.cpp).
+    // TL, BL, BR, TR seen from the viewer, as a baked box face's quad (toolkit/lod/lod_builder.cpp).
     const Eigen::Vector3f t = f.tangent * f.half_width, b = f.bitangent * f.half_height;
     const Eigen::Vector3f corners[4] = {f.center - t + b, f.center - t - b, f.center + t - b, f.center + t + b};
     const Eigen::Vector2f uvs[4] = {{u0, v0}, {u0, v1}, {u1, v1}, {u1, v0}};

@@ -2,12 +2,12 @@
 // octahedral impostor. The model is captured orthographically from K x K
 // directions of a hemi-octahedral grid into one square atlas of K x K cells,
 // colour with coverage and a tangent-space normal map, each cell baked as a
-// box face is (toolkit/bake.h). It is drawn as one quad through the centre of
+// box face is (toolkit/lod/bake.h). It is drawn as one quad through the centre of
 // the model's bounding sphere, in the capture plane of the direction nearest
 // the camera, textured with that direction's cell.
 #pragma once
-#include "toolkit/bake.h"
-#include "toolkit/model.h"
+#include "toolkit/lod/bake.h"
+#include "toolkit/model/model.h"
 
 #include <vector>
 

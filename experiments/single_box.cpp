@@ -1,7 +1,7 @@
 #include "experiments/single_box.h"
 
-#include "toolkit/bake.h"
-#include "toolkit/boxes.h"
+#include "toolkit/lod/bake.h"
+#include "toolkit/lod/boxes.h"
 
 namespace boxlod {
 namespace {

@@ -3,7 +3,7 @@
 // level is the same box but with baked textures; this is what classic
 // simplification would end with.
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 namespace boxlod {
 

@@ -8,7 +8,7 @@
 #include "data_gen/samples.h"
 #include "experiments/flip.h"
 #include "experiments/impostor.h"
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 #include <algorithm>
 #include <charconv>
@@ -130,7 +130,7 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
     SweepConfig c;
     std::filesystem::path folder = std::filesystem::path(file).parent_path();
     using Setter = std::function<void(const Line&)>;
-    // The sweep's own keys; the LoD parameters are declared in toolkit/lod_parameters.cpp.
+    // The sweep's own keys; the LoD parameters are declared in toolkit/lod/lod_parameters.cpp.
     const std::map<std::string, Setter> setters = {
         {"models", [&](const Line& l) {
              for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));

@@ -2,13 +2,13 @@
 // lines (`#` comments, lists comma-separated) naming the models, level modes,
 // box kinds, interpolations, levels, views, distances, render modes, image
 // size, metrics, which images to keep, and any LoD parameter the sweep does
-// not vary (toolkit/lod_parameters.h). Paths are relative to the file.
+// not vary (toolkit/lod/lod_parameters.h). Paths are relative to the file.
 #pragma once
 #include "experiments/metric_registry.h"
 #include "renderer/renderer.h"
-#include "toolkit/boxes.h"
-#include "toolkit/level_modes.h"
-#include "toolkit/lod_parameters.h"
+#include "toolkit/lod/boxes.h"
+#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/lod_parameters.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "toolkit/assimp_input_check.h"
+#include "toolkit/formats/assimp_input_check.h"
 
 #include "test_support.h"
 

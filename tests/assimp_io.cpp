@@ -1,10 +1,10 @@
-#include "toolkit/assimp_io.h"
+#include "toolkit/formats/assimp_io.h"
 
 #include "base/input_error.h"
 #include "test_support.h"
-#include "toolkit/model_bytes.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/formats/model_bytes.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

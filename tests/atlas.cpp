@@ -1,4 +1,4 @@
-#include "toolkit/atlas.h"
+#include "toolkit/lod/atlas.h"
 
 #include <gtest/gtest.h>
 

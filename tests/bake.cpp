@@ -1,4 +1,4 @@
-#include "toolkit/bake.h"
+#include "toolkit/lod/bake.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

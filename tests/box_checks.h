@@ -1,6 +1,6 @@
 // Checks on oriented boxes shared by the box tests.
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "toolkit/box_fit.h"
+#include "toolkit/cgal/box_fit.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

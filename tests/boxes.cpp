@@ -1,8 +1,8 @@
-#include "toolkit/boxes.h"
+#include "toolkit/lod/boxes.h"
 
 #include "test_support.h"
-#include "toolkit/box_fit.h"
-#include "toolkit/model_io.h"
+#include "toolkit/cgal/box_fit.h"
+#include "toolkit/formats/model_io.h"
 
 #include "box_checks.h"
 

@@ -4,7 +4,9 @@
 # Usage: code_map.sh SOURCE_DIR
 set -u
 root=$1 doc=$1/docs/code.md
-layers="base renderer toolkit toolkit/commands data_gen data_gen/commands experiments experiments/commands"
+# Every layer folder and its sub-folders (toolkit's concept folders, commands/).
+layers=$(cd "$root" && find base renderer toolkit data_gen experiments -type d -not -path '*/grammars*' -not -path '*/workflow*' \
+         -not -path '*/configs*' -not -path '*/benchmarks*' | sort)
 bad=0 checked=0
 for layer in $layers; do
   for header in "$root/$layer"/*.h; do

@@ -1,9 +1,9 @@
-#include "toolkit/cost.h"
+#include "toolkit/model/cost.h"
 
 #include "lod_scene.h"
 #include "test_support.h"
-#include "toolkit/lod_builder.h"
-#include "toolkit/lod_export.h"
+#include "toolkit/lod/lod_builder.h"
+#include "toolkit/formats/lod_export.h"
 
 #include <gtest/gtest.h>
 

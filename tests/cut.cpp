@@ -1,4 +1,4 @@
-#include "toolkit/cut.h"
+#include "toolkit/lod/cut.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "toolkit/draw_calls.h"
+#include "toolkit/lod/draw_calls.h"
 
 #include <gtest/gtest.h>
 

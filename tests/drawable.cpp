@@ -1,4 +1,4 @@
-#include "toolkit/drawable.h"
+#include "toolkit/drawing/drawable.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "toolkit/error_greedy.h"
+#include "toolkit/lod/error_greedy.h"
 
-#include "toolkit/cut.h"
+#include "toolkit/lod/cut.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "toolkit/face_budget.h"
+#include "toolkit/selection/face_budget.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 
 #include "data_gen/city.h"
 #include "test_support.h"
-#include "toolkit/face_budget.h"
-#include "toolkit/strategy_text.h"
+#include "toolkit/selection/face_budget.h"
+#include "toolkit/selection/strategy_text.h"
 
 #include <gtest/gtest.h>
 

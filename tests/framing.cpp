@@ -1,4 +1,4 @@
-#include "toolkit/framing.h"
+#include "toolkit/model/framing.h"
 
 #include "lod_scene.h"
 

@@ -1,10 +1,10 @@
-#include "toolkit/gltf_io.h"
+#include "toolkit/formats/gltf_io.h"
 
 #include "base/input_error.h"
 #include "test_support.h"
-#include "toolkit/cost.h"
-#include "toolkit/gltf_extras.h"
-#include "toolkit/model_io.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/model_io.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -81,7 +81,7 @@ Model sample_model() {
 }
 
 // The sample model as its export writes it: what the untextured glass of the
-// windows never samples is left out (toolkit/vertex_layout.h).
+// windows never samples is left out (toolkit/model/vertex_layout.h).
 Model as_written(Model model) {
     for (int window : {2, 3}) {
         model.nodes[std::size_t(window)].primitives[0].uvs.clear();

@@ -1,4 +1,4 @@
-#include "toolkit/gltf_structure.h"
+#include "toolkit/formats/gltf_structure.h"
 
 #include "test_support.h"
 

@@ -1,11 +1,11 @@
-#include "toolkit/hybrid.h"
+#include "toolkit/lod/hybrid.h"
 
-#include "toolkit/boxes.h"
-#include "toolkit/cost.h"
-#include "toolkit/kept_subtrees.h"
-#include "toolkit/level_budgets.h"
-#include "toolkit/lod_builder.h"
-#include "toolkit/vertex_layout.h"
+#include "toolkit/lod/boxes.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/lod/kept_subtrees.h"
+#include "toolkit/lod/level_budgets.h"
+#include "toolkit/lod/lod_builder.h"
+#include "toolkit/model/vertex_layout.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "experiments/impostor.h"
 
 #include "lod_scene.h"
-#include "toolkit/drawable.h"
+#include "toolkit/drawing/drawable.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "toolkit/kept_subtrees.h"
+#include "toolkit/lod/kept_subtrees.h"
 
-#include "toolkit/cost.h"
-#include "toolkit/cut.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/lod/cut.h"
 
 #include <gtest/gtest.h>
 

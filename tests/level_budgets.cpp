@@ -1,4 +1,4 @@
-#include "toolkit/level_budgets.h"
+#include "toolkit/lod/level_budgets.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "toolkit/level_modes.h"
+#include "toolkit/lod/level_modes.h"
 
 #include "base/input_error.h"
 #include "test_support.h"
-#include "toolkit/boxes.h"
-#include "toolkit/cut.h"
-#include "toolkit/model_io.h"
+#include "toolkit/lod/boxes.h"
+#include "toolkit/lod/cut.h"
+#include "toolkit/formats/model_io.h"
 
 #include <gtest/gtest.h>
 

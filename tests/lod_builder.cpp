@@ -1,14 +1,14 @@
-#include "toolkit/lod_builder.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include "base/input_error.h"
 #include "golden.h"
 #include "lod_scene.h"
-#include "toolkit/drawable.h"
-#include "toolkit/error_greedy.h"
-#include "toolkit/level_sessions.h"
-#include "toolkit/lod_export.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/lod/error_greedy.h"
+#include "toolkit/lod/level_sessions.h"
+#include "toolkit/formats/lod_export.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "toolkit/lod_parameters.h"
+#include "toolkit/lod/lod_parameters.h"
 
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 #include <gtest/gtest.h>
 

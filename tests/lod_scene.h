@@ -1,7 +1,7 @@
 // A small hand-built building for LoD tests: a ground plate, a block with
 // textured walls, a gable roof and window panes that stick out of the wall.
 #pragma once
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 namespace boxlod::test {
 

@@ -1,4 +1,4 @@
-#include "toolkit/lod_selection.h"
+#include "toolkit/selection/lod_selection.h"
 
 #include "base/input_error.h"
 

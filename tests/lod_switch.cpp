@@ -1,4 +1,4 @@
-#include "toolkit/lod_switch.h"
+#include "toolkit/selection/lod_switch.h"
 
 #include <gtest/gtest.h>
 

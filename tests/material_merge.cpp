@@ -1,4 +1,4 @@
-#include "toolkit/material_merge.h"
+#include "toolkit/model/material_merge.h"
 
 #include <gtest/gtest.h>
 

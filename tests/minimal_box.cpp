@@ -1,7 +1,7 @@
-#include "toolkit/minimal_box.h"
+#include "toolkit/cgal/minimal_box.h"
 
-#include "toolkit/box_fit.h"
-#include "toolkit/boxes.h"
+#include "toolkit/cgal/box_fit.h"
+#include "toolkit/lod/boxes.h"
 
 #include "box_checks.h"
 

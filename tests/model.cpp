@@ -1,4 +1,4 @@
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 #include "base/input_error.h"
 

@@ -1,4 +1,4 @@
-#include "toolkit/model_bytes.h"
+#include "toolkit/formats/model_bytes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "toolkit/model_subtree.h"
+#include "toolkit/model/model_subtree.h"
 
 #include <gtest/gtest.h>
 

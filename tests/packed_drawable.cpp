@@ -1,7 +1,7 @@
-#include "toolkit/packed_drawable.h"
+#include "toolkit/drawing/packed_drawable.h"
 
 #include "lod_scene.h"
-#include "toolkit/lod_builder.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 #include "base/input_error.h"
 #include "test_support.h"

@@ -1,4 +1,4 @@
-#include "toolkit/resident_drawables.h"
+#include "toolkit/drawing/resident_drawables.h"
 
 #include "lod_scene.h"
 

@@ -3,9 +3,9 @@
 #include "base/input_error.h"
 #include "data_gen/interpreter.h"
 #include "golden.h"
-#include "toolkit/drawable.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "toolkit/simplification.h"
+#include "toolkit/lod/simplification.h"
 
 #include "base/input_error.h"
 #include "lod_scene.h"
 #include "test_support.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "experiments/single_box.h"
 
 #include "lod_scene.h"
-#include "toolkit/statistics.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

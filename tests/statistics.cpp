@@ -1,4 +1,4 @@
-#include "toolkit/statistics.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

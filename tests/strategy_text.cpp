@@ -1,4 +1,4 @@
-#include "toolkit/strategy_text.h"
+#include "toolkit/selection/strategy_text.h"
 
 #include "base/input_error.h"
 

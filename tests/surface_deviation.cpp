@@ -1,4 +1,4 @@
-#include "toolkit/surface_deviation.h"
+#include "toolkit/lod/surface_deviation.h"
 
 #include "lod_scene.h"
 

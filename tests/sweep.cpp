@@ -1,12 +1,12 @@
 #include "experiments/sweep.h"
 
 #include "base/input_error.h"
-#include "toolkit/simplification.h"
+#include "toolkit/lod/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
-#include "toolkit/cost.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
 

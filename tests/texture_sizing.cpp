@@ -1,4 +1,4 @@
-#include "toolkit/texture_sizing.h"
+#include "toolkit/lod/texture_sizing.h"
 
 #include <gtest/gtest.h>
 

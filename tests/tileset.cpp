@@ -1,4 +1,4 @@
-#include "toolkit/tileset.h"
+#include "toolkit/formats/tileset.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

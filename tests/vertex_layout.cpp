@@ -1,4 +1,4 @@
-#include "toolkit/vertex_layout.h"
+#include "toolkit/model/vertex_layout.h"
 
 #include <gtest/gtest.h>
 

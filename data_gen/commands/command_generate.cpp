@@ -5,8 +5,8 @@
 #include "data_gen/grammar_parser.h"
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <charconv>
 #include <cmath>

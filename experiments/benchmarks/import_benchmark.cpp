@@ -1,10 +1,10 @@
 // Reading a model through assimp: in this process, against the isolated read
 // every command does (a child process under limits that hands the scene back,
-// base/child_process.h, toolkit/model_bytes.h), on the FZK-Haus IFC (Debian's
+// base/child_process.h, toolkit/formats/model_bytes.h), on the FZK-Haus IFC (Debian's
 // assimp-testmodels). Issue 47's target: isolation under 10 % of the import.
 //   build/experiments/import_benchmark
-#include "toolkit/assimp_io.h"
-#include "toolkit/model_bytes.h"
+#include "toolkit/formats/assimp_io.h"
+#include "toolkit/formats/model_bytes.h"
 
 #include <benchmark/benchmark.h>
 

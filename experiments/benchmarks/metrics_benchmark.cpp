@@ -6,9 +6,9 @@
 #include "experiments/flip.h"
 #include "experiments/image_metrics.h"
 #include "experiments/silhouette.h"
-#include "toolkit/drawable.h"
-#include "toolkit/framing.h"
-#include "toolkit/model_io.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/formats/model_io.h"
 
 #include <benchmark/benchmark.h>
 

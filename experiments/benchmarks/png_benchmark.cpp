@@ -8,7 +8,7 @@
 // Counters: encoded MB and raw MB encoded per second.
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/lod_builder.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include <benchmark/benchmark.h>
 

@@ -8,9 +8,9 @@
 #include "benchmark_scene.h"
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/drawable.h"
-#include "toolkit/framing.h"
-#include "toolkit/model_io.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/formats/model_io.h"
 
 #include <benchmark/benchmark.h>
 

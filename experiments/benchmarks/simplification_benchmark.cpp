@@ -13,8 +13,8 @@
 // (boxlod simplify's default).
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/simplification.h"
-#include "toolkit/statistics.h"
+#include "toolkit/lod/simplification.h"
+#include "toolkit/model/statistics.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>

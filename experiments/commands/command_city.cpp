@@ -8,8 +8,8 @@
 #include "experiments/flip.h"
 #include "experiments/fly_through.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/parameters.h"
-#include "toolkit/strategy_text.h"
+#include "toolkit/lod/parameters.h"
+#include "toolkit/selection/strategy_text.h"
 
 #include <cmath>
 #include <cstdio>

@@ -4,10 +4,10 @@
 #include "base/timing.h"
 #include "experiments/commands/commands.h"
 #include "toolkit/commands/commands.h"
-#include "toolkit/material_merge.h"
-#include "toolkit/simplification.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/model/material_merge.h"
+#include "toolkit/lod/simplification.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
-// The checks made before assimp reads a file (toolkit/assimp_input_check.h):
+// The checks made before assimp reads a file (toolkit/formats/assimp_input_check.h):
 // PLY and OFF headers, STEP/IFC references. The first byte picks the format.
 #include "fuzz_target.h"
-#include "toolkit/assimp_input_check.h"
+#include "toolkit/formats/assimp_input_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;

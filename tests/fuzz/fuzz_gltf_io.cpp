@@ -1,6 +1,6 @@
-// glTF and glb files (toolkit/gltf_io.h): a glb when the bytes start with its magic.
+// glTF and glb files (toolkit/formats/gltf_io.h): a glb when the bytes start with its magic.
 #include "fuzz_target.h"
-#include "toolkit/gltf_io.h"
+#include "toolkit/formats/gltf_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     std::string bytes = boxlod::fuzz::text(data, size);

@@ -1,6 +1,6 @@
-// Parameter files (toolkit/parameters.h).
+// Parameter files (toolkit/lod/parameters.h).
 #include "fuzz_target.h"
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return boxlod::fuzz::expect_only_input_errors([&] { boxlod::parse_parameters(boxlod::fuzz::text(data, size), "fuzz.txt"); });

@@ -1,6 +1,6 @@
-// Selection strategies as typed on the command line (toolkit/strategy_text.h).
+// Selection strategies as typed on the command line (toolkit/selection/strategy_text.h).
 #include "fuzz_target.h"
-#include "toolkit/strategy_text.h"
+#include "toolkit/selection/strategy_text.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return boxlod::fuzz::expect_only_input_errors([&] {

@@ -6,14 +6,14 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/viewer_pages.h"
-#include "toolkit/cost.h"
-#include "toolkit/draw_calls.h"
-#include "toolkit/gltf_io.h"
-#include "toolkit/level_sessions.h"
-#include "toolkit/lod_export.h"
-#include "toolkit/lod_switch.h"
-#include "toolkit/model_io.h"
-#include "toolkit/parameters.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/lod/draw_calls.h"
+#include "toolkit/formats/gltf_io.h"
+#include "toolkit/lod/level_sessions.h"
+#include "toolkit/formats/lod_export.h"
+#include "toolkit/selection/lod_switch.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/lod/parameters.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -53,7 +53,7 @@ struct ChainCost {
 };
 
 // A level's stdout block: its name, sizing distance, where engines switch to it
-// (levels >= 1 of a chain sized per level: toolkit/lod_switch.h), its statistics.
+// (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
 KeyValues level_report(const std::string& name, const Lod& lod, const LodSession& session, const Bounds& bounds,
                        bool switches) {
     KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.parameters.distance)};

@@ -1,7 +1,7 @@
 #include "base/atomic_write.h"
 #include "toolkit/commands/commands.h"
-#include "toolkit/material_merge.h"
-#include "toolkit/model_io.h"
+#include "toolkit/model/material_merge.h"
+#include "toolkit/formats/model_io.h"
 
 #include <cstdio>
 

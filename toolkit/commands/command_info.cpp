@@ -1,6 +1,6 @@
 #include "toolkit/commands/commands.h"
-#include "toolkit/model_io.h"
-#include "toolkit/statistics.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
 
 #include <cstdio>
 

@@ -1,13 +1,13 @@
 #include "base/key_values.h"
 #include "base/parallel.h"
 #include "base/timing.h"
-#include "toolkit/boxes.h"
+#include "toolkit/lod/boxes.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/level_modes.h"
-#include "toolkit/lod_builder.h"
-#include "toolkit/model_io.h"
-#include "toolkit/parameters.h"
+#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/lod_builder.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/lod/parameters.h"
 
 #include <cstdio>
 

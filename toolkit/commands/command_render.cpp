@@ -4,8 +4,8 @@
 #include "renderer/overlays.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/render_options.h"
-#include "toolkit/drawable.h"
-#include "toolkit/model_io.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/formats/model_io.h"
 
 #include <cstdio>
 

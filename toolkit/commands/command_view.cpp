@@ -7,8 +7,8 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/render_options.h"
 #include "toolkit/commands/viewer_state.h"
-#include "toolkit/lod_export.h"
-#include "toolkit/model_io.h"
+#include "toolkit/formats/lod_export.h"
+#include "toolkit/formats/model_io.h"
 
 #include <SDL.h>
 

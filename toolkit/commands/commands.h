@@ -14,13 +14,13 @@ Subcommand tiles_subcommand();
 Subcommand view_subcommand();
 
 // For the commands that write a model (convert, simplify), which merge equal
-// materials and drop unused ones (toolkit/material_merge.h) unless told not to.
+// materials and drop unused ones (toolkit/model/material_merge.h) unless told not to.
 inline Option keep_materials_option() {
     return {"keep-materials", "", "keep every material as read, unused ones and an importer's copies too"};
 }
 
 // For the commands that write levels for engines (build --chain, tiles): a
-// level is one node per material (toolkit/draw_calls.h) unless told not to.
+// level is one node per material (toolkit/lod/draw_calls.h) unless told not to.
 inline Option keep_hierarchy_option() {
     return {"keep-hierarchy", "",
             "keep one node per kept part and box in each level, with its scope and rule in extras, instead of one node per "

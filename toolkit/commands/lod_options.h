@@ -1,10 +1,10 @@
 // The LoD options `build`, `view`, `levels`, `render` and `city` share, made
-// from the parameters' declarations (toolkit/lod_parameters.h), and the
+// from the parameters' declarations (toolkit/lod/lod_parameters.h), and the
 // parameters they give: a parameter file first (MODEL|PARAMS.txt, or --params
 // for parameters only), then every option given on the command line on top.
 #pragma once
 #include "base/command_line.h"
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 #include <string>
 #include <vector>

@@ -4,9 +4,9 @@
 #include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "renderer/image.h"
-#include "toolkit/framing.h"
+#include "toolkit/model/framing.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/parameters.h"
+#include "toolkit/lod/parameters.h"
 
 #include <Eigen/Geometry>
 #include <charconv>

@@ -3,7 +3,7 @@
 #pragma once
 #include "base/command_line.h"
 #include "renderer/renderer.h"
-#include "toolkit/model.h"
+#include "toolkit/model/model.h"
 
 namespace boxlod {
 

@@ -1,8 +1,8 @@
 #include "toolkit/commands/viewer_state.h"
 
 #include "base/input_error.h"
-#include "toolkit/framing.h"
-#include "toolkit/statistics.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/model/statistics.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

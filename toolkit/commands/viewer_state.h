@@ -4,8 +4,8 @@
 // a replay file does the same, so a scripted session renders exactly what a
 // person would see.
 #pragma once
-#include "toolkit/drawable.h"
-#include "toolkit/lod_builder.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include <memory>
 #include <string>

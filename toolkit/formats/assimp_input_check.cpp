@@ -1,0 +1,262 @@
+#include "toolkit/formats/assimp_input_check.h"
+
+#include "base/input_error.h"
+
+#include <charconv>
+#include <cstdint>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+namespace boxlod {
+namespace {
+
+[[noreturn]] void refuse_count(const std::string& file, const std::string& place, std::size_t count, std::size_t bytes) {
+    throw_input_error(file, place, "claims " + std::to_string(count) + " entries, more than the file's " + std::to_string(bytes) +
+                                       " bytes can hold");
+}
+
+// `count` entries of at least `entry_bytes` each within `available` bytes, without overflow.
+void check_fits(std::size_t count, std::size_t entry_bytes, std::size_t& available, const std::string& file,
+                const std::string& place) {
+    std::size_t needed = 0;
+    if (!checked_multiply(count, entry_bytes, needed) || needed > available) refuse_count(file, place, count, available);
+    available -= needed;
+}
+
+std::size_t parse_count(const std::string& word, const std::string& file, const std::string& place) {
+    std::size_t value = 0;
+    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size()) throw_input_error(file, place, "expected a count, got '" + word + "'");
+    return value;
+}
+
+// PLY (Turk 1994): `element NAME COUNT` lines, each followed by its properties.
+// An ASCII entry needs at least two bytes per property ("0 "); a binary one the
+// size of its scalar properties and of each list's count.
+void check_ply(std::string_view bytes, const std::string& file) {
+    std::size_t header_end = bytes.find("end_header");
+    if (header_end == std::string_view::npos) return;  // assimp reports it
+    std::istringstream header{std::string(bytes.substr(0, header_end))};
+    std::size_t body = bytes.size() - std::min(bytes.size(), header_end + 11);
+    bool ascii = true;
+    struct Element { std::string name; std::size_t count = 0, entry_bytes = 0; int line = 0; };
+    std::vector<Element> elements;
+    auto type_bytes = [](const std::string& type) -> std::size_t {
+        if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+        if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+        if (type == "double" || type == "float64") return 8;
+        return 4;
+    };
+    std::string line;
+    for (int number = 1; std::getline(header, line); ++number) {
+        std::istringstream words(line);
+        std::string keyword, a, b, c;
+        words >> keyword >> a >> b >> c;
+        std::string place = "line " + std::to_string(number);
+        if (keyword == "format") ascii = a == "ascii";
+        if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number});
+        if (keyword == "property" && !elements.empty())
+            elements.back().entry_bytes += ascii ? 2 : a == "list" ? type_bytes(b) : type_bytes(a);
+    }
+    for (const Element& element : elements)
+        check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body,
+                   file, "line " + std::to_string(element.line) + ": element '" + element.name + "'");
+}
+
+// OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
+// line per face "n i1 .. in". A vertex needs at least "0 0 0\n" (6 bytes), a
+// face "0\n" (2 bytes); every index must name a vertex (assimp would clamp it).
+void check_off(std::string_view bytes, const std::string& file) {
+    std::istringstream in{std::string(bytes)};
+    std::string line;
+    int number = 0;
+    auto next_line = [&]() {
+        while (std::getline(in, line)) {
+            ++number;
+            std::size_t start = line.find_first_not_of(" \t\r");
+            if (start != std::string::npos && line[start] != '#') return true;
+        }
+        return false;
+    };
+    if (!next_line() || line.find("OFF") == std::string::npos || line.find("BINARY") != std::string::npos) return;
+    // The counts follow "OFF" on its line or on the next.
+    std::istringstream header(line.substr(line.find("OFF") + 3));
+    std::string vertices_text, faces_text;
+    if (!(header >> vertices_text)) {
+        if (!next_line()) return;
+        header = std::istringstream(line);
+        header >> vertices_text;
+    }
+    if (!(header >> faces_text)) return;
+    const std::string place = "line " + std::to_string(number);
+    std::size_t vertices = parse_count(vertices_text, file, place), faces = parse_count(faces_text, file, place);
+    std::size_t available = bytes.size();
+    check_fits(vertices, 6, available, file, place + ": vertex count");
+    check_fits(faces, 2, available, file, place + ": face count");
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (!next_line()) return;  // assimp reports a short file
+    for (std::size_t f = 0; f < faces && next_line(); ++f) {
+        std::istringstream face(line);
+        std::size_t corners = 0;
+        long long index = 0;  // signed: a "-1" is reported as itself, not wrapped around
+        face >> corners;
+        for (std::size_t k = 0; k < corners && face >> index; ++k)
+            if (index < 0 || std::size_t(index) >= vertices)
+                throw_input_error(file, "line " + std::to_string(number), "vertex index " + std::to_string(index) + " out of range (" +
+                                                                          std::to_string(vertices) + " vertices)");
+    }
+}
+
+// XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
+// (assimp's readers recurse per element). Comments, declarations and quoted
+// attribute values are skipped.
+void check_xml_depth(std::string_view bytes, const std::string& file) {
+    int depth = 0;
+    for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
+        if (bytes.substr(i, 4) == "<!--") {
+            i = bytes.find("-->", i);
+            if (i == std::string_view::npos) return;
+            continue;
+        }
+        char next = i + 1 < bytes.size() ? bytes[i + 1] : '\0';
+        if (next == '/') {
+            --depth;
+            continue;
+        }
+        std::size_t end = i + 1;
+        for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
+            if (bytes[end] == '"' || bytes[end] == '\'') quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
+        if (end >= bytes.size()) return;
+        bool opens = next != '!' && next != '?' && bytes[end - 1] != '/';
+        if (opens && ++depth > max_nesting_depth)
+            throw_input_error(file, "byte " + std::to_string(i), "XML elements " + nesting_message());
+        i = end;
+    }
+}
+
+// ISO 10303-21 instances as a graph: each instance's references, and for the
+// IFC relationships assimp walks as a tree, the relating object's children.
+struct StepGraph {
+    std::vector<std::uint64_t> ids;
+    std::vector<std::vector<std::uint32_t>> references, children;
+};
+
+// Parses `#N = TYPE(attributes);` instances, strings and comments skipped.
+StepGraph read_step_graph(std::string_view bytes) {
+    StepGraph graph;
+    std::unordered_map<std::uint64_t, std::uint32_t> index;
+    auto node = [&](std::uint64_t id) {
+        auto [it, added] = index.emplace(id, std::uint32_t(graph.ids.size()));
+        if (added) graph.ids.push_back(id), graph.references.emplace_back(), graph.children.emplace_back();
+        return it->second;
+    };
+    struct Relationship { const char* type; int relating, related; };  // attribute positions (IFC2x3 and IFC4)
+    static const Relationship relationships[] = {{"IFCRELAGGREGATES", 4, 5}, {"IFCRELNESTS", 4, 5},
+                                                 {"IFCRELCONTAINEDINSPATIALSTRUCTURE", 5, 4},
+                                                 {"IFCRELVOIDSELEMENT", 4, 5}, {"IFCRELFILLSELEMENT", 4, 5}};
+    std::size_t i = bytes.find("DATA;");
+    if (i == std::string_view::npos) return graph;
+    auto number_at = [&](std::size_t& at) {
+        std::uint64_t value = 0;
+        auto [end, error] = std::from_chars(bytes.data() + at, bytes.data() + bytes.size(), value);
+        at = std::size_t(end - bytes.data());
+        return error == std::errc() ? value : std::uint64_t(0);
+    };
+    while (i < bytes.size()) {
+        std::size_t hash = bytes.find('#', i);
+        if (hash == std::string_view::npos) break;
+        i = hash + 1;
+        std::uint32_t instance = node(number_at(i));
+        while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '=')) ++i;
+        std::size_t type_end = bytes.find('(', i);
+        if (type_end == std::string_view::npos) break;
+        std::string_view type = bytes.substr(i, type_end - i);
+        const Relationship* relationship = nullptr;
+        for (const Relationship& r : relationships)
+            if (type == r.type) relationship = &r;
+        std::vector<std::uint32_t> relating, related;
+        int depth = 0, attribute = 0;
+        for (i = type_end; i < bytes.size() && bytes[i] != ';'; ++i) {
+            char c = bytes[i];
+            if (c == '\'') {  // a string; '' is a quote inside it
+                for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
+                    if (bytes[i] == '\'') ++i;
+            } else if (c == '(') {
+                ++depth;
+            } else if (c == ')') {
+                --depth;
+            } else if (c == ',' && depth == 1) {
+                ++attribute;
+            } else if (c == '#') {
+                std::size_t at = i + 1;
+                std::uint32_t target = node(number_at(at));
+                i = at - 1;
+                graph.references[instance].push_back(target);
+                if (relationship && attribute == relationship->relating) relating.push_back(target);
+                if (relationship && attribute == relationship->related) related.push_back(target);
+            }
+        }
+        for (std::uint32_t parent : relating)
+            graph.children[parent].insert(graph.children[parent].end(), related.begin(), related.end());
+    }
+    return graph;
+}
+
+// Depth-first over `edges` with an explicit stack: a cycle, or a path longer
+// than max_nesting_depth, is refused at the instance where it is found.
+void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::vector<std::uint32_t>>& edges,
+                               const std::string& what, const std::string& file) {
+    enum State : std::uint8_t { unseen, open, done };
+    std::vector<State> state(edges.size(), unseen);
+    std::vector<int> height(edges.size(), 0);
+    struct Frame { std::uint32_t node; std::size_t next; };
+    for (std::uint32_t root = 0; root < edges.size(); ++root) {
+        if (state[root] != unseen) continue;
+        std::vector<Frame> stack{{root, 0}};
+        state[root] = open;
+        while (!stack.empty()) {
+            Frame& frame = stack.back();
+            if (frame.next < edges[frame.node].size()) {
+                std::uint32_t child = edges[frame.node][frame.next++];
+                std::string place = std::to_string(graph.ids[child]).insert(0, 1, '#');  // not "#" + ...: GCC 12's false -Wrestrict
+                if (state[child] == open) throw_input_error(file, place, what + " form a cycle");
+                if (state[child] == unseen) {
+                    if (stack.size() >= std::size_t(max_nesting_depth))
+                        throw_input_error(file, place, what + " " + nesting_message());
+                    state[child] = open;
+                    stack.push_back({child, 0});
+                }
+                continue;
+            }
+            int h = 0;
+            for (std::uint32_t child : edges[frame.node]) h = std::max(h, height[child] + 1);
+            if (h > max_nesting_depth)
+                throw_input_error(file, "#" + std::to_string(graph.ids[frame.node]), what + " " + nesting_message());
+            height[frame.node] = h;
+            state[frame.node] = done;
+            stack.pop_back();
+        }
+    }
+}
+
+void check_step(std::string_view bytes, const std::string& file) {
+    std::size_t end = bytes.find_last_not_of(" \t\r\n");
+    constexpr std::string_view trailer = "END-ISO-10303-21;";
+    if (end == std::string_view::npos || end + 1 < trailer.size() || bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
+        throw_input_error(file, "", "does not end with 'END-ISO-10303-21;' (truncated file?)");
+    StepGraph graph = read_step_graph(bytes);
+    check_acyclic_and_shallow(graph, graph.references, "references", file);
+    check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file);
+}
+
+}  // namespace
+
+void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
+    if (extension == ".ply") check_ply(bytes, file);
+    if (extension == ".off") check_off(bytes, file);
+    if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
+    if (extension == ".ifc" || extension == ".stp" || extension == ".step") check_step(bytes, file);
+}
+
+}  // namespace boxlod

@@ -1,0 +1,193 @@
+#include "toolkit/formats/assimp_io.h"
+
+#include "base/child_process.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "toolkit/formats/assimp_input_check.h"
+#include "toolkit/formats/model_bytes.h"
+
+#include <Eigen/LU>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+
+Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
+    Eigen::Matrix4d out;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) out(r, c) = m[r][c];
+    return out;
+}
+
+// Polygons are kept as the file stores them for counting, and fanned into
+// triangles (assimp's own triangulation would hide the polygon count).
+Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
+    Primitive out;
+    Eigen::Matrix3d linear = world.topLeftCorner<3, 3>();
+    Eigen::Matrix3d normal_matrix = linear.inverse().transpose();
+    bool mirrored = linear.determinant() < 0;
+    for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+        const aiVector3D& p = mesh.mVertices[i];
+        out.positions.push_back((linear * Eigen::Vector3d(p.x, p.y, p.z) + world.topRightCorner<3, 1>()).cast<float>());
+        if (mesh.mNormals) {
+            const aiVector3D& n = mesh.mNormals[i];
+            Eigen::Vector3d normal = normal_matrix * Eigen::Vector3d(n.x, n.y, n.z);
+            // Some exporters leave zero normals; keep them valid rather than NaN.
+            out.normals.push_back(normal.norm() > 0 ? normal.normalized().cast<float>() : Eigen::Vector3f(0, 0, 1));
+        }
+        if (mesh.mTextureCoords[0]) out.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices < 3) continue;  // points and lines
+        ++out.polygon_count;
+        for (unsigned k = 2; k < face.mNumIndices; ++k) {
+            std::uint32_t a = face.mIndices[0], b = face.mIndices[k - 1], c = face.mIndices[k];
+            if (mirrored) std::swap(b, c);
+            out.indices.insert(out.indices.end(), {a, b, c});
+        }
+    }
+    out.material = int(mesh.mMaterialIndex);
+    return out;
+}
+
+// Texture names in FBX/3DS files often differ from the files in letter case
+// (written on Windows): fall back to a case-insensitive match in the folder.
+fs::path find_file(const fs::path& directory, const std::string& name) {
+    fs::path exact = directory / name;
+    std::error_code error;
+    if (fs::exists(exact, error)) return exact;
+    auto lower = [](std::string s) {
+        for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    fs::path wanted = exact.filename();
+    for (const auto& entry : fs::directory_iterator(exact.parent_path(), error))
+        if (lower(entry.path().filename().string()) == lower(wanted.string())) return entry.path();
+    return exact;  // reading it gives the error that names the missing file
+}
+
+int load_texture(Model& model, const aiScene& scene, const aiMaterial& material, aiTextureType type,
+                 const fs::path& directory) {
+    aiString name;
+    if (material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
+    std::string file = name.C_Str();
+    Texture texture;
+    texture.name = fs::path(file).filename().string();
+    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
+        if (embedded->mHeight == 0) {
+            texture.image = decode_image({reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
+        } else {
+            texture.image = Image8(int(embedded->mWidth), int(embedded->mHeight), 4);
+            for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
+                const aiTexel& t = embedded->pcData[i];
+                std::uint8_t* p = &texture.image.pixels[i * 4];
+                p[0] = t.r, p[1] = t.g, p[2] = t.b, p[3] = t.a;
+            }
+        }
+    } else {
+        texture.image = read_image(find_file(directory, file).string());
+    }
+    model.textures.push_back(std::move(texture));
+    return int(model.textures.size()) - 1;
+}
+
+// assimp allocates whatever a header claims: while it reads, the address
+// space may grow by this much only, so a claim of 10^9 vertices in a 170-byte
+// file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine.
+std::size_t address_space_allowance(std::size_t file_bytes) { return (std::size_t(2) << 30) + 256 * file_bytes; }
+
+}  // namespace
+
+Model import_with_assimp(const std::string& path) {
+    const std::size_t file_bytes = check_input_file(path, "model file");
+    // A minute, and a second more per megabyte (the FZK-Haus's 4 MB: 0.4 s).
+    const ChildLimits limits{address_space_allowance(file_bytes), 60 + double(file_bytes) / 1e6};
+    return model_from_bytes(
+        run_in_child([&] { return model_bytes(import_with_assimp_in_process(path)); }, limits, path, "assimp's importer"));
+}
+
+Model import_with_assimp_in_process(const std::string& path) {
+    std::string bytes = read_input_file(path, "model file");
+    std::string extension = fs::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    check_assimp_input(bytes, extension, path);
+    Assimp::Importer importer;
+    // No triangulation here (see convert_mesh); validation rejects inconsistent data.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);  // from the path: OBJ and others read files beside it
+    if (!scene || !scene->mRootNode) {
+        std::string reason = importer.GetErrorString();
+        if (reason.find("bad_alloc") != std::string::npos)
+            reason = "it would need more than " + std::to_string(address_space_allowance(bytes.size()) >> 20) +
+                     " MiB for a " + std::to_string(bytes.size()) + "-byte file (counts in the file too large?)";
+        else if (reason.starts_with("std::"))  // a bare C++ exception from deep in a reader
+            reason = "malformed " + extension.substr(1) + " file (" + reason + ")";
+        throw_input_error(path, "", reason.empty() ? "cannot read model" : "cannot read model: " + reason);
+    }
+    Model model;
+    model.source = path;
+    fs::path directory = fs::path(path).parent_path();
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
+        const aiMaterial& in = *scene->mMaterials[i];
+        Material material;
+        material.name = in.GetName().C_Str();
+        aiColor4D color;
+        if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
+            material.base_color = {color.r, color.g, color.b, color.a};
+        float opacity;
+        if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
+        if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
+        // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
+        aiColor3D specular;
+        if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
+            material.specular_color = {specular.r, specular.g, specular.b};
+            material.specular_glossiness = true;
+        }
+        float shininess;
+        if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
+        int two_sided;
+        if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) material.double_sided = two_sided != 0;
+        material.base_color_texture = load_texture(model, *scene, in, aiTextureType_BASE_COLOR, directory);
+        if (material.base_color_texture < 0)
+            material.base_color_texture = load_texture(model, *scene, in, aiTextureType_DIFFUSE, directory);
+        material.normal_texture = load_texture(model, *scene, in, aiTextureType_NORMALS, directory);
+        material.specular_texture = load_texture(model, *scene, in, aiTextureType_SPECULAR, directory);
+        if (material.specular_texture >= 0) material.specular_glossiness = true;
+        model.materials.push_back(material);
+    }
+
+    std::vector<int> mesh_users(scene->mNumMeshes, 0);
+    struct Visit { const aiNode* node; int parent; Eigen::Matrix4d parent_world; };
+    std::vector<Visit> stack{{scene->mRootNode, -1, Eigen::Matrix4d::Identity()}};
+    std::vector<std::pair<int, unsigned>> node_meshes;  // (boxlod node, assimp mesh)
+    while (!stack.empty()) {
+        Visit visit = stack.back();
+        stack.pop_back();
+        Eigen::Matrix4d world = visit.parent_world * to_eigen(visit.node->mTransformation);
+        int index = add_node(model, visit.parent, visit.node->mName.C_Str());
+        for (unsigned m = 0; m < visit.node->mNumMeshes; ++m) {
+            unsigned mesh = visit.node->mMeshes[m];
+            ++mesh_users[mesh];
+            node_meshes.emplace_back(index, mesh);
+            Primitive primitive = convert_mesh(*scene->mMeshes[mesh], world);
+            if (!primitive.indices.empty()) model.nodes[index].primitives.push_back(std::move(primitive));
+        }
+        for (unsigned c = visit.node->mNumChildren; c-- > 0;) stack.push_back({visit.node->mChildren[c], index, world});
+    }
+    for (auto [node, mesh] : node_meshes)
+        if (mesh_users[mesh] > 1) {
+            std::string name = scene->mMeshes[mesh]->mName.C_Str();
+            model.nodes[node].instance_of = name.empty() ? "mesh " + std::to_string(mesh) : name;
+        }
+    validate_model(model);
+    return model;
+}
+
+}  // namespace boxlod

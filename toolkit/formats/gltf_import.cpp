@@ -1,0 +1,441 @@
+// glTF import (toolkit/formats/gltf_io.h): checked structure first, then tinygltf, then
+// every index, count and transform checked as the model is built.
+#include "toolkit/formats/gltf_io.h"
+
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "base/key_values.h"
+#include "base/parallel.h"
+#include "renderer/image.h"
+#include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/gltf_structure.h"
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Reader {
+    const tinygltf::Model& gltf;
+    const std::string& file;
+
+    [[noreturn]] void fail(const std::string& place, const std::string& what) const {
+        throw_input_error(file, place, what);
+    }
+
+    // Bytes of accessor `index`, checked against its buffer view and buffer.
+    struct View {
+        const unsigned char* data;
+        std::size_t stride, count;
+        int component_type, components;
+        bool normalized;
+    };
+    View view(int index, const std::string& place) const {
+        if (index < 0 || index >= int(gltf.accessors.size()))
+            fail(place, "accessor " + std::to_string(index) + " out of range");
+        const tinygltf::Accessor& accessor = gltf.accessors[index];
+        std::string where = place + " accessor " + std::to_string(index);
+        if (accessor.sparse.isSparse) fail(where, "sparse accessors are not supported");
+        if (accessor.bufferView < 0 || accessor.bufferView >= int(gltf.bufferViews.size()))
+            fail(where, "buffer view out of range");
+        const tinygltf::BufferView& buffer_view = gltf.bufferViews[accessor.bufferView];
+        if (buffer_view.buffer < 0 || buffer_view.buffer >= int(gltf.buffers.size())) fail(where, "buffer out of range");
+        const tinygltf::Buffer& buffer = gltf.buffers[buffer_view.buffer];
+        int component_size = tinygltf::GetComponentSizeInBytes(accessor.componentType);
+        int components = tinygltf::GetNumComponentsInType(accessor.type);
+        if (component_size <= 0 || components <= 0) fail(where, "unknown component or element type");
+        std::size_t element = std::size_t(component_size) * components;
+        std::size_t stride = buffer_view.byteStride ? buffer_view.byteStride : element;
+        if (stride < element) fail(where, "byteStride is smaller than an element");
+        // Every size here comes from the file: checked against overflow before it is added.
+        std::size_t needed = 0;
+        if (accessor.count > 0 && (!checked_multiply(accessor.count - 1, stride, needed) || needed > SIZE_MAX - element))
+            fail(where, "count " + std::to_string(accessor.count) + " is larger than any buffer");
+        if (accessor.count > 0) needed += element;
+        if (!range_fits(buffer_view.byteOffset, buffer_view.byteLength, buffer.data.size()) ||
+            !range_fits(accessor.byteOffset, needed, buffer_view.byteLength))
+            fail(where, "data runs past the end of its buffer (truncated file?)");
+        return {buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset, stride, accessor.count, accessor.componentType,
+                components, accessor.normalized};
+    }
+
+    static double component(const unsigned char* p, int type, bool normalized) {
+        switch (type) {
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : *p;
+            case TINYGLTF_COMPONENT_TYPE_BYTE: { auto v = double(std::int8_t(*p)); return normalized ? std::max(v / 127.0, -1.0) : v; }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0 : v; }
+            case TINYGLTF_COMPONENT_TYPE_SHORT: { std::int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0, -1.0) : v; }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
+            default: return 0;
+        }
+    }
+
+    template <int N>
+    std::vector<Eigen::Matrix<double, N, 1>> vectors(int index, const std::string& place) const {
+        View v = view(index, place);
+        if (v.components != N) fail(place + " accessor " + std::to_string(index), "expected " + std::to_string(N) + " components");
+        int size = tinygltf::GetComponentSizeInBytes(v.component_type);
+        std::vector<Eigen::Matrix<double, N, 1>> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i)
+            for (int c = 0; c < N; ++c) out[i][c] = component(v.data + i * v.stride + c * size, v.component_type, v.normalized);
+        return out;
+    }
+
+    std::vector<std::uint32_t> indices(int index, const std::string& place) const {
+        View v = view(index, place);
+        if (v.components != 1 || !(v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                   v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                                   v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+            fail(place, "indices must be unsigned integer scalars");
+        int size = tinygltf::GetComponentSizeInBytes(v.component_type);
+        std::vector<std::uint32_t> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i)
+            out[i] = std::uint32_t(component(v.data + i * v.stride, v.component_type, false));
+        (void)size;
+        return out;
+    }
+};
+
+// glTF 2.0, 5.25 "node": a 16-number matrix, or translation (3), a unit
+// rotation quaternion (4) and scale (3).
+Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader, const std::string& place) {
+    auto sized = [&](const std::vector<double>& v, std::size_t n, const char* what) {
+        if (!v.empty() && v.size() != n) reader.fail(place, std::string(what) + " must have " + std::to_string(n) + " numbers");
+        return !v.empty();
+    };
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+    if (sized(node.matrix, 16, "matrix")) {
+        for (int i = 0; i < 16; ++i) m(i % 4, i / 4) = node.matrix[i];  // column-major
+        return m;
+    }
+    Eigen::Affine3d t = Eigen::Affine3d::Identity();
+    if (sized(node.translation, 3, "translation")) t.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
+    if (sized(node.rotation, 4, "rotation")) {
+        Eigen::Quaterniond q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        if (!(std::abs(q.norm() - 1) < 1e-3)) reader.fail(place, "rotation is not a unit quaternion");
+        t.rotate(q.normalized());
+    }
+    if (sized(node.scale, 3, "scale")) t.scale(Eigen::Vector3d(node.scale[0], node.scale[1], node.scale[2]));
+    return t.matrix();
+}
+
+// Triangle list from a TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN index stream.
+std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, int mode) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return in;
+    std::vector<std::uint32_t> out;
+    for (std::size_t i = 2; i < in.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+        else if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+        else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+    }
+    return out;
+}
+
+void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const Eigen::Matrix4d& world,
+                    const std::string& place, Node& node) {
+    if (in.mode != TINYGLTF_MODE_TRIANGLES && in.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        in.mode != TINYGLTF_MODE_TRIANGLE_FAN && in.mode != -1)
+        return;  // points and lines have no faces to render or bake
+    auto position = in.attributes.find("POSITION");
+    if (position == in.attributes.end()) reader.fail(place, "primitive has no POSITION attribute");
+    Primitive out;
+    Eigen::Matrix3d linear = world.topLeftCorner<3, 3>();
+    Eigen::Matrix3d normal_matrix = linear.inverse().transpose();
+    bool mirrored = linear.determinant() < 0;
+    for (const auto& p : reader.vectors<3>(position->second, place))
+        out.positions.push_back((linear * p + world.topRightCorner<3, 1>()).cast<float>());
+    std::size_t n = out.positions.size();
+    auto attribute = [&](const char* name) {
+        auto it = in.attributes.find(name);
+        return it == in.attributes.end() ? -1 : it->second;
+    };
+    auto check_count = [&](std::size_t count, const char* name) {
+        if (count != n) reader.fail(place, std::string(name) + " count differs from POSITION count");
+    };
+    if (int a = attribute("NORMAL"); a >= 0) {
+        auto normals = reader.vectors<3>(a, place);
+        check_count(normals.size(), "NORMAL");
+        for (const auto& v : normals) out.normals.push_back((normal_matrix * v).normalized().cast<float>());
+    }
+    if (int a = attribute("TEXCOORD_0"); a >= 0) {
+        auto uvs = reader.vectors<2>(a, place);
+        check_count(uvs.size(), "TEXCOORD_0");
+        for (const auto& v : uvs) out.uvs.push_back(v.cast<float>());
+    }
+    if (int a = attribute("TANGENT"); a >= 0) {
+        auto tangents = reader.vectors<4>(a, place);
+        check_count(tangents.size(), "TANGENT");
+        for (const auto& v : tangents) {
+            Eigen::Vector3d t = (linear * v.head<3>()).normalized();
+            out.tangents.emplace_back(float(t.x()), float(t.y()), float(t.z()), float(mirrored ? -v.w() : v.w()));
+        }
+    }
+    std::vector<std::uint32_t> indices;
+    if (in.indices >= 0) indices = reader.indices(in.indices, place);
+    else for (std::uint32_t i = 0; i < n; ++i) indices.push_back(i);
+    for (std::uint32_t i : indices)
+        if (i >= n) reader.fail(place, "vertex index " + std::to_string(i) + " out of range (" + std::to_string(n) + " vertices)");
+    out.indices = triangle_list(indices, in.mode == -1 ? TINYGLTF_MODE_TRIANGLES : in.mode);
+    if (out.indices.size() % 3 != 0) reader.fail(place, "index count is not a multiple of 3");
+    if (mirrored)
+        for (std::size_t i = 0; i < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
+    out.polygon_count = out.triangle_count();
+    read_primitive_extras(in.extras, {reader.file, place}, out);
+    if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
+    out.material = in.material;
+    node.primitives.push_back(std::move(out));
+}
+
+int texture_image(const Reader& reader, int texture, const std::string& place) {
+    if (texture < 0) return -1;
+    if (texture >= int(reader.gltf.textures.size())) reader.fail(place, "texture index out of range");
+    int source = reader.gltf.textures[texture].source;
+    if (source < 0 || source >= int(reader.gltf.images.size())) reader.fail(place, "texture has no valid image");
+    return source;
+}
+
+// tinygltf's file callback: buffers and images named by URI are read as every
+// input file is (a folder, a device or a missing file is a clear error).
+bool read_whole_file(std::vector<unsigned char>* out, std::string*, const std::string& path, void*) {
+    std::string bytes = read_input_file(path, "file");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+}
+
+// tinygltf's image callback: our decoders, so that a broken image is named by
+// its own file and a claimed size is checked before anything is allocated.
+// 16-bit grey stays 16-bit (height maps); everything else becomes RGBA8.
+bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
+                int size, void* gltf_file) {
+    const std::string& file = *static_cast<const std::string*>(gltf_file);
+    std::string name = image->uri.empty() ? file + ": image " + std::to_string(index)
+                                          : (fs::path(file).parent_path() / image->uri).string();
+    std::span<const std::uint8_t> encoded(bytes, std::size_t(size));
+    if (is_grey16(encoded)) {
+        Image16 decoded = decode_image16(encoded, name);
+        image->image.resize(decoded.pixels.size() * 2);
+        for (std::size_t i = 0; i < decoded.pixels.size(); ++i)
+            image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff), image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
+        image->width = decoded.width, image->height = decoded.height, image->component = 1, image->bits = 16;
+        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    } else {
+        Image8 decoded = decode_image(encoded, name);
+        image->image = std::move(decoded.pixels);
+        image->width = decoded.width, image->height = decoded.height, image->component = 4, image->bits = 8;
+        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    }
+    return true;
+}
+
+// `height_map`: the image serves only as a height texture, so a 16-bit grey
+// image keeps its 16 bits; as colour or normals it becomes 8-bit grey.
+Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& reader, const std::string& place) {
+    if (in.image.empty() || in.width <= 0 || in.height <= 0) reader.fail(place, "image '" + in.uri + "' could not be loaded");
+    Texture texture;
+    texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
+    if (in.bits == 8) {
+        texture.image = Image8(in.width, in.height, 4);
+        texture.image.pixels = in.image;
+        return texture;
+    }
+    Image16 grey(in.width, in.height, 1);
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i) grey.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
+    if (height_map) {
+        texture.image16 = std::move(grey);
+        return texture;
+    }
+    texture.image = Image8(in.width, in.height, 4, 255);
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) texture.image.pixels[i * 4 + std::size_t(c)] = std::uint8_t(grey.pixels[i] >> 8);
+    return texture;
+}
+
+// tinygltf's model of the bytes, with our file and image callbacks.
+tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string& path) {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
+    tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file, &tinygltf::WriteWholeFile, nullptr};
+    loader.SetFsCallbacks(files);
+    tinygltf::Model gltf;
+    std::string error, warning, directory = fs::path(path).parent_path().string();
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
+                     : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()), directory);
+    if (!ok) throw_input_error(path, "", error.empty() ? "malformed glTF" : error);
+    return gltf;
+}
+
+// The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
+void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place, Material& material) {
+    auto texture = [&](int index) { return texture_image(reader, index, place); };
+    if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
+        read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
+    if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())
+        material.specular_extension = read_specular_extension(extension->second, {reader.file, place}, texture);
+}
+
+// One texture per image; an image that is only a height map keeps 16 bits.
+void read_textures(const Reader& reader, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
+    std::vector<bool> colour_or_normal(gltf.images.size(), false);
+    for (std::size_t m = 0; m < gltf.materials.size(); ++m) {
+        const std::string place = "material " + std::to_string(m);
+        for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
+            if (int image = texture_image(reader, texture, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
+        Material extensions;  // only for the images they name, all 8-bit
+        read_material_extensions(reader, gltf.materials[m], place, extensions);
+        for (const auto& slot : texture_slots(std::as_const(extensions)))
+            if (slot.index >= 0) colour_or_normal[std::size_t(slot.index)] = true;
+    }
+    for (std::size_t i = 0; i < gltf.images.size(); ++i)
+        model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
+    for (const tinygltf::Texture& texture : gltf.textures)  // an image sampled clamped to its edge (LoD pages)
+        if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
+            texture.sampler < int(gltf.samplers.size()) && gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+            model.textures[std::size_t(texture.source)].wrap = Wrap::clamp;
+}
+
+void read_materials(const Reader& reader, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
+    for (std::size_t i = 0; i < gltf.materials.size(); ++i) {
+        const tinygltf::Material& in = gltf.materials[i];
+        std::string place = "material " + std::to_string(i);
+        Material material;
+        material.name = in.name;
+        const auto& factor = in.pbrMetallicRoughness.baseColorFactor;
+        if (factor.size() == 4) material.base_color = Eigen::Vector4d(factor[0], factor[1], factor[2], factor[3]).cast<float>();
+        material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, place);
+        material.normal_texture = texture_image(reader, in.normalTexture.index, place);
+        material.double_sided = in.doubleSided;
+        if (!parse_enum(alpha_modes(), in.alphaMode, material.alpha_mode))
+            reader.fail(place, "alphaMode '" + in.alphaMode + "' is not " + enum_names(alpha_modes(), ", ", " or "));
+        if (!alpha_cutoff_range.contains(in.alphaCutoff))
+            reader.fail(place, "alphaCutoff " + out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
+        material.alpha_cutoff = float(in.alphaCutoff);
+        read_material_extensions(reader, in, place, material);
+        read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
+        model.materials.push_back(material);
+    }
+}
+
+// The default scene's nodes, else every node that is nobody's child.
+std::vector<int> scene_roots(const Reader& reader) {
+    const tinygltf::Model& gltf = reader.gltf;
+    std::vector<int> roots;
+    int scene = gltf.defaultScene >= 0 ? gltf.defaultScene : (gltf.scenes.empty() ? -1 : 0);
+    if (scene >= int(gltf.scenes.size())) reader.fail("", "default scene out of range");
+    if (scene >= 0) roots = gltf.scenes[scene].nodes;
+    else {
+        std::vector<bool> is_child(gltf.nodes.size());
+        for (const auto& node : gltf.nodes)
+            for (int child : node.children)
+                if (child >= 0 && child < int(gltf.nodes.size())) is_child[child] = true;
+        for (std::size_t i = 0; i < gltf.nodes.size(); ++i)
+            if (!is_child[i]) roots.push_back(int(i));
+    }
+    if (roots.empty()) reader.fail("", "the scene has no nodes");
+    return roots;
+}
+
+// Level K of a chain: the scene's one root, or the K-th of its MSFT_lod.ids.
+std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>& roots, int chain_level) {
+    if (chain_level == 0) return roots;
+    const std::string place = "level " + std::to_string(chain_level);
+    const tinygltf::Value* ids = nullptr;
+    if (roots.size() == 1 && roots[0] >= 0 && roots[0] < int(reader.gltf.nodes.size())) {
+        const auto& extensions = reader.gltf.nodes[std::size_t(roots[0])].extensions;
+        auto lod = extensions.find("MSFT_lod");
+        if (lod != extensions.end() && lod->second.Has("ids") && lod->second.Get("ids").IsArray()) ids = &lod->second.Get("ids");
+    }
+    if (!ids) reader.fail(place, "not an LoD chain: the scene's root has no MSFT_lod ids (build --chain writes them)");
+    if (chain_level > int(ids->ArrayLen())) reader.fail(place, "the chain has levels 0.." + std::to_string(ids->ArrayLen()));
+    const tinygltf::Value& id = ids->Get(chain_level - 1);
+    if (!id.IsInt() || id.GetNumberAsInt() < 0 || id.GetNumberAsInt() >= int(reader.gltf.nodes.size()))
+        reader.fail(place, "MSFT_lod id is not a node index");
+    return {id.GetNumberAsInt()};
+}
+
+// The node tree under the roots (several roots get a common one, named after
+// the file), geometry in world space; depth-first, parents before children,
+// with an explicit stack so that a deep chain cannot overflow.
+void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& model) {
+    const tinygltf::Model& gltf = reader.gltf;
+    // Meshes used by more than one node of the scene are instances (the nodes
+    // a file keeps outside it, such as MSFT_lod's coarser levels, do not count).
+    std::vector<int> mesh_users(gltf.meshes.size(), 0);
+    std::vector<char> reached(gltf.nodes.size(), 0);
+    for (std::vector<int> pending = roots; !pending.empty();) {
+        int n = pending.back();
+        pending.pop_back();
+        if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;
+        reached[std::size_t(n)] = 1;
+        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
+        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
+        pending.insert(pending.end(), node.children.begin(), node.children.end());
+    }
+    struct Visit { int gltf_node; int parent; Eigen::Matrix4d parent_world; };
+    std::vector<Visit> stack;
+    if (roots.size() > 1) add_node(model, -1, fs::path(reader.file).stem().string());
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, roots.size() > 1 ? 0 : -1, Eigen::Matrix4d::Identity()});
+    std::vector<bool> visited(gltf.nodes.size(), false);
+    while (!stack.empty()) {
+        Visit visit = stack.back();
+        stack.pop_back();
+        std::string place = "node " + std::to_string(visit.gltf_node);
+        if (visit.gltf_node < 0 || visit.gltf_node >= int(gltf.nodes.size())) reader.fail(place, "node index out of range");
+        if (visited[visit.gltf_node]) reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
+        visited[visit.gltf_node] = true;
+        const tinygltf::Node& in = gltf.nodes[visit.gltf_node];
+        Eigen::Matrix4d world = visit.parent_world * local_transform(in, reader, place);
+        if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
+        int index = add_node(model, visit.parent, in.name);
+        Node& node = model.nodes[index];
+        if (in.mesh >= int(gltf.meshes.size())) reader.fail(place, "mesh index out of range");
+        if (in.mesh >= 0) {
+            const tinygltf::Mesh& mesh = gltf.meshes[in.mesh];
+            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+                read_primitive(reader, mesh.primitives[p], world, place + " mesh " + std::to_string(in.mesh) + " primitive " + std::to_string(p), node);
+            if (mesh_users[in.mesh] > 1) node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
+        }
+        read_node_extras(in.extras, {reader.file, place}, node);
+        for (auto child = in.children.rbegin(); child != in.children.rend(); ++child)
+            stack.push_back({*child, index, world});
+    }
+}
+
+}  // namespace
+
+Model import_gltf(const std::string& path, int chain_level) {
+    const bool binary = fs::path(path).extension() == ".glb";
+    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path, chain_level);
+}
+
+// The steps: the structure checked, tinygltf's model, textures, materials, the
+// LoD mark, the node tree; then the whole model validated.
+Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level) {
+    check_gltf_structure(bytes, binary, path);
+    const tinygltf::Model gltf = load_gltf(bytes, binary, path);
+    Reader reader{gltf, path};
+    Model model;
+    model.source = path;
+    read_textures(reader, model);
+    read_materials(reader, model);
+    read_asset_extras(gltf.asset.extras, model);
+    read_nodes(reader, chain_level_roots(reader, scene_roots(reader), chain_level), model);
+    validate_model(model);
+    return model;
+}
+
+}  // namespace boxlod

@@ -1,0 +1,55 @@
+#include "toolkit/formats/lod_export.h"
+
+#include "base/atomic_write.h"
+#include "base/input_error.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/formats/gltf_io.h"
+
+#include <filesystem>
+
+namespace boxlod {
+
+Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads) {
+    auto drawable = make_drawable_model(lod.model, nullptr, threads);
+    RenderSettings settings;
+    settings.camera = preview_camera(session);
+    settings.mode = session.parameters.render_mode;
+    settings.light = session.parameters.light ? *session.parameters.light : light_for_camera(settings.camera);
+    settings.parallax_scale = session.parameters.parallax_scale;
+    settings.parallax_bias = session.parameters.parallax_bias;
+    settings.threads = threads;
+    Frame frame = make_frame(width, height, {1, 1, 1});
+    render(drawable->drawable.batches, settings, frame);
+    return frame_to_srgb8(frame);
+}
+
+void name_pages(Lod& lod, const std::string& name) {
+    for (int page = 0; page < int(lod.atlas.pages.size()); ++page)
+        for (int texture : {lod_page(page).color, lod_page(page).normal, lod_page(page).height})
+            lod.model.textures[std::size_t(texture)].name = name + "_" + lod.model.textures[std::size_t(texture)].name;
+}
+
+void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
+                const Image8& preview, int threads, bool binary) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (error) throw_input_error(directory, "", "cannot create the folder: " + error.message());
+    // A level's files appear together or not at all: they wait as temporaries
+    // until the commit renames them, so even SIGKILL leaves no half level.
+    OutputGroup files;
+    auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
+    name_pages(lod, name);
+    LodParameters parameters = session.parameters;
+    parameters.current_level = lod.current_level;
+    // The parameter file names its model relative to itself, so the folder can move.
+    fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);
+    if (!error && !relative.empty()) parameters.model = relative.string();
+    save_parameters(file(".params.txt"), parameters);
+    write_png(file(".preview.png"), preview);
+    write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
+    export_gltf(lod.model, file(binary ? ".glb" : ".gltf"), threads);
+    files.commit();
+}
+
+}  // namespace boxlod

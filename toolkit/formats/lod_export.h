@@ -1,0 +1,23 @@
+// The files of an LoD export (docs/design.md: Files; the manual's Save Mesh):
+// NAME.gltf + NAME.bin, NAME_color_K.png, NAME_normal_K.png, NAME_height_K.png,
+// NAME.params.txt, NAME.preview.png, NAME.stats.txt — each written atomically.
+#pragma once
+#include "toolkit/lod/lod_builder.h"
+
+#include <string>
+
+namespace boxlod {
+
+// A render of the LoD with the session's camera, light and render mode.
+Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads);
+
+// Renames the LoD's page textures NAME_color_K.png, NAME_normal_K.png, ...
+void name_pages(Lod& lod, const std::string& name);
+
+// `lod` by value: its page textures are renamed NAME_color_K.png ... in place;
+// move it in when it is not needed afterwards (the pages are large). `binary`:
+// NAME.glb with the pages inside, instead of NAME.gltf + .bin + PNGs.
+void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
+                const Image8& preview, int threads, bool binary = false);
+
+}  // namespace boxlod

@@ -1,0 +1,40 @@
+#include "toolkit/formats/model_io.h"
+
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "toolkit/formats/assimp_io.h"
+#include "toolkit/formats/gltf_io.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace boxlod {
+namespace {
+std::string lower_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
+}  // namespace
+
+Model load_model(const std::string& path, int chain_level) {
+    check_input_file(path, "model file");
+    std::string extension = lower_extension(path);
+    if (extension == ".gltf" || extension == ".glb") return import_gltf(path, chain_level);
+    if (chain_level > 0) throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
+    static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",
+                                           ".blend", ".ase", ".lwo", ".ms3d", ".x", ".3mf", ".ac"};
+    for (const char* known : assimp_formats)
+        if (extension == known) return import_with_assimp(path);
+    throw_input_error(path, "", "unknown model format '" + extension +
+                                    "' (known: .gltf .glb .fbx .obj .dae .ply .off .3ds .ifc .stl .x3d .blend .ase .lwo .ms3d .x .3mf .ac)");
+}
+
+void save_model(const Model& model, const std::string& path) {
+    std::string extension = lower_extension(path);
+    if (extension != ".gltf" && extension != ".glb")
+        throw_input_error(path, "", "models are saved as .gltf or .glb");
+    export_gltf(model, path);
+}
+
+}  // namespace boxlod

@@ -1,0 +1,26 @@
+// The cut (docs/design.md: Level values and the cut): taken top-down from the
+// root; a node with L(n) >= c keeps its own geometry and its children are
+// visited; a node with L(n) < c is replaced with its whole sub-tree by its box.
+// Beyond the manual, a node marked in `kept` (kept_subtrees.h marks whole
+// sub-trees) is treated as if L(n) >= c: it keeps its own geometry and its
+// children are visited.
+#pragma once
+#include "toolkit/model/model.h"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace boxlod {
+
+struct Cut {
+    std::vector<int> used_nodes;      // every node the cut visits, in tree order
+    std::vector<int> geometry_nodes;  // used nodes that keep their own geometry
+    std::vector<int> box_nodes;       // used nodes replaced by their box (sub-trees with geometry)
+    std::vector<std::pair<int, int>> simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
+};
+
+Cut take_cut(const Model& model, const std::vector<int>& level, int current_level,
+             const std::vector<std::optional<OrientedBox>>& boxes, const std::vector<bool>& kept = {});
+
+}  // namespace boxlod

@@ -1,0 +1,496 @@
+#include "toolkit/lod/hybrid.h"
+
+#include "base/parallel.h"
+#include "toolkit/lod/bake.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/lod/kept_subtrees.h"
+#include "toolkit/lod/level_budgets.h"
+#include "toolkit/model/model_subtree.h"
+#include "toolkit/lod/simplification.h"
+#include "toolkit/model/vertex_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <tuple>
+
+namespace boxlod {
+namespace {
+
+// The sub-tree simplified to these shares of its triangles: a few error
+// targets from slight to coarse, each a quarter of the one before.
+constexpr double simplified_shares[] = {1, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+constexpr std::size_t fewest_simplified_triangles = 4;
+
+// Where a sub-tree is measured: its bounding sphere seen orthographically from
+// the 8 corner directions, `side` pixels of `pixel` metres a side.
+struct MeasuringView {
+    Framing sphere;
+    float pixel = 1;
+    int side = 1;
+};
+
+MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
+    MeasuringView view;
+    view.sphere = framing_of(bounds);
+    const float diameter = 2 * view.sphere.radius;
+    view.pixel = std::max(float(pixel_world_size(settings.sizing)), diameter / float(settings.max_side));
+    view.side = std::clamp(int(std::ceil(diameter / view.pixel)), 1, settings.max_side);
+    return view;
+}
+
+constexpr int measuring_directions = 8;  // the corners of a cube
+
+// A sub-tree simplified to one of simplified_shares, and the error sums it
+// was measured with, per measuring view.
+struct SimplifiedSubtree {
+    std::vector<Primitive> primitives;
+    std::size_t triangles = 0;
+};
+
+struct NodeMeasurement {
+    bool simplified_made = false;
+    std::vector<SimplifiedSubtree> simplified;  // those that simplify further than the one before, in share order
+    float pixel = 0;  // the measuring view the sums below are of (0: none yet)
+    int side = 0;
+    double box_sum = 0;
+    std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
+};
+
+}  // namespace
+
+struct HybridMeasurements {
+    std::vector<NodeMeasurement> nodes;
+};
+
+std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model) {
+    auto measurements = std::make_shared<HybridMeasurements>();
+    measurements->nodes.resize(model.nodes.size());
+    return measurements;
+}
+
+namespace {
+
+// Each view rendered at twice the side and averaged over 2 x 2 pixels: without
+// it, detail near the pixel's size aliases differently in the sub-tree and in
+// a texture baked from it, and the error measures the aliasing.
+constexpr int supersampling = 2;
+
+void downsample(Frame& frame) {
+    const int w = frame.width / supersampling, h = frame.height / supersampling;
+    std::vector<Eigen::Vector4f> color(std::size_t(w) * std::size_t(h), Eigen::Vector4f::Zero());
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x)
+            color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
+                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / float(supersampling * supersampling);
+    frame.width = w, frame.height = h, frame.color = std::move(color);
+    frame.depth.clear(), frame.normal.clear();
+}
+
+// The measuring renders of `batches`, from every direction. Over `underlay`
+// (full-size renders of what every candidate is drawn among) when given, from
+// its depth: the picture of the underlay's batches and these in one render.
+std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode,
+                                const std::vector<Frame>* underlay = nullptr, bool downsampled = true) {
+    std::vector<Frame> frames;
+    const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
+    for (int corner = 0; corner < measuring_directions; ++corner) {
+        const Eigen::Vector3f direction =
+            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
+        RenderSettings settings;
+        settings.mode = mode;
+        settings.threads = 1;  // nodes are measured in parallel
+        settings.depth_from_frame = underlay != nullptr;
+        Camera& camera = settings.camera;
+        camera.orthographic = true;
+        camera.position = view.sphere.center + direction * (2 * r);
+        camera.target = view.sphere.center;
+        camera.left = camera.bottom = -half, camera.right = camera.top = half;
+        camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
+        settings.light = light_for_camera(camera);
+        frames.push_back(underlay ? (*underlay)[std::size_t(corner)]
+                                  : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
+        render(batches, settings, frames.back());
+        if (downsampled) downsample(frames.back());
+    }
+    return frames;
+}
+
+// The measuring pixels' errors summed over every direction.
+double pixel_error_sum(const std::vector<Frame>& original, const std::vector<Frame>& proxy) {
+    double sum = 0;
+    for (std::size_t v = 0; v < original.size(); ++v)
+        for (std::size_t i = 0; i < original[v].color.size(); ++i) sum += hybrid_pixel_error(original[v].color[i], proxy[v].color[i]);
+    return sum;
+}
+
+// Pixels of the sizing view that differ: the measuring pixels' errors, each
+// weighing (measuring pixel / sizing pixel)^2, mean over the directions.
+double measured_error(double pixel_error_sum, const MeasuringView& view, const HybridSettings& settings) {
+    const double scale = double(view.pixel) / pixel_world_size(settings.sizing);
+    return pixel_error_sum * scale * scale / measuring_directions;
+}
+
+// The box as a drawable: each face one quad over its whole baked texture.
+struct BoxProxyDrawable {
+    std::vector<Material> materials;
+    DecodedTextures textures;
+    std::vector<Primitive> quads;
+    Drawable drawable;
+};
+
+std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, const OrientedBox& box, const MeasuringView& view,
+                                                     const HybridSettings& settings) {
+    auto proxy = std::make_unique<BoxProxyDrawable>();
+    TextureSizing measuring = settings.sizing;  // texels of the measuring pixel's size
+    measuring.distance *= float(double(view.pixel) / pixel_world_size(settings.sizing));
+    const bool textured = settings.mode != RenderMode::untextured;
+    for (const OrientedBoxFace& face : oriented_box_faces(box)) {
+        Primitive quad;
+        quad.material = int(proxy->materials.size());
+        Material material;
+        material.base_color = textured ? Eigen::Vector4f(1, 1, 1, 1) : Eigen::Vector4f(0.7f, 0.7f, 0.7f, 1);
+        if (textured) {
+            const Eigen::Vector2i texels = face_texels(2 * face.half_width, 2 * face.half_height, measuring);
+            BakedFace baked = bake_face(subtree, face, texels, 1);
+            material.base_color_texture = int(proxy->textures.color.size());
+            material.normal_texture = int(proxy->textures.color.size());
+            material.alpha_mode = AlphaMode::mask;
+            proxy->textures.color.push_back(std::make_shared<const MipTexture>(make_texture(baked.color, ColorSpace::srgb, Wrap::clamp)));
+            proxy->textures.linear.push_back(std::make_shared<const MipTexture>(make_texture(baked.normal, ColorSpace::linear, Wrap::clamp)));
+        }
+        const float corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) over the face, as bake_face's image
+        for (const auto& c : corners) {
+            const float s = 2 * c[0] - 1, t = 1 - 2 * c[1];
+            quad.positions.push_back(face.center + face.tangent * (s * face.half_width) + face.bitangent * (t * face.half_height));
+            quad.normals.push_back(face.normal);
+            if (textured) {
+                quad.uvs.emplace_back(c[0], c[1]);
+                quad.tangents.emplace_back(face.tangent.x(), face.tangent.y(), face.tangent.z(), 1.0f);
+            }
+        }
+        quad.indices = {0, 1, 2, 0, 2, 3};
+        quad.polygon_count = 1;
+        proxy->quads.push_back(std::move(quad));
+        proxy->materials.push_back(material);
+    }
+    std::vector<const Primitive*> quads;
+    for (const Primitive& quad : proxy->quads) quads.push_back(&quad);
+    proxy->drawable = make_drawable(proxy->materials, proxy->textures, quads);
+    return proxy;
+}
+
+double mesh_bytes(const std::vector<Primitive>& primitives, const Model& model) {
+    double bytes = 0;
+    for (const Primitive& p : primitives) bytes += double(primitive_mesh_bytes(p, model));
+    return bytes;
+}
+
+std::size_t triangle_count(const std::vector<Primitive>& primitives) {
+    std::size_t triangles = 0;
+    for (const Primitive& p : primitives) triangles += p.triangle_count();
+    return triangles;
+}
+
+// Node n's simplified sub-trees, each simpler than the one before (made once per model).
+const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n, std::size_t subtree_triangles,
+                                                           NodeMeasurement& measurement) {
+    if (measurement.simplified_made) return measurement.simplified;
+    SimplifyOptions options;
+    options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
+    options.threads = 1;
+    std::size_t previous = subtree_triangles + 1;
+    for (double share : simplified_shares) {
+        const auto target = std::size_t(double(subtree_triangles) * share);
+        if (target < fewest_simplified_triangles) break;
+        SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0};
+        simplified.triangles = triangle_count(simplified.primitives);
+        if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
+        previous = simplified.triangles;
+        measurement.simplified.push_back(std::move(simplified));
+    }
+    measurement.simplified_made = true;
+    return measurement.simplified;
+}
+
+// The error sums of node n's box and simplified sub-trees in `view`, rendered
+// among their siblings, unless `measurement` holds them for this view.
+void measure_error_sums(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                        std::size_t subtree_triangles, const Drawable& subtree, const MeasuringView& view,
+                        const HybridSettings& settings, NodeMeasurement& measurement) {
+    if (measurement.pixel == view.pixel && measurement.side == view.side) return;
+    // Among its siblings: the parent's sub-tree but n's own, drawn in every measuring render.
+    std::vector<const Primitive*> others;
+    if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
+        std::vector<bool> mine(model.nodes.size(), false);
+        for (int k : subtree_nodes(model, n)) mine[std::size_t(k)] = true;
+        // Only what the measuring renders can see: within 2 radii of the centre (camera at 2r, view r wide).
+        const Eigen::Vector3f center = view.sphere.center;
+        const float reach = 2 * view.sphere.radius;
+        for (int k : subtree_nodes(model, parent))
+            if (!mine[std::size_t(k)])
+                for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
+                    Eigen::AlignedBox3f bounds;
+                    for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
+                    if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
+                }
+    }
+    // Drawn in its materials' base colours, untextured: it only hides and is
+    // hidden, the same in every render. Its opaque part is rendered once per
+    // direction and each candidate over it from its depth (renderer.h:
+    // depth_from_frame), its blended part with each candidate: the pictures of
+    // one render of the context and the candidate, at a fraction of the cost.
+    std::vector<Material> plain = model.materials;
+    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
+    const Drawable context = make_drawable(plain, DecodedTextures{}, others);
+    std::vector<Batch> opaque_context, blended_context;
+    for (const Batch& batch : context.batches)
+        (batch.surface.alpha_mode == AlphaMode::blend ? blended_context : opaque_context).push_back(batch);
+    const std::vector<Frame> underlay = render_views(opaque_context, view, settings.mode, nullptr, false);
+    auto among_context = [&](const Drawable& d) {
+        std::vector<Batch> batches = blended_context;
+        batches.insert(batches.end(), d.batches.begin(), d.batches.end());
+        return render_views(batches, view, settings.mode, &underlay);
+    };
+    const std::vector<Frame> original = among_context(subtree);
+    measurement.box_sum = pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, view, settings)->drawable));
+    measurement.simplified_sums.clear();
+    for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
+        double sum = 0;
+        if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
+            std::vector<const Primitive*> primitives;
+            for (const Primitive& p : simplified.primitives) primitives.push_back(&p);
+            sum = pixel_error_sum(original, among_context(make_drawable(model.materials, textures, primitives)));
+        }
+        measurement.simplified_sums.push_back(sum);
+    }
+    measurement.pixel = view.pixel, measurement.side = view.side;
+}
+
+// Every proxy of node n, measured (or its measurements reused); then sorted by
+// bytes, keeping only those that beat every cheaper one and cost less than the sub-tree itself.
+std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                                   double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
+    const Drawable subtree = make_drawable(model, textures, n);
+    const MeasuringView view = measuring_view(subtree.bounds, settings);
+    NodeMeasurement own;
+    NodeMeasurement& measurement = settings.measurements ? settings.measurements->nodes[std::size_t(n)] : own;
+    measure_error_sums(model, textures, n, box, subtree_triangles, subtree, view, settings, measurement);
+
+    std::vector<Proxy> proxies;
+    Proxy box_proxy;
+    box_proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
+    box_proxy.error = measured_error(measurement.box_sum, view, settings);
+    proxies.push_back(std::move(box_proxy));
+    for (std::size_t k = 0; k < measurement.simplified.size(); ++k) {
+        Proxy proxy;
+        proxy.kind = ProxyKind::simplified;
+        proxy.primitives = measurement.simplified[k].primitives;
+        proxy.bytes = mesh_bytes(proxy.primitives, model);
+        proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
+        proxies.push_back(std::move(proxy));
+    }
+    std::stable_sort(proxies.begin(), proxies.end(), [](const Proxy& a, const Proxy& b) { return a.bytes < b.bytes; });
+    std::vector<Proxy> kept;
+    for (Proxy& proxy : proxies)
+        if (proxy.bytes < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+    return kept;
+}
+
+// The greedy order (docs/design.md: The hybrid level mode), within a byte
+// budget: a change that would exceed it gives way to the node's best change
+// that fits, if any, so a level fills its budget where the unbounded order
+// takes one large step past it.
+class Planner {
+public:
+    Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
+        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1) {
+        subtree_bytes_.assign(model.nodes.size(), 0);
+        own_bytes_.assign(model.nodes.size(), 0);
+        const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
+        for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+            subtree_bytes_[n] = double(subtree[n]);
+            own_bytes_[n] = mesh_bytes(model.nodes[n].primitives, model);
+            if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
+        }
+    }
+
+    void run(std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
+        bytes.push_back(drawn_bytes(0));
+        error.push_back(drawn_error(0));
+        if (state_[0] < 0) return;  // the root has no proxy: only the original
+        consider(0, budget_ - bytes.back());
+        while (!frontier_.empty()) {
+            const Move move = std::get<3>(*frontier_.begin());
+            frontier_.erase(frontier_.begin());
+            if (bytes.back() + move.cost > budget_ * (1 + 1e-12)) {  // its best that fits, if any
+                consider(move.node, budget_ - bytes.back());
+                continue;
+            }
+            steps.push_back({move.node, move.proxy});
+            bytes.push_back(bytes.back() + move.cost);
+            error.push_back(error.back() - move.gain);
+            state_[std::size_t(move.node)] = move.proxy;
+            if (move.proxy >= 0) {
+                consider(move.node, budget_ - bytes.back());
+                continue;
+            }
+            for (int child : model_.nodes[std::size_t(move.node)].children)
+                if (state_[std::size_t(child)] >= 0) consider(child, budget_ - bytes.back());
+        }
+    }
+
+private:
+    struct Move {
+        int node = 0, proxy = -1;
+        double gain = 0, cost = 0;
+    };
+    // Best first: changes that save bytes and lose nothing, then the largest
+    // gain per byte, then (so that the plan reaches the original) openings that
+    // gain nothing yet, cheapest first; ties to the lower node index.
+    using Key = std::tuple<int, double, int, Move>;
+    struct KeyOrder {
+        bool operator()(const Key& a, const Key& b) const {
+            return std::tie(std::get<0>(a), std::get<1>(a), std::get<2>(a)) < std::tie(std::get<0>(b), std::get<1>(b), std::get<2>(b));
+        }
+    };
+
+    // Bytes and error of node n's sub-tree as drawn when n is reached in its current state.
+    double drawn_bytes(int n) const {
+        const int s = state_[std::size_t(n)];
+        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
+    }
+    double drawn_error(int n) const {
+        const int s = state_[std::size_t(n)];
+        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].error : 0;
+    }
+
+    static Key key(const Move& m) {
+        if (m.gain >= 0 && m.cost <= 0) return {0, -m.gain, m.node, m};
+        if (m.gain > 0) return {1, -m.gain / m.cost, m.node, m};
+        return {2, m.cost, m.node, m};
+    }
+
+    // Puts node n's best change adding at most `room` bytes into the frontier.
+    void consider(int n, double room) {
+        const std::vector<Proxy>& proxies = proxies_[std::size_t(n)];
+        const Proxy& now = proxies[std::size_t(state_[std::size_t(n)])];
+        std::optional<Key> best;
+        auto offer = [&](const Move& m) {
+            if (m.cost <= room * (1 + 1e-12) + 1e-9 && (!best || KeyOrder{}(key(m), *best))) best = key(m);
+        };
+        Move open{n, -1, now.error, own_bytes_[std::size_t(n)] - now.bytes};
+        for (int child : model_.nodes[std::size_t(n)].children) open.gain -= drawn_error(child), open.cost += drawn_bytes(child);
+        offer(open);
+        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies.size(); ++j)
+            offer({n, int(j), now.error - proxies[j].error, proxies[j].bytes - now.bytes});
+        if (best) frontier_.insert(*best);
+    }
+
+    const Model& model_;
+    const std::vector<std::vector<Proxy>>& proxies_;
+    double budget_;
+    std::vector<int> state_;
+    std::vector<double> subtree_bytes_, own_bytes_;
+    std::set<Key, KeyOrder> frontier_;
+};
+
+// Per node, after the first `count` of `steps`: its proxy, or -1 where it keeps its geometry.
+std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps, std::size_t count) {
+    std::vector<int> state(plan.proxies.size(), -1);
+    for (std::size_t n = 0; n < plan.proxies.size(); ++n)
+        if (!plan.proxies[n].empty()) state[n] = 0;
+    for (std::size_t k = 0; k < std::min(count, steps.size()); ++k) state[std::size_t(steps[k].node)] = steps[k].proxy;
+    return state;
+}
+
+}  // namespace
+
+double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b) {
+    const float ca = std::clamp(a.w(), 0.0f, 1.0f), cb = std::clamp(b.w(), 0.0f, 1.0f);
+    double colour = 0;
+    for (int c = 0; c < 3; ++c) colour += std::abs(int(linear_to_srgb(a[c])) - int(linear_to_srgb(b[c])));
+    return double(std::abs(ca - cb)) + double(std::min(ca, cb)) * colour / (3 * 255.0);
+}
+
+HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
+                       const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings) {
+    HybridPlan plan;
+    plan.proxies.resize(model.nodes.size());
+    const bool textured = settings.mode != RenderMode::untextured;
+    const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
+    const std::vector<std::size_t> triangles = subtree_triangles(model);
+    // A node is measured where some proxy may cost less than its sub-tree's
+    // mesh: its box, or a simplified sub-tree (enough triangles for the first share that simplifies).
+    std::vector<int> measured;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < bytes[n] ||
+                         double(triangles[n]) * simplified_shares[1] >= double(fewest_simplified_triangles)))
+            measured.push_back(int(n));
+    parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
+        const auto n = std::size_t(measured[i]);
+        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], double(bytes[n]), triangles[n], settings);
+    });
+    order_hybrid_plan(model, plan);
+    return plan;
+}
+
+void order_hybrid_plan(const Model& model, HybridPlan& plan) {
+    plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
+    Planner(model, plan.proxies, std::numeric_limits<double>::infinity()).run(plan.steps, plan.bytes, plan.error);
+}
+
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { return state_after(plan, plan.steps, steps); }
+
+HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
+    std::vector<HybridStep> steps;
+    std::vector<double> bytes, error;
+    Planner(model, plan.proxies, budget).run(steps, bytes, error);
+    const std::size_t best = best_prefix_within(bytes, error, budget);
+    return {state_after(plan, steps, best), bytes[best], error[best]};
+}
+
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state) {
+    Cut cut;
+    for (std::vector<int> stack{0}; !stack.empty();) {
+        const int n = stack.back();
+        stack.pop_back();
+        const Node& node = model.nodes[std::size_t(n)];
+        cut.used_nodes.push_back(n);
+        if (const int s = state[std::size_t(n)]; s >= 0) {
+            if (plan.proxies[std::size_t(n)][std::size_t(s)].kind == ProxyKind::box) cut.box_nodes.push_back(n);
+            else cut.simplified_nodes.emplace_back(n, s);
+            continue;
+        }
+        if (node.has_geometry()) cut.geometry_nodes.push_back(n);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+    }
+    return cut;
+}
+
+double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
+    double error = 0;
+    for (int n : cut.box_nodes)
+        for (const Proxy& proxy : plan.proxies[std::size_t(n)])
+            if (proxy.kind == ProxyKind::box) error += proxy.error;
+    for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
+    return error;
+}
+
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, const std::vector<double>& budgets,
+                          std::vector<HybridLevel>& levels) {
+    const int count = int(budgets.size());
+    LevelValues values;
+    values.obtained_levels = count;
+    values.level.assign(model.nodes.size(), 0);
+    levels.assign(budgets.size() + 1, {std::vector<int>(model.nodes.size(), -1), plan.bytes.back(), 0});
+    for (int c = count; c >= 1; --c) {
+        levels[std::size_t(c)] = hybrid_level_within(model, plan, budgets[std::size_t(c - 1)]);
+        for (int n : hybrid_cut(model, plan, levels[std::size_t(c)].state).geometry_nodes)
+            values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, count - 1));
+    }
+    return values;
+}
+
+}  // namespace boxlod

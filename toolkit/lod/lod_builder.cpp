@@ -1,0 +1,592 @@
+#include "toolkit/lod/lod_builder.h"
+
+#include "base/input_error.h"
+#include "base/parallel.h"
+#include "base/timing.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/lod/error_greedy.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/lod/kept_subtrees.h"
+#include "toolkit/lod/level_budgets.h"
+#include "toolkit/model/model_subtree.h"
+#include "toolkit/model/statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+namespace boxlod {
+namespace {
+
+// Level c's budget in bytes (level_budgets.h), c >= 1 when the parameters give budgets.
+double level_budget(const LodSession& session, int level) {
+    return budget_bytes(session.parameters.budgets[std::size_t(level - 1)], double(session.original_cost.bytes()));
+}
+
+// Copies the `region` of a baked face into a page with its gutter: the face's
+// own texels around the region where it has them (so a cropped face samples
+// the neighbours it had uncropped), its edge texels repeated beyond; clipped
+// to the page's border. Heights go from the face's own depth (0 at the box's
+// opposite face) to the pages' common depth: depth_ratio = face depth / page depth.
+void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, float depth_ratio,
+                Texture& color, Texture& normal, Texture& height) {
+    const Eigen::Vector2i block = placed_size({region.width, region.height}, at);
+    const int page_width = color.image.width, page_height = color.image.height;
+    for (int by = -gutter; by < block.y() + gutter; ++by)
+        for (int bx = -gutter; bx < block.x() + gutter; ++bx) {
+            const int px = at.x + bx, py = at.y + by;
+            if (px < 0 || py < 0 || px >= page_width || py >= page_height) continue;
+            // The region texel at block texel (bx, by); turned clockwise, the region's top row is the block's right column.
+            const int rx = at.rotated ? by : bx, ry = at.rotated ? region.height - 1 - bx : by;
+            const int sx = std::clamp(region.x + rx, 0, face.color.width - 1), sy = std::clamp(region.y + ry, 0, face.color.height - 1);
+            std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
+            std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
+            const float below = float(65535 - face.height.at(sx, sy)[0]) * depth_ratio;
+            height.image16.at(px, py)[0] = std::uint16_t(65535 - std::lround(below));
+        }
+}
+
+// The quad of a face's `region` of its `texels` (the whole face for untextured
+// boxes): TL, BL, BR, TR seen from outside; uvs into the region's atlas block.
+void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vector2i& texels, const TexelRect& region,
+                      const AtlasPlacement* at, const Eigen::Vector2i& page) {
+    auto base = std::uint32_t(p.positions.size());
+    const int corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) in the region
+    for (const auto& c : corners) {
+        // The corner in face texels (x right, y down), and as -1..1 along tangent and bitangent.
+        const int x = region.x + c[0] * region.width, y = region.y + c[1] * region.height;
+        const float s = 2 * (float(x) / float(texels.x())) - 1, t = 1 - 2 * (float(y) / float(texels.y()));
+        p.positions.push_back(f.center + f.tangent * (s * f.half_width) + f.bitangent * (t * f.half_height));
+        p.normals.push_back(f.normal);
+        if (at) {
+            const int rx = c[0] * region.width, ry = c[1] * region.height;  // in the region
+            const int page_x = at->rotated ? region.height - ry : rx, page_y = at->rotated ? rx : ry;
+            p.uvs.emplace_back(float(at->x + page_x) / float(page.x()), float(at->y + page_y) / float(page.y()));
+            p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
+        }
+    }
+    p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    ++p.polygon_count;
+}
+
+Eigen::Vector2i texels_of(const OrientedBoxFace& face, const TextureSizing& sizing) {
+    return face_texels(2 * face.half_width, 2 * face.half_height, sizing);
+}
+
+}  // namespace
+
+std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
+                                      const std::vector<std::optional<OrientedBox>>* boxes, HybridMeasurements* measurements) {
+    if (model.is_lod)
+        throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
+    validate_parameters(parameters, model.source);
+    if (!parameters.budgets.empty() && !orders_by_bytes(parameters.level_mode))  // a sweep drops them for the other modes
+        throw_input_error(model.source, "", std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +
+                                                " does not order its cuts by bytes; budgets are for error-greedy and hybrid");
+    auto session = std::make_unique<LodSession>();
+    session->model = &model;
+    session->parameters = parameters;
+    LodParameters& p = session->parameters;
+    if (p.model.empty()) p.model = model.source;
+    if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
+    session->sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
+
+    auto start = Clock::now();
+    session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
+    session->depth_errors = box_depth_errors(model, session->boxes);
+    session->times.boxes = seconds_since(start);
+    // hybrid measures its proxies against the textured original, whatever the levels' render mode.
+    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid) session->textures = decode_textures(model);
+    start = Clock::now();
+    session->original_cost = model_cost(model);
+    const int levels = asked_levels(p);
+    std::vector<double> budgets;  // levels 1..N, bytes
+    for (std::size_t c = 1; c <= p.budgets.size(); ++c) budgets.push_back(level_budget(*session, int(c)));
+    const bool textured = p.render_mode != RenderMode::untextured;
+    if (p.level_mode == LevelMode::hybrid) {
+        session->hybrid = std::make_shared<const HybridPlan>(
+            plan_hybrid(model, session->textures, session->boxes,
+                        {.sizing = session->sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements}));
+        const HybridPlan& plan = *session->hybrid;
+        if (budgets.empty()) budgets = geometric_budgets(plan.bytes.front(), plan.bytes.back(), levels);
+        session->levels = hybrid_levels(model, plan, budgets, session->hybrid_levels);
+    } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
+        session->opening = std::make_shared<const GreedyOpening>(greedy_opening(model, session->boxes, session->sizing, textured));
+        session->opening_steps = greedy_prefixes(*session->opening, budgets);
+        session->levels = {opened_levels(model, *session->opening, session->opening_steps), levels};
+    } else {
+        session->levels = compute_level_values(model, p.level_mode, levels, p.interpolation, session->boxes, session->sizing,
+                                               textured);
+    }
+    session->times.levels = seconds_since(start);
+    // hybrid's plan keeps what pays (hybrid.h); with budgets the budget decides (level_budgets.h).
+    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid && p.budgets.empty())
+        session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
+                                      textured);
+    return session;
+}
+
+Camera preview_camera(const LodSession& session) {
+    const LodParameters& p = session.parameters;
+    if (p.camera) {
+        Camera camera = *p.camera;
+        Framing framing = model_framing(*session.model);
+        float distance = (camera.position - framing.center).norm();
+        camera.near_plane = std::max(distance - framing.radius, distance * 1e-3f);
+        camera.far_plane = std::max(distance + framing.radius, camera.near_plane * 2);
+        return camera;
+    }
+    return framed_camera(model_framing(*session.model), {1, 1, 1}, p.distance, p.fovy);
+}
+
+namespace {
+
+// Bake: the faces of the cut's boxes that no earlier level baked, in parallel (one face per task).
+void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
+    struct FaceJob { int node, face; };
+    std::vector<FaceJob> jobs;
+    std::vector<int> new_boxes;
+    for (int node : cut.box_nodes)
+        if (!session.baked.count(node)) new_boxes.push_back(node);
+    for (int node : new_boxes) {
+        session.baked[node];  // create the slots before the parallel work
+        for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
+    }
+    std::map<int, Drawable> subtrees;
+    for (int node : new_boxes) subtrees.emplace(node, make_drawable(*session.model, session.textures, node));
+    parallel_for(jobs.size(), threads, [&](std::size_t j) {
+        const FaceJob& job = jobs[j];
+        OrientedBoxFace face = oriented_box_faces(*session.boxes[job.node])[job.face];
+        session.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, session.sizing), 1);
+    });
+}
+
+// The faces that go into the atlas, in cut order and face order, each with the
+// rectangle of its texels it keeps: cropped to the covered ones, none for a
+// face that covers nothing (unless crop_faces is off).
+struct PackedFace {
+    int node, face;
+    TexelRect region;
+    int placement = -1;  // its block in the atlas; -1: drawn flat from `swatch`
+    int swatch = -1;
+};
+
+// Flat faces (docs/design.md: Atlas): one 4x4 swatch per distinct colour, in
+// one square block of the atlas whose swatches lie on 4-texel boundaries of
+// the page (one GPU compression block each); 3 spare texels per side find them.
+constexpr int swatch_side = 4;
+
+struct Swatches {
+    std::vector<std::array<std::uint8_t, 4>> colors;  // sRGB RGBA, opaque
+    std::map<std::array<std::uint8_t, 4>, int> index;  // of each colour in `colors`
+    int columns = 0;
+    int block_side() const { return swatch_side * columns + swatch_side - 1; }
+};
+
+struct Packing {
+    std::vector<PackedFace> faces;
+    Atlas atlas;
+    Swatches swatches;
+    int swatch_placement = -1;  // the swatches' block in the atlas
+    std::uint64_t face_texels = 0, gutter_texels = 0;
+    int flat_faces = 0;
+    float longest_face = 0;  // metres, for min_distance
+    float height_depth = 0;  // metres: the deepest packed face's box depth, height 0 on every page
+};
+
+// A face `region` small enough for `flat_faces` and at least half covered gets
+// its covered texels' mean colour, averaged in linear light as mip-maps are.
+std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region, int flat_faces) {
+    if (std::max(region.width, region.height) > flat_faces) return std::nullopt;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int covered = 0;
+    for (int y = region.y; y < region.y + region.height; ++y)
+        for (int x = region.x; x < region.x + region.width; ++x) {
+            const std::uint8_t* texel = face.color.at(x, y);
+            if (texel[3] < 128) continue;  // cut out by the pages' MASK cutoff 0.5
+            ++covered;
+            for (int c = 0; c < 3; ++c) sum[c] += srgb_to_linear(texel[c]);
+        }
+    if (2 * covered < region.width * region.height) return std::nullopt;
+    std::array<std::uint8_t, 4> color{0, 0, 0, 255};
+    for (int c = 0; c < 3; ++c) color[std::size_t(c)] = linear_to_srgb(float(sum[c] / covered));
+    return color;
+}
+
+// The page texel where swatch k starts, in the block placed at `at`.
+Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at, int k) {
+    auto aligned = [](int v) { return v + (swatch_side - v % swatch_side) % swatch_side; };
+    return {aligned(at.x) + swatch_side * (k % swatches.columns), aligned(at.y) + swatch_side * (k / swatches.columns)};
+}
+
+// Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as swatches.
+Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces) {
+    const LodParameters& p = session.parameters;
+    Packing packing;
+    std::vector<Eigen::Vector2i> sizes;
+    const int most_columns = (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
+    const std::size_t max_swatches = std::size_t(most_columns) * std::size_t(most_columns);
+    for (int node : cut.box_nodes) {
+        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[node]);
+        for (int f = 0; f < 6; ++f) {
+            const OrientedBoxFace& face = faces[f];
+            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
+            if (!textured) continue;
+            const Eigen::Vector2i texels = texels_of(face, session.sizing);
+            const BakedFace& baked = session.baked.at(node)[f];
+            const TexelRect region = p.crop_faces ? baked.covered : TexelRect{0, 0, texels.x(), texels.y()};
+            if (region.empty()) continue;
+            packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
+            if (auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt) {
+                Swatches& swatches = packing.swatches;
+                auto known = swatches.index.find(*color);
+                if (known == swatches.index.end() && swatches.colors.size() < max_swatches) {
+                    known = swatches.index.emplace(*color, int(swatches.colors.size())).first;
+                    swatches.colors.push_back(*color);
+                }
+                if (known != swatches.index.end()) {  // else the swatches are full: it keeps its texels
+                    packing.faces.push_back({node, f, region, -1, known->second});
+                    ++packing.flat_faces;
+                    continue;
+                }
+            }
+            packing.faces.push_back({node, f, region, int(sizes.size())});
+            sizes.emplace_back(region.width, region.height);
+            packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
+        }
+    }
+    if (Swatches& swatches = packing.swatches; !swatches.colors.empty()) {
+        swatches.columns = int(std::ceil(std::sqrt(double(swatches.colors.size()))));
+        packing.swatch_placement = int(sizes.size());
+        sizes.emplace_back(swatches.block_side(), swatches.block_side());  // square: never turned
+        packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
+    }
+    if (textured) {
+        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
+        packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.sizing.gutter);
+        if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
+    }
+    return packing;
+}
+
+// Page: one material per atlas page with its three empty textures (uncovered
+// texels: transparent colour, the flat normal, height 0); untextured, one grey material.
+void add_pages(Model& out, const Atlas& atlas, float height_depth, bool textured) {
+    if (!textured) {
+        Material material;
+        material.name = "lod_box";
+        material.base_color = {0.7f, 0.7f, 0.7f, 1};
+        out.materials.push_back(material);
+        return;
+    }
+    for (int page = 0; page < int(atlas.pages.size()); ++page) {
+        const Eigen::Vector2i size = atlas.pages[std::size_t(page)];
+        Texture color{"color_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 4, 0), {}};
+        Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 3, 255), {}};
+        for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
+        Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size.x(), size.y(), 1, 0)};
+        color.wrap = normal.wrap = height.wrap = Wrap::clamp;  // faces touch the page's border
+        const LodPage textures = lod_page(page);
+        out.textures.resize(std::size_t(textures.height) + 1);
+        out.textures[std::size_t(textures.color)] = std::move(color);
+        out.textures[std::size_t(textures.normal)] = std::move(normal);
+        out.textures[std::size_t(textures.height)] = std::move(height);
+        Material material;
+        material.name = "lod_page_" + std::to_string(page);
+        material.base_color_texture = textures.color;
+        material.normal_texture = textures.normal;
+        material.height_texture = textures.height;
+        material.height_depth = height_depth;
+        material.alpha_mode = AlphaMode::mask;
+        // boxlod measures with both sides drawn; through a face's cut-out texels one sees the
+        // inside of the box's far faces, so engines must draw both sides too (docs/design.md: Files).
+        material.double_sided = true;
+        out.materials.push_back(material);
+    }
+}
+
+// The swatches into their block and its gutter: each texel takes the nearest
+// swatch's colour, the flat normal and height 1 (a flat face lies on its box).
+void place_swatches(const Packing& packing, const Atlas& atlas, int gutter, Model& out) {
+    const Swatches& swatches = packing.swatches;
+    const AtlasPlacement& at = atlas.placements[std::size_t(packing.swatch_placement)];
+    const LodPage page = lod_page(at.page);
+    Texture &color = out.textures[std::size_t(page.color)], &normal = out.textures[std::size_t(page.normal)],
+            &height = out.textures[std::size_t(page.height)];
+    const Eigen::Vector2i first = swatch_texel(swatches, at, 0);
+    const int count = int(swatches.colors.size()), rows = (count + swatches.columns - 1) / swatches.columns;
+    const std::uint8_t flat_normal[3] = {128, 128, 255};
+    auto swatch_of = [](int texel, int start, int n) {
+        return std::clamp(texel < start ? -1 : (texel - start) / swatch_side, 0, n - 1);
+    };
+    for (int py = std::max(at.y - gutter, 0); py < std::min(at.y + swatches.block_side() + gutter, color.image.height); ++py)
+        for (int px = std::max(at.x - gutter, 0); px < std::min(at.x + swatches.block_side() + gutter, color.image.width); ++px) {
+            const int k = std::min(swatch_of(py, first.y(), rows) * swatches.columns + swatch_of(px, first.x(), swatches.columns),
+                                   count - 1);
+            std::copy_n(swatches.colors[std::size_t(k)].data(), 4, color.image.at(px, py));
+            std::copy_n(flat_normal, 3, normal.image.at(px, py));
+            height.image16.at(px, py)[0] = 65535;
+        }
+}
+
+// Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
+// materials and textures), a box node becomes a leaf with one quad per packed
+// face, its baked texels placed in its page.
+void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
+                   bool textured) {
+    const Model& model = *session.model;
+    MaterialCopier writer{model, out};
+    std::vector<bool> is_box(model.nodes.size(), false);
+    for (int n : cut.box_nodes) is_box[n] = true;
+    std::map<int, const Proxy*> simplified;
+    for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
+    std::map<int, int> new_index;
+    std::size_t next_packed = 0;
+    for (int n : cut.used_nodes) {
+        const Node& node = model.nodes[n];
+        int parent = node.parent >= 0 ? new_index.at(node.parent) : -1;
+        int index = add_node(out, parent, node.name);
+        new_index[n] = index;
+        out.nodes[index].rule = node.rule;
+        out.nodes[index].scope = node.scope;
+        if (auto proxy = simplified.find(n); proxy != simplified.end()) {  // its sub-tree simplified, the source's materials
+            for (const Primitive& primitive : proxy->second->primitives) {
+                Primitive copy = primitive;
+                copy.material = writer.material(primitive.material);
+                out.nodes[index].primitives.push_back(std::move(copy));
+            }
+            continue;
+        }
+        if (!is_box[n]) {  // kept: its own geometry (a replaced node without box has none)
+            for (const Primitive& primitive : node.primitives) {
+                Primitive copy = primitive;
+                copy.material = writer.material(primitive.material);
+                out.nodes[index].primitives.push_back(std::move(copy));
+            }
+            continue;
+        }
+        // One primitive per page this box's faces landed on (the pages' materials come first, page order).
+        std::map<int, Primitive> by_page;
+        std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
+        for (int f = 0; f < 6; ++f) {
+            if (!textured) {
+                Primitive& primitive = by_page[0];
+                primitive.material = 0;
+                append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, Eigen::Vector2i::Zero());
+                continue;
+            }
+            const std::vector<PackedFace>& packed = packing.faces;
+            if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
+            const PackedFace& face = packed[next_packed++];
+            const bool flat = face.placement < 0;
+            const AtlasPlacement& at = atlas.placements[std::size_t(flat ? packing.swatch_placement : face.placement)];
+            const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
+            Primitive& primitive = by_page[at.page];
+            primitive.material = at.page;
+            append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), face.region, &at, page_size);
+            if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
+                const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
+                const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
+                                             float(texel.y() + swatch_side / 2) / float(page_size.y()));
+                std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), center);
+                continue;
+            }
+            const LodPage page = lod_page(at.page);
+            place_face(session.baked.at(n)[f], face.region, at, session.sizing.gutter,
+                       2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
+                       out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
+        }
+        for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
+    }
+    if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.sizing.gutter, out);
+}
+
+// Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
+KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packing& packing) {
+    const Model& model = *session.model;
+    int largest_page_side = 0;
+    std::string page_list;
+    for (const Eigen::Vector2i& page : lod.atlas.pages) {
+        largest_page_side = std::max({largest_page_side, page.x(), page.y()});
+        page_list += (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
+    }
+    const double occupancy = lod.atlas.pages.empty() ? 0 : double(lod.face_texels) / double(page_texels(lod.atlas));
+    MeshCounts lod_counts = mesh_counts(lod.model), original = mesh_counts(model);
+    Eigen::Vector3f size = model_bounds(model).size();
+    KeyValues statistics = {
+        number_entry("nodes", double(model.nodes.size())),
+        number_entry("used_nodes", double(lod.cut.used_nodes.size())),
+        number_entry("nodes_with_geometry", double(lod.cut.geometry_nodes.size())),
+        number_entry("nodes_with_box", double(lod.cut.box_nodes.size())),
+        number_entry("nodes_simplified", double(lod.cut.simplified_nodes.size())),
+        number_entry("depth", tree_depth(model)),
+        number_entry("batches_lod", double(lod_counts.batches)),
+        number_entry("faces_lod", double(lod_counts.faces)),
+        number_entry("triangles_lod", double(lod_counts.triangles)),
+        number_entry("vertices_lod", double(lod_counts.vertices)),
+        number_entry("batches_original", double(original.batches)),
+        number_entry("faces_original", double(original.faces)),
+        number_entry("triangles_original", double(original.triangles)),
+        number_entry("vertices_original", double(original.vertices)),
+        float_entry("min_distance", packing.longest_face > 0 ? min_distance(packing.longest_face, session.sizing) : 0),
+        float_entry("mesh_width", size.x()),
+        float_entry("mesh_height", size.y()),
+        float_entry("mesh_depth", size.z()),
+        number_entry("lod_textures", double(lod.atlas.pages.size())),
+        number_entry("texture_size", largest_page_side),
+        text_entry("texture_pages", page_list),
+        number_entry("page_texels", double(page_texels(lod.atlas))),
+        number_entry("face_texels", double(lod.face_texels)),
+        number_entry("gutter_texels", double(packing.gutter_texels)),
+        number_entry("occupancy", occupancy),
+        number_entry("flat_faces", packing.flat_faces),
+        number_entry("swatches", double(packing.swatches.colors.size())),
+        number_entry("depth_error", lod.depth_error),
+        number_entry("measured_error", lod.measured_error),
+    };
+    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
+        statistics.insert(statistics.end(), cost.begin(), cost.end());
+    if (!session.parameters.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
+        statistics.push_back(number_entry("budget_bytes", std::floor(level_budget(session, lod.current_level))));
+    statistics.push_back(number_entry("obtained_levels", session.levels.obtained_levels));
+    statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
+    return statistics;
+}
+
+}  // namespace
+
+LodPage lod_page(int page) { return {3 * page, 3 * page + 1, 3 * page + 2}; }
+
+namespace {
+
+// The build as named steps from the cut: bake, pack, page, mesh, statistics.
+Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
+    const Model& model = *session.model;
+    const LodParameters& p = session.parameters;
+    const bool textured = p.render_mode != RenderMode::untextured;
+    Lod lod;
+    lod.current_level = current_level;
+    lod.cut = std::move(cut);
+    for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
+    if (session.hybrid) lod.measured_error = hybrid_cut_error(*session.hybrid, lod.cut);
+    auto start = Clock::now();
+    if (textured) bake_new_boxes(session, lod.cut, threads);
+    session.times.bake += seconds_since(start);
+
+    start = Clock::now();
+    Packing packing = pack_faces(session, lod.cut, textured, 0);
+    if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
+        Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces);
+        if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
+    }
+    lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
+    lod.face_texels = packing.face_texels;
+    session.times.pack += seconds_since(start);
+
+    start = Clock::now();
+    Model& out = lod.model;
+    out.source = model.source;
+    out.is_lod = true;
+    LodParameters saved = p;
+    saved.current_level = current_level;
+    // A shipped asset names its model by file name: no builder's folder leaks
+    // into it, and a build in any folder gives the same bytes.
+    saved.model = std::filesystem::path(p.model).filename().string();
+    for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
+    add_pages(out, lod.atlas, packing.height_depth, textured);
+    add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
+    session.times.mesh += seconds_since(start);
+
+    lod.cost = cost_parts(out);
+    lod.statistics = lod_statistics(session, lod, packing);
+    return lod;
+}
+
+// The cut of level c as the session holds it: a hybrid state, error-greedy's
+// openings within a budget, or the level values.
+Cut level_cut(const LodSession& session, int c) {
+    const Model& model = *session.model;
+    if (session.hybrid) return hybrid_cut(model, *session.hybrid, session.hybrid_levels[std::size_t(c)].state);
+    if (session.opening && c >= 1) {
+        const std::size_t steps = session.opening_steps[std::size_t(c)];
+        return take_cut(model, opened_levels(model, *session.opening, {steps, steps}), 1, session.boxes, session.kept);
+    }
+    return take_cut(model, session.levels.level, c, session.boxes, session.kept);
+}
+
+double spent_bytes(const Lod& lod) { return double(combined_cost({&lod.cost}).bytes()); }
+
+std::string budget_problem(int level, double budget, double coarsest) {
+    return "--budgets: level " + std::to_string(level) + "'s budget of " + format_number(std::floor(budget)) +
+           " bytes is below the coarsest cut's " + format_number(coarsest) + " bytes";
+}
+
+// Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its box).
+void set_level_within(LodSession& session, int c, double estimate) {
+    if (session.hybrid)
+        session.hybrid_levels[std::size_t(c)] = hybrid_level_within(*session.model, *session.hybrid, estimate);
+    else
+        session.opening_steps[std::size_t(c)] = estimate < 0 ? 0 : longest_prefix_within(session.opening->bytes, estimate);
+}
+
+// The estimates miss a level's real bytes (pages round up to powers of two,
+// each face brings a gutter; error-greedy's leave out the original's
+// textures): while the level spends more than its budget, ask for a level
+// whose estimate lies below every one tried so far, in proportion to the
+// overshoot, and failing that build the coarsest cut once. The estimates fall
+// every time, so this ends. When nothing fits, a sweep (budgets_strict off)
+// takes the cheapest level built.
+Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
+    const int c = lod.current_level;
+    const double budget = level_budget(session, c);
+    const std::size_t level = std::size_t(c);
+    auto estimated = [&] {
+        return session.hybrid ? session.hybrid_levels[level].bytes : session.opening->bytes[session.opening_steps[level]];
+    };
+    double ceiling = estimated(), spent = spent_bytes(lod);
+    std::optional<Lod> cheapest;  // kept only where nothing fitting is no error
+    if (!session.budgets_strict) cheapest = lod;
+    bool coarsest = false;
+    while (spent > budget) {
+        set_level_within(session, c, std::min(ceiling * budget / spent, std::nextafter(ceiling, 0.0)));
+        if (estimated() >= ceiling) {  // no cheaper estimate
+            if (coarsest) {
+                if (!cheapest) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+                return std::move(*cheapest);  // over its budget, as its statistics say
+            }
+            set_level_within(session, c, -1), coarsest = true;
+        }
+        ceiling = std::min(ceiling, estimated());
+        lod = build_cut(session, c, level_cut(session, c), threads);
+        spent = spent_bytes(lod);
+        if (cheapest && spent < spent_bytes(*cheapest)) cheapest = lod;
+    }
+    return lod;
+}
+
+}  // namespace
+
+Lod build_lod(LodSession& session, int current_level, int threads) {
+    const int obtained = session.levels.obtained_levels;
+    if (current_level < 0 || current_level > obtained)
+        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
+                         " (the obtained number of levels)");
+    Lod lod = build_cut(session, current_level, level_cut(session, current_level), threads);
+    return session.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
+}
+
+void check_budget_reachable(LodSession& session, int level, int threads) {
+    if (session.parameters.budgets.empty() || level < 1 || level > int(session.parameters.budgets.size())) return;
+    // The coarsest cut built for real, its level then set back as it was.
+    const HybridLevel hybrid_level = session.hybrid ? session.hybrid_levels[std::size_t(level)] : HybridLevel{};
+    const std::size_t opening_steps = session.opening ? session.opening_steps[std::size_t(level)] : 0;
+    set_level_within(session, level, -1);
+    const double coarsest = spent_bytes(build_cut(session, level, level_cut(session, level), threads));
+    if (session.hybrid) session.hybrid_levels[std::size_t(level)] = hybrid_level;
+    else session.opening_steps[std::size_t(level)] = opening_steps;
+    if (coarsest > level_budget(session, level))
+        throw_input_error(session.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
+}
+
+}  // namespace boxlod

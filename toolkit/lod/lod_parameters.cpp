@@ -1,0 +1,196 @@
+#include "toolkit/lod/lod_parameters.h"
+
+#include "base/enum_table.h"
+#include "base/key_values.h"
+
+#include <charconv>
+#include <cmath>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace boxlod {
+namespace {
+
+ParameterDeclaration named(const char* key, const char* option, const char* value_name, std::string help) {
+    ParameterDeclaration d;
+    d.key = key, d.option = option, d.value_name = value_name, d.help = std::move(help);
+    return d;
+}
+
+// Declarations by kind; the member pointer is the parameter's field.
+template <typename Number>
+ParameterDeclaration number_parameter(const char* key, const char* option, const char* value_name, const char* help,
+                                      Number LodParameters::*field, NumberRange range, bool power_of_two = false) {
+    ParameterDeclaration d = named(key, option, value_name, help);
+    d.range = range, d.power_of_two = power_of_two;
+    d.format = [field](const LodParameters& p) {
+        if constexpr (std::is_integral_v<Number>) return std::to_string(p.*field);
+        else return format_number(p.*field);
+    };
+    d.parse = [field, range, power_of_two](const std::string& text, LodParameters& p) -> std::string {
+        Number value{};
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(double(value)) ||
+            !range.contains(double(value)))
+            return out_of_range_message(range, text);
+        if (power_of_two) {
+            auto whole = static_cast<long long>(value);
+            if (whole <= 0 || (whole & (whole - 1)) != 0)
+                return "expected a power of two in " + range_text(range) + ", got '" + text + "'";
+        }
+        p.*field = value;
+        return "";
+    };
+    d.number = [field](const LodParameters& p) { return double(p.*field); };
+    return d;
+}
+
+ParameterDeclaration yes_no_parameter(const char* key, const char* option, const char* help, bool LodParameters::*field) {
+    ParameterDeclaration d = named(key, option, "", help);
+    d.format = [field](const LodParameters& p) { return std::string(p.*field ? "true" : "false"); };
+    d.parse = [field](const std::string& text, LodParameters& p) -> std::string {
+        if (text != "true" && text != "false") return "expected true or false, got '" + text + "'";
+        p.*field = text == "true";
+        return "";
+    };
+    return d;
+}
+
+template <typename Enum>
+ParameterDeclaration enum_parameter(const char* key, const char* option, const char* value_name, const std::string& help,
+                                    Enum LodParameters::*field, std::span<const EnumEntry<Enum>> table) {
+    ParameterDeclaration d = named(key, option, value_name, help + enum_names(table, ", ", " or "));
+    d.sweep_key = false;  // a sweep lists the values it varies (level_modes = ..., render_modes = ...)
+    d.format = [field, table](const LodParameters& p) { return std::string(enum_name(table, p.*field)); };
+    d.parse = [field, table](const std::string& text, LodParameters& p) -> std::string {
+        if (!parse_enum(table, text, p.*field)) return "unknown value '" + text + "' (" + enum_names(table) + ")";
+        return "";
+    };
+    return d;
+}
+
+ParameterDeclaration budgets_parameter() {
+    ParameterDeclaration d =
+        named("budgets", "budgets", "B1,...,BN",
+              "beyond the manual, for level modes error-greedy and hybrid: one level per byte budget, level c the best "
+              "cut whose bytes (mesh + GPU-compressed textures) stay within the c-th, descending: fractions of the "
+              "original's bytes (0.5,0.25,0.1,0.05) or sizes (2MB,500kB); none: wanted_levels levels at budgets "
+              "geometric from the coarsest cut to the original (docs/design.md: Levels by byte budget)");
+    d.format = [](const LodParameters& p) { return format_budgets(p.budgets); };
+    d.parse = [](const std::string& text, LodParameters& p) { return parse_budgets(text, p.budgets); };
+    return d;
+}
+
+ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
+    declaration.sweep_key = false;
+    return declaration;
+}
+
+std::vector<ParameterDeclaration> make_declarations() {
+    namespace r = parameter_range;
+    using P = LodParameters;
+    return {
+        enum_parameter("level_mode", "level-mode", "M", "how nodes get their level values: ", &P::level_mode, level_modes()),
+        number_parameter("wanted_levels", "wanted-levels", "N", "wanted number of levels for the box modes",
+                         &P::wanted_levels, r::wanted_levels),
+        budgets_parameter(),
+        // A sweep measures every level it lists (`levels = ...`).
+        not_in_sweeps(number_parameter("current_level", "level", "C",
+                                       "current level, 0 (original) .. obtained levels (one box)", &P::current_level,
+                                       r::current_level)),
+        enum_parameter("box_kind", "box", "KIND", "boxes for the box modes: ", &P::box_kind, box_kinds()),
+        enum_parameter("interpolation", "interpolation", "I", "how box modes map box values to levels: ",
+                       &P::interpolation, interpolations()),
+        yes_no_parameter("keep_small_subtrees", "keep-small-subtrees",
+                         "beyond the manual: a sub-tree of at most 6 faces keeps its geometry instead of a 6-face "
+                         "box, so no level draws more faces than the original",
+                         &P::keep_small_subtrees),
+        yes_no_parameter("keep_cheaper_subtrees", "box-cheaper-subtrees",
+                         "as the manual, box every sub-tree, also those whose mesh costs fewer bytes than their textured "
+                         "box would (by default such a node keeps its geometry, so no box costs more than what it replaces)",
+                         &P::keep_cheaper_subtrees),
+        yes_no_parameter("crop_faces", "no-crop",
+                         "keep every baked face whole instead of cropping it to its covered texels (and dropping "
+                         "faces with none)",
+                         &P::crop_faces),
+        number_parameter("flat_faces", "flat-faces", "N",
+                         "beyond the manual: a face whose (cropped) texels are at most N on its longer side and at "
+                         "least half covered is drawn in one colour, its covered texels' mean, from a shared 4x4 "
+                         "swatch without gutters, in levels whose pages it makes smaller (docs/design.md: Atlas); 0: off",
+                         &P::flat_faces, r::flat_faces),
+        number_parameter("fovy", "fovy", "DEG", "texture sizing: vertical field of view in degrees", &P::fovy, r::fovy),
+        // A sweep sizes for its own `distances` (multiples of the framing distance).
+        not_in_sweeps(number_parameter("distance", "distance", "D",
+                                       "texture sizing: camera distance in metres, 0: the distance that frames the model",
+                                       &P::distance, r::distance)),
+        number_parameter("resolution", "resolution", "R", "texture sizing: screen height in pixels", &P::resolution,
+                         r::resolution),
+        number_parameter("min_texture_size", "min-texture-size", "S", "smallest LoD texture page side, a power of two",
+                         &P::min_texture_size, r::texture_size, true),
+        number_parameter("max_texture_size", "max-texture-size", "S", "largest LoD texture page side, a power of two",
+                         &P::max_texture_size, r::texture_size, true),
+        enum_parameter("render_mode", "render-mode", "M", "how the LoD is drawn (untextured LoDs are not baked): ",
+                       &P::render_mode, render_modes()),
+        number_parameter("parallax_scale", "parallax-scale", "S", "parallax height scale, in texture units, for height maps that state no depth (LoD pages state theirs, in metres)",
+                         &P::parallax_scale, r::parallax),
+        number_parameter("parallax_bias", "parallax-bias", "B", "parallax height bias, in texture units, as the scale",
+                         &P::parallax_bias, r::parallax),
+    };
+}
+
+}  // namespace
+
+std::string ParameterDeclaration::help_text() const {
+    if (is_flag()) return help;
+    return help + " (default " + format(LodParameters{}) + ")";
+}
+
+std::span<const ParameterDeclaration> lod_parameter_declarations() {
+    static const std::vector<ParameterDeclaration> declarations = make_declarations();
+    return declarations;
+}
+
+const ParameterDeclaration* find_lod_parameter(const std::string& key) {
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (d.key == key) return &d;
+    return nullptr;
+}
+
+void set_manual(LodParameters& p) {
+    p.keep_small_subtrees = false, p.keep_cheaper_subtrees = false;
+    p.min_texture_size = 256;
+    p.flat_faces = 0;
+}
+
+int asked_levels(const LodParameters& p) {
+    return p.budgets.empty() || !orders_by_bytes(p.level_mode) ? p.wanted_levels : int(p.budgets.size());
+}
+
+void validate_parameters(const LodParameters& p, const std::string& where) {
+    auto fail = [&](const std::string& what) { throw_input_error(where, "", what); };
+    auto check = [&](const std::string& key, double value, const NumberRange& range) {
+        if (!range.contains(value)) fail(key + ": " + out_of_range_message(range, format_number(value)));
+    };
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (d.range) check(d.key, d.number(p), *d.range);
+    namespace r = parameter_range;
+    if (p.distance > 0 && p.distance < r::min_positive_distance) fail("distance: 0 (the framing distance) or at least 0.001 m");
+    if (p.camera) {
+        check("camera_fovy", p.camera->fovy_degrees, r::fovy);
+        if (std::string problem = camera_problem(*p.camera); !problem.empty()) fail(problem);
+    }
+    if (p.light) {
+        if (!p.light->position.allFinite()) fail("light_position is not finite");
+        check("light_ambient", p.light->ambient, light_intensity_range);
+        check("light_diffuse", p.light->diffuse, light_intensity_range);
+        check("light_specular", p.light->specular, light_intensity_range);
+        check("light_shininess", p.light->shininess, shininess_range);
+    }
+    auto power_of_two = [](int v) { return v > 0 && (v & (v - 1)) == 0; };
+    if (!power_of_two(p.min_texture_size) || !power_of_two(p.max_texture_size) || p.min_texture_size > p.max_texture_size ||
+        p.max_texture_size < 16)
+        fail("min_texture_size and max_texture_size must be powers of two with 16 <= max and min <= max");
+}
+
+}  // namespace boxlod

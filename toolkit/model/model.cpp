@@ -1,0 +1,137 @@
+#include "toolkit/model/model.h"
+
+#include "base/input_error.h"
+#include "base/key_values.h"
+
+#include <cmath>
+
+namespace boxlod {
+
+TextureDigest texture_digest(const Texture& texture) {
+    TextureDigest d{14695981039346656037ull, 0x243F6A8885A308D3ull};
+    auto mix = [&](const void* data, std::size_t bytes) {
+        const auto* p = static_cast<const std::uint8_t*>(data);
+        for (std::size_t i = 0; i < bytes; ++i) {
+            d.first = (d.first ^ p[i]) * 1099511628211ull;
+            d.second = (d.second + p[i] + 1) * 0x9E3779B97F4A7C15ull;
+        }
+    };
+    int layout[] = {texture.image.width, texture.image.height, texture.image.channels, texture.image16.width,
+                    texture.image16.height, texture.image16.channels, int(texture.wrap)};
+    mix(layout, sizeof layout);
+    mix(texture.image.pixels.data(), texture.image.pixels.size());
+    mix(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t));
+    return d;
+}
+
+std::vector<TextureSlot<int*>> texture_slots(Material& m) {
+    std::vector<TextureSlot<int*>> slots = {{&m.base_color_texture, TextureUse::color, MaterialMap::base_color},
+                                            {&m.normal_texture, TextureUse::normal, MaterialMap::normal},
+                                            {&m.height_texture, TextureUse::scalar, MaterialMap::height},
+                                            {&m.specular_texture, TextureUse::color, MaterialMap::specular}};
+    if (m.specular_extension)
+        slots.insert(slots.end(), {{&m.specular_extension->texture, TextureUse::scalar, MaterialMap::specular},
+                                   {&m.specular_extension->color_texture, TextureUse::color, MaterialMap::specular}});
+    return slots;
+}
+
+std::vector<TextureSlot<int>> texture_slots(const Material& material) {
+    std::vector<TextureSlot<int>> slots;
+    for (auto [index, use, map] : texture_slots(const_cast<Material&>(material))) slots.push_back({*index, use, map});
+    return slots;
+}
+
+int add_node(Model& model, int parent, std::string name) {
+    int index = int(model.nodes.size());
+    Node& node = model.nodes.emplace_back();
+    node.name = std::move(name);
+    node.parent = parent;
+    if (parent >= 0) model.nodes[parent].children.push_back(index);
+    return index;
+}
+
+int tree_depth(const Model& model) {
+    // Parents precede children, so one forward pass gives every node's depth.
+    std::vector<int> depth(model.nodes.size(), 0);
+    int deepest = 0;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        int parent = model.nodes[i].parent;
+        if (parent >= 0) depth[i] = depth[parent] + 1;
+        deepest = std::max(deepest, depth[i]);
+    }
+    return deepest;
+}
+
+Bounds model_bounds(const Model& model) {
+    Bounds bounds;
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives)
+            for (const Eigen::Vector3f& p : primitive.positions) bounds.add(p);
+    return bounds;
+}
+
+void validate_model(const Model& model) {
+    const std::string& file = model.source;
+    if (model.nodes.empty()) throw_input_error(file, "", "the scene has no nodes");
+    bool any_triangle = false;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        const Node& node = model.nodes[i];
+        std::string place = "node " + std::to_string(i) + (node.name.empty() ? "" : " '" + node.name + "'");
+        if ((i == 0) != (node.parent < 0) || node.parent >= int(i))
+            throw_input_error(file, place, "the node hierarchy is not a tree");
+        for (std::size_t p = 0; p < node.primitives.size(); ++p) {
+            const Primitive& primitive = node.primitives[p];
+            std::string where = place + " primitive " + std::to_string(p);
+            std::size_t n = primitive.positions.size();
+            if (primitive.indices.size() % 3 != 0) throw_input_error(file, where, "index count is not a multiple of 3");
+            for (std::uint32_t index : primitive.indices)
+                if (index >= n)
+                    throw_input_error(file, where, "vertex index " + std::to_string(index) + " out of range (" +
+                                                       std::to_string(n) + " vertices)");
+            auto check_size = [&](std::size_t size, const char* what) {
+                if (size != 0 && size != n) throw_input_error(file, where, std::string(what) + " count differs from position count");
+            };
+            check_size(primitive.normals.size(), "normal");
+            check_size(primitive.uvs.size(), "texture coordinate");
+            check_size(primitive.tangents.size(), "tangent");
+            for (const auto& v : primitive.positions)
+                if (!v.allFinite()) throw_input_error(file, where, "position is NaN or infinite");
+            for (const auto& v : primitive.normals)
+                if (!v.allFinite()) throw_input_error(file, where, "normal is NaN or infinite");
+            for (const auto& v : primitive.uvs)
+                if (!v.allFinite()) throw_input_error(file, where, "texture coordinate is NaN or infinite");
+            for (const auto& v : primitive.tangents)
+                if (!v.allFinite()) throw_input_error(file, where, "tangent is NaN or infinite");
+            if (primitive.material >= int(model.materials.size()))
+                throw_input_error(file, where, "material index out of range");
+            for (std::size_t t = 0; !any_triangle && t < primitive.indices.size(); t += 3) {
+                const auto& a = primitive.positions[primitive.indices[t]];
+                any_triangle = (primitive.positions[primitive.indices[t + 1]] - a).cross(primitive.positions[primitive.indices[t + 2]] - a)
+                                   .squaredNorm() > 0;
+            }
+        }
+        if (node.scope && !(node.scope->center.allFinite() && node.scope->axes.allFinite() &&
+                            node.scope->half_extents.allFinite()))
+            throw_input_error(file, place, "scope is NaN or infinite");
+    }
+    for (const Material& material : model.materials) {
+        const std::string place = "material '" + material.name + "'";
+        for (const auto& slot : texture_slots(material))
+            if (slot.index >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
+        if (!material.base_color.allFinite() || !material.specular_color.allFinite())
+            throw_input_error(file, place, "colour is NaN or infinite");
+        if (const auto& extension = material.specular_extension;
+            extension && !(extension->factor >= 0 && extension->factor <= 1 &&
+                           (extension->color_factor.array() >= specular_color_factor_range.min).all() &&
+                           (extension->color_factor.array() <= specular_color_factor_range.max).all()))
+            throw_input_error(file, place, "KHR_materials_specular factor out of range");
+        if (!shininess_range.contains(material.shininess))
+            throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
+        if (!height_depth_range.contains(material.height_depth))
+            throw_input_error(file, place,
+                              "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
+    }
+    if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
+}
+
+}  // namespace boxlod

@@ -1,0 +1,27 @@
+#include "toolkit/model/vertex_layout.h"
+
+#include <algorithm>
+
+namespace boxlod {
+
+VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
+    const Material* material = primitive.material >= 0 && primitive.material < int(model.materials.size())
+                                   ? &model.materials[std::size_t(primitive.material)]
+                                   : nullptr;
+    const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
+    VertexLayout layout;
+    layout.normals = !primitive.normals.empty();
+    const auto slots = material ? texture_slots(*material) : std::vector<TextureSlot<int>>{};
+    const bool sampled = std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.index >= 0; });
+    layout.uvs = !primitive.uvs.empty() && sampled;
+    layout.tangents = !primitive.tangents.empty() && mapped;
+    layout.index_bytes = primitive.positions.size() <= 65535 ? 2 : 4;
+    return layout;
+}
+
+std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model) {
+    const VertexLayout layout = vertex_layout(primitive, model);
+    return layout.vertex_bytes() * primitive.positions.size() + std::uint64_t(layout.index_bytes) * primitive.indices.size();
+}
+
+}  // namespace boxlod
