@@ -65,8 +65,9 @@ Light light_for_camera(const Camera& camera) {
 
 Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
     constexpr double frame_bytes_per_pixel = sizeof(Eigen::Vector4f) + sizeof(float) + sizeof(Eigen::Vector3f);
-    check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame",
-                 frame_bytes_per_pixel * double(width) * double(height));
+    const double bytes = frame_bytes_per_pixel * double(width) * double(height);
+    // The message only when refused: small frames are made by the thousand (hybrid.h).
+    if (bytes > memory_budget()) check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame", bytes);
     Frame frame;
     frame.width = width;
     frame.height = height;
