@@ -1,9 +1,9 @@
 #include "base/atomic_write.h"
 
 #include "base/input_error.h"
+#include "base/input_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -206,8 +206,8 @@ void check_output_file(const std::string& path) {
 
 void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions) {
     check_output_file(path);
-    std::string extension = fs::path(path).extension().string(), names;
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lowercase_extension(path);
+    std::string names;
     for (std::string_view wanted : extensions) {
         if (extension == wanted) return;
         names += (names.empty() ? "" : " or ") + std::string(wanted);

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -36,6 +37,12 @@ std::string read_input_file(const std::string& path, const std::string& kind) {
     text << in.rdbuf();
     if (in.bad()) throw_input_error(path, "", "cannot read " + kind);
     return std::move(text).str();
+}
+
+std::string lowercase_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
 }
 
 }  // namespace boxlod

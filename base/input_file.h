@@ -16,4 +16,8 @@ std::size_t check_input_file(const std::string& path, const std::string& kind);
 // The whole file, after check_input_file.
 std::string read_input_file(const std::string& path, const std::string& kind);
 
+// A file name's extension in lower case, with its dot (".glb"; "" without one):
+// what picks a reader or states an output's format.
+std::string lowercase_extension(const std::string& path);
+
 }  // namespace boxlod

@@ -116,8 +116,7 @@ Model import_with_assimp(const std::string& path) {
 
 Model import_with_assimp_in_process(const std::string& path) {
     std::string bytes = read_input_file(path, "model file");
-    std::string extension = fs::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string extension = lowercase_extension(path);
     check_assimp_input(bytes, extension, path);
     Assimp::Importer importer;
     // No triangulation here (see convert_mesh); validation rejects inconsistent data.

@@ -5,21 +5,11 @@
 #include "toolkit/formats/assimp_io.h"
 #include "toolkit/formats/gltf_io.h"
 
-#include <algorithm>
-#include <filesystem>
-
 namespace boxlod {
-namespace {
-std::string lower_extension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
-}  // namespace
 
 Model load_model(const std::string& path, int chain_level) {
     check_input_file(path, "model file");
-    std::string extension = lower_extension(path);
+    std::string extension = lowercase_extension(path);
     if (extension == ".gltf" || extension == ".glb") return import_gltf(path, chain_level);
     if (chain_level > 0) throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
     static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",
@@ -31,7 +21,7 @@ Model load_model(const std::string& path, int chain_level) {
 }
 
 void save_model(const Model& model, const std::string& path) {
-    std::string extension = lower_extension(path);
+    std::string extension = lowercase_extension(path);
     if (extension != ".gltf" && extension != ".glb")
         throw_input_error(path, "", "models are saved as .gltf or .glb");
     export_gltf(model, path);
