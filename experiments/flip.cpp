@@ -177,17 +177,6 @@ Opponent to_ycxcz(const Image8& image, int threads) {
     return out;
 }
 
-// One row of a channel filtered by its CSF: the weighted sum of its Gaussian terms.
-void csf_row(const Plane& channel, const std::vector<WeightedKernel>& terms, int y, std::vector<double>& scratch,
-             std::vector<double>& term_row, double* out) {
-    std::fill(out, out + channel.width, 0.0);
-    term_row.resize(std::size_t(channel.width));
-    for (const WeightedKernel& term : terms) {
-        filter_separable_row(channel, term.kernel, y, scratch, term_row.data());
-        for (int x = 0; x < channel.width; ++x) out[x] += term.weight * term_row[std::size_t(x)];
-    }
-}
-
 struct Kernels {
     std::array<std::vector<WeightedKernel>, 3> csf;  // per YyCxCz channel
     SeparableKernel edge_x, edge_y, point_x, point_y;
@@ -210,11 +199,23 @@ struct PerceivedRow {
     std::vector<double> scratch, term_row, gx, gy;
 };
 
-void perceive_row(const Opponent& image, const Kernels& k, int y, PerceivedRow& row) {
+// Columns [x_begin, x_end) of one row of a channel filtered by its CSF: the
+// weighted sum of its Gaussian terms.
+void csf_row(const Plane& channel, const std::vector<WeightedKernel>& terms, int y, int x_begin, int x_end,
+             PerceivedRow& row, std::vector<double>& out) {
+    std::fill(out.begin() + x_begin, out.begin() + x_end, 0.0);
+    row.term_row.resize(std::size_t(channel.width));
+    for (const WeightedKernel& term : terms) {
+        filter_separable_row(channel, term.kernel, y, x_begin, x_end, row.scratch, row.term_row.data());
+        for (int x = x_begin; x < x_end; ++x) out[x] += term.weight * row.term_row[std::size_t(x)];
+    }
+}
+
+void perceive_row(const Opponent& image, const Kernels& k, int y, int x_begin, int x_end, PerceivedRow& row) {
     const std::size_t width = std::size_t(image.channels[0].width);
     for (auto* v : {&row.lab[0], &row.lab[1], &row.lab[2], &row.edges, &row.points, &row.gx, &row.gy}) v->resize(width);
-    for (int c = 0; c < 3; ++c) csf_row(image.channels[c], k.csf[c], y, row.scratch, row.term_row, row.lab[c].data());
-    for (std::size_t x = 0; x < width; ++x) {
+    for (int c = 0; c < 3; ++c) csf_row(image.channels[c], k.csf[c], y, x_begin, x_end, row, row.lab[c]);
+    for (int x = x_begin; x < x_end; ++x) {
         // The colour pipeline: back to linear RGB, clamped, then CIELAB with the Hunt adjustment.
         Vector3 v(row.lab[0][x], row.lab[1][x], row.lab[2][x]);
         Vector3 rgb = (xyz_to_rgb() * ycxcz_to_xyz(v)).cwiseMax(0.0).cwiseMin(1.0);
@@ -224,12 +225,45 @@ void perceive_row(const Opponent& image, const Kernels& k, int y, PerceivedRow& 
     // The feature pipeline filters Y / Yn = (Yy + 16) / 116: every detector's
     // weights sum to 0, so filtering Yy and dividing by 116 is the same.
     auto magnitude = [&](const SeparableKernel& along_x, const SeparableKernel& along_y, std::vector<double>& out) {
-        filter_separable_row(image.channels[0], along_x, y, row.scratch, row.gx.data());
-        filter_separable_row(image.channels[0], along_y, y, row.scratch, row.gy.data());
-        for (std::size_t x = 0; x < width; ++x) out[x] = std::sqrt(row.gx[x] * row.gx[x] + row.gy[x] * row.gy[x]) / 116;
+        filter_separable_row(image.channels[0], along_x, y, x_begin, x_end, row.scratch, row.gx.data());
+        filter_separable_row(image.channels[0], along_y, y, x_begin, x_end, row.scratch, row.gy.data());
+        for (int x = x_begin; x < x_end; ++x) out[x] = std::sqrt(row.gx[x] * row.gx[x] + row.gy[x] * row.gy[x]) / 116;
     };
     magnitude(k.edge_x, k.edge_y, row.edges);
     magnitude(k.point_x, k.point_y, row.points);
+}
+
+// The largest radius of any of FLIP's filters: a pixel's perceived values
+// depend on the pixels at most this far from it, horizontally or vertically.
+int reach(const Kernels& k) {
+    std::size_t taps = 0;
+    for (const auto& terms : k.csf)
+        for (const WeightedKernel& t : terms) taps = std::max({taps, t.kernel.horizontal.size(), t.kernel.vertical.size()});
+    for (const SeparableKernel* f : {&k.edge_x, &k.edge_y, &k.point_x, &k.point_y})
+        taps = std::max({taps, f->horizontal.size(), f->vertical.size()});
+    return int(taps / 2);
+}
+
+// Per row, the columns [begin, end) whose error can differ from 0: those
+// within `reach` of a pixel where the images differ. Elsewhere both images'
+// filters see the same pixels, so both perceive the same values bit for bit
+// and the error is exactly 0 (identical parts of an LoD and its original
+// are skipped, not computed).
+std::vector<std::pair<int, int>> columns_to_compare(const Image8& a, const Image8& b, int reach) {
+    const int width = a.width, height = a.height;
+    std::vector<std::pair<int, int>> differing(std::size_t(height), {width, 0}), out(differing.size(), {0, 0});
+    for (int y = 0; y < height; ++y) {
+        auto& [begin, end] = differing[std::size_t(y)];
+        for (int x = 0; x < width; ++x)
+            if (!std::equal(a.at(x, y), a.at(x, y) + 3, b.at(x, y))) begin = std::min(begin, x), end = x + 1;
+    }
+    for (int y = 0; y < height; ++y) {
+        int begin = width, end = 0;
+        for (int z = std::max(0, y - reach); z <= std::min(height - 1, y + reach); ++z)
+            begin = std::min(begin, differing[std::size_t(z)].first), end = std::max(end, differing[std::size_t(z)].second);
+        if (begin < end) out[std::size_t(y)] = {std::max(0, begin - reach), std::min(width, end + reach)};
+    }
+    return out;
 }
 
 void check_rgb(const Image8& image) {
@@ -244,12 +278,13 @@ FlipReference prepare_flip_reference(const Image8& reference, double ppd, int th
     const Opponent opponent = to_ycxcz(reference, threads);
     FlipReference out;
     out.pixels_per_degree = ppd;
+    out.image = reference;
     for (Plane* p : {&out.lab[0], &out.lab[1], &out.lab[2], &out.edges, &out.points})
         *p = Plane(reference.width, reference.height, 1);
     parallel_for(std::size_t(reference.height), threads, [&](std::size_t row) {
         thread_local PerceivedRow r;
         const int y = int(row);
-        perceive_row(opponent, kernels, y, r);
+        perceive_row(opponent, kernels, y, 0, reference.width, r);
         for (int c = 0; c < 3; ++c) std::copy(r.lab[c].begin(), r.lab[c].end(), out.lab[c].at(0, y));
         std::copy(r.edges.begin(), r.edges.end(), out.edges.at(0, y));
         std::copy(r.points.begin(), r.points.end(), out.points.at(0, y));
@@ -268,23 +303,29 @@ FlipResult flip(const FlipReference& reference, const Image8& test, int threads)
     FlipResult result;
     result.error = Plane(width, height, 1);
     std::vector<double> row_sums(std::size_t(height), 0.0);
+    const std::vector<std::pair<int, int>> columns = columns_to_compare(reference.image, test, reach(kernels));
     parallel_for(row_sums.size(), threads, [&](std::size_t row) {
         thread_local PerceivedRow t;
         const int y = int(row);
-        perceive_row(test_opponent, kernels, y, t);
+        const auto [x_begin, x_end] = columns[row];
+        if (x_begin == x_end) return;
+        perceive_row(test_opponent, kernels, y, x_begin, x_end, t);
         const double* r_lab[3] = {reference.lab[0].at(0, y), reference.lab[1].at(0, y), reference.lab[2].at(0, y)};
         const double *r_edges = reference.edges.at(0, y), *r_points = reference.points.at(0, y);
         double* error_row = result.error.at(0, y);
         double sum = 0;
-        for (int x = 0; x < width; ++x) {
+        for (int x = x_begin; x < x_end; ++x) {
             Vector3 p(r_lab[0][x], r_lab[1][x], r_lab[2][x]), q(t.lab[0][x], t.lab[1][x], t.lab[2][x]);
             // Colour error: HyAB^qc, [0, pc cmax) mapped linearly onto [0, pt), the rest onto [pt, 1].
-            double color = std::pow(hyab(p, q), qc);
+            // (pow(0, y > 0) is 0 and pow(x, 1) is x: equal pixels skip both pows.)
+            const double distance = hyab(p, q);
+            double color = distance == 0 ? 0 : std::pow(distance, qc);
             color = color < pccmax ? pt / pccmax * color : pt + (color - pccmax) / (cmax - pccmax) * (1 - pt);
             // Feature error: the larger of the edge and point differences.
             double edge = std::abs(r_edges[x] - t.edges[x]), point = std::abs(r_points[x] - t.points[x]);
-            double feature = std::pow(std::max(edge, point) / std::numbers::sqrt2, qf);
-            double error = std::pow(color, 1 - feature);
+            const double largest = std::max(edge, point);
+            double feature = largest == 0 ? 0 : std::pow(largest / std::numbers::sqrt2, qf);
+            double error = feature == 0 ? color : std::pow(color, 1 - feature);
             error_row[x] = error;
             sum += error;
         }

@@ -42,6 +42,7 @@ FlipResult flip(const Image8& reference, const Image8& test, double pixels_per_d
 // magnitudes. flip(prepare_flip_reference(r, ppd), t) == flip(r, t, ppd), bit for bit.
 struct FlipReference {
     double pixels_per_degree = 67;
+    Image8 image;  // the reference itself: where a test image equals it, so does the perception
     Plane lab[3], edges, points;
 };
 FlipReference prepare_flip_reference(const Image8& reference, double pixels_per_degree = 67, int threads = 0);

@@ -28,6 +28,9 @@ Plane filter_separable(const Plane& in, const SeparableKernel& kernel, int threa
 // `scratch` is any vector, reused between calls.
 void filter_separable_row(const Plane& in, const SeparableKernel& kernel, int y, std::vector<double>& scratch,
                           double* out);
+// Only out[x_begin, x_end) of that row, the same bits as the whole row's.
+void filter_separable_row(const Plane& in, const SeparableKernel& kernel, int y, int x_begin, int x_end,
+                          std::vector<double>& scratch, double* out);
 
 // exp(-x^2 / (2 sigma^2)) at x = -radius..radius, scaled to sum 1.
 std::vector<double> sampled_gaussian(double sigma, int radius);

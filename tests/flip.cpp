@@ -134,6 +134,44 @@ TEST(Flip, APreparedReferenceServesManyTestImages) {
     }
 }
 
+// Where both images are equal within the filters' reach FLIP skips the
+// work and writes 0; one differing pixel must still reach every pixel its
+// widest filter (the blue-yellow CSF, radius 10 at 67 ppd) reaches, and no other.
+TEST(Flip, OneDifferingPixelReachesTheWidestFilterAndNoFarther) {
+    Image8 a = flat_image(64, 48, 128, 128, 128), b = a;
+    b.at(30, 20)[2] = 255;  // bluer: the Cz channel, whose CSF is the widest
+    FlipResult r = flip(a, b, 67, 2);
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            bool within = std::abs(x - 30) <= 10 && std::abs(y - 20) <= 10;
+            if (within) {
+                EXPECT_GT(*r.error.at(x, y), 0) << x << "," << y;
+            } else {
+                EXPECT_EQ(*r.error.at(x, y), 0) << x << "," << y;
+            }
+        }
+    double sum = 0;
+    for (double e : r.error.pixels) sum += e;
+    EXPECT_NEAR(r.mean, sum / (64 * 48), 1e-15);
+}
+
+// An image equal to the reference in its left half: the right half's errors
+// have the bits they have when the images differ everywhere (skipping the
+// equal columns cannot change how the others are computed).
+TEST(Flip, EqualPartsChangeNothingInTheComparedParts) {
+    Image8 a = pattern_image(90, 70), blurred = box_blur(a, 1), right = a;
+    for (int y = 0; y < 70; ++y) std::copy(blurred.at(45, y), blurred.at(90, y), right.at(45, y));
+    FlipResult everywhere = flip(a, blurred, 67, 2), half = flip(prepare_flip_reference(a), right, 1);
+    for (int y = 0; y < 70; ++y)
+        for (int x = 0; x < 90; ++x) {
+            if (x >= 45 + 10) {
+                EXPECT_EQ(*half.error.at(x, y), *everywhere.error.at(x, y)) << x << "," << y;
+            } else if (x < 45 - 10) {
+                EXPECT_EQ(*half.error.at(x, y), 0) << x << "," << y;
+            }
+        }
+}
+
 TEST(Flip, BadInputIsRejected) {
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(11, 10)), std::invalid_argument);
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(10, 10), 0), std::invalid_argument);

@@ -62,6 +62,23 @@ TEST(SeparableFilter, SameBitsForAnyThreadCount) {
     for (int threads : {2, 3, 8}) EXPECT_EQ(filter_separable(in, kernel, threads).pixels, one.pixels) << threads;
 }
 
+// FLIP filters only the columns where two images differ: any part of a row,
+// at either edge or inside, with a kernel wider than the part, must have the
+// bits the whole row has there.
+TEST(SeparableFilter, PartOfARowHasTheBitsOfTheWholeRow) {
+    Plane in = ramp_plane(53, 19);
+    SeparableKernel kernel{sampled_gaussian(3.0, 9), sampled_gaussian(1.5, 4)};
+    Plane whole = filter_separable(in, kernel, 1);
+    std::vector<double> scratch, row(53, -1.0);
+    for (int y : {0, 7, 18})
+        for (auto [begin, end] : {std::pair{0, 53}, std::pair{0, 5}, std::pair{50, 53}, std::pair{10, 40}, std::pair{3, 4}}) {
+            std::fill(row.begin(), row.end(), -1.0);
+            filter_separable_row(in, kernel, y, begin, end, scratch, row.data());
+            for (int x = 0; x < 53; ++x)
+                EXPECT_EQ(row[std::size_t(x)], x >= begin && x < end ? *whole.at(x, y) : -1.0) << y << ": " << x;
+        }
+}
+
 TEST(SeparableFilter, EvenKernelsAreRejected) {
     EXPECT_THROW(filter_separable(Plane(4, 4, 1), {{0.5, 0.5}, {1}}, 1), std::invalid_argument);
 }

@@ -103,7 +103,7 @@ void bm_iou(benchmark::State& state) {
 }
 
 void sizes_and_threads(benchmark::internal::Benchmark* b) {
-    for (auto [w, h] : {std::pair{512, 512}, std::pair{1920, 1080}})
+    for (auto [w, h] : {std::pair{64, 64}, std::pair{256, 256}, std::pair{512, 512}, std::pair{1920, 1080}})
         for (int threads : {1, 2}) b->Args({w, h, threads});
     b->Unit(benchmark::kMillisecond)->UseRealTime();
 }
