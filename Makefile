@@ -74,11 +74,11 @@ fuzz:
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_targets
 	@scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
-# Benchmarks against their peers, in one run each (the rasterizer repeated, below; docs/performance.md).
-# Each writes its JSON to $(BUILD)/bench/; ratio_table.py prints them as one table.
+# Benchmarks against their peers (docs/performance.md), each repeated with
+# boxlod's and the peer's runs interleaved at random, so both see the same
+# states of a shared machine; ratio_table.py prints the medians with their
+# spread as one table, naming the CPU. Each writes its JSON to $(BUILD)/bench/.
 BENCHMARKS = rasterizer metrics png simplification city
-# The rasterizer against llvmpipe, the noisiest ratios on a shared machine:
-# repeated, boxlod's and the peer's runs interleaved at random, medians shown.
 BENCH_REPETITIONS ?= 5
 REPEATED = --benchmark_repetitions=$(BENCH_REPETITIONS) --benchmark_enable_random_interleaving=true
 bench:
@@ -87,7 +87,7 @@ bench:
 	@cmake --build $(BUILD) -j $(JOBS) --target $(BENCHMARKS:%=%_benchmark)
 	@mkdir -p $(BUILD)/bench
 	@for b in $(BENCHMARKS); do \
-	  $(BUILD)/experiments/$${b}_benchmark $$( [ $$b = rasterizer ] && echo $(REPEATED) ) \
+	  $(BUILD)/experiments/$${b}_benchmark $(REPEATED) \
 	    --benchmark_out=$(BUILD)/bench/$$b.json --benchmark_out_format=json || exit 1; done
 	@LP_NUM_THREADS=1 $(BUILD)/experiments/rasterizer_benchmark --benchmark_filter='_frame/1/' $(REPEATED) \
 	  --benchmark_out=$(BUILD)/bench/rasterizer_1_thread.json --benchmark_out_format=json

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -45,6 +46,7 @@ struct PartialOutputs {
     std::set<std::string> temporaries;
     std::vector<PendingRename> pending;
     std::vector<std::string> group_files;
+    std::set<std::string> staging_folders;  // of OutputFolders not yet committed
     int open_groups = 0;
     int unnamed_pending = 0;  // unnamed files open (written, or waiting for their group)
 };
@@ -130,7 +132,7 @@ void remove_stale_temporaries(const fs::path& directory) {
         long owner = temporary_owner(it->path().filename().string());
         if (owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH) {
             std::error_code ignored;
-            fs::remove(it->path(), ignored);
+            fs::remove_all(it->path(), ignored);  // a file, or an OutputFolder's staging folder
         }
     }
 }
@@ -271,6 +273,90 @@ OutputGroup::~OutputGroup() {
     --outputs.open_groups;
 }
 
+namespace {
+
+// Whether `folder` may be swapped for a new one: a real folder (no link, no
+// mount point), not the working folder or one above it, holding only what the
+// command writes.
+bool replaceable(const fs::path& folder, const std::function<bool(const std::string&)>& ours) {
+    std::error_code error;
+    if (fs::is_symlink(folder, error)) return false;
+    if (!fs::exists(folder, error)) return true;
+    if (!fs::is_directory(folder, error)) return false;
+    const fs::path here = fs::current_path(error);
+    for (fs::path p = here; !error && !p.empty(); p = p.parent_path()) {
+        if (fs::equivalent(p, folder, error)) return false;
+        if (p == p.parent_path()) break;
+    }
+    struct stat own {}, parent {};
+    if (::stat(folder.c_str(), &own) != 0 || ::stat(folder.parent_path().c_str(), &parent) != 0 ||
+        own.st_dev != parent.st_dev)
+        return false;
+    for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
+        if (!ours(fs::relative(it->path(), folder, error).string())) return false;
+    return !error;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::string& folder, const std::function<bool(const std::string&)>& ours) {
+    std::error_code error;
+    fs::path absolute = fs::absolute(folder, error).lexically_normal();
+    if (!absolute.has_filename()) absolute = absolute.parent_path();  // "out/" names "out"
+    folder_ = path_ = absolute.string();
+    if (absolute.parent_path() == absolute || !replaceable(absolute, ours)) {
+        fs::create_directories(absolute, error);
+        if (error) throw_input_error(folder, "", "cannot make this folder: " + error.message());
+        return;
+    }
+    fs::create_directories(absolute.parent_path(), error);
+    remove_stale_temporaries(absolute.parent_path());
+    path_ = named_temporary(folder_);
+    {
+        PartialOutputs& outputs = partial_outputs();
+        std::lock_guard lock(outputs.mutex);
+        outputs.staging_folders.insert(path_);
+    }
+    fs::remove_all(path_, error);
+    fs::create_directory(path_, error);
+    if (error) throw_input_error(folder, "", "cannot make its staging folder: " + error.message());
+}
+
+void OutputFolder::commit() {
+    if (!replaces()) {
+        committed_ = true;
+        return;
+    }
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);  // no interruption between the swap and forgetting the staging folder
+    std::error_code error;
+    if (!fs::exists(folder_, error)) {
+        fs::rename(path_, folder_, error);
+    } else if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, folder_.c_str(), RENAME_EXCHANGE) == 0) {
+        fs::remove_all(path_, error);  // the old content, now under the staging name
+        error.clear();                 // what is left of it goes at the next run
+    } else {
+        // No exchange on this file system: the old folder moves aside, then the
+        // new one in; a kill between the two leaves the folder absent, not mixed.
+        const std::string old = named_temporary(folder_ + ".old");
+        fs::rename(folder_, old, error);
+        if (!error) fs::rename(path_, folder_, error);
+        if (!error) fs::remove_all(old, error);
+    }
+    if (error) throw_input_error(folder_, "", "cannot put the new folder in place: " + error.message());
+    outputs.staging_folders.erase(path_);
+    committed_ = true;
+}
+
+OutputFolder::~OutputFolder() {
+    if (committed_ || !replaces()) return;
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+    outputs.staging_folders.erase(path_);
+}
+
 void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes) {
     write_atomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary, std::ios::binary);
@@ -298,6 +384,10 @@ void remove_partial_outputs_on_interrupt() {
         outputs.mutex.lock();  // held until the end: no file is renamed after this
         for (const std::string& file : outputs.temporaries) ::unlink(file.c_str());
         for (const std::string& file : outputs.group_files) ::unlink(file.c_str());
+        for (const std::string& folder : outputs.staging_folders) {
+            std::error_code ignored;
+            fs::remove_all(folder, ignored);
+        }
         std::fprintf(stderr, "boxlod: interrupted (signal %d); partial outputs removed\n", signal);
         std::_Exit(128 + signal);
     }).detach();

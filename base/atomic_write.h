@@ -51,11 +51,37 @@ private:
     bool committed_ = false;
 };
 
+// A folder one command fills whole (a tileset, a city fly-through): written
+// as a staging folder beside it, FOLDER.tmpPID, and put in place with one
+// rename (exchanged with the old folder, which is then removed), so that
+// readers, failures and kills of any kind find the old content or the new,
+// never a mix (docs/testing.md: Hardening). The old folder is replaced only if
+// everything in it is something the command writes (`ours(name)`, for each
+// entry's path relative to the folder) and it is neither a symbolic link, a
+// mount point, nor the working folder or above it; otherwise the files go
+// straight into it, each atomic, and the others stay. A kill leaves the old
+// folder whole and the staging folder beside it, which the next run that
+// writes there removes.
+class OutputFolder {
+public:
+    OutputFolder(const std::string& folder, const std::function<bool(const std::string& name)>& ours);
+    ~OutputFolder();                             // without commit(): the staging folder is removed
+    const std::string& path() const { return path_; }  // where to write the files
+    bool replaces() const { return path_ != folder_; }  // written aside and swapped in
+    void commit();  // throws InputError naming the folder if it cannot be put in place
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+
+private:
+    std::string folder_, path_;
+    bool committed_ = false;
+};
+
 // Call first in main(), before any thread starts: SIGINT, SIGTERM and SIGHUP
-// then remove every temporary being written and every file of an open group,
-// and end the process with status 128 + the signal. (SIGKILL cannot be caught:
-// unnamed files vanish with the process, named temporaries go at the next run,
-// see check_output_file.)
+// then remove every temporary being written, every file of an open group and
+// every staging folder, and end the process with status 128 + the signal.
+// (SIGKILL cannot be caught: unnamed files vanish with the process, named
+// temporaries and staging folders go at the next run, see check_output_file.)
 void remove_partial_outputs_on_interrupt();
 
 }  // namespace boxlod

@@ -18,6 +18,7 @@
 #include "toolkit/selection/strategy_text.h"
 
 #include <algorithm>
+#include <regex>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -328,6 +329,11 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
 }
 
 }  // namespace
+
+bool is_fly_through_file(const std::string& name) {
+    static const std::regex file(R"((frames|timings)\.csv|(detail_[0-9.e+-]+/?)?(frames|frames/frame_\d+\.png|contact_sheet\.png)?)");
+    return !name.empty() && std::regex_match(name, file);
+}
 
 double fly_through_memory(int buildings, const FlyThroughOptions& options) {
     return 3e6 * double(buildings) + render_memory(options.width, options.height) +

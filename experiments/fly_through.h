@@ -137,6 +137,11 @@ struct FlyThroughReport {
 // buildings: 3.6, 2.8 and 2.7 MB each), and a frame with its metrics.
 double fly_through_memory(int buildings, const FlyThroughOptions& options);
 
+// What run_fly_through writes into its folder (a path relative to it):
+// frames.csv, timings.csv, and per run (in detail_D/ when several) frames/,
+// frames/frame_NNNN.png and contact_sheet.png.
+bool is_fly_through_file(const std::string& name);
+
 // The whole command: levels built once, then one pass over the path per detail
 // (options.detail is ignored). Frames go to OUTDIR/frames/frame_NNNN.png and up to 16
 // of them, spread over the path and labelled with frame and faces, to

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <unistd.h>
+#include <vector>
 
 using namespace boxlod;
 namespace fs = std::filesystem;
@@ -135,4 +137,86 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
     EXPECT_TRUE(fs::exists(folder / "kept.txt"));
     for (const auto& entry : fs::directory_iterator(folder))
         EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+namespace {
+bool tileset_file(const std::string& name) { return name == "tileset.json" || name.rfind("tile_", 0) == 0; }
+
+std::vector<std::string> names_in(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+}  // namespace
+
+// A folder that holds only what the command writes is replaced whole: the
+// new content replaces the old in one rename, and nothing of the old set
+// (a tile the new set no longer has) stays beside the new one.
+TEST(OutputFolder, AFolderOfOurFilesIsReplacedWholeInOneStep) {
+    fs::path parent = test::scratch_folder("output_folder_swap"), folder = parent / "tiles";
+    fs::create_directories(folder);
+    for (const char* name : {"tileset.json", "tile_1", "tile_2"}) test::write_text(folder / name, "old");
+    {
+        OutputFolder output(folder.string(), tileset_file);
+        EXPECT_TRUE(output.replaces());
+        write_text_atomically((fs::path(output.path()) / "tile_1").string(), "new");
+        write_text_atomically((fs::path(output.path()) / "tileset.json").string(), "new");
+        EXPECT_EQ(test::read_text(folder / "tile_1"), "old");  // not yet: the old set until the commit
+        output.commit();
+    }
+    EXPECT_EQ(names_in(folder), (std::vector<std::string>{"tile_1", "tileset.json"}));
+    EXPECT_EQ(test::read_text(folder / "tile_1"), "new");
+    EXPECT_EQ(names_in(parent), std::vector<std::string>{"tiles"});  // no staging folder, no old content
+}
+
+TEST(OutputFolder, WithoutCommitTheOldFolderStaysAndTheStagingFolderGoes) {
+    fs::path parent = test::scratch_folder("output_folder_failed"), folder = parent / "tiles";
+    fs::create_directories(folder);
+    test::write_text(folder / "tileset.json", "old");
+    try {
+        OutputFolder output(folder.string(), tileset_file);
+        write_text_atomically((fs::path(output.path()) / "tileset.json").string(), "new");
+        throw std::runtime_error("a tile cannot be written");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_EQ(test::read_text(folder / "tileset.json"), "old");
+    EXPECT_EQ(names_in(parent), std::vector<std::string>{"tiles"});
+    {
+        OutputFolder output((parent / "fresh").string(), tileset_file);  // a folder that does not exist yet
+        write_text_atomically((fs::path(output.path()) / "tileset.json").string(), "new");
+        EXPECT_FALSE(fs::exists(parent / "fresh"));
+        output.commit();
+    }
+    EXPECT_EQ(test::read_text(parent / "fresh" / "tileset.json"), "new");
+}
+
+// A user's folder that holds anything else is never swapped away: the files
+// go straight into it and the others stay.
+TEST(OutputFolder, AFolderHoldingOtherFilesIsWrittenInPlaceAndKeepsThem) {
+    fs::path folder = test::scratch_folder("output_folder_shared");
+    test::write_text(folder / "notes.txt", "the user's");
+    test::write_text(folder / "tileset.json", "old");
+    {
+        OutputFolder output(folder.string(), tileset_file);
+        EXPECT_FALSE(output.replaces());
+        EXPECT_EQ(fs::path(output.path()), fs::absolute(folder).lexically_normal());
+        write_text_atomically((fs::path(output.path()) / "tileset.json").string(), "new");
+        output.commit();
+    }
+    EXPECT_EQ(test::read_text(folder / "notes.txt"), "the user's");
+    EXPECT_EQ(test::read_text(folder / "tileset.json"), "new");
+}
+
+// What a SIGKILL leaves, the staging folder of a process that no longer
+// exists, goes when the next run writes beside it; a live run's stays.
+TEST(OutputFolder, StagingFoldersOfKilledRunsGoAtTheNextRun) {
+    fs::path parent = test::scratch_folder("output_folder_stale");
+    fs::create_directories(parent / "tiles.tmp999999999");
+    fs::create_directories(parent / ("other.tmp" + std::to_string(::getpid())));
+    test::write_text(parent / "tiles.tmp999999999" / "tile_1", "killed run");
+    test::write_text(parent / ("other.tmp" + std::to_string(::getpid())) / "tile_1", "this run");
+    OutputFolder output((parent / "tiles").string(), tileset_file);
+    EXPECT_FALSE(fs::exists(parent / "tiles.tmp999999999"));
+    EXPECT_TRUE(fs::exists(parent / ("other.tmp" + std::to_string(::getpid()))));
 }

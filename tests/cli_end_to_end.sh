@@ -138,6 +138,7 @@ check "city frames.csv has one row per frame, errors on sampled frames" bash -c 
 check "city timings.csv has the columns" bash -c "head -1 '$work/city/timings.csv' | grep -qx 'frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes'"
 check "city is identical with 1 thread" bash -c "'$boxlod' city --buildings 2 --strategy distance:40,80,160 --path orbit --frames 4 --width 64 --height 48 --error-every 2 --threads 1 -o '$work/city1' >/dev/null 2>&1 && cmp -s '$work/city/frames.csv' '$work/city1/frames.csv' && cmp -s '$work/city/frames/frame_0002.png' '$work/city1/frames/frame_0002.png'"
 printf '# a dolly\n0  100 20 100  0 0 0\n1  40 10 40  0 0 0\n' > "$work/keys.txt"
+check "a second city run replaces the first's frames whole" bash -c "'$boxlod' city --buildings 1 --strategy distance:40,80,160 --frames 2 --width 32 --height 24 --error-every 0 -o '$work/city1' >/dev/null 2>&1 && test \$(ls '$work/city1/frames' | wc -l) = 2 && test \$(wc -l < '$work/city1/frames.csv') = 3"
 check "city along a keyframe file succeeds" test "$(status_of "$boxlod" city --buildings 1 --strategy texel --path "$work/keys.txt" --frames 3 --width 64 --height 48 --budget 500 --json -o "$work/city_keys")" = 0
 check "city --json is a JSON object" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['frames']==3 and d['faces_max']<=500 else 1)"
 bad "city with a bad strategy" city --buildings 1 --strategy distance:80,40 -o "$work/city_bad"
@@ -265,6 +266,45 @@ for moment in 1 2 3 4; do
 done
 check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/killed" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
 check "and removes the temporaries of the runs killed outright" bash -c "! ls '$work/killed' | grep -q '\.tmp'"
+
+# A tileset replaces the one in its folder in one step (OutputFolder): a
+# run killed outright at any moment leaves the old tileset or the new one,
+# each whole, never tiles of both; the staging folder a kill leaves beside
+# it goes at the next run.
+cat > "$work/whole_tileset.py" <<'PY'
+import json, os, re, sys
+folder, wanted = sys.argv[1], {int(n) for n in sys.argv[2:]}
+def uris(tile):
+    yield from ([tile['content']['uri']] if 'content' in tile else [])
+    for child in tile.get('children', []):
+        yield from uris(child)
+named = set(uris(json.load(open(os.path.join(folder, 'tileset.json')))['root']))
+files = set(os.listdir(folder)) - {'tileset.json'}
+if files != named:
+    sys.exit('tiles and tileset disagree: %s' % sorted(files ^ named))
+if len(named) not in wanted:
+    sys.exit('%d tiles, expected one of %s' % (len(named), sorted(wanted)))
+PY
+"$boxlod" generate --city 4 -o "$work/city4.glb" > /dev/null
+"$boxlod" tiles "$work/city4.glb" -o "$work/tileset" --level-mode box-area --wanted-levels 3 > /dev/null
+old_tiles=$(ls "$work/tileset" | grep -c glb)
+"$boxlod" tiles "$work/city4.glb" -o "$work/tileset_new" > /dev/null
+new_tiles=$(ls "$work/tileset_new" | grep -c glb)
+check "the two tilesets differ in their tiles" test "$old_tiles" != "$new_tiles"
+for moment in 0.05 0.15 0.25 0.35 0.45 0.55 0.7; do
+  "$boxlod" tiles "$work/city4.glb" -o "$work/tileset" > /dev/null 2>&1 &
+  tiles_pid=$!
+  sleep $moment
+  kill -KILL $tiles_pid 2> /dev/null
+  wait $tiles_pid
+  check "tiles killed outright after ${moment} s leaves one whole tileset" python3 "$work/whole_tileset.py" "$work/tileset" "$old_tiles" "$new_tiles"
+done
+"$boxlod" tiles "$work/city4.glb" -o "$work/tileset" --level-mode box-area --wanted-levels 3 > /dev/null
+check "the next run puts its tileset in place" python3 "$work/whole_tileset.py" "$work/tileset" "$old_tiles"
+check "and removes the staging folders of the runs killed outright" bash -c "! ls '$work' | grep -q 'tileset\.tmp'"
+mkdir -p "$work/shared" && echo notes > "$work/shared/notes.txt"
+"$boxlod" tiles "$work/city4.glb" -o "$work/shared" --level-mode box-area --wanted-levels 3 > /dev/null
+check "a folder holding other files keeps them beside the tileset" test -s "$work/shared/notes.txt" -a -s "$work/shared/tileset.json"
 
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null
 if [ "$failures" -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi

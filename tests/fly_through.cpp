@@ -284,3 +284,13 @@ TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
     CityLevels manual = build_city_levels(city, options, false);
     EXPECT_GT(manual.objects[0].levels[1].faces, levels.objects[0].levels[1].faces);
 }
+
+// A city's folder is replaced whole only when it holds nothing but what a
+// fly-through writes; a user's own file there keeps it from being swapped.
+TEST(FlyThrough, KnowsTheFilesItWritesIntoItsFolder) {
+    for (const char* name : {"frames.csv", "timings.csv", "frames", "frames/frame_0007.png", "contact_sheet.png",
+                             "detail_0.5", "detail_2/frames/frame_0000.png", "detail_1e-05/contact_sheet.png"})
+        EXPECT_TRUE(is_fly_through_file(name)) << name;
+    for (const char* name : {"", "notes.txt", "frames/notes.txt", "detail_2/notes.txt", "tileset.json", "results.csv"})
+        EXPECT_FALSE(is_fly_through_file(name)) << name;
+}

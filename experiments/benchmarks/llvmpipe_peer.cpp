@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -261,6 +263,16 @@ double LlvmpipePeer::covered_fraction() const {
     std::size_t covered = 0, n = state_->pixels.size() / 4;
     for (std::size_t i = 0; i < n; ++i) covered += (state_->pixels[i * 4] | state_->pixels[i * 4 + 1] | state_->pixels[i * 4 + 2]) != 0;
     return double(covered) / double(n);
+}
+
+int LlvmpipePeer::rasterizer_threads() {
+    int count = 0;
+    for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+        std::string name;
+        std::getline(std::ifstream(task.path() / "comm"), name);
+        count += name.rfind("llvmpipe-", 0) == 0;
+    }
+    return count;
 }
 
 }  // namespace boxlod::bench

@@ -19,6 +19,10 @@ public:
     void draw();  // one frame, finished (glFinish)
     double covered_fraction() const;  // of the last frame: pixels not left black
 
+    // The rasterizer threads llvmpipe started in this process (Mesa names
+    // them "llvmpipe-N"): the benchmark checks it ran with the count it asked for.
+    static int rasterizer_threads();
+
 private:
     struct State;
     std::unique_ptr<State> state_;

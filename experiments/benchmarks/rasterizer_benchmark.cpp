@@ -94,8 +94,18 @@ void draw_with_llvmpipe(::benchmark::State& state, const std::vector<Batch>& bat
         state.SkipWithError("OSMesa/llvmpipe context could not be created");
         return;
     }
+    // llvmpipe takes LP_NUM_THREADS once per process: a case run with another
+    // count would compare boxlod with a peer of other threads.
+    const int threads = bench::LlvmpipePeer::rasterizer_threads(), wanted = std::atoi(std::getenv("LP_NUM_THREADS"));
+    if (threads != wanted) {
+        state.SkipWithError(("llvmpipe runs " + std::to_string(threads) + " rasterizer threads, not LP_NUM_THREADS=" +
+                             std::to_string(wanted))
+                                .c_str());
+        return;
+    }
     for (auto _ : state) peer->draw();
     state.counters["covered"] = peer->covered_fraction();
+    state.counters["llvmpipe threads"] = threads;
 }
 
 void llvmpipe_frame(::benchmark::State& state) {

@@ -36,18 +36,31 @@ def load(folder, stem):
     return json.loads(path.read_text())["benchmarks"]
 
 
+def runs_of(benchmarks, name):
+    pattern = re.compile(re.escape(name) + r"(/(min_time|iterations|real_time|repeats)[^/]*)*$")
+    return [b for b in benchmarks or [] if pattern.match(b.get("run_name", b["name"]))]
+
+
 def find(benchmarks, name):
     """The benchmark's median over its repetitions where it was repeated
-    (`make bench` repeats the rasterizer, interleaved at random with its peer,
-    so both see the same states of a noisy machine), else its one run."""
-    pattern = re.compile(re.escape(name) + r"(/(min_time|iterations|real_time|repeats)[^/]*)*$")
-    runs = [b for b in benchmarks or [] if pattern.match(b.get("run_name", b["name"]))]
+    (`make bench` repeats every benchmark, interleaved at random with its
+    peer, so both see the same states of a noisy machine), else its one run."""
+    runs = runs_of(benchmarks, name)
     for b in runs:
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median":
             return b
     for b in runs:
         if b.get("run_type", "iteration") == "iteration":
             return b
+    return None
+
+
+def spread(benchmarks, name):
+    """The repetitions' coefficient of variation (standard deviation over
+    mean of the time), or None for a benchmark run once."""
+    for b in runs_of(benchmarks, name):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "cv":
+            return b["real_time"]
     return None
 
 
@@ -85,9 +98,10 @@ def main():
             rows.append((what, "not run", "not run", "", ""))
             continue
         ratio = milliseconds(b) / milliseconds(a)
-        shown = [show_ms(milliseconds(a)), show_ms(milliseconds(b))]
+        shown = [show_ms(milliseconds(x)) + (f" ±{cv * 100:.0f}%" if cv is not None else "")
+                 for x, cv in ((a, spread(benchmarks, ours)), (b, spread(benchmarks, peer)))]
         if repetitions(a) > 1 and repetitions(b) > 1:
-            what = f"{what} (medians of {min(repetitions(a), repetitions(b))}, interleaved)"
+            what = f"{what} (medians of {min(repetitions(a), repetitions(b))}, interleaved; ± their spread)"
         if "faces" in a and "faces" in b:  # simplifiers: where each stopped
             shown = [f"{t}, {int(x['faces']):,} faces" for t, x in zip(shown, (a, b))]
         reads = f"faster than {peer_name}" if ratio >= 1 else f"{1 / ratio:.2f}x slower than {peer_name}"

@@ -131,7 +131,9 @@ int run_city(const Arguments& arguments) {
     std::vector<CameraPose> path =
         built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
     const std::string& output = arguments.text("output");
-    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, output, stderr);
+    OutputFolder folder(output, is_fly_through_file);  // the old fly-through's files until the new ones are complete
+    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, folder.path(), stderr);
+    folder.commit();
     KeyValues report = city_report(runs, options, output, path_name);
     std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
     return 0;

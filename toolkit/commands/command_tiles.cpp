@@ -14,6 +14,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 
 namespace boxlod {
 namespace {
@@ -62,6 +63,12 @@ bool has_geometry_below(const Model& model, int node) {
     return false;
 }
 
+// What `tiles` writes into its folder: the tileset and its tiles.
+bool is_tileset_file(const std::string& name) {
+    static const std::regex tile(R"(object_\d+_L\d+\.glb)");
+    return name == "tileset.json" || std::regex_match(name, tile);
+}
+
 int run_tiles(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
@@ -75,15 +82,18 @@ int run_tiles(const Arguments& a) {
         if (has_geometry_below(city, child)) nodes.push_back(child);
     if (nodes.empty()) throw InputError(parameters.model + ": the root has no child with geometry to make tiles of");
     start_lod(extract_subtree(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
-    std::filesystem::create_directories(folder);
+    // The new tileset replaces a folder holding an old one in one step, so no
+    // client ever loads a mix of two tilesets' tiles.
+    OutputFolder output(folder.string(), is_tileset_file);
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), folder.string());
+        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), output.path());
     });
-    const std::string tileset = (folder / "tileset.json").string();
-    write_text_atomically(tileset, tileset_json(objects, origin));
+    write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));
     files.commit();
+    output.commit();
+    const std::string tileset = (folder / "tileset.json").string();
     std::size_t tiles = 0;
     for (const TileObject& object : objects) tiles += object.levels.size();
     std::printf("tileset = %s\nobjects = %zu\ntiles = %zu\n", tileset.c_str(), objects.size(), tiles);
