@@ -1,9 +1,12 @@
 #include "toolkit/lod/atlas.h"
 
+#include "base/parallel.h"
+
 #include <stb_rect_pack.h>
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace boxlod {
@@ -42,8 +45,26 @@ std::vector<Block> pack_page(const std::vector<Block>& blocks, Eigen::Vector2i p
     return left;
 }
 
-bool fits(const std::vector<Block>& blocks, Eigen::Vector2i page_size, int gutter) {
-    return pack_page(blocks, page_size, gutter, 0, nullptr).empty();
+// Whether the blocks surely do not fit one page. Most pages tried are too
+// small, which two necessary conditions tell without packing (four fifths of
+// the tries when building `manual`'s levels): every block within the page's
+// sides, and the padded blocks' area within the padded page's.
+bool cannot_fit(const std::vector<Block>& blocks, Eigen::Vector2i page_size, int gutter) {
+    std::uint64_t padded_area = 0;
+    for (const Block& block : blocks) {
+        if (block.size.x() > page_size.x() || block.size.y() > page_size.y()) return true;
+        padded_area += std::uint64_t(block.size.x() + 2 * gutter) * std::uint64_t(block.size.y() + 2 * gutter);
+    }
+    return padded_area > std::uint64_t(page_size.x() + 2 * gutter) * std::uint64_t(page_size.y() + 2 * gutter);
+}
+
+// `atlas` with all blocks on one more page of `page_size`, if they fit it.
+std::optional<Atlas> with_page(const Atlas& atlas, const std::vector<Block>& blocks, Eigen::Vector2i page_size, int gutter) {
+    if (cannot_fit(blocks, page_size, gutter)) return std::nullopt;
+    Atlas out = atlas;
+    if (!pack_page(blocks, page_size, gutter, int(out.pages.size()), &out.placements).empty()) return std::nullopt;
+    out.pages.push_back(page_size);
+    return out;
 }
 
 std::uint64_t area(Eigen::Vector2i size) { return std::uint64_t(size.x()) * std::uint64_t(size.y()); }
@@ -70,12 +91,11 @@ std::vector<Eigen::Vector2i> page_sizes(int min_texture_size, int max_texture_si
 void pack_rest(std::vector<Block> left, const std::vector<Eigen::Vector2i>& sizes, int gutter, Atlas& atlas) {
     std::uint64_t face_texels = 0;
     for (const Block& block : left) face_texels += area(block.size);
-    // A page of less area than the faces cannot hold them: only the others are tried.
-    auto holding = std::find_if(sizes.begin(), sizes.end(),
-                                [&](Eigen::Vector2i s) { return area(s) >= face_texels && fits(left, s, gutter); });
-    Atlas alone = atlas;
-    pack_page(left, *holding, gutter, int(alone.pages.size()), &alone.placements);
-    alone.pages.push_back(*holding);
+    // The smallest page holding them all, packed once: the search keeps the packing that fits.
+    std::optional<Atlas> alone;
+    auto holding = std::find_if(sizes.begin(), sizes.end(), [&](Eigen::Vector2i s) {
+        return area(s) >= face_texels && (alone = with_page(atlas, left, s, gutter));
+    });
     // The squarest page of the largest area below the holding page's (sizes are sorted by area, squarer first).
     auto below = std::find_if(std::make_reverse_iterator(holding), sizes.rend(),
                               [&](Eigen::Vector2i s) { return area(s) < area(*holding); });
@@ -93,7 +113,7 @@ void pack_rest(std::vector<Block> left, const std::vector<Eigen::Vector2i>& size
             }
         }
     }
-    atlas = std::move(alone);
+    atlas = std::move(*alone);
 }
 
 // Full pages at the largest size while the rest does not fit one, then pack_rest.
@@ -101,9 +121,13 @@ Atlas pack_blocks(std::vector<Block> left, int min_texture_size, int max_texture
     Atlas atlas;
     atlas.placements.resize(faces);
     const std::vector<Eigen::Vector2i> sizes = page_sizes(min_texture_size, max_texture_size);
-    while (!left.empty() && !fits(left, sizes.back(), gutter)) {
-        left = pack_page(left, sizes.back(), gutter, int(atlas.pages.size()), &atlas.placements);
-        atlas.pages.push_back(sizes.back());
+    while (!left.empty()) {
+        Atlas full = atlas;
+        std::vector<Block> rest = pack_page(left, sizes.back(), gutter, int(full.pages.size()), &full.placements);
+        if (rest.empty()) break;  // the rest fits one page: pack_rest picks its size
+        full.pages.push_back(sizes.back());
+        atlas = std::move(full);
+        left = std::move(rest);
     }
     if (!left.empty()) pack_rest(std::move(left), sizes, gutter, atlas);
     return atlas;
@@ -133,7 +157,8 @@ std::uint64_t gutter_texels(const Atlas& atlas, const std::vector<Eigen::Vector2
     return texels;
 }
 
-Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter) {
+Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter,
+                 int threads) {
     for (const Eigen::Vector2i& s : face_sizes)
         if (s.x() > max_texture_size || s.y() > max_texture_size)
             throw std::invalid_argument("pack_atlas: a face is larger than the largest page");
@@ -147,9 +172,11 @@ Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture
         const bool turn = s.y() > s.x();
         lying.push_back({int(i), turn ? Eigen::Vector2i(s.y(), s.x()) : s, turn});
     }
-    Atlas a = pack_blocks(as_baked, min_texture_size, max_texture_size, gutter, face_sizes.size());
-    Atlas b = pack_blocks(lying, min_texture_size, max_texture_size, gutter, face_sizes.size());
-    return page_texels(b) < page_texels(a) ? b : a;
+    Atlas layouts[2];
+    parallel_for(2, threads, [&](std::size_t k) {
+        layouts[k] = pack_blocks(k == 0 ? as_baked : lying, min_texture_size, max_texture_size, gutter, face_sizes.size());
+    });
+    return page_texels(layouts[1]) < page_texels(layouts[0]) ? layouts[1] : layouts[0];
 }
 
 }  // namespace boxlod

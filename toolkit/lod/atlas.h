@@ -25,7 +25,8 @@ struct Atlas {
 // `gutter` free texels around each face on every side (so >= 2 gutter between
 // faces); none is needed at a page's border (the sampler clamps to the edge).
 // Throws std::invalid_argument when a face does not fit max_texture_size.
-Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter);
+Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter,
+                 int threads = 1);
 
 // The size of a face's block in its page: its texels, swapped when rotated.
 Eigen::Vector2i placed_size(const Eigen::Vector2i& face_size, const AtlasPlacement& placement);

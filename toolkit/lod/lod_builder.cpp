@@ -221,7 +221,7 @@ Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at,
 }
 
 // Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as swatches.
-Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces) {
+Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads) {
     const LodParameters& p = session.parameters;
     Packing packing;
     std::vector<Eigen::Vector2i> sizes;
@@ -263,7 +263,7 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
         packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
     }
     if (textured) {
-        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter);
+        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter, threads);
         packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.sizing.gutter);
         if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
     }
@@ -475,9 +475,9 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     session.times.bake += seconds_since(start);
 
     start = Clock::now();
-    Packing packing = pack_faces(session, lod.cut, textured, 0);
+    Packing packing = pack_faces(session, lod.cut, textured, 0, threads);
     if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
-        Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces);
+        Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces, threads);
         if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
     }
     lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
