@@ -16,7 +16,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <set>
 
 namespace boxlod {
@@ -48,6 +47,14 @@ constexpr EnumEntry<SizingRule> sizing_table[] = {
 };
 
 std::span<const EnumEntry<SizingRule>> sizing_rules() { return sizing_table; }
+
+constexpr EnumEntry<KeptImages> kept_images_table[] = {
+    {KeptImages::none, "none", "only the CSVs"},
+    {KeptImages::lod, "lod", "every LoD render and the original per view"},
+    {KeptImages::all, "all", "also a FLIP (or RMSE) heat map per row"},
+};
+
+std::span<const EnumEntry<KeptImages>> kept_images() { return kept_images_table; }
 
 std::string sweep_settings(const SweepConfig& config) {
     std::string text;
@@ -96,6 +103,14 @@ struct Line {
     }
     template <typename T>
     T number_in(const NumberRange& range) const { return number_in<T>(range, line.value); }
+    // The value, one name of the enum's table.
+    template <typename T>
+    T word(std::span<const EnumEntry<T>> table) const {
+        T value{};
+        if (!parse_enum(table, line.value, value))
+            fail("expected " + enum_names(table, ", ", " or ") + ", got '" + line.value + "'");
+        return value;
+    }
     // Each item a name of the enum's table; unknown words name the accepted ones.
     template <typename T>
     std::vector<T> words(std::span<const EnumEntry<T>> table) const {
@@ -124,34 +139,31 @@ SweepModel model_entry(const Line& line, const std::string& item, const std::fil
     return model;
 }
 
-}  // namespace
+// A sweep's own keys, one row each: how its value sets the config. The LoD
+// parameters a sweep may set are declared in toolkit/lod/lod_parameters.cpp;
+// parsing and the help (sweep_config_keys) read both.
+struct SweepKey {
+    const char* name;
+    void (*set)(SweepConfig& c, const Line& l, const std::filesystem::path& folder);
+};
 
-SweepConfig parse_sweep_config(const std::string& text, const std::string& file) {
-    SweepConfig c;
-    std::filesystem::path folder = std::filesystem::path(file).parent_path();
-    using Setter = std::function<void(const Line&)>;
-    // The sweep's own keys; the LoD parameters are declared in toolkit/lod/lod_parameters.cpp.
-    const std::map<std::string, Setter> setters = {
-        {"models", [&](const Line& l) {
+const std::vector<SweepKey>& sweep_keys() {
+    using Folder = const std::filesystem::path&;
+    static const std::vector<SweepKey> keys = {
+        {"models", [](SweepConfig& c, const Line& l, Folder folder) {
              for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));
          }},
-        {"level_modes", [&](const Line& l) {
-             c.level_modes = l.words(level_modes());
-         }},
-        {"box_kinds", [&](const Line& l) { c.box_kinds = l.words(box_kinds()); }},
-        {"interpolations", [&](const Line& l) {
-             c.interpolations = l.words(interpolations());
-         }},
-        {"levels", [&](const Line& l) {
+        {"level_modes", [](SweepConfig& c, const Line& l, Folder) { c.level_modes = l.words(level_modes()); }},
+        {"box_kinds", [](SweepConfig& c, const Line& l, Folder) { c.box_kinds = l.words(box_kinds()); }},
+        {"interpolations", [](SweepConfig& c, const Line& l, Folder) { c.interpolations = l.words(interpolations()); }},
+        {"levels", [](SweepConfig& c, const Line& l, Folder) {
              c.levels.clear();
              if (l.line.value == "all") return;
              std::set<int> levels;
-             for (const std::string& item : l.items()) {
-                 levels.insert(l.number_in<int>(parameter_range::current_level, item));
-             }
+             for (const std::string& item : l.items()) levels.insert(l.number_in<int>(parameter_range::current_level, item));
              c.levels.assign(levels.begin(), levels.end());
          }},
-        {"views", [&](const Line& l) {
+        {"views", [](SweepConfig& c, const Line& l, Folder) {
              c.views.clear();
              std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
              for (const std::string& view : items) {
@@ -159,42 +171,51 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
                  if (std::find(c.views.begin(), c.views.end(), view) == c.views.end()) c.views.push_back(view);
              }
          }},
-        {"distances", [&](const Line& l) {
+        {"distances", [](SweepConfig& c, const Line& l, Folder) {
              c.distances.clear();
              for (const std::string& item : l.items()) {
                  float d = l.number_in<float>(distance_multiple_range, item);
                  if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end()) c.distances.push_back(d);
              }
          }},
-        {"render_modes", [&](const Line& l) {
-             c.render_modes = l.words(render_modes());
+        {"render_modes", [](SweepConfig& c, const Line& l, Folder) { c.render_modes = l.words(render_modes()); }},
+        {"width", [](SweepConfig& c, const Line& l, Folder) { c.width = l.number_in<int>(sweep_image_side_range); }},
+        {"height", [](SweepConfig& c, const Line& l, Folder) { c.height = l.number_in<int>(sweep_image_side_range); }},
+        {"metrics", [](SweepConfig& c, const Line& l, Folder) { c.metrics = l.words(metrics()); }},
+        {"ppd", [](SweepConfig& c, const Line& l, Folder) {
+             c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range);
          }},
-        {"width", [&](const Line& l) { c.width = l.number_in<int>(sweep_image_side_range); }},
-        {"height", [&](const Line& l) { c.height = l.number_in<int>(sweep_image_side_range); }},
-        {"metrics", [&](const Line& l) { c.metrics = l.words(metrics()); }},
-        {"ppd", [&](const Line& l) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
-        {"sizing", [&](const Line& l) {
-             if (!parse_enum(sizing_rules(), l.line.value, c.sizing))
-                 l.fail("expected " + enum_names(sizing_rules(), ", ", " or ") + ", got '" + l.line.value + "'");
-         }},
+        {"sizing", [](SweepConfig& c, const Line& l, Folder) { c.sizing = l.word(sizing_rules()); }},
         // The manual's program (set_manual, one sizing distance); the keys after it change single settings.
-        {"manual", [&](const Line& l) {
+        {"manual", [](SweepConfig& c, const Line& l, Folder) {
              if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false, got '" + l.line.value + "'");
              if (l.line.value == "true") set_manual(c.lod), c.sizing = SizingRule::nearest;
          }},
-        {"impostor_directions", [&](const Line& l) {
+        {"impostor_directions", [](SweepConfig& c, const Line& l, Folder) {
              c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});
          }},
-        {"baselines", [&](const Line& l) { c.baselines = l.line.value == "none" ? std::vector<Baseline>{} : l.words(baselines()); }},
-        {"keep_images", [&](const Line& l) {
-             const std::map<std::string, KeptImages> kinds = {
-                 {"none", KeptImages::none}, {"lod", KeptImages::lod}, {"all", KeptImages::all}};
-             auto kind = kinds.find(l.line.value);
-             if (kind == kinds.end()) l.fail("expected none, lod or all, got '" + l.line.value + "'");
-             c.keep_images = kind->second;
+        {"baselines", [](SweepConfig& c, const Line& l, Folder) {
+             c.baselines = l.line.value == "none" ? std::vector<Baseline>{} : l.words(baselines());
          }},
-        {"threads", [&](const Line& l) { c.threads = l.number_in<int>(thread_count_range); }},
+        {"keep_images", [](SweepConfig& c, const Line& l, Folder) { c.keep_images = l.word(kept_images()); }},
+        {"threads", [](SweepConfig& c, const Line& l, Folder) { c.threads = l.number_in<int>(thread_count_range); }},
     };
+    return keys;
+}
+
+}  // namespace
+
+std::vector<std::string> sweep_config_keys() {
+    std::vector<std::string> names;
+    for (const SweepKey& key : sweep_keys()) names.push_back(key.name);
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (d.sweep_key) names.push_back(d.key);
+    return names;
+}
+
+SweepConfig parse_sweep_config(const std::string& text, const std::string& file) {
+    SweepConfig c;
+    const std::filesystem::path folder = std::filesystem::path(file).parent_path();
     for (const KeyValueLine& kv : parse_key_value_lines(text, file)) {
         Line line{file, kv};
         if (kv.value.empty()) line.fail("missing value");
@@ -205,9 +226,10 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
             if (std::string problem = declared->parse(kv.value, c.lod); !problem.empty()) line.fail(problem);
             continue;
         }
-        auto setter = setters.find(kv.key);
-        if (setter == setters.end()) line.fail("unknown key");
-        setter->second(line);
+        auto key = std::find_if(sweep_keys().begin(), sweep_keys().end(),
+                                [&](const SweepKey& k) { return kv.key == k.name; });
+        if (key == sweep_keys().end()) line.fail("unknown key");
+        key->set(c, line, folder);
     }
     if (c.models.empty()) throw_input_error(file, "", "no models (key 'models')");
     validate_parameters(c.lod, file);

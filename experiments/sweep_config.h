@@ -15,9 +15,9 @@
 
 namespace boxlod {
 
-// none: only the CSVs; lod: every LoD render and the original per view;
-// all: also a FLIP (or RMSE) heat map per row.
+// The images a sweep keeps (names and help in the table).
 enum class KeptImages { none, lod, all };
+std::span<const EnumEntry<KeptImages>> kept_images();
 
 // The distance the LoD textures are sized for (docs/design.md: Texture sizing):
 // nearest: one LoD per level, baked for the smallest of the distances (it is
@@ -68,6 +68,8 @@ struct SweepConfig {
 // `file` names the source in errors ("file: line N: key: what"); relative
 // model paths are resolved against file's folder. Throws InputError.
 SweepConfig parse_sweep_config(const std::string& text, const std::string& file);
+// Every key a config may have: the sweep's own and the LoD parameters it may set.
+std::vector<std::string> sweep_config_keys();
 SweepConfig load_sweep_config(const std::string& path);
 
 // What every row of a sweep shares but its key columns do not name (image size,

@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/memory_budget.h"
 #include "data_gen/city.h"
@@ -66,8 +67,7 @@ int run_generate(const Arguments& arguments) {
         for (Texture& texture : model.textures) texture.name = output.stem().string() + "_" + texture.name;
     save_model(model, arguments.text("output"));
     for (KeyValue& entry : model_statistics(model)) report.push_back(std::move(entry));
-    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
-    std::fputs(out.c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
@@ -84,7 +84,7 @@ Subcommand generate_subcommand() {
               {"lot", "WxD", "the lot's width and depth in metres (default: the grammar's lot_width/lot_depth, else 20x20)"},
               {"seed", "S", "seed of the random choices (default 0)", seed_range},
               {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
-              {"json", "", "print one JSON object instead of key = value lines"}},
+              json_option()},
              0, 1},
             run_generate};
 }

@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/key_values.h"
 #include "base/memory_budget.h"
@@ -135,7 +136,7 @@ int run_city(const Arguments& arguments) {
     std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, folder.path(), stderr);
     folder.commit();
     KeyValues report = city_report(runs, options, output, path_name);
-    std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
@@ -166,8 +167,8 @@ Subcommand city_subcommand() {
         {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
         {"memory", "MB", "unpacked levels kept between frames, in MiB (default 1024); levels are kept packed "
                          "(deflated) and a frame's own levels are always unpacked", NumberRange{0, 1 << 20}},
-        {"threads", "N", "threads to use (default 0 = all cores)", thread_count_range},
-        {"json", "", "print one JSON object instead of key = value lines"},
+        threads_option(),
+        json_option(),
     });
     return {{"city", "",
              "Fly through a generated city with run-time LoD selection. Every building gets its own LoD, built once "

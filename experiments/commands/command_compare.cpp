@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/key_values.h"
 #include "base/memory_budget.h"
@@ -87,8 +88,7 @@ int run_compare(const Arguments& arguments) {
         write_png(arguments.text("heatmap"), error_heatmap(error));
         report.push_back(text_entry("heatmap", arguments.text("heatmap")));
     }
-    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
-    std::fputs(out.c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
@@ -107,8 +107,8 @@ Subcommand compare_subcommand() {
               {"mask-b", "FILE", "coverage mask of B for iou"},
               {"background", "R,G,B", "without masks, iou counts pixels differing from this sRGB colour in [0, 1] "
                                       "(default 1,1,1, the render background)"},
-              {"threads", "N", "threads to use (default: all cores)", thread_count_range},
-              {"json", "", "print one JSON object instead of key = value lines"}},
+              threads_option(),
+              json_option()},
              2, 2},
             run_compare};
 }

@@ -1,4 +1,5 @@
 // `boxlod simplify`: the classic baseline, quadric edge-collapse simplification.
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/parallel.h"
 #include "base/timing.h"
@@ -38,8 +39,7 @@ int run_simplify(const Arguments& arguments) {
                         number_entry("triangles", double(result.triangles)),
                         number_entry("vertices", double(result.vertices)),
                         number_entry("seconds", seconds)};
-    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
-    std::fputs(out.c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
@@ -53,9 +53,9 @@ Subcommand simplify_subcommand() {
              {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
               {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
               {"lock-border", "", "never move vertices on open mesh borders"},
-              {"threads", "N", "threads, one material at a time (default: all cores)", thread_count_range},
+              threads_option("threads, one material at a time"),
               keep_materials_option(),
-              {"json", "", "print one JSON object instead of key = value lines"}},
+              json_option()},
              1, 1},
             run_simplify};
 }

@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/input_error.h"
 #include "base/key_values.h"
@@ -48,27 +49,26 @@ int run_sweep_command(const Arguments& arguments) {
                      number_entry("render_seconds", r.render_seconds),
                      number_entry("metric_seconds", r.metric_seconds),
                      number_entry("seconds", r.total_seconds)};
-    std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
 }  // namespace
 
 Subcommand sweep_subcommand() {
+    std::string keys;
+    for (const std::string& key : sweep_config_keys()) keys += (keys.empty() ? "" : ", ") + key;
     return {{"sweep", "CONFIG",
              "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x render mode "
-             "of CONFIG (key = value lines: models, level_modes, box_kinds, interpolations, levels, wanted_levels, "
-             "views, distances, render_modes, width, height, fovy, metrics, ppd, resolution, sizing, baselines, "
-             "keep_small_subtrees, keep_cheaper_subtrees, keep_images, threads), "
-             "each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
+             "of CONFIG (key = value lines: " + keys + "), each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
              "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
              {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, 'o'},
-              {"threads", "N", "threads to use (default: the config's threads, 0 = all cores)", thread_count_range},
+              threads_option("threads to use, 0 = all cores", "the config's threads"),
               {"shard", "M:MODE", "only model M (from 1) with level mode MODE, and the baselines if MODE is the config's first: "
                                   "a part of the sweep that runs on its own (docs/sweeps.md: Shards)"},
               {"merge", "SHARDS", "start from the rows of the shards' output folders under SHARDS; OUTDIR/results.csv "
                                   "gets the bytes of the whole sweep's"},
-              {"json", "", "print one JSON object instead of key = value lines"}},
+              json_option()},
              1, 1},
             run_sweep_command};
 }

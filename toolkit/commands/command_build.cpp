@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
@@ -210,7 +211,7 @@ Subcommand build_subcommand() {
                  {"preview-width", "W", "preview image width (default 1024)", image_side_range},
                  {"preview-height", "H", "preview image height (default 768)", image_side_range},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},
-                 {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+                 threads_option(),
              },
              1, 1},
             run_build};

@@ -1,4 +1,6 @@
 #include "toolkit/commands/commands.h"
+
+#include "base/common_options.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 
@@ -10,14 +12,13 @@ static int run_info(const Arguments& arguments) {
     Model model = load_model(arguments.positionals[0]);
     KeyValues statistics = model_statistics(model);
     statistics.push_back(number_entry("lod", model.is_lod));
-    std::string out = arguments.has("json") ? format_json(statistics) : format_key_values(statistics);
-    std::fputs(out.c_str(), stdout);
+    print_report(statistics, arguments);
     return 0;
 }
 
 Subcommand info_subcommand() {
     return {{"info", "MODEL", "Read a model (glTF, FBX, OBJ, DAE, PLY, OFF, 3DS, IFC, ...) and print its statistics.",
-             {{"json", "", "print one JSON object instead of key = value lines"}}, 1, 1},
+             {json_option()}, 1, 1},
             run_info};
 }
 

@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/key_values.h"
 #include "base/parallel.h"
 #include "base/timing.h"
@@ -51,8 +52,7 @@ static int run_levels(const Arguments& arguments) {
     report.push_back(number_entry("nodes", double(model.nodes.size())));
     for (std::size_t i = 0; i < values.level.size(); ++i)
         report.push_back(number_entry("level." + std::to_string(i), values.level[i]));
-    std::string out = arguments.has("json") ? format_json(report) : format_key_values(report);
-    std::fputs(out.c_str(), stdout);
+    print_report(report, arguments);
     return 0;
 }
 
@@ -63,8 +63,8 @@ Subcommand levels_subcommand() {
              "MODEL",
              "Print every node's level value (level.K = L for node K) and the obtained number of levels.",
              with_options(options,
-                  {{"threads", "N", "threads for the boxes (default: all cores)", thread_count_range},
-                   {"json", "", "print one JSON object instead of key = value lines"}}),
+                  {threads_option("threads for the boxes"),
+                   json_option()}),
              1,
              1},
             run_levels};

@@ -1,3 +1,4 @@
+#include "base/common_options.h"
 #include "base/atomic_write.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
@@ -115,7 +116,7 @@ Subcommand tiles_subcommand() {
                           {"longitude", "DEG", "(default 8.412: Karlsruhe)", longitude_range},
                           {"height", "M", "above the ellipsoid (default 0)", height_range},
                           keep_hierarchy_option(),
-                          {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+                          threads_option(),
                       },
                       1, 1},
                      run_tiles};

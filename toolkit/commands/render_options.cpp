@@ -1,5 +1,6 @@
 #include "toolkit/commands/render_options.h"
 
+#include "base/common_options.h"
 #include "base/input_error.h"
 #include "base/memory_budget.h"
 #include "base/parallel.h"
@@ -29,7 +30,7 @@ std::vector<Option> render_options() {
         {"background", "R,G,B", "background colour, sRGB components in [0, 1] (default 1,1,1)"},
         {"cull", "FACES", "none (default) | back | front"},
         {"wireframe", "", "draw triangle edges over the shaded image"},
-        {"threads", "N", "threads to use (default: all cores)", thread_count_range},
+        threads_option(),
     }, lod_options({"parallax_scale", "parallax_bias"}));
 }
 
