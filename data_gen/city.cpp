@@ -2,7 +2,7 @@
 
 #include "base/input_error.h"
 #include "data_gen/grammar_parser.h"
-#include "data_gen/random.h"
+#include "base/random.h"
 #include "data_gen/samples.h"
 
 #include <algorithm>

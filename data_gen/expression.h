@@ -3,7 +3,7 @@
 // rand(low, high) among them.
 #pragma once
 #include "data_gen/grammar.h"
-#include "data_gen/random.h"
+#include "base/random.h"
 
 #include <functional>
 #include <string>

@@ -3,7 +3,7 @@
 #include "base/input_error.h"
 #include "data_gen/expression.h"
 #include "data_gen/primitives.h"
-#include "data_gen/random.h"
+#include "base/random.h"
 #include "data_gen/split.h"
 #include "toolkit/formats/model_io.h"
 

@@ -1,6 +1,6 @@
 #include "data_gen/textures.h"
 
-#include "data_gen/random.h"
+#include "base/random.h"
 
 #include <Eigen/Core>
 #include <algorithm>

@@ -1,5 +1,6 @@
 #include "toolkit/lod/atlas.h"
 
+#include "base/random.h"
 #include <gtest/gtest.h>
 
 using namespace boxlod;
@@ -8,12 +9,10 @@ namespace {
 
 std::vector<Eigen::Vector2i> faces(int count, int seed, int max_width = 60, int max_height = 40) {
     std::vector<Eigen::Vector2i> sizes;
-    std::uint32_t state = std::uint32_t(seed) * 2654435761u + 1;
+    Pcg32 random(std::uint64_t(seed), 1);
     for (int i = 0; i < count; ++i) {
-        state = state * 1664525u + 1013904223u;
-        int w = 1 + int(state >> 24) % max_width;
-        state = state * 1664525u + 1013904223u;
-        int h = 1 + int(state >> 24) % max_height;
+        int w = 1 + int(random.next_uint() % std::uint32_t(max_width));
+        int h = 1 + int(random.next_uint() % std::uint32_t(max_height));
         sizes.emplace_back(w, h);
     }
     return sizes;
@@ -96,10 +95,11 @@ TEST(Atlas, AtTheLargestSizeAsManyPagesAsNeededThenSmallerOnes) {
 }
 
 // Occupancy on fixed inputs (face texels / page texels) with the 2-texel gutter:
-// many small faces (where the gutters alone take a quarter), a few large ones, a mix.
+// many small faces (where the gutters alone take a quarter), a few large ones, a mix;
+// each bound a point or two below what the packer reaches on these PCG32 inputs.
 TEST(Atlas, OccupancyOnFixedInputs) {
     std::vector<Eigen::Vector2i> many = faces(400, 5), large = faces(12, 6, 400, 300), mix = faces(200, 7, 200, 120);
-    const std::vector<std::pair<std::vector<Eigen::Vector2i>, double>> cases = {{many, 0.70}, {large, 0.70}, {mix, 0.78}};
+    const std::vector<std::pair<std::vector<Eigen::Vector2i>, double>> cases = {{many, 0.70}, {large, 0.68}, {mix, 0.76}};
     for (const auto& [sizes, at_least] : cases) {
         Atlas atlas = pack_atlas(sizes, 64, 4096, 2);
         expect_valid(atlas, sizes, 64, 4096, 2);

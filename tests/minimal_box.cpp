@@ -6,6 +6,7 @@
 #include "box_checks.h"
 
 #include <Eigen/Geometry>
+#include "base/random.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,10 +49,10 @@ TEST(MinimalBox, CornersOfARotatedBoxGiveThatBox) {
 }
 
 TEST(MinimalBox, EnclosesACloudAndBeatsTheAxisAlignedBox) {
-    // A deterministic cloud along a tilted slab (own LCG; no std distributions).
+    // A deterministic cloud along a tilted slab (the project's PCG32; no std distributions).
     std::vector<Eigen::Vector3f> points;
-    std::uint32_t state = 12345;
-    auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) / float(1 << 24); };
+    Pcg32 random(12345, 1);
+    auto next = [&] { return float(random.uniform()); };
     Eigen::Matrix3f r = Eigen::AngleAxisf(0.5f, Eigen::Vector3f(0, 1, 1).normalized()).toRotationMatrix();
     for (int i = 0; i < 300; ++i) points.push_back(r * Eigen::Vector3f(4 * next(), 2 * next(), 0.3f * next()));
     OrientedBox box = minimal_box(points, 1);

@@ -1,4 +1,4 @@
-#include "data_gen/random.h"
+#include "base/random.h"
 
 #include <gtest/gtest.h>
 

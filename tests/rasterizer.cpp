@@ -3,6 +3,7 @@
 #include "renderer/camera.h"
 
 #include <Eigen/Geometry>
+#include "base/random.h"
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -115,11 +116,8 @@ TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
 // Every walk (small triangles in lanes, narrow ones centre by centre, wide
 // ones by solved runs, in lanes or not) against the edge functions themselves.
 TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
-    std::uint64_t state = 12345;
-    auto next = [&](int range) {  // a small LCG: the same triangles on every machine
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return int((state >> 33) % std::uint64_t(range));
-    };
+    Pcg32 random(12345, 1);  // the same triangles on every machine
+    auto next = [&](int range) { return int(random.next_uint() % std::uint32_t(range)); };
     for (int n = 0; n < 1100; ++n) {
         ScreenTriangle t;
         // From triangle 500 on, small ones: corners within 9 pixels of a point,

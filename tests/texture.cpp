@@ -1,5 +1,6 @@
 #include "renderer/texture.h"
 
+#include "base/random.h"
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -86,15 +87,20 @@ TEST(Texture, SrgbTexturesDecodeToLinear) {
     EXPECT_NEAR(texel(make_texture(pair, ColorSpace::srgb), 1, 0, 0).x(), 0.5f, 0.01f);
 }
 
+namespace {
+// RGBA noise from the project's PCG32, the same on every machine.
+Image8 seeded_image(int width, int height, std::uint64_t seed) {
+    Image8 image(width, height, 4, 255);
+    Pcg32 random(seed, 1);
+    for (std::uint8_t& v : image.pixels) v = std::uint8_t(random.next_uint() >> 24);
+    return image;
+}
+}  // namespace
+
 // A face's colour and normal maps are sampled together: the same values as
 // sampling each alone, whether they share a layout (one footprint for both)
 // or not (other size, wrap or level: each its own).
 TEST(Texture, SamplingTwoMapsTogetherEqualsSamplingEach) {
-    auto seeded_image = [](int width, int height, std::uint32_t seed) {
-        Image8 image(width, height, 4, 255);
-        for (std::uint8_t& v : image.pixels) seed = seed * 1664525u + 1013904223u, v = std::uint8_t(seed >> 24);
-        return image;
-    };
     const MipTexture color = make_texture(seeded_image(16, 8, 1), ColorSpace::srgb, Wrap::repeat);
     const MipTexture normal = make_texture(seeded_image(16, 8, 2), ColorSpace::linear, Wrap::repeat);
     const MipTexture other_size = make_texture(seeded_image(8, 8, 3), ColorSpace::linear, Wrap::repeat);
@@ -140,13 +146,8 @@ TEST(Texture, RepeatWrapsWholePeriodsForEverySize) {
 // last one, at uvs far outside the texture and at non-finite ones, repeated
 // (sizes a power of two or not) or clamped, for every filter.
 TEST(Texture, SamplingInLanesEqualsSamplingEachLane) {
-    auto seeded_image = [](int width, int height, std::uint32_t seed) {
-        Image8 image(width, height, 4, 255);
-        for (std::uint8_t& v : image.pixels) seed = seed * 1664525u + 1013904223u, v = std::uint8_t(seed >> 24);
-        return image;
-    };
-    std::uint32_t state = 7;
-    auto next = [&] { return state = state * 1664525u + 1013904223u, float(state >> 8) / float(1 << 24); };
+    Pcg32 random(7, 2);
+    auto next = [&] { return float(random.uniform()); };
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     int compared = 0;
     for (auto [width, height] : {std::pair{16, 8}, std::pair{12, 5}})
