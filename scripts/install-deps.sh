@@ -33,19 +33,19 @@ fuzz_packages=(clang libclang-rt-14-dev)
 data_packages+=(nodejs chromium)
 command -v npm > /dev/null 2>&1 || data_packages+=(npm)  # (a Node.js from elsewhere may bring its own npm)
 
-# The chain test in Blender (tests/chain_blender.sh): its own glTF importer, run headless.
+# The chain test in Blender (tests/end_to_end/chain_blender.sh): its own glTF importer, run headless.
 data_packages+=(blender)
 
 # The viewer's test runs it in a virtual X server.
 data_packages+=(xvfb xauth)
 
 # The workflow (Snakemake), the notebooks run headless (Debian's python3 as
-# their kernel) and the paper (LaTeX): make paper, and tests/workflow_end_to_end.sh.
+# their kernel) and the paper (LaTeX): make paper, and tests/end_to_end/workflow_end_to_end.sh.
 paper_packages=(snakemake python3-yaml python3-pandas python3-matplotlib
   python3-nbformat python3-nbclient python3-nbconvert python3-ipykernel
   texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk)
 
-# The workflow on a real scheduler (tests/workflow_on_slurm.sh, make test-cluster):
+# The workflow on a real scheduler (tests/end_to_end/workflow_on_slurm.sh, make test-cluster):
 # a one-node SLURM cluster, its daemons and their authentication.
 cluster_packages=(slurmctld slurmd slurm-client munge)
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """ratio_table.py on hand-made benchmark JSON: a repeated benchmark is shown
-by its median (not its first run) beside its peer's median, a single run as
+by its median (not its first run) and its spread beside its peer's, a single run as
 it is, a missing file as "not run". Usage: ratio_table.py RATIO_TABLE_SCRIPT"""
 import json
 import pathlib
@@ -9,8 +9,9 @@ import sys
 import tempfile
 
 
-def runs(name, times, median=None):
-    """Google Benchmark's JSON entries: one per repetition, and the median aggregate."""
+def runs(name, times, median=None, cv=None):
+    """Google Benchmark's JSON entries: one per repetition, and the median and
+    coefficient-of-variation aggregates."""
     run_name = f"{name}/min_time:2.000/real_time"
     entries = [{"name": run_name, "run_name": run_name, "run_type": "iteration", "repetitions": len(times),
                 "real_time": t, "time_unit": "ms"} for t in times]
@@ -18,6 +19,9 @@ def runs(name, times, median=None):
         entries.append({"name": run_name + "_median", "run_name": run_name, "run_type": "aggregate",
                         "aggregate_name": "median", "repetitions": len(times), "real_time": median,
                         "time_unit": "ms"})
+    if cv is not None:
+        entries.append({"name": run_name + "_cv", "run_name": run_name, "run_type": "aggregate",
+                        "aggregate_name": "cv", "repetitions": len(times), "real_time": cv, "time_unit": "ms"})
     return entries
 
 
@@ -26,17 +30,18 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         bench = pathlib.Path(folder)
         # The first runs (100 ms, 200 ms) would read 2.00x; the medians read 1.67x.
-        rasterizer = runs("boxlod_frame/2", [100, 300, 120], 120) + runs("llvmpipe_frame/2", [200, 500, 180], 200)
+        rasterizer = (runs("boxlod_frame/2", [100, 300, 120], 120, 0.05) +
+                      runs("llvmpipe_frame/2", [200, 500, 180], 200, 0.104))
         (bench / "rasterizer.json").write_text(json.dumps({"benchmarks": rasterizer}))
         png = runs("boxlod_png/0", [50]) + runs("stb_png/5/0", [150])
         (bench / "png.json").write_text(json.dumps({"benchmarks": png}))
         table = subprocess.run([sys.executable, script, folder], check=True, capture_output=True, text=True).stdout
     rows = {line.split(" | ")[0].lstrip("| "): line for line in table.splitlines()}
-    frame = rows.get("rasterizer, 1M triangles at 1920x1080, 2 threads (medians of 3, interleaved)")
+    frame = rows.get("rasterizer, 1M triangles at 1920x1080, 2 threads (medians of 3, interleaved; ± their spread)")
     png_row = rows.get("PNG pages of one `manual` level (colour + normal)")
     failures = []
-    if not frame or "| 120 ms | 200 ms | 1.67x |" not in frame:
-        failures.append(f"repeated row not shown by its medians: {frame}")
+    if not frame or "| 120 ms ±5% | 200 ms ±10% | 1.67x |" not in frame:
+        failures.append(f"repeated row not shown by its medians and their spread: {frame}")
     if not png_row or "| 50.0 ms | 150 ms | 3.00x |" not in png_row:
         failures.append(f"single-run row wrong: {png_row}")
     if "| rasterizer, the same, 1 thread | not run | not run |" not in table:

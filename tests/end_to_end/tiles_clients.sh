@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A city as 3D Tiles, loaded by real clients in Debian's headless Chromium,
 # npm packages pinned and installed into a cache folder on first use
-# (tests/browser_clients.sh): CesiumJS and 3d-tiles-renderer (three.js).
+# (tests/end_to_end/browser_clients.sh): CesiumJS and 3d-tiles-renderer (three.js).
 # Passes when CesiumJS has loaded every tile in view and the picture shows the
 # city: more than 1 % of the pixels are not the black background; and when
 # both clients, a metre from the building with the most levels, draw its

@@ -32,7 +32,7 @@ failures=0
 for pair in "untextured wireframe" "near far" "untextured far"; do
   set -- $pair
   ours=$("$boxlod" compare "$work/$1.png" "$work/$2.png" --metric ssim | sed -n 's/^ssim = //p')
-  theirs=$("$python" "$tests/ssim_reference.py" "$work/$1.png" "$work/$2.png")
+  theirs=$("$python" "$tests/end_to_end/ssim_reference.py" "$work/$1.png" "$work/$2.png")
   if [ -z "$ours" ] || [ -z "$theirs" ]; then echo "FAIL $1 vs $2: no value (boxlod '$ours', skimage '$theirs')"; failures=$((failures + 1)); continue; fi
   difference=$("$python" -c "print(f'{abs(float(\"$ours\") - float(\"$theirs\")):.3g}')")
   if "$python" -c "import sys; sys.exit(0 if float('$ours') < 0.999 and $difference <= $tolerance else 1)"; then

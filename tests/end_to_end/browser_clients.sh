@@ -1,7 +1,7 @@
 # Sourced by the tests that open boxlod's outputs in real web clients
 # (tiles_clients.sh, chain_clients.sh): npm packages pinned and installed into
 # a cache folder on first use, never committed; pages served on localhost;
-# tests/browser_page.mjs drives Debian's headless Chromium.
+# tests/end_to_end/browser_page.mjs drives Debian's headless Chromium.
 
 # npm_client NAME PACKAGE@VERSION...: installs the packages once into the
 # cache folder NAME and sets $client to it.

@@ -1,4 +1,4 @@
-// Opens a test page (tests/tiles_cesium.html, tests/tiles_three.html, tests/chain_msft_lod.html,
+// Opens a test page (tests/end_to_end/tiles_cesium.html, tests/end_to_end/tiles_three.html, tests/end_to_end/chain_msft_lod.html,
 // clients/chain_three.html, clients/chain_babylon.html) in Debian's Chromium (headless, WebGL on
 // SwiftShader) through playwright-core, waits for its result, saves a
 // screenshot and prints the result as JSON.

@@ -6,7 +6,7 @@
 set -u
 release=$(realpath "$1")
 debug=$(realpath -m "$2")
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ ! -x "$debug" ]; then
   echo "FAIL no Debug boxlod at $debug (make test builds it: make debug-build)"
   exit 1

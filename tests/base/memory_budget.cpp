@@ -22,7 +22,9 @@ TEST(MemoryBudget, DefaultsToHalfOfWhatTheProcessMayUse) {
     EXPECT_LE(default_memory_budget(), physical / 2);
     rlimit limit{};
     ASSERT_EQ(getrlimit(RLIMIT_AS, &limit), 0);
-    if (limit.rlim_cur != RLIM_INFINITY) EXPECT_LE(default_memory_budget(), double(limit.rlim_cur) / 2);
+    if (limit.rlim_cur != RLIM_INFINITY) {
+        EXPECT_LE(default_memory_budget(), double(limit.rlim_cur) / 2);
+    }
     EXPECT_EQ(memory_budget(), default_memory_budget());
 }
 

@@ -1,4 +1,4 @@
-# Run by tests/chain_blender.sh inside Blender: imports one glTF with Blender's
+# Run by tests/end_to_end/chain_blender.sh inside Blender: imports one glTF with Blender's
 # own importer (which has no MSFT_lod: every level of a chain becomes objects,
 # each level under its root) and prints, as JSON, the import's seconds, the
 # object count and each root's triangles.

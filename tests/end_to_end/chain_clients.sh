@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # LoD chains (build --chain, MSFT_lod) in real clients, in Debian's headless
-# Chromium, npm packages pinned (tests/browser_clients.sh). For the FZK-Haus
+# Chromium, npm packages pinned (tests/end_to_end/browser_clients.sh). For the FZK-Haus
 # and each built-in sample, passes when
 # - Babylon.js (babylonjs + babylonjs-loaders), its MSFT_lod on as by default,
 #   completes without an error, showing the coarsest level's triangles when

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The experiment workflow on a real scheduler: a one-node SLURM cluster started
-# here (tests/slurm_one_node.sh), the smoke profile run through
+# here (tests/end_to_end/slurm_one_node.sh), the smoke profile run through
 # `snakemake --profile experiments/workflow/slurm`, and the same profile run
 # locally. Checks: every job but Snakemake's local rules went through sbatch
 # (each sweep shard, merge and city run records its SLURM job id, and
@@ -16,7 +16,7 @@ repo=$(realpath "$2")
 cpus=${3:-$(nproc)}
 work=$(mktemp -d)
 cluster=$work/cluster
-source "$repo/tests/slurm_one_node.sh"
+source "$repo/tests/end_to_end/slurm_one_node.sh"
 trap 'slurm_stop "$cluster"; [ -n "${KEEP_WORK:-}" ] || rm -rf "$work"' EXIT
 python=/usr/bin/python3
 export USER=${USER:-$(id -un)}  # Snakemake's SLURM executor reads it (a CI shell may not set it)

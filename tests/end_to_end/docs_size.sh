@@ -2,7 +2,7 @@
 # The docs stay a reference a newcomer reads in one sitting (issue 48): the
 # README at most 8 KB, docs/ under 120 KB in all. A new result goes to the
 # commit log or replaces an old figure; it does not pile up.
-#   tests/docs_size.sh SOURCE_DIR
+#   tests/end_to_end/docs_size.sh SOURCE_DIR
 set -u
 source_dir=$1
 readme=$(wc -c < "$source_dir/README.md")
