@@ -584,27 +584,31 @@ void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eige
     _mm_sfence();  // streamed stores are weakly ordered: done before another thread reads the frame
 }
 
-void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
+// The pixels of tile `tile` within the viewport and its scissor (empty: x0 >= x1 or y0 >= y1).
+TileTarget tile_pixels(const Tiling& tiling, int tile, const Viewport& viewport) {
     int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
     int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
     x0 = std::max(x0, viewport.scissor_x0), y0 = std::max(y0, viewport.scissor_y0);
     x1 = std::min(x1, viewport.scissor_x1), y1 = std::min(y1, viewport.scissor_y1);
-    if (x0 >= x1 || y0 >= y1) return;
-    bool any_triangle = false;  // an empty tile (sky, background) writes nothing: skip its buffers
-    for (std::size_t chunk_index = 0; chunk_index < c.chunk_count && !any_triangle; ++chunk_index)
-        any_triangle = c.chunks[chunk_index].bin_start[tile + 1] > c.chunks[chunk_index].bin_start[tile];
-    if (!any_triangle) return;
-    float depth[tile_size * tile_size];
-    std::uint32_t ids[tile_size * tile_size];
-    std::fill(depth, depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
-    if (c.settings.depth_from_frame)
-        for (int y = y0; y < y1; ++y)
-            std::copy_n(&frame.depth[std::size_t(y) * std::size_t(frame.width) + std::size_t(x0)], x1 - x0,
-                        &depth[(y - y0) * tile_size]);
-    std::fill(ids, ids + tile_size * tile_size, no_triangle);
-    TileTarget target{x0, y0, x1, y1, tile_size, depth, ids};
+    return {x0, y0, x1, y1, tile_size, nullptr, nullptr};
+}
 
-    // Opaque and masked triangles into the visibility buffer, in submission order.
+bool has_triangles(const Context& c, int tile) {
+    for (std::size_t chunk_index = 0; chunk_index < c.chunk_count; ++chunk_index)
+        if (c.chunks[chunk_index].bin_start[tile + 1] > c.chunks[chunk_index].bin_start[tile]) return true;
+    return false;
+}
+
+// The visibility buffer: depths from infinity (or the frame's, when asked),
+// then the opaque and masked triangles in submission order. Returns the
+// blended triangles, which are composited after shading.
+std::vector<std::uint32_t> find_visible(const Context& c, int tile, const TileTarget& target, const Frame& frame) {
+    std::fill(target.depth, target.depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
+    if (c.settings.depth_from_frame)
+        for (int y = target.y0; y < target.y1; ++y)
+            std::copy_n(&frame.depth[std::size_t(y) * std::size_t(frame.width) + std::size_t(target.x0)],
+                        target.x1 - target.x0, &target.depth[(y - target.y0) * tile_size]);
+    std::fill(target.id, target.id + tile_size * tile_size, no_triangle);
     std::vector<std::uint32_t> blended;
     for (std::size_t chunk_index = 0; chunk_index < c.chunk_count; ++chunk_index) {
         const Chunk& chunk = c.chunks[chunk_index];
@@ -634,84 +638,116 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
             rasterize_triangle(t, id, target, &keep);
         }
     }
+    return blended;
+}
 
-    bool reads_uv = c.shader.reads_uv();
-    auto shade = [&](const TriangleSetup& setup, int x, int y) {
-        Fragment fragment = make_fragment(setup, x, y, reads_uv);
-        ShadedPixel shaded = c.shader.shade(setup.batch->surface, fragment);
-        if (c.settings.wireframe && edge_distance(setup, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
-        return shaded;
-    };
-    Eigen::Vector3f shaded_color[tile_size * tile_size], shaded_normal[tile_size * tile_size];
-    auto write = [&](int x, int y, const Eigen::Vector3f& color, const Eigen::Vector3f& normal) {
-        const int k = (y - y0) * tile_size + (x - x0);
-        shaded_color[k] = color, shaded_normal[k] = normal;
-    };
-    if (!c.shader.takes_lanes()) {
-        std::uint32_t setup_id = no_triangle;
-        TriangleSetup setup;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
-                if (id == no_triangle) continue;
-                if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
-                ShadedPixel shaded = shade(setup, x, y);
-                write(x, y, shaded.color, shaded.normal);
-            }
-    } else {
-        // lane_count visible pixels of a row at a time. Their x are shifted into
-        // lanes from the top, in registers: see DoubleLanes (renderer/lanes.h).
-        // Groups of one triangle's pixels reuse its gathered lanes. (Whether the
-        // group's triangles changed is noted as ids come: a load of several
-        // ids just stored would wait for every store before, the frame's too.)
-        TexturedTriangleLanes triangles;
-        std::fill(triangles.ids, triangles.ids + lane_count, no_triangle);
-        bool other_triangles = false;
-        for (int y = y0; y < y1; ++y) {
-            std::uint32_t lanes[lane_count];
-            __m128i xs = _mm_setzero_si128();
-            int count = 0;
-            auto shade_lanes = [&] {
-                switch (count) {  // the first pixel into lane 0
-                case 1: xs = _mm_srli_si128(xs, 12); break;
-                case 2: xs = _mm_srli_si128(xs, 8); break;
-                case 3: xs = _mm_srli_si128(xs, 4); break;
-                }
-                for (int j = count; j < lane_count; ++j) {
-                    lanes[j] = lanes[count - 1];
-                    other_triangles = other_triangles || lanes[j] != triangles.ids[j];
-                }
-                ShadedLanes shaded;
-                c.shader.shade_lanes(reads_uv ? make_textured_fragment_lanes(c, lanes, other_triangles, triangles, IntLanes(xs), y, count)
-                                              : make_untextured_fragment_lanes(c, lanes, IntLanes(xs), y, count),
-                                     shaded);
-                other_triangles = false;
-                alignas(16) int x[lane_count];
-                _mm_store_si128(reinterpret_cast<__m128i*>(x), xs);
-                for (int j = 0; j < count; ++j) {
-                    Eigen::Vector3f color = lane(shaded.color, j);
-                    if (c.settings.wireframe) {
-                        TriangleSetup setup;
-                        set_up_triangle(c, lanes[j], setup);
-                        if (edge_distance(setup, x[j], y) < 0.75f) color = c.settings.wireframe_color;
-                    }
-                    write(x[j], y, color, lane(shaded.normal, j));
-                }
-                count = 0;
-            };
-            for (int x = x0; x < x1; ++x) {
-                std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
-                if (id == no_triangle) continue;
-                other_triangles = other_triangles || id != triangles.ids[count];
-                lanes[count++] = id;
-                xs = _mm_or_si128(_mm_srli_si128(xs, 4), _mm_slli_si128(_mm_cvtsi32_si128(x), 12));
-                if (count == lane_count) shade_lanes();
-            }
-            if (count > 0) shade_lanes();
+// One pixel of a triangle shaded, with the wireframe over it when asked.
+ShadedPixel shade_pixel(const Context& c, const TriangleSetup& setup, int x, int y, bool reads_uv) {
+    Fragment fragment = make_fragment(setup, x, y, reads_uv);
+    ShadedPixel shaded = c.shader.shade(setup.batch->surface, fragment);
+    if (c.settings.wireframe && edge_distance(setup, x, y) < 0.75f) shaded.color = c.settings.wireframe_color;
+    return shaded;
+}
+
+// A tile's shaded colours and normals, row stride tile_size.
+struct ShadedTile {
+    Eigen::Vector3f color[tile_size * tile_size], normal[tile_size * tile_size];
+};
+
+// Every visible pixel shaded one at a time (shaders without lanes).
+void shade_each_pixel(const Context& c, const TileTarget& t, ShadedTile& out) {
+    const int x0 = t.x0, y0 = t.y0, x1 = t.x1, y1 = t.y1;
+    const bool reads_uv = c.shader.reads_uv();
+    std::uint32_t setup_id = no_triangle;
+    TriangleSetup setup;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const int k = (y - y0) * tile_size + (x - x0);
+            std::uint32_t id = t.id[k];
+            if (id == no_triangle) continue;
+            if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
+            ShadedPixel shaded = shade_pixel(c, setup, x, y, reads_uv);
+            out.color[k] = shaded.color, out.normal[k] = shaded.normal;
         }
+}
+
+// lane_count visible pixels of a row at a time. Their x are shifted into
+// lanes from the top, in registers: see DoubleLanes (renderer/lanes.h).
+// Groups of one triangle's pixels reuse its gathered lanes. (Whether the
+// group's triangles changed is noted as ids come: a load of several ids just
+// stored would wait for every store before, the frame's too.)
+void shade_in_lanes(const Context& c, const TileTarget& t, ShadedTile& out) {
+    const int x0 = t.x0, y0 = t.y0, x1 = t.x1, y1 = t.y1;
+    const std::uint32_t* const ids = t.id;
+    Eigen::Vector3f* const shaded_color = out.color;
+    Eigen::Vector3f* const shaded_normal = out.normal;
+    const bool reads_uv = c.shader.reads_uv();
+    TexturedTriangleLanes triangles;
+    std::fill(triangles.ids, triangles.ids + lane_count, no_triangle);
+    bool other_triangles = false;
+    for (int y = y0; y < y1; ++y) {
+        std::uint32_t lanes[lane_count];
+        __m128i xs = _mm_setzero_si128();
+        int count = 0;
+        auto shade_lanes = [&] {
+            switch (count) {  // the first pixel into lane 0
+            case 1: xs = _mm_srli_si128(xs, 12); break;
+            case 2: xs = _mm_srli_si128(xs, 8); break;
+            case 3: xs = _mm_srli_si128(xs, 4); break;
+            }
+            for (int j = count; j < lane_count; ++j) {
+                lanes[j] = lanes[count - 1];
+                other_triangles = other_triangles || lanes[j] != triangles.ids[j];
+            }
+            ShadedLanes shaded;
+            c.shader.shade_lanes(reads_uv ? make_textured_fragment_lanes(c, lanes, other_triangles, triangles, IntLanes(xs), y, count)
+                                          : make_untextured_fragment_lanes(c, lanes, IntLanes(xs), y, count),
+                                 shaded);
+            other_triangles = false;
+            alignas(16) int x[lane_count];
+            _mm_store_si128(reinterpret_cast<__m128i*>(x), xs);
+            for (int j = 0; j < count; ++j) {
+                Eigen::Vector3f color = lane(shaded.color, j);
+                if (c.settings.wireframe) {
+                    TriangleSetup setup;
+                    set_up_triangle(c, lanes[j], setup);
+                    if (edge_distance(setup, x[j], y) < 0.75f) color = c.settings.wireframe_color;
+                }
+                const int k = (y - y0) * tile_size + (x[j] - x0);
+                shaded_color[k] = color, shaded_normal[k] = lane(shaded.normal, j);
+            }
+            count = 0;
+        };
+        for (int x = x0; x < x1; ++x) {
+            std::uint32_t id = ids[(y - y0) * tile_size + (x - x0)];
+            if (id == no_triangle) continue;
+            other_triangles = other_triangles || id != triangles.ids[count];
+            lanes[count++] = id;
+            xs = _mm_or_si128(_mm_srli_si128(xs, 4), _mm_slli_si128(_mm_cvtsi32_si128(x), 12));
+            if (count == lane_count) shade_lanes();
+        }
+        if (count > 0) shade_lanes();
     }
-    write_tile(target, shaded_color, shaded_normal, blended.empty(), frame);
-    if (!blended.empty()) composite_blended(c, blended, target, frame, shade);
+}
+
+// One tile, start to end: visibility, shading, the write into the frame,
+// and the blended triangles over it. An empty tile (sky, background) writes nothing.
+void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame, const Viewport& viewport) {
+    TileTarget target = tile_pixels(tiling, tile, viewport);
+    if (target.x0 >= target.x1 || target.y0 >= target.y1 || !has_triangles(c, tile)) return;
+    float depth[tile_size * tile_size];
+    std::uint32_t ids[tile_size * tile_size];
+    target.depth = depth, target.id = ids;
+    std::vector<std::uint32_t> blended = find_visible(c, tile, target, frame);
+    ShadedTile shaded;
+    if (c.shader.takes_lanes()) shade_in_lanes(c, target, shaded);
+    else shade_each_pixel(c, target, shaded);
+    write_tile(target, shaded.color, shaded.normal, blended.empty(), frame);
+    if (!blended.empty()) {
+        const bool reads_uv = c.shader.reads_uv();
+        composite_blended(c, blended, target, frame,
+                          [&](const TriangleSetup& setup, int x, int y) { return shade_pixel(c, setup, x, y, reads_uv); });
+    }
 }
 
 }  // namespace
