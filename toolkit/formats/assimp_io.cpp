@@ -104,6 +104,64 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
 // file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine.
 std::size_t address_space_allowance(std::size_t file_bytes) { return (std::size_t(2) << 30) + 256 * file_bytes; }
 
+// An assimp material as boxlod's: colours, opacity (blended below 1), Phong
+// specular terms as glTF's specular-glossiness, and its textures.
+Material convert_material(Model& model, const aiScene& scene, const aiMaterial& in, const fs::path& directory) {
+    Material material;
+    material.name = in.GetName().C_Str();
+    aiColor4D color;
+    if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
+        material.base_color = {color.r, color.g, color.b, color.a};
+    float opacity;
+    if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
+    if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
+    // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
+    aiColor3D specular;
+    if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
+        material.specular_color = {specular.r, specular.g, specular.b};
+        material.specular_glossiness = true;
+    }
+    float shininess;
+    if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
+    int two_sided;
+    if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) material.double_sided = two_sided != 0;
+    material.base_color_texture = load_texture(model, scene, in, aiTextureType_BASE_COLOR, directory);
+    if (material.base_color_texture < 0)
+        material.base_color_texture = load_texture(model, scene, in, aiTextureType_DIFFUSE, directory);
+    material.normal_texture = load_texture(model, scene, in, aiTextureType_NORMALS, directory);
+    material.specular_texture = load_texture(model, scene, in, aiTextureType_SPECULAR, directory);
+    if (material.specular_texture >= 0) material.specular_glossiness = true;
+    return material;
+}
+
+// The node tree with each node's meshes in world space; a mesh that several
+// nodes use names them as instances of it.
+void add_nodes(Model& model, const aiScene& scene) {
+    std::vector<int> mesh_users(scene.mNumMeshes, 0);
+    struct Visit { const aiNode* node; int parent; Eigen::Matrix4d parent_world; };
+    std::vector<Visit> stack{{scene.mRootNode, -1, Eigen::Matrix4d::Identity()}};
+    std::vector<std::pair<int, unsigned>> node_meshes;  // (boxlod node, assimp mesh)
+    while (!stack.empty()) {
+        Visit visit = stack.back();
+        stack.pop_back();
+        Eigen::Matrix4d world = visit.parent_world * to_eigen(visit.node->mTransformation);
+        int index = add_node(model, visit.parent, visit.node->mName.C_Str());
+        for (unsigned m = 0; m < visit.node->mNumMeshes; ++m) {
+            unsigned mesh = visit.node->mMeshes[m];
+            ++mesh_users[mesh];
+            node_meshes.emplace_back(index, mesh);
+            Primitive primitive = convert_mesh(*scene.mMeshes[mesh], world);
+            if (!primitive.indices.empty()) model.nodes[index].primitives.push_back(std::move(primitive));
+        }
+        for (unsigned c = visit.node->mNumChildren; c-- > 0;) stack.push_back({visit.node->mChildren[c], index, world});
+    }
+    for (auto [node, mesh] : node_meshes)
+        if (mesh_users[mesh] > 1) {
+            std::string name = scene.mMeshes[mesh]->mName.C_Str();
+            model.nodes[node].instance_of = name.empty() ? "mesh " + std::to_string(mesh) : name;
+        }
+}
+
 }  // namespace
 
 Model import_with_assimp(const std::string& path) {
@@ -132,59 +190,10 @@ Model import_with_assimp_in_process(const std::string& path) {
     }
     Model model;
     model.source = path;
-    fs::path directory = fs::path(path).parent_path();
-    for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
-        const aiMaterial& in = *scene->mMaterials[i];
-        Material material;
-        material.name = in.GetName().C_Str();
-        aiColor4D color;
-        if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
-            material.base_color = {color.r, color.g, color.b, color.a};
-        float opacity;
-        if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
-        if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
-        // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
-        aiColor3D specular;
-        if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
-            material.specular_color = {specular.r, specular.g, specular.b};
-            material.specular_glossiness = true;
-        }
-        float shininess;
-        if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
-        int two_sided;
-        if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) material.double_sided = two_sided != 0;
-        material.base_color_texture = load_texture(model, *scene, in, aiTextureType_BASE_COLOR, directory);
-        if (material.base_color_texture < 0)
-            material.base_color_texture = load_texture(model, *scene, in, aiTextureType_DIFFUSE, directory);
-        material.normal_texture = load_texture(model, *scene, in, aiTextureType_NORMALS, directory);
-        material.specular_texture = load_texture(model, *scene, in, aiTextureType_SPECULAR, directory);
-        if (material.specular_texture >= 0) material.specular_glossiness = true;
-        model.materials.push_back(material);
-    }
-
-    std::vector<int> mesh_users(scene->mNumMeshes, 0);
-    struct Visit { const aiNode* node; int parent; Eigen::Matrix4d parent_world; };
-    std::vector<Visit> stack{{scene->mRootNode, -1, Eigen::Matrix4d::Identity()}};
-    std::vector<std::pair<int, unsigned>> node_meshes;  // (boxlod node, assimp mesh)
-    while (!stack.empty()) {
-        Visit visit = stack.back();
-        stack.pop_back();
-        Eigen::Matrix4d world = visit.parent_world * to_eigen(visit.node->mTransformation);
-        int index = add_node(model, visit.parent, visit.node->mName.C_Str());
-        for (unsigned m = 0; m < visit.node->mNumMeshes; ++m) {
-            unsigned mesh = visit.node->mMeshes[m];
-            ++mesh_users[mesh];
-            node_meshes.emplace_back(index, mesh);
-            Primitive primitive = convert_mesh(*scene->mMeshes[mesh], world);
-            if (!primitive.indices.empty()) model.nodes[index].primitives.push_back(std::move(primitive));
-        }
-        for (unsigned c = visit.node->mNumChildren; c-- > 0;) stack.push_back({visit.node->mChildren[c], index, world});
-    }
-    for (auto [node, mesh] : node_meshes)
-        if (mesh_users[mesh] > 1) {
-            std::string name = scene->mMeshes[mesh]->mName.C_Str();
-            model.nodes[node].instance_of = name.empty() ? "mesh " + std::to_string(mesh) : name;
-        }
+    const fs::path directory = fs::path(path).parent_path();
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+        model.materials.push_back(convert_material(model, *scene, *scene->mMaterials[i], directory));
+    add_nodes(model, *scene);
     validate_model(model);
     return model;
 }

@@ -70,6 +70,64 @@ Bounds model_bounds(const Model& model) {
     return bounds;
 }
 
+namespace {
+
+// One primitive's indices, attribute counts, finite values and material; true
+// when it has a triangle of non-zero area.
+bool validate_primitive(const Model& model, const Primitive& primitive, const std::string& where) {
+    const std::string& file = model.source;
+    std::size_t n = primitive.positions.size();
+    if (primitive.indices.size() % 3 != 0) throw_input_error(file, where, "index count is not a multiple of 3");
+    for (std::uint32_t index : primitive.indices)
+        if (index >= n)
+            throw_input_error(file, where, "vertex index " + std::to_string(index) + " out of range (" +
+                                               std::to_string(n) + " vertices)");
+    auto check_size = [&](std::size_t size, const char* what) {
+        if (size != 0 && size != n) throw_input_error(file, where, std::string(what) + " count differs from position count");
+    };
+    check_size(primitive.normals.size(), "normal");
+    check_size(primitive.uvs.size(), "texture coordinate");
+    check_size(primitive.tangents.size(), "tangent");
+    auto check_finite = [&](const auto& values, const char* what) {
+        for (const auto& v : values)
+            if (!v.allFinite()) throw_input_error(file, where, std::string(what) + " is NaN or infinite");
+    };
+    check_finite(primitive.positions, "position");
+    check_finite(primitive.normals, "normal");
+    check_finite(primitive.uvs, "texture coordinate");
+    check_finite(primitive.tangents, "tangent");
+    if (primitive.material >= int(model.materials.size())) throw_input_error(file, where, "material index out of range");
+    for (std::size_t t = 0; t < primitive.indices.size(); t += 3) {
+        const auto& a = primitive.positions[primitive.indices[t]];
+        if ((primitive.positions[primitive.indices[t + 1]] - a).cross(primitive.positions[primitive.indices[t + 2]] - a)
+                .squaredNorm() > 0)
+            return true;
+    }
+    return false;
+}
+
+// One material's texture indices, colours and ranges.
+void validate_material(const Model& model, const Material& material) {
+    const std::string& file = model.source;
+    const std::string place = "material '" + material.name + "'";
+    for (const auto& slot : texture_slots(material))
+        if (slot.index >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
+    if (!material.base_color.allFinite() || !material.specular_color.allFinite())
+        throw_input_error(file, place, "colour is NaN or infinite");
+    if (const auto& extension = material.specular_extension;
+        extension && !(extension->factor >= 0 && extension->factor <= 1 &&
+                       (extension->color_factor.array() >= specular_color_factor_range.min).all() &&
+                       (extension->color_factor.array() <= specular_color_factor_range.max).all()))
+        throw_input_error(file, place, "KHR_materials_specular factor out of range");
+    if (!shininess_range.contains(material.shininess))
+        throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
+    if (!height_depth_range.contains(material.height_depth))
+        throw_input_error(file, place,
+                          "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
+}
+
+}  // namespace
+
 void validate_model(const Model& model) {
     const std::string& file = model.source;
     if (model.nodes.empty()) throw_input_error(file, "", "the scene has no nodes");
@@ -79,58 +137,13 @@ void validate_model(const Model& model) {
         std::string place = "node " + std::to_string(i) + (node.name.empty() ? "" : " '" + node.name + "'");
         if ((i == 0) != (node.parent < 0) || node.parent >= int(i))
             throw_input_error(file, place, "the node hierarchy is not a tree");
-        for (std::size_t p = 0; p < node.primitives.size(); ++p) {
-            const Primitive& primitive = node.primitives[p];
-            std::string where = place + " primitive " + std::to_string(p);
-            std::size_t n = primitive.positions.size();
-            if (primitive.indices.size() % 3 != 0) throw_input_error(file, where, "index count is not a multiple of 3");
-            for (std::uint32_t index : primitive.indices)
-                if (index >= n)
-                    throw_input_error(file, where, "vertex index " + std::to_string(index) + " out of range (" +
-                                                       std::to_string(n) + " vertices)");
-            auto check_size = [&](std::size_t size, const char* what) {
-                if (size != 0 && size != n) throw_input_error(file, where, std::string(what) + " count differs from position count");
-            };
-            check_size(primitive.normals.size(), "normal");
-            check_size(primitive.uvs.size(), "texture coordinate");
-            check_size(primitive.tangents.size(), "tangent");
-            for (const auto& v : primitive.positions)
-                if (!v.allFinite()) throw_input_error(file, where, "position is NaN or infinite");
-            for (const auto& v : primitive.normals)
-                if (!v.allFinite()) throw_input_error(file, where, "normal is NaN or infinite");
-            for (const auto& v : primitive.uvs)
-                if (!v.allFinite()) throw_input_error(file, where, "texture coordinate is NaN or infinite");
-            for (const auto& v : primitive.tangents)
-                if (!v.allFinite()) throw_input_error(file, where, "tangent is NaN or infinite");
-            if (primitive.material >= int(model.materials.size()))
-                throw_input_error(file, where, "material index out of range");
-            for (std::size_t t = 0; !any_triangle && t < primitive.indices.size(); t += 3) {
-                const auto& a = primitive.positions[primitive.indices[t]];
-                any_triangle = (primitive.positions[primitive.indices[t + 1]] - a).cross(primitive.positions[primitive.indices[t + 2]] - a)
-                                   .squaredNorm() > 0;
-            }
-        }
+        for (std::size_t p = 0; p < node.primitives.size(); ++p)
+            any_triangle = validate_primitive(model, node.primitives[p], place + " primitive " + std::to_string(p)) || any_triangle;
         if (node.scope && !(node.scope->center.allFinite() && node.scope->axes.allFinite() &&
                             node.scope->half_extents.allFinite()))
             throw_input_error(file, place, "scope is NaN or infinite");
     }
-    for (const Material& material : model.materials) {
-        const std::string place = "material '" + material.name + "'";
-        for (const auto& slot : texture_slots(material))
-            if (slot.index >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
-        if (!material.base_color.allFinite() || !material.specular_color.allFinite())
-            throw_input_error(file, place, "colour is NaN or infinite");
-        if (const auto& extension = material.specular_extension;
-            extension && !(extension->factor >= 0 && extension->factor <= 1 &&
-                           (extension->color_factor.array() >= specular_color_factor_range.min).all() &&
-                           (extension->color_factor.array() <= specular_color_factor_range.max).all()))
-            throw_input_error(file, place, "KHR_materials_specular factor out of range");
-        if (!shininess_range.contains(material.shininess))
-            throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
-        if (!height_depth_range.contains(material.height_depth))
-            throw_input_error(file, place,
-                              "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
-    }
+    for (const Material& material : model.materials) validate_material(model, material);
     if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
 }
 
