@@ -752,7 +752,14 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
 
 }  // namespace
 
-void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame) {
+namespace {
+
+// A batch's vertices or triangles [begin, end): the unit of parallel work.
+struct Range {
+    std::size_t batch, begin, end;
+};
+
+Viewport viewport_of(const Frame& frame, const RenderSettings& settings) {
     Viewport viewport;
     viewport.width = frame.width;
     viewport.height = frame.height;
@@ -760,22 +767,15 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     viewport.scissor_y0 = std::max(0, settings.scissor_y0);
     viewport.scissor_x1 = std::min(frame.width, settings.scissor_x1);
     viewport.scissor_y1 = std::min(frame.height, settings.scissor_y1);
-    int threads = thread_count(settings.threads);
-    Eigen::Matrix4f view_projection =
-        projection_matrix(settings.camera, float(frame.width) / float(frame.height)) * view_matrix(settings.camera);
+    return viewport;
+}
 
-    // Vertex stage: clip-space positions, outcodes and snapped window positions,
-    // in parallel over vertex ranges.
-    // Scratch kept per calling thread: a frame of a million triangles needs
-    // ~100 MB, and fresh allocations every frame cost more in page faults than
-    // the rasterization itself (measured: 1 thread 416 ms -> 256 ms).
-    // (Worker lambdas must see the caller's copies: bind references first.)
-    thread_local std::vector<std::vector<ProjectedVertex>> vertex_scratch;
-    thread_local std::vector<Chunk> chunk_scratch;
-    std::vector<std::vector<ProjectedVertex>>& projected = vertex_scratch;
-    std::vector<Chunk>& chunks = chunk_scratch;
+// Vertex stage: clip-space positions, outcodes and snapped window positions,
+// in parallel over vertex ranges. Returns the triangle ranges, a chunk each.
+std::vector<Range> project_vertices(const std::vector<Batch>& batches, const Eigen::Matrix4f& view_projection,
+                                    const Viewport& viewport, int threads,
+                                    std::vector<std::vector<ProjectedVertex>>& projected) {
     projected.resize(std::max(projected.size(), batches.size()));
-    struct Range { std::size_t batch, begin, end; };
     std::vector<Range> vertex_ranges, triangle_ranges;
     for (std::size_t b = 0; b < batches.size(); ++b) {
         projected[b].resize(batches[b].mesh->positions.size());
@@ -791,9 +791,15 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         for (std::size_t i = range.begin; i < range.end; ++i)
             projected[range.batch][i] = project_vertex(clip_position(view_projection, positions[i]), viewport);
     });
+    return triangle_ranges;
+}
 
-    // Set-up and binning, in parallel over chunks of triangles.
-    Tiling tiling{(frame.width + tile_size - 1) / tile_size, (frame.height + tile_size - 1) / tile_size};
+// Set-up and binning, in parallel over chunks of triangles, each in blocks
+// binned while their screen triangles are still in cache.
+void bin_triangles(const std::vector<Batch>& batches, const std::vector<Range>& triangle_ranges,
+                   const std::vector<std::vector<ProjectedVertex>>& projected, const Eigen::Matrix4f& view_projection,
+                   const RenderSettings& settings, const Viewport& viewport, const Tiling& tiling, int threads,
+                   std::vector<Chunk>& chunks) {
     if (chunks.size() < triangle_ranges.size()) chunks.resize(triangle_ranges.size());
     for (std::size_t c = 0; c < triangle_ranges.size(); ++c) {
         chunks[c].triangles.clear();
@@ -806,7 +812,6 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(), mesh.positions.data(),
                                            &view_projection};
         chunk.tile_counts.assign(std::size_t(tiling.count()), 0);
-        // In blocks, each binned while its screen triangles are still in cache.
         constexpr std::size_t block = 1024;
         for (std::size_t begin = range.begin; begin < range.end; begin += block) {
             const std::size_t first = chunk.triangles.size();
@@ -816,15 +821,34 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
         }
         fill_bins(chunk, tiling);
     });
+}
+
+// Where shading sees the eye: an orthographic view has parallel view rays,
+// so its "eye" lies far back along them.
+Eigen::Vector3f shading_eye(const Camera& camera) {
+    if (!camera.orthographic) return camera.position;
+    Eigen::Vector3f forward = (camera.target - camera.position).normalized();
+    return camera.position - forward * 1e6f;
+}
+
+}  // namespace
+
+void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame) {
+    const Viewport viewport = viewport_of(frame, settings);
+    const int threads = thread_count(settings.threads);
+    const Eigen::Matrix4f view_projection =
+        projection_matrix(settings.camera, float(frame.width) / float(frame.height)) * view_matrix(settings.camera);
+    // Scratch kept per calling thread: a frame of a million triangles needs
+    // ~100 MB, and fresh allocations every frame cost more in page faults than
+    // the rasterization itself (measured: 1 thread 416 ms -> 256 ms).
+    thread_local std::vector<std::vector<ProjectedVertex>> projected;
+    thread_local std::vector<Chunk> chunks;
+    const std::vector<Range> triangle_ranges = project_vertices(batches, view_projection, viewport, threads, projected);
+    const Tiling tiling{(frame.width + tile_size - 1) / tile_size, (frame.height + tile_size - 1) / tile_size};
+    bin_triangles(batches, triangle_ranges, projected, view_projection, settings, viewport, tiling, threads, chunks);
 
     // Tiles: each owned by one thread; triangles replayed in submission order.
-    Eigen::Vector3f eye = settings.camera.position;
-    if (settings.camera.orthographic) {
-        // An orthographic view has parallel view rays: place the "eye" far back along them.
-        Eigen::Vector3f forward = (settings.camera.target - settings.camera.position).normalized();
-        eye = settings.camera.position - forward * 1e6f;
-    }
-    std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, eye);
+    std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, shading_eye(settings.camera));
     Context context{batches, settings, chunks, triangle_ranges.size(), settings.shader ? *settings.shader : *mode_shader};
     parallel_for(std::size_t(tiling.count()), threads,
                  [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
