@@ -151,6 +151,21 @@ ViewerState start_state(const Arguments& a, const Model& model, LodParameters pa
     return state;
 }
 
+// Parameters read back take over the session (the model stays), with the
+// camera and light they state; without a light, the light follows the camera.
+void load_session_parameters(ViewerState& state, const std::string& path) {
+    LodParameters p = load_parameters(path);
+    p.model = state.parameters.model;
+    state.parameters = p;
+    if (p.camera) state.settings.camera = *p.camera;
+    if (p.light) state.settings.light = *p.light;
+    state.light_follows_camera = !p.light;
+    state.settings.mode = p.render_mode;
+    state.session.reset();
+    state.needs_update = true;
+    state.message = "loaded " + path;
+}
+
 // What the keys asked of the front end: a screenshot, parameters saved or
 // loaded, the LoD exported. A file that cannot be written or read is shown in
 // the window and on stderr, and counted in `failures`, not the end of the
@@ -186,18 +201,7 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
         state.save_parameters = false, redraw = true;
     }
     if (state.load_parameters) {
-        shown([&] {
-            LodParameters p = load_parameters(params_out);
-            p.model = state.parameters.model;
-            state.parameters = p;
-            if (p.camera) state.settings.camera = *p.camera;
-            if (p.light) state.settings.light = *p.light;
-            state.light_follows_camera = !p.light;
-            state.settings.mode = p.render_mode;
-            state.session.reset();
-            state.needs_update = true;
-            state.message = "loaded " + params_out;
-        });
+        shown([&] { load_session_parameters(state, params_out); });
         state.load_parameters = false, redraw = true;
     }
     if (state.export_lod) {
