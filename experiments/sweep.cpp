@@ -16,6 +16,7 @@
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
+#include "toolkit/lod/level_values.h"
 #include "toolkit/lod/level_budgets.h"
 #include "toolkit/lod/simplification.h"
 #include "experiments/single_box.h"

@@ -4,7 +4,7 @@
 // mode is a new Shader; the rasterizer does not change (docs/design.md: Rendering).
 #pragma once
 #include "renderer/lanes.h"
-#include "renderer/renderer.h"
+#include "renderer/scene.h"
 
 #include <Eigen/Core>
 #include <memory>

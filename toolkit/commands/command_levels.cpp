@@ -2,6 +2,7 @@
 #include "base/key_values.h"
 #include "base/parallel.h"
 #include "base/timing.h"
+#include "toolkit/lod/level_values.h"
 #include "toolkit/lod/boxes.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"

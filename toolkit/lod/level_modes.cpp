@@ -2,7 +2,6 @@
 
 #include "base/input_error.h"
 #include "toolkit/lod/boxes.h"
-#include "toolkit/lod/error_greedy.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,8 +33,10 @@ constexpr EnumEntry<Interpolation> interpolation_table[] = {
     {Interpolation::rank, "rank", "the rank of v among the nodes"},
 };
 
+}  // namespace
+
 // Hierarchy, Top-Down: the root gets N - 1, each child its parent's value - 1.
-LevelValues top_down(const Model& model) {
+LevelValues top_down_levels(const Model& model) {
     LevelValues values;
     values.obtained_levels = tree_depth(model) + 1;
     values.level.assign(model.nodes.size(), values.obtained_levels - 1);
@@ -46,7 +47,7 @@ LevelValues top_down(const Model& model) {
 // Hierarchy, Bottom-Up: leaves 0, inner nodes 1 + the children's maximum. With
 // `same_siblings`, a node's children are first raised to their maximum. Children
 // follow their parents, so a backward pass sees every child's final value first.
-LevelValues bottom_up(const Model& model, bool same_siblings) {
+LevelValues bottom_up_levels(const Model& model, bool same_siblings) {
     LevelValues values;
     values.level.assign(model.nodes.size(), 0);
     for (std::size_t i = model.nodes.size(); i-- > 0;) {
@@ -61,6 +62,8 @@ LevelValues bottom_up(const Model& model, bool same_siblings) {
     values.obtained_levels = values.level[0] + 1;
     return values;
 }
+
+namespace {
 
 double box_value(LevelMode mode, const OrientedBox& box) {
     switch (mode) {
@@ -85,11 +88,13 @@ std::vector<double> interpolated(std::vector<double> v, Interpolation interpolat
     return v;
 }
 
+}  // namespace
+
 // Bounding Box modes: t = (w - wmin) / (wmax - wmin) over the boxed nodes (1
 // when the range is empty), L = floor(t * (N - 1)) with N the wanted levels.
 // For rank, wmin = 0 and wmax = count - 1, so t = rank / (count - 1).
-LevelValues box_levels(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                       const std::vector<std::optional<OrientedBox>>& boxes) {
+LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
+                            const std::vector<std::optional<OrientedBox>>& boxes) {
     if (boxes.size() != model.nodes.size())
         throw std::invalid_argument("compute_level_values: one box (or none) per node expected");
     std::vector<int> boxed;
@@ -117,8 +122,6 @@ LevelValues box_levels(const Model& model, LevelMode mode, int wanted_levels, In
     return values;
 }
 
-}  // namespace
-
 std::span<const EnumEntry<LevelMode>> level_modes() { return level_mode_table; }
 std::span<const EnumEntry<Interpolation>> interpolations() { return interpolation_table; }
 bool parse_level_mode(const std::string& name, LevelMode& mode) { return parse_enum(level_modes(), name, mode); }
@@ -134,31 +137,5 @@ bool is_box_mode(LevelMode mode) {
 bool orders_by_bytes(LevelMode mode) { return mode == LevelMode::error_greedy || mode == LevelMode::hybrid; }
 
 bool uses_boxes(LevelMode mode) { return is_box_mode(mode) || orders_by_bytes(mode); }
-
-LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                                 const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing,
-                                 bool textured) {
-    if (model.nodes.empty()) throw InputError(model.source + ": the model has no nodes");
-    switch (mode) {
-        case LevelMode::top_down: return top_down(model);
-        case LevelMode::bottom_up: return bottom_up(model, false);
-        case LevelMode::bottom_up_siblings: return bottom_up(model, true);
-        default: break;
-    }
-    if (wanted_levels < 1)
-        throw InputError("wanted levels must be at least 1, got " + std::to_string(wanted_levels));
-    if (mode == LevelMode::error_greedy) {
-        if (boxes.size() != model.nodes.size())
-            throw std::invalid_argument("compute_level_values: one box (or none) per node expected");
-        return error_greedy_levels(model, boxes, wanted_levels, sizing, textured);
-    }
-    if (mode == LevelMode::hybrid) throw std::logic_error("compute_level_values: hybrid levels come from start_lod's plan");
-    return box_levels(model, mode, wanted_levels, interpolation, boxes);
-}
-
-int obtained_levels(const Model& model, LevelMode mode, int wanted_levels) {
-    if (uses_boxes(mode)) return wanted_levels;
-    return compute_level_values(model, mode, wanted_levels, Interpolation::linear, {}).obtained_levels;
-}
 
 }  // namespace boxlod

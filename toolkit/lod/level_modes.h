@@ -41,17 +41,12 @@ struct LevelValues {
     int obtained_levels = 1;  // N
 };
 
-// `boxes` (from node_boxes) is used by the box modes and error-greedy; nodes
-// without a box take no part in vmin/vmax and get level 0. `wanted_levels` is N
-// for both. error-greedy prices boxes with `sizing` (its distance aside) and
-// `textured`. hybrid's levels come from its plan, which renders (hybrid.h:
-// hybrid_levels; start_lod makes it): not here.
-LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                                 const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing = {},
-                                 bool textured = true);
-
-// N alone: the wanted levels for the modes that take them (box modes,
-// error-greedy, hybrid), the hierarchy's for the others.
-int obtained_levels(const Model& model, LevelMode mode, int wanted_levels);
+// The level values of the hierarchy modes, and of the box modes from `boxes`
+// (from node_boxes; nodes without a box take no part in vmin/vmax and get
+// level 0; N = wanted_levels). Every mode at once: level_values.h.
+LevelValues top_down_levels(const Model& model);
+LevelValues bottom_up_levels(const Model& model, bool same_siblings);
+LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
+                            const std::vector<std::optional<OrientedBox>>& boxes);
 
 }  // namespace boxlod

@@ -1,3 +1,4 @@
+#include "toolkit/lod/level_values.h"
 #include "toolkit/lod/lod_builder.h"
 
 #include "base/input_error.h"

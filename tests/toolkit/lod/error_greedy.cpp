@@ -1,3 +1,4 @@
+#include "toolkit/lod/level_values.h"
 #include "toolkit/lod/error_greedy.h"
 
 #include "toolkit/lod/cut.h"

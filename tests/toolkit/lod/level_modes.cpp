@@ -1,3 +1,4 @@
+#include "toolkit/lod/level_values.h"
 #include "toolkit/lod/level_modes.h"
 
 #include "base/input_error.h"
