@@ -6,11 +6,10 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/render_options.h"
+#include "toolkit/commands/sdl_library.h"
 #include "toolkit/commands/viewer_state.h"
 #include "toolkit/formats/lod_export.h"
 #include "toolkit/formats/model_io.h"
-
-#include <SDL.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -24,7 +23,7 @@ namespace {
 std::optional<ViewerEvent> translate(const SDL_Event& event) {
     ViewerEvent e;
     if (event.type == SDL_KEYDOWN) {
-        e.key = SDL_GetKeyName(event.key.keysym.sym);
+        e.key = sdl().SDL_GetKeyName(event.key.keysym.sym);
         for (char& c : e.key) c = char(std::tolower(static_cast<unsigned char>(c)));
         return e;
     }
@@ -46,7 +45,7 @@ SDL_Event to_sdl(const ViewerEvent& e) {
     SDL_Event event{};
     if (e.kind == ViewerEvent::Kind::key) {
         event.type = SDL_KEYDOWN;
-        event.key.keysym.sym = SDL_GetKeyFromName(e.key.c_str());
+        event.key.keysym.sym = sdl().SDL_GetKeyFromName(e.key.c_str());
     } else if (e.kind == ViewerEvent::Kind::drag) {
         event.type = SDL_MOUSEMOTION;
         event.motion.state = SDL_BUTTON_LMASK;
@@ -64,7 +63,7 @@ std::vector<ViewerEvent> read_replay(const std::string& path) {
     std::string line;
     for (int number = 1; std::getline(in, line); ++number)
         if (auto e = parse_replay_line(line, path, number)) {
-            if (e->kind == ViewerEvent::Kind::key && SDL_GetKeyFromName(e->key.c_str()) == SDLK_UNKNOWN)
+            if (e->kind == ViewerEvent::Kind::key && sdl().SDL_GetKeyFromName(e->key.c_str()) == SDLK_UNKNOWN)
                 throw_input_error(path, "line " + std::to_string(number), "unknown key '" + e->key + "'");
             events.push_back(*e);
         }
@@ -105,12 +104,12 @@ struct Window {
     SDL_Texture* texture = nullptr;
 
     Window(const std::string& title, int width, int height) {
-        if (SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + SDL_GetError());
-        window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height, 0);
-        renderer = window ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-        texture = renderer ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, width, height) : nullptr;
+        if (sdl().SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + sdl().SDL_GetError());
+        window = sdl().SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height, 0);
+        renderer = window ? sdl().SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
+        texture = renderer ? sdl().SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, width, height) : nullptr;
         if (!texture) {
-            std::string error = SDL_GetError();
+            std::string error = sdl().SDL_GetError();
             close();
             throw std::runtime_error("cannot open a window: " + error);
         }
@@ -120,17 +119,17 @@ struct Window {
     Window& operator=(const Window&) = delete;
 
     void show(const Image8& image) {
-        SDL_UpdateTexture(texture, nullptr, image.pixels.data(), image.width * 3);
-        SDL_RenderCopy(renderer, texture, nullptr, nullptr);
-        SDL_RenderPresent(renderer);
+        sdl().SDL_UpdateTexture(texture, nullptr, image.pixels.data(), image.width * 3);
+        sdl().SDL_RenderCopy(renderer, texture, nullptr, nullptr);
+        sdl().SDL_RenderPresent(renderer);
     }
 
     void close() {
-        if (texture) SDL_DestroyTexture(texture);
-        if (renderer) SDL_DestroyRenderer(renderer);
-        if (window) SDL_DestroyWindow(window);
+        if (texture) sdl().SDL_DestroyTexture(texture);
+        if (renderer) sdl().SDL_DestroyRenderer(renderer);
+        if (window) sdl().SDL_DestroyWindow(window);
         texture = nullptr, renderer = nullptr, window = nullptr;
-        SDL_Quit();
+        sdl().SDL_Quit();
     }
 };
 
@@ -233,7 +232,7 @@ int run_view(const Arguments& a) {
     Window window("boxlod view " + a.positionals[0], state.width, state.height);
     for (const ViewerEvent& e : replay) {
         SDL_Event event = to_sdl(e);
-        SDL_PushEvent(&event);
+        sdl().SDL_PushEvent(&event);
     }
     int threads = state.settings.threads, screenshots = 0, failures = 0;
     bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
@@ -241,7 +240,7 @@ int run_view(const Arguments& a) {
     while (!state.quit) {
         SDL_Event event;
         // Replays drain the queue without waiting; people get a responsive wait.
-        bool got = replaying ? SDL_PollEvent(&event) : SDL_WaitEventTimeout(&event, 100);
+        bool got = replaying ? sdl().SDL_PollEvent(&event) : sdl().SDL_WaitEventTimeout(&event, 100);
         if (got) {
             if (event.type == SDL_QUIT) break;
             if (auto e = translate(event)) redraw = apply_event(state, *e) || redraw;
