@@ -56,9 +56,14 @@ PartialOutputs& partial_outputs() {
 }
 
 const std::string temporary_suffix = ".tmp";
+// An OutputFolder's staging folder: a name of its own, so that clearing what a
+// killed run left never removes a user's folder that happens to end in .tmpN.
+const std::string staging_suffix = ".boxlod-staging";
 constexpr int max_unnamed_pending = 256;  // well below the usual limit of 1024 open files
 
-std::string named_temporary(const std::string& path) { return path + temporary_suffix + std::to_string(::getpid()); }
+std::string named_temporary(const std::string& path, const std::string& suffix = temporary_suffix) {
+    return path + suffix + std::to_string(::getpid());
+}
 
 // Called with the outputs' mutex held.
 Temporary new_temporary(const std::string& path, PartialOutputs& outputs) {
@@ -116,24 +121,25 @@ void discard(const Temporary& temporary, PartialOutputs& outputs) {
     outputs.temporaries.erase(temporary.name);
 }
 
-// "name.png.tmp1234" -> 1234; 0 when the name is not one of our temporaries.
-long temporary_owner(const std::string& filename) {
-    std::size_t at = filename.rfind(temporary_suffix);
-    if (at == std::string::npos || at + temporary_suffix.size() == filename.size()) return 0;
-    std::string digits = filename.substr(at + temporary_suffix.size());
+// "name.png.tmp1234" -> 1234 (with `suffix` ".tmp"); 0 when the name is not one of ours.
+long temporary_owner(const std::string& filename, const std::string& suffix) {
+    std::size_t at = filename.rfind(suffix);
+    if (at == std::string::npos || at + suffix.size() == filename.size()) return 0;
+    std::string digits = filename.substr(at + suffix.size());
     if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return 0;
     return std::stol(digits);
 }
 
-// Temporaries of boxlod runs that no longer exist (killed with SIGKILL).
+bool dead(long owner) { return owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH; }
+
+// Temporaries and staging folders of boxlod runs that no longer exist (killed with SIGKILL).
 void remove_stale_temporaries(const fs::path& directory) {
     std::error_code error;
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-        long owner = temporary_owner(it->path().filename().string());
-        if (owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH) {
-            std::error_code ignored;
-            fs::remove_all(it->path(), ignored);  // a file, or an OutputFolder's staging folder
-        }
+        const std::string name = it->path().filename().string();
+        std::error_code ignored;
+        if (dead(temporary_owner(name, temporary_suffix))) fs::remove(it->path(), ignored);  // a file only
+        if (dead(temporary_owner(name, staging_suffix))) fs::remove_all(it->path(), ignored);
     }
 }
 
@@ -311,7 +317,7 @@ OutputFolder::OutputFolder(const std::string& folder, const std::function<bool(c
     }
     fs::create_directories(absolute.parent_path(), error);
     remove_stale_temporaries(absolute.parent_path());
-    path_ = named_temporary(folder_);
+    path_ = named_temporary(folder_, staging_suffix);
     {
         PartialOutputs& outputs = partial_outputs();
         std::lock_guard lock(outputs.mutex);
@@ -338,7 +344,7 @@ void OutputFolder::commit() {
     } else {
         // No exchange on this file system: the old folder moves aside, then the
         // new one in; a kill between the two leaves the folder absent, not mixed.
-        const std::string old = named_temporary(folder_ + ".old");
+        const std::string old = named_temporary(folder_ + ".old", staging_suffix);
         fs::rename(folder_, old, error);
         if (!error) fs::rename(path_, folder_, error);
         if (!error) fs::remove_all(old, error);

@@ -52,8 +52,8 @@ private:
 };
 
 // A folder one command fills whole (a tileset, a city fly-through): written
-// as a staging folder beside it, FOLDER.tmpPID, and put in place with one
-// rename (exchanged with the old folder, which is then removed), so that
+// as a staging folder beside it, FOLDER.boxlod-stagingPID, and put in place
+// with one rename (exchanged with the old folder, which is then removed), so that
 // readers, failures and kills of any kind find the old content or the new,
 // never a mix (docs/testing.md: Hardening). The old folder is replaced only if
 // everything in it is something the command writes (`ours(name)`, for each

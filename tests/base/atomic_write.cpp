@@ -209,14 +209,17 @@ TEST(OutputFolder, AFolderHoldingOtherFilesIsWrittenInPlaceAndKeepsThem) {
 }
 
 // What a SIGKILL leaves, the staging folder of a process that no longer
-// exists, goes when the next run writes beside it; a live run's stays.
+// exists, goes when the next run writes beside it; a live run's stays, and so
+// does a user's folder that merely ends like a temporary file.
 TEST(OutputFolder, StagingFoldersOfKilledRunsGoAtTheNextRun) {
     fs::path parent = test::scratch_folder("output_folder_stale");
-    fs::create_directories(parent / "tiles.tmp999999999");
-    fs::create_directories(parent / ("other.tmp" + std::to_string(::getpid())));
-    test::write_text(parent / "tiles.tmp999999999" / "tile_1", "killed run");
-    test::write_text(parent / ("other.tmp" + std::to_string(::getpid())) / "tile_1", "this run");
+    const std::string live = "other.boxlod-staging" + std::to_string(::getpid());
+    for (const std::string& name : {std::string("tiles.boxlod-staging999999999"), live, std::string("data.tmp999999999")}) {
+        fs::create_directories(parent / name);
+        test::write_text(parent / name / "tile_1", "content");
+    }
     OutputFolder output((parent / "tiles").string(), tileset_file);
-    EXPECT_FALSE(fs::exists(parent / "tiles.tmp999999999"));
-    EXPECT_TRUE(fs::exists(parent / ("other.tmp" + std::to_string(::getpid()))));
+    EXPECT_FALSE(fs::exists(parent / "tiles.boxlod-staging999999999"));
+    EXPECT_TRUE(fs::exists(parent / live));
+    EXPECT_TRUE(fs::exists(parent / "data.tmp999999999" / "tile_1"));
 }

@@ -301,7 +301,7 @@ for moment in 0.05 0.15 0.25 0.35 0.45 0.55 0.7; do
 done
 "$boxlod" tiles "$work/city4.glb" -o "$work/tileset" --level-mode box-area --wanted-levels 3 > /dev/null
 check "the next run puts its tileset in place" python3 "$work/whole_tileset.py" "$work/tileset" "$old_tiles"
-check "and removes the staging folders of the runs killed outright" bash -c "! ls '$work' | grep -q 'tileset\.tmp'"
+check "and removes the staging folders of the runs killed outright" bash -c "! ls '$work' | grep -q 'tileset\.boxlod-staging'"
 mkdir -p "$work/shared" && echo notes > "$work/shared/notes.txt"
 "$boxlod" tiles "$work/city4.glb" -o "$work/shared" --level-mode box-area --wanted-levels 3 > /dev/null
 check "a folder holding other files keeps them beside the tileset" test -s "$work/shared/notes.txt" -a -s "$work/shared/tileset.json"
