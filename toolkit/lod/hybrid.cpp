@@ -10,6 +10,7 @@
 #include "toolkit/model/vertex_layout.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -18,9 +19,15 @@
 namespace boxlod {
 namespace {
 
-// The sub-tree simplified to these shares of its triangles: a few error
-// targets from slight to coarse, each a quarter of the one before.
-constexpr double simplified_shares[] = {1, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// The sub-tree simplified to these shares of its triangles: error targets
+// from slight to coarse, each half the one before. Without the half, a level
+// within a quarter of a building's bytes fell back to the eighth (docs/cost.md:
+// The hybrid level mode).
+constexpr double simplified_shares[] = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// A sub-tree's simplified proxies are measured only if a quarter of its
+// triangles is enough to simplify to: measuring the many smaller sub-trees
+// too doubled the time to build every level of `manual`.
+constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
 
 // Where a sub-tree is measured: its bounding sphere seen orthographically from
@@ -117,11 +124,39 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
     return frames;
 }
 
+// A measuring pixel as hybrid_pixel_error compares it: its coverage and its
+// colour in sRGB bytes, converted once per render rather than per comparison.
+struct ComparedPixel {
+    float coverage = 0;
+    std::array<int, 3> srgb{};
+};
+
+ComparedPixel compared_pixel(const Eigen::Vector4f& linear) {
+    return {std::clamp(linear.w(), 0.0f, 1.0f), {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
+}
+
+double compared_pixel_error(const ComparedPixel& a, const ComparedPixel& b) {
+    double colour = 0;
+    for (int c = 0; c < 3; ++c) colour += std::abs(a.srgb[std::size_t(c)] - b.srgb[std::size_t(c)]);
+    return double(std::abs(a.coverage - b.coverage)) + double(std::min(a.coverage, b.coverage)) * colour / (3 * 255.0);
+}
+
+// Every direction's pixels, as compared.
+std::vector<std::vector<ComparedPixel>> compared_views(const std::vector<Frame>& frames) {
+    std::vector<std::vector<ComparedPixel>> views;
+    for (const Frame& frame : frames) {
+        views.emplace_back();
+        views.back().reserve(frame.color.size());
+        for (const Eigen::Vector4f& c : frame.color) views.back().push_back(compared_pixel(c));
+    }
+    return views;
+}
+
 // The measuring pixels' errors summed over every direction.
-double pixel_error_sum(const std::vector<Frame>& original, const std::vector<Frame>& proxy) {
+double pixel_error_sum(const std::vector<std::vector<ComparedPixel>>& original, const std::vector<std::vector<ComparedPixel>>& proxy) {
     double sum = 0;
     for (std::size_t v = 0; v < original.size(); ++v)
-        for (std::size_t i = 0; i < original[v].color.size(); ++i) sum += hybrid_pixel_error(original[v].color[i], proxy[v].color[i]);
+        for (std::size_t i = 0; i < original[v].size(); ++i) sum += compared_pixel_error(original[v][i], proxy[v][i]);
     return sum;
 }
 
@@ -251,9 +286,9 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
     auto among_context = [&](const Drawable& d) {
         std::vector<Batch> batches = blended_context;
         batches.insert(batches.end(), d.batches.begin(), d.batches.end());
-        return render_views(batches, view, settings.mode, &underlay);
+        return compared_views(render_views(batches, view, settings.mode, &underlay));
     };
-    const std::vector<Frame> original = among_context(subtree);
+    const auto original = among_context(subtree);
     measurement.box_sum = pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, view, settings)->drawable));
     measurement.simplified_sums.clear();
     for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
@@ -408,10 +443,7 @@ std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridSte
 }  // namespace
 
 double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b) {
-    const float ca = std::clamp(a.w(), 0.0f, 1.0f), cb = std::clamp(b.w(), 0.0f, 1.0f);
-    double colour = 0;
-    for (int c = 0; c < 3; ++c) colour += std::abs(int(linear_to_srgb(a[c])) - int(linear_to_srgb(b[c])));
-    return double(std::abs(ca - cb)) + double(std::min(ca, cb)) * colour / (3 * 255.0);
+    return compared_pixel_error(compared_pixel(a), compared_pixel(b));
 }
 
 HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
@@ -426,7 +458,7 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     std::vector<int> measured;
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
         if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < bytes[n] ||
-                         double(triangles[n]) * simplified_shares[1] >= double(fewest_simplified_triangles)))
+                         double(triangles[n]) * smallest_simplified_share_of_interest >= double(fewest_simplified_triangles)))
             measured.push_back(int(n));
     parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
         const auto n = std::size_t(measured[i]);

@@ -130,6 +130,22 @@ TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
 // Proxies are measured among their siblings: a detailed facade sealed inside a
 // closed shell is never seen, so no proxy of it has any error and only the
 // cheapest is kept; measured alone, its box would show the facade's tiles.
+// The shares halve from the sub-tree's own triangles: without the half, a
+// level within a quarter of a building's bytes had only the eighth to draw.
+TEST(Hybrid, OffersTheSubtreeSimplifiedToHalfItsTriangles) {
+    Scene s = facade_and_sphere();
+    const HybridPlan plan = plan_hybrid(s.model, decode_textures(s.model), s.boxes, settings_for(0.005f, 2));
+    const std::size_t sphere_triangles = s.model.nodes[std::size_t(s.sphere)].primitives[0].triangle_count();
+    std::vector<double> shares;
+    for (const Proxy& p : plan.proxies[std::size_t(s.sphere)]) {
+        std::size_t triangles = 0;
+        for (const Primitive& primitive : p.primitives) triangles += primitive.triangle_count();
+        shares.push_back(double(triangles) / double(sphere_triangles));
+    }
+    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) { return share > 0.4 && share < 0.6; }))
+        << ::testing::PrintToString(shares);
+}
+
 TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
     Model model;
     model.source = "hybrid-test";
