@@ -1,11 +1,8 @@
 #include "experiments/sweep.h"
 
-#include "base/atomic_write.h"
 #include "base/csv.h"
 #include "base/memory_budget.h"
 #include "base/input_error.h"
-#include "base/input_file.h"
-#include "base/key_value_lines.h"
 #include "base/key_values.h"
 #include "base/timing.h"
 #include "data_gen/interpreter.h"
@@ -16,6 +13,7 @@
 #include "experiments/image_metrics.h"
 #include "experiments/metric_registry.h"
 #include "experiments/silhouette.h"
+#include "experiments/sweep_tables.h"
 #include "toolkit/lod/level_values.h"
 #include "toolkit/lod/level_budgets.h"
 #include "toolkit/lod/simplification.h"
@@ -28,18 +26,12 @@
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 
-#include <libdeflate.h>
-
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -47,65 +39,9 @@ namespace boxlod {
 namespace {
 
 namespace fs = std::filesystem;
-const std::vector<std::string> key_columns = {"model", "level_mode", "box_kind", "interpolation",
-                                              "level", "view", "distance", "render_mode"};
 
 // A row key (CSV text already) extended by more fields.
 std::string extend_row(const std::string& key, const std::vector<std::string>& more) { return key + "," + csv_row(more); }
-
-// A CSV whose rows are found by their key columns (the first ones).
-struct KeyedTable {
-    std::string path, header;
-    std::map<std::string, std::string> rows;  // key -> the whole line
-    std::vector<std::string> file_order;      // keys as they were in the file
-};
-
-// What each column of results.csv and timings.csv holds, checked when a
-// folder's tables are read back (a resumed sweep, --merge): metric columns
-// hold metrics, the others are counts unless listed.
-CsvValue column_value(const std::string& column) {
-    static const std::map<std::string, CsvValue> listed = {
-        {"model", CsvValue::text},           {"level_mode", CsvValue::text},       {"box_kind", CsvValue::text},
-        {"interpolation", CsvValue::text},   {"view", CsvValue::text},             {"render_mode", CsvValue::text},
-        {"baseline_variant", CsvValue::text}, {"distance", CsvValue::number},      {"depth_error", CsvValue::optional_number},
-        {"measured_error", CsvValue::optional_number}, {"build_seconds", CsvValue::number},
-        {"render_seconds", CsvValue::number}, {"metric_seconds", CsvValue::number}};
-    if (auto found = listed.find(column); found != listed.end()) return found->second;
-    Metric metric;
-    return parse_enum(metrics(), column, metric) ? CsvValue::metric : CsvValue::count;
-}
-
-KeyedTable open_table(const std::string& path, const std::vector<std::string>& columns) {
-    KeyedTable table{path, csv_row(columns), {}, {}};
-    if (!fs::exists(path)) return table;
-    std::vector<CsvColumn> kinds;
-    for (const std::string& column : columns) kinds.push_back({column, column_value(column)});
-    std::map<std::string, int> first_line;
-    for (CsvRecord& record : read_csv_table(read_input_file(path, "sweep table"), path, kinds)) {
-        const std::string line = csv_row(record.fields);
-        record.fields.resize(key_columns.size());
-        std::string key = csv_row(record.fields);
-        if (auto [first, added] = first_line.emplace(key, record.line); !added)
-            throw_input_error(path, "line " + std::to_string(record.line),
-                              "the row of line " + std::to_string(first->second) + " again");
-        table.rows.emplace(key, line);
-        table.file_order.push_back(key);
-    }
-    return table;
-}
-
-// The rows in the sweep's order, then any the file had that this sweep does not make.
-void write_table(const KeyedTable& table, const std::vector<std::string>& order) {
-    std::string text = table.header + "\n";
-    std::set<std::string> written;
-    auto add = [&](const std::string& key) {
-        auto row = table.rows.find(key);
-        if (row != table.rows.end() && written.insert(key).second) text += row->second + "\n";
-    };
-    for (const std::string& key : order) add(key);
-    for (const std::string& key : table.file_order) add(key);
-    write_text_atomically(table.path, text);
-}
 
 Model load_sweep_model(const SweepModel& model) {
     if (!model.sample.empty()) return generate_building(sample_grammar(model.sample), BuildingOptions{});
@@ -170,13 +106,6 @@ Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Sh
     return out;
 }
 
-// File names: the key's words joined by '_', anything but [A-Za-z0-9+-.] replaced.
-std::string file_name(std::string name) {
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.' && c != '_') c = '_';
-    return name + ".png";
-}
-
 // What one group of rows draws: an LoD level or a baseline mesh.
 struct Candidate {
     Model model;
@@ -204,7 +133,7 @@ Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int ob
 }
 
 // The `triangles` column of a results.csv row (after the key columns, obtained_levels and faces).
-std::size_t triangles_of_row(const std::string& row) { return std::stoull(csv_fields(row).at(key_columns.size() + 2)); }
+std::size_t triangles_of_row(const std::string& row) { return std::stoull(csv_fields(row).at(sweep_key_columns().size() + 2)); }
 
 struct Variant {
     LevelMode mode;
@@ -226,7 +155,7 @@ std::string eta_text(double seconds) {
 }  // namespace
 
 std::vector<std::string> result_columns(const SweepConfig& config) {
-    std::vector<std::string> columns = key_columns;
+    std::vector<std::string> columns = sweep_key_columns();
     for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
                           "nodes_with_box", "depth_error", "measured_error", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
                           "covered_pixels", "baseline_variant"})
@@ -236,73 +165,12 @@ std::vector<std::string> result_columns(const SweepConfig& config) {
 }
 
 std::vector<std::string> timing_columns() {
-    std::vector<std::string> columns = key_columns;
+    std::vector<std::string> columns = sweep_key_columns();
     for (const char* c : {"build_seconds", "render_seconds", "metric_seconds"}) columns.push_back(c);
     return columns;
 }
 
 namespace {
-
-// The results table: results.csv and timings.csv keyed by row, the images kept,
-// and every row key of the cross product so far, in the sweep's order.
-struct SweepOutput {
-    KeyedTable results, timings;
-    fs::path settings_path;
-    std::string settings;
-    std::vector<std::string> order;
-    fs::path images;
-    bool keep_images = false;
-};
-
-// The build of boxlod that is running: its executable's size and CRC-32.
-// Another build may draw other pixels, so its rows are not this one's.
-std::string this_build() {
-    std::ifstream in("/proc/self/exe", std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in || bytes.empty()) return "unknown";  // no /proc: every build looks alike
-    char crc[9];
-    std::snprintf(crc, sizeof crc, "%08x", unsigned(libdeflate_crc32(0, bytes.data(), bytes.size())));
-    return std::to_string(bytes.size()) + " bytes, crc32 " + crc;
-}
-
-// settings.txt: what the folder's rows were made with (sweep_settings) and by
-// which build. A re-run with other settings or another build would skip rows
-// that no longer answer it. Written with the tables (write_tables).
-void check_settings(const fs::path& path, const std::string& settings) {
-    if (!fs::exists(path)) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
-    const std::vector<KeyValueLine> was = parse_key_value_lines(read_input_file(path.string(), "sweep settings"), path.string()),
-                                    is = parse_key_value_lines(settings, "this sweep");
-    auto text = [](const std::vector<KeyValueLine>& lines, std::size_t k) {
-        return k < lines.size() ? "'" + lines[k].key + " = " + lines[k].value + "'" : std::string("nothing more");
-    };
-    for (std::size_t k = 0; k < std::max(was.size(), is.size()); ++k)
-        if (k >= was.size() || k >= is.size() || was[k].key != is[k].key || was[k].value != is[k].value)
-            throw_input_error(path.string(), k < was.size() ? "line " + std::to_string(was[k].line) : "",
-                              "the rows here were made with " + text(was, k) + ", this sweep runs with " + text(is, k) +
-                                  "; use another output folder");
-}
-
-SweepOutput open_output(const SweepConfig& config, const std::string& output_folder) {
-    fs::create_directories(output_folder);
-    SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns(config)),
-                    open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns()),
-                    fs::path(output_folder) / "settings.txt", sweep_settings(config) + "boxlod_build = " + this_build() + "\n", {},
-                    fs::path(output_folder) / "images", config.keep_images != KeptImages::none};
-    check_settings(out.settings_path, out.settings);
-    if (out.keep_images) fs::create_directories(out.images);
-    return out;
-}
-
-void save_image(const SweepOutput& out, const std::string& name, const Image8& image) {
-    write_png((out.images / file_name(name)).string(), image);
-}
-
-// Rewritten after every group, so an interrupted sweep keeps what it has.
-void write_tables(const SweepOutput& out) {
-    write_text_atomically(out.settings_path.string(), out.settings);
-    write_table(out.results, out.order);
-    write_table(out.timings, out.order);
-}
 
 // The plan of one model: its variants (level mode x box kind x interpolation)
 // with their levels, and how many groups of rows they and the baselines make.
@@ -393,20 +261,18 @@ std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, cons
     return fields;
 }
 
-// A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
-// over views x distances x render modes. `slot(mode, view, distance)` says which rows may
-// share one candidate, `make(slot, alternative)` builds it; both run only for rows missing
-// from results.csv.
-// With several `alternatives` (simplification-best), each is drawn for every missing row
-// and the group keeps the one with the lowest mean choice_error over them.
-void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
-               const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
-               const std::function<Candidate(int, int)>& make,
-               int alternatives = 1) {
+// A row of a group, not yet in results.csv.
+struct MissingRow {
+    std::size_t view, distance;
+    RenderMode mode;
+    std::string key;
+};
+
+// The group's rows in the sweep's order (noted in `out.order`); those
+// results.csv holds already are counted as skipped, the others returned.
+std::vector<MissingRow> missing_rows(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group) {
     const SweepConfig& config = run.config;
-    auto group_start = Clock::now();
-    struct Row { std::size_t view, distance; RenderMode mode; std::string key; };
-    std::vector<Row> missing;
+    std::vector<MissingRow> missing;
     for (std::size_t v = 0; v < config.views.size(); ++v)
         for (std::size_t d = 0; d < config.distances.size(); ++d)
             for (RenderMode mode : config.render_modes) {
@@ -417,15 +283,65 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
     const std::size_t skipped = rows_per_group(config) - missing.size();
     report.rows_skipped += skipped;
     run.done += skipped;
-    if (missing.empty()) return;
+    return missing;
+}
 
-    struct Drawn { std::string result, timing; Image8 image; Plane heatmap; };
-    std::vector<std::vector<Drawn>> drawn(static_cast<std::size_t>(alternatives));
+// A row as drawn: its results.csv and timings.csv lines, its image and heat map.
+struct DrawnRow {
+    std::string result, timing;
+    Image8 image;
+    Plane heatmap;
+    double error = 0;  // choice_error
+};
+
+// One row: the candidate rendered from the row's view and compared with the original's render.
+DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Candidate& c, const MissingRow& row) {
+    const SweepConfig& config = run.config;
+    const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
+    auto render_start = Clock::now();
+    RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                            row.mode, config.lod, run.threads);
+    Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+    const double render_seconds = seconds_since(render_start);
+    report.render_seconds += render_seconds;
+    ++report.lod_renders;
+    auto metric_start = Clock::now();
+    Metrics metrics = compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
+    const double metric_seconds = seconds_since(metric_start);
+    report.metric_seconds += metric_seconds;
+    return {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
+            extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
+            out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap), metrics.error};
+}
+
+// The group's line on the progress stream, with the model's ETA.
+void report_group(const ModelRun& run, const std::string& group, std::size_t rows, double seconds) {
+    if (!run.progress) return;
+    const double eta = run.seconds / double(run.computed) * double(run.rows - run.done);
+    std::fprintf(run.progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
+                 run.index + 1, run.config.models.size(), group.c_str(), rows, seconds, run.done, run.rows,
+                 eta_text(eta).c_str());
+    std::fflush(run.progress);
+}
+
+// A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
+// over views x distances x render modes. `slot(mode, view, distance)` says which rows may
+// share one candidate, `make(slot, alternative)` builds it; both run only for rows missing
+// from results.csv.
+// With several `alternatives` (simplification-best), each is drawn for every missing row
+// and the group keeps the one with the lowest mean choice_error over them.
+void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
+               const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
+               const std::function<Candidate(int, int)>& make,
+               int alternatives = 1) {
+    auto group_start = Clock::now();
+    const std::vector<MissingRow> missing = missing_rows(run, out, report, group);
+    if (missing.empty()) return;
+    std::vector<std::vector<DrawnRow>> drawn(static_cast<std::size_t>(alternatives));
     std::vector<double> mean_error(std::size_t(alternatives), 0);
-    const bool heatmap = config.keep_images == KeptImages::all;
     for (int a = 0; a < alternatives; ++a) {
         std::map<int, Candidate> candidates;
-        for (const Row& row : missing) {
+        for (const MissingRow& row : missing) {
             int s = slot(row.mode, row.view, row.distance);
             auto found = candidates.find(s);
             if (found == candidates.end()) {
@@ -437,47 +353,25 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
                 ++report.lods_built;
                 found = candidates.emplace(s, std::move(made)).first;
             }
-            const Candidate& c = found->second;
-            const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
-            auto render_start = Clock::now();
-            RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                                    row.mode, config.lod, run.threads);
-            Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
-            double render_seconds = seconds_since(render_start);
-            report.render_seconds += render_seconds;
-            ++report.lod_renders;
-            auto metric_start = Clock::now();
-            Metrics metrics = compare_shots(config, original_shot, shot, heatmap, run.threads);
-            double metric_seconds = seconds_since(metric_start);
-            report.metric_seconds += metric_seconds;
-            mean_error[std::size_t(a)] += metrics.error / double(missing.size());
-            drawn[std::size_t(a)].push_back(
-                {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
-                 extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
-                 out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap)});
+            drawn[std::size_t(a)].push_back(draw_row(run, out, report, found->second, row));
+            mean_error[std::size_t(a)] += drawn[std::size_t(a)].back().error / double(missing.size());
         }
     }
     const auto best = std::size_t(std::min_element(mean_error.begin(), mean_error.end()) - mean_error.begin());
     for (std::size_t r = 0; r < missing.size(); ++r) {
-        Drawn& row = drawn[best][r];
+        DrawnRow& row = drawn[best][r];
         out.results.rows[missing[r].key] = row.result;
         out.timings.rows[missing[r].key] = row.timing;
         if (out.keep_images) save_image(out, missing[r].key, row.image);
-        if (heatmap) save_image(out, missing[r].key + "_heatmap", error_heatmap(row.heatmap));
+        if (run.config.keep_images == KeptImages::all) save_image(out, missing[r].key + "_heatmap", error_heatmap(row.heatmap));
     }
     write_tables(out);
     report.rows_computed += missing.size();
     run.done += missing.size();
     run.computed += missing.size();
-    double group_seconds = seconds_since(group_start);
+    const double group_seconds = seconds_since(group_start);
     run.seconds += group_seconds;
-    if (run.progress) {
-        double eta = run.seconds / double(run.computed) * double(run.rows - run.done);
-        std::fprintf(run.progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
-                     run.index + 1, config.models.size(), group.c_str(), missing.size(), group_seconds, run.done, run.rows,
-                     eta_text(eta).c_str());
-        std::fflush(run.progress);
-    }
+    report_group(run, group, missing.size(), group_seconds);
 }
 
 // The LoD levels of one variant. Normal, parallax, pom and albedo draw the same
@@ -625,32 +519,6 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
     }
 }
 
-// A shard's rows into the merged table: a row two shards both hold must be the
-// same. They join no file order: only rows this sweep makes are written.
-void merge_rows(KeyedTable& into, const KeyedTable& shard) {
-    for (const std::string& key : shard.file_order) {
-        const std::string& row = shard.rows.at(key);
-        auto [at, added] = into.rows.emplace(key, row);
-        if (!added && at->second != row)
-            throw_input_error(shard.path, key, "this row differs from another shard's or the merged table's");
-    }
-}
-
-// Reads the shards' results, timings and kept images into the output.
-void merge_shards(const SweepConfig& config, SweepOutput& out, const std::vector<std::string>& shard_folders) {
-    for (const std::string& folder : shard_folders) {
-        const fs::path results = fs::path(folder) / "results.csv";
-        if (!fs::is_regular_file(results)) throw_input_error(results.string(), "", "no such shard results file");
-        merge_rows(out.results, open_table(results.string(), result_columns(config)));
-        KeyedTable timings = open_table((fs::path(folder) / "timings.csv").string(), timing_columns());
-        // Timings differ from run to run: the first shard's stand.
-        for (const std::string& key : timings.file_order) out.timings.rows.emplace(key, timings.rows.at(key));
-        if (out.keep_images && fs::is_directory(fs::path(folder) / "images"))
-            fs::copy(fs::path(folder) / "images", out.images,
-                     fs::copy_options::overwrite_existing | fs::copy_options::recursive);
-    }
-}
-
 // Plan, then execute, model by model, into the results table (after the shards' rows, if any).
 SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress,
                        const std::vector<std::string>& shard_folders = {}) {
@@ -660,8 +528,8 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     check_memory("boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) + " pixels",
                  2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
     SweepReport report;
-    SweepOutput out = open_output(config, output_folder);
-    merge_shards(config, out, shard_folders);
+    SweepOutput out = open_output(config, output_folder, result_columns(config), timing_columns());
+    merge_shards(out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
         auto start = Clock::now();

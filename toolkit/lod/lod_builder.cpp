@@ -331,9 +331,56 @@ void place_swatches(const Packing& packing, const Atlas& atlas, int gutter, Mode
         }
 }
 
+// Copies of `primitives` into `node`, their materials the output's (copied on first use).
+void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& writer, Node& node) {
+    for (const Primitive& primitive : primitives) {
+        Primitive copy = primitive;
+        copy.material = writer.material(primitive.material);
+        node.primitives.push_back(std::move(copy));
+    }
+}
+
+// Box node n's quads, one primitive per page its faces landed on (the pages'
+// materials come first, in page order), its baked texels placed in its pages;
+// `next_packed` walks the packing's faces, which are in the cut's order.
+std::map<int, Primitive> box_primitives(const LodSession& session, int n, const Packing& packing, const Atlas& atlas,
+                                        bool textured, std::size_t& next_packed, Model& out) {
+    std::map<int, Primitive> by_page;
+    std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
+    for (int f = 0; f < 6; ++f) {
+        if (!textured) {
+            Primitive& primitive = by_page[0];
+            primitive.material = 0;
+            append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, Eigen::Vector2i::Zero());
+            continue;
+        }
+        const std::vector<PackedFace>& packed = packing.faces;
+        if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
+        const PackedFace& face = packed[next_packed++];
+        const bool flat = face.placement < 0;
+        const AtlasPlacement& at = atlas.placements[std::size_t(flat ? packing.swatch_placement : face.placement)];
+        const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
+        Primitive& primitive = by_page[at.page];
+        primitive.material = at.page;
+        append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), face.region, &at, page_size);
+        if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
+            const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
+            const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
+                                         float(texel.y() + swatch_side / 2) / float(page_size.y()));
+            std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), center);
+            continue;
+        }
+        const LodPage page = lod_page(at.page);
+        place_face(session.baked.at(n)[f], face.region, at, session.sizing.gutter,
+                   2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
+                   out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
+    }
+    return by_page;
+}
+
 // Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
-// materials and textures), a box node becomes a leaf with one quad per packed
-// face, its baked texels placed in its page.
+// materials and textures), a simplified one its simplified sub-tree, a box
+// node becomes a leaf with one quad per packed face.
 void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
                    bool textured) {
     const Model& model = *session.model;
@@ -351,54 +398,13 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
         new_index[n] = index;
         out.nodes[index].rule = node.rule;
         out.nodes[index].scope = node.scope;
-        if (auto proxy = simplified.find(n); proxy != simplified.end()) {  // its sub-tree simplified, the source's materials
-            for (const Primitive& primitive : proxy->second->primitives) {
-                Primitive copy = primitive;
-                copy.material = writer.material(primitive.material);
-                out.nodes[index].primitives.push_back(std::move(copy));
-            }
-            continue;
-        }
-        if (!is_box[n]) {  // kept: its own geometry (a replaced node without box has none)
-            for (const Primitive& primitive : node.primitives) {
-                Primitive copy = primitive;
-                copy.material = writer.material(primitive.material);
-                out.nodes[index].primitives.push_back(std::move(copy));
-            }
-            continue;
-        }
-        // One primitive per page this box's faces landed on (the pages' materials come first, page order).
-        std::map<int, Primitive> by_page;
-        std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
-        for (int f = 0; f < 6; ++f) {
-            if (!textured) {
-                Primitive& primitive = by_page[0];
-                primitive.material = 0;
-                append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, Eigen::Vector2i::Zero());
-                continue;
-            }
-            const std::vector<PackedFace>& packed = packing.faces;
-            if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
-            const PackedFace& face = packed[next_packed++];
-            const bool flat = face.placement < 0;
-            const AtlasPlacement& at = atlas.placements[std::size_t(flat ? packing.swatch_placement : face.placement)];
-            const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
-            Primitive& primitive = by_page[at.page];
-            primitive.material = at.page;
-            append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), face.region, &at, page_size);
-            if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
-                const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
-                const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
-                                             float(texel.y() + swatch_side / 2) / float(page_size.y()));
-                std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), center);
-                continue;
-            }
-            const LodPage page = lod_page(at.page);
-            place_face(session.baked.at(n)[f], face.region, at, session.sizing.gutter,
-                       2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
-                       out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
-        }
-        for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
+        if (auto proxy = simplified.find(n); proxy != simplified.end())  // the source's materials
+            add_primitives(proxy->second->primitives, writer, out.nodes[index]);
+        else if (!is_box[n])  // kept: its own geometry (a replaced node without box has none)
+            add_primitives(node.primitives, writer, out.nodes[index]);
+        else
+            for (auto& [page, primitive] : box_primitives(session, n, packing, atlas, textured, next_packed, out))
+                out.nodes[index].primitives.push_back(std::move(primitive));
     }
     if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.sizing.gutter, out);
 }
