@@ -262,11 +262,7 @@ std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, cons
 }
 
 // A row of a group, not yet in results.csv.
-struct MissingRow {
-    std::size_t view, distance;
-    RenderMode mode;
-    std::string key;
-};
+struct MissingRow { std::size_t view, distance; RenderMode mode; std::string key; };
 
 // The group's rows in the sweep's order (noted in `out.order`); those
 // results.csv holds already are counted as skipped, the others returned.
@@ -286,13 +282,8 @@ std::vector<MissingRow> missing_rows(ModelRun& run, SweepOutput& out, SweepRepor
     return missing;
 }
 
-// A row as drawn: its results.csv and timings.csv lines, its image and heat map.
-struct DrawnRow {
-    std::string result, timing;
-    Image8 image;
-    Plane heatmap;
-    double error = 0;  // choice_error
-};
+// A row as drawn: its results.csv and timings.csv lines, its image and heat map, its choice_error.
+struct DrawnRow { std::string result, timing; Image8 image; Plane heatmap; double error = 0; };
 
 // One row: the candidate rendered from the row's view and compared with the original's render.
 DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Candidate& c, const MissingRow& row) {
