@@ -29,6 +29,13 @@ constexpr double simplified_shares[] = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32,
 // too doubled the time to build every level of `manual`.
 constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
+// A sub-tree of at least this many triangles is also simplified by vertex
+// clustering (meshopt_simplifySloppy), at every share below 1: a whole
+// building's many separate parts cluster together where edge collapse
+// stalls on each, and within 25 % of the FZK-Haus's bytes it won most views.
+// On every sub-tree, building every level of `manual` took 1.5x as long for
+// one more view won (docs/cost.md: The hybrid level mode).
+constexpr std::size_t fewest_clustered_triangles = 1000;
 
 // Where a sub-tree is measured: its bounding sphere seen orthographically from
 // the 8 corner directions, `side` pixels of `pixel` metres a side.
@@ -54,11 +61,12 @@ constexpr int measuring_directions = 8;  // the corners of a cube
 struct SimplifiedSubtree {
     std::vector<Primitive> primitives;
     std::size_t triangles = 0;
+    bool clustered = false;
 };
 
 struct NodeMeasurement {
     bool simplified_made = false;
-    std::vector<SimplifiedSubtree> simplified;  // those that simplify further than the one before, in share order
+    std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
     float pixel = 0;  // the measuring view the sums below are of (0: none yet)
     int side = 0;
     double box_sum = 0;
@@ -235,15 +243,20 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
     SimplifyOptions options;
     options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
     options.threads = 1;
-    std::size_t previous = subtree_triangles + 1;
-    for (double share : simplified_shares) {
-        const auto target = std::size_t(double(subtree_triangles) * share);
-        if (target < fewest_simplified_triangles) break;
-        SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0};
-        simplified.triangles = triangle_count(simplified.primitives);
-        if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
-        previous = simplified.triangles;
-        measurement.simplified.push_back(std::move(simplified));
+    for (const bool clustering : {false, true}) {
+        if (clustering && subtree_triangles < fewest_clustered_triangles) break;
+        options.edge_collapse = !clustering;
+        std::size_t previous = subtree_triangles + 1;
+        for (double share : simplified_shares) {
+            const auto target = std::size_t(double(subtree_triangles) * share);
+            if (target < fewest_simplified_triangles) break;
+            if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
+            SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
+            simplified.triangles = triangle_count(simplified.primitives);
+            if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
+            previous = simplified.triangles;
+            measurement.simplified.push_back(std::move(simplified));
+        }
     }
     measurement.simplified_made = true;
     return measurement.simplified;
@@ -322,6 +335,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         Proxy proxy;
         proxy.kind = ProxyKind::simplified;
         proxy.primitives = measurement.simplified[k].primitives;
+        proxy.clustered = measurement.simplified[k].clustered;
         proxy.bytes = mesh_bytes(proxy.primitives, model);
         proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));

@@ -1,7 +1,8 @@
 // The hybrid level mode (beyond the manual; docs/design.md: The hybrid level
 // mode). Each node may stand in for its sub-tree by one of several proxies:
 // its textured box, or the sub-tree simplified on its own at a few face
-// targets (meshoptimizer, the sub-tree's own materials and textures). Each
+// targets (meshoptimizer's edge collapse, and vertex clustering for large
+// sub-trees; the sub-tree's own materials and textures). Each
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
 // rendered among their siblings, from the 8 corner directions, orthographically with pixels
 // of the sizing view's size (texel = pixel, texture_sizing.h), and the error
@@ -34,6 +35,7 @@ enum class ProxyKind { box, simplified };
 struct Proxy {
     ProxyKind kind = ProxyKind::box;
     std::vector<Primitive> primitives;  // simplified: the sub-tree's simplified geometry (the model's materials)
+    bool clustered = false;  // simplified by vertex clustering (large sub-trees), else by edge collapse
     double bytes = 0;  // box: box_bytes_estimate at the sizing distance; simplified: its mesh bytes
     double error = 0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
 };
