@@ -159,8 +159,11 @@ TEST(Hybrid, ClustersLargeSubtreesWhereItBeatsEdgeCollapse) {
     EXPECT_TRUE(std::any_of(house.begin(), house.end(), [](const Proxy& p) { return p.clustered; }));
     const std::vector<std::size_t> triangles = subtree_triangles(model);
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        for (const Proxy& p : plan.proxies[n])
-            if (p.clustered) EXPECT_GE(triangles[n], 1000u) << model.nodes[n].name;
+        for (const Proxy& p : plan.proxies[n]) {
+            if (p.clustered) {
+                EXPECT_GE(triangles[n], 1000u) << model.nodes[n].name;
+            }
+        }
 }
 
 TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
