@@ -6,6 +6,7 @@
 #include "toolkit/lod/kept_subtrees.h"
 #include "toolkit/lod/level_budgets.h"
 #include "toolkit/model/model_subtree.h"
+#include "toolkit/lod/paid_textures.h"
 #include "toolkit/lod/simplification.h"
 #include "toolkit/model/vertex_layout.h"
 
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <span>
 #include <tuple>
 
 namespace boxlod {
@@ -23,7 +25,11 @@ namespace {
 // from slight to coarse, each half the one before. Without the half, a level
 // within a quarter of a building's bytes fell back to the eighth (docs/cost.md:
 // The hybrid level mode).
-constexpr double simplified_shares[] = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// Large sub-trees by edge collapse also at 1/sqrt(2) and 1/sqrt(8): without
+// them, a level within half of `office`'s bytes drew its root at 1/2, and
+// `house` won 10 views instead of 25 there (docs/cost.md: The hybrid level mode).
+constexpr std::array<double, 9> large_simplified_shares = {1, 0.7071, 0.5, 0.3536, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: measuring the many smaller sub-trees
 // too doubled the time to build every level of `manual`.
@@ -247,7 +253,8 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         if (clustering && subtree_triangles < fewest_clustered_triangles) break;
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
-        for (double share : simplified_shares) {
+        const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
+        for (double share : finer ? std::span<const double>(large_simplified_shares) : std::span<const double>(simplified_shares)) {
             const auto target = std::size_t(double(subtree_triangles) * share);
             if (target < fewest_simplified_triangles) break;
             if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
@@ -317,9 +324,11 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
 }
 
 // Every proxy of node n, measured (or its measurements reused); then sorted by
-// bytes, keeping only those that beat every cheaper one and cost less than the sub-tree itself.
+// bytes drawn alone (with the textures they sample), keeping only those that
+// beat every cheaper one and cost less than the sub-tree itself.
 std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
-                                   double subtree_bytes, std::size_t subtree_triangles, const HybridSettings& settings) {
+                                   double subtree_bytes, std::size_t subtree_triangles, const PaidTextures& paid,
+                                   const HybridSettings& settings) {
     const Drawable subtree = make_drawable(model, textures, n);
     const MeasuringView view = measuring_view(subtree.bounds, settings);
     NodeMeasurement own;
@@ -340,46 +349,55 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));
     }
-    std::stable_sort(proxies.begin(), proxies.end(), [](const Proxy& a, const Proxy& b) { return a.bytes < b.bytes; });
+    auto alone = [&](const Proxy& proxy) { return proxy.bytes + bytes_of(paid, textures_of(paid, proxy.primitives)); };
+    std::stable_sort(proxies.begin(), proxies.end(), [&](const Proxy& a, const Proxy& b) { return alone(a) < alone(b); });
     std::vector<Proxy> kept;
     for (Proxy& proxy : proxies)
-        if (proxy.bytes < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+        if (alone(proxy) < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
     return kept;
 }
 
 // The greedy order (docs/design.md: The hybrid level mode), within a byte
 // budget: a change that would exceed it gives way to the node's best change
 // that fits, if any, so a level fills its budget where the unbounded order
-// takes one large step past it.
+// takes one large step past it. A change's bytes count textures as a level
+// pays for them (paid_textures.h), so they change as other parts are drawn:
+// a queued change whose bytes went stale is weighed again when it comes up.
 class Planner {
 public:
     Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
-        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1) {
+        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1), paid_(paid_textures(model)),
+          drawn_(paid_) {
         subtree_bytes_.assign(model.nodes.size(), 0);
         own_bytes_.assign(model.nodes.size(), 0);
+        own_textures_ = node_textures(model, paid_);
+        subtree_textures_ = subtree_textures(model, paid_);
+        proxy_textures_.resize(model.nodes.size());
         const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
         for (std::size_t n = 0; n < model.nodes.size(); ++n) {
             subtree_bytes_[n] = double(subtree[n]);
             own_bytes_[n] = mesh_bytes(model.nodes[n].primitives, model);
+            for (const Proxy& proxy : proxies[n]) proxy_textures_[n].push_back(textures_of(paid_, proxy.primitives));
             if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
         }
     }
 
     void run(std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
-        bytes.push_back(drawn_bytes(0));
+        bytes.push_back(drawn_bytes(0) + drawn_.apply({}, {&drawn_textures(0)}));
         error.push_back(drawn_error(0));
         if (state_[0] < 0) return;  // the root has no proxy: only the original
         consider(0, budget_ - bytes.back());
         while (!frontier_.empty()) {
             const Move move = std::get<3>(*frontier_.begin());
             frontier_.erase(frontier_.begin());
-            if (bytes.back() + move.cost > budget_ * (1 + 1e-12)) {  // its best that fits, if any
-                consider(move.node, budget_ - bytes.back());
+            if (weigh(move.node, move.proxy).cost != move.cost || bytes.back() + move.cost > budget_ * (1 + 1e-12)) {
+                consider(move.node, budget_ - bytes.back());  // its best now, that fits, if any
                 continue;
             }
             steps.push_back({move.node, move.proxy});
             bytes.push_back(bytes.back() + move.cost);
             error.push_back(error.back() - move.gain);
+            drawn_.apply(drawn_textures(move.node), added_textures(move.node, move.proxy));
             state_[std::size_t(move.node)] = move.proxy;
             if (move.proxy >= 0) {
                 consider(move.node, budget_ - bytes.back());
@@ -405,14 +423,42 @@ private:
         }
     };
 
-    // Bytes and error of node n's sub-tree as drawn when n is reached in its current state.
+    // Mesh bytes, textures and error of node n's sub-tree as drawn when n is reached in its current state.
     double drawn_bytes(int n) const {
         const int s = state_[std::size_t(n)];
         return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
     }
+    const std::vector<int>& drawn_textures(int n) const {
+        const int s = state_[std::size_t(n)];
+        return s >= 0 ? proxy_textures_[std::size_t(n)][std::size_t(s)] : subtree_textures_[std::size_t(n)];
+    }
     double drawn_error(int n) const {
         const int s = state_[std::size_t(n)];
         return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].error : 0;
+    }
+
+    // The textures of what node n draws after changing to `proxy` (-1: opened).
+    std::vector<const std::vector<int>*> added_textures(int n, int proxy) const {
+        if (proxy >= 0) return {&proxy_textures_[std::size_t(n)][std::size_t(proxy)]};
+        std::vector<const std::vector<int>*> added{&own_textures_[std::size_t(n)]};
+        for (int child : model_.nodes[std::size_t(n)].children) added.push_back(&drawn_textures(child));
+        return added;
+    }
+
+    // Node n changed from its current proxy to `proxy` (-1: opened, its own
+    // geometry and its children as they are drawn), as the parts drawn now price it.
+    Move weigh(int n, int proxy) {
+        const Proxy& now = proxies_[std::size_t(n)][std::size_t(state_[std::size_t(n)])];
+        Move move{n, proxy, now.error, -now.bytes};
+        if (proxy >= 0) {
+            move.gain -= proxies_[std::size_t(n)][std::size_t(proxy)].error;
+            move.cost += proxies_[std::size_t(n)][std::size_t(proxy)].bytes;
+        } else {
+            move.cost += own_bytes_[std::size_t(n)];
+            for (int child : model_.nodes[std::size_t(n)].children) move.gain -= drawn_error(child), move.cost += drawn_bytes(child);
+        }
+        move.cost += drawn_.change(drawn_textures(n), added_textures(n, proxy));
+        return move;
     }
 
     static Key key(const Move& m) {
@@ -423,17 +469,12 @@ private:
 
     // Puts node n's best change adding at most `room` bytes into the frontier.
     void consider(int n, double room) {
-        const std::vector<Proxy>& proxies = proxies_[std::size_t(n)];
-        const Proxy& now = proxies[std::size_t(state_[std::size_t(n)])];
         std::optional<Key> best;
         auto offer = [&](const Move& m) {
             if (m.cost <= room * (1 + 1e-12) + 1e-9 && (!best || KeyOrder{}(key(m), *best))) best = key(m);
         };
-        Move open{n, -1, now.error, own_bytes_[std::size_t(n)] - now.bytes};
-        for (int child : model_.nodes[std::size_t(n)].children) open.gain -= drawn_error(child), open.cost += drawn_bytes(child);
-        offer(open);
-        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies.size(); ++j)
-            offer({n, int(j), now.error - proxies[j].error, proxies[j].bytes - now.bytes});
+        offer(weigh(n, -1));
+        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies_[std::size_t(n)].size(); ++j) offer(weigh(n, int(j)));
         if (best) frontier_.insert(*best);
     }
 
@@ -442,6 +483,10 @@ private:
     double budget_;
     std::vector<int> state_;
     std::vector<double> subtree_bytes_, own_bytes_;
+    PaidTextures paid_;
+    DrawnTextures drawn_;
+    std::vector<std::vector<int>> own_textures_, subtree_textures_;
+    std::vector<std::vector<std::vector<int>>> proxy_textures_;  // per node and proxy
     std::set<Key, KeyOrder> frontier_;
 };
 
@@ -467,16 +512,24 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     const bool textured = settings.mode != RenderMode::untextured;
     const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
     const std::vector<std::size_t> triangles = subtree_triangles(model);
-    // A node is measured where some proxy may cost less than its sub-tree's
-    // mesh: its box, or a simplified sub-tree (enough triangles for the first share that simplifies).
+    // A node is measured where some proxy may cost less than its sub-tree:
+    // its box (than the sub-tree's mesh and the textures only it samples,
+    // which the box may free: counting those that others sample too measured
+    // 1.7x as long on `manual`), or a simplified sub-tree (enough triangles
+    // for the first share that simplifies). Proxies are then kept by their
+    // bytes alone, with every texture they sample.
+    const PaidTextures paid = paid_textures(model);
+    const std::vector<std::vector<int>> sampled = subtree_textures(model, paid), exclusive = exclusive_textures(model, paid);
+    std::vector<double> alone(model.nodes.size());
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) alone[n] = double(bytes[n]) + bytes_of(paid, sampled[n]);
     std::vector<int> measured;
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < bytes[n] ||
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
                          double(triangles[n]) * smallest_simplified_share_of_interest >= double(fewest_simplified_triangles)))
             measured.push_back(int(n));
     parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
         const auto n = std::size_t(measured[i]);
-        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], double(bytes[n]), triangles[n], settings);
+        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], alone[n], triangles[n], paid, settings);
     });
     order_hybrid_plan(model, plan);
     return plan;

@@ -77,18 +77,9 @@ std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format) {
     return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) { return (w + 3) / 4 * ((h + 3) / 4) * block_bytes; });
 }
 
-CostParts cost_parts(const Model& model) {
-    CostParts parts;
-    std::set<int> materials;
-    for (const Node& node : model.nodes)
-        for (const Primitive& p : node.primitives) {
-            materials.insert(p.material);
-            parts.mesh_bytes += primitive_mesh_bytes(p, model);
-        }
-    parts.draw_calls = materials.size();
-
-    // Each texture once, stored in the use of the first material that samples
-    // it, with every map any material samples it as.
+std::map<int, TextureCost> texture_costs(const Model& model, const std::set<int>& materials) {
+    // Each texture once, in the use of the first material that samples it,
+    // with every map any material samples it as.
     struct Sampled { TextureUse use; unsigned maps = 0; };
     std::map<int, Sampled> sampled;
     for (int m : materials) {
@@ -98,15 +89,29 @@ CostParts cost_parts(const Model& model) {
             if (index >= 0 && index < int(model.textures.size()))
                 sampled.emplace(index, Sampled{use}).first->second.maps |= map_bit(map);
     }
+    std::map<int, TextureCost> costs;
     for (auto [index, texture_sampled] : sampled) {
         const Texture& texture = model.textures[std::size_t(index)];
         const TextureUse use = texture_sampled.use;
         const bool wide = !texture.image16.empty();
         const int width = wide ? texture.image16.width : texture.image.width;
         const int height = wide ? texture.image16.height : texture.image.height;
-        parts.textures.push_back({texture_digest(texture), uncompressed_bytes(texture, use),
-                                  block_compressed_bytes(width, height, gpu_format(texture, use)), texture_sampled.maps});
+        costs[index] = {texture_digest(texture), uncompressed_bytes(texture, use),
+                        block_compressed_bytes(width, height, gpu_format(texture, use)), texture_sampled.maps};
     }
+    return costs;
+}
+
+CostParts cost_parts(const Model& model) {
+    CostParts parts;
+    std::set<int> materials;
+    for (const Node& node : model.nodes)
+        for (const Primitive& p : node.primitives) {
+            materials.insert(p.material);
+            parts.mesh_bytes += primitive_mesh_bytes(p, model);
+        }
+    parts.draw_calls = materials.size();
+    for (auto& [index, cost] : texture_costs(model, materials)) parts.textures.push_back(cost);
     return parts;
 }
 

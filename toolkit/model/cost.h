@@ -8,6 +8,8 @@
 #include "toolkit/model/vertex_layout.h"  // primitive_mesh_bytes
 
 #include <cstdint>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,9 @@ struct CostParts {
     std::vector<TextureCost> textures;  // every texture a material uses
 };
 CostParts cost_parts(const Model& model);
+// By texture index, each texture `materials` sample (indices into the model's),
+// in the use of the first material that samples it.
+std::map<int, TextureCost> texture_costs(const Model& model, const std::set<int>& materials);
 // Every texture counted: what the files hold (build, info, chains).
 ModelCost combined_cost(const std::vector<const CostParts*>& parts);
 // Only the textures of the maps `mode` draws (renderer.h: maps_drawn): what an

@@ -134,7 +134,7 @@ TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
 // cheapest is kept; measured alone, its box would show the facade's tiles.
 // The shares halve from the sub-tree's own triangles: without the half, a
 // level within a quarter of a building's bytes had only the eighth to draw.
-TEST(Hybrid, OffersTheSubtreeSimplifiedToHalfItsTriangles) {
+TEST(Hybrid, OffersTheSubtreeSimplifiedToHalfItsTrianglesAndLargeOnesFiner) {
     Scene s = facade_and_sphere();
     const HybridPlan plan = plan_hybrid(s.model, decode_textures(s.model), s.boxes, settings_for(0.005f, 2));
     const std::size_t sphere_triangles = s.model.nodes[std::size_t(s.sphere)].primitives[0].triangle_count();
@@ -145,6 +145,9 @@ TEST(Hybrid, OffersTheSubtreeSimplifiedToHalfItsTriangles) {
         shares.push_back(double(triangles) / double(sphere_triangles));
     }
     EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) { return share > 0.4 && share < 0.6; }))
+        << ::testing::PrintToString(shares);
+    // Its 4,096 triangles make it large: 1/sqrt(2) of them too.
+    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) { return share > 0.65 && share < 0.75; }))
         << ::testing::PrintToString(shares);
 }
 
@@ -299,6 +302,34 @@ TEST(Hybrid, ALevelFillsItsBudgetWithTheChangesThatFit) {
     EXPECT_EQ(level.error, 520);
     EXPECT_EQ(level.state, (std::vector<int>{-1, 0, 1}));
     EXPECT_EQ(hybrid_level_within(model, plan, 50).state, (std::vector<int>{0, 0, 0}));  // nothing fits: the root's cheapest
+}
+
+// Both children sample one texture: the plan pays for it once, when the first
+// of them keeps its geometry (paid_textures.h). The second's opening, queued
+// when the texture was still to pay, is weighed again before it is taken.
+TEST(Hybrid, PaysForATextureOnceHoweverManyPartsSampleIt) {
+    Model model = two_children();
+    model.textures.push_back({"bricks", Image8(64, 64, 3, 90)});
+    model.materials.emplace_back().base_color_texture = 0;
+    for (int child : {1, 2}) {
+        Primitive& p = model.nodes[std::size_t(child)].primitives[0];
+        p.material = 0;
+        p.uvs.assign(p.positions.size(), Eigen::Vector2f::Zero());
+    }
+    const double own = double(primitive_mesh_bytes(model.nodes[1].primitives[0], model));
+    const double texture = double(block_compressed_bytes(64, 64, GpuFormat::bc1));
+    HybridPlan plan;
+    plan.proxies.resize(3);
+    for (auto [n, bytes, error] : {std::tuple{0, 100.0, 1000.0}, {1, 50.0, 400.0}, {2, 60.0, 200.0}}) {
+        plan.proxies[std::size_t(n)].emplace_back();
+        plan.proxies[std::size_t(n)][0].bytes = bytes, plan.proxies[std::size_t(n)][0].error = error;
+    }
+    order_hybrid_plan(model, plan);
+    ASSERT_EQ(plan.steps.size(), 3u);
+    EXPECT_EQ(plan.steps[1].node, 1);  // a: 400 error for its geometry and the texture
+    const std::vector<double> bytes = {100, 110, 110 - 50 + own + texture, 110 - 50 + own + texture - 60 + own};
+    EXPECT_EQ(plan.bytes, bytes);
+    EXPECT_EQ(plan.bytes.back(), double(model_cost(model).bytes()));  // the original, as cost.h counts it
 }
 
 // Every level within its budget, real bytes (mesh + every texture), stated in
