@@ -185,10 +185,7 @@ Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degree
     camera.fovy_degrees = fovy_degrees;
     Eigen::Vector3f look = (pose.target - pose.eye).normalized();
     if (std::abs(look.y()) > 0.999f) camera.up = look.y() < 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
-    float radius = std::max(city.size().norm() / 2, 1.0f);
-    float distance = (pose.eye - city.center()).norm();
-    camera.near_plane = std::max(distance - radius, 0.2f);
-    camera.far_plane = std::max(distance + radius, camera.near_plane * 2);
+    fit_depth_range(camera, (pose.eye - city.center()).norm(), std::max(city.size().norm() / 2, 1.0f));
     return camera;
 }
 

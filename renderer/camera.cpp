@@ -92,11 +92,14 @@ Camera camera_at_position(const Eigen::Vector3f& direction, const Eigen::Vector3
     camera.target = center;
     camera.fovy_degrees = fovy_degrees;
     if (d.x() == 0 && d.z() == 0) camera.up = d.y() > 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
-    // Near as far out as the scene allows keeps depth precision; never behind the camera.
-    camera.near_plane = std::max(distance - scene_radius, distance * 1e-3f);
-    camera.far_plane = distance + scene_radius;
-    if (camera.far_plane <= camera.near_plane * 1.001f) camera.far_plane = camera.near_plane * 2;
+    fit_depth_range(camera, distance, scene_radius);
     return camera;
+}
+
+void fit_depth_range(Camera& camera, float distance, float radius) {
+    camera.near_plane = std::max(distance - radius, std::max(distance * 1e-3f, radius * 1e-4f));
+    camera.far_plane = distance + radius;
+    if (camera.far_plane <= camera.near_plane * 1.001f) camera.far_plane = camera.near_plane * 2;
 }
 
 float framing_distance(float radius, float fovy_degrees) {

@@ -31,6 +31,12 @@ Eigen::Matrix4f projection_matrix(const Camera& camera, float aspect);
 std::vector<std::string> camera_position_names();
 std::optional<Eigen::Vector3f> camera_direction(const std::string& name);
 
+// Near and far fitted to a sphere of `radius` whose centre is `distance` from
+// the camera: near as far out as the sphere allows (depth precision), never
+// behind the camera nor at 0 inside the sphere; far past the sphere. Every
+// camera that frames a model or a city fits its depth range this way.
+void fit_depth_range(Camera& camera, float distance, float radius);
+
 // Camera at center + normalize(direction) * distance looking at center, up = +Y
 // (-Z for straight down +Y, +Z for -Y); near/far fitted to a bounding sphere.
 Camera camera_at_position(const Eigen::Vector3f& direction, const Eigen::Vector3f& center, float distance,

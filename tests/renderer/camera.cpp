@@ -33,6 +33,24 @@ TEST(Camera, PositionLooksAtTheCentreWithTheManualsUpVectors) {
     EXPECT_FLOAT_EQ(c.far_plane, 12);
 }
 
+// One depth range for every framing camera: the sphere just fits outside it,
+// a positive near plane inside it (the viewer at the model's centre, a
+// street in a city), and far stays beyond near however far the camera is.
+TEST(Camera, DepthRangeFitsTheSphereFromOutsideAndInside) {
+    Camera c;
+    fit_depth_range(c, 10, 2);
+    EXPECT_EQ(c.near_plane, 8);
+    EXPECT_EQ(c.far_plane, 12);
+    fit_depth_range(c, 0, 5);  // at the centre
+    EXPECT_GT(c.near_plane, 0);
+    EXPECT_EQ(c.far_plane, 5);
+    fit_depth_range(c, 3, 5);  // inside: near at a thousandth of the distance
+    EXPECT_FLOAT_EQ(c.near_plane, 3e-3f);
+    EXPECT_EQ(c.far_plane, 8);
+    fit_depth_range(c, 1e7f, 1);  // far away: far and near not equal in floats
+    EXPECT_GT(c.far_plane, c.near_plane * 1.001f);
+}
+
 TEST(Camera, ProjectionMapsNearAndFarToTheDepthRange) {
     Camera c;
     c.position = {0, 0, 0}, c.target = {0, 0, -1}, c.near_plane = 2, c.far_plane = 20;

@@ -16,11 +16,8 @@ namespace {
 void camera_moved(ViewerState& s) {
     Camera& c = s.settings.camera;
     if (s.light_follows_camera) s.settings.light.position = light_for_camera(c).position;
-    Framing framing = model_framing(*s.model);
-    float distance = (c.position - framing.center).norm();
-    float radius = framing.radius;
-    c.near_plane = std::max(distance - radius, std::max(distance * 1e-3f, radius * 1e-4f));
-    c.far_plane = std::max(distance + radius, c.near_plane * 2);
+    const Framing framing = model_framing(*s.model);
+    fit_depth_range(c, (c.position - framing.center).norm(), framing.radius);
 }
 
 void parameters_changed(ViewerState& s, const std::string& message) {

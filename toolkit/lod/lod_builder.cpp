@@ -133,9 +133,7 @@ Camera preview_camera(const LodSession& session) {
     if (p.camera) {
         Camera camera = *p.camera;
         Framing framing = model_framing(*session.model);
-        float distance = (camera.position - framing.center).norm();
-        camera.near_plane = std::max(distance - framing.radius, distance * 1e-3f);
-        camera.far_plane = std::max(distance + framing.radius, camera.near_plane * 2);
+        fit_depth_range(camera, (camera.position - framing.center).norm(), framing.radius);
         return camera;
     }
     return framed_camera(model_framing(*session.model), {1, 1, 1}, p.distance, p.fovy);
