@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "renderer/camera.h"
+#include "toolkit/model/framing.h"
 
 #include <algorithm>
 #include <charconv>
@@ -152,10 +153,10 @@ std::vector<CameraPose> line_path(const Eigen::Vector3f& start, const Eigen::Vec
 std::vector<CameraPose> city_path(const std::string& name, const Model& city, float fovy_degrees, int frames) {
     if (name == "street") return street_path(city, frames);
     if (name != "orbit") throw InputError("--path: unknown built-in path '" + name + "' (orbit, street, or a keyframe file)");
-    Bounds bounds = model_bounds(city);
-    float distance = framing_distance(std::max(bounds.size().norm() / 2, 1e-3f), fovy_degrees);
+    const Framing framing = model_framing(city);
+    float distance = framing_distance(framing, fovy_degrees);
     const double elevation = M_PI / 6;  // 30 degrees above the horizon
-    return orbit_path(bounds.center(), float(distance * std::cos(elevation)), float(distance * std::sin(elevation)), frames);
+    return orbit_path(framing.center, float(distance * std::cos(elevation)), float(distance * std::sin(elevation)), frames);
 }
 
 }  // namespace boxlod

@@ -12,6 +12,7 @@
 #include "toolkit/lod/boxes.h"
 #include "toolkit/selection/face_budget.h"
 #include "toolkit/lod/lod_builder.h"
+#include "toolkit/model/framing.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/drawing/resident_drawables.h"
 #include "toolkit/model/statistics.h"
@@ -34,8 +35,8 @@ const Eigen::Vector3f sky{0.62f, 0.75f, 0.9f};  // linear background
 // change as the camera moves (light_for_camera would follow it).
 Light city_light(const Bounds& bounds) {
     Light light;
-    float radius = std::max(bounds.size().norm() / 2, 1.0f);
-    light.position = bounds.center() + Eigen::Vector3f(0.6f, 1.5f, 0.8f) * (2 * radius);
+    const Framing framing = framing_of(bounds);
+    light.position = framing.center + Eigen::Vector3f(0.6f, 1.5f, 0.8f) * (2 * framing.radius);
     return light;
 }
 
@@ -185,7 +186,8 @@ Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degree
     camera.fovy_degrees = fovy_degrees;
     Eigen::Vector3f look = (pose.target - pose.eye).normalized();
     if (std::abs(look.y()) > 0.999f) camera.up = look.y() < 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
-    fit_depth_range(camera, (pose.eye - city.center()).norm(), std::max(city.size().norm() / 2, 1.0f));
+    const Framing framing = framing_of(city);
+    fit_depth_range(camera, (pose.eye - framing.center).norm(), framing.radius);
     return camera;
 }
 

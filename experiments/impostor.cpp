@@ -2,6 +2,7 @@
 
 #include "base/parallel.h"
 #include "toolkit/drawing/drawable.h"
+#include "toolkit/model/framing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,9 +45,9 @@ ImpostorAtlas make_impostor(const Model& model, int directions_per_side, int cel
     if (directions_per_side < 2 || directions_per_side > max_impostor_directions || cell < 8 || cell > 2048)
         throw std::invalid_argument("make_impostor: directions per side in [2, 32] and cells of 8 to 2048 texels");
     const int k = directions_per_side;
-    Bounds bounds = model_bounds(model);
-    const Eigen::Vector3f center = bounds.center();
-    const float radius = std::max(bounds.size().norm() / 2, 1e-6f);
+    const Framing framing = model_framing(model);
+    const Eigen::Vector3f center = framing.center;
+    const float radius = framing.radius;
     const float half = radius * float(cell) / float(cell - 2 * margin);
 
     ImpostorAtlas atlas;
