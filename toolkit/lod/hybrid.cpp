@@ -17,6 +17,7 @@
 #include <set>
 #include <span>
 #include <tuple>
+#include <utility>
 
 namespace boxlod {
 namespace {
@@ -349,11 +350,15 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));
     }
-    auto alone = [&](const Proxy& proxy) { return proxy.bytes + bytes_of(paid, textures_of(paid, proxy.primitives)); };
-    std::stable_sort(proxies.begin(), proxies.end(), [&](const Proxy& a, const Proxy& b) { return alone(a) < alone(b); });
+    std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
+    for (Proxy& proxy : proxies) {
+        const double alone = proxy.bytes + bytes_of(paid, textures_of(paid, proxy.primitives));
+        by_bytes.emplace_back(alone, std::move(proxy));
+    }
+    std::stable_sort(by_bytes.begin(), by_bytes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<Proxy> kept;
-    for (Proxy& proxy : proxies)
-        if (alone(proxy) < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+    for (auto& [alone, proxy] : by_bytes)
+        if (alone < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
     return kept;
 }
 

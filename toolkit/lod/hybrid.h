@@ -47,8 +47,9 @@ struct HybridStep {
 
 struct HybridPlan {
     // Per node, its proxies by ascending bytes drawn alone (with the textures
-    // they sample) and descending error (dominated ones dropped). Empty: the sub-tree is drawn as it is wherever it is
-    // reached (no geometry, or geometry cheaper than any proxy).
+    // they sample) and descending error (dominated ones dropped). Empty: the
+    // sub-tree is drawn as it is wherever it is reached (no geometry, or
+    // geometry cheaper than any proxy).
     std::vector<std::vector<Proxy>> proxies;
     std::vector<HybridStep> steps;      // from the root at its cheapest proxy to the original
     std::vector<double> bytes, error;   // after k steps: bytes (meshes, box estimates, each texture once) and the summed proxy errors
