@@ -20,63 +20,150 @@ const char* const street_grammar =
 
 }  // namespace
 
-Model generate_city(const CityOptions& options) {
-    if (options.buildings < 1) throw InputError("--city: the number of buildings must be at least 1");
+namespace {
+
+// The street pieces and blocks are flat lots: derived where they lie.
+void derive_ground(const CityPlan& plan, const Grammar& streets, const std::string& start, const ScopeBox& lot,
+                   Model& model, int parent, MaterialCache& materials) {
+    derive(streets, start, lot, plan.options.seed, model, parent, materials, plan.options.limits);
+}
+
+// A design drawn from a stream: its kind, its derivation's seed and its lot,
+// up to 15 % around its grammar's size and within the cell.
+BuildingDesign draw_design(const CityPlan& plan, Pcg32& random, float variation) {
+    BuildingDesign design;
+    const std::size_t kinds = plan.kinds.size();
+    design.kind = std::min(kinds - 1, std::size_t(random.uniform() * double(kinds)));
+    design.seed = random.next_uint();
+    Eigen::Vector2f lot = default_lot(plan.kinds[design.kind], design.seed);
+    lot.x() *= float(random.uniform(1 - variation, 1 + variation));
+    lot.y() *= float(random.uniform(1 - variation, 1 + variation));
+    design.lot = lot.cwiseMin(plan.cell - Eigen::Vector2f::Constant(4));
+    return design;
+}
+
+}  // namespace
+
+CityPlan plan_city(const CityOptions& options) {
+    if (!city_buildings_range.contains(options.buildings))
+        throw InputError("--city: the number of buildings must be in " + range_text(city_buildings_range));
+    if (!city_designs_range.contains(options.designs))
+        throw InputError("--designs: the number of designs must be in " + range_text(city_designs_range));
     if (options.kinds.empty()) throw InputError("city: no building kinds to choose from");
-    std::vector<Grammar> kinds;
+    CityPlan plan;
+    plan.options = options;
     Eigen::Vector2f largest_lot = Eigen::Vector2f::Zero();
     for (const std::string& kind : options.kinds) {
-        kinds.push_back(sample_grammar(kind));
-        largest_lot = largest_lot.cwiseMax(default_lot(kinds.back(), options.seed));
+        plan.kinds.push_back(sample_grammar(kind));
+        largest_lot = largest_lot.cwiseMax(default_lot(plan.kinds.back(), options.seed));
     }
-    Grammar streets = parse_grammar(street_grammar, "city streets");
-
     // Lots vary by up to 15% around their grammar's size; a cell holds the largest.
     const float variation = 0.15f;
-    Eigen::Vector2f cell = largest_lot * (1 + variation) + Eigen::Vector2f::Constant(4);
-    int columns = int(std::ceil(std::sqrt(double(options.buildings))));
-    int rows = (options.buildings + columns - 1) / columns;
-    float street = options.street_width;
-    Eigen::Vector2f city_size(columns * cell.x() + (columns + 1) * street, rows * cell.y() + (rows + 1) * street);
+    plan.cell = largest_lot * (1 + variation) + Eigen::Vector2f::Constant(4);
+    const int columns = int(std::ceil(std::sqrt(double(options.buildings))));
+    const int rows = (options.buildings + columns - 1) / columns;
+    const float street = options.street_width;
+    plan.size = {columns * plan.cell.x() + (columns + 1) * street, rows * plan.cell.y() + (rows + 1) * street};
+    const Eigen::Vector3f corner(-plan.size.x() / 2, 0, -plan.size.y() / 2);
 
+    // Shared designs draw from streams of their own, apart from the lots'.
+    const std::uint64_t design_streams = hash_combine(options.seed, 0x64657369676e73ull);  // "designs"
+    for (int d = 0; d < options.designs; ++d) {
+        Pcg32 random(options.seed, hash_combine(design_streams, std::uint64_t(d)));
+        plan.designs.push_back(draw_design(plan, random, variation));
+    }
+    for (int i = 0; i < options.buildings; ++i) {
+        const int row = i / columns, column = i % columns;
+        Pcg32 random(options.seed, hash_combine(options.seed, std::uint64_t(i)));
+        CityLot lot;
+        if (options.designs == 0) {
+            lot.design = plan.designs.size();
+            plan.designs.push_back(draw_design(plan, random, variation));
+        } else {
+            lot.design = std::min(std::size_t(options.designs) - 1, std::size_t(random.uniform() * options.designs));
+        }
+        lot.name = options.kinds[plan.designs[lot.design].kind] + "_" + std::to_string(i);
+        lot.center = corner + Eigen::Vector3f(street + column * (plan.cell.x() + street) + plan.cell.x() / 2, 0,
+                                              street + row * (plan.cell.y() + street) + plan.cell.y() / 2);
+        plan.lots.push_back(std::move(lot));
+    }
+    return plan;
+}
+
+namespace {
+
+Model make_streets(const CityPlan& plan, MaterialCache& materials) {
+    Grammar streets = parse_grammar(street_grammar, "city streets");
     Model model;
     model.source = "city";
-    MaterialCache materials;
     int root = add_node(model, -1, "City");
     model.nodes[root].rule = "City";
-    model.nodes[root].scope = to_scope(ground_lot(city_size.x(), city_size.y()));
-    Eigen::Vector3f corner(-city_size.x() / 2, 0, -city_size.y() / 2);
+    model.nodes[root].scope = to_scope(ground_lot(plan.size.x(), plan.size.y()));
+    const Eigen::Vector3f corner(-plan.size.x() / 2, 0, -plan.size.y() / 2);
+    const Eigen::Vector2f cell = plan.cell;
+    const int columns = city_columns(plan), rows = city_rows(plan);
+    const float street = plan.options.street_width;
 
     int street_node = add_node(model, root, "Streets");
     model.nodes[street_node].scope = model.nodes[root].scope;
     auto add_street = [&](float x, float z, float width, float depth) {
         Eigen::Vector3f center = corner + Eigen::Vector3f(x + width / 2, 0, z + depth / 2);
-        derive(streets, "", ground_lot(width, depth, center), options.seed, model, street_node, materials, options.limits);
+        derive_ground(plan, streets, "", ground_lot(width, depth, center), model, street_node, materials);
     };
     // Streets along x run the whole width; those along z fill the gaps between them.
-    for (int r = 0; r <= rows; ++r) add_street(0, r * (cell.y() + street), city_size.x(), street);
+    for (int r = 0; r <= rows; ++r) {
+        const Eigen::Vector3f middle = street_along_x(plan, r);
+        derive_ground(plan, streets, "", ground_lot(plan.size.x(), street, middle), model, street_node, materials);
+    }
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c <= columns; ++c)
             add_street(c * (cell.x() + street), street + r * (cell.y() + street), street, cell.y());
+    for (const CityLot& lot : plan.lots)
+        derive_ground(plan, streets, "Block", ground_lot(cell.x(), cell.y(), lot.center), model, street_node, materials);
+    return model;
+}
 
-    for (int i = 0; i < options.buildings; ++i) {
-        int row = i / columns, column = i % columns;
-        std::uint64_t identity = hash_combine(options.seed, std::uint64_t(i));
-        Pcg32 random(options.seed, identity);
-        std::size_t kind = std::min(kinds.size() - 1, std::size_t(random.uniform() * kinds.size()));
-        std::uint64_t building_seed = random.next_uint();
-        Eigen::Vector2f lot = default_lot(kinds[kind], building_seed);
-        lot.x() *= float(random.uniform(1 - variation, 1 + variation));
-        lot.y() *= float(random.uniform(1 - variation, 1 + variation));
-        lot = lot.cwiseMin(cell - Eigen::Vector2f::Constant(4));
-        Eigen::Vector3f center = corner + Eigen::Vector3f(street + column * (cell.x() + street) + cell.x() / 2, 0,
-                                                          street + row * (cell.y() + street) + cell.y() / 2);
-        derive(streets, "Block", ground_lot(cell.x(), cell.y(), center), options.seed, model, street_node, materials,
-               options.limits);
-        int building = derive(kinds[kind], "", ground_lot(lot.x(), lot.y(), center), building_seed, model, root, materials,
-                              options.limits);
-        model.nodes[building].name = options.kinds[kind] + "_" + std::to_string(i);
-    }
+// A design's building derived under `parent` on its lot centred at `center`.
+int derive_design(const CityPlan& plan, std::size_t design, const Eigen::Vector3f& center, Model& model, int parent,
+                  MaterialCache& materials, const std::string& name) {
+    const BuildingDesign& d = plan.designs.at(design);
+    int building = derive(plan.kinds[d.kind], "", ground_lot(d.lot.x(), d.lot.y(), center), d.seed, model, parent,
+                          materials, plan.options.limits);
+    model.nodes[building].name = name;
+    return building;
+}
+
+}  // namespace
+
+int city_columns(const CityPlan& plan) { return int(std::ceil(std::sqrt(double(plan.lots.size())))); }
+int city_rows(const CityPlan& plan) {
+    const int columns = city_columns(plan);
+    return (int(plan.lots.size()) + columns - 1) / columns;
+}
+
+Eigen::Vector3f street_along_x(const CityPlan& plan, int r) {
+    const float street = plan.options.street_width;
+    return {0, 0, -plan.size.y() / 2 + (float(r) * (plan.cell.y() + street) + street / 2)};
+}
+
+Model city_streets(const CityPlan& plan) {
+    MaterialCache materials;
+    return make_streets(plan, materials);
+}
+
+Model design_model(const CityPlan& plan, std::size_t design, const std::string& name) {
+    Model model;
+    model.source = "city";
+    MaterialCache materials;
+    derive_design(plan, design, Eigen::Vector3f::Zero(), model, -1, materials, name);
+    return model;
+}
+
+Model generate_city(const CityOptions& options) {
+    CityPlan plan = plan_city(options);
+    MaterialCache materials;  // one for the whole model: each material and texture once
+    Model model = make_streets(plan, materials);
+    for (const CityLot& lot : plan.lots) derive_design(plan, lot.design, lot.center, model, 0, materials, lot.name);
     return model;
 }
 

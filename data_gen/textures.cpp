@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 namespace boxlod {
@@ -154,7 +156,9 @@ static const Recipe& recipe_of(const std::string& name) {
 
 float texture_tile_metres(const std::string& name) { return recipe_of(name).tile_metres; }
 
-ProceduralTexture procedural_texture(const std::string& name, int size) {
+namespace {
+
+ProceduralTexture make_procedural_texture(const std::string& name, int size) {
     const Recipe* recipe = &recipe_of(name);
     ProceduralTexture texture;
     texture.tile_metres = recipe->tile_metres;
@@ -179,6 +183,18 @@ ProceduralTexture procedural_texture(const std::string& name, int size) {
             for (int c = 0; c < 3; ++c) pixel[c] = to_byte((n[c] * 0.5 + 0.5) * 255);
         }
     return texture;
+}
+
+}  // namespace
+
+ProceduralTexture procedural_texture(const std::string& name, int size) {
+    // Made once per process: a city derives its few textures into every design.
+    static std::mutex mutex;
+    static std::map<std::pair<std::string, int>, ProceduralTexture> made;
+    std::lock_guard lock(mutex);
+    auto found = made.find({name, size});
+    if (found == made.end()) found = made.emplace(std::pair{name, size}, make_procedural_texture(name, size)).first;
+    return found->second;
 }
 
 }  // namespace boxlod

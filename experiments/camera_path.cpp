@@ -40,29 +40,12 @@ double parse_field(const std::string& word, const std::string& file, int line) {
     return value;
 }
 
-// The world-axis half extents of an oriented box.
-Eigen::Vector3f world_half_extents(const OrientedBox& box) { return box.axes.cwiseAbs() * box.half_extents; }
-
-std::vector<CameraPose> street_path(const Model& city, int frames) {
-    // generate_city: the root's "Streets" node holds the streets along x first (one per row
-    // boundary, running the city's whole width, in order of z), then the others and the blocks.
-    std::vector<OrientedBox> along_x;
-    float width = 0;
-    for (int child : city.nodes.empty() ? std::vector<int>{} : city.nodes[0].children) {
-        if (city.nodes[child].name != "Streets") continue;
-        for (int street : city.nodes[child].children) {
-            const Node& node = city.nodes[street];
-            if (node.rule != "Street" || !node.scope) continue;
-            Eigen::Vector3f half = world_half_extents(*node.scope);
-            if (half.x() > width * 1.0001f) along_x.clear(), width = half.x();
-            if (half.x() >= width * 0.9999f && half.x() > half.z()) along_x.push_back(*node.scope);
-        }
-    }
-    if (along_x.empty()) throw InputError("--path street: the model has no streets along x (not a generated city)");
-    const OrientedBox& street = along_x[along_x.size() >= 3 ? 1 : 0];
-    const float eye_height = 2;
-    Eigen::Vector3f start = street.center + Eigen::Vector3f(-width, eye_height, 0);
-    Eigen::Vector3f end = street.center + Eigen::Vector3f(width, eye_height, 0);
+std::vector<CameraPose> street_path(const CityPlan& city, int frames) {
+    const int rows = city_rows(city);
+    const Eigen::Vector3f street = street_along_x(city, rows >= 2 ? 1 : 0);
+    const float half_width = city.size.x() / 2, eye_height = 2;
+    Eigen::Vector3f start = street + Eigen::Vector3f(-half_width, eye_height, 0);
+    Eigen::Vector3f end = street + Eigen::Vector3f(half_width, eye_height, 0);
     return line_path(start, end, frames);
 }
 
@@ -150,10 +133,11 @@ std::vector<CameraPose> line_path(const Eigen::Vector3f& start, const Eigen::Vec
     return poses;
 }
 
-std::vector<CameraPose> city_path(const std::string& name, const Model& city, float fovy_degrees, int frames) {
+std::vector<CameraPose> city_path(const std::string& name, const CityPlan& city, const Bounds& bounds,
+                                  float fovy_degrees, int frames) {
     if (name == "street") return street_path(city, frames);
     if (name != "orbit") throw InputError("--path: unknown built-in path '" + name + "' (orbit, street, or a keyframe file)");
-    const Framing framing = model_framing(city);
+    const Framing framing = framing_of(bounds);
     float distance = framing_distance(framing, fovy_degrees);
     const double elevation = M_PI / 6;  // 30 degrees above the horizon
     return orbit_path(framing.center, float(distance * std::cos(elevation)), float(distance * std::sin(elevation)), frames);

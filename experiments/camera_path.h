@@ -2,6 +2,7 @@
 // file and interpolated, or the built-in `orbit` and `street` paths of a
 // generated city. A path is sampled into one pose (eye + target) per frame.
 #pragma once
+#include "data_gen/city.h"
 #include "toolkit/model/model.h"
 
 #include <string>
@@ -41,11 +42,13 @@ std::vector<CameraPose> orbit_path(const Eigen::Vector3f& center, float radius, 
 // From `start` to `end` (both included) at constant speed, looking ahead along the line.
 std::vector<CameraPose> line_path(const Eigen::Vector3f& start, const Eigen::Vector3f& end, int frames);
 
-// The built-in paths of a city made by generate_city (data_gen/city.h), for a camera
+// The built-in paths of a planned city (data_gen/city.h) whose buildings and
+// streets fill `bounds`, for a camera
 // with `fovy_degrees`: `orbit` circles the city at the distance that frames it, 30
 // degrees above the horizon, looking at its centre; `street` walks at eye height (2 m)
 // down the first street along x with lots on both sides (the first one if there is only
 // one row), end to end, looking ahead. Throws InputError for another name.
-std::vector<CameraPose> city_path(const std::string& name, const Model& city, float fovy_degrees, int frames);
+std::vector<CameraPose> city_path(const std::string& name, const CityPlan& city, const Bounds& bounds,
+                                  float fovy_degrees, int frames);
 
 }  // namespace boxlod

@@ -1,11 +1,13 @@
 // `boxlod city`: a fly-through of a generated city with run-time LoD selection
-// (docs/city.md). Every building gets its own LoD, built once: level c in
+// (docs/city.md). Every distinct building design gets its own LoD, built once
+// at the origin and drawn moved to each lot that shows it: level c in
 // 1..N baked for a sizing distance that doubles with c (base · 2^(c-1)), so that
 // texel-exact selection has levels to choose from. Per frame the strategy
 // (with hysteresis, optionally under a face budget) picks every building's
 // level; the frame is rendered with the streets, and on sampled frames
 // compared with full detail (every building at level 0).
 #pragma once
+#include "data_gen/city.h"
 #include "experiments/camera_path.h"
 #include "toolkit/model/cost.h"
 #include "toolkit/drawing/drawable.h"
@@ -40,42 +42,56 @@ struct FlyThroughOptions {
     float base_distance = 20;
     // Unpacked levels kept between frames (docs/city.md: Memory); a frame's own levels are always unpacked.
     std::size_t memory_budget = std::size_t(1) << 30;
+    // Lots whose designs derive to the same content (by digest) share one LoD;
+    // false: every lot builds its own (the same levels, built again).
+    bool share_designs = true;
     int threads = 0;  // 0 = all cores
 };
 
 // Level c (1..N) of a building is baked for this distance.
 float level_sizing_distance(const FlyThroughOptions& options, int level);
 
-struct BuildingLevels {
-    std::string name;
-    int node = 0;                        // its root in the city
+// One design's LoD at the origin, built once for every lot that shows it.
+struct DesignLevels {
     std::vector<std::size_t> triangles;  // per level 0..N
     std::vector<CostParts> costs;        // per level 0..N
-    // Per level 0..N (level 0: the city's own geometry), packed; the city draws in
-    // normal mode, so without height maps. The city's textures are shared, not packed.
+    // Per level 0..N (level 0: the design's own geometry), packed; the city draws in
+    // normal mode, so without height maps. The grammars' textures are shared, not packed.
     std::vector<PackedDrawable> levels;
+    SelectionObject object;  // its root box, levels' faces, sizings (errors if measured)
+    Bounds bounds;
+};
+
+// A lot's building: its design's levels moved to the lot.
+struct CityBuilding {
+    std::string name;
+    std::size_t design = 0;  // into CityLevels::designs
+    Eigen::Vector3f translation = Eigen::Vector3f::Zero();
 };
 
 // Everything a fly-through draws, built once.
 struct CityLevels {
-    DecodedTextures textures;  // the city's: the streets draw them, every packed level shares them
+    DecodedTextures textures;  // the streets'; the designs' levels share these and their own by content
     Drawable streets;
     std::size_t street_faces = 0, street_triangles = 0;
     CostParts street_cost;
-    std::vector<BuildingLevels> buildings;
-    std::vector<SelectionObject> objects;  // per building: its root box, levels' faces, sizings (errors if measured)
+    std::vector<DesignLevels> designs;
+    std::vector<CityBuilding> buildings;
+    std::vector<SelectionObject> objects;  // per building: its design's, moved to its lot
     Bounds bounds;                         // the city's
     int max_level = 0;                     // K, the largest N of any building
     double seconds = 0;
-    std::size_t packed_bytes = 0;    // every level of every building, packed
+    std::size_t packed_bytes = 0;    // every level of every design, packed
     std::size_t unpacked_bytes = 0;  // the same unpacked: what keeping them all decoded would take
 };
 
-// Each child of the city's root but "Streets" is a building. With `measure_error`,
-// each level's error (1 - SSIM against level 0, one render from +X+Y+Z at its sizing
-// distance) is recorded for texel-exact selection under a budget. Deterministic for any
-// thread count; progress (one line per building) to `progress` when not null.
-CityLevels build_city_levels(const Model& city, const FlyThroughOptions& options, bool measure_error,
+// The city's streets, and an LoD per distinct design the lots show (or per lot
+// without options.share_designs). With `measure_error`, each level's error
+// (1 - SSIM against level 0, one render from +X+Y+Z at its sizing distance) is
+// recorded for texel-exact selection under a budget. Deterministic for any
+// thread count, with or without sharing; progress (one line per LoD built) to
+// `progress` when not null.
+CityLevels build_city_levels(const CityPlan& city, const FlyThroughOptions& options, bool measure_error,
                              std::FILE* progress = nullptr);
 
 // The camera of a pose for the city: up = +Y (-Z when looking straight down, +Z straight
@@ -120,6 +136,7 @@ std::string timings_csv(const std::vector<FlyThroughRun>& runs);
 struct FlyThroughReport {
     double detail = 1;
     std::size_t frames = 0, buildings = 0, sampled_frames = 0;
+    std::size_t lods_built = 0;  // one per distinct design shown (per lot without sharing)
     double faces_mean = 0;
     std::size_t faces_min = 0, faces_max = 0;
     std::vector<std::size_t> level_totals;  // building-frames at each level 0..K
@@ -131,24 +148,27 @@ struct FlyThroughReport {
            total_seconds = 0;
 };
 
-// What a fly-through of `buildings` buildings needs besides its cache of
-// unpacked levels (memory_budget): 3 MB a building for the city and its
-// packed levels (peak resident of `boxlod city` with 9, 36 and 1,000
-// buildings: 3.6, 2.8 and 2.7 MB each), and a frame with its metrics.
-double fly_through_memory(int buildings, const FlyThroughOptions& options);
+// What a fly-through of a city needs besides its cache of unpacked levels
+// (memory_budget): per LoD built its packed levels, per building its share
+// of a frame drawn at full detail, and the frame's metrics (docs/city.md: Memory).
+double fly_through_memory(const CityPlan& city, const FlyThroughOptions& options);
 
 // What run_fly_through writes into its folder (a path relative to it):
 // frames.csv, timings.csv, and per run (in detail_D/ when several) frames/,
 // frames/frame_NNNN.png and contact_sheet.png.
 bool is_fly_through_file(const std::string& name);
 
-// The whole command: levels built once, then one pass over the path per detail
+// Whether build_city_levels must measure levels' errors for the strategy:
+// texel-exact selection under an error budget reads them.
+bool needs_measured_errors(const Strategy& strategy);
+
+// The whole command after the levels are built: one pass over the path per detail
 // (options.detail is ignored). Frames go to OUTDIR/frames/frame_NNNN.png and up to 16
 // of them, spread over the path and labelled with frame and faces, to
 // OUTDIR/contact_sheet.png; with several details, to OUTDIR/detail_<K>/frames/ and
 // OUTDIR/detail_<K>/contact_sheet.png. frames.csv and timings.csv hold every run.
 // Every file is written atomically. One report per detail.
-std::vector<FlyThroughReport> run_fly_through(const Model& city, const std::vector<CameraPose>& path,
+std::vector<FlyThroughReport> run_fly_through(const CityLevels& levels, const std::vector<CameraPose>& path,
                                               const FlyThroughOptions& options, const std::vector<double>& details,
                                               const std::string& output_folder, std::FILE* progress = nullptr);
 

@@ -66,6 +66,7 @@ Fragment make_fragment(const TriangleSetup& s, int x, int y, bool reads_uv) {
     Eigen::Vector3f b = source_barycentrics(s.barycentrics, px, py);
     Fragment f;
     f.position = mesh.positions[v[0]] * b[0] + mesh.positions[v[1]] * b[1] + mesh.positions[v[2]] * b[2];
+    if (!s.batch->translation.isZero(0)) f.position += s.batch->translation;
     f.geometric_normal = s.geometric_normal;
     f.normal = f.geometric_normal;
     if (!mesh.normals.empty()) {
@@ -108,9 +109,10 @@ struct TriangleLanes {
     DoubleLanes screen_x[3], screen_y[3], inv_w[3], area;  // barycentric_setup
     const ClippedWeights* clipped[lane_count];
     Vector3Lanes position[3], edge1, edge2, geometric_normal, normal[3];
+    Vector3Lanes translation;  // the batches', read only when `translated`
     IntLanes has_normals;
     const Surface* surface[lane_count];
-    bool any_uv = false;
+    bool any_uv = false, translated = false;
 };
 
 // And what shaders that read uvs need besides.
@@ -146,7 +148,7 @@ using TrianglesOf = std::conditional_t<reads_uv, TexturedTriangleLanes, Triangle
 struct LaneSources {
     __m128i corners_x[lane_count], corners_y[lane_count];
     __m128 inv_w[lane_count];
-    const Eigen::Vector3f *positions[3][lane_count], *normals[3][lane_count];
+    const Eigen::Vector3f *positions[3][lane_count], *normals[3][lane_count], *translations[lane_count];
     const Eigen::Vector2f* uvs[3][lane_count];
     const Eigen::Vector4f* tangents[3][lane_count];
 };
@@ -161,7 +163,7 @@ template <bool reads_uv>
     static const Eigen::Vector3f no_normal = Eigen::Vector3f::Zero();
     static const Eigen::Vector2f no_uv = Eigen::Vector2f::Zero();
     static const Eigen::Vector4f no_tangent = Eigen::Vector4f::Zero();
-    t.any_uv = false;
+    t.any_uv = t.translated = false;
     for (int j = 0; j < lane_count; ++j) {
         t.ids[j] = ids[j];
         const std::vector<ClippedWeights>* weights;
@@ -175,6 +177,8 @@ template <bool reads_uv>
         const Mesh& mesh = *batch.mesh;
         const std::uint32_t* v = &mesh.indices[std::size_t(screen.triangle) * 3];
         t.has_normals[j] = mesh.normals.empty() ? 0 : -1;
+        from.translations[j] = &batch.translation;
+        t.translated = t.translated || !batch.translation.isZero(0);
         for (int k = 0; k < 3; ++k) {
             from.positions[k][j] = &mesh.positions[v[k]];
             from.normals[k][j] = mesh.normals.empty() ? &no_normal : &mesh.normals[v[k]];
@@ -214,6 +218,7 @@ template <bool reads_uv>
     t.area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
 
     for (int k = 0; k < 3; ++k) t.position[k] = gather(from.positions[k]), t.normal[k] = gather(from.normals[k]);
+    if (t.translated) t.translation = gather(from.translations);
     t.edge1 = t.position[1] - t.position[0], t.edge2 = t.position[2] - t.position[0];
     const Vector3Lanes across = cross(t.edge1, t.edge2);
     const FloatLanes length = square_root(dot(across, across));
@@ -324,6 +329,7 @@ template <bool reads_uv>
     source_barycentric_lanes(t, px, py, count, b);
 
     f.position = t.position[0] * b[0] + t.position[1] * b[1] + t.position[2] * b[2];
+    if (t.translated) f.position = f.position + t.translation;
     f.geometric_normal = t.geometric_normal;
     const Vector3Lanes normal = t.normal[0] * b[0] + t.normal[1] * b[1] + t.normal[2] * b[2];
     const FloatLanes squared = dot(normal, normal);

@@ -9,6 +9,7 @@
 #include "renderer/shading.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -245,6 +246,11 @@ namespace {
 struct Range {
     std::size_t batch, begin, end;
 };
+// A chunk's triangles: consecutive ranges, so that many small batches (a city's
+// buildings) share chunks instead of running out of chunk ids.
+using ChunkRanges = std::vector<Range>;
+constexpr std::size_t chunk_fill = 1 << 12;  // a chunk takes more ranges while it holds fewer triangles
+static_assert(7 * (triangles_per_chunk + chunk_fill) < (std::size_t(1) << pipeline::chunk_index_bits));
 
 Viewport viewport_of(const Frame& frame, const RenderSettings& settings) {
     Viewport viewport;
@@ -257,54 +263,74 @@ Viewport viewport_of(const Frame& frame, const RenderSettings& settings) {
     return viewport;
 }
 
+// Each batch's object-to-clip matrix: the view-projection, times its
+// translation where it has one (columns 0-2 stay exactly the same).
+void batch_to_clip(const std::vector<Batch>& batches, const Eigen::Matrix4f& view_projection,
+                   std::vector<Eigen::Matrix4f>& to_clip) {
+    to_clip.assign(batches.size(), view_projection);
+    for (std::size_t b = 0; b < batches.size(); ++b)
+        if (!batches[b].translation.isZero(0))
+            to_clip[b].col(3) = clip_position(view_projection, batches[b].translation);
+}
+
 // Vertex stage: clip-space positions, outcodes and snapped window positions,
-// in parallel over vertex ranges. Returns the triangle ranges, a chunk each.
-std::vector<Range> project_vertices(const std::vector<Batch>& batches, const Eigen::Matrix4f& view_projection,
+// in parallel over vertex ranges. Returns the triangle ranges of each chunk.
+std::vector<ChunkRanges> project_vertices(const std::vector<Batch>& batches, const std::vector<Eigen::Matrix4f>& to_clip,
                                     const Viewport& viewport, int threads,
                                     std::vector<std::vector<ProjectedVertex>>& projected) {
     projected.resize(std::max(projected.size(), batches.size()));
-    std::vector<Range> vertex_ranges, triangle_ranges;
+    std::vector<Range> vertex_ranges;
+    std::vector<ChunkRanges> chunk_ranges;
+    std::size_t filled = chunk_fill;  // triangles in the last chunk
     for (std::size_t b = 0; b < batches.size(); ++b) {
         projected[b].resize(batches[b].mesh->positions.size());
         for (std::size_t i = 0; i < projected[b].size(); i += triangles_per_chunk)
             vertex_ranges.push_back({b, i, std::min(projected[b].size(), i + triangles_per_chunk)});
         std::size_t triangles = batches[b].mesh->indices.size() / 3;
-        for (std::size_t i = 0; i < triangles; i += triangles_per_chunk)
-            triangle_ranges.push_back({b, i, std::min(triangles, i + triangles_per_chunk)});
+        for (std::size_t i = 0; i < triangles; i += triangles_per_chunk) {
+            const Range range{b, i, std::min(triangles, i + triangles_per_chunk)};
+            if (filled >= chunk_fill) chunk_ranges.emplace_back(), filled = 0;
+            chunk_ranges.back().push_back(range);
+            filled += range.end - range.begin;
+        }
     }
+    if (chunk_ranges.size() >= (std::size_t(1) << (32 - pipeline::chunk_index_bits)))
+        throw std::length_error("render: more triangles than a frame's triangle ids can name");
     parallel_for(vertex_ranges.size(), threads, [&](std::size_t r) {
         const Range& range = vertex_ranges[r];
         const auto& positions = batches[range.batch].mesh->positions;
+        const Eigen::Matrix4f& matrix = to_clip[range.batch];
         for (std::size_t i = range.begin; i < range.end; ++i)
-            projected[range.batch][i] = project_vertex(clip_position(view_projection, positions[i]), viewport);
+            projected[range.batch][i] = project_vertex(clip_position(matrix, positions[i]), viewport);
     });
-    return triangle_ranges;
+    return chunk_ranges;
 }
 
 // Set-up and binning, in parallel over chunks of triangles, each in blocks
 // binned while their screen triangles are still in cache.
-void bin_triangles(const std::vector<Batch>& batches, const std::vector<Range>& triangle_ranges,
-                   const std::vector<std::vector<ProjectedVertex>>& projected, const Eigen::Matrix4f& view_projection,
+void bin_triangles(const std::vector<Batch>& batches, const std::vector<ChunkRanges>& chunk_ranges,
+                   const std::vector<std::vector<ProjectedVertex>>& projected, const std::vector<Eigen::Matrix4f>& to_clip,
                    const RenderSettings& settings, const Viewport& viewport, const Tiling& tiling, int threads,
                    std::vector<Chunk>& chunks) {
-    if (chunks.size() < triangle_ranges.size()) chunks.resize(triangle_ranges.size());
-    for (std::size_t c = 0; c < triangle_ranges.size(); ++c) {
+    if (chunks.size() < chunk_ranges.size()) chunks.resize(chunk_ranges.size());
+    for (std::size_t c = 0; c < chunk_ranges.size(); ++c) {
         chunks[c].triangles.clear();
         chunks[c].weights.clear();
     }
-    parallel_for(triangle_ranges.size(), threads, [&](std::size_t r) {
-        const Range& range = triangle_ranges[r];
+    parallel_for(chunk_ranges.size(), threads, [&](std::size_t r) {
         Chunk& chunk = chunks[r];
-        const Mesh& mesh = *batches[range.batch].mesh;
-        const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(), mesh.positions.data(),
-                                           &view_projection};
         chunk.tile_counts.assign(std::size_t(tiling.count()), 0);
-        constexpr std::size_t block = 1024;
-        for (std::size_t begin = range.begin; begin < range.end; begin += block) {
-            const std::size_t first = chunk.triangles.size();
-            setup_triangles(projected_mesh, begin, std::min(range.end, begin + block), std::uint32_t(range.batch),
-                            settings.culling, viewport, chunk.triangles, chunk.weights);
-            count_tiles(chunk, first, tiling, viewport);
+        for (const Range& range : chunk_ranges[r]) {
+            const Mesh& mesh = *batches[range.batch].mesh;
+            const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(), mesh.positions.data(),
+                                               &to_clip[range.batch]};
+            constexpr std::size_t block = 1024;
+            for (std::size_t begin = range.begin; begin < range.end; begin += block) {
+                const std::size_t first = chunk.triangles.size();
+                setup_triangles(projected_mesh, begin, std::min(range.end, begin + block), std::uint32_t(range.batch),
+                                settings.culling, viewport, chunk.triangles, chunk.weights);
+                count_tiles(chunk, first, tiling, viewport);
+            }
         }
         fill_bins(chunk, tiling);
     });
@@ -330,13 +356,15 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     // the rasterization itself (measured: 1 thread 416 ms -> 256 ms).
     thread_local std::vector<std::vector<ProjectedVertex>> projected;
     thread_local std::vector<Chunk> chunks;
-    const std::vector<Range> triangle_ranges = project_vertices(batches, view_projection, viewport, threads, projected);
+    thread_local std::vector<Eigen::Matrix4f> to_clip;
+    batch_to_clip(batches, view_projection, to_clip);
+    const std::vector<ChunkRanges> chunk_ranges = project_vertices(batches, to_clip, viewport, threads, projected);
     const Tiling tiling{(frame.width + tile_size - 1) / tile_size, (frame.height + tile_size - 1) / tile_size};
-    bin_triangles(batches, triangle_ranges, projected, view_projection, settings, viewport, tiling, threads, chunks);
+    bin_triangles(batches, chunk_ranges, projected, to_clip, settings, viewport, tiling, threads, chunks);
 
     // Tiles: each owned by one thread; triangles replayed in submission order.
     std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, shading_eye(settings.camera));
-    Context context{batches, settings, chunks, triangle_ranges.size(), settings.shader ? *settings.shader : *mode_shader};
+    Context context{batches, settings, chunks, chunk_ranges.size(), settings.shader ? *settings.shader : *mode_shader};
     parallel_for(std::size_t(tiling.count()), threads,
                  [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
 }

@@ -69,6 +69,9 @@ struct Surface {
 struct Batch {
     const Mesh* mesh = nullptr;
     Surface surface;
+    // Drawn at the mesh's positions + translation: one mesh at many places (a
+    // city's repeated designs), as an engine's per-instance model matrix.
+    Eigen::Vector3f translation = Eigen::Vector3f::Zero();
 };
 
 // The manual's light options.

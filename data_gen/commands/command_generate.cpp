@@ -43,11 +43,14 @@ int run_generate(const Arguments& arguments) {
 
     Model model;
     KeyValues report = {text_entry("output", arguments.text("output")), number_entry("seed", seed)};
+    if (arguments.has("designs") && !arguments.has("city"))
+        throw InputError(std::string(prefix) + "--designs applies to --city only");
     if (arguments.has("city")) {
         if (arguments.has("start") || arguments.has("lot"))
             throw InputError(std::string(prefix) + "--start and --lot apply to one building, not to --city");
         CityOptions city;
         city.buildings = arguments.integer("city", 0);
+        city.designs = arguments.integer("designs", 0);
         check_memory(std::string(prefix) + "a city of " + std::to_string(city.buildings) + " buildings", city_file_memory(city.buildings));
         city.seed = std::uint64_t(seed);
         model = generate_city(city);
@@ -73,13 +76,19 @@ int run_generate(const Arguments& arguments) {
 
 }  // namespace
 
+Option designs_option() {
+    return {"designs", "K", "with --city: the lots draw from K distinct building designs (default 0: each lot its own)",
+            city_designs_range};
+}
+
 Subcommand generate_subcommand() {
     return {{"generate", "[GRAMMAR]",
              "Generate a building from a shape grammar (a file, or a built-in sample), or a whole city, "
              "and write it as glTF with its derivation tree, scopes and rules. The same grammar and seed "
              "give byte-identical files.",
              {{"sample", "NAME", "use a built-in sample grammar: " + sample_names()},
-              {"city", "N", "generate a city of N buildings on a grid of lots with streets", NumberRange{1, 10000}},
+              {"city", "N", "generate a city of N buildings on a grid of lots with streets", city_buildings_range},
+              designs_option(),
               {"start", "SYMBOL", "the rule to start from (default: the grammar's first rule)"},
               {"lot", "WxD", "the lot's width and depth in metres (default: the grammar's lot_width/lot_depth, else 20x20)"},
               {"seed", "S", "seed of the random choices (default 0)", seed_range},

@@ -1,12 +1,13 @@
 // City scale (docs/city.md: Memory), in one run:
-// - city_levels/N: every level of N buildings of a generated city, built and
-//   packed; counters: packed MB and what keeping every level decoded takes
-//   (unpacked MB), as boxlod city did before levels were packed.
-// - unpack_levels/N: unpacking all of them again, as a frame does for the
-//   levels it draws that are not resident: the cost of keeping them packed.
-// - select_frame/1000: one frame's selection for 1,000 buildings (texel-exact
+// - city_levels/N/K: the levels of a generated city of N buildings drawing from
+//   K designs (0: each its own), built and packed; counters: ms per building,
+//   LoDs built, packed MB, what keeping every level decoded would take
+//   (unpacked MB), and the process's peak resident MB so far.
+// - unpack_levels/N: unpacking all levels of 25 buildings again, as a frame does
+//   for the levels it draws that are not resident: the cost of keeping them packed.
+// - select_frame/N: one frame's selection for N buildings (texel-exact
 //   with hysteresis, along the orbit), the buildings copies of the city's real
-//   ones on a grid; the target is under 1 ms.
+//   ones on a grid; the target is under 1 ms at 10,000.
 //   build/experiments/city_benchmark
 #include "data_gen/city.h"
 #include "experiments/camera_path.h"
@@ -15,6 +16,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
 
 using namespace boxlod;
 
@@ -22,10 +25,11 @@ namespace {
 
 constexpr int city_buildings = 25;
 
-Model make_city() {
+CityPlan make_city(int buildings = city_buildings, int designs = 0) {
     CityOptions options;
-    options.buildings = city_buildings;
-    return generate_city(options);
+    options.buildings = buildings;
+    options.designs = designs;
+    return plan_city(options);
 }
 
 const CityLevels& city_levels() {
@@ -33,28 +37,41 @@ const CityLevels& city_levels() {
     return levels;
 }
 
+// The process's peak resident set (VmHWM), in MB.
+double peak_resident_mb() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) * 1024e-6;
+    return 0;
+}
+
 void bm_city_levels(benchmark::State& state) {
-    const Model city = make_city();
+    const CityPlan city = make_city(int(state.range(0)), int(state.range(1)));
     FlyThroughOptions options;
-    options.threads = 1;
-    std::size_t packed = 0, unpacked = 0;
+    std::size_t packed = 0, unpacked = 0, lods = 0;
     for (auto _ : state) {
         CityLevels levels = build_city_levels(city, options, false);
-        packed = levels.packed_bytes, unpacked = levels.unpacked_bytes;
+        packed = levels.packed_bytes, unpacked = levels.unpacked_bytes, lods = levels.designs.size();
     }
+    // kIsRate | kInvert: seconds over the count, here per building in ms.
+    state.counters["ms per building"] = benchmark::Counter(
+        double(state.iterations()) * double(city.lots.size()) * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["LoDs built"] = double(lods);
     state.counters["packed MB"] = double(packed) * 1e-6;
     state.counters["unpacked MB"] = double(unpacked) * 1e-6;
-    state.counters["unpacked/packed"] = double(unpacked) / double(packed);
+    state.counters["peak resident MB"] = peak_resident_mb();
 }
-BENCHMARK(bm_city_levels)->Arg(city_buildings)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+// Unique buildings at 100, then 1,000 and 10,000 lots drawing from 100 designs.
+BENCHMARK(bm_city_levels)->Args({100, 0})->Args({1000, 100})->Args({10000, 100})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 void bm_unpack_levels(benchmark::State& state) {
     const CityLevels& levels = city_levels();
     std::size_t count = 0;
     for (auto _ : state) {
         count = 0;
-        for (const BuildingLevels& building : levels.buildings)
-            for (const PackedDrawable& level : building.levels) benchmark::DoNotOptimize(unpack_drawable(level)), ++count;
+        for (const DesignLevels& design : levels.designs)
+            for (const PackedDrawable& level : design.levels) benchmark::DoNotOptimize(unpack_drawable(level)), ++count;
     }
     state.counters["levels"] = double(count);
 }
@@ -78,9 +95,8 @@ std::vector<SelectionObject> copies(const std::vector<SelectionObject>& objects,
 void bm_select_frame(benchmark::State& state) {
     const CityLevels& levels = city_levels();
     const std::vector<SelectionObject> objects = copies(levels.objects, int(state.range(0)));
-    Model city = make_city();
     const FlyThroughOptions options;
-    const std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 60);
+    const std::vector<CameraPose> path = city_path("orbit", make_city(), levels.bounds, options.fovy, 60);
     std::vector<Selector> selectors(objects.size(), Selector{options.hysteresis, -1});
     std::vector<int> chosen(objects.size());
     std::size_t frame = 0;
@@ -92,7 +108,7 @@ void bm_select_frame(benchmark::State& state) {
     }
     state.counters["buildings"] = double(objects.size());
 }
-BENCHMARK(bm_select_frame)->Arg(1000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(bm_select_frame)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace
 

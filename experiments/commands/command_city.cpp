@@ -5,6 +5,7 @@
 #include "base/parallel.h"
 #include "data_gen/city.h"
 #include "experiments/camera_path.h"
+#include "data_gen/commands/commands.h"
 #include "experiments/commands/commands.h"
 #include "experiments/flip.h"
 #include "experiments/fly_through.h"
@@ -80,6 +81,7 @@ KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroug
                      text_entry("path", path_name),
                      number_entry("frames", double(runs.front().frames)),
                      number_entry("buildings", double(runs.front().buildings)),
+                     number_entry("lods_built", double(runs.front().lods_built)),
                      number_entry("max_level", double(runs.front().level_totals.size() - 1)),
                      number_entry("build_seconds", runs.front().build_seconds),
                      number_entry("levels_packed_bytes", double(runs.front().packed_bytes)),
@@ -120,20 +122,22 @@ int run_city(const Arguments& arguments) {
     CityOptions city;
     city.buildings = arguments.integer("buildings", 9);
     city.seed = std::uint64_t(arguments.integer("seed", 0));
+    city.designs = arguments.integer("designs", 0);
     int frames = arguments.integer("frames", 60);
     std::vector<double> details = details_option(arguments);
     std::string path_name = arguments.text("path", "orbit");
     bool built_in = path_name == "orbit" || path_name == "street";
     std::vector<Keyframe> keys;
     if (!built_in) keys = load_keyframes(path_name);
-    check_memory("boxlod city: a fly-through of " + std::to_string(city.buildings) + " buildings", fly_through_memory(city.buildings, options));
-
-    Model model = generate_city(city);
+    CityPlan plan = plan_city(city);
+    check_memory("boxlod city: a fly-through of " + std::to_string(city.buildings) + " buildings",
+                 fly_through_memory(plan, options));
+    CityLevels levels = build_city_levels(plan, options, needs_measured_errors(options.strategy), stderr);
     std::vector<CameraPose> path =
-        built_in ? city_path(path_name, model, options.fovy, frames) : sample_keyframes(keys, frames);
+        built_in ? city_path(path_name, plan, levels.bounds, options.fovy, frames) : sample_keyframes(keys, frames);
     const std::string& output = arguments.text("output");
     OutputFolder folder(output, is_fly_through_file);  // the old fly-through's files until the new ones are complete
-    std::vector<FlyThroughReport> runs = run_fly_through(model, path, options, details, folder.path(), stderr);
+    std::vector<FlyThroughReport> runs = run_fly_through(levels, path, options, details, folder.path(), stderr);
     folder.commit();
     KeyValues report = city_report(runs, options, output, path_name);
     print_report(report, arguments);
@@ -145,7 +149,8 @@ int run_city(const Arguments& arguments) {
 Subcommand city_subcommand() {
     std::vector<Option> options = {
         {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
-        {"buildings", "N", "buildings in the city (default 9)", NumberRange{1, 10000}},
+        {"buildings", "N", "buildings in the city (default 9)", city_buildings_range},
+        designs_option(),
         {"seed", "S", "the city's seed (default 0)", seed_range},
         {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
                           "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},

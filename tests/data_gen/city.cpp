@@ -80,10 +80,43 @@ TEST(City, ALotKeepsItsBuildingWhenTheCityGrows) {
     EXPECT_EQ(a.nodes[first_a].scope->half_extents, b.nodes[first_b].scope->half_extents);
 }
 
-TEST(City, NeedsAtLeastOneBuilding) {
+TEST(City, NeedsAtLeastOneBuildingAndDesignsInRange) {
     CityOptions options;
     options.buildings = 0;
     EXPECT_THROW(generate_city(options), InputError);
+    options.buildings = 4;
+    options.designs = -1;
+    EXPECT_THROW(plan_city(options), InputError);
+    options.designs = 10001;
+    EXPECT_THROW(plan_city(options), InputError);
+}
+
+// With K designs every lot shows one of them, each building is its design
+// moved to the lot, and a lot's design does not depend on the city's size.
+TEST(City, LotsDrawFromTheDesignsAndShowThemInPlace) {
+    CityOptions options;
+    options.buildings = 16;
+    options.designs = 3;
+    CityPlan plan = plan_city(options);
+    ASSERT_EQ(plan.designs.size(), 3u);
+    std::set<std::size_t> shown;
+    for (const CityLot& lot : plan.lots) shown.insert(lot.design);
+    EXPECT_EQ(shown.size(), 3u);
+    Model city = generate_city(options);
+    for (std::size_t i = 0; i < plan.lots.size(); ++i) {
+        const CityLot& lot = plan.lots[i];
+        const Node& placed = city.nodes[std::size_t(city.nodes[0].children[i + 1])];
+        EXPECT_EQ(placed.name, lot.name);
+        Model design = design_model(plan, lot.design, lot.name);
+        ASSERT_EQ(design.nodes[0].scope.has_value(), placed.scope.has_value());
+        EXPECT_LT((design.nodes[0].scope->center + lot.center - placed.scope->center).norm(), 1e-3f) << lot.name;
+        EXPECT_EQ(design.nodes[0].scope->half_extents, placed.scope->half_extents);
+    }
+    options.buildings = 5;
+    CityPlan smaller = plan_city(options);
+    for (std::size_t i = 0; i < smaller.lots.size(); ++i) EXPECT_EQ(smaller.lots[i].design, plan.lots[i].design);
+    options.designs = 0;
+    EXPECT_EQ(plan_city(options).designs.size(), 5u);  // each lot its own
 }
 
 }  // namespace boxlod

@@ -90,9 +90,9 @@ TEST(CameraPath, OrbitKeepsItsRadiusAndLooksAtTheCentre) {
 TEST(CameraPath, CityPathsOrbitTheCityAndWalkDownAStreet) {
     CityOptions options;
     options.buildings = 4;
-    Model city = generate_city(options);
-    Bounds bounds = model_bounds(city);
-    auto orbit = city_path("orbit", city, 45, 8);
+    CityPlan city = plan_city(options);
+    Bounds bounds = model_bounds(generate_city(options));
+    auto orbit = city_path("orbit", city, bounds, 45, 8);
     ASSERT_EQ(orbit.size(), 8u);
     float radius = (orbit[0].eye - bounds.center()).norm();
     EXPECT_GT(radius, bounds.size().norm() / 2);  // outside the city
@@ -102,7 +102,7 @@ TEST(CameraPath, CityPathsOrbitTheCityAndWalkDownAStreet) {
     }
     // The street: 2 m above the ground, along x from one edge of the city to the other,
     // between the two rows of lots (z = 0 in a 2 x 2 city), looking ahead.
-    auto street = city_path("street", city, 45, 5);
+    auto street = city_path("street", city, bounds, 45, 5);
     ASSERT_EQ(street.size(), 5u);
     for (const CameraPose& pose : street) {
         EXPECT_NEAR(pose.eye.y(), 2, 1e-4);
@@ -112,5 +112,5 @@ TEST(CameraPath, CityPathsOrbitTheCityAndWalkDownAStreet) {
     }
     EXPECT_NEAR(street.front().eye.x(), bounds.min.x(), 1e-3);
     EXPECT_NEAR(street.back().eye.x(), bounds.max.x(), 1e-3);
-    EXPECT_THROW(city_path("sideways", city, 45, 5), InputError);
+    EXPECT_THROW(city_path("sideways", city, bounds, 45, 5), InputError);
 }

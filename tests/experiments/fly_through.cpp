@@ -15,11 +15,12 @@ using namespace boxlod;
 
 namespace {
 
-Model small_city(int buildings) {
+CityPlan small_city(int buildings, int designs = 0) {
     CityOptions options;
     options.buildings = buildings;
     options.seed = 3;
-    return generate_city(options);
+    options.designs = designs;
+    return plan_city(options);
 }
 
 FlyThroughOptions tiny_frames() {
@@ -41,7 +42,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 // One building and its levels, built once for the tests that only select and draw.
 struct OneBuilding {
-    Model city = small_city(1);
+    CityPlan city = small_city(1);
     FlyThroughOptions options = tiny_frames();
     CityLevels levels = build_city_levels(city, options, true);
 };
@@ -65,7 +66,7 @@ TEST(FlyThrough, LevelsAreBakedForDoublingDistances) {
     int n = coarsest_level(object);
     ASSERT_GE(n, 3);
     EXPECT_EQ(b.levels.max_level, n);
-    EXPECT_EQ(b.levels.buildings[0].levels.size(), std::size_t(n) + 1);  // 0..n, packed
+    EXPECT_EQ(b.levels.designs[0].levels.size(), std::size_t(n) + 1);  // 0..n, packed
     EXPECT_FALSE(object.levels[0].sizing);
     for (int c = 1; c <= n; ++c) {
         const SelectionLevel& level = object.levels[std::size_t(c)];
@@ -138,7 +139,7 @@ TEST(FlyThrough, FrameCostIsWhatNormalMappingLoads) {
     std::size_t boxed_frames = 0;
     for (const FrameRecord& frame : fly_through(b.levels, dolly(b.levels.objects[0], 12), options)) {
         std::vector<const CostParts*> drawn = {&b.levels.street_cost,
-                                               &b.levels.buildings[0].costs[std::size_t(frame.levels[0])]};
+                                               &b.levels.designs[0].costs[std::size_t(frame.levels[0])]};
         const ModelCost expected = drawn_cost(drawn, RenderMode::normal), every_map = combined_cost(drawn);
         EXPECT_EQ(frame.cost.texture_bytes_gpu, expected.texture_bytes_gpu);
         EXPECT_EQ(frame.cost.bytes(), expected.bytes());
@@ -151,11 +152,11 @@ TEST(FlyThrough, FrameCostIsWhatNormalMappingLoads) {
 }
 
 TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
-    Model city = small_city(4);
+    CityPlan city = small_city(4);
     FlyThroughOptions options = tiny_frames();
     options.strategy = DistanceBands{{1e6}};  // the strategy alone keeps every building at level 0
     CityLevels levels = build_city_levels(city, options, false);
-    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 3);
+    std::vector<CameraPose> path = city_path("orbit", city, levels.bounds, options.fovy, 3);
     std::vector<int> coarsest;
     for (const SelectionObject& object : levels.objects) coarsest.push_back(coarsest_level(object));
     std::size_t least = faces_drawn(levels.objects, coarsest, levels.street_faces);
@@ -172,15 +173,16 @@ TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
 }
 
 TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
-    Model city = small_city(3);
+    CityPlan city = small_city(3);
     FlyThroughOptions options = tiny_frames();
     options.strategy = parse_strategy("distance:100,200,400", "test");
-    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 5);
     auto one = test::scratch_folder("fly_through_1"), two = test::scratch_folder("fly_through_2");
     options.threads = 1;
-    FlyThroughReport report = run_fly_through(city, path, options, {1}, one.string()).at(0);
+    CityLevels levels = build_city_levels(city, options, false);
+    std::vector<CameraPose> path = city_path("orbit", city, levels.bounds, options.fovy, 5);
+    FlyThroughReport report = run_fly_through(levels, path, options, {1}, one.string()).at(0);
     options.threads = 2;
-    run_fly_through(city, path, options, {1}, two.string());
+    run_fly_through(build_city_levels(city, options, false), path, options, {1}, two.string());
 
     std::string csv = test::read_text(one / "frames.csv");
     EXPECT_EQ(csv, test::read_text(two / "frames.csv"));
@@ -212,10 +214,10 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
 // a fine level can draw more faces than a coarser one); several details share one build
 // and each gets its own images.
 TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
-    Model city = small_city(3);
+    CityPlan city = small_city(3);
     FlyThroughOptions options = tiny_frames();
     options.hysteresis = 0;
-    std::vector<CameraPose> path = city_path("orbit", city, options.fovy, 4);
+    const std::vector<CameraPose> path = city_path("orbit", city, build_city_levels(city, options, false).bounds, options.fovy, 4);
     for (const char* text : {"distance:100,200,400", "pixels:4000,1000,250", "ratio:0.5,0.1,0.02", "diagonal:4,64", "texel"}) {
         options.strategy = parse_strategy(text, "test");
         CityLevels levels = build_city_levels(city, options, false);
@@ -238,7 +240,8 @@ TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
     options.detail = 1;
     options.strategy = parse_strategy("texel", "test");
     auto folder = test::scratch_folder("fly_through_details");
-    std::vector<FlyThroughReport> reports = run_fly_through(city, path, options, {0.5, 2}, folder.string());
+    std::vector<FlyThroughReport> reports =
+        run_fly_through(build_city_levels(city, options, false), path, options, {0.5, 2}, folder.string());
     ASSERT_EQ(reports.size(), 2u);
     EXPECT_EQ(reports[1].detail, 2);
     for (const char* run : {"detail_0.5", "detail_2"}) {
@@ -255,15 +258,16 @@ TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
 // level add up; the grammar textures every building copies are paid for once, so
 // all buildings at level 0 cost what the city's own textures do.
 TEST(FlyThrough, FrameCostPaysEachSharedTextureOnce) {
-    Model city = small_city(3);
+    CityPlan city = small_city(3);
     CityLevels levels = build_city_levels(city, tiny_frames(), false);
     std::vector<const CostParts*> originals = {&levels.street_cost}, coarsest = {&levels.street_cost};
-    for (const BuildingLevels& building : levels.buildings) {
-        originals.push_back(&building.costs.front());
-        coarsest.push_back(&building.costs.back());
-        EXPECT_EQ(building.costs.size(), building.triangles.size());
+    for (const CityBuilding& building : levels.buildings) {
+        const DesignLevels& design = levels.designs[building.design];
+        originals.push_back(&design.costs.front());
+        coarsest.push_back(&design.costs.back());
+        EXPECT_EQ(design.costs.size(), design.triangles.size());
     }
-    ModelCost all = combined_cost(originals), whole = model_cost(city);
+    ModelCost all = combined_cost(originals), whole = model_cost(generate_city(city.options));
     EXPECT_EQ(all.texture_bytes, whole.texture_bytes);
     EXPECT_EQ(all.texture_bytes_gpu, whole.texture_bytes_gpu);
     EXPECT_EQ(all.mesh_bytes, whole.mesh_bytes);
@@ -271,10 +275,39 @@ TEST(FlyThrough, FrameCostPaysEachSharedTextureOnce) {
     EXPECT_LT(combined_cost(coarsest).mesh_bytes, all.mesh_bytes);
 }
 
+// Lots showing one design share its LoD, built once; without sharing each
+// builds its own, and every statistic and frame comes out the same.
+TEST(FlyThrough, RepeatedDesignsAreBuiltOnceAndDrawnAsIfEachHadItsOwn) {
+    CityPlan city = small_city(6, 2);
+    FlyThroughOptions options = tiny_frames();
+    options.strategy = parse_strategy("distance:60,120,240", "test");
+    CityLevels shared = build_city_levels(city, options, false);
+    std::vector<CameraPose> path = city_path("street", city, shared.bounds, options.fovy, 4);
+    std::set<std::size_t> designs_shown;
+    for (const CityLot& lot : city.lots) designs_shown.insert(lot.design);
+    EXPECT_EQ(shared.designs.size(), designs_shown.size());
+    EXPECT_EQ(shared.buildings.size(), 6u);
+    options.share_designs = false;
+    CityLevels own = build_city_levels(city, options, false);
+    EXPECT_EQ(own.designs.size(), 6u);
+    EXPECT_EQ(own.bounds.min, shared.bounds.min);
+    EXPECT_EQ(own.bounds.max, shared.bounds.max);
+    auto a = test::scratch_folder("fly_through_shared"), b = test::scratch_folder("fly_through_own");
+    FlyThroughReport report = run_fly_through(shared, path, options, {1}, a.string()).at(0);
+    run_fly_through(own, path, options, {1}, b.string());
+    EXPECT_EQ(test::read_text(a / "frames.csv"), test::read_text(b / "frames.csv"));
+    for (int k = 0; k < 4; ++k) {
+        std::string name = "frames/frame_000" + std::to_string(k) + ".png";
+        EXPECT_EQ(test::read_text(a / name), test::read_text(b / name)) << name;
+    }
+    EXPECT_GT(report.level_totals.front() + report.level_totals.back(), 0u);
+    EXPECT_LT(report.level_totals.front(), 4u * 6u);  // some buildings are drawn as boxes
+}
+
 // With keep_small_subtrees no level of a building draws more faces than its original
 // (the manual's cut boxes single quads: its level 1 can draw more).
 TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
-    Model city = small_city(2);
+    CityPlan city = small_city(2);
     FlyThroughOptions options = tiny_frames();
     options.levels.keep_small_subtrees = true;
     CityLevels levels = build_city_levels(city, options, false);

@@ -105,6 +105,57 @@ TEST(Renderer, OutputIsIdenticalForAnyThreadCount) {
     }
 }
 
+// A batch's translation places its mesh as moving the mesh would: the scene
+// translated, seen by a camera and lit by a light translated with it, is the
+// picture of the scene in place (up to rounding on a few edge pixels).
+TEST(Renderer, ATranslatedBatchIsDrawnAndLitWhereItIsPlaced) {
+    auto scene = test::make_render_scene();
+    RenderSettings settings = scene->settings;
+    settings.light.position = {0.8f, 1.2f, 0.5f};  // near: lighting depends on where fragments are
+    Frame in_place = render_scene(*scene, settings);
+    const Eigen::Vector3f t(37, -5, 112);
+    for (Batch& batch : scene->batches) batch.translation = t;
+    settings.camera.position += t, settings.camera.target += t, settings.light.position += t;
+    Frame moved = render_scene(*scene, settings);
+    auto pixels_differing = [&](const Frame& frame) {
+        int count = 0;
+        for (std::size_t i = 0; i < frame.color.size(); ++i)
+            count += (frame.color[i] - in_place.color[i]).cwiseAbs().maxCoeff() > 0.02f;
+        return count;
+    };
+    EXPECT_LT(pixels_differing(moved), int(in_place.color.size() / 200));
+    settings.light.position -= t;  // the light left behind: the lighting must change
+    EXPECT_GT(pixels_differing(render_scene(*scene, settings)), int(in_place.color.size() / 4));
+    for (Batch& batch : scene->batches) batch.translation = Eigen::Vector3f::Zero();
+    EXPECT_GT(pixels_differing(render_scene(*scene, settings)), int(in_place.color.size() / 4));  // not drawn in view
+}
+
+// A city draws tens of thousands of small batches: they share chunks of
+// triangles, and each is drawn as if it were alone.
+TEST(Renderer, TensOfThousandsOfSmallBatchesAreAllDrawn) {
+    Mesh triangle;
+    triangle.positions = {{-0.4f, -0.4f, 0}, {0.4f, -0.4f, 0}, {0, 0.4f, 0}};
+    triangle.indices = {0, 1, 2};
+    const int side = 150;  // 22,500 batches, one triangle each, one per pixel block
+    std::vector<Batch> batches;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            batches.push_back({&triangle, {}});
+            batches.back().translation = {float(x) - side / 2.0f + 0.5f, float(y) - side / 2.0f + 0.5f, 0};
+        }
+    RenderSettings settings;
+    settings.mode = RenderMode::untextured;
+    settings.camera.orthographic = true;
+    settings.camera.position = {0, 0, 10}, settings.camera.target = {0, 0, 0};
+    settings.camera.left = settings.camera.bottom = -side / 2.0f, settings.camera.right = settings.camera.top = side / 2.0f;
+    Frame frame = make_frame(side * 4, side * 4, {1, 1, 1});
+    render(batches, settings, frame);
+    int drawn = 0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) drawn += frame.color[std::size_t((4 * y + 2) * frame.width + 4 * x + 2)].w() > 0;
+    EXPECT_EQ(drawn, side * side);
+}
+
 TEST(Renderer, ARenderOverAnEarlierOneFromItsDepthIsBothInOne) {
     // The box first, then the floor behind it and a blended pane with the depth
     // test from the box's depth: the picture of one render of all three.
@@ -393,6 +444,7 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
     batches.back().surface.height_depth = 0.05f;  // metric parallax: fragments carry the uv gradient
     batches.push_back({&with_uvs, batches[0].surface});
     batches.back().surface.normal = nullptr;
+    batches.back().translation = {0.05f, 0, -0.04f};  // drawn elsewhere: lit where it is drawn
 
     RenderSettings settings = scene->settings;
     std::vector<Camera> cameras{settings.camera, camera_at_position({1, 0.4f, 0.2f}, {0, 0.2f, 0}, 1.2f, 70, 3)};

@@ -2,11 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace boxlod {
 
+double half_fovy_tangent(float fovy_degrees) {
+    thread_local float last_fovy = std::numeric_limits<float>::quiet_NaN();
+    thread_local double tangent = 0;
+    if (!(fovy_degrees == last_fovy)) tangent = std::tan(double(fovy_degrees) * M_PI / 360), last_fovy = fovy_degrees;
+    return tangent;
+}
+
 double pixel_world_size(const TextureSizing& s) {
-    return 2 * double(s.distance) * std::tan(double(s.fovy_degrees) * M_PI / 360) / double(s.resolution);
+    return 2 * double(s.distance) * half_fovy_tangent(s.fovy_degrees) / double(s.resolution);
 }
 
 namespace {

@@ -16,6 +16,9 @@ struct TextureSizing {
 };
 
 double pixel_world_size(const TextureSizing& sizing);  // p
+// tan(fovy / 2): the last angle's is kept per thread, as run-time selection
+// asks for it per level of every object each frame (docs/city.md: Selection speed).
+double half_fovy_tangent(float fovy_degrees);
 
 // Texels for a face of extents a x b: at least 1, at most max_texture_size -
 // 2 gutter on each side, scaled down uniformly when larger.

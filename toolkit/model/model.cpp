@@ -7,21 +7,21 @@
 
 namespace boxlod {
 
+ContentDigest content_digest(const void* bytes, std::size_t size, ContentDigest d) {
+    const auto* p = static_cast<const std::uint8_t*>(bytes);
+    for (std::size_t i = 0; i < size; ++i) {
+        d.first = (d.first ^ p[i]) * 1099511628211ull;
+        d.second = (d.second + p[i] + 1) * 0x9E3779B97F4A7C15ull;
+    }
+    return d;
+}
+
 TextureDigest texture_digest(const Texture& texture) {
-    TextureDigest d{14695981039346656037ull, 0x243F6A8885A308D3ull};
-    auto mix = [&](const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const std::uint8_t*>(data);
-        for (std::size_t i = 0; i < bytes; ++i) {
-            d.first = (d.first ^ p[i]) * 1099511628211ull;
-            d.second = (d.second + p[i] + 1) * 0x9E3779B97F4A7C15ull;
-        }
-    };
     int layout[] = {texture.image.width, texture.image.height, texture.image.channels, texture.image16.width,
                     texture.image16.height, texture.image16.channels, int(texture.wrap)};
-    mix(layout, sizeof layout);
-    mix(texture.image.pixels.data(), texture.image.pixels.size());
-    mix(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t));
-    return d;
+    TextureDigest d = content_digest(layout, sizeof layout);
+    d = content_digest(texture.image.pixels.data(), texture.image.pixels.size(), d);
+    return content_digest(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t), d);
 }
 
 std::vector<TextureSlot<int*>> texture_slots(Material& m) {

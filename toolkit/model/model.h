@@ -32,10 +32,15 @@ struct Texture {
     Wrap wrap = Wrap::repeat;  // LoD pages clamp: their faces may touch the page's border
 };
 
-// A 128-bit digest of a texture's texels, layout and wrap mode: FNV-1a and a
-// multiplicative hash side by side. Equal digests are taken for equal textures
-// (a false match needs two images colliding in both, about 2^-128).
-using TextureDigest = std::pair<std::uint64_t, std::uint64_t>;
+// A 128-bit digest of bytes: FNV-1a and a multiplicative hash side by side.
+// Equal digests are taken for equal contents (a false match needs two inputs
+// colliding in both, about 2^-128). `from`: a digest to go on from.
+using ContentDigest = std::pair<std::uint64_t, std::uint64_t>;
+constexpr ContentDigest empty_digest{14695981039346656037ull, 0x243F6A8885A308D3ull};
+ContentDigest content_digest(const void* bytes, std::size_t size, ContentDigest from = empty_digest);
+
+// A texture's: its texels, layout and wrap mode.
+using TextureDigest = ContentDigest;
 TextureDigest texture_digest(const Texture& texture);
 
 // glTF KHR_materials_specular as the source stated it (a metallic-roughness

@@ -32,7 +32,7 @@ Eigen::Vector2d orthographic_scale(const SelectionView& view) {
 double pixels_per_unit(const SelectionView& view, double distance) {
     const Camera& c = view.camera;
     if (c.orthographic) return orthographic_scale(view).maxCoeff();
-    double f = view.height / 2.0 / std::tan(double(c.fovy_degrees) * M_PI / 360);
+    double f = view.height / 2.0 / half_fovy_tangent(c.fovy_degrees);
     return distance > 0 ? f / distance : infinity;
 }
 
@@ -243,7 +243,9 @@ int select_level(Selector& selector, const Strategy& strategy, const SelectionOb
                  const SelectionView& view) {
     Choice choice = choose_level(strategy, object, view);
     bool first = selector.level < 0;
-    if (first || forced_level(object, view, choice.value)) {
+    // The level staying as it was is the common case, and needs no more: a
+    // level monotone in the value lies between those of value / factor and value x factor.
+    if (first || selector.level == choice.level || forced_level(object, view, choice.value)) {
         selector.level = choice.level;
         return selector.level;
     }
