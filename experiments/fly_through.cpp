@@ -249,18 +249,26 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     const Strategy strategy = scale_detail(options.strategy, options.detail);
     Light light = city_light(city.bounds);
     ResidentDrawables resident(options.memory_budget);
-    // The streets and every building at its level, unpacked where needed.
-    auto batches_for = [&](const std::vector<int>& levels, FrameRecord& record) {
+    // The streets and every building in view at its level, unpacked where needed
+    // (a building outside the view would draw no pixel: it is neither unpacked nor drawn).
+    auto batches_for = [&](const std::vector<int>& levels, const Camera& camera, FrameRecord& record) {
         auto start = Clock::now();
         std::size_t unpacked_before = resident.counts().unpacked;
+        std::vector<std::size_t> shown;
         std::vector<const PackedDrawable*> wanted;
-        for (std::size_t b = 0; b < n; ++b)
-            wanted.push_back(&city.designs[city.buildings[b].design].levels[std::size_t(levels[b])]);
+        const float aspect = float(options.width) / float(options.height);
+        for (std::size_t b = 0; b < n; ++b) {
+            const PackedDrawable& level = city.designs[city.buildings[b].design].levels[std::size_t(levels[b])];
+            const Eigen::Vector3f center = level.bounds.center() + city.buildings[b].translation;
+            if (level.bounds.empty() || !sphere_in_view(camera, aspect, center, level.bounds.size().norm() / 2)) continue;
+            shown.push_back(b);
+            wanted.push_back(&level);
+        }
         std::vector<Batch> batches = city.streets.batches;
         std::vector<const Drawable*> drawables = resident.acquire(wanted, options.threads);
-        for (std::size_t b = 0; b < n; ++b)
-            for (Batch batch : drawables[b]->batches) {
-                batch.translation = city.buildings[b].translation;
+        for (std::size_t i = 0; i < shown.size(); ++i)
+            for (Batch batch : drawables[i]->batches) {
+                batch.translation = city.buildings[shown[i]].translation;
                 batches.push_back(batch);
             }
         record.levels_unpacked += resident.counts().unpacked - unpacked_before;
@@ -288,14 +296,14 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
         record.select_seconds = seconds_since(start);
         record_cost(city, k > 0 ? &records.back() : nullptr, record);
 
-        std::vector<Batch> batches = batches_for(record.levels, record);
+        std::vector<Batch> batches = batches_for(record.levels, view.camera, record);
         start = Clock::now();
         Image8 image = render_batches(batches, view.camera, light, options.width, options.height, options.threads);
         record.render_seconds = seconds_since(start);
 
         if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
             start = Clock::now();
-            Image8 full = render_batches(batches_for(std::vector<int>(n, 0), record), view.camera, light,
+            Image8 full = render_batches(batches_for(std::vector<int>(n, 0), view.camera, record), view.camera, light,
                                          options.width, options.height, options.threads);
             MetricPair pair{full, image};
             pair.pixels_per_degree = options.pixels_per_degree;

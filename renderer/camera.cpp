@@ -54,6 +54,19 @@ Eigen::Matrix4f projection_matrix(const Camera& camera, float aspect) {
     return p;
 }
 
+bool sphere_in_view(const Camera& camera, float aspect, const Eigen::Vector3f& center, float radius) {
+    const Eigen::Matrix4d m = (projection_matrix(camera, aspect) * view_matrix(camera)).cast<double>();
+    const Eigen::Vector4d point(center.x(), center.y(), center.z(), 1);
+    const double margin = 1e-3 * (1 + double(radius));  // forgives the renderer's float rounding
+    for (int axis = 0; axis < 3; ++axis)
+        for (double side : {-1.0, 1.0}) {  // w >= -x, w >= x, ... (clip space, z in [-w, w])
+            const Eigen::Vector4d plane = m.row(3) + side * m.row(axis);
+            const double length = plane.head<3>().norm();
+            if (length > 0 && plane.dot(point) / length < -(double(radius) + margin)) return false;
+        }
+    return true;
+}
+
 std::vector<std::string> camera_position_names() {
     std::vector<std::string> names;
     for (int x = -1; x <= 1; ++x)

@@ -26,6 +26,13 @@ Eigen::Matrix4f view_matrix(const Camera& camera);
 // `aspect` = width / height; ignored for orthographic cameras, whose window is explicit.
 Eigen::Matrix4f projection_matrix(const Camera& camera, float aspect);
 
+// False only when the sphere lies wholly outside one plane of the view volume
+// (planes from the rows of projection x view: Gribb and Hartmann, "Fast
+// Extraction of Viewing Frustum Planes from the World-View-Projection
+// Matrix", 2001), with a margin, so a sphere judged outside holds nothing the
+// renderer would draw.
+bool sphere_in_view(const Camera& camera, float aspect, const Eigen::Vector3f& center, float radius);
+
 // The manual's 26 camera positions: the directions in {-1,0,1}^3 other than 0,
 // named like "+X", "-Y", "+X+Y+Z".
 std::vector<std::string> camera_position_names();

@@ -65,12 +65,27 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     v.z = std::clamp((p.z() * v.inv_w + 1) * 0.5f, 0.0f, 1.0f);
 }
 
-// Appends the triangle of three snapped corners unless it has no area or faces the culled way.
+// Whether [low, high] (subpixels) holds the centre of a pixel in [first, end).
+[[gnu::always_inline]] inline bool holds_pixel_centre(std::int64_t low, std::int64_t high, int first, int end) {
+    const std::int64_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
+    const std::int64_t k0 = std::max<std::int64_t>((low - half + one - 1) >> subpixel_bits, first);  // ceil
+    const std::int64_t k1 = std::min<std::int64_t>((high - half) >> subpixel_bits, std::int64_t(end) - 1);  // floor
+    return k0 <= k1;
+}
+
+// Appends the triangle of three snapped corners unless it has no area, faces
+// the culled way, or its bounding box holds no pixel centre the viewport
+// writes (it would cover none: most triangles of a far, detailed scene).
 [[gnu::always_inline]] inline bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
                                                    std::uint32_t batch, std::uint32_t triangle, Culling culling,
-                                                   std::vector<ScreenTriangle>& out) {
+                                                   const Viewport& viewport, std::vector<ScreenTriangle>& out) {
     std::int64_t area = edge(a.x, a.y, b.x, b.y, c.x, c.y);  // doubled_area of the triangle to be
     if (area == 0) return false;
+    if (!holds_pixel_centre(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), viewport.scissor_x0,
+                            std::min(viewport.width, viewport.scissor_x1)) ||
+        !holds_pixel_centre(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), viewport.scissor_y0,
+                            std::min(viewport.height, viewport.scissor_y1)))
+        return false;
     // Counter-clockwise in NDC (y up) is negative area in window space (y down).
     bool front = area < 0;
     if ((culling == Culling::back && !front) || (culling == Culling::front && front)) return false;
@@ -104,7 +119,7 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     ProjectedVertex snapped[max_polygon];
     for (int i = 0; i < count; ++i) snap(polygon[i].position, viewport, snapped[i]);
     for (int k = 1; k + 1 < count; ++k) {  // a fan over the clipped polygon
-        if (!append_triangle(snapped[0], snapped[k], snapped[k + 1], batch, triangle, culling, out)) continue;
+        if (!append_triangle(snapped[0], snapped[k], snapped[k + 1], batch, triangle, culling, viewport, out)) continue;
         out.back().clipped = std::int32_t(weights.size());
         weights.push_back({{polygon[0].weights, polygon[k].weights, polygon[k + 1].weights}});
     }
@@ -121,7 +136,7 @@ template <typename ClipOf>
     if (outside_all) return;
     // Inside every plane (nearly every triangle): the corners as the vertex stage snapped them.
     if (!outside_any) {
-        append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, out);
+        append_triangle(*corner[0], *corner[1], *corner[2], batch, triangle, culling, viewport, out);
         return;
     }
     Eigen::Vector4f clip[3];

@@ -1,8 +1,11 @@
 #include "renderer/camera.h"
 
+#include "renderer/renderer.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace boxlod;
@@ -68,4 +71,47 @@ TEST(Camera, ProjectionMapsNearAndFarToTheDepthRange) {
     EXPECT_NEAR(corner.x(), 1, 1e-6);
     EXPECT_NEAR(corner.y(), 1, 1e-6);
     EXPECT_NEAR(corner.z(), 1, 1e-6);
+}
+
+// A sphere judged outside the view holds nothing the renderer draws: a cube
+// inscribed in it leaves the frame empty. Spheres around the view volume's
+// edges, some in, some out, from a perspective and an orthographic camera.
+TEST(Camera, ASphereOutsideTheViewDrawsNothing) {
+    Camera camera;
+    camera.position = {0, 0, 0}, camera.target = {0, 0, -1}, camera.fovy_degrees = 60;
+    camera.near_plane = 0.5f, camera.far_plane = 50;
+    EXPECT_TRUE(sphere_in_view(camera, 1.5f, {0, 0, -10}, 1));
+    EXPECT_FALSE(sphere_in_view(camera, 1.5f, {0, 0, 10}, 1));     // behind
+    EXPECT_FALSE(sphere_in_view(camera, 1.5f, {0, 0, -60}, 1));    // beyond far
+    EXPECT_FALSE(sphere_in_view(camera, 1.5f, {100, 0, -10}, 1));  // aside
+    Camera orthographic = camera;
+    orthographic.orthographic = true;
+    orthographic.left = -4, orthographic.right = 4, orthographic.bottom = -3, orthographic.top = 3;
+    int outside = 0, inside = 0;
+    for (const Camera& c : {camera, orthographic})
+        for (int i = 0; i < 200; ++i) {
+            // Centres on a spiral sweeping across the edges of the view.
+            const float angle = float(i) * 0.7f, reach = 2 + float(i % 40) * 0.35f, depth = -1 - float(i % 17) * 3.5f;
+            const Eigen::Vector3f center(reach * std::cos(angle) * -depth * 0.3f, reach * std::sin(angle) * -depth * 0.2f, depth);
+            const float radius = 0.3f + float(i % 5) * 0.4f, half = radius / std::sqrt(3.0f);
+            Mesh cube;
+            for (int k = 0; k < 8; ++k)
+                cube.positions.push_back(center + half * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+            cube.indices = {0, 1, 3, 0, 3, 2, 4, 7, 5, 4, 6, 7, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+            RenderSettings settings;
+            settings.camera = c;
+            settings.mode = RenderMode::untextured;
+            Frame frame = make_frame(48, 32, {1, 1, 1});
+            render({Batch{&cube, {}}}, settings, frame);
+            bool drawn = false;
+            for (const Eigen::Vector4f& color : frame.color) drawn = drawn || color.w() > 0;
+            if (sphere_in_view(c, 1.5f, center, radius)) {
+                ++inside;
+            } else {
+                ++outside;
+                EXPECT_FALSE(drawn) << i;
+            }
+        }
+    EXPECT_GT(outside, 40);
+    EXPECT_GT(inside, 40);
 }
