@@ -44,13 +44,18 @@ Light city_light(const Bounds& bounds) {
 // The city draws in normal mode: height maps are neither read, nor packed, nor paid for.
 constexpr RenderMode city_render_mode = RenderMode::normal;
 
-Image8 render_batches(const std::vector<Batch>& batches, const Camera& camera, const Light& light, int width,
-                      int height, int threads) {
+RenderSettings city_render_settings(const Camera& camera, const Light& light, int threads) {
     RenderSettings settings;
     settings.camera = camera;
     settings.mode = city_render_mode;
     settings.light = light;
     settings.threads = threads;
+    return settings;
+}
+
+Image8 render_batches(const std::vector<Batch>& batches, const Camera& camera, const Light& light, int width,
+                      int height, int threads) {
+    const RenderSettings settings = city_render_settings(camera, light, threads);
     Frame frame = make_frame(width, height, sky);
     render(batches, settings, frame);
     return frame_to_srgb8(frame);
@@ -241,6 +246,79 @@ Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degree
     return camera;
 }
 
+namespace {
+
+// The buildings a camera sees at `levels` (a building outside the view would draw no pixel).
+std::vector<std::size_t> buildings_in_view(const CityLevels& city, const std::vector<int>& levels, const Camera& camera,
+                                           float aspect) {
+    std::vector<std::size_t> shown;
+    for (std::size_t b = 0; b < city.buildings.size(); ++b) {
+        const PackedDrawable& level = city.designs[city.buildings[b].design].levels[std::size_t(levels[b])];
+        const Eigen::Vector3f center = level.bounds.center() + city.buildings[b].translation;
+        if (!level.bounds.empty() && sphere_in_view(camera, aspect, center, level.bounds.size().norm() / 2))
+            shown.push_back(b);
+    }
+    return shown;
+}
+
+const PackedDrawable& level_drawn(const CityLevels& city, std::size_t building, int level) {
+    return city.designs[city.buildings[building].design].levels[std::size_t(level)];
+}
+
+void append_moved(const Drawable& drawable, const Eigen::Vector3f& translation, std::vector<Batch>& batches) {
+    for (Batch batch : drawable.batches) {
+        batch.translation = translation;
+        batches.push_back(batch);
+    }
+}
+
+// The frame with every building in view at level 0: the reference a frame is
+// compared with. Unpacked apart from the frames' cache, a group of
+// options.full_detail_group_bytes at a time, each group drawn over the earlier
+// ones from their depth and the blended surfaces of all last (renderer.h:
+// depth_from_frame): the picture of one render of them all, with at most a
+// group unpacked (and the levels with blended surfaces, kept to the end).
+Image8 render_full_detail(const CityLevels& city, const Camera& camera, const Light& light,
+                          const FlyThroughOptions& options) {
+    const float aspect = float(options.width) / float(options.height);
+    const std::vector<std::size_t> shown =
+        buildings_in_view(city, std::vector<int>(city.buildings.size(), 0), camera, aspect);
+    RenderSettings settings = city_render_settings(camera, light, options.threads);
+    settings.depth_from_frame = true;
+    Frame frame = make_frame(options.width, options.height, sky);
+    std::vector<std::unique_ptr<DrawableModel>> kept;  // levels with blended surfaces
+    std::vector<Batch> blended;
+    // Draws the opaque and masked batches; keeps the blended ones for the end.
+    auto draw_opaque = [&](const std::vector<Batch>& batches) {
+        std::vector<Batch> opaque;
+        for (const Batch& batch : batches) (batch.surface.alpha_mode == AlphaMode::blend ? blended : opaque).push_back(batch);
+        render(opaque, settings, frame);
+    };
+    draw_opaque(city.streets.batches);
+    for (std::size_t first = 0; first < shown.size();) {
+        std::size_t end = first, bytes = 0;
+        while (end < shown.size() && (end == first || bytes + level_drawn(city, shown[end], 0).unpacked_size <=
+                                                          options.full_detail_group_bytes))
+            bytes += level_drawn(city, shown[end++], 0).unpacked_size;
+        std::vector<std::unique_ptr<DrawableModel>> group(end - first);
+        parallel_for(group.size(), options.threads,
+                     [&](std::size_t i) { group[i] = unpack_drawable(level_drawn(city, shown[first + i], 0)); });
+        std::vector<Batch> batches;
+        for (std::size_t i = 0; i < group.size(); ++i)
+            append_moved(group[i]->drawable, city.buildings[shown[first + i]].translation, batches);
+        draw_opaque(batches);
+        for (std::unique_ptr<DrawableModel>& level : group)
+            if (std::any_of(level->drawable.batches.begin(), level->drawable.batches.end(),
+                            [](const Batch& b) { return b.surface.alpha_mode == AlphaMode::blend; }))
+                kept.push_back(std::move(level));
+        first = end;
+    }
+    render(blended, settings, frame);
+    return frame_to_srgb8(frame);
+}
+
+}  // namespace
+
 std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<CameraPose>& path,
                                      const FlyThroughOptions& options, const FrameDone& frame_done) {
     const std::size_t n = city.buildings.size();
@@ -249,28 +327,18 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     const Strategy strategy = scale_detail(options.strategy, options.detail);
     Light light = city_light(city.bounds);
     ResidentDrawables resident(options.memory_budget);
-    // The streets and every building in view at its level, unpacked where needed
-    // (a building outside the view would draw no pixel: it is neither unpacked nor drawn).
+    // The streets and every building in view at its level, unpacked where needed.
     auto batches_for = [&](const std::vector<int>& levels, const Camera& camera, FrameRecord& record) {
         auto start = Clock::now();
         std::size_t unpacked_before = resident.counts().unpacked;
-        std::vector<std::size_t> shown;
+        const std::vector<std::size_t> shown =
+            buildings_in_view(city, levels, camera, float(options.width) / float(options.height));
         std::vector<const PackedDrawable*> wanted;
-        const float aspect = float(options.width) / float(options.height);
-        for (std::size_t b = 0; b < n; ++b) {
-            const PackedDrawable& level = city.designs[city.buildings[b].design].levels[std::size_t(levels[b])];
-            const Eigen::Vector3f center = level.bounds.center() + city.buildings[b].translation;
-            if (level.bounds.empty() || !sphere_in_view(camera, aspect, center, level.bounds.size().norm() / 2)) continue;
-            shown.push_back(b);
-            wanted.push_back(&level);
-        }
+        for (std::size_t b : shown) wanted.push_back(&level_drawn(city, b, levels[b]));
         std::vector<Batch> batches = city.streets.batches;
         std::vector<const Drawable*> drawables = resident.acquire(wanted, options.threads);
         for (std::size_t i = 0; i < shown.size(); ++i)
-            for (Batch batch : drawables[i]->batches) {
-                batch.translation = city.buildings[shown[i]].translation;
-                batches.push_back(batch);
-            }
+            append_moved(*drawables[i], city.buildings[shown[i]].translation, batches);
         record.levels_unpacked += resident.counts().unpacked - unpacked_before;
         record.resident_bytes = resident.counts().resident_bytes;
         record.unpack_seconds += seconds_since(start);
@@ -284,8 +352,14 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
         // Each building's choice is its own: chunks of them in parallel.
         constexpr std::size_t chunk = 1024;
         parallel_for((n + chunk - 1) / chunk, options.threads, [&](std::size_t c) {
-            for (std::size_t b = c * chunk; b < std::min(n, (c + 1) * chunk); ++b)
+            for (std::size_t b = c * chunk; b < std::min(n, (c + 1) * chunk); ++b) {
+                // Each object's levels are an allocation of their own, scattered over a
+                // large city's heap: fetched a few buildings ahead, their misses overlap.
+                constexpr std::size_t ahead = 8;
+                if (b + ahead < n && !city.objects[b + ahead].levels.empty())
+                    __builtin_prefetch(&city.objects[b + ahead].levels.back());
                 record.levels[b] = select_level(selectors[b], strategy, city.objects[b], view);
+            }
         });
         if (options.face_budget) {
             std::vector<double> importance;
@@ -303,8 +377,7 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
 
         if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
             start = Clock::now();
-            Image8 full = render_batches(batches_for(std::vector<int>(n, 0), view.camera, record), view.camera, light,
-                                         options.width, options.height, options.threads);
+            Image8 full = render_full_detail(city, view.camera, light, options);
             MetricPair pair{full, image};
             pair.pixels_per_degree = options.pixels_per_degree;
             pair.threads = options.threads;
@@ -404,9 +477,11 @@ bool is_fly_through_file(const std::string& name) {
 
 double fly_through_memory(const CityPlan& city, const FlyThroughOptions& options) {
     const std::size_t lods = options.share_designs ? std::min(city.designs.size(), city.lots.size()) : city.lots.size();
-    // Measured peaks: 1.36 GB for 1,000 unique buildings (0.29 MB of packed levels
-    // each), 5.5 GB for 10,000 of 100 designs, most of it a compared frame's 50 M triangles.
-    return 0.4e6 * double(lods) + 0.5e6 * double(city.lots.size()) + render_memory(options.width, options.height) +
+    // Measured peaks (docs/city.md: Scale): 0.76 GB for 1,000 unique buildings,
+    // 4.1 GB for 10,000 (2.9 GB of it packed levels, 0.29 MB each), 1.15 GB for
+    // 10,000 of 100 designs; a compared frame's originals a group at a time, with its render.
+    return 0.3e6 * double(lods) + 0.1e6 * double(city.lots.size()) + 1.5 * double(options.full_detail_group_bytes) +
+           render_memory(options.width, options.height) +
            (options.error_every > 0 ? metrics_memory(options.width, options.height) : 0);
 }
 

@@ -42,6 +42,9 @@ struct FlyThroughOptions {
     float base_distance = 20;
     // Unpacked levels kept between frames (docs/city.md: Memory); a frame's own levels are always unpacked.
     std::size_t memory_budget = std::size_t(1) << 30;
+    // A frame compared with full detail unpacks its buildings' originals apart
+    // from that cache, about this many bytes at a time; the picture is the same for any value.
+    std::size_t full_detail_group_bytes = std::size_t(256) << 20;
     // Lots whose designs derive to the same content (by digest) share one LoD;
     // false: every lot builds its own (the same levels, built again).
     bool share_designs = true;
@@ -149,8 +152,9 @@ struct FlyThroughReport {
 };
 
 // What a fly-through of a city needs besides its cache of unpacked levels
-// (memory_budget): per LoD built its packed levels, per building its share
-// of a frame drawn at full detail, and the frame's metrics (docs/city.md: Memory).
+// (memory_budget): per LoD built its packed levels, per building its selection
+// and its level in a frame, a group of originals for the frames compared at
+// full detail, and the frame's render and metrics (docs/city.md: Memory).
 double fly_through_memory(const CityPlan& city, const FlyThroughOptions& options);
 
 // What run_fly_through writes into its folder (a path relative to it):

@@ -3,7 +3,7 @@
 //   K designs (0: each its own), built and packed; counters: ms per building,
 //   LoDs built, packed MB, what keeping every level decoded would take
 //   (unpacked MB), and the process's peak resident MB so far.
-// - unpack_levels/N: unpacking all levels of 25 buildings again, as a frame does
+// - unpack_levels/N: unpacking all levels of N = 25 buildings again, as a frame does
 //   for the levels it draws that are not resident: the cost of keeping them packed.
 // - select_frame/N: one frame's selection for N buildings (texel-exact
 //   with hysteresis, along the orbit), the buildings copies of the city's real
@@ -61,8 +61,9 @@ void bm_city_levels(benchmark::State& state) {
     state.counters["unpacked MB"] = double(unpacked) * 1e-6;
     state.counters["peak resident MB"] = peak_resident_mb();
 }
-// Unique buildings at 100, then 1,000 and 10,000 lots drawing from 100 designs.
-BENCHMARK(bm_city_levels)->Args({100, 0})->Args({1000, 100})->Args({10000, 100})
+// A sweep of buildings: unique at 25 (unpack_levels' city), 100 and 1,000, then
+// 1,000 and 10,000 lots drawing from 100 designs (10,000 unique: docs/city.md, Scale).
+BENCHMARK(bm_city_levels)->Args({city_buildings, 0})->Args({100, 0})->Args({1000, 0})->Args({1000, 100})->Args({10000, 100})
     ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 void bm_unpack_levels(benchmark::State& state) {

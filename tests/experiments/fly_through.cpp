@@ -104,9 +104,11 @@ TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
 
 // Levels are unpacked on demand: how much stays unpacked changes how often a level is
 // unpacked again, never what a frame shows; each level is unpacked once when all fit.
+// (The full-detail frames compared are unpacked apart, not through this cache.)
 TEST(FlyThrough, FramesDoNotDependOnTheMemoryBudget) {
     const OneBuilding& b = one_building();
     std::vector<CameraPose> path = dolly(b.levels.objects[0], 12);
+    path.insert(path.end(), path.rbegin(), path.rend());  // in and out again: the levels come back
     FlyThroughOptions options = b.options;
     options.strategy = parse_strategy("distance:40,80,160,320,640", "test");
     std::vector<std::vector<std::uint8_t>> images[2];
@@ -118,7 +120,7 @@ TEST(FlyThrough, FramesDoNotDependOnTheMemoryBudget) {
         });
     }
     EXPECT_EQ(images[0], images[1]);
-    std::set<int> levels_drawn = {0};  // frames 0, 2, ... are compared with level 0
+    std::set<int> levels_drawn;
     std::size_t unpacked[2] = {0, 0};
     for (int run = 0; run < 2; ++run)
         for (const FrameRecord& frame : frames[run]) {
@@ -127,10 +129,29 @@ TEST(FlyThrough, FramesDoNotDependOnTheMemoryBudget) {
         }
     ASSERT_GE(levels_drawn.size(), 4u);
     EXPECT_EQ(unpacked[1], levels_drawn.size());
-    EXPECT_GT(unpacked[0], unpacked[1]);  // with no budget, level 0 and the frame's level take turns
+    EXPECT_GT(unpacked[0], unpacked[1]);  // with no budget, a level coming back is unpacked again
 }
 
-// The city draws in normal mapping, so a frame pays for no height page: its
+// The frame at full detail is unpacked and drawn in groups, each over the
+// earlier ones' depth: the same picture, so the same errors, for any group size.
+TEST(FlyThrough, FullDetailDrawnInGroupsIsOneRenderOfAll) {
+    const CityPlan city = small_city(6);
+    FlyThroughOptions options = tiny_frames();
+    options.error_every = 1;
+    const CityLevels levels = build_city_levels(city, options, false);
+    const std::vector<CameraPose> path = city_path("orbit", city, levels.bounds, options.fovy, 3);
+    std::vector<std::vector<double>> errors[2];
+    for (int run = 0; run < 2; ++run) {
+        options.full_detail_group_bytes = run == 0 ? std::size_t(1) << 40 : 1;  // one group; a building a group
+        for (const FrameRecord& frame : fly_through(levels, path, options)) {
+            ASSERT_TRUE(frame.error);
+            errors[run].push_back({frame.error->psnr, frame.error->ssim, frame.error->flip});
+        }
+    }
+    EXPECT_EQ(errors[0], errors[1]);
+    EXPECT_GT(errors[0][0][2], 0);  // the levels differ from full detail: the errors say something
+}
+
 // cost is what that mode loads of the streets and each building's level.
 TEST(FlyThrough, FrameCostIsWhatNormalMappingLoads) {
     const OneBuilding& b = one_building();

@@ -54,16 +54,17 @@ int texel_exact_level(const TexelExact& strategy, const SelectionObject& object,
     // mapping holds for any view whose pixel is at least as large).
     // The detail bias judges the level as if the pixel were detail times smaller.
     footprint /= strategy.detail;
-    int best = 0;
-    for (int c = 1; c <= coarsest_level(object); ++c) {
+    // The coarsest acceptable level, sought from the coarsest down: the far
+    // buildings of a city, most of them, stop at the first.
+    for (int c = coarsest_level(object); c >= 1; --c) {
         const SelectionLevel& level = object.levels[c];
         if (!level.sizing) continue;
         if (!(footprint >= pixel_world_size(*level.sizing) * (1 - texel_tolerance))) continue;
         if (strategy.error_budget && (!level.error || !(scaled_error(*level.error, footprint) <= *strategy.error_budget)))
             continue;
-        best = c;
+        return c;
     }
-    return best;
+    return 0;
 }
 
 // choose_level's rules that override every strategy.
