@@ -9,4 +9,18 @@ using Clock = std::chrono::steady_clock;
 
 inline double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+// Adds the seconds from its making to the end of its scope to `total`:
+//   { const ScopedTimer timer(times.bake); bake(...); }
+class ScopedTimer {
+public:
+    explicit ScopedTimer(double& total) : total_(total) {}
+    ~ScopedTimer() { total_ += seconds_since(start_); }
+    ScopedTimer(const ScopedTimer&) = delete;
+    ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+private:
+    double& total_;
+    const Clock::time_point start_ = Clock::now();
+};
+
 }  // namespace boxlod

@@ -92,10 +92,10 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
     for (int c = 1, n = 1; c <= n; ++c) {
         p.distance = level_sizing_distance(options, c);
         std::unique_ptr<LodSession> session = start_lod(model, p, 1, &boxes);
-        n = session->levels.obtained_levels;
+        n = session->derived.levels.obtained_levels;
         Lod lod = build_lod(*session, c, 1);
         MeshCounts counts = mesh_counts(lod.model);
-        levels.push_back({counts.faces, session->sizing, std::nullopt});
+        levels.push_back({counts.faces, session->derived.sizing, std::nullopt});
         built.triangles.push_back(counts.triangles);
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));
@@ -317,19 +317,54 @@ Image8 render_full_detail(const CityLevels& city, const Camera& camera, const Li
     return frame_to_srgb8(frame);
 }
 
+// Every building's level for the view (and the face budget), each building's
+// choice its own: chunks of them in parallel.
+std::vector<int> select_levels(const CityLevels& city, std::vector<Selector>& selectors, const Strategy& strategy,
+                               const SelectionView& view, const FlyThroughOptions& options) {
+    const std::size_t n = city.buildings.size();
+    std::vector<int> levels(n);
+    constexpr std::size_t chunk = 1024;
+    parallel_for((n + chunk - 1) / chunk, options.threads, [&](std::size_t c) {
+        for (std::size_t b = c * chunk; b < std::min(n, (c + 1) * chunk); ++b) {
+            // Each object's levels are an allocation of their own, scattered over a
+            // large city's heap: fetched a few buildings ahead, their misses overlap.
+            constexpr std::size_t ahead = 8;
+            if (b + ahead < n && !city.objects[b + ahead].levels.empty())
+                __builtin_prefetch(&city.objects[b + ahead].levels.back());
+            levels[b] = select_level(selectors[b], strategy, city.objects[b], view);
+        }
+    });
+    if (options.face_budget) {
+        std::vector<double> importance;
+        for (const SelectionObject& object : city.objects) importance.push_back(selection_importance(strategy, object, view));
+        fit_face_budget(city.objects, importance, *options.face_budget, levels, city.street_faces);
+    }
+    return levels;
+}
+
+// A frame's errors against the same view at full detail.
+ImageErrors full_detail_errors(const CityLevels& city, const Camera& camera, const Light& light, const Image8& image,
+                               const FlyThroughOptions& options) {
+    Image8 full = render_full_detail(city, camera, light, options);
+    MetricPair pair{full, image};
+    pair.pixels_per_degree = options.pixels_per_degree;
+    pair.threads = options.threads;
+    std::vector<double> e = measure_metrics({Metric::psnr, Metric::ssim, Metric::flip}, pair).values;
+    return {e[0], e[1], e[2]};
+}
+
 }  // namespace
 
 std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<CameraPose>& path,
                                      const FlyThroughOptions& options, const FrameDone& frame_done) {
-    const std::size_t n = city.buildings.size();
-    std::vector<Selector> selectors(n, Selector{options.hysteresis, -1});
+    std::vector<Selector> selectors(city.buildings.size(), Selector{options.hysteresis, -1});
     std::vector<FrameRecord> records;
     const Strategy strategy = scale_detail(options.strategy, options.detail);
     Light light = city_light(city.bounds);
     ResidentDrawables resident(options.memory_budget);
     // The streets and every building in view at its level, unpacked where needed.
     auto batches_for = [&](const std::vector<int>& levels, const Camera& camera, FrameRecord& record) {
-        auto start = Clock::now();
+        const ScopedTimer timer(record.unpack_seconds);
         std::size_t unpacked_before = resident.counts().unpacked;
         const std::vector<std::size_t> shown =
             buildings_in_view(city, levels, camera, float(options.width) / float(options.height));
@@ -341,49 +376,25 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
             append_moved(*drawables[i], city.buildings[shown[i]].translation, batches);
         record.levels_unpacked += resident.counts().unpacked - unpacked_before;
         record.resident_bytes = resident.counts().resident_bytes;
-        record.unpack_seconds += seconds_since(start);
         return batches;
     };
     for (std::size_t k = 0; k < path.size(); ++k) {
         FrameRecord record;
-        auto start = Clock::now();
-        SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width, options.height};
-        record.levels.resize(n);
-        // Each building's choice is its own: chunks of them in parallel.
-        constexpr std::size_t chunk = 1024;
-        parallel_for((n + chunk - 1) / chunk, options.threads, [&](std::size_t c) {
-            for (std::size_t b = c * chunk; b < std::min(n, (c + 1) * chunk); ++b) {
-                // Each object's levels are an allocation of their own, scattered over a
-                // large city's heap: fetched a few buildings ahead, their misses overlap.
-                constexpr std::size_t ahead = 8;
-                if (b + ahead < n && !city.objects[b + ahead].levels.empty())
-                    __builtin_prefetch(&city.objects[b + ahead].levels.back());
-                record.levels[b] = select_level(selectors[b], strategy, city.objects[b], view);
-            }
-        });
-        if (options.face_budget) {
-            std::vector<double> importance;
-            for (const SelectionObject& object : city.objects)
-                importance.push_back(selection_importance(strategy, object, view));
-            fit_face_budget(city.objects, importance, *options.face_budget, record.levels, city.street_faces);
+        const SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width, options.height};
+        {
+            const ScopedTimer timer(record.select_seconds);
+            record.levels = select_levels(city, selectors, strategy, view, options);
         }
-        record.select_seconds = seconds_since(start);
         record_cost(city, k > 0 ? &records.back() : nullptr, record);
-
-        std::vector<Batch> batches = batches_for(record.levels, view.camera, record);
-        start = Clock::now();
-        Image8 image = render_batches(batches, view.camera, light, options.width, options.height, options.threads);
-        record.render_seconds = seconds_since(start);
-
+        const std::vector<Batch> batches = batches_for(record.levels, view.camera, record);
+        Image8 image;
+        {
+            const ScopedTimer timer(record.render_seconds);
+            image = render_batches(batches, view.camera, light, options.width, options.height, options.threads);
+        }
         if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
-            start = Clock::now();
-            Image8 full = render_full_detail(city, view.camera, light, options);
-            MetricPair pair{full, image};
-            pair.pixels_per_degree = options.pixels_per_degree;
-            pair.threads = options.threads;
-            std::vector<double> e = measure_metrics({Metric::psnr, Metric::ssim, Metric::flip}, pair).values;
-            record.error = ImageErrors{e[0], e[1], e[2]};
-            record.error_seconds = seconds_since(start);
+            const ScopedTimer timer(record.error_seconds);
+            record.error = full_detail_errors(city, view.camera, light, image, options);
         }
         if (frame_done) frame_done(int(k), image, record);
         records.push_back(std::move(record));

@@ -112,7 +112,7 @@ struct Candidate {
     Atlas atlas;  // pages = 0 for untextured boxes and the baselines
     std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
     std::size_t nodes_with_box = 0;
-    std::string depth_error;  // an LoD's proxy error (LodSession::depth_errors summed over its boxes); empty for baselines
+    std::string depth_error;  // an LoD's proxy error (LodDerived::depth_errors summed over its boxes); empty for baselines
     std::string measured_error;  // a hybrid level's measured proxy error (Lod::measured_error); empty for the others
     int obtained_levels = 0;
     CostParts cost;  // each row states the cost of the maps its render mode draws
@@ -227,14 +227,16 @@ const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report,
     auto found = run.references.find(key);
     if (found != run.references.end()) return found->second;
     if (!run.original) run.original = make_drawable_model(run.model);
-    auto render_start = Clock::now();
-    RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
-    Shot shot = render_shot(run.original->drawable.batches, settings, config.width, config.height);
-    report.render_seconds += seconds_since(render_start);
-    auto metric_start = Clock::now();
-    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end())
+    Shot shot;
+    {
+        const ScopedTimer timer(report.render_seconds);
+        RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
+        shot = render_shot(run.original->drawable.batches, settings, config.width, config.height);
+    }
+    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end()) {
+        const ScopedTimer timer(report.metric_seconds);
         shot.flip_reference = prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads);
-    report.metric_seconds += seconds_since(metric_start);
+    }
     ++report.original_renders;
     if (out.keep_images)
         save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
@@ -289,17 +291,22 @@ struct DrawnRow { std::string result, timing; Image8 image; Plane heatmap; doubl
 DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Candidate& c, const MissingRow& row) {
     const SweepConfig& config = run.config;
     const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
-    auto render_start = Clock::now();
-    RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                            row.mode, config.lod, run.threads);
-    Shot shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
-    const double render_seconds = seconds_since(render_start);
+    double render_seconds = 0, metric_seconds = 0;
+    Shot shot;
+    {
+        const ScopedTimer timer(render_seconds);
+        RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                                row.mode, config.lod, run.threads);
+        shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+    }
+    Metrics metrics;
+    {
+        const ScopedTimer timer(metric_seconds);
+        metrics = compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
+    }
     report.render_seconds += render_seconds;
-    ++report.lod_renders;
-    auto metric_start = Clock::now();
-    Metrics metrics = compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
-    const double metric_seconds = seconds_since(metric_start);
     report.metric_seconds += metric_seconds;
+    ++report.lod_renders;
     return {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
             extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
             out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap), metrics.error};
@@ -336,11 +343,15 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
             int s = slot(row.mode, row.view, row.distance);
             auto found = candidates.find(s);
             if (found == candidates.end()) {
-                auto build_start = Clock::now();
-                Candidate made = make(s, a);
-                if (!made.drawable) made.drawable = make_drawable_model(made.model);
-                made.seconds = seconds_since(build_start);
-                report.build_seconds += made.seconds;
+                double seconds = 0;
+                Candidate made;
+                {
+                    const ScopedTimer timer(seconds);
+                    made = make(s, a);
+                    if (!made.drawable) made.drawable = make_drawable_model(made.model);
+                }
+                made.seconds = seconds;
+                report.build_seconds += seconds;
                 ++report.lods_built;
                 found = candidates.emplace(s, std::move(made)).first;
             }
@@ -396,7 +407,7 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
                 if (!orders_by_bytes(p.level_mode)) p.budgets.clear();  // the other modes make wanted_levels levels
                 session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
-                session->budgets_strict = false;  // a row over its budget says so in its bytes
+                session->input.budgets_strict = false;  // a row over its budget says so in its bytes
             }
             Lod lod = build_lod(*session, level, run.threads);
             Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
@@ -523,9 +534,11 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     merge_shards(out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
-        auto start = Clock::now();
-        ModelPlan plan = plan_model(config, model, threads);
-        report.boxes_seconds += seconds_since(start);
+        ModelPlan plan;
+        {
+            const ScopedTimer timer(report.boxes_seconds);
+            plan = plan_model(config, model, threads);
+        }
         ModelRun run{config, config.models[m], model, model_framing(model)};
         run.index = m;
         run.rows = plan.groups * rows_per_group(config);

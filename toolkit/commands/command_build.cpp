@@ -57,9 +57,9 @@ struct ChainCost {
 // (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
 KeyValues level_report(const std::string& name, const Lod& lod, const LodSession& session, const Bounds& bounds,
                        bool switches) {
-    KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.parameters.distance)};
+    KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.input.parameters.distance)};
     if (switches && lod.current_level >= 1) {
-        const LodSwitch s = lod_switch(session.parameters.distance, bounds, session.sizing);
+        const LodSwitch s = lod_switch(session.input.parameters.distance, bounds, session.derived.sizing);
         report.insert(report.end(), {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
                                      number_entry("unity_relative_height", s.unity_relative_height),
                                      number_entry("unreal_screen_size", s.unreal_screen_size)});
@@ -83,19 +83,21 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
         chain.add(lod);
         const std::string name = stem + "_L" + std::to_string(level);
         name_pages(lod, name);
-        if (level >= 1) switches.push_back(lod_switch(session.parameters.distance, bounds, session.sizing));
+        if (level >= 1) switches.push_back(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
         std::fprintf(stderr, "boxlod build: level %d of %d\n", level, sessions.obtained_levels());
         std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
         models.push_back(a.has("keep-hierarchy") ? std::move(lod.model) : merge_draw_calls(std::move(lod.model), name));
     }
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
-    auto start = Clock::now();
-    OutputGroup files;  // the chain and its viewer pages, or nothing
-    export_gltf_lods(pointers, switches, output, sessions.threads);
-    const std::vector<std::string> pages = a.has("viewer") ? write_viewer_pages(output) : std::vector<std::string>{};
-    files.commit();
-    sessions.first->times.write += seconds_since(start);
+    std::vector<std::string> pages;
+    {
+        const ScopedTimer timer(sessions.first->times.write);
+        OutputGroup files;  // the chain and its viewer pages, or nothing
+        export_gltf_lods(pointers, switches, output, sessions.threads);
+        if (a.has("viewer")) pages = write_viewer_pages(output);
+        files.commit();
+    }
     std::printf("chain = %s\n", output.c_str());
     for (const std::string& page : pages) std::printf("viewer = %s\n", page.c_str());
 }
@@ -115,11 +117,13 @@ void write_levels(const Arguments& a, LevelSessions& sessions, const std::string
         if (writing.valid()) writing.get();
         writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
             std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
-            auto start = Clock::now();
-            Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, sessions.threads);
-            KeyValues report = level_report(level_name, lod, *session, bounds, !sessions.distances.empty());
-            export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads, a.has("glb"));
-            session->times.write += seconds_since(start);  // build_lod touches the other times only
+            KeyValues report;
+            {
+                const ScopedTimer timer(session->times.write);  // build_lod touches the other times only
+                Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, sessions.threads);
+                report = level_report(level_name, lod, *session, bounds, !sessions.distances.empty());
+                export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads, a.has("glb"));
+            }
             std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.obtained_levels(), level_name.c_str());
             std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
         });
@@ -166,7 +170,7 @@ int run_build(const Arguments& a) {
     else
         levels.push_back(parameters.current_level);
     if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
-        sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->parameters.distance, obtained);
+        sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->input.parameters.distance, obtained);
     for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
     ChainCost chain;
     if (chain_file)

@@ -41,7 +41,7 @@ static int run_levels(const Arguments& arguments) {
     // hybrid's levels are prefixes of a plan that measures its proxies by rendering them (hybrid.h); budgets
     // are fractions of the original's bytes and price boxes at the sizing distance: both need a session.
     LevelValues values = mode == LevelMode::hybrid || !parameters.budgets.empty()
-                             ? start_lod(model, parameters, threads, &boxes)->levels
+                             ? start_lod(model, parameters, threads, &boxes)->derived.levels
                              : compute_level_values(model, mode, wanted_levels, interpolation, boxes);
 
     KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};

@@ -32,7 +32,7 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
     LevelSessions sessions(model, parameters, 1);
     // Level c is drawn from d_c on, as a chain switches (auto distances), also
     // where --manual sizes every level at one distance.
-    const std::vector<float> switches = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    const std::vector<float> switches = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
     if (per_level) sessions.distances = switches;
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
@@ -45,7 +45,7 @@ TileObject build_object(const Model& city, int node, int index, const LodParamet
         TileLevel level{name + ".glb", 0, 0};
         if (c > 0) {
             level.surface_deviation = surface_deviation(original, surface_views(lod.model, object.box));
-            level.geometric_error = level_geometric_error(switches[std::size_t(c - 1)], session.sizing, level.surface_deviation);
+            level.geometric_error = level_geometric_error(switches[std::size_t(c - 1)], session.derived.sizing, level.surface_deviation);
         }
         export_gltf(keep_hierarchy ? lod.model : merge_draw_calls(std::move(lod.model), name),
                     (std::filesystem::path(folder) / level.content).string(), 1);

@@ -228,7 +228,7 @@ Frame render_view(ViewerState& s, int threads) {
         s.lod_drawable.reset();
         if (s.parameters.current_level > 0) {
             if (!s.session) s.session = start_lod(*s.model, s.parameters, threads);
-            s.parameters.current_level = std::min(s.parameters.current_level, s.session->levels.obtained_levels);
+            s.parameters.current_level = std::min(s.parameters.current_level, s.session->derived.levels.obtained_levels);
             s.lod = std::make_unique<Lod>(build_lod(*s.session, s.parameters.current_level, threads));
             s.lod_drawable = make_drawable_model(s.lod->model);
         }
@@ -257,7 +257,7 @@ std::vector<std::string> overlay_lines(const ViewerState& s) {
     lines.push_back(view.str());
     std::ostringstream lod;
     lod << "level " << s.parameters.current_level;
-    if (s.session) lod << " of " << s.session->levels.obtained_levels;
+    if (s.session) lod << " of " << s.session->derived.levels.obtained_levels;
     lod << "  " << level_mode_name(s.parameters.level_mode) << "  box " << box_kind_name(s.parameters.box_kind)
         << (s.auto_update ? "  auto-update" : "  (U: update)") << (s.needs_update ? "  *changed*" : "");
     lines.push_back(s.model->is_lod ? "an exported LoD (view only)" : lod.str());

@@ -14,14 +14,15 @@ std::vector<const Drawable*> ResidentDrawables::acquire(const std::vector<const 
         entry->second.last_used = ++clock_;
         if (added) missing.push_back(packed);
     }
-    auto start = Clock::now();
-    std::vector<std::unique_ptr<DrawableModel>> unpacked(missing.size());
-    parallel_for(missing.size(), threads, [&](std::size_t i) { unpacked[i] = unpack_drawable(*missing[i]); });
-    for (std::size_t i = 0; i < missing.size(); ++i) {
-        entries_[missing[i]].model = std::move(unpacked[i]);
-        counts_.resident_bytes += missing[i]->unpacked_size;
+    {
+        const ScopedTimer timer(counts_.unpack_seconds);
+        std::vector<std::unique_ptr<DrawableModel>> unpacked(missing.size());
+        parallel_for(missing.size(), threads, [&](std::size_t i) { unpacked[i] = unpack_drawable(*missing[i]); });
+        for (std::size_t i = 0; i < missing.size(); ++i) {
+            entries_[missing[i]].model = std::move(unpacked[i]);
+            counts_.resident_bytes += missing[i]->unpacked_size;
+        }
     }
-    counts_.unpack_seconds += seconds_since(start);
     counts_.unpacked += missing.size();
     counts_.peak_bytes = std::max(counts_.peak_bytes, counts_.resident_bytes);
 

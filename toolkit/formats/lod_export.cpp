@@ -13,10 +13,10 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
     auto drawable = make_drawable_model(lod.model, nullptr, threads);
     RenderSettings settings;
     settings.camera = preview_camera(session);
-    settings.mode = session.parameters.render_mode;
-    settings.light = session.parameters.light ? *session.parameters.light : light_for_camera(settings.camera);
-    settings.parallax_scale = session.parameters.parallax_scale;
-    settings.parallax_bias = session.parameters.parallax_bias;
+    settings.mode = session.input.parameters.render_mode;
+    settings.light = session.input.parameters.light ? *session.input.parameters.light : light_for_camera(settings.camera);
+    settings.parallax_scale = session.input.parameters.parallax_scale;
+    settings.parallax_bias = session.input.parameters.parallax_bias;
     settings.threads = threads;
     Frame frame = make_frame(width, height, {1, 1, 1});
     render(drawable->drawable.batches, settings, frame);
@@ -40,7 +40,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     name_pages(lod, name);
-    LodParameters parameters = session.parameters;
+    LodParameters parameters = session.input.parameters;
     parameters.current_level = lod.current_level;
     // The parameter file names its model relative to itself, so the folder can move.
     fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);

@@ -37,12 +37,12 @@ LevelSessions::LevelSessions(const Model& model, const LodParameters& parameters
 
 LodSession& LevelSessions::for_level(int level) {
     // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan made once.
-    if (distances.empty() || level == 0 || distances[std::size_t(level - 1)] == first->parameters.distance) return *first;
+    if (distances.empty() || level == 0 || distances[std::size_t(level - 1)] == first->input.parameters.distance) return *first;
     std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
     if (!session) {
-        LodParameters p = first->parameters;
+        LodParameters p = first->input.parameters;
         p.distance = distances[std::size_t(level - 1)];
-        session = start_lod(model, p, threads, &first->boxes, measurements.get());
+        session = start_lod(model, p, threads, &first->derived.boxes, measurements.get());
     }
     return *session;
 }

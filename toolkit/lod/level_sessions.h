@@ -27,7 +27,7 @@ struct LevelSessions {
     std::map<float, std::unique_ptr<LodSession>> sized;
 
     LevelSessions(const Model& model, const LodParameters& parameters, int threads);
-    int obtained_levels() const { return first->levels.obtained_levels; }
+    int obtained_levels() const { return first->derived.levels.obtained_levels; }
     LodSession& for_level(int level);
     LodTimes times() const;  // summed over every session
 };

@@ -22,7 +22,8 @@ namespace {
 
 // Level c's budget in bytes (level_budgets.h), c >= 1 when the parameters give budgets.
 double level_budget(const LodSession& session, int level) {
-    return budget_bytes(session.parameters.budgets[std::size_t(level - 1)], double(session.original_cost.bytes()));
+    const double original_bytes = double(session.derived.original_cost.bytes());
+    return budget_bytes(session.input.parameters.budgets[std::size_t(level - 1)], original_bytes);
 }
 
 // Copies the `region` of a baked face into a page with its gutter: the face's
@@ -75,6 +76,30 @@ Eigen::Vector2i texels_of(const OrientedBoxFace& face, const TextureSizing& sizi
     return face_texels(2 * face.half_width, 2 * face.half_height, sizing);
 }
 
+// The level values of the session's level mode; hybrid and error-greedy with
+// budgets also make the plan whose prefixes the levels are, and each level's prefix.
+void derive_levels(LodSession& session, int threads, HybridMeasurements* measurements) {
+    const Model& model = *session.input.model;
+    const LodParameters& p = session.input.parameters;
+    LodDerived& d = session.derived;
+    const int levels = asked_levels(p);
+    std::vector<double> budgets;  // levels 1..N, bytes
+    for (std::size_t c = 1; c <= p.budgets.size(); ++c) budgets.push_back(level_budget(session, int(c)));
+    const bool textured = p.render_mode != RenderMode::untextured;
+    if (p.level_mode == LevelMode::hybrid) {
+        d.hybrid = std::make_shared<const HybridPlan>(plan_hybrid(
+            model, d.textures, d.boxes, {.sizing = d.sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements}));
+        if (budgets.empty()) budgets = geometric_budgets(d.hybrid->bytes.front(), d.hybrid->bytes.back(), levels);
+        d.levels = hybrid_levels(model, *d.hybrid, budgets, session.cache.hybrid_levels);
+    } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
+        d.opening = std::make_shared<const GreedyOpening>(greedy_opening(model, d.boxes, d.sizing, textured));
+        session.cache.opening_steps = greedy_prefixes(*d.opening, budgets);
+        d.levels = {opened_levels(model, *d.opening, session.cache.opening_steps), levels};
+    } else {
+        d.levels = compute_level_values(model, p.level_mode, levels, p.interpolation, d.boxes, d.sizing, textured);
+    }
+}
+
 }  // namespace
 
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
@@ -86,57 +111,43 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
         throw_input_error(model.source, "", std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +
                                                 " does not order its cuts by bytes; budgets are for error-greedy and hybrid");
     auto session = std::make_unique<LodSession>();
-    session->model = &model;
-    session->parameters = parameters;
-    LodParameters& p = session->parameters;
+    session->input.model = &model;
+    session->input.parameters = parameters;
+    LodParameters& p = session->input.parameters;
     if (p.model.empty()) p.model = model.source;
     if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
-    session->sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
+    session->derived.sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
 
-    auto start = Clock::now();
-    session->boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
-    session->depth_errors = box_depth_errors(model, session->boxes);
-    session->times.boxes = seconds_since(start);
-    // hybrid measures its proxies against the textured original, whatever the levels' render mode.
-    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid) session->textures = decode_textures(model);
-    start = Clock::now();
-    session->original_cost = model_cost(model);
-    const int levels = asked_levels(p);
-    std::vector<double> budgets;  // levels 1..N, bytes
-    for (std::size_t c = 1; c <= p.budgets.size(); ++c) budgets.push_back(level_budget(*session, int(c)));
-    const bool textured = p.render_mode != RenderMode::untextured;
-    if (p.level_mode == LevelMode::hybrid) {
-        session->hybrid = std::make_shared<const HybridPlan>(
-            plan_hybrid(model, session->textures, session->boxes,
-                        {.sizing = session->sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements}));
-        const HybridPlan& plan = *session->hybrid;
-        if (budgets.empty()) budgets = geometric_budgets(plan.bytes.front(), plan.bytes.back(), levels);
-        session->levels = hybrid_levels(model, plan, budgets, session->hybrid_levels);
-    } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
-        session->opening = std::make_shared<const GreedyOpening>(greedy_opening(model, session->boxes, session->sizing, textured));
-        session->opening_steps = greedy_prefixes(*session->opening, budgets);
-        session->levels = {opened_levels(model, *session->opening, session->opening_steps), levels};
-    } else {
-        session->levels = compute_level_values(model, p.level_mode, levels, p.interpolation, session->boxes, session->sizing,
-                                               textured);
+    {
+        const ScopedTimer timer(session->times.boxes);
+        session->derived.boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
+        session->derived.depth_errors = box_depth_errors(model, session->derived.boxes);
     }
-    session->times.levels = seconds_since(start);
+    // hybrid measures its proxies against the textured original, whatever the levels' render mode.
+    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid)
+        session->derived.textures = decode_textures(model);
+    {
+        const ScopedTimer timer(session->times.levels);
+        session->derived.original_cost = model_cost(model);
+        derive_levels(*session, threads, measurements);
+    }
     // hybrid's plan keeps what pays (hybrid.h); with budgets the budget decides (level_budgets.h).
-    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !session->hybrid && p.budgets.empty())
-        session->kept = kept_subtrees(model, session->boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, session->sizing,
-                                      textured);
+    LodDerived& d = session->derived;
+    if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !d.hybrid && p.budgets.empty())
+        d.kept = kept_subtrees(model, d.boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, d.sizing,
+                               p.render_mode != RenderMode::untextured);
     return session;
 }
 
 Camera preview_camera(const LodSession& session) {
-    const LodParameters& p = session.parameters;
+    const LodParameters& p = session.input.parameters;
     if (p.camera) {
         Camera camera = *p.camera;
-        Framing framing = model_framing(*session.model);
+        Framing framing = model_framing(*session.input.model);
         fit_depth_range(camera, (camera.position - framing.center).norm(), framing.radius);
         return camera;
     }
-    return framed_camera(model_framing(*session.model), {1, 1, 1}, p.distance, p.fovy);
+    return framed_camera(model_framing(*session.input.model), {1, 1, 1}, p.distance, p.fovy);
 }
 
 namespace {
@@ -147,17 +158,18 @@ void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
     std::vector<FaceJob> jobs;
     std::vector<int> new_boxes;
     for (int node : cut.box_nodes)
-        if (!session.baked.count(node)) new_boxes.push_back(node);
+        if (!session.cache.baked.count(node)) new_boxes.push_back(node);
     for (int node : new_boxes) {
-        session.baked[node];  // create the slots before the parallel work
+        session.cache.baked[node];  // create the slots before the parallel work
         for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
     }
     std::map<int, Drawable> subtrees;
-    for (int node : new_boxes) subtrees.emplace(node, make_drawable(*session.model, session.textures, node));
+    const LodDerived& d = session.derived;
+    for (int node : new_boxes) subtrees.emplace(node, make_drawable(*session.input.model, d.textures, node));
     parallel_for(jobs.size(), threads, [&](std::size_t j) {
         const FaceJob& job = jobs[j];
-        OrientedBoxFace face = oriented_box_faces(*session.boxes[job.node])[job.face];
-        session.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, session.sizing), 1);
+        OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
+        session.cache.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, d.sizing), 1);
     });
 }
 
@@ -221,19 +233,19 @@ Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at,
 
 // Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as swatches.
 Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads) {
-    const LodParameters& p = session.parameters;
+    const LodParameters& p = session.input.parameters;
     Packing packing;
     std::vector<Eigen::Vector2i> sizes;
     const int most_columns = (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
     const std::size_t max_swatches = std::size_t(most_columns) * std::size_t(most_columns);
     for (int node : cut.box_nodes) {
-        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[node]);
+        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[node]);
         for (int f = 0; f < 6; ++f) {
             const OrientedBoxFace& face = faces[f];
             packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
             if (!textured) continue;
-            const Eigen::Vector2i texels = texels_of(face, session.sizing);
-            const BakedFace& baked = session.baked.at(node)[f];
+            const Eigen::Vector2i texels = texels_of(face, session.derived.sizing);
+            const BakedFace& baked = session.cache.baked.at(node)[f];
             const TexelRect region = p.crop_faces ? baked.covered : TexelRect{0, 0, texels.x(), texels.y()};
             if (region.empty()) continue;
             packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
@@ -262,8 +274,8 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
         packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
     }
     if (textured) {
-        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.sizing.gutter, threads);
-        packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.sizing.gutter);
+        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.derived.sizing.gutter, threads);
+        packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.derived.sizing.gutter);
         if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
     }
     return packing;
@@ -344,7 +356,7 @@ void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& wr
 std::map<int, Primitive> box_primitives(const LodSession& session, int n, const Packing& packing, const Atlas& atlas,
                                         bool textured, std::size_t& next_packed, Model& out) {
     std::map<int, Primitive> by_page;
-    std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.boxes[n]);
+    std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[n]);
     for (int f = 0; f < 6; ++f) {
         if (!textured) {
             Primitive& primitive = by_page[0];
@@ -360,7 +372,7 @@ std::map<int, Primitive> box_primitives(const LodSession& session, int n, const 
         const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
         Primitive& primitive = by_page[at.page];
         primitive.material = at.page;
-        append_face_quad(primitive, faces[f], texels_of(faces[f], session.sizing), face.region, &at, page_size);
+        append_face_quad(primitive, faces[f], texels_of(faces[f], session.derived.sizing), face.region, &at, page_size);
         if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
             const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
             const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
@@ -369,7 +381,7 @@ std::map<int, Primitive> box_primitives(const LodSession& session, int n, const 
             continue;
         }
         const LodPage page = lod_page(at.page);
-        place_face(session.baked.at(n)[f], face.region, at, session.sizing.gutter,
+        place_face(session.cache.baked.at(n)[f], face.region, at, session.derived.sizing.gutter,
                    2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
                    out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
     }
@@ -381,12 +393,12 @@ std::map<int, Primitive> box_primitives(const LodSession& session, int n, const 
 // node becomes a leaf with one quad per packed face.
 void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
                    bool textured) {
-    const Model& model = *session.model;
+    const Model& model = *session.input.model;
     MaterialCopier writer{model, out};
     std::vector<bool> is_box(model.nodes.size(), false);
     for (int n : cut.box_nodes) is_box[n] = true;
     std::map<int, const Proxy*> simplified;
-    for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
+    for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.derived.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
     std::map<int, int> new_index;
     std::size_t next_packed = 0;
     for (int n : cut.used_nodes) {
@@ -404,12 +416,12 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             for (auto& [page, primitive] : box_primitives(session, n, packing, atlas, textured, next_packed, out))
                 out.nodes[index].primitives.push_back(std::move(primitive));
     }
-    if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.sizing.gutter, out);
+    if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.derived.sizing.gutter, out);
 }
 
 // Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
 KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packing& packing) {
-    const Model& model = *session.model;
+    const Model& model = *session.input.model;
     int largest_page_side = 0;
     std::string page_list;
     for (const Eigen::Vector2i& page : lod.atlas.pages) {
@@ -434,7 +446,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("faces_original", double(original.faces)),
         number_entry("triangles_original", double(original.triangles)),
         number_entry("vertices_original", double(original.vertices)),
-        float_entry("min_distance", packing.longest_face > 0 ? min_distance(packing.longest_face, session.sizing) : 0),
+        float_entry("min_distance", packing.longest_face > 0 ? min_distance(packing.longest_face, session.derived.sizing) : 0),
         float_entry("mesh_width", size.x()),
         float_entry("mesh_height", size.y()),
         float_entry("mesh_depth", size.z()),
@@ -450,11 +462,11 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("depth_error", lod.depth_error),
         number_entry("measured_error", lod.measured_error),
     };
-    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.original_cost, "_original")})
+    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.derived.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
-    if (!session.parameters.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
+    if (!session.input.parameters.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
         statistics.push_back(number_entry("budget_bytes", std::floor(level_budget(session, lod.current_level))));
-    statistics.push_back(number_entry("obtained_levels", session.levels.obtained_levels));
+    statistics.push_back(number_entry("obtained_levels", session.derived.levels.obtained_levels));
     statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
     return statistics;
 }
@@ -467,43 +479,46 @@ namespace {
 
 // The build as named steps from the cut: bake, pack, page, mesh, statistics.
 Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
-    const Model& model = *session.model;
-    const LodParameters& p = session.parameters;
+    const Model& model = *session.input.model;
+    const LodParameters& p = session.input.parameters;
     const bool textured = p.render_mode != RenderMode::untextured;
     Lod lod;
     lod.current_level = current_level;
     lod.cut = std::move(cut);
-    for (int node : lod.cut.box_nodes) lod.depth_error += session.depth_errors[std::size_t(node)];
-    if (session.hybrid) lod.measured_error = hybrid_cut_error(*session.hybrid, lod.cut);
-    auto start = Clock::now();
-    if (textured) bake_new_boxes(session, lod.cut, threads);
-    session.times.bake += seconds_since(start);
-
-    start = Clock::now();
-    Packing packing = pack_faces(session, lod.cut, textured, 0, threads);
-    if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
-        Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces, threads);
-        if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
+    for (int node : lod.cut.box_nodes) lod.depth_error += session.derived.depth_errors[std::size_t(node)];
+    if (session.derived.hybrid) lod.measured_error = hybrid_cut_error(*session.derived.hybrid, lod.cut);
+    if (textured) {
+        const ScopedTimer timer(session.times.bake);
+        bake_new_boxes(session, lod.cut, threads);
+    }
+    Packing packing;
+    {
+        const ScopedTimer timer(session.times.pack);
+        packing = pack_faces(session, lod.cut, textured, 0, threads);
+        if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
+            Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces, threads);
+            if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
+        }
     }
     lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
     lod.face_texels = packing.face_texels;
-    session.times.pack += seconds_since(start);
 
-    start = Clock::now();
-    Model& out = lod.model;
-    out.source = model.source;
-    out.is_lod = true;
-    LodParameters saved = p;
-    saved.current_level = current_level;
-    // A shipped asset names its model by file name: no builder's folder leaks
-    // into it, and a build in any folder gives the same bytes.
-    saved.model = std::filesystem::path(p.model).filename().string();
-    for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
-    add_pages(out, lod.atlas, packing.height_depth, textured);
-    add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
-    session.times.mesh += seconds_since(start);
+    {
+        const ScopedTimer timer(session.times.mesh);
+        Model& out = lod.model;
+        out.source = model.source;
+        out.is_lod = true;
+        LodParameters saved = p;
+        saved.current_level = current_level;
+        // A shipped asset names its model by file name: no builder's folder leaks
+        // into it, and a build in any folder gives the same bytes.
+        saved.model = std::filesystem::path(p.model).filename().string();
+        for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
+        add_pages(out, lod.atlas, packing.height_depth, textured);
+        add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
+    }
 
-    lod.cost = cost_parts(out);
+    lod.cost = cost_parts(lod.model);
     lod.statistics = lod_statistics(session, lod, packing);
     return lod;
 }
@@ -511,13 +526,14 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
 // The cut of level c as the session holds it: a hybrid state, error-greedy's
 // openings within a budget, or the level values.
 Cut level_cut(const LodSession& session, int c) {
-    const Model& model = *session.model;
-    if (session.hybrid) return hybrid_cut(model, *session.hybrid, session.hybrid_levels[std::size_t(c)].state);
-    if (session.opening && c >= 1) {
-        const std::size_t steps = session.opening_steps[std::size_t(c)];
-        return take_cut(model, opened_levels(model, *session.opening, {steps, steps}), 1, session.boxes, session.kept);
+    const Model& model = *session.input.model;
+    const LodDerived& d = session.derived;
+    if (d.hybrid) return hybrid_cut(model, *d.hybrid, session.cache.hybrid_levels[std::size_t(c)].state);
+    if (d.opening && c >= 1) {
+        const std::size_t steps = session.cache.opening_steps[std::size_t(c)];
+        return take_cut(model, opened_levels(model, *d.opening, {steps, steps}), 1, d.boxes, d.kept);
     }
-    return take_cut(model, session.levels.level, c, session.boxes, session.kept);
+    return take_cut(model, d.levels.level, c, d.boxes, d.kept);
 }
 
 double spent_bytes(const Lod& lod) { return double(combined_cost({&lod.cost}).bytes()); }
@@ -529,10 +545,11 @@ std::string budget_problem(int level, double budget, double coarsest) {
 
 // Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its box).
 void set_level_within(LodSession& session, int c, double estimate) {
-    if (session.hybrid)
-        session.hybrid_levels[std::size_t(c)] = hybrid_level_within(*session.model, *session.hybrid, estimate);
+    const LodDerived& d = session.derived;
+    if (d.hybrid)
+        session.cache.hybrid_levels[std::size_t(c)] = hybrid_level_within(*session.input.model, *d.hybrid, estimate);
     else
-        session.opening_steps[std::size_t(c)] = estimate < 0 ? 0 : longest_prefix_within(session.opening->bytes, estimate);
+        session.cache.opening_steps[std::size_t(c)] = estimate < 0 ? 0 : longest_prefix_within(d.opening->bytes, estimate);
 }
 
 // The estimates miss a level's real bytes (pages round up to powers of two,
@@ -547,17 +564,18 @@ Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
     const double budget = level_budget(session, c);
     const std::size_t level = std::size_t(c);
     auto estimated = [&] {
-        return session.hybrid ? session.hybrid_levels[level].bytes : session.opening->bytes[session.opening_steps[level]];
+        const LodCache& cache = session.cache;
+        return session.derived.hybrid ? cache.hybrid_levels[level].bytes : session.derived.opening->bytes[cache.opening_steps[level]];
     };
     double ceiling = estimated(), spent = spent_bytes(lod);
     std::optional<Lod> cheapest;  // kept only where nothing fitting is no error
-    if (!session.budgets_strict) cheapest = lod;
+    if (!session.input.budgets_strict) cheapest = lod;
     bool coarsest = false;
     while (spent > budget) {
         set_level_within(session, c, std::min(ceiling * budget / spent, std::nextafter(ceiling, 0.0)));
         if (estimated() >= ceiling) {  // no cheaper estimate
             if (coarsest) {
-                if (!cheapest) throw_input_error(session.model->source, "", budget_problem(c, budget, spent));
+                if (!cheapest) throw_input_error(session.input.model->source, "", budget_problem(c, budget, spent));
                 return std::move(*cheapest);  // over its budget, as its statistics say
             }
             set_level_within(session, c, -1), coarsest = true;
@@ -573,25 +591,26 @@ Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
 }  // namespace
 
 Lod build_lod(LodSession& session, int current_level, int threads) {
-    const int obtained = session.levels.obtained_levels;
+    const int obtained = session.derived.levels.obtained_levels;
     if (current_level < 0 || current_level > obtained)
         throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
                          " (the obtained number of levels)");
     Lod lod = build_cut(session, current_level, level_cut(session, current_level), threads);
-    return session.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
+    return session.input.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
 }
 
 void check_budget_reachable(LodSession& session, int level, int threads) {
-    if (session.parameters.budgets.empty() || level < 1 || level > int(session.parameters.budgets.size())) return;
+    const std::vector<ByteBudget>& budgets = session.input.parameters.budgets;
+    if (budgets.empty() || level < 1 || level > int(budgets.size())) return;
     // The coarsest cut built for real, its level then set back as it was.
-    const HybridLevel hybrid_level = session.hybrid ? session.hybrid_levels[std::size_t(level)] : HybridLevel{};
-    const std::size_t opening_steps = session.opening ? session.opening_steps[std::size_t(level)] : 0;
+    const HybridLevel hybrid_level = session.derived.hybrid ? session.cache.hybrid_levels[std::size_t(level)] : HybridLevel{};
+    const std::size_t opening_steps = session.derived.opening ? session.cache.opening_steps[std::size_t(level)] : 0;
     set_level_within(session, level, -1);
     const double coarsest = spent_bytes(build_cut(session, level, level_cut(session, level), threads));
-    if (session.hybrid) session.hybrid_levels[std::size_t(level)] = hybrid_level;
-    else session.opening_steps[std::size_t(level)] = opening_steps;
+    if (session.derived.hybrid) session.cache.hybrid_levels[std::size_t(level)] = hybrid_level;
+    else session.cache.opening_steps[std::size_t(level)] = opening_steps;
     if (coarsest > level_budget(session, level))
-        throw_input_error(session.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
+        throw_input_error(session.input.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
 }
 
 }  // namespace boxlod

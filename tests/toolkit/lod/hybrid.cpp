@@ -344,8 +344,8 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
         parameters.distance = settings_for(0.16f, 1).sizing.distance;
         parameters.min_texture_size = 16;
         auto session = start_lod(s.model, parameters, 2);
-        ASSERT_EQ(session->levels.obtained_levels, 4);
-        const double original = double(session->original_cost.bytes());
+        ASSERT_EQ(session->derived.levels.obtained_levels, 4);
+        const double original = double(session->derived.original_cost.bytes());
         for (int c = 1; c <= 4; ++c) {
             Lod lod = build_lod(*session, c, 2);
             const double spent = double(combined_cost({&lod.cost}).bytes());
@@ -354,7 +354,7 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
             EXPECT_EQ(value_of(lod.statistics, "budget_bytes"), format_number(std::floor(budget)));
             EXPECT_EQ(value_of(lod.statistics, "bytes_lod"), format_number(spent));
             if (mode == LevelMode::hybrid) {  // its proxies' measured errors, stated
-                EXPECT_EQ(value_of(lod.statistics, "measured_error"), format_number(hybrid_cut_error(*session->hybrid, lod.cut)));
+                EXPECT_EQ(value_of(lod.statistics, "measured_error"), format_number(hybrid_cut_error(*session->derived.hybrid, lod.cut)));
             }
         }
     }
@@ -375,8 +375,8 @@ TEST(Hybrid, PlansTexturedPartsForUntexturedLevels) {
     parameters.box_kind = BoxKind::minimal;
     parameters.distance = settings_for(0.04f, 1).sizing.distance;
     auto session = start_lod(s.model, parameters, 2);
-    ASSERT_TRUE(session->hybrid);
-    EXPECT_GT(build_lod(*session, session->levels.obtained_levels, 2).measured_error, 0);
+    ASSERT_TRUE(session->derived.hybrid);
+    EXPECT_GT(build_lod(*session, session->derived.levels.obtained_levels, 2).measured_error, 0);
 }
 
 TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
@@ -388,7 +388,7 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
     parameters.min_texture_size = 16;
     parameters.distance = settings_for(0.04f, 1).sizing.distance;
     auto session = start_lod(s.model, parameters, 2);
-    ASSERT_TRUE(session->hybrid);
+    ASSERT_TRUE(session->derived.hybrid);
     bool some_box = false, some_simplified = false;
     for (int c = 1; c <= 6; ++c) {
         Lod lod = build_lod(*session, c, 2);
@@ -396,7 +396,7 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
         some_simplified |= !lod.cut.simplified_nodes.empty();
         // A simplified node draws no more triangles than its sub-tree, in fewer bytes (at share 1 only welded).
         for (auto [node, proxy] : lod.cut.simplified_nodes) {
-            const Proxy& drawn = session->hybrid->proxies[std::size_t(node)][std::size_t(proxy)];
+            const Proxy& drawn = session->derived.hybrid->proxies[std::size_t(node)][std::size_t(proxy)];
             std::size_t triangles = 0;
             for (const Primitive& p : drawn.primitives) triangles += p.triangle_count();
             EXPECT_LE(triangles, subtree_faces(s.model)[std::size_t(node)]);

@@ -40,7 +40,7 @@ LodParameters small_parameters() {
 TEST(LodBuilder, LevelZeroIsTheOriginalAndTheTopLevelOneBox) {
     Model model = test::lod_test_building();
     auto session = start_lod(model, small_parameters(), 2);
-    int n = session->levels.obtained_levels;
+    int n = session->derived.levels.obtained_levels;
     EXPECT_EQ(n, 4);  // top-down: depth 3 + 1
     Lod original = build_lod(*session, 0, 2);
     EXPECT_EQ(statistic(original, "faces_lod"), statistic(original, "faces_original"));
@@ -59,9 +59,9 @@ TEST(LodBuilder, LevelZeroIsTheOriginalAndTheTopLevelOneBox) {
 TEST(LodBuilder, EveryLevelStatesTheProxyErrorOfItsBoxes) {
     Model model = test::lod_test_building();
     auto session = start_lod(model, small_parameters(), 2);
-    const std::vector<double> errors = box_depth_errors(model, session->boxes);
+    const std::vector<double> errors = box_depth_errors(model, session->derived.boxes);
     double coarsest = -1;
-    for (int c = 0; c <= session->levels.obtained_levels; ++c) {
+    for (int c = 0; c <= session->derived.levels.obtained_levels; ++c) {
         Lod lod = build_lod(*session, c, 2);
         double sum = 0;
         for (int node : lod.cut.box_nodes) sum += errors[std::size_t(node)];
@@ -78,7 +78,7 @@ TEST(LodBuilder, IntermediateLevelKeepsUpperGeometryAndBoxesTheRest) {
     Model model = test::lod_test_building();
     auto session = start_lod(model, small_parameters(), 2);
     // Level values top-down: Lot 3; Ground, House 2; Walls, Roof, Windows 1; each Window 0.
-    session->parameters.crop_faces = false;  // the manual's six quads per box
+    session->input.parameters.crop_faces = false;  // the manual's six quads per box
     Lod lod = build_lod(*session, 2, 2);
     EXPECT_EQ(statistic(lod, "nodes_with_box"), "3");       // Walls, Roof, Windows
     EXPECT_EQ(statistic(lod, "nodes_with_geometry"), "1");  // Ground keeps its quad
@@ -105,7 +105,7 @@ TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
     EXPECT_LT(cropped.face_texels, uncropped.face_texels);
     EXPECT_LT(page_texels(cropped.atlas), page_texels(uncropped.atlas));
     for (RenderMode mode : {RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
-        cropped_session->parameters.render_mode = whole_session->parameters.render_mode = mode;
+        cropped_session->input.parameters.render_mode = whole_session->input.parameters.render_mode = mode;
         Image8 a = render_lod_preview(cropped, *cropped_session, 240, 180, 2), b = render_lod_preview(uncropped, *whole_session, 240, 180, 2);
         std::size_t same = 0, pixels = a.pixels.size() / 3;
         double error = 0;
@@ -179,7 +179,7 @@ TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
     EXPECT_EQ(flat_quads, flat_faces);
 
     // The picture keeps each face's colour on average; misplaced uvs would draw other texels.
-    plain_session->parameters.render_mode = flat_session->parameters.render_mode = RenderMode::albedo;
+    plain_session->input.parameters.render_mode = flat_session->input.parameters.render_mode = RenderMode::albedo;
     Image8 a = render_lod_preview(with_texels, *plain_session, 240, 180, 2), b = render_lod_preview(with_swatches, *flat_session, 240, 180, 2);
     double error = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) error += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
@@ -327,7 +327,7 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     EXPECT_THROW(start_lod(back, small_parameters(), 1), InputError);
     LodParameters saved = load_parameters((folder / "house.params.txt").string());
     EXPECT_EQ(saved.current_level, 2);
-    EXPECT_EQ(saved.distance, session->parameters.distance);
+    EXPECT_EQ(saved.distance, session->input.parameters.distance);
     // As one .glb: the pages inside, the same LoD read back.
     export_lod(lod, *session, folder.string(), "packed", preview, 2, true);
     EXPECT_TRUE(std::filesystem::exists(folder / "packed.glb"));
@@ -378,10 +378,10 @@ TEST(LodGolden, FzkHausDefaultChain) {
     LodParameters p;
     p.resolution = 128;
     LevelSessions sessions(model, p, 2);
-    sessions.distances = level_distances("auto", sessions.first->parameters.distance, sessions.obtained_levels());
+    sessions.distances = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
     for (int c : {2, 4}) {
         Lod lod = build_lod(sessions.for_level(c), c, 2);
-        EXPECT_LT(combined_cost({&lod.cost}).bytes(), sessions.first->original_cost.bytes()) << "level " << c;
+        EXPECT_LT(combined_cost({&lod.cost}).bytes(), sessions.first->derived.original_cost.bytes()) << "level " << c;
         test::expect_golden(render_lod_preview(lod, *sessions.first, 200, 150, 2), "lod_fzk_default_chain_level" + std::to_string(c));
     }
 }
@@ -399,7 +399,7 @@ TEST(LodBuilder, FzkHausBuildsAtEveryLevelOfEveryModeAndBoxKind) {
             p.level_mode = mode;
             p.render_mode = RenderMode::untextured;
             auto session = start_lod(model, p, 2, &boxes);
-            int n = session->levels.obtained_levels;
+            int n = session->derived.levels.obtained_levels;
             for (int c = 0; c <= n; ++c) {
                 Lod lod = build_lod(*session, c, 2);
                 std::size_t faces = mesh_counts(lod.model).faces;
