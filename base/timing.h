@@ -23,4 +23,12 @@ private:
     const Clock::time_point start_ = Clock::now();
 };
 
+// Runs `work`, adding its seconds to `total`, and returns what it returns:
+//   Shot shot = timed(report.render_seconds, [&] { return render_shot(...); });
+template <typename Work>
+auto timed(double& total, Work&& work) {
+    const ScopedTimer timer(total);
+    return work();
+}
+
 }  // namespace boxlod

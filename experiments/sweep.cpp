@@ -227,16 +227,12 @@ const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report,
     auto found = run.references.find(key);
     if (found != run.references.end()) return found->second;
     if (!run.original) run.original = make_drawable_model(run.model);
-    Shot shot;
-    {
-        const ScopedTimer timer(report.render_seconds);
-        RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
-        shot = render_shot(run.original->drawable.batches, settings, config.width, config.height);
-    }
-    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end()) {
-        const ScopedTimer timer(report.metric_seconds);
-        shot.flip_reference = prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads);
-    }
+    const RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
+    Shot shot = timed(report.render_seconds,
+                      [&] { return render_shot(run.original->drawable.batches, settings, config.width, config.height); });
+    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end())
+        shot.flip_reference = timed(report.metric_seconds,
+                                    [&] { return prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads); });
     ++report.original_renders;
     if (out.keep_images)
         save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
@@ -292,18 +288,12 @@ DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Ca
     const SweepConfig& config = run.config;
     const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
     double render_seconds = 0, metric_seconds = 0;
-    Shot shot;
-    {
-        const ScopedTimer timer(render_seconds);
-        RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                                row.mode, config.lod, run.threads);
-        shot = render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
-    }
-    Metrics metrics;
-    {
-        const ScopedTimer timer(metric_seconds);
-        metrics = compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
-    }
+    const RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                                  row.mode, config.lod, run.threads);
+    Shot shot = timed(render_seconds, [&] { return render_shot(c.drawable->drawable.batches, settings, config.width, config.height); });
+    Metrics metrics = timed(metric_seconds, [&] {
+        return compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
+    });
     report.render_seconds += render_seconds;
     report.metric_seconds += metric_seconds;
     ++report.lod_renders;
@@ -344,12 +334,11 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
             auto found = candidates.find(s);
             if (found == candidates.end()) {
                 double seconds = 0;
-                Candidate made;
-                {
-                    const ScopedTimer timer(seconds);
-                    made = make(s, a);
-                    if (!made.drawable) made.drawable = make_drawable_model(made.model);
-                }
+                Candidate made = timed(seconds, [&] {
+                    Candidate built = make(s, a);
+                    if (!built.drawable) built.drawable = make_drawable_model(built.model);
+                    return built;
+                });
                 made.seconds = seconds;
                 report.build_seconds += seconds;
                 ++report.lods_built;
@@ -534,11 +523,7 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     merge_shards(out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
-        ModelPlan plan;
-        {
-            const ScopedTimer timer(report.boxes_seconds);
-            plan = plan_model(config, model, threads);
-        }
+        ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, threads); });
         ModelRun run{config, config.models[m], model, model_framing(model)};
         run.index = m;
         run.rows = plan.groups * rows_per_group(config);

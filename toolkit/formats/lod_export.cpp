@@ -4,19 +4,35 @@
 #include "base/input_error.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/gltf_io.h"
+#include "toolkit/model/framing.h"
 
 #include <filesystem>
 
 namespace boxlod {
 
+namespace {
+
+// The camera of the parameters, or the default view: +X+Y+Z at the sizing distance.
+Camera preview_camera(const LodSession& session) {
+    const LodParameters& p = session.input.parameters;
+    const Framing framing = model_framing(*session.input.model);
+    if (!p.camera) return framed_camera(framing, {1, 1, 1}, p.distance, p.fovy);
+    Camera camera = *p.camera;
+    fit_depth_range(camera, (camera.position - framing.center).norm(), framing.radius);
+    return camera;
+}
+
+}  // namespace
+
 Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads) {
+    const LodParameters& p = session.input.parameters;
     auto drawable = make_drawable_model(lod.model, nullptr, threads);
     RenderSettings settings;
     settings.camera = preview_camera(session);
-    settings.mode = session.input.parameters.render_mode;
-    settings.light = session.input.parameters.light ? *session.input.parameters.light : light_for_camera(settings.camera);
-    settings.parallax_scale = session.input.parameters.parallax_scale;
-    settings.parallax_bias = session.input.parameters.parallax_bias;
+    settings.mode = p.render_mode;
+    settings.light = p.light ? *p.light : light_for_camera(settings.camera);
+    settings.parallax_scale = p.parallax_scale;
+    settings.parallax_bias = p.parallax_bias;
     settings.threads = threads;
     Frame frame = make_frame(width, height, {1, 1, 1});
     render(drawable->drawable.batches, settings, frame);

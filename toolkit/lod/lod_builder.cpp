@@ -114,40 +114,24 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     session->input.model = &model;
     session->input.parameters = parameters;
     LodParameters& p = session->input.parameters;
+    LodDerived& d = session->derived;
     if (p.model.empty()) p.model = model.source;
     if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
-    session->derived.sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
-
-    {
-        const ScopedTimer timer(session->times.boxes);
-        session->derived.boxes = boxes ? *boxes : node_boxes(model, p.box_kind, threads);
-        session->derived.depth_errors = box_depth_errors(model, session->derived.boxes);
-    }
+    d.sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
+    d.boxes = timed(session->times.boxes, [&] { return boxes ? *boxes : node_boxes(model, p.box_kind, threads); });
     // hybrid measures its proxies against the textured original, whatever the levels' render mode.
-    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid)
-        session->derived.textures = decode_textures(model);
+    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid) d.textures = decode_textures(model);
     {
         const ScopedTimer timer(session->times.levels);
-        session->derived.original_cost = model_cost(model);
+        d.depth_errors = box_depth_errors(model, d.boxes);
+        d.original_cost = model_cost(model);
         derive_levels(*session, threads, measurements);
     }
     // hybrid's plan keeps what pays (hybrid.h); with budgets the budget decides (level_budgets.h).
-    LodDerived& d = session->derived;
     if ((p.keep_small_subtrees || p.keep_cheaper_subtrees) && !d.hybrid && p.budgets.empty())
         d.kept = kept_subtrees(model, d.boxes, {p.keep_small_subtrees, p.keep_cheaper_subtrees}, d.sizing,
                                p.render_mode != RenderMode::untextured);
     return session;
-}
-
-Camera preview_camera(const LodSession& session) {
-    const LodParameters& p = session.input.parameters;
-    if (p.camera) {
-        Camera camera = *p.camera;
-        Framing framing = model_framing(*session.input.model);
-        fit_depth_range(camera, (camera.position - framing.center).norm(), framing.radius);
-        return camera;
-    }
-    return framed_camera(model_framing(*session.input.model), {1, 1, 1}, p.distance, p.fovy);
 }
 
 namespace {
@@ -491,15 +475,14 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
         const ScopedTimer timer(session.times.bake);
         bake_new_boxes(session, lod.cut, threads);
     }
-    Packing packing;
-    {
-        const ScopedTimer timer(session.times.pack);
-        packing = pack_faces(session, lod.cut, textured, 0, threads);
+    Packing packing = timed(session.times.pack, [&] {
+        Packing plain = pack_faces(session, lod.cut, textured, 0, threads);
         if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
             Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces, threads);
-            if (page_texels(flat.atlas) < page_texels(packing.atlas)) packing = std::move(flat);
+            if (page_texels(flat.atlas) < page_texels(plain.atlas)) return flat;
         }
-    }
+        return plain;
+    });
     lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
     lod.face_texels = packing.face_texels;
 

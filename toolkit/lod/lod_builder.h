@@ -93,7 +93,4 @@ Lod build_lod(LodSession& session, int current_level, int threads);
 // before it writes any level, so a refused build leaves nothing behind.
 void check_budget_reachable(LodSession& session, int level, int threads);
 
-// The camera of the parameters, or the default view: +X+Y+Z at the sizing distance.
-Camera preview_camera(const LodSession& session);
-
 }  // namespace boxlod
