@@ -313,7 +313,7 @@ Image8 render_full_detail(const CityLevels& city, const Camera& camera, const Li
                 kept.push_back(std::move(level));
         first = end;
     }
-    render(blended, settings, frame);
+    if (!blended.empty()) render(blended, settings, frame);
     return frame_to_srgb8(frame);
 }
 
