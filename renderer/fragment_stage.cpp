@@ -177,8 +177,10 @@ template <bool reads_uv>
         const Mesh& mesh = *batch.mesh;
         const std::uint32_t* v = &mesh.indices[std::size_t(screen.triangle) * 3];
         t.has_normals[j] = mesh.normals.empty() ? 0 : -1;
-        from.translations[j] = &batch.translation;
-        t.translated = t.translated || !batch.translation.isZero(0);
+        if (c.translated) {
+            from.translations[j] = &batch.translation;
+            t.translated = t.translated || !batch.translation.isZero(0);
+        }
         for (int k = 0; k < 3; ++k) {
             from.positions[k][j] = &mesh.positions[v[k]];
             from.normals[k][j] = mesh.normals.empty() ? &no_normal : &mesh.normals[v[k]];

@@ -40,6 +40,7 @@ struct Context {
     const std::vector<Chunk>& chunks;
     std::size_t chunk_count;  // chunks in use this frame (the scratch may hold more)
     const Shader& shader;
+    bool translated = false;  // some batch has a translation: else fragments skip it
 };
 
 inline const ScreenTriangle& triangle_of(const Context& c, std::uint32_t id, const std::vector<ClippedWeights>*& weights) {

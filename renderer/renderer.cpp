@@ -364,7 +364,9 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
 
     // Tiles: each owned by one thread; triangles replayed in submission order.
     std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, shading_eye(settings.camera));
-    Context context{batches, settings, chunks, chunk_ranges.size(), settings.shader ? *settings.shader : *mode_shader};
+    const bool translated = std::any_of(batches.begin(), batches.end(), [](const Batch& b) { return !b.translation.isZero(0); });
+    Context context{batches, settings, chunks, chunk_ranges.size(), settings.shader ? *settings.shader : *mode_shader,
+                    translated};
     parallel_for(std::size_t(tiling.count()), threads,
                  [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
 }
