@@ -248,21 +248,21 @@ Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degree
 
 namespace {
 
+const PackedDrawable& level_drawn(const CityLevels& city, std::size_t building, int level) {
+    return city.designs[city.buildings[building].design].levels[std::size_t(level)];
+}
+
 // The buildings a camera sees at `levels` (a building outside the view would draw no pixel).
 std::vector<std::size_t> buildings_in_view(const CityLevels& city, const std::vector<int>& levels, const Camera& camera,
                                            float aspect) {
     std::vector<std::size_t> shown;
     for (std::size_t b = 0; b < city.buildings.size(); ++b) {
-        const PackedDrawable& level = city.designs[city.buildings[b].design].levels[std::size_t(levels[b])];
+        const PackedDrawable& level = level_drawn(city, b, levels[b]);
         const Eigen::Vector3f center = level.bounds.center() + city.buildings[b].translation;
         if (!level.bounds.empty() && sphere_in_view(camera, aspect, center, level.bounds.size().norm() / 2))
             shown.push_back(b);
     }
     return shown;
-}
-
-const PackedDrawable& level_drawn(const CityLevels& city, std::size_t building, int level) {
-    return city.designs[city.buildings[building].design].levels[std::size_t(level)];
 }
 
 void append_moved(const Drawable& drawable, const Eigen::Vector3f& translation, std::vector<Batch>& batches) {
