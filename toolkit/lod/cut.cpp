@@ -2,6 +2,11 @@
 
 namespace boxlod {
 
+int texel_scale(const Cut& cut, int n) {
+    const auto scale = cut.box_texel_scales.find(n);
+    return scale == cut.box_texel_scales.end() ? 1 : scale->second;
+}
+
 Cut take_cut(const Model& model, const std::vector<int>& level, int current_level,
              const std::vector<std::optional<OrientedBox>>& boxes, const std::vector<bool>& kept) {
     Cut cut;

@@ -7,6 +7,7 @@
 #pragma once
 #include "toolkit/model/model.h"
 
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -18,7 +19,13 @@ struct Cut {
     std::vector<int> geometry_nodes;  // used nodes that keep their own geometry
     std::vector<int> box_nodes;       // used nodes replaced by their box (sub-trees with geometry)
     std::vector<std::pair<int, int>> simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
+    // hybrid.h: box nodes whose texels are as at s > 1 times the sizing
+    // distance (texture_sizing.h), with s; every other box node's s is 1.
+    std::map<int, int> box_texel_scales;
 };
+
+// The texel scale of box node n in the cut (1 unless box_texel_scales says otherwise).
+int texel_scale(const Cut& cut, int n);
 
 Cut take_cut(const Model& model, const std::vector<int>& level, int current_level,
              const std::vector<std::optional<OrientedBox>>& boxes, const std::vector<bool>& kept = {});

@@ -2,6 +2,7 @@
 
 #include "base/parallel.h"
 #include "toolkit/lod/bake.h"
+#include "toolkit/lod/hybrid_order.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/lod/kept_subtrees.h"
 #include "toolkit/lod/level_budgets.h"
@@ -14,9 +15,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <set>
+#include <map>
 #include <span>
-#include <tuple>
 #include <utility>
 
 namespace boxlod {
@@ -43,6 +43,11 @@ constexpr std::size_t fewest_simplified_triangles = 4;
 // On every sub-tree, building every level of `manual` took 1.5x as long for
 // one more view won (docs/cost.md: The hybrid level mode).
 constexpr std::size_t fewest_clustered_triangles = 1000;
+// A box is also offered with texels 2 and 4 times as large as the sizing
+// distance gives them: a page is dear, and without them a level within 5 % of
+// `classical`'s bytes drew one sharp box where `top-down` drew four blurred
+// ones and won (docs/cost.md: The hybrid level mode).
+constexpr std::array<int, 3> box_texel_scales = {1, 2, 4};
 
 // Where a sub-tree is measured: its bounding sphere seen orthographically from
 // the 8 corner directions, `side` pixels of `pixel` metres a side.
@@ -76,7 +81,8 @@ struct NodeMeasurement {
     std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
     float pixel = 0;  // the measuring view the sums below are of (0: none yet)
     int side = 0;
-    double box_sum = 0;
+    std::map<float, double> box_sums;     // per texel size (m) of the baked box
+    bool simplified_measured = false;
     std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
 };
 
@@ -190,11 +196,10 @@ struct BoxProxyDrawable {
     Drawable drawable;
 };
 
-std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, const OrientedBox& box, const MeasuringView& view,
+// Its texels as `measuring` sizes them.
+std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, const OrientedBox& box, const TextureSizing& measuring,
                                                      const HybridSettings& settings) {
     auto proxy = std::make_unique<BoxProxyDrawable>();
-    TextureSizing measuring = settings.sizing;  // texels of the measuring pixel's size
-    measuring.distance *= float(double(view.pixel) / pixel_world_size(settings.sizing));
     const bool textured = settings.mode != RenderMode::untextured;
     for (const OrientedBoxFace& face : oriented_box_faces(box)) {
         Primitive quad;
@@ -231,12 +236,6 @@ std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, co
     return proxy;
 }
 
-double mesh_bytes(const std::vector<Primitive>& primitives, const Model& model) {
-    double bytes = 0;
-    for (const Primitive& p : primitives) bytes += double(primitive_mesh_bytes(p, model));
-    return bytes;
-}
-
 std::size_t triangle_count(const std::vector<Primitive>& primitives) {
     std::size_t triangles = 0;
     for (const Primitive& p : primitives) triangles += p.triangle_count();
@@ -270,12 +269,26 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
     return measurement.simplified;
 }
 
-// The error sums of node n's box and simplified sub-trees in `view`, rendered
-// among their siblings, unless `measurement` holds them for this view.
+// A box's texels: their size in metres (as measurements are kept) and the sizing that bakes them.
+struct BoxTexels {
+    float size = 0;
+    TextureSizing sizing;
+};
+
+// The error sums of node n's box at each of `box_texels` and of its
+// simplified sub-trees in `view`, rendered among their siblings, but those
+// `measurement` holds for this view.
 void measure_error_sums(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
-                        std::size_t subtree_triangles, const Drawable& subtree, const MeasuringView& view,
-                        const HybridSettings& settings, NodeMeasurement& measurement) {
-    if (measurement.pixel == view.pixel && measurement.side == view.side) return;
+                        const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles, const Drawable& subtree,
+                        const MeasuringView& view, const HybridSettings& settings, NodeMeasurement& measurement) {
+    if (measurement.pixel != view.pixel || measurement.side != view.side) {
+        measurement.box_sums.clear(), measurement.simplified_sums.clear(), measurement.simplified_measured = false;
+        measurement.pixel = view.pixel, measurement.side = view.side;
+    }
+    std::vector<BoxTexels> missing;
+    for (const BoxTexels& texels : box_texels)
+        if (!measurement.box_sums.count(texels.size)) missing.push_back(texels);
+    if (missing.empty() && measurement.simplified_measured) return;
     // Among its siblings: the parent's sub-tree but n's own, drawn in every measuring render.
     std::vector<const Primitive*> others;
     if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
@@ -310,8 +323,10 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         return compared_views(render_views(batches, view, settings.mode, &underlay));
     };
     const auto original = among_context(subtree);
-    measurement.box_sum = pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, view, settings)->drawable));
-    measurement.simplified_sums.clear();
+    for (const BoxTexels& texels : missing)
+        measurement.box_sums[texels.size] =
+            pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, texels.sizing, settings)->drawable));
+    if (measurement.simplified_measured) return;
     for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
         double sum = 0;
         if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
@@ -321,7 +336,7 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         }
         measurement.simplified_sums.push_back(sum);
     }
-    measurement.pixel = view.pixel, measurement.side = view.side;
+    measurement.simplified_measured = true;
 }
 
 // Every proxy of node n, measured (or its measurements reused); then sorted by
@@ -332,21 +347,34 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
                                    const HybridSettings& settings) {
     const Drawable subtree = make_drawable(model, textures, n);
     const MeasuringView view = measuring_view(subtree.bounds, settings);
+    // The box at each texel scale that saves bytes and whose texels the
+    // measuring view can tell from the finest's (coarser than its pixel).
+    // The finest is measured with texels of the measuring pixel's size.
+    std::vector<Proxy> proxies;
+    std::vector<BoxTexels> box_texels;
+    const double pixel = pixel_world_size(settings.sizing);
+    for (int scale : box_texel_scales) {
+        Proxy box_proxy;
+        box_proxy.texel_scale = scale;
+        const TextureSizing sizing = coarser_sizing(settings.sizing, scale);
+        box_proxy.bytes = double(box_bytes_estimate(box, sizing, settings.mode != RenderMode::untextured));
+        if (scale > 1 && box_proxy.bytes >= proxies.back().bytes) break;
+        if (scale > 1 && !(scale * pixel > double(view.pixel))) continue;
+        box_texels.push_back(scale == 1 ? BoxTexels{view.pixel, coarser_sizing(settings.sizing, double(view.pixel) / pixel)}
+                                        : BoxTexels{float(scale * pixel), sizing});
+        proxies.push_back(std::move(box_proxy));
+    }
     NodeMeasurement own;
     NodeMeasurement& measurement = settings.measurements ? settings.measurements->nodes[std::size_t(n)] : own;
-    measure_error_sums(model, textures, n, box, subtree_triangles, subtree, view, settings, measurement);
-
-    std::vector<Proxy> proxies;
-    Proxy box_proxy;
-    box_proxy.bytes = double(box_bytes_estimate(box, settings.sizing, settings.mode != RenderMode::untextured));
-    box_proxy.error = measured_error(measurement.box_sum, view, settings);
-    proxies.push_back(std::move(box_proxy));
+    measure_error_sums(model, textures, n, box, box_texels, subtree_triangles, subtree, view, settings, measurement);
+    for (std::size_t k = 0; k < proxies.size(); ++k)
+        proxies[k].error = measured_error(measurement.box_sums.at(box_texels[k].size), view, settings);
     for (std::size_t k = 0; k < measurement.simplified.size(); ++k) {
         Proxy proxy;
         proxy.kind = ProxyKind::simplified;
         proxy.primitives = measurement.simplified[k].primitives;
         proxy.clustered = measurement.simplified[k].clustered;
-        proxy.bytes = mesh_bytes(proxy.primitives, model);
+        proxy.bytes = double(mesh_bytes(proxy.primitives, model));
         proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));
     }
@@ -361,139 +389,6 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         if (alone < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
     return kept;
 }
-
-// The greedy order (docs/design.md: The hybrid level mode), within a byte
-// budget: a change that would exceed it gives way to the node's best change
-// that fits, if any, so a level fills its budget where the unbounded order
-// takes one large step past it. A change's bytes count textures as a level
-// pays for them (paid_textures.h), so they change as other parts are drawn:
-// a queued change whose bytes went stale is weighed again when it comes up.
-class Planner {
-public:
-    Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
-        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1), paid_(paid_textures(model)),
-          drawn_(paid_) {
-        subtree_bytes_.assign(model.nodes.size(), 0);
-        own_bytes_.assign(model.nodes.size(), 0);
-        own_textures_ = node_textures(model, paid_);
-        subtree_textures_ = subtree_textures(model, paid_);
-        proxy_textures_.resize(model.nodes.size());
-        const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
-        for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-            subtree_bytes_[n] = double(subtree[n]);
-            own_bytes_[n] = mesh_bytes(model.nodes[n].primitives, model);
-            for (const Proxy& proxy : proxies[n]) proxy_textures_[n].push_back(textures_of(paid_, proxy.primitives));
-            if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
-        }
-    }
-
-    void run(std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
-        bytes.push_back(drawn_bytes(0) + drawn_.apply({}, {&drawn_textures(0)}));
-        error.push_back(drawn_error(0));
-        if (state_[0] < 0) return;  // the root has no proxy: only the original
-        consider(0, budget_ - bytes.back());
-        while (!frontier_.empty()) {
-            const Move move = std::get<3>(*frontier_.begin());
-            frontier_.erase(frontier_.begin());
-            if (weigh(move.node, move.proxy).cost != move.cost || bytes.back() + move.cost > budget_ * (1 + 1e-12)) {
-                consider(move.node, budget_ - bytes.back());  // its best now, that fits, if any
-                continue;
-            }
-            steps.push_back({move.node, move.proxy});
-            bytes.push_back(bytes.back() + move.cost);
-            error.push_back(error.back() - move.gain);
-            drawn_.apply(drawn_textures(move.node), added_textures(move.node, move.proxy));
-            state_[std::size_t(move.node)] = move.proxy;
-            if (move.proxy >= 0) {
-                consider(move.node, budget_ - bytes.back());
-                continue;
-            }
-            for (int child : model_.nodes[std::size_t(move.node)].children)
-                if (state_[std::size_t(child)] >= 0) consider(child, budget_ - bytes.back());
-        }
-    }
-
-private:
-    struct Move {
-        int node = 0, proxy = -1;
-        double gain = 0, cost = 0;
-    };
-    // Best first: changes that save bytes and lose nothing, then the largest
-    // gain per byte, then (so that the plan reaches the original) openings that
-    // gain nothing yet, cheapest first; ties to the lower node index.
-    using Key = std::tuple<int, double, int, Move>;
-    struct KeyOrder {
-        bool operator()(const Key& a, const Key& b) const {
-            return std::tie(std::get<0>(a), std::get<1>(a), std::get<2>(a)) < std::tie(std::get<0>(b), std::get<1>(b), std::get<2>(b));
-        }
-    };
-
-    // Mesh bytes, textures and error of node n's sub-tree as drawn when n is reached in its current state.
-    double drawn_bytes(int n) const {
-        const int s = state_[std::size_t(n)];
-        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
-    }
-    const std::vector<int>& drawn_textures(int n) const {
-        const int s = state_[std::size_t(n)];
-        return s >= 0 ? proxy_textures_[std::size_t(n)][std::size_t(s)] : subtree_textures_[std::size_t(n)];
-    }
-    double drawn_error(int n) const {
-        const int s = state_[std::size_t(n)];
-        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].error : 0;
-    }
-
-    // The textures of what node n draws after changing to `proxy` (-1: opened).
-    std::vector<const std::vector<int>*> added_textures(int n, int proxy) const {
-        if (proxy >= 0) return {&proxy_textures_[std::size_t(n)][std::size_t(proxy)]};
-        std::vector<const std::vector<int>*> added{&own_textures_[std::size_t(n)]};
-        for (int child : model_.nodes[std::size_t(n)].children) added.push_back(&drawn_textures(child));
-        return added;
-    }
-
-    // Node n changed from its current proxy to `proxy` (-1: opened, its own
-    // geometry and its children as they are drawn), as the parts drawn now price it.
-    Move weigh(int n, int proxy) {
-        const Proxy& now = proxies_[std::size_t(n)][std::size_t(state_[std::size_t(n)])];
-        Move move{n, proxy, now.error, -now.bytes};
-        if (proxy >= 0) {
-            move.gain -= proxies_[std::size_t(n)][std::size_t(proxy)].error;
-            move.cost += proxies_[std::size_t(n)][std::size_t(proxy)].bytes;
-        } else {
-            move.cost += own_bytes_[std::size_t(n)];
-            for (int child : model_.nodes[std::size_t(n)].children) move.gain -= drawn_error(child), move.cost += drawn_bytes(child);
-        }
-        move.cost += drawn_.change(drawn_textures(n), added_textures(n, proxy));
-        return move;
-    }
-
-    static Key key(const Move& m) {
-        if (m.gain >= 0 && m.cost <= 0) return {0, -m.gain, m.node, m};
-        if (m.gain > 0) return {1, -m.gain / m.cost, m.node, m};
-        return {2, m.cost, m.node, m};
-    }
-
-    // Puts node n's best change adding at most `room` bytes into the frontier.
-    void consider(int n, double room) {
-        std::optional<Key> best;
-        auto offer = [&](const Move& m) {
-            if (m.cost <= room * (1 + 1e-12) + 1e-9 && (!best || KeyOrder{}(key(m), *best))) best = key(m);
-        };
-        offer(weigh(n, -1));
-        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies_[std::size_t(n)].size(); ++j) offer(weigh(n, int(j)));
-        if (best) frontier_.insert(*best);
-    }
-
-    const Model& model_;
-    const std::vector<std::vector<Proxy>>& proxies_;
-    double budget_;
-    std::vector<int> state_;
-    std::vector<double> subtree_bytes_, own_bytes_;
-    PaidTextures paid_;
-    DrawnTextures drawn_;
-    std::vector<std::vector<int>> own_textures_, subtree_textures_;
-    std::vector<std::vector<std::vector<int>>> proxy_textures_;  // per node and proxy
-    std::set<Key, KeyOrder> frontier_;
-};
 
 // Per node, after the first `count` of `steps`: its proxy, or -1 where it keeps its geometry.
 std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps, std::size_t count) {
@@ -542,7 +437,7 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
 
 void order_hybrid_plan(const Model& model, HybridPlan& plan) {
     plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
-    Planner(model, plan.proxies, std::numeric_limits<double>::infinity()).run(plan.steps, plan.bytes, plan.error);
+    order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes, plan.error);
 }
 
 std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { return state_after(plan, plan.steps, steps); }
@@ -550,7 +445,7 @@ std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { retur
 HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
     std::vector<HybridStep> steps;
     std::vector<double> bytes, error;
-    Planner(model, plan.proxies, budget).run(steps, bytes, error);
+    order_within(model, plan.proxies, budget, steps, bytes, error);
     const std::size_t best = best_prefix_within(bytes, error, budget);
     return {state_after(plan, steps, best), bytes[best], error[best]};
 }
@@ -563,8 +458,10 @@ Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int
         const Node& node = model.nodes[std::size_t(n)];
         cut.used_nodes.push_back(n);
         if (const int s = state[std::size_t(n)]; s >= 0) {
-            if (plan.proxies[std::size_t(n)][std::size_t(s)].kind == ProxyKind::box) cut.box_nodes.push_back(n);
-            else cut.simplified_nodes.emplace_back(n, s);
+            if (const Proxy& proxy = plan.proxies[std::size_t(n)][std::size_t(s)]; proxy.kind == ProxyKind::simplified)
+                cut.simplified_nodes.emplace_back(n, s);
+            else if (cut.box_nodes.push_back(n); proxy.texel_scale > 1)
+                cut.box_texel_scales[n] = proxy.texel_scale;
             continue;
         }
         if (node.has_geometry()) cut.geometry_nodes.push_back(n);
@@ -577,7 +474,7 @@ double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
     double error = 0;
     for (int n : cut.box_nodes)
         for (const Proxy& proxy : plan.proxies[std::size_t(n)])
-            if (proxy.kind == ProxyKind::box) error += proxy.error;
+            if (proxy.kind == ProxyKind::box && proxy.texel_scale == texel_scale(cut, n)) error += proxy.error;
     for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
     return error;
 }

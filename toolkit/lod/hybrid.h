@@ -1,6 +1,7 @@
 // The hybrid level mode (beyond the manual; docs/design.md: The hybrid level
 // mode). Each node may stand in for its sub-tree by one of several proxies:
-// its textured box, or the sub-tree simplified on its own at a few face
+// its textured box, with texels as the sizing distance gives them or 2 or 4
+// times as large, or the sub-tree simplified on its own at a few face
 // targets (meshoptimizer's edge collapse, and vertex clustering for large
 // sub-trees; the sub-tree's own materials and textures). Each
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
@@ -17,6 +18,7 @@
 #pragma once
 #include "renderer/renderer.h"
 #include "toolkit/lod/cut.h"
+#include "toolkit/lod/hybrid_proxy.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/level_modes.h"
 #include "toolkit/model/model.h"
@@ -28,22 +30,6 @@
 #include <vector>
 
 namespace boxlod {
-
-enum class ProxyKind { box, simplified };
-
-// One way to draw a sub-tree instead of its geometry.
-struct Proxy {
-    ProxyKind kind = ProxyKind::box;
-    std::vector<Primitive> primitives;  // simplified: the sub-tree's simplified geometry (the model's materials)
-    bool clustered = false;  // simplified by vertex clustering (large sub-trees), else by edge collapse
-    double bytes = 0;  // box: box_bytes_estimate at the sizing distance; simplified: its mesh bytes
-    double error = 0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
-};
-
-struct HybridStep {
-    int node = 0;
-    int proxy = -1;  // the node's proxy from this step on; -1: the node is opened
-};
 
 struct HybridPlan {
     // Per node, its proxies by ascending bytes drawn alone (with the textures
@@ -103,8 +89,8 @@ struct HybridLevel {
 // the budget only when the root's cheapest proxy is.
 HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget);
 
-// The cut of a state (cut.h): nodes at a box proxy in box_nodes, at a
-// simplified one in simplified_nodes; the others keep their geometry.
+// The cut of a state (cut.h): nodes at a box proxy in box_nodes (with its
+// texel scale), at a simplified one in simplified_nodes; the others keep their geometry.
 Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state);
 
 // The measured error of a cut of the plan: its proxies' errors summed (its

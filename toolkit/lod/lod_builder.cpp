@@ -72,9 +72,11 @@ void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vecto
     ++p.polygon_count;
 }
 
-Eigen::Vector2i texels_of(const OrientedBoxFace& face, const TextureSizing& sizing) {
-    return face_texels(2 * face.half_width, 2 * face.half_height, sizing);
+// The texels of a face of box node n, sized at its texel scale (cut.h), and n's key in the bake cache.
+Eigen::Vector2i texels_of(const OrientedBoxFace& face, const LodSession& session, const Cut& cut, int n) {
+    return face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(session.derived.sizing, texel_scale(cut, n)));
 }
+std::pair<int, int> baked_key(const Cut& cut, int n) { return {n, texel_scale(cut, n)}; }
 
 // The level values of the session's level mode; hybrid and error-greedy with
 // budgets also make the plan whose prefixes the levels are, and each level's prefix.
@@ -140,20 +142,18 @@ namespace {
 void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
     struct FaceJob { int node, face; };
     std::vector<FaceJob> jobs;
-    std::vector<int> new_boxes;
     for (int node : cut.box_nodes)
-        if (!session.cache.baked.count(node)) new_boxes.push_back(node);
-    for (int node : new_boxes) {
-        session.cache.baked[node];  // create the slots before the parallel work
-        for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
-    }
+        if (session.cache.baked.try_emplace(baked_key(cut, node)).second)  // the slots made before the parallel work
+            for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
     std::map<int, Drawable> subtrees;
     const LodDerived& d = session.derived;
-    for (int node : new_boxes) subtrees.emplace(node, make_drawable(*session.input.model, d.textures, node));
+    for (const FaceJob& job : jobs)
+        if (job.face == 0) subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
     parallel_for(jobs.size(), threads, [&](std::size_t j) {
         const FaceJob& job = jobs[j];
         OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
-        session.cache.baked.at(job.node)[job.face] = bake_face(subtrees.at(job.node), face, texels_of(face, d.sizing), 1);
+        session.cache.baked.at(baked_key(cut, job.node))[job.face] =
+            bake_face(subtrees.at(job.node), face, texels_of(face, session, cut, job.node), 1);
     });
 }
 
@@ -228,8 +228,8 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
             const OrientedBoxFace& face = faces[f];
             packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
             if (!textured) continue;
-            const Eigen::Vector2i texels = texels_of(face, session.derived.sizing);
-            const BakedFace& baked = session.cache.baked.at(node)[f];
+            const Eigen::Vector2i texels = texels_of(face, session, cut, node);
+            const BakedFace& baked = session.cache.baked.at(baked_key(cut, node))[f];
             const TexelRect region = p.crop_faces ? baked.covered : TexelRect{0, 0, texels.x(), texels.y()};
             if (region.empty()) continue;
             packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
@@ -337,7 +337,7 @@ void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& wr
 // Box node n's quads, one primitive per page its faces landed on (the pages'
 // materials come first, in page order), its baked texels placed in its pages;
 // `next_packed` walks the packing's faces, which are in the cut's order.
-std::map<int, Primitive> box_primitives(const LodSession& session, int n, const Packing& packing, const Atlas& atlas,
+std::map<int, Primitive> box_primitives(const LodSession& session, const Cut& cut, int n, const Packing& packing, const Atlas& atlas,
                                         bool textured, std::size_t& next_packed, Model& out) {
     std::map<int, Primitive> by_page;
     std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[n]);
@@ -356,7 +356,7 @@ std::map<int, Primitive> box_primitives(const LodSession& session, int n, const 
         const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
         Primitive& primitive = by_page[at.page];
         primitive.material = at.page;
-        append_face_quad(primitive, faces[f], texels_of(faces[f], session.derived.sizing), face.region, &at, page_size);
+        append_face_quad(primitive, faces[f], texels_of(faces[f], session, cut, n), face.region, &at, page_size);
         if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
             const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
             const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
@@ -365,7 +365,7 @@ std::map<int, Primitive> box_primitives(const LodSession& session, int n, const 
             continue;
         }
         const LodPage page = lod_page(at.page);
-        place_face(session.cache.baked.at(n)[f], face.region, at, session.derived.sizing.gutter,
+        place_face(session.cache.baked.at(baked_key(cut, n))[f], face.region, at, session.derived.sizing.gutter,
                    2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
                    out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
     }
@@ -397,7 +397,7 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
         else if (!is_box[n])  // kept: its own geometry (a replaced node without box has none)
             add_primitives(node.primitives, writer, out.nodes[index]);
         else
-            for (auto& [page, primitive] : box_primitives(session, n, packing, atlas, textured, next_packed, out))
+            for (auto& [page, primitive] : box_primitives(session, cut, n, packing, atlas, textured, next_packed, out))
                 out.nodes[index].primitives.push_back(std::move(primitive));
     }
     if (packing.swatch_placement >= 0) place_swatches(packing, atlas, session.derived.sizing.gutter, out);

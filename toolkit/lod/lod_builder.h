@@ -45,7 +45,7 @@ struct LodDerived {
 // levels), and each budgeted level's prefix of the plan, start_lod's
 // estimate until build_lod fits it to the level's real bytes.
 struct LodCache {
-    std::map<int, std::array<BakedFace, 6>> baked;  // per box node
+    std::map<std::pair<int, int>, std::array<BakedFace, 6>> baked;  // per box node and texel scale (cut.h)
     std::vector<HybridLevel> hybrid_levels;  // hybrid: per current level c, its state
     std::vector<std::size_t> opening_steps;  // error-greedy with budgets: per level c, the openings drawn
 };

@@ -17,6 +17,12 @@ double pixel_world_size(const TextureSizing& s) {
     return 2 * double(s.distance) * half_fovy_tangent(s.fovy_degrees) / double(s.resolution);
 }
 
+TextureSizing coarser_sizing(const TextureSizing& sizing, double factor) {
+    TextureSizing coarser = sizing;
+    coarser.distance *= float(factor);
+    return coarser;
+}
+
 namespace {
 // ceil that forgives rounding noise: a face of 50.0001 texels gets 50.
 double texel_ceil(double texels) { return std::ceil(texels - 1e-3); }

@@ -16,6 +16,8 @@ struct TextureSizing {
 };
 
 double pixel_world_size(const TextureSizing& sizing);  // p
+// The sizing whose texels are `factor` times as large: its distance times factor.
+TextureSizing coarser_sizing(const TextureSizing& sizing, double factor);
 // tan(fovy / 2): the last angle's is kept per thread, as run-time selection
 // asks for it per level of every object each frame (docs/city.md: Selection speed).
 double half_fovy_tangent(float fovy_degrees);

@@ -24,4 +24,10 @@ std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& mode
     return layout.vertex_bytes() * primitive.positions.size() + std::uint64_t(layout.index_bytes) * primitive.indices.size();
 }
 
+std::uint64_t mesh_bytes(const std::vector<Primitive>& primitives, const Model& model) {
+    std::uint64_t bytes = 0;
+    for (const Primitive& p : primitives) bytes += primitive_mesh_bytes(p, model);
+    return bytes;
+}
+
 }  // namespace boxlod

@@ -5,6 +5,7 @@
 #include "toolkit/model/model.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace boxlod {
 
@@ -21,5 +22,6 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model);
 
 // Vertex + index bytes of one primitive as the glTF export writes it.
 std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model);
+std::uint64_t mesh_bytes(const std::vector<Primitive>& primitives, const Model& model);  // summed
 
 }  // namespace boxlod

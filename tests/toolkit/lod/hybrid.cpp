@@ -4,6 +4,7 @@
 #include "toolkit/model/cost.h"
 #include "toolkit/lod/kept_subtrees.h"
 #include "toolkit/lod/level_budgets.h"
+#include "toolkit/lod/bake.h"
 #include "toolkit/lod/lod_builder.h"
 #include "toolkit/model/vertex_layout.h"
 #include "toolkit/formats/model_io.h"
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace boxlod;
@@ -27,15 +29,15 @@ void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f
     ++p.polygon_count;
 }
 
-// A flat, detailed facade: 96 x 96 tiles in four colours, flush in the plane
+// A flat, detailed facade: n x n tiles in four colours, flush in the plane
 // z = 0, under node `facade`. A box's front face shows it exactly; simplifying
 // its thousands of separate quads loses tiles.
-int add_facade(Model& model, int parent, float x0) {
+int add_facade(Model& model, int parent, float x0, int n = 96) {
     const int first_material = int(model.materials.size());
     const Eigen::Vector4f colors[4] = {{0.8f, 0.2f, 0.1f, 1}, {0.1f, 0.6f, 0.2f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.2f, 1}};
     for (const Eigen::Vector4f& color : colors) model.materials.emplace_back().base_color = color;
     const int facade = add_node(model, parent, "facade");
-    const int n = 96;  // its mesh, even welded, costs more than its box's pages
+    // n = 96: its mesh, even welded, costs more than its box's pages
     const float tile = 4.0f / n;
     for (int k = 0; k < 4; ++k) model.nodes[std::size_t(facade)].primitives.emplace_back().material = first_material + k;
     for (int y = 0; y < n; ++y)
@@ -409,4 +411,49 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
     EXPECT_EQ(original.cut.box_nodes.size(), 0u);  // level 0: the original, nothing measured against it
     EXPECT_EQ(original.measured_error, 0);
     EXPECT_GT(build_lod(*session, 6, 2).measured_error, 0);
+}
+
+// A box is also offered with texels 2 and 4 times as large as the sizing's,
+// each cheaper and worse than the finer: where pages are dear, a level draws
+// several blurred boxes rather than one sharp one (docs/design.md: The hybrid
+// level mode). A level drawing a coarse box bakes and packs it at its scale.
+TEST(Hybrid, OffersTheBoxWithCoarserTexelsForFewerBytes) {
+    Model model;
+    model.source = "hybrid-test";
+    add_node(model, -1, "root");
+    const int facade = add_facade(model, 0, -2, 16);  // 4 m wide, tiles of 0.25 m
+    validate_model(model);
+    const auto boxes = node_boxes(model, BoxKind::minimal, 1);
+    const HybridSettings settings = settings_for(0.1f, 1);
+    const HybridPlan plan = plan_hybrid(model, decode_textures(model), boxes, settings);
+    std::array<const Proxy*, 5> by_scale{};
+    for (const Proxy& p : plan.proxies[std::size_t(facade)])
+        if (p.kind == ProxyKind::box) by_scale[std::size_t(p.texel_scale)] = &p;
+    ASSERT_TRUE(by_scale[1] && by_scale[2] && by_scale[4]);
+    for (std::size_t scale : {2u, 4u}) {
+        EXPECT_EQ(by_scale[scale]->bytes, double(box_bytes_estimate(*boxes[std::size_t(facade)],
+                                                                    coarser_sizing(settings.sizing, double(scale)), true)));
+        EXPECT_LT(by_scale[scale]->bytes, by_scale[scale / 2]->bytes);
+        EXPECT_GT(by_scale[scale]->error, by_scale[scale / 2]->error);
+    }
+
+    // A budget only the coarsest box fits.
+    LodParameters parameters;
+    parameters.level_mode = LevelMode::hybrid;
+    parameters.box_kind = BoxKind::minimal;
+    parameters.distance = settings.sizing.distance;
+    parameters.min_texture_size = 16;
+    ASSERT_EQ(parse_budgets(std::to_string(int(by_scale[2]->bytes)) + "B", parameters.budgets), "");
+    auto session = start_lod(model, parameters, 2);
+    const Lod lod = build_lod(*session, 1, 2);
+    ASSERT_EQ(lod.cut.box_nodes.size(), 1u);
+    const int n = lod.cut.box_nodes[0];
+    ASSERT_EQ(texel_scale(lod.cut, n), 4);
+    std::uint64_t texels = 0;  // the faces whole at scale 4: cropping keeps no more
+    for (const OrientedBoxFace& face : oriented_box_faces(*boxes[std::size_t(n)])) {
+        const Eigen::Vector2i size = face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(settings.sizing, 4));
+        texels += std::uint64_t(size.x()) * std::uint64_t(size.y());
+    }
+    EXPECT_GT(lod.face_texels, 0u);
+    EXPECT_LE(lod.face_texels, texels);
 }
