@@ -8,6 +8,7 @@ aside: each level's measured_error against its mean FLIP over the views).
 Usage: hybrid_budgets.py results.csv"""
 import collections
 import csv
+import os
 import sys
 
 BUDGETS = (0.5, 0.25, 0.1, 0.05)
@@ -71,7 +72,22 @@ def spearman(xs, ys):
     return sxy / (sxx * syy) ** 0.5 if sxx > 0 and syy > 0 else float("nan")
 
 
+def sizing_of(path):
+    """The sweep's `sizing` from the settings.txt beside its results.csv ("" when absent)."""
+    settings = os.path.join(os.path.dirname(path), "settings.txt")
+    if os.path.exists(settings):
+        for line in open(settings):
+            key, _, value = line.partition("=")
+            if key.strip() == "sizing":
+                return value.strip()
+    return ""
+
+
 def measured_against_flip(path):
+    if sizing_of(path) == "per-level":  # each level's errors are in its own sizing view's pixels
+        print("measured_error against FLIP: not compared, the levels are sized per level "
+              "(experiments/configs/hybrid_error.txt sizes them for the views)")
+        return
     rows = [r for r in csv.DictReader(open(path, newline="")) if r["level_mode"] == "hybrid" and r["level"] != "0"]
     levels = collections.defaultdict(list)
     for r in rows:
