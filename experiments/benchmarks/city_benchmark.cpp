@@ -10,8 +10,8 @@
 //   ones on a grid; the target is under 1 ms at 10,000.
 //   build/experiments/city_benchmark
 #include "data_gen/city.h"
-#include "experiments/camera_path.h"
-#include "experiments/fly_through.h"
+#include "experiments/city/camera_path.h"
+#include "experiments/city/fly_through.h"
 
 #include <benchmark/benchmark.h>
 

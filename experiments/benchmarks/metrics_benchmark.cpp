@@ -3,9 +3,9 @@
 // from 5% farther away), and the render itself for scale.
 //   build/experiments/metrics_benchmark [--benchmark_filter=...]
 // The second argument of every case is the thread count.
-#include "experiments/flip.h"
-#include "experiments/image_metrics.h"
-#include "experiments/silhouette.h"
+#include "experiments/metrics/flip.h"
+#include "experiments/metrics/image_metrics.h"
+#include "experiments/metrics/silhouette.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/formats/model_io.h"

@@ -4,7 +4,7 @@
 #include "base/key_values.h"
 #include "base/parallel.h"
 #include "experiments/commands/commands.h"
-#include "experiments/sweep.h"
+#include "experiments/sweep/sweep.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,5 +1,5 @@
-// Keyframe files (experiments/camera_path.h), then poses sampled along them.
-#include "experiments/camera_path.h"
+// Keyframe files (experiments/city/camera_path.h), then poses sampled along them.
+#include "experiments/city/camera_path.h"
 #include "fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

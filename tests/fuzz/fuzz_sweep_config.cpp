@@ -1,5 +1,5 @@
-// Sweep configs (experiments/sweep_config.h).
-#include "experiments/sweep_config.h"
+// Sweep configs (experiments/sweep/sweep_config.h).
+#include "experiments/sweep/sweep_config.h"
 #include "fuzz_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -359,9 +359,9 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         const TextureSizing sizing = coarser_sizing(settings.sizing, scale);
         box_proxy.bytes = double(box_bytes_estimate(box, sizing, settings.mode != RenderMode::untextured));
         if (scale > 1 && box_proxy.bytes >= proxies.back().bytes) break;
-        if (scale > 1 && !(scale * pixel > double(view.pixel))) continue;
-        box_texels.push_back(scale == 1 ? BoxTexels{view.pixel, coarser_sizing(settings.sizing, double(view.pixel) / pixel)}
-                                        : BoxTexels{float(scale * pixel), sizing});
+        const float texel = scale == 1 ? view.pixel : float(scale * pixel);  // the measurements' key
+        if (scale > 1 && !(texel > view.pixel)) continue;
+        box_texels.push_back({texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});
         proxies.push_back(std::move(box_proxy));
     }
     NodeMeasurement own;
@@ -413,7 +413,7 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
     const std::vector<std::size_t> triangles = subtree_triangles(model);
     // A node is measured where some proxy may cost less than its sub-tree:
-    // its box (than the sub-tree's mesh and the textures only it samples,
+    // its coarsest box (than the sub-tree's mesh and the textures only it samples,
     // which the box may free: counting those that others sample too measured
     // 1.7x as long on `manual`), or a simplified sub-tree (enough triangles
     // for the first share that simplifies). Proxies are then kept by their
@@ -423,8 +423,9 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     std::vector<double> alone(model.nodes.size());
     for (std::size_t n = 0; n < model.nodes.size(); ++n) alone[n] = double(bytes[n]) + bytes_of(paid, sampled[n]);
     std::vector<int> measured;
+    const TextureSizing coarsest = coarser_sizing(settings.sizing, box_texel_scales.back());
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        if (boxes[n] && (box_bytes_estimate(*boxes[n], settings.sizing, textured) < double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], coarsest, textured) < double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
                          double(triangles[n]) * smallest_simplified_share_of_interest >= double(fewest_simplified_triangles)))
             measured.push_back(int(n));
     parallel_for(measured.size(), settings.threads, [&](std::size_t i) {

@@ -6,7 +6,7 @@
 // sub-trees; the sub-tree's own materials and textures). Each
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
 // rendered among their siblings, from the 8 corner directions, orthographically with pixels
-// of the sizing view's size (texel = pixel, texture_sizing.h), and the error
+// of the sizing view's size (texture_sizing.h; coarser for large parts), and the error
 // is the number of pixels that differ, summed as hybrid_pixel_error weighs
 // them. Starting from the root's cheapest proxy, a plan repeatedly takes the
 // change (swap a node's proxy for a better one, or open the node: its own

@@ -186,7 +186,7 @@ struct Packing {
     int swatch_placement = -1;  // the swatches' block in the atlas
     std::uint64_t face_texels = 0, gutter_texels = 0;
     int flat_faces = 0;
-    float longest_face = 0;  // metres, for min_distance
+    float longest_face = 0;  // metres over the texel scale, for min_distance
     float height_depth = 0;  // metres: the deepest packed face's box depth, height 0 on every page
 };
 
@@ -226,7 +226,8 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
         const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[node]);
         for (int f = 0; f < 6; ++f) {
             const OrientedBoxFace& face = faces[f];
-            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width, 2 * face.half_height});
+            const float scale = float(texel_scale(cut, node));  // a coarser box reaches the largest page 1:1 nearer
+            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width / scale, 2 * face.half_height / scale});
             if (!textured) continue;
             const Eigen::Vector2i texels = texels_of(face, session, cut, node);
             const BakedFace& baked = session.cache.baked.at(baked_key(cut, node))[f];

@@ -30,7 +30,7 @@ struct MeasuredError {
 
 struct SelectionLevel {
     std::size_t faces = 0;                // faces drawn at this level (statistics: faces_lod)
-    std::optional<TextureSizing> sizing;  // the texel = pixel view its boxes were baked for
+    std::optional<TextureSizing> sizing;  // the texel = pixel view its boxes were baked for (hybrid: its finest boxes)
     std::optional<MeasuredError> error;   // for texel-exact selection under an error budget
 };
 

@@ -1,0 +1,71 @@
+#include "experiments/metrics/metric_registry.h"
+
+#include "base/input_error.h"
+#include "experiments/metrics/image_metrics.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace boxlod {
+namespace {
+
+constexpr EnumEntry<Metric> metric_table[] = {
+    {Metric::rmse, "rmse", "root mean squared error of the sRGB values over R, G, B (0 = identical)"},
+    {Metric::psnr, "psnr", "peak signal-to-noise ratio in dB, peak 1 (inf = identical)"},
+    {Metric::ssim, "ssim", "mean SSIM on BT.601 luma, as scikit-image's structural_similarity"},
+    {Metric::flip, "flip", "mean LDR FLIP (Andersson et al. 2020) at the given pixels per degree"},
+    {Metric::iou, "iou", "intersection over union of the two coverage masks"},
+};
+
+}  // namespace
+
+std::span<const EnumEntry<Metric>> metrics() { return metric_table; }
+
+std::vector<Metric> all_metrics() {
+    std::vector<Metric> all;
+    for (const EnumEntry<Metric>& entry : metrics()) all.push_back(entry.value);
+    return all;
+}
+
+std::vector<Metric> parse_metrics(const std::vector<std::string>& names, const std::string& context) {
+    std::vector<Metric> out;
+    for (const std::string& name : names) {
+        Metric metric{};
+        if (!parse_enum(metrics(), name, metric))
+            throw InputError(context + ": unknown metric '" + name + "' (" + enum_names(metrics()) + ")");
+        if (std::find(out.begin(), out.end(), metric) == out.end()) out.push_back(metric);
+    }
+    return out;
+}
+
+double metrics_memory(int width, int height) { return 84.0 * double(width) * double(height); }
+
+MetricValues measure_metrics(const std::vector<Metric>& wanted, const MetricPair& pair) {
+    MetricValues out;
+    std::optional<double> error;
+    for (Metric metric : wanted) {
+        switch (metric) {
+            case Metric::rmse:
+            case Metric::psnr:
+                if (!error) error = rmse(pair.reference, pair.test);
+                out.values.push_back(metric == Metric::rmse ? *error : psnr_from_rmse(*error));
+                break;
+            case Metric::ssim: out.values.push_back(ssim(pair.reference, pair.test, pair.threads)); break;
+            case Metric::flip: {
+                FlipResult result = pair.flip_reference ? flip(*pair.flip_reference, pair.test, pair.threads)
+                                                        : flip(pair.reference, pair.test, pair.pixels_per_degree, pair.threads);
+                out.values.push_back(result.mean);
+                out.flip_error = std::move(result.error);
+                break;
+            }
+            case Metric::iou:
+                if (!pair.reference_coverage || !pair.test_coverage)
+                    throw std::logic_error("measure_metrics: iou needs both coverages");
+                out.values.push_back(silhouette_iou(*pair.reference_coverage, *pair.test_coverage));
+                break;
+        }
+    }
+    return out;
+}
+
+}  // namespace boxlod

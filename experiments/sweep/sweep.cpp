@@ -1,0 +1,593 @@
+#include "experiments/sweep/sweep.h"
+
+#include "base/csv.h"
+#include "base/memory_budget.h"
+#include "base/input_error.h"
+#include "base/key_values.h"
+#include "base/timing.h"
+#include "data_gen/interpreter.h"
+#include "data_gen/samples.h"
+#include "experiments/metrics/flip.h"
+#include "experiments/metrics/heatmap.h"
+#include "experiments/sweep/impostor.h"
+#include "experiments/metrics/image_metrics.h"
+#include "experiments/metrics/metric_registry.h"
+#include "experiments/metrics/silhouette.h"
+#include "experiments/sweep/sweep_tables.h"
+#include "toolkit/lod/level_values.h"
+#include "toolkit/lod/level_budgets.h"
+#include "toolkit/lod/simplification.h"
+#include "experiments/sweep/single_box.h"
+#include "toolkit/cgal/cgal_simplification.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/lod/lod_builder.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/model/statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <tuple>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A row key (CSV text already) extended by more fields.
+std::string extend_row(const std::string& key, const std::vector<std::string>& more) { return key + "," + csv_row(more); }
+
+Model load_sweep_model(const SweepModel& model) {
+    if (!model.sample.empty()) return generate_building(sample_grammar(model.sample), BuildingOptions{});
+    return load_model(model.path);
+}
+
+// A render as the metrics need it.
+struct Shot {
+    Image8 image;
+    Coverage coverage;
+    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
+};
+
+Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height) {
+    Frame frame = make_frame(width, height, {1, 1, 1});
+    render(batches, settings, frame);
+    Shot shot;
+    shot.image = frame_to_srgb8(frame);
+    shot.coverage = coverage_from_mask(coverage_mask(frame));
+    return shot;
+}
+
+// The manual's camera positions, `multiple` times the framing distance away (as `boxlod render --camera`).
+RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
+                             const LodParameters& lod, int threads) {
+    RenderSettings settings;
+    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
+    settings.mode = mode;
+    settings.parallax_scale = lod.parallax_scale;
+    settings.parallax_bias = lod.parallax_bias;
+    settings.light = light_for_camera(settings.camera);
+    settings.threads = threads;
+    return settings;
+}
+
+struct Metrics {
+    std::vector<std::string> values;  // in the config's metric order
+    Plane heatmap;                    // FLIP's error when computed, else the RGB error
+    double error = 0;                 // what simplification-best minimizes (choice_error)
+};
+
+// One error, lower = better, from the metrics measured: FLIP if measured, else
+// 1 - SSIM, else RMSE, else -PSNR, else 1 - IoU.
+double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {
+    for (Metric preferred : {Metric::flip, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
+        for (std::size_t i = 0; i < metrics.size(); ++i) {
+            if (metrics[i] != preferred) continue;
+            if (preferred == Metric::ssim || preferred == Metric::iou) return 1 - values[i];
+            return preferred == Metric::psnr ? -values[i] : values[i];
+        }
+    return 0;
+}
+
+Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads) {
+    MetricPair pair{reference.image, test.image, &reference.coverage, &test.coverage,
+                    reference.flip_reference ? &*reference.flip_reference : nullptr, config.pixels_per_degree, threads};
+    MetricValues measured = measure_metrics(config.metrics, pair);
+    Metrics out;
+    for (double value : measured.values) out.values.push_back(format_number(value));  // psnr of identical images: inf
+    out.error = choice_error(config.metrics, measured.values);
+    if (want_heatmap) out.heatmap = measured.flip_error ? std::move(*measured.flip_error) : rgb_error_map(reference.image, test.image);
+    return out;
+}
+
+// What one group of rows draws: an LoD level or a baseline mesh.
+struct Candidate {
+    Model model;
+    Atlas atlas;  // pages = 0 for untextured boxes and the baselines
+    std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
+    std::size_t nodes_with_box = 0;
+    std::string depth_error;  // an LoD's proxy error (LodDerived::depth_errors summed over its boxes); empty for baselines
+    std::string measured_error;  // a hybrid level's measured proxy error (Lod::measured_error); empty for the others
+    int obtained_levels = 0;
+    CostParts cost;  // each row states the cost of the maps its render mode draws
+    std::unique_ptr<DrawableModel> drawable;  // made by run_group unless `make` made it
+    double seconds = 0;  // building it and making it drawable
+    std::string variant;  // a baseline's variant (results.csv baseline_variant)
+};
+
+// `cost`: the model's, when its builder has it already (an LoD); else computed here.
+Candidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels, const CostParts* cost = nullptr) {
+    Candidate c;
+    c.cost = cost ? *cost : cost_parts(model);
+    c.model = std::move(model);
+    c.atlas = std::move(atlas);
+    c.nodes_with_box = nodes_with_box;
+    c.obtained_levels = obtained_levels;
+    return c;
+}
+
+// The `triangles` column of a results.csv row (after the key columns, obtained_levels and faces).
+std::size_t triangles_of_row(const std::string& row) { return std::stoull(csv_fields(row).at(sweep_key_columns().size() + 2)); }
+
+struct Variant {
+    LevelMode mode;
+    BoxKind box;
+    Interpolation interpolation;
+    int obtained_levels = 1;
+    std::vector<int> levels;
+};
+
+std::string eta_text(double seconds) {
+    int s = int(seconds + 0.5);
+    std::ostringstream out;
+    if (s >= 3600) out << s / 3600 << "h";
+    if (s >= 60) out << s / 60 % 60 << "m";
+    out << s % 60 << "s";
+    return out.str();
+}
+
+}  // namespace
+
+std::vector<std::string> result_columns(const SweepConfig& config) {
+    std::vector<std::string> columns = sweep_key_columns();
+    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
+                          "nodes_with_box", "depth_error", "measured_error", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
+                          "covered_pixels", "baseline_variant"})
+        columns.push_back(c);
+    for (Metric metric : config.metrics) columns.push_back(enum_name(metrics(), metric));
+    return columns;
+}
+
+std::vector<std::string> timing_columns() {
+    std::vector<std::string> columns = sweep_key_columns();
+    for (const char* c : {"build_seconds", "render_seconds", "metric_seconds"}) columns.push_back(c);
+    return columns;
+}
+
+namespace {
+
+// The plan of one model: its variants (level mode x box kind x interpolation)
+// with their levels, and how many groups of rows they and the baselines make.
+struct ModelPlan {
+    std::map<BoxKind, std::vector<std::optional<OrientedBox>>> boxes;  // once per box kind
+    std::vector<Variant> variants;
+    std::size_t groups = 0;
+};
+
+ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads) {
+    ModelPlan plan;
+    for (BoxKind kind : config.box_kinds) plan.boxes[kind] = node_boxes(model, kind, threads);
+    for (LevelMode mode : config.level_modes)
+        for (BoxKind kind : config.box_kinds)
+            for (Interpolation interpolation : config.interpolations) {
+                LodParameters asked = config.lod;
+                asked.level_mode = mode;
+                const int obtained = obtained_levels(model, mode, asked_levels(asked));
+                Variant variant{mode, kind, interpolation, obtained, {}};
+                for (int level = 0; level <= obtained; ++level)
+                    if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
+                        variant.levels.push_back(level);
+                plan.groups += variant.levels.size();
+                plan.variants.push_back(std::move(variant));
+            }
+    // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
+    for (Baseline baseline : config.baselines)
+        plan.groups += baseline == Baseline::single_box || baseline == Baseline::impostor ? 1 : plan.variants.front().levels.size();
+    return plan;
+}
+
+// The executor's state for one model: the original's renders (per view,
+// distance and mode, made when first needed) and the progress counters.
+struct ModelRun {
+    const SweepConfig& config;
+    const SweepModel& entry;
+    const Model& model;
+    Framing framing;
+    std::size_t index = 0, rows = 0, done = 0, computed = 0;
+    double seconds = 0;
+    int threads = 0;
+    std::FILE* progress = nullptr;
+    std::unique_ptr<DrawableModel> original = nullptr;
+    std::map<std::tuple<std::size_t, std::size_t, RenderMode>, Shot> references = {};
+};
+
+std::size_t rows_per_group(const SweepConfig& config) {
+    return config.views.size() * config.distances.size() * config.render_modes.size();
+}
+
+const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report, std::size_t v, std::size_t d, RenderMode mode) {
+    const SweepConfig& config = run.config;
+    auto key = std::make_tuple(v, d, mode);
+    auto found = run.references.find(key);
+    if (found != run.references.end()) return found->second;
+    if (!run.original) run.original = make_drawable_model(run.model);
+    const RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
+    Shot shot = timed(report.render_seconds,
+                      [&] { return render_shot(run.original->drawable.batches, settings, config.width, config.height); });
+    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end())
+        shot.flip_reference = timed(report.metric_seconds,
+                                    [&] { return prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads); });
+    ++report.original_renders;
+    if (out.keep_images)
+        save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
+                   shot.image);
+    return run.references.emplace(key, std::move(shot)).first->second;
+}
+
+// The results.csv fields of a row after its key.
+std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, const Shot& original, const Metrics& metrics) {
+    const ModelCost cost = drawn_cost({&c.cost}, mode);
+    MeshCounts counts = mesh_counts(c.model);
+    int largest_page = 0;
+    for (const Eigen::Vector2i& page : c.atlas.pages) largest_page = std::max({largest_page, page.x(), page.y()});
+    std::vector<std::string> fields = {
+        std::to_string(c.obtained_levels),
+        std::to_string(counts.faces), std::to_string(counts.triangles), std::to_string(counts.vertices),
+        std::to_string(counts.batches), std::to_string(page_texels(c.atlas)),
+        std::to_string(c.face_texels),
+        std::to_string(c.atlas.pages.size()), std::to_string(largest_page),
+        std::to_string(c.nodes_with_box), c.depth_error, c.measured_error, std::to_string(cost.draw_calls), std::to_string(cost.mesh_bytes),
+        std::to_string(cost.texture_bytes), std::to_string(cost.texture_bytes_gpu), std::to_string(cost.bytes()),
+        std::to_string(covered_pixels(original.coverage)), c.variant};
+    fields.insert(fields.end(), metrics.values.begin(), metrics.values.end());
+    return fields;
+}
+
+// A row of a group, not yet in results.csv.
+struct MissingRow { std::size_t view, distance; RenderMode mode; std::string key; };
+
+// The group's rows in the sweep's order (noted in `out.order`); those
+// results.csv holds already are counted as skipped, the others returned.
+std::vector<MissingRow> missing_rows(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group) {
+    const SweepConfig& config = run.config;
+    std::vector<MissingRow> missing;
+    for (std::size_t v = 0; v < config.views.size(); ++v)
+        for (std::size_t d = 0; d < config.distances.size(); ++d)
+            for (RenderMode mode : config.render_modes) {
+                std::string key = extend_row(group, {config.views[v], format_number(config.distances[d]), render_mode_name(mode)});
+                out.order.push_back(key);
+                if (!out.results.rows.count(key)) missing.push_back({v, d, mode, key});
+            }
+    const std::size_t skipped = rows_per_group(config) - missing.size();
+    report.rows_skipped += skipped;
+    run.done += skipped;
+    return missing;
+}
+
+// A row as drawn: its results.csv and timings.csv lines, its image and heat map, its choice_error.
+struct DrawnRow { std::string result, timing; Image8 image; Plane heatmap; double error = 0; };
+
+// One row: the candidate rendered from the row's view and compared with the original's render.
+DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Candidate& c, const MissingRow& row) {
+    const SweepConfig& config = run.config;
+    const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
+    double render_seconds = 0, metric_seconds = 0;
+    const RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
+                                                  row.mode, config.lod, run.threads);
+    Shot shot = timed(render_seconds, [&] { return render_shot(c.drawable->drawable.batches, settings, config.width, config.height); });
+    Metrics metrics = timed(metric_seconds, [&] {
+        return compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
+    });
+    report.render_seconds += render_seconds;
+    report.metric_seconds += metric_seconds;
+    ++report.lod_renders;
+    return {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
+            extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
+            out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap), metrics.error};
+}
+
+// The group's line on the progress stream, with the model's ETA.
+void report_group(const ModelRun& run, const std::string& group, std::size_t rows, double seconds) {
+    if (!run.progress) return;
+    const double eta = run.seconds / double(run.computed) * double(run.rows - run.done);
+    std::fprintf(run.progress, "boxlod sweep: model %zu/%zu %s: %zu rows in %.2f s; %zu/%zu rows of this model, ETA %s\n",
+                 run.index + 1, run.config.models.size(), group.c_str(), rows, seconds, run.done, run.rows,
+                 eta_text(eta).c_str());
+    std::fflush(run.progress);
+}
+
+// A group: the rows of one drawn candidate (an LoD level, a simplified mesh, the single box)
+// over views x distances x render modes. `slot(mode, view, distance)` says which rows may
+// share one candidate, `make(slot, alternative)` builds it; both run only for rows missing
+// from results.csv.
+// With several `alternatives` (simplification-best), each is drawn for every missing row
+// and the group keeps the one with the lowest mean choice_error over them.
+void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
+               const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
+               const std::function<Candidate(int, int)>& make,
+               int alternatives = 1) {
+    auto group_start = Clock::now();
+    const std::vector<MissingRow> missing = missing_rows(run, out, report, group);
+    if (missing.empty()) return;
+    std::vector<std::vector<DrawnRow>> drawn(static_cast<std::size_t>(alternatives));
+    std::vector<double> mean_error(std::size_t(alternatives), 0);
+    for (int a = 0; a < alternatives; ++a) {
+        std::map<int, Candidate> candidates;
+        for (const MissingRow& row : missing) {
+            int s = slot(row.mode, row.view, row.distance);
+            auto found = candidates.find(s);
+            if (found == candidates.end()) {
+                double seconds = 0;
+                Candidate made = timed(seconds, [&] {
+                    Candidate built = make(s, a);
+                    if (!built.drawable) built.drawable = make_drawable_model(built.model);
+                    return built;
+                });
+                made.seconds = seconds;
+                report.build_seconds += seconds;
+                ++report.lods_built;
+                found = candidates.emplace(s, std::move(made)).first;
+            }
+            drawn[std::size_t(a)].push_back(draw_row(run, out, report, found->second, row));
+            mean_error[std::size_t(a)] += drawn[std::size_t(a)].back().error / double(missing.size());
+        }
+    }
+    const auto best = std::size_t(std::min_element(mean_error.begin(), mean_error.end()) - mean_error.begin());
+    for (std::size_t r = 0; r < missing.size(); ++r) {
+        DrawnRow& row = drawn[best][r];
+        out.results.rows[missing[r].key] = row.result;
+        out.timings.rows[missing[r].key] = row.timing;
+        if (out.keep_images) save_image(out, missing[r].key, row.image);
+        if (run.config.keep_images == KeptImages::all) save_image(out, missing[r].key + "_heatmap", error_heatmap(row.heatmap));
+    }
+    write_tables(out);
+    report.rows_computed += missing.size();
+    run.done += missing.size();
+    run.computed += missing.size();
+    const double group_seconds = seconds_since(group_start);
+    run.seconds += group_seconds;
+    report_group(run, group, missing.size(), group_seconds);
+}
+
+// The LoD levels of one variant. Normal, parallax, pom and albedo draw the same
+// baked boxes; untextured boxes are not baked. Slot = 2 x sizing distance +
+// (untextured ? 1 : 0); one session per slot and sizing level, shared by the
+// levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
+void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan, const Variant& variant) {
+    const SweepConfig& config = run.config;
+    // With SizingRule::nearest (and per_level) every distance draws the LoD baked for the smallest one.
+    auto sizing_index = [&](std::size_t d) -> std::size_t {
+        if (config.sizing == SizingRule::each_distance) return d;
+        return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
+    };
+    std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
+    auto slot = [&](RenderMode mode, std::size_t, std::size_t d) {
+        return int(2 * sizing_index(d) + (mode == RenderMode::untextured));
+    };
+    for (int level : variant.levels) {
+        const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
+        std::string group = csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
+                                     interpolation_name(variant.interpolation), std::to_string(level)});
+        run_group(run, out, report, group, slot, [&](int s, int) {
+            std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
+            if (!session) {
+                LodParameters p = config.lod;
+                p.level_mode = variant.mode;
+                p.box_kind = variant.box;
+                p.interpolation = variant.interpolation;
+                p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy) *
+                             std::ldexp(1.0f, sizing_level - 1);
+                p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
+                if (!orders_by_bytes(p.level_mode)) p.budgets.clear();  // the other modes make wanted_levels levels
+                session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
+                session->input.budgets_strict = false;  // a row over its budget says so in its bytes
+            }
+            Lod lod = build_lod(*session, level, run.threads);
+            Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
+                                    variant.obtained_levels, &lod.cost);
+            c.face_texels = lod.face_texels;
+            c.depth_error = format_number(lod.depth_error);
+            if (variant.mode == LevelMode::hybrid) c.measured_error = format_number(lod.measured_error);
+            return c;
+        });
+    }
+}
+
+// The impostor: one atlas per model, captured for texel = pixel at the nearest of the
+// distances; each view and distance draws the quad of the direction nearest its camera.
+void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group, int level) {
+    const SweepConfig& config = run.config;
+    std::optional<ImpostorAtlas> atlas;
+    TextureCache decoded;  // every view's quad draws the same atlas: decoded once
+    auto view_slot = [&](RenderMode, std::size_t v, std::size_t d) { return int(v * config.distances.size() + d); };
+    run_group(run, out, report, group, view_slot, [&](int s, int) {
+        const std::size_t v = std::size_t(s) / config.distances.size(), d = std::size_t(s) % config.distances.size();
+        if (!atlas) {
+            TextureSizing sizing;
+            sizing.fovy_degrees = config.lod.fovy;
+            sizing.resolution = config.lod.resolution;
+            sizing.distance = *std::min_element(config.distances.begin(), config.distances.end()) *
+                              framing_distance(run.framing, config.lod.fovy);
+            int cell = impostor_cell(model_bounds(run.model), pixel_world_size(sizing));
+            atlas = make_impostor(run.model, config.impostor_directions, cell, run.threads);
+        }
+        Eigen::Vector3f eye = view_settings(run.framing, config.views[v], config.distances[d], RenderMode::normal,
+                                            config.lod, run.threads).camera.position;
+        Candidate c = candidate(impostor_model(*atlas, eye, run.model.source), {}, 0, level);
+        c.variant = "direction " + std::to_string(nearest_direction(*atlas, eye));
+        c.drawable = make_drawable_model(c.model, &decoded, run.threads);
+        return c;
+    });
+}
+
+// The finest simplification whose bytes (cost.h, every texture) stay within
+// `budget`: from the original's triangles scaled by the bytes, down in
+// proportion to the overshoot (a few rounds: bytes follow the triangles closely).
+Model simplified_within(const Model& model, double budget, const std::function<Model(std::size_t)>& simplify) {
+    std::size_t target = std::max<std::size_t>(mesh_counts(model).triangles, 1);
+    Model simplified = simplify(target);
+    for (int round = 0; round < 16; ++round) {
+        const double bytes = double(model_cost(simplified).bytes());
+        if (bytes <= budget || target == 1) break;
+        target = std::max<std::size_t>(1, std::min(target - 1, std::size_t(double(target) * budget / bytes * 0.98)));
+        simplified = simplify(target);
+    }
+    return simplified;
+}
+
+// The baselines: the same rows, drawn by a mesh that depends on no view, distance or mode.
+void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first) {
+    const SweepConfig& config = run.config;
+    auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
+    // The triangles of `level` of the first variant, as its first row says.
+    auto triangles_of_level = [&](int level) {
+        return triangles_of_row(out.results.rows.at(csv_row(
+            {run.entry.name, level_mode_name(first.mode), box_kind_name(first.box), interpolation_name(first.interpolation),
+             std::to_string(level), config.views[0], format_number(config.distances[0]),
+             render_mode_name(config.render_modes[0])})));
+    };
+    const std::vector<SimplifyVariant> variants = simplify_variants(run.threads);
+    for (const EnumEntry<Baseline>& entry : baselines()) {  // in the table's order, whatever the config's
+        const Baseline baseline = entry.value;
+        const std::string name = entry.name;
+        if (std::find(config.baselines.begin(), config.baselines.end(), baseline) == config.baselines.end()) continue;
+        const std::string top_group = csv_row({run.entry.name, name, "-", "-", std::to_string(first.obtained_levels)});
+        if (baseline == Baseline::single_box) {
+            run_group(run, out, report, top_group, one_slot, [&](int, int) {
+                return candidate(single_box_model(run.model, run.threads), {}, 0, first.obtained_levels);
+            });
+            continue;
+        }
+        if (baseline == Baseline::impostor) {
+            run_impostor(run, out, report, top_group, first.obtained_levels);
+            continue;
+        }
+        // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.
+        const int alternatives = baseline == Baseline::simplification_best ? int(variants.size()) : 1;
+        // Levels by byte budget: each simplified as finely as its budget allows (equal bytes, not equal triangles).
+        const bool by_budget = orders_by_bytes(first.mode) && !config.lod.budgets.empty();
+        for (int level : first.levels) {
+            const std::size_t target = triangles_of_level(level);
+            auto simplified = [&](const std::function<Model(std::size_t)>& simplify) {
+                if (!by_budget || level == 0) return simplify(target);
+                return simplified_within(run.model, budget_bytes(config.lod.budgets[std::size_t(level - 1)],
+                                                                 double(model_cost(run.model).bytes())),
+                                         simplify);
+            };
+            run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
+                      [&](int, int a) {
+                          if (baseline == Baseline::cgal) {
+                              Candidate c = candidate(simplified([&](std::size_t t) { return cgal_simplify(run.model, t); }),
+                                                      {}, 0, first.obtained_levels);
+                              c.variant = "garland-heckbert";
+                              return c;
+                          }
+                          const SimplifyVariant& v = variants[std::size_t(a)];
+                          Candidate c = candidate(
+                              simplified([&](std::size_t t) { return simplify_model(run.model, t, v.options); }), {}, 0,
+                              first.obtained_levels);
+                          c.variant = v.name;
+                          return c;
+                      },
+                      alternatives);
+        }
+    }
+}
+
+// Plan, then execute, model by model, into the results table (after the shards' rows, if any).
+SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress,
+                       const std::vector<std::string>& shard_folders = {}) {
+    auto sweep_start = Clock::now();
+    if (threads < 0) threads = config.threads;
+    // A row holds its view's reference shot and the one it measures, both compared.
+    check_memory("boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) + " pixels",
+                 2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
+    SweepReport report;
+    SweepOutput out = open_output(config, output_folder, result_columns(config), timing_columns());
+    merge_shards(out, shard_folders);
+    for (std::size_t m = 0; m < config.models.size(); ++m) {
+        Model model = load_sweep_model(config.models[m]);
+        ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, threads); });
+        ModelRun run{config, config.models[m], model, model_framing(model)};
+        run.index = m;
+        run.rows = plan.groups * rows_per_group(config);
+        run.threads = threads;
+        run.progress = progress;
+        report.rows += run.rows;
+        for (const Variant& variant : plan.variants) run_variant(run, out, report, plan, variant);
+        run_baselines(run, out, report, plan.variants.front());
+    }
+    write_tables(out);
+    report.total_seconds = seconds_since(sweep_start);
+    return report;
+}
+
+}  // namespace
+
+SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+    return merge_sweep(config, {}, output_folder, threads, progress);
+}
+
+SweepReport merge_sweep(const SweepConfig& config, const std::vector<std::string>& shard_folders,
+                        const std::string& output_folder, int threads, std::FILE* progress) {
+    // A sweep that fails before its first row (a model that cannot be read)
+    // leaves no folder behind; rows computed stay, for the next run to resume.
+    const bool new_folder = !fs::exists(output_folder);
+    try {
+        return sweep_into(config, output_folder, threads, progress, shard_folders);
+    } catch (...) {
+        std::error_code ignored;
+        if (new_folder && !fs::exists(fs::path(output_folder) / "results.csv", ignored))
+            fs::remove_all(output_folder, ignored);
+        throw;
+    }
+}
+
+std::vector<SweepShard> sweep_shards(const SweepConfig& config) {
+    std::vector<SweepShard> shards;
+    for (std::size_t m = 0; m < config.models.size(); ++m)
+        for (LevelMode mode : config.level_modes) shards.push_back({m, mode});
+    return shards;
+}
+
+SweepConfig shard_config(const SweepConfig& config, const SweepShard& shard) {
+    SweepConfig part = config;
+    part.models = {config.models.at(shard.model)};
+    part.level_modes = {shard.level_mode};
+    if (shard.level_mode != config.level_modes.front()) part.baselines.clear();
+    return part;
+}
+
+SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text) {
+    const std::size_t colon = text.find(':');
+    auto fail = [&](const std::string& what) { throw InputError("boxlod sweep: --shard '" + text + "': " + what); };
+    if (colon == std::string::npos) fail("expected M:MODE, the model's position from 1 and a level mode of the config");
+    const std::string position = text.substr(0, colon), mode_name = text.substr(colon + 1);
+    const NumberRange models{1, double(config.models.size())};
+    char* end = nullptr;
+    const double m = std::strtod(position.c_str(), &end);
+    if (position.empty() || *end || !models.contains(m) || m != std::floor(m)) fail(out_of_range_message(models, position));
+    SweepShard shard{std::size_t(m) - 1, LevelMode::top_down};
+    if (!parse_level_mode(mode_name, shard.level_mode) ||
+        std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) == config.level_modes.end())
+        fail("'" + mode_name + "' is not one of the config's level modes");
+    return shard;
+}
+
+}  // namespace boxlod

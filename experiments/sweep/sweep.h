@@ -1,0 +1,59 @@
+// `boxlod sweep`: the cross product of a SweepConfig — models x level modes x
+// box kinds x interpolations x levels x views x distances x render modes —
+// each LoD compared with the original by every metric.
+//
+// OUTDIR/results.csv holds one row per combination, in that order, with the
+// LoD's counts and the metrics; it is byte-identical for any thread count.
+// OUTDIR/timings.csv holds the seconds under the same key columns (timings
+// differ from run to run, so they live apart). Resumable: rows already in
+// results.csv are not computed again; both files are rewritten atomically
+// after every finished LoD, so an interrupted sweep keeps what it has.
+#pragma once
+#include "experiments/sweep/sweep_config.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct SweepReport {
+    std::size_t rows = 0;          // rows of the cross product
+    std::size_t rows_computed = 0;  // rows computed by this run
+    std::size_t rows_skipped = 0;   // rows found in results.csv
+    std::size_t lods_built = 0, lod_renders = 0, original_renders = 0;
+    double boxes_seconds = 0, build_seconds = 0, render_seconds = 0, metric_seconds = 0, total_seconds = 0;
+};
+
+// The columns of results.csv and of timings.csv for a config's metrics.
+std::vector<std::string> result_columns(const SweepConfig& config);
+std::vector<std::string> timing_columns();
+
+// `threads` overrides the config's when >= 0. Progress lines (with an ETA) go
+// to `progress` when not null. Throws InputError for bad models or a
+// results.csv whose columns differ from this config's.
+SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads = -1,
+                      std::FILE* progress = nullptr);
+
+// A shard of a sweep: one model (its position in `models`, from 0) and one
+// level mode, with every box kind, interpolation, level, view, distance and
+// render mode; the baselines go with the model's first level mode, whose
+// levels they follow. Shards run apart (on a cluster, a job each) and make
+// exactly the rows the whole sweep makes for them (docs/sweeps.md: Shards).
+struct SweepShard {
+    std::size_t model = 0;
+    LevelMode level_mode = LevelMode::top_down;
+};
+std::vector<SweepShard> sweep_shards(const SweepConfig& config);  // model-major
+SweepConfig shard_config(const SweepConfig& config, const SweepShard& shard);
+// "M:MODE": the model's position from 1 and a level mode of the config. Throws InputError.
+SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text);
+
+// The whole sweep from its shards' output folders: their rows are read into
+// OUTDIR's tables and the sweep runs there, computing only rows no shard
+// has; results.csv gets the bytes the unsharded sweep writes. Throws
+// InputError when two shards disagree on a row or a table has other columns.
+SweepReport merge_sweep(const SweepConfig& config, const std::vector<std::string>& shard_folders,
+                        const std::string& output_folder, int threads = -1, std::FILE* progress = nullptr);
+
+}  // namespace boxlod
