@@ -2,7 +2,11 @@
 // `Symbol(parameters) --> operations`, global attributes, and the place in the
 // source of everything, so errors found while deriving can point at it.
 #pragma once
+#include "base/enum_table.h"
+
 #include <map>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +37,12 @@ struct Size {
     Expression value;
 };
 
+// The faces of a scope a component split's entry takes: one by name, or
+// side (left and right), vertical (all but top and bottom), horizontal, all.
+enum class FaceSelector { front, back, left, right, top, bottom, side, vertical, horizontal, all };
+std::span<const EnumEntry<FaceSelector>> face_selectors();
+bool selects(FaceSelector selector, const std::string& face);  // face: a scope face's name ("front", ...)
+
 struct Operation;
 using Sequence = std::vector<Operation>;
 
@@ -40,7 +50,7 @@ using Sequence = std::vector<Operation>;
 // `selector : sequence` (comp), or a repeated group `{ entries }*` (split).
 struct SplitEntry {
     Size size;
-    std::string selector;
+    std::optional<FaceSelector> selector;  // comp entries
     Sequence successor;
     std::vector<SplitEntry> repeated;  // non-empty: this entry is a repeat group
     SourcePlace place;
@@ -71,6 +81,11 @@ struct Operation {
     Sequence body;                    // push
     SourcePlace place;
 };
+
+// The operations called by name, each with its syntax as help (NIL, '[' and
+// rule symbols are not in it).
+std::span<const EnumEntry<Operation::Kind>> operation_kinds();
+
 
 // One way a rule can go: always, with a probability (percent), or when a
 // condition holds (`case`), or `else`.

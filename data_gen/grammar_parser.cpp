@@ -93,11 +93,9 @@ std::vector<Token> tokenize(const std::string& text, const std::string& file) {
     return tokens;
 }
 
-const std::set<std::string> operation_names = {"extrude", "split", "comp", "t", "r", "s", "center",
-                                               "i", "material", "texture", "color"};
 const std::set<std::string> keywords = {"attr", "case", "else", "NIL"};
-const std::set<std::string> selectors = {"front", "back", "left", "right", "top", "bottom",
-                                         "side", "vertical", "horizontal", "all"};
+
+bool reserved(const std::string& name) { return keywords.count(name) || enum_from_name(operation_kinds(), name); }
 
 class Parser {
 public:
@@ -188,7 +186,7 @@ private:
         Rule rule;
         rule.place = peek().place;
         rule.symbol = take().text;
-        if (operation_names.count(rule.symbol) || keywords.count(rule.symbol))
+        if (reserved(rule.symbol))
             throw_grammar_error(file_, rule.place, "'" + rule.symbol + "' is a reserved word, not a symbol name");
         if (is("(")) {
             take();
@@ -250,6 +248,8 @@ private:
         return sequence;
     }
 
+    // One operation: '[' sequence ']', NIL, a symbol, or an operation of
+    // operation_kinds() with what its syntax reads after the name.
     Operation parse_operation() {
         Operation op;
         op.place = peek().place;
@@ -261,88 +261,106 @@ private:
             return op;
         }
         if (peek().kind != Token::Kind::identifier) fail("an operation, a symbol, '[' or '|'");
-        std::string name = take().text;
+        const std::string name = take().text;
         if (name == "NIL") {
             op.kind = Operation::Kind::nil;
             return op;
         }
         if (keywords.count(name)) throw_grammar_error(file_, op.place, "'" + name + "' cannot start an operation");
-        if (!operation_names.count(name)) {
+        const std::optional<Operation::Kind> kind = enum_from_name(operation_kinds(), name);
+        if (!kind) {
             op.kind = Operation::Kind::symbol;
             op.name = name;
             if (is("(")) op.arguments = parse_arguments(false);
             return op;
         }
-        if (name == "split" || name == "comp") {
-            op.kind = name == "split" ? Operation::Kind::split : Operation::Kind::component;
-            expect("(");
-            op.name = expect_identifier(name == "split" ? "an axis x, y or z" : "'f' (faces)");
-            if (name == "split" && op.name != "x" && op.name != "y" && op.name != "z")
-                throw_grammar_error(file_, op.place, "split needs one axis: x, y or z");
-            if (name == "comp" && op.name != "f") throw_grammar_error(file_, op.place, "comp takes 'f' (faces)");
-            expect(")");
-            expect("{");
-            op.entries = name == "split" ? parse_split_entries(true) : parse_component_entries();
-            expect("}");
-            return op;
-        }
-        if (name == "center") {
-            op.kind = Operation::Kind::center;
-            expect("(");
-            op.name = expect_identifier("axes such as x, xz or xyz");
-            if (op.name.find_first_not_of("xyz") != std::string::npos)
-                throw_grammar_error(file_, op.place, "center takes axes made of x, y and z");
-            expect(")");
-            return op;
-        }
-        if (name == "material" || name == "texture") {
-            op.kind = name == "material" ? Operation::Kind::material : Operation::Kind::texture;
-            expect("(");
-            SourcePlace at = peek().place;
-            op.name = expect_identifier(name == "material" ? "a material name" : "a texture name");
-            bool known = name == "material" ? is_material_name(op.name) : (is_texture_name(op.name) || op.name == "none");
-            if (!known)
-                throw_grammar_error(file_, at, "unknown " + name + " '" + op.name + "' (known: " +
-                                                   (name == "material" ? material_names() : texture_names() + ", none") + ")");
-            expect(")");
-            return op;
-        }
-        if (name == "i") {
-            op.kind = Operation::Kind::insert;
-            expect("(");
-            SourcePlace at = peek().place;
-            if (peek().kind == Token::Kind::text) {
-                op.name = take().text;
-                op.name_is_text = true;
-            } else {
-                op.name = expect_identifier("a primitive (" + builtin_primitive_names() + ") or a \"file\"");
-                if (!is_builtin_primitive(op.name))
-                    throw_grammar_error(file_, at, "unknown primitive '" + op.name + "' (known: " + builtin_primitive_names() +
-                                                       "; put asset files in quotes)");
+        op.kind = *kind;
+        switch (op.kind) {
+        case Operation::Kind::split:
+        case Operation::Kind::component: parse_split_header(op); break;
+        case Operation::Kind::center: parse_center_axes(op); break;
+        case Operation::Kind::material:
+        case Operation::Kind::texture: parse_appearance_name(op); break;
+        case Operation::Kind::insert: parse_insert(op); break;
+        case Operation::Kind::color:
+            if (peek(1).kind == Token::Kind::text) {
+                parse_colour_text(op);
+                break;
             }
-            if (is(",")) {
-                take();
-                op.arguments.push_back({Size::Kind::absolute, parse_expression()});
-            }
-            expect(")");
-            return op;
+            [[fallthrough]];
+        default: parse_numeric_arguments(op, name);
         }
-        if (name == "color" && peek(1).kind == Token::Kind::text) {
-            op.kind = Operation::Kind::color;
-            take();
-            SourcePlace at = peek().place;
+        return op;
+    }
+
+    // split(axis) { entries } or comp(f) { entries }.
+    void parse_split_header(Operation& op) {
+        const bool split = op.kind == Operation::Kind::split;
+        expect("(");
+        op.name = expect_identifier(split ? "an axis x, y or z" : "'f' (faces)");
+        if (split && op.name != "x" && op.name != "y" && op.name != "z")
+            throw_grammar_error(file_, op.place, "split needs one axis: x, y or z");
+        if (!split && op.name != "f") throw_grammar_error(file_, op.place, "comp takes 'f' (faces)");
+        expect(")");
+        expect("{");
+        op.entries = split ? parse_split_entries(true) : parse_component_entries();
+        expect("}");
+    }
+
+    void parse_center_axes(Operation& op) {
+        expect("(");
+        op.name = expect_identifier("axes such as x, xz or xyz");
+        if (op.name.find_first_not_of("xyz") != std::string::npos)
+            throw_grammar_error(file_, op.place, "center takes axes made of x, y and z");
+        expect(")");
+    }
+
+    // material(name) or texture(name), a name the project knows.
+    void parse_appearance_name(Operation& op) {
+        const bool material = op.kind == Operation::Kind::material;
+        expect("(");
+        SourcePlace at = peek().place;
+        op.name = expect_identifier(material ? "a material name" : "a texture name");
+        bool known = material ? is_material_name(op.name) : (is_texture_name(op.name) || op.name == "none");
+        if (!known)
+            throw_grammar_error(file_, at, std::string("unknown ") + (material ? "material" : "texture") + " '" + op.name +
+                                               "' (known: " + (material ? material_names() : texture_names() + ", none") + ")");
+        expect(")");
+    }
+
+    // i(primitive [, segments]) or i("asset file" [, segments]).
+    void parse_insert(Operation& op) {
+        expect("(");
+        SourcePlace at = peek().place;
+        if (peek().kind == Token::Kind::text) {
             op.name = take().text;
             op.name_is_text = true;
-            if (op.name.size() != 7 || op.name[0] != '#' || op.name.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
-                throw_grammar_error(file_, at, "expected a colour \"#rrggbb\"");
-            expect(")");
-            return op;
+        } else {
+            op.name = expect_identifier("a primitive (" + builtin_primitive_names() + ") or a \"file\"");
+            if (!is_builtin_primitive(op.name))
+                throw_grammar_error(file_, at, "unknown primitive '" + op.name + "' (known: " + builtin_primitive_names() +
+                                                   "; put asset files in quotes)");
         }
-        op.kind = name == "extrude" ? Operation::Kind::extrude
-                : name == "t"       ? Operation::Kind::translate
-                : name == "r"       ? Operation::Kind::rotate
-                : name == "s"       ? Operation::Kind::scale
-                                    : Operation::Kind::color;
+        if (is(",")) {
+            take();
+            op.arguments.push_back({Size::Kind::absolute, parse_expression()});
+        }
+        expect(")");
+    }
+
+    // color("#rrggbb").
+    void parse_colour_text(Operation& op) {
+        take();
+        SourcePlace at = peek().place;
+        op.name = take().text;
+        op.name_is_text = true;
+        if (op.name.size() != 7 || op.name[0] != '#' || op.name.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
+            throw_grammar_error(file_, at, "expected a colour \"#rrggbb\"");
+        expect(")");
+    }
+
+    // extrude([axis,] height), t/r/s(x, y, z) (t and s may be 'relative), color(r, g, b).
+    void parse_numeric_arguments(Operation& op, const std::string& name) {
         if (op.kind == Operation::Kind::extrude && peek(1).kind == Token::Kind::identifier &&
             (peek(1).text == "x" || peek(1).text == "y" || peek(1).text == "z") && peek(2).text == ",") {
             take();
@@ -350,7 +368,7 @@ private:
             take();
             op.arguments.push_back({Size::Kind::absolute, parse_expression()});
             expect(")");
-            return op;
+            return;
         }
         bool relative = op.kind == Operation::Kind::translate || op.kind == Operation::Kind::scale;
         op.arguments = parse_arguments(relative);
@@ -358,7 +376,6 @@ private:
         if (op.arguments.size() != wanted)
             throw_grammar_error(file_, op.place, name + " takes " + std::to_string(wanted) + " argument" +
                                                      (wanted == 1 ? "" : "s") + ", got " + std::to_string(op.arguments.size()));
-        return op;
     }
 
     // '(' [size {',' size}] ')'; sizes may be 'relative when `relative` is set.
@@ -412,10 +429,11 @@ private:
         for (;;) {
             SplitEntry entry;
             entry.place = peek().place;
-            entry.selector = expect_identifier("a face selector (front, back, left, right, top, bottom, side, vertical, horizontal, all)");
-            if (!selectors.count(entry.selector))
-                throw_grammar_error(file_, entry.place, "unknown face selector '" + entry.selector +
-                                                            "' (known: front, back, left, right, top, bottom, side, vertical, horizontal, all)");
+            const std::string selector = expect_identifier("a face selector (" + enum_names(face_selectors()) + ")");
+            entry.selector = enum_from_name(face_selectors(), selector);
+            if (!entry.selector)
+                throw_grammar_error(file_, entry.place,
+                                    "unknown face selector '" + selector + "' (known: " + enum_names(face_selectors()) + ")");
             expect(":");
             entry.successor = parse_sequence();
             entries.push_back(std::move(entry));
@@ -536,7 +554,7 @@ struct Checker {
     }
 
     void split_entry(const SplitEntry& entry, const std::vector<std::string>& parameters) const {
-        if (entry.selector.empty() && entry.repeated.empty()) expression(entry.size.value, parameters);
+        if (!entry.selector && entry.repeated.empty()) expression(entry.size.value, parameters);
         sequence(entry.successor, parameters);
         for (const SplitEntry& inner : entry.repeated) split_entry(inner, parameters);
     }

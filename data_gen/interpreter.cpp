@@ -48,15 +48,6 @@ bool find_attribute(const Attributes& attributes, const std::string& name, doubl
     return false;
 }
 
-// Which faces a component-split selector takes.
-bool selects(const std::string& selector, const std::string& face) {
-    if (selector == face || selector == "all") return true;
-    bool vertical = face != "top" && face != "bottom";
-    if (selector == "vertical") return vertical;
-    if (selector == "horizontal") return !vertical;
-    return selector == "side" && (face == "left" || face == "right");
-}
-
 class Interpreter {
 public:
     Interpreter(const Grammar& grammar, std::uint64_t seed, Model& model, MaterialCache& materials, const DerivationLimits& limits)
@@ -246,7 +237,7 @@ private:
             if (face.width <= 1e-6f || face.height <= 1e-6f) continue;
             const SplitEntry* taken = nullptr;
             for (const SplitEntry& entry : op.entries)
-                if (!taken && selects(entry.selector, face.name)) taken = &entry;
+                if (!taken && entry.selector && selects(*entry.selector, face.name)) taken = &entry;
             if (!taken) continue;
             Shape part = shape;
             part.scope.origin = shape.scope.to_world(face.origin);

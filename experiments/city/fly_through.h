@@ -14,7 +14,7 @@
 #include "toolkit/lod/level_modes.h"
 #include "toolkit/selection/lod_selection.h"
 #include "toolkit/drawing/packed_drawable.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <cstdio>
 #include <functional>

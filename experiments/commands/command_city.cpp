@@ -10,7 +10,7 @@
 #include "experiments/metrics/flip.h"
 #include "experiments/city/fly_through.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 #include "toolkit/selection/strategy_text.h"
 
 #include <cmath>

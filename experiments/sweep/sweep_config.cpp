@@ -8,7 +8,7 @@
 #include "data_gen/samples.h"
 #include "experiments/metrics/flip.h"
 #include "experiments/sweep/impostor.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <algorithm>
 #include <charconv>

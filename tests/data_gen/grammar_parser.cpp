@@ -62,7 +62,7 @@ TEST(GrammarParser, ComponentSplitPushAndScopeOperations) {
     const Operation& comp = g.rules[0].alternatives[0].body[0];
     EXPECT_EQ(comp.kind, Operation::Kind::component);
     ASSERT_EQ(comp.entries.size(), 2u);
-    EXPECT_EQ(comp.entries[0].selector, "front");
+    EXPECT_EQ(comp.entries[0].selector, FaceSelector::front);
     const Operation& push = comp.entries[0].successor[0];
     ASSERT_EQ(push.kind, Operation::Kind::push);
     ASSERT_EQ(push.body.size(), 4u);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The experiment workflow end to end on its smoke profile, in a temporary
 # folder: sweeps and city runs (boxlod), the notebooks executed headless, the
-# paper compiled. Checks the outputs: every file the paper \inputs or
+# paper compiled, the results document written. Checks the outputs: every file the paper \inputs or
 # \includegraphics exists and is not empty; the level-mode table has one row
 # per level mode of the sweep's CSV, the runs table one per job, the render
 # modes table one per model and mode, whose parallax rows pay for height
@@ -51,10 +51,10 @@ while read -r kind name; do
 done <<< "$includes"
 
 # Tables against the CSVs they come from; numbers are numbers.
-"$python" - "$out" <<'EOF' || failures=$((failures + 1))
+"$python" - "$out" "$repo" <<'EOF' || failures=$((failures + 1))
 import csv, glob, os, re, sys
 import yaml
-out = sys.argv[1]
+out, repo = sys.argv[1], sys.argv[2]
 generated = os.path.join(out, "paper", "generated")
 bad = 0
 def body_rows(name):
@@ -112,6 +112,17 @@ for chain, flat in (("manual_bytes", "manual_flat"), ("fzk_bytes", "fzk_flat")):
           and sum(with_flat.values()) < sum(without.values()),
           f"{flat}: top-down textures {sum(with_flat.values())} bytes against {sum(without.values())} without flat faces")
 check(len(body_rows("table_bytes")[0]) == 9, "table_bytes: a column for the chain with flat faces")
+# The results document: a section per notebook, each generated table with its rows, each figure linked.
+results = open(os.path.join(out, "results.md"), encoding="utf-8").read()
+notebooks = sorted(glob.glob(os.path.join(repo, "notebooks", "*.ipynb")))
+check(results.count("\n## ") == len(notebooks), f"results.md: a section per notebook ({len(notebooks)})")
+for path in sorted(glob.glob(os.path.join(generated, "table_*.tex"))):
+    stem = os.path.basename(path)[:-4]
+    block = results.split(f"*{stem}*:", 1)[1].split("\n\n", 2)[1] if f"*{stem}*:" in results else ""
+    check(len(block.splitlines()) == 2 + len(body_rows(stem)), f"results.md: {stem} with its {len(body_rows(stem))} rows")
+links = re.findall(r"!\[[^]]*\]\(([^)]+)\)", results)
+check(links and all(os.path.isfile(os.path.join(out, link)) for link in links), f"results.md: {len(links)} figures linked")
+check(not re.search(r"\\[A-Za-z]", results), "results.md: no LaTeX command left")
 for path in sorted(glob.glob(os.path.join(out, "notebooks", "*.ipynb"))):
     import json
     cells = json.load(open(path))["cells"]

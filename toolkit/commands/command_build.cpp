@@ -10,11 +10,11 @@
 #include "toolkit/model/cost.h"
 #include "toolkit/lod/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/level_sessions.h"
+#include "toolkit/lod/chain_sessions.h"
 #include "toolkit/formats/lod_export.h"
 #include "toolkit/selection/lod_switch.h"
 #include "toolkit/formats/model_io.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -71,7 +71,7 @@ KeyValues level_report(const std::string& name, const Lod& lod, const LodSession
 constexpr int max_chain_levels = 10;
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
-void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<int>& levels, ChainCost& chain) {
+void write_chain(const Arguments& a, ChainSessions& sessions, const std::vector<int>& levels, ChainCost& chain) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
     const Bounds bounds = model_bounds(sessions.model);
@@ -105,7 +105,7 @@ void write_chain(const Arguments& a, LevelSessions& sessions, const std::vector<
 // Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
 // partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
 // their bytes and the order of the output stay the same.
-void write_levels(const Arguments& a, LevelSessions& sessions, const std::string& name, const std::vector<int>& levels,
+void write_levels(const Arguments& a, ChainSessions& sessions, const std::string& name, const std::vector<int>& levels,
                   ChainCost& chain) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
     const Bounds bounds = model_bounds(sessions.model);
@@ -156,7 +156,7 @@ int run_build(const Arguments& a) {
     if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
     if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");
     int threads = a.integer("threads", 0);
-    LevelSessions sessions(model, parameters, threads);
+    ChainSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
     std::vector<int> levels;
     // Babylon.js loads at most 10 levels of MSFT_lod, the coarsest (its

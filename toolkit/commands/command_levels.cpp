@@ -9,7 +9,7 @@
 #include "toolkit/lod/level_modes.h"
 #include "toolkit/lod/lod_builder.h"
 #include "toolkit/formats/model_io.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <cstdio>
 

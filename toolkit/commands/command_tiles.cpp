@@ -7,7 +7,7 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/lod/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/level_sessions.h"
+#include "toolkit/lod/chain_sessions.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/lod/surface_deviation.h"
@@ -29,7 +29,7 @@ constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, heigh
 TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
                         bool keep_hierarchy, const std::string& folder) {
     Model model = extract_subtree(city, node);
-    LevelSessions sessions(model, parameters, 1);
+    ChainSessions sessions(model, parameters, 1);
     // Level c is drawn from d_c on, as a chain switches (auto distances), also
     // where --manual sizes every level at one distance.
     const std::vector<float> switches = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());

@@ -1,7 +1,7 @@
 #include "toolkit/commands/lod_options.h"
 
 #include "base/input_error.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -4,7 +4,7 @@
 // for parameters only), then every option given on the command line on top.
 #pragma once
 #include "base/command_line.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 #include "renderer/image.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <Eigen/Geometry>
 #include <charconv>

@@ -9,7 +9,7 @@
 #include "toolkit/lod/cut.h"
 #include "toolkit/lod/error_greedy.h"
 #include "toolkit/lod/hybrid.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 #include "toolkit/lod/texture_sizing.h"
 
 #include <map>
@@ -61,7 +61,7 @@ struct LodSession {
 // Throws InputError for an LoD model (boxlod does not simplify its own output) or bad parameters.
 // `boxes`, when given, are the model's node_boxes for parameters.box_kind (computed once, reused).
 // `measurements`, when given, are shared with the sessions of the same model at
-// other distances (level mode hybrid: level_sessions.h).
+// other distances (level mode hybrid: chain_sessions.h).
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
                                       const std::vector<std::optional<OrientedBox>>* boxes = nullptr,
                                       HybridMeasurements* measurements = nullptr);

@@ -5,7 +5,7 @@
 #include "lod_scene.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/error_greedy.h"
-#include "toolkit/lod/level_sessions.h"
+#include "toolkit/lod/chain_sessions.h"
 #include "toolkit/formats/lod_export.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
@@ -377,7 +377,7 @@ TEST(LodGolden, FzkHausDefaultChain) {
     Model model = load_model(test::fzk_haus_ifc);
     LodParameters p;
     p.resolution = 128;
-    LevelSessions sessions(model, p, 2);
+    ChainSessions sessions(model, p, 2);
     sessions.distances = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
     for (int c : {2, 4}) {
         Lod lod = build_lod(sessions.for_level(c), c, 2);

@@ -1,6 +1,6 @@
 #include "toolkit/lod/lod_parameters.h"
 
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <gtest/gtest.h>
 

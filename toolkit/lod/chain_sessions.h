@@ -18,7 +18,7 @@ namespace boxlod {
 // [0.001, 1e6] m); throws InputError naming --level-distances.
 std::vector<float> level_distances(const std::string& text, float distance, int levels);
 
-struct LevelSessions {
+struct ChainSessions {
     const Model& model;
     int threads;
     std::shared_ptr<HybridMeasurements> measurements;  // level mode hybrid: made once, reused at every distance
@@ -26,7 +26,7 @@ struct LevelSessions {
     std::vector<float> distances;       // of levels 1..N; empty: every level at the first's distance
     std::map<float, std::unique_ptr<LodSession>> sized;
 
-    LevelSessions(const Model& model, const LodParameters& parameters, int threads);
+    ChainSessions(const Model& model, const LodParameters& parameters, int threads);
     int obtained_levels() const { return first->derived.levels.obtained_levels; }
     LodSession& for_level(int level);
     LodTimes times() const;  // summed over every session

@@ -1,4 +1,4 @@
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include "base/input_error.h"
 #include "test_support.h"

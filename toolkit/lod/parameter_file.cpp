@@ -1,4 +1,4 @@
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include "base/atomic_write.h"
 #include "base/input_error.h"

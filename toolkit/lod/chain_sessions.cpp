@@ -1,8 +1,8 @@
-#include "toolkit/lod/level_sessions.h"
+#include "toolkit/lod/chain_sessions.h"
 
 #include "base/input_error.h"
 #include "base/key_values.h"
-#include "toolkit/lod/parameters.h"
+#include "toolkit/lod/parameter_file.h"
 
 #include <cmath>
 
@@ -30,12 +30,12 @@ std::vector<float> level_distances(const std::string& text, float distance, int 
     return distances;
 }
 
-LevelSessions::LevelSessions(const Model& model, const LodParameters& parameters, int threads)
+ChainSessions::ChainSessions(const Model& model, const LodParameters& parameters, int threads)
     : model(model), threads(threads),
       measurements(parameters.level_mode == LevelMode::hybrid ? make_hybrid_measurements(model) : nullptr),
       first(start_lod(model, parameters, threads, nullptr, measurements.get())) {}
 
-LodSession& LevelSessions::for_level(int level) {
+LodSession& ChainSessions::for_level(int level) {
     // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan made once.
     if (distances.empty() || level == 0 || distances[std::size_t(level - 1)] == first->input.parameters.distance) return *first;
     std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
@@ -47,7 +47,7 @@ LodSession& LevelSessions::for_level(int level) {
     return *session;
 }
 
-LodTimes LevelSessions::times() const {
+LodTimes ChainSessions::times() const {
     LodTimes t = first->times;
     for (const auto& [distance, session] : sized) {
         t.levels += session->times.levels;  // each distance plans its own levels (hybrid measures again)
