@@ -86,7 +86,6 @@ struct Operation {
 // rule symbols are not in it).
 std::span<const EnumEntry<Operation::Kind>> operation_kinds();
 
-
 // One way a rule can go: always, with a probability (percent), or when a
 // condition holds (`case`), or `else`.
 struct Alternative {

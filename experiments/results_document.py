@@ -17,26 +17,28 @@ DROPPED = {"cite", "label"}
 SYMBOLS = {"le": "≤", "leq": "≤", "ge": "≥", "geq": "≥", "times": "×", "propto": "∝", "infty": "∞",
            "in": "∈", "phi": "φ", "lceil": "⌈", "rceil": "⌉", "min": "min", "max": "max",
            "dots": "…", "ldots": "…", "FLIP": "FLIP", "centering": ""}
-ESCAPED = {"%": "%", "_": "_", "&": "&", "#": "#", "$": "$", "{": "{", "}": "}"}
+ESCAPED = {"%": "%", "_": "_", "&": "&", "#": "#", "$": "$", "{": "{", "}": "}", " ": " ", "\n": " "}
 
 
 def braced(text, start):
     """The text inside the braces opening at text[start], and the index after them."""
     if start >= len(text) or text[start] != "{":
         raise ValueError(f"expected '{{' in {text[max(0, start - 30):start + 30]!r}")
-    depth = 0
-    for i in range(start, len(text)):
-        if text[i] == "{" and (i == 0 or text[i - 1] != "\\"):
-            depth += 1
-        elif text[i] == "}" and text[i - 1] != "\\":
-            depth -= 1
-            if depth == 0:
-                return text[start + 1:i], i + 1
+    depth, i = 0, start
+    while i < len(text):
+        if text[i] == "\\":  # an escaped character or a command: no brace of the group
+            i += 2
+            continue
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        if depth == 0:
+            return text[start + 1:i], i + 1
+        i += 1
     raise ValueError(f"unbalanced braces in {text[start:start + 60]!r}")
 
 
 def without_comments(tex):
-    return re.sub(r"(?<!\\)%.*", "", tex)
+    """The text without % comments (an escaped \\% and the pair \\\\ stay)."""
+    return re.sub(r"(\\.)|%.*", lambda m: m.group(1) or "", tex)
 
 
 def plain(tex, macros, references):
@@ -46,7 +48,10 @@ def plain(tex, macros, references):
     while i < len(tex):
         c = tex[i]
         if c == "\\":
-            name = re.match(r"[A-Za-z]+|.", tex[i + 1:]).group(0)
+            name = re.match(r"[A-Za-z]+|.", tex[i + 1:], re.S)
+            if not name:
+                raise ValueError(f"a lone backslash at the end of {tex.strip()[-80:]!r}")
+            name = name.group(0)
             i += 1 + len(name)
             if name == ",":
                 out.append("," if out and out[-1][-1:].isdigit() and tex[i:i + 1].isdigit() else " ")
@@ -54,13 +59,19 @@ def plain(tex, macros, references):
                 out.append(ESCAPED[name])
             elif name == "\\":
                 out.append(" ")
+            elif name == "textbackslash":  # as notebooks/boxlod_results.py escapes a backslash
+                out.append("\\")
+                if tex[i:i + 2] == "{}":
+                    i += 2
             elif name in WRAPPERS or name in DROPPED or name in ("ref", "reflectbox"):
                 argument, i = braced(tex, i)
                 if name in WRAPPERS:
                     mark = WRAPPERS[name]
                     out.append(mark + plain(argument, macros, references) + mark)
                 elif name == "ref":
-                    out.append(references.get(argument, argument))
+                    if argument not in references:
+                        raise ValueError(f"\\ref to {argument!r}, a label of no table or figure")
+                    out.append(references[argument])
                 elif name == "reflectbox":
                     out.append(plain(argument, macros, references))
             elif name in SYMBOLS or name in macros:
@@ -95,31 +106,42 @@ def floats(paper_tex):
     generated file it inputs or includes."""
     text = without_comments(paper_tex)
     found = {}
-    for match in re.finditer(r"\\begin\{(table|figure)\}(.*?)\\end\{\1\}", text, re.S):
+    for match in re.finditer(r"\\begin\{((?:table|figure)\*?)\}(.*?)\\end\{\1\}", text, re.S):
         body = match.group(2)
         stems = re.findall(r"\\(?:input|includegraphics(?:\[[^]]*\])?)\{([^}]+)\}", body)
         caption_at = body.find("\\caption")
         if not stems or caption_at < 0:
             continue
-        caption, _ = braced(body, caption_at + len("\\caption"))
+        after = re.match(r"\\caption(\[[^]]*\])?", body[caption_at:]).end()
+        caption, _ = braced(body, caption_at + after)
         label = re.search(r"\\label\{([^}]+)\}", body)
         for stem in stems:
-            found[stem] = (caption, label.group(1) if label else None)
+            found[os.path.basename(stem)] = (caption, label.group(1) if label else None)
     return found
 
 
+def references_of(captions):
+    """label -> how a \\ref to it reads: the stem of what its float shows."""
+    return {label: f"*{stem}*" for stem, (_, label) in captions.items() if label}
+
+
 def table_rows(tex):
-    """The header and body rows of a booktabs table as the notebooks write it."""
+    """The header, the body rows and the note after the tabular (as
+    write_table in notebooks/boxlod_results.py writes them) of a booktabs table."""
     text = without_comments(tex)
     try:
-        head = text.split("\\toprule", 1)[1].split("\\midrule", 1)
-        body = head[1].split("\\bottomrule", 1)[0]
-    except IndexError:
-        raise ValueError("a table without \\toprule, \\midrule and \\bottomrule")
+        head, rest = text.split("\\toprule", 1)[1].split("\\midrule", 1)
+        body, tail = rest.split("\\bottomrule", 1)
+        note = tail.split("\\end{tabular}", 1)[1].strip()
+    except (IndexError, ValueError):
+        raise ValueError("a table without \\toprule, \\midrule, \\bottomrule and \\end{tabular}")
     def rows(part):
-        return [[cell.strip() for cell in line.split(" & ")]
-                for line in (l.strip() for l in part.split("\\\\")) if line]
-    return rows(head[0])[0], rows(body)
+        return [[cell.strip() for cell in re.split(r"(?<!\\)&", line)]
+                for line in (l.strip() for l in re.split(r"\\\\", part)) if line]
+    header, body_rows = rows(head), rows(body)
+    if len(header) != 1 or any(len(row) != len(header[0]) for row in body_rows):
+        raise ValueError(f"a table whose header is not one row or whose rows differ in length: {header}")
+    return header[0], body_rows, note
 
 
 def markdown_table(header, rows):
@@ -145,7 +167,7 @@ def document(notebooks, generated, notebook_dir, paper_tex, figure_folder):
                for outputs in notebooks.values() for p in outputs if stem_of(p).startswith("numbers_")]
     macros = macro_values(numbers)
     captions = floats(paper_tex)
-    references = {label: f"*{stem}*" for stem, (_, label) in captions.items() if label}
+    references = references_of(captions)
     lines = ["# Results", "",
              "Generated by the workflow (experiments/Snakefile, rule `results`) from the files the "
              "notebooks wrote for the paper; do not edit. Each section is one notebook; its tables "
@@ -159,15 +181,20 @@ def document(notebooks, generated, notebook_dir, paper_tex, figure_folder):
             if stem in seen:
                 continue
             seen.add(stem)
-            caption = plain(captions[stem][0], macros, references) if stem in captions else stem
             if stem.startswith("numbers_"):
                 values = macro_values([os.path.join(generated, stem + ".tex")])
                 rows = [[f"`{key}`", plain(value, macros, references)] for key, value in values.items()]
                 lines += ["Numbers the paper quotes:", "", markdown_table(["name", "value"], rows), ""]
-            elif stem.startswith("table_"):
-                header, rows = table_rows(open(os.path.join(generated, stem + ".tex"), encoding="utf-8").read())
+                continue
+            if stem not in captions:
+                raise ValueError(f"{stem}: no table or figure of the paper shows it, so it has no caption")
+            caption = plain(captions[stem][0], macros, references)
+            if stem.startswith("table_"):
+                header, rows, note = table_rows(open(os.path.join(generated, stem + ".tex"), encoding="utf-8").read())
                 convert = lambda cells: [plain(cell, macros, references) for cell in cells]
                 lines += [f"*{stem}*: {caption}", "", markdown_table(convert(header), [convert(r) for r in rows]), ""]
+                if note:
+                    lines += [plain(note, macros, references), ""]
             else:
                 lines += [f"![{stem}]({figure_folder}/{stem}.png)", "", f"*{stem}*: {caption}", ""]
     return "\n".join(lines)

@@ -121,7 +121,9 @@ for path in sorted(glob.glob(os.path.join(generated, "table_*.tex"))):
     block = results.split(f"*{stem}*:", 1)[1].split("\n\n", 2)[1] if f"*{stem}*:" in results else ""
     check(len(block.splitlines()) == 2 + len(body_rows(stem)), f"results.md: {stem} with its {len(body_rows(stem))} rows")
 links = re.findall(r"!\[[^]]*\]\(([^)]+)\)", results)
-check(links and all(os.path.isfile(os.path.join(out, link)) for link in links), f"results.md: {len(links)} figures linked")
+figures = glob.glob(os.path.join(generated, "*.png"))
+check(len(links) == len(figures) and all(os.path.isfile(os.path.join(out, link)) for link in links),
+      f"results.md: {len(links)} figures linked, of {len(figures)}")
 check(not re.search(r"\\[A-Za-z]", results), "results.md: no LaTeX command left")
 for path in sorted(glob.glob(os.path.join(out, "notebooks", "*.ipynb"))):
     import json
