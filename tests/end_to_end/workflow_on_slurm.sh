@@ -57,7 +57,10 @@ ok "the same profile locally in $(( $(date +%s) - start )) s"
 # Every job went through the scheduler: Snakemake submitted each job it ran but
 # the local rules, and every job that records its host ran inside a SLURM job.
 ran=$(awk '/^Job stats:/ {on = 1; next} on && $1 == "total" {print $2; exit}' "$work/slurm.txt")
-local_jobs=$(awk '/^Job stats:/ {on = 1; next} on && ($1 == "all" || $1 == "profile" || $1 == "sweep_config") {n += $2} on && $1 == "total" {print n + 0; exit}' "$work/slurm.txt")
+# The local rules as the Snakefile's `localrules:` line names them.
+local_rules=$(sed -n 's/^localrules:[[:space:]]*//p' "$repo/experiments/Snakefile" | tr -d ' ')
+local_jobs=$(awk -v rules="$local_rules" 'BEGIN {split(rules, r, ","); for (k in r) local[r[k]] = 1}
+  /^Job stats:/ {on = 1; next} on && ($1 in local) {n += $2} on && $1 == "total" {print n + 0; exit}' "$work/slurm.txt")
 submitted=$(grep -c 'has been submitted with SLURM jobid' "$work/slurm.txt")
 if [ -n "$ran" ] && [ "$submitted" -gt 0 ] && [ "$submitted" -eq $((ran - local_jobs)) ]; then
   ok "$submitted of $ran jobs submitted with sbatch (the other $local_jobs: local rules)"
