@@ -163,9 +163,9 @@ def stem_of(path):
 def document(notebooks, generated, notebook_dir, paper_tex, figure_folder):
     """The Markdown text: `notebooks` maps a notebook's name to its generated
     files; figures are linked inside `figure_folder` (relative to the document)."""
-    numbers = [os.path.join(generated, stem_of(p) + ".tex")
-               for outputs in notebooks.values() for p in outputs if stem_of(p).startswith("numbers_")]
-    macros = macro_values(numbers)
+    numbers = {stem_of(p): macro_values([os.path.join(generated, stem_of(p) + ".tex")])
+               for outputs in notebooks.values() for p in outputs if stem_of(p).startswith("numbers_")}
+    macros = {name: value for values in numbers.values() for name, value in values.items()}
     captions = floats(paper_tex)
     references = references_of(captions)
     lines = ["# Results", "",
@@ -182,8 +182,7 @@ def document(notebooks, generated, notebook_dir, paper_tex, figure_folder):
                 continue
             seen.add(stem)
             if stem.startswith("numbers_"):
-                values = macro_values([os.path.join(generated, stem + ".tex")])
-                rows = [[f"`{key}`", plain(value, macros, references)] for key, value in values.items()]
+                rows = [[f"`{key}`", plain(value, macros, references)] for key, value in numbers[stem].items()]
                 lines += ["Numbers the paper quotes:", "", markdown_table(["name", "value"], rows), ""]
                 continue
             if stem not in captions:
