@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -59,6 +60,9 @@ const std::string temporary_suffix = ".tmp";
 // An OutputFolder's staging folder: a name of its own, so that clearing what a
 // killed run left never removes a user's folder that happens to end in .tmpN.
 const std::string staging_suffix = ".boxlod-staging";
+// A group's commit journal (OutputGroup::commit), one in each folder the group writes to.
+const std::string journal_suffix = ".boxlod-commit";
+constexpr std::uintmax_t max_journal_bytes = 64 << 20;
 constexpr int max_unnamed_pending = 256;  // well below the usual limit of 1024 open files
 
 std::string named_temporary(const std::string& path, const std::string& suffix = temporary_suffix) {
@@ -80,11 +84,10 @@ Temporary new_temporary(const std::string& path, PartialOutputs& outputs) {
     return named;
 }
 
-// Into place at `path`, replacing what was there. An unnamed file is linked
-// under its named temporary first (a link cannot replace a file), then
-// renamed: only a kill between the two leaves a temporary. Mutex held.
-// The temporary is used up, placed or not (a failed link leaves it to discard()).
-void place(Temporary& temporary, const std::string& path, PartialOutputs& outputs) {
+// Under a name: an unnamed file is linked under its named temporary (a link
+// cannot replace a file), a named one has it already. Mutex held. Returns the
+// name; the temporary is used up (a failed link leaves it to discard()).
+std::string named(Temporary& temporary, const std::string& path, PartialOutputs& outputs) {
     std::string from = temporary.name;
     if (temporary.fd >= 0) {
         from = named_temporary(path);
@@ -97,6 +100,14 @@ void place(Temporary& temporary, const std::string& path, PartialOutputs& output
         ::close(temporary.fd);
         --outputs.unnamed_pending;
     }
+    temporary = {-1, from};
+    return from;
+}
+
+// Into place at `path`, replacing what was there: named, then renamed, so
+// only a kill between the two leaves a temporary. Mutex held.
+void place(Temporary& temporary, const std::string& path, PartialOutputs& outputs) {
+    const std::string from = named(temporary, path, outputs);
     temporary = {-1, ""};
     std::error_code error;
     fs::rename(from, path, error);
@@ -132,15 +143,84 @@ long temporary_owner(const std::string& filename, const std::string& suffix) {
 
 bool dead(long owner) { return owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH; }
 
-// Temporaries and staging folders of boxlod runs that no longer exist (killed with SIGKILL).
+// Completes the commit a killed run left half done: renames the temporaries
+// its journal lists, in the order listed, and removes the journal. The journal
+// is read back as input: a line that is not a temporary of that run in this
+// folder makes it no journal of ours, and its temporaries go (the old set stays).
+void complete_commit(const fs::path& journal, long owner) {
+    const std::string suffix = temporary_suffix + std::to_string(owner);
+    std::vector<std::string> names;
+    std::error_code error;
+    if (fs::file_size(journal, error) <= max_journal_bytes && !error) {
+        std::ifstream in(journal);
+        for (std::string name; std::getline(in, name);) {
+            const bool ours = name.size() > suffix.size() && name.find('/') == std::string::npos &&
+                              name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+            if (!ours) {
+                names.clear();
+                break;
+            }
+            names.push_back(name);
+        }
+    }
+    const fs::path folder = journal.parent_path();
+    for (const std::string& name : names)
+        if (fs::exists(folder / name, error)) fs::rename(folder / name, folder / name.substr(0, name.size() - suffix.size()), error);
+    fs::remove(journal, error);
+}
+
+// What boxlod runs that no longer exist (killed with SIGKILL) left: commits
+// half done are completed, then temporaries and staging folders removed.
 void remove_stale_temporaries(const fs::path& directory) {
     std::error_code error;
+    std::vector<std::pair<fs::path, long>> journals;
+    for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error))
+        if (const long owner = temporary_owner(it->path().filename().string(), journal_suffix); dead(owner))
+            journals.emplace_back(it->path(), owner);
+    for (const auto& [journal, owner] : journals) complete_commit(journal, owner);
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
         const std::string name = it->path().filename().string();
         std::error_code ignored;
         if (dead(temporary_owner(name, temporary_suffix))) fs::remove(it->path(), ignored);  // a file only
         if (dead(temporary_owner(name, staging_suffix))) fs::remove_all(it->path(), ignored);
     }
+}
+
+// A journal at `path` listing `names`, placed whole. Mutex held.
+void place_journal(const std::string& path, const std::string& names, PartialOutputs& outputs) {
+    Temporary temporary = new_temporary(path, outputs);
+    std::ofstream out(temporary.name, std::ios::binary);
+    out << names;
+    out.close();
+    if (!out) {
+        discard(temporary, outputs);
+        throw_input_error(path, "", "cannot write file");
+    }
+    place(temporary, path, outputs);
+}
+
+// In each folder the group writes to, a journal: empty while the files take
+// their temporaries' names (a kill then leaves the old set: nothing to
+// complete), then listing them in commit order. Mutex held. `journals`
+// gets each as soon as it is placed.
+void write_journals(PartialOutputs& outputs, std::vector<std::string>& journals) {
+    std::map<fs::path, std::string> listed;  // per folder, one temporary's name a line
+    for (const PendingRename& file : outputs.pending) listed[fs::path(file.path).parent_path()];
+    for (const auto& entry : listed) {
+        const std::string journal = (entry.first / (journal_suffix + std::to_string(::getpid()))).string();
+        place_journal(journal, "", outputs);
+        journals.push_back(journal);
+    }
+    for (PendingRename& file : outputs.pending) {
+        const fs::path from = named(file.temporary, file.path, outputs);
+        listed[fs::path(file.path).parent_path()] += from.filename().string() + "\n";
+    }
+    std::size_t k = 0;
+    for (const auto& entry : listed) place_journal(journals[k++], entry.second, outputs);
+}
+
+void remove_files(const std::vector<std::string>& files) {
+    for (const std::string& file : files) ::unlink(file.c_str());
 }
 
 std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }
@@ -243,9 +323,13 @@ void OutputGroup::commit() {
         return;
     }
     // Renamed in the order written, so the file naming the others (a .gltf) comes
-    // last; the interrupt thread cannot run between two renames (it needs the mutex).
+    // last; the interrupt thread cannot run between two renames (it needs the
+    // mutex). A kill during the renames leaves the journals, and the next run
+    // writing to the folder completes the set (remove_stale_temporaries).
+    std::vector<std::string> journals;
     std::size_t placed = 0;
     try {
+        if (outputs.pending.size() > 1) write_journals(outputs, journals);
         for (; placed < outputs.pending.size(); ++placed) {
             PendingRename& file = outputs.pending[placed];
             std::error_code error;
@@ -256,9 +340,11 @@ void OutputGroup::commit() {
             if (made) outputs.group_files.push_back(file.path);
         }
     } catch (...) {  // the destructor discards the rest and takes back what was placed
+        remove_files(journals);
         outputs.pending.erase(outputs.pending.begin(), outputs.pending.begin() + std::ptrdiff_t(placed));
         throw;
     }
+    remove_files(journals);
     outputs.pending.clear();
     outputs.group_files.clear();
     committed_ = true;

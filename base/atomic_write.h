@@ -23,8 +23,9 @@ void write_file_atomically(const std::string& path, std::span<const std::uint8_t
 void write_text_atomically(const std::string& path, const std::string& text);
 
 // Checked before any work, so a bad output path costs nothing: each throws
-// InputError "path: what" unless a file can be created there. Both also remove
-// the temporaries a killed run of boxlod left in that folder.
+// InputError "path: what" unless a file can be created there. Both also
+// complete the commits a killed run of boxlod left half done in that folder,
+// then remove its temporaries.
 void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder
 // ... and its name ends in one of `extensions` (".png"; case aside): a file
 // named .exr that holds PNG bytes misleads every reader after it.
@@ -36,8 +37,12 @@ void check_output_directory(const std::string& path);  // a folder that takes ne
 // in the order written (so the file naming the others goes last). A group
 // destroyed without commit() (an exception passing) removes its files; a kill
 // of any kind before the commit leaves nothing (at most 256 unnamed files wait
-// at once; later ones wait as named temporaries). Groups nest, the outermost
-// decides.
+// at once; later ones wait as named temporaries). The commit first gives
+// every file its temporary's name and lists them in a journal,
+// FOLDER/.boxlod-commitPID, so a kill during the renames leaves a set that
+// the next run writing to the folder completes (check_output_file); a kill
+// before the journal lists them leaves the old set. Groups nest, the
+// outermost decides.
 class OutputGroup {
 public:
     OutputGroup();

@@ -6,8 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
+#include <csignal>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -137,6 +141,101 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
     EXPECT_TRUE(fs::exists(folder / "kept.txt"));
     for (const auto& entry : fs::directory_iterator(folder))
         EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+// What a SIGKILL during a commit's renames leaves: some files of the new set
+// in place, the rest waiting as temporaries, and the journal listing them.
+// The next run writing to the folder completes the set; a temporary the
+// journal does not list (a file still being written) goes.
+TEST(AtomicWrite, TheNextRunCompletesACommitThatAKillCutShort) {
+    fs::path folder = test::scratch_folder("atomic_write_journal");
+    const std::string dead = ".tmp999999999";  // no process has this id
+    test::write_text(folder / "a.png", "new");  // renamed before the kill
+    test::write_text(folder / ("b.gltf" + dead), "new");
+    test::write_text(folder / "b.gltf", "old");
+    test::write_text(folder / ("c.png" + dead), "being written");
+    test::write_text(folder / ".boxlod-commit999999999", "a.png" + dead + "\nb.gltf" + dead + "\n");
+    check_output_file((folder / "other.png").string());
+    EXPECT_EQ(test::read_text(folder / "a.png"), "new");
+    EXPECT_EQ(test::read_text(folder / "b.gltf"), "new");
+    EXPECT_FALSE(fs::exists(folder / "c.png"));
+    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_TRUE(entry.path().filename() == "a.png" || entry.path().filename() == "b.gltf") << entry.path();
+}
+
+// The journal is read back as input: one that lists anything but the dead
+// run's temporaries in its folder is not ours, and the old set stays.
+TEST(AtomicWrite, AJournalListingOtherFilesRollsBack) {
+    fs::path folder = test::scratch_folder("atomic_write_bad_journal");
+    const std::string dead = ".tmp999999999";
+    test::write_text(folder / "b.gltf", "old");
+    test::write_text(folder / ("b.gltf" + dead), "new");
+    for (const std::string& line : {"../b.gltf" + dead, std::string("b.gltf.tmp12"), std::string("b.gltf")}) {
+        test::write_text(folder / ("b.gltf" + dead), "new");
+        test::write_text(folder / ".boxlod-commit999999999", "b.gltf" + dead + "\n" + line + "\n");
+        check_output_file((folder / "other.png").string());
+        EXPECT_EQ(test::read_text(folder / "b.gltf"), "old") << line;
+        EXPECT_FALSE(fs::exists(folder / ("b.gltf" + dead))) << line;
+        EXPECT_FALSE(fs::exists(folder / ".boxlod-commit999999999")) << line;
+    }
+}
+
+// Real SIGKILLs at moments spread over a run that writes 300 files (more than
+// wait unnamed) replacing an old set: half while it writes, half from the
+// moment its journal appears to past the end of its renames. After the next
+// run's check the folder holds the old set or the new one, whole, and nothing else.
+TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
+    fs::path folder = test::scratch_folder("atomic_write_killed");
+    constexpr int files = 300, kills = 12;
+    using Clock = std::chrono::steady_clock;
+    auto write_set = [&](const std::string& content) {
+        OutputGroup group;
+        for (int i = 0; i < files; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), content);
+        group.commit();
+    };
+    // Runs a child writing the new set; kills it `delay` seconds after the start,
+    // or after its journal appears; returns when the journal appeared (seconds from the start).
+    auto run_new_set = [&](std::optional<double> delay, bool after_journal) {
+        const auto start = Clock::now();
+        const pid_t child = ::fork();
+        if (child == 0) {
+            write_set("new");
+            std::_Exit(0);
+        }
+        const fs::path journal = folder / (".boxlod-commit" + std::to_string(child));
+        auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+        double journal_at = -1;
+        if (after_journal)
+            while (::waitpid(child, nullptr, WNOHANG) == 0 && !fs::exists(journal) && seconds() < 30) ::usleep(50);
+        if (after_journal) journal_at = seconds();
+        if (delay) {
+            ::usleep(useconds_t(*delay * 1e6));
+            ::kill(child, SIGKILL);
+        }
+        ::waitpid(child, nullptr, 0);
+        return std::pair{journal_at, seconds()};
+    };
+    write_set("old");
+    const auto [journal_at, end_at] = run_new_set(std::nullopt, true);  // unhurried: when the renames start and end
+    int outcomes[2] = {0, 0};
+    for (int k = 0; k < kills; ++k) {
+        write_set("old");
+        const double share = double(k % (kills / 2)) / (kills / 2);
+        if (k < kills / 2)
+            run_new_set(journal_at * share, false);
+        else
+            run_new_set((end_at - journal_at) * 1.2 * share, true);
+        check_output_file((folder / "other.txt").string());
+        const std::string first = test::read_text(folder / "0.txt");
+        std::size_t entries = 0;
+        for (const auto& entry : fs::directory_iterator(folder)) {
+            ++entries;
+            EXPECT_EQ(test::read_text(entry.path()), first) << entry.path() << " after kill " << k;
+        }
+        EXPECT_EQ(entries, std::size_t(files));
+        ++outcomes[first == "new"];
+    }
+    EXPECT_GT(outcomes[0], 0);  // killed before its journal: the old set
+    EXPECT_GE(outcomes[1], kills / 2);  // after it: the next run completed the new set
 }
 
 namespace {

@@ -224,7 +224,8 @@ check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
 
 # Kill safety: a build interrupted at any moment leaves whole levels and no
 # temporaries; one killed outright (SIGKILL) leaves whole levels and no
-# temporaries (files wait unnamed), or one that goes at the next run.
+# temporaries (files wait unnamed), or one that goes at the next run, or,
+# killed while placing a level, its journal, and the next run completes it.
 cat > "$work/whole_levels.py" <<'PY'
 import json, os, re, sys
 folder = sys.argv[1]
@@ -261,11 +262,13 @@ for moment in 1 2 3 4; do
   kill -KILL $build_pid
   wait $build_pid
   check "a build killed outright after ${moment} s leaves only whole levels" python3 "$work/whole_levels.py" "$work/killed"
-  # Files wait unnamed (O_TMPFILE): at most the one being renamed into place has a name.
-  check "and no temporary (at most the one file being placed)" bash -c "test \$(ls '$work/killed' 2>/dev/null | grep -c '\.tmp') -le 1"
+  # Files wait unnamed (O_TMPFILE): at most the one being renamed into place has a name, unless a level was being placed.
+  check "and no temporary (at most the one file being placed, or a level's with its journal)" \
+    bash -c "test \$(ls '$work/killed' 2>/dev/null | grep -c '\.tmp') -le 1 || ls -a '$work/killed' | grep -q '^\.boxlod-commit'"
 done
 check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/killed" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
-check "and removes the temporaries of the runs killed outright" bash -c "! ls '$work/killed' | grep -q '\.tmp'"
+check "and removes the temporaries of the runs killed outright" bash -c "! ls -a '$work/killed' | grep -q '\.tmp\|\.boxlod-commit'"
+check "and every level there is whole" python3 "$work/whole_levels.py" "$work/killed"
 
 # A tileset replaces the one in its folder in one step (OutputFolder): a
 # run killed outright at any moment leaves the old tileset or the new one,
