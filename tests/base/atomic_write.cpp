@@ -181,10 +181,11 @@ TEST(AtomicWrite, AJournalListingOtherFilesRollsBack) {
 
 // Real SIGKILLs at moments spread over a run that writes 300 files (more than
 // wait unnamed) replacing an old set: half while it writes, half from the
-// moment its journal appears to past the end of its renames. After the next
+// moment its journal lists them to past the end of its renames. After the next
 // run's check the folder holds the old set or the new one, whole, and nothing else.
 TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
-    fs::path folder = test::scratch_folder("atomic_write_killed");
+    // Its own folder: the sanitized build of these tests may run at the same time.
+    fs::path folder = test::scratch_folder("atomic_write_killed" + std::to_string(::getpid()));
     constexpr int files = 300, kills = 12;
     using Clock = std::chrono::steady_clock;
     auto write_set = [&](const std::string& content) {
@@ -192,8 +193,13 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         for (int i = 0; i < files; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), content);
         group.commit();
     };
+    // Whether the journal lists the files (it is empty while they take their names).
+    auto listing = [](const fs::path& journal) {
+        std::error_code error;
+        return fs::file_size(journal, error) > 0 && !error;
+    };
     // Runs a child writing the new set; kills it `delay` seconds after the start,
-    // or after its journal appears; returns when the journal appeared (seconds from the start).
+    // or after its journal lists the files; returns when that happened and when it ended (seconds from the start).
     auto run_new_set = [&](std::optional<double> delay, bool after_journal) {
         const auto start = Clock::now();
         const pid_t child = ::fork();
@@ -205,7 +211,7 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
         double journal_at = -1;
         if (after_journal)
-            while (::waitpid(child, nullptr, WNOHANG) == 0 && !fs::exists(journal) && seconds() < 30) ::usleep(50);
+            while (::waitpid(child, nullptr, WNOHANG) == 0 && !listing(journal) && seconds() < 30) ::usleep(50);
         if (after_journal) journal_at = seconds();
         if (delay) {
             ::usleep(useconds_t(*delay * 1e6));
@@ -234,8 +240,9 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         EXPECT_EQ(entries, std::size_t(files));
         ++outcomes[first == "new"];
     }
-    EXPECT_GT(outcomes[0], 0);  // killed before its journal: the old set
-    EXPECT_GE(outcomes[1], kills / 2);  // after it: the next run completed the new set
+    EXPECT_GT(outcomes[0], 0);          // killed at once: the old set
+    EXPECT_GE(outcomes[1], kills / 2);  // after the journal listed the files: the next run completed the new set
+    fs::remove_all(folder);
 }
 
 namespace {
