@@ -80,6 +80,11 @@ check(len(body_rows("table_runs")) == jobs, f"table_runs: one row per sweep and 
 models = {row["model"] for row in csv.DictReader(open(os.path.join(out, "sweeps", "buildings", "results.csv")))}
 check(models == set(profile["buildings"]), f"the buildings sweep has the profile's {len(profile['buildings'])} buildings")
 check(len(body_rows("table_models")) == 5 + len(profile["buildings"]), "table_models: the five models and each building")
+# The hybrid's targets count the real buildings and the samples: a row per model and budget.
+budget_models = [row["model"] for sweep in ("real_budgets", "sample_budgets")
+                 for row in csv.DictReader(open(os.path.join(out, "sweeps", sweep, "results.csv")))]
+check(len(body_rows("table_budgets")) == 4 * len(set(budget_models)) and "sample:house" in budget_models,
+      f"table_budgets: four budgets for each of the {len(set(budget_models))} real buildings and samples")
 check(len(body_rows("table_strategies")) == len(profile["city"]["strategies"]),
       "table_strategies: one row per strategy")
 render = list(csv.DictReader(open(os.path.join(out, "sweeps", "render_modes", "results.csv"))))
