@@ -10,12 +10,9 @@
 #include <cctype>
 #include <charconv>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace boxlod {
-
 namespace {
 
 struct Token {
@@ -515,8 +512,7 @@ private:
     }
 };
 
-// ---------------------------------------------------------------- checks
-
+// The checks after parsing: every name known, every arity right.
 struct Checker {
     const Grammar& grammar;
     std::set<std::string> attributes;  // those defined so far
@@ -577,10 +573,9 @@ void check(const Grammar& grammar) {
                 throw_grammar_error(grammar.file, alternative.place, "'else' must be the last alternative");
             if (a > 0 && alternative.kind != Alternative::Kind::otherwise && alternative.kind != rule.alternatives[0].kind)
                 throw_grammar_error(grammar.file, alternative.place, "do not mix 'N%' and 'case' alternatives in one rule");
-            if (alternative.kind == Alternative::Kind::probability) {
-                if (alternative.percent < 0) throw_grammar_error(grammar.file, alternative.place, "a probability cannot be negative");
-                total_percent += alternative.percent;
-            }
+            if (alternative.kind == Alternative::Kind::probability && alternative.percent < 0)
+                throw_grammar_error(grammar.file, alternative.place, "a probability cannot be negative");
+            if (alternative.kind == Alternative::Kind::probability) total_percent += alternative.percent;
             if (alternative.kind == Alternative::Kind::condition) checker.expression(alternative.condition, rule.parameters);
             checker.sequence(alternative.body, rule.parameters);
         }
