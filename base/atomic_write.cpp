@@ -151,7 +151,7 @@ void complete_commit(const fs::path& journal, long owner) {
     const std::string suffix = temporary_suffix + std::to_string(owner);
     std::vector<std::string> names;
     std::error_code error;
-    if (fs::file_size(journal, error) <= max_journal_bytes && !error) {
+    if (fs::is_regular_file(fs::symlink_status(journal, error)) && fs::file_size(journal, error) <= max_journal_bytes && !error) {
         std::ifstream in(journal);
         for (std::string name; std::getline(in, name);) {
             const bool ours = name.size() > suffix.size() && name.find('/') == std::string::npos &&
@@ -164,8 +164,9 @@ void complete_commit(const fs::path& journal, long owner) {
         }
     }
     const fs::path folder = journal.parent_path();
-    for (const std::string& name : names)
-        if (fs::exists(folder / name, error)) fs::rename(folder / name, folder / name.substr(0, name.size() - suffix.size()), error);
+    for (const std::string& name : names)  // our temporaries are plain files: no link, no folder is moved
+        if (fs::is_regular_file(fs::symlink_status(folder / name, error)))
+            fs::rename(folder / name, folder / name.substr(0, name.size() - suffix.size()), error);
     fs::remove(journal, error);
 }
 

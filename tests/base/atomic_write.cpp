@@ -177,6 +177,13 @@ TEST(AtomicWrite, AJournalListingOtherFilesRollsBack) {
         EXPECT_FALSE(fs::exists(folder / ("b.gltf" + dead))) << line;
         EXPECT_FALSE(fs::exists(folder / ".boxlod-commit999999999")) << line;
     }
+    // Only plain files are renamed: a listed folder or link stays where it is.
+    fs::create_directories(folder / ("sub" + dead));
+    fs::create_symlink("/etc/hostname", folder / ("link" + dead));
+    test::write_text(folder / ".boxlod-commit999999999", "sub" + dead + "\nlink" + dead + "\n");
+    check_output_file((folder / "other.png").string());
+    EXPECT_FALSE(fs::exists(folder / "sub"));
+    EXPECT_FALSE(fs::is_symlink(folder / "link"));
 }
 
 // Real SIGKILLs at moments spread over a run that writes 300 files (more than
