@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 // A file being written: unnamed (Linux O_TMPFILE), so that even SIGKILL leaves
 // nothing, and linked into place when complete; or, where the file system has
 // no unnamed files (or a group already holds many open), a named temporary
-// PATH.tmpPID that the next run in its folder removes if a kill left it.
+// PATH.boxlod-tmpPID that the next run in its folder removes if a kill left it.
 struct Temporary {
     int fd = -1;       // the unnamed file, or -1
     std::string name;  // what a writer opens: /proc/self/fd/N, or the named temporary
@@ -48,6 +48,7 @@ struct PartialOutputs {
     std::vector<PendingRename> pending;
     std::vector<std::string> group_files;
     std::set<std::string> staging_folders;  // of OutputFolders not yet committed
+    std::vector<fs::path> made_folders;     // by writes inside the open group: gone with it if left empty
     int open_groups = 0;
     int unnamed_pending = 0;  // unnamed files open (written, or waiting for their group)
 };
@@ -56,7 +57,8 @@ PartialOutputs& partial_outputs() {
     return outputs;
 }
 
-const std::string temporary_suffix = ".tmp";
+// Names no user would give a file: what a killed run left is removed by name.
+const std::string temporary_suffix = ".boxlod-tmp";
 // An OutputFolder's staging folder: a name of its own, so that clearing what a
 // killed run left never removes a user's folder that happens to end in .tmpN.
 const std::string staging_suffix = ".boxlod-staging";
@@ -132,7 +134,7 @@ void discard(const Temporary& temporary, PartialOutputs& outputs) {
     outputs.temporaries.erase(temporary.name);
 }
 
-// "name.png.tmp1234" -> 1234 (with `suffix` ".tmp"); 0 when the name is not one of ours.
+// "name.png.boxlod-tmp1234" -> 1234 (with `suffix` ".boxlod-tmp"); 0 when the name is not one of ours.
 long temporary_owner(const std::string& filename, const std::string& suffix) {
     std::size_t at = filename.rfind(suffix);
     if (at == std::string::npos || at + suffix.size() == filename.size()) return 0;
@@ -170,8 +172,8 @@ void complete_commit(const fs::path& journal, long owner) {
     fs::remove(journal, error);
 }
 
-// What boxlod runs that no longer exist (killed with SIGKILL) left: commits
-// half done are completed, then temporaries and staging folders removed.
+// What boxlod runs that no longer exist (killed with SIGKILL) left in the
+// folder outputs go to: commits half done are completed, then temporaries removed.
 void remove_stale_temporaries(const fs::path& directory) {
     std::error_code error;
     std::vector<std::pair<fs::path, long>> journals;
@@ -183,7 +185,6 @@ void remove_stale_temporaries(const fs::path& directory) {
         const std::string name = it->path().filename().string();
         std::error_code ignored;
         if (dead(temporary_owner(name, temporary_suffix))) fs::remove(it->path(), ignored);  // a file only
-        if (dead(temporary_owner(name, staging_suffix))) fs::remove_all(it->path(), ignored);
     }
 }
 
@@ -224,6 +225,19 @@ void remove_files(const std::vector<std::string>& files) {
     for (const std::string& file : files) ::unlink(file.c_str());
 }
 
+// The staging folders killed runs left beside `folder` (FOLDER.boxlod-stagingPID,
+// FOLDER.old.boxlod-stagingPID): those of this folder only, nothing else beside it.
+void remove_stale_staging_folders(const fs::path& folder) {
+    std::error_code error;
+    const std::string name = folder.filename().string();
+    for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end; it.increment(error)) {
+        const std::string entry = it->path().filename().string();
+        const bool of_this = entry.rfind(name + staging_suffix, 0) == 0 || entry.rfind(name + ".old" + staging_suffix, 0) == 0;
+        std::error_code ignored;
+        if (of_this && dead(temporary_owner(entry, staging_suffix))) fs::remove_all(it->path(), ignored);
+    }
+}
+
 std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }
 
 // Whether `directory` takes new files: the only sure test is to make one.
@@ -233,7 +247,6 @@ void check_writable_directory(const fs::path& directory, const std::string& path
     if (fd < 0) throw_input_error(path, "", std::string("cannot write here: ") + std::strerror(errno));
     ::close(fd);
     ::unlink(probe.c_str());
-    remove_stale_temporaries(directory);
 }
 
 }  // namespace
@@ -241,12 +254,16 @@ void check_writable_directory(const fs::path& directory, const std::string& path
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
     const fs::path folder = fs::path(path).parent_path();  // made here, as check_output_file allows
     std::error_code folder_error;
+    std::vector<fs::path> missing;  // the folders this write makes
+    for (fs::path p = folder; !p.empty() && !fs::exists(p, folder_error) && p != p.parent_path(); p = p.parent_path())
+        missing.push_back(p);
     if (!folder.empty()) fs::create_directories(folder, folder_error);
     if (folder_error) throw_input_error(path, "", "cannot make its folder: " + folder_error.message());
     PartialOutputs& outputs = partial_outputs();
     Temporary temporary;
     {
         std::lock_guard lock(outputs.mutex);
+        if (outputs.open_groups > 0) outputs.made_folders.insert(outputs.made_folders.end(), missing.begin(), missing.end());
         temporary = new_temporary(path, outputs);
     }
     try {
@@ -281,6 +298,8 @@ void check_folder_or_ancestor(const fs::path& wanted, const std::string& path) {
                                     : wanted == fs::path(path) ? "exists and is not a folder"
                                                                : quoted(wanted) + " is not a folder");
     check_writable_directory(existing, path);
+    // What a killed run left goes only from the folder the outputs go to, never from one above it.
+    if (existing == absolute) remove_stale_temporaries(existing);
 }
 
 }  // namespace
@@ -289,6 +308,9 @@ void check_output_file(const std::string& path) {
     std::error_code error;
     if (path.empty()) throw_input_error("''", "", "an empty file name where an output file was expected");
     if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
+    if (const std::size_t bytes = fs::path(path).filename().string().size(); bytes > max_output_name_bytes)
+        throw_input_error(path, "", "a file name of " + std::to_string(bytes) + " bytes, more than the " +
+                                        std::to_string(max_output_name_bytes) + " an output may have");
     fs::path directory = fs::path(path).parent_path();
     check_folder_or_ancestor(directory.empty() ? fs::path(".") : directory, path);
 }
@@ -307,6 +329,25 @@ void check_output_file(const std::string& path, std::initializer_list<std::strin
 void check_output_directory(const std::string& path) {
     if (path.empty()) throw_input_error("''", "", "an empty folder name where an output folder was expected");
     check_folder_or_ancestor(path, path);
+}
+
+void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& inputs,
+                          const std::vector<std::pair<std::string, std::string>>& outputs) {
+    std::vector<std::pair<std::string, fs::path>> seen;
+    auto same_file = [](const std::string& path) {
+        std::error_code error;
+        fs::path resolved = fs::weakly_canonical(path, error);
+        return error ? fs::absolute(path, error).lexically_normal() : resolved;
+    };
+    for (const auto& [option, path] : inputs)
+        if (!path.empty()) seen.emplace_back(option, same_file(path));
+    for (const auto& [option, path] : outputs) {
+        if (path.empty()) continue;
+        const fs::path file = same_file(path);
+        for (const auto& [earlier, earlier_file] : seen)
+            if (earlier_file == file) throw_input_error(path, "", option + " names the same file as " + earlier);
+        seen.emplace_back(option, file);
+    }
 }
 
 OutputGroup::OutputGroup() {
@@ -348,6 +389,7 @@ void OutputGroup::commit() {
     remove_files(journals);
     outputs.pending.clear();
     outputs.group_files.clear();
+    outputs.made_folders.clear();
     committed_ = true;
 }
 
@@ -363,6 +405,16 @@ OutputGroup::~OutputGroup() {
         }
         outputs.group_files.clear();
     }
+    if (outputs.open_groups == 1 && !committed_) {
+        // The folders its writes made, deepest first; each only if left empty.
+        std::sort(outputs.made_folders.begin(), outputs.made_folders.end(),
+                  [](const fs::path& a, const fs::path& b) { return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end()); });
+        for (const fs::path& folder : outputs.made_folders) {
+            std::error_code ignored;
+            fs::remove(folder, ignored);
+        }
+    }
+    if (outputs.open_groups == 1) outputs.made_folders.clear();
     --outputs.open_groups;
 }
 
@@ -403,7 +455,7 @@ OutputFolder::OutputFolder(const std::string& folder, const std::function<bool(c
         return;
     }
     fs::create_directories(absolute.parent_path(), error);
-    remove_stale_temporaries(absolute.parent_path());
+    remove_stale_staging_folders(absolute);
     path_ = named_temporary(folder_, staging_suffix);
     {
         PartialOutputs& outputs = partial_outputs();

@@ -9,6 +9,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace boxlod {
 
@@ -16,21 +18,29 @@ namespace boxlod {
 // If write throws, the temporary file is removed and the exception passes on;
 // a failed rename is an InputError naming path. temporary_path is
 // /proc/self/fd/N for an unnamed file, which a kill of any kind removes, else
-// PATH.tmpPID (also, for an instant, between linking and renaming).
+// PATH.boxlod-tmpPID (also, for an instant, between linking and renaming).
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
 void write_file_atomically(const std::string& path, std::span<const std::uint8_t> bytes);
 void write_text_atomically(const std::string& path, const std::string& text);
 
 // Checked before any work, so a bad output path costs nothing: each throws
-// InputError "path: what" unless a file can be created there. Both also
-// complete the commits a killed run of boxlod left half done in that folder,
-// then remove its temporaries.
-void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder
+// InputError "path: what" unless a file can be created there. Where the
+// folder exists, both also complete the commits a killed run of boxlod left
+// half done in it, then remove its temporaries; no folder above is touched.
+void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder; its name fits
+// The longest file name an output may have: the file system's 255 bytes less its temporary's suffix.
+constexpr std::size_t max_output_name_bytes = 255 - 24;
 // ... and its name ends in one of `extensions` (".png"; case aside): a file
 // named .exr that holds PNG bytes misleads every reader after it.
 void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions);
 void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
+// Outputs of one command, and the inputs it reads, name different files:
+// throws InputError "PATH: --B names the same file as --A" for the first
+// output of `outputs` ({option, path}, empty paths skipped) that names the
+// file of an earlier entry (of `inputs`, or of `outputs`).
+void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& inputs,
+                          const std::vector<std::pair<std::string, std::string>>& outputs);
 
 // Files that appear together or not at all: inside a group, atomic writes
 // leave their temporaries, and the outermost group's commit() renames them all

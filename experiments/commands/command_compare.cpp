@@ -60,6 +60,7 @@ int run_compare(const Arguments& arguments) {
     if (heatmap_metric != "flip" && heatmap_metric != "rmse")
         throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
     if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"), {".png"});
+    check_distinct_files({{"IMAGE_A", a_name}, {"IMAGE_B", b_name}}, {{"--heatmap", arguments.text("heatmap", "")}});
     double ppd = arguments.number("ppd", 67);
     int threads = arguments.integer("threads", 0);
 

@@ -66,13 +66,33 @@ TEST(AtomicWrite, AFileInAFolderThatDoesNotExistYetMakesItsFolder) {
 
 TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
     fs::path folder = test::scratch_folder("atomic_write_stale");
-    test::write_text(folder / "a.png.tmp999999999", "killed run");  // no process has this id
-    test::write_text(folder / ("b.png.tmp" + std::to_string(::getpid())), "this run");
+    test::write_text(folder / "a.png.boxlod-tmp999999999", "killed run");  // no process has this id
+    test::write_text(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid())), "this run");
     test::write_text(folder / "c.tmpfile", "not ours");
+    test::write_text(folder / "report.tmp999999999", "a user's, named like a temporary of other programs");
     check_output_file((folder / "a.png").string());
-    EXPECT_FALSE(fs::exists(folder / "a.png.tmp999999999"));
-    EXPECT_TRUE(fs::exists(folder / ("b.png.tmp" + std::to_string(::getpid()))));
+    EXPECT_FALSE(fs::exists(folder / "a.png.boxlod-tmp999999999"));
+    EXPECT_TRUE(fs::exists(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid()))));
     EXPECT_TRUE(fs::exists(folder / "c.tmpfile"));
+    EXPECT_TRUE(fs::exists(folder / "report.tmp999999999"));
+}
+
+// Only the folder the outputs go to is cleaned: an output folder not made
+// yet leaves the folder above it as it is (a user's files there, a journal,
+// a folder that looks like a staging folder of another output).
+TEST(AtomicWrite, NothingAboveTheOutputFolderIsTouched) {
+    fs::path parent = test::scratch_folder("atomic_write_parent");
+    test::write_text(parent / "notes.txt.boxlod-tmp999999999", "precious");
+    test::write_text(parent / ".boxlod-commit999999999", "notes.txt.boxlod-tmp999999999\n");
+    fs::create_directories(parent / "userdir.boxlod-staging999999999");
+    test::write_text(parent / "userdir.boxlod-staging999999999" / "data", "precious");
+    check_output_directory((parent / "out").string());
+    check_output_file((parent / "new" / "a.png").string());
+    { OutputFolder folder((parent / "tiles").string(), [](const std::string&) { return true; }); }
+    EXPECT_TRUE(fs::exists(parent / "notes.txt.boxlod-tmp999999999"));
+    EXPECT_FALSE(fs::exists(parent / "notes.txt"));
+    EXPECT_TRUE(fs::exists(parent / ".boxlod-commit999999999"));
+    EXPECT_TRUE(fs::exists(parent / "userdir.boxlod-staging999999999" / "data"));
 }
 
 TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
@@ -87,7 +107,7 @@ TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
     }
     EXPECT_EQ(test::read_text(folder / "a.png"), "page");
     EXPECT_EQ(test::read_text(folder / "b.gltf"), "names a.png");
-    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_EQ(entry.path().extension().string().find(".tmp"), std::string::npos);
+    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_EQ(entry.path().filename().string().find(".boxlod-tmp"), std::string::npos);
 }
 
 TEST(AtomicWrite, ManyFilesInAGroupWaitAsNamedTemporariesBeyondTheOpenFileBudget) {
@@ -96,14 +116,14 @@ TEST(AtomicWrite, ManyFilesInAGroupWaitAsNamedTemporariesBeyondTheOpenFileBudget
         OutputGroup group;
         for (int i = 0; i < 300; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), std::to_string(i));
         std::size_t named = 0;
-        for (const auto& entry : fs::directory_iterator(folder)) named += entry.path().string().find(".tmp") != std::string::npos;
+        for (const auto& entry : fs::directory_iterator(folder)) named += entry.path().string().find(".boxlod-tmp") != std::string::npos;
         EXPECT_EQ(named, 300u - 256u);  // the first 256 unnamed, the rest named
         group.commit();
     }
     std::size_t files = 0;
     for (const auto& entry : fs::directory_iterator(folder)) {
         ++files;
-        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos);
+        EXPECT_EQ(entry.path().string().find(".boxlod-tmp"), std::string::npos);
     }
     EXPECT_EQ(files, 300u);
     EXPECT_EQ(test::read_text(folder / "299.txt"), "299");
@@ -121,6 +141,13 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
     }
     EXPECT_FALSE(fs::exists(folder / "level.gltf"));
     EXPECT_TRUE(fs::exists(folder / "shared.png"));
+    try {  // the folders its writes made go with it
+        OutputGroup group;
+        write_text_atomically((folder / "made" / "deeper" / "a.txt").string(), "x");
+        throw std::runtime_error("the next file cannot be written");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_FALSE(fs::exists(folder / "made"));
     {
         OutputGroup outer;
         {
@@ -140,7 +167,7 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
     }
     EXPECT_TRUE(fs::exists(folder / "kept.txt"));
     for (const auto& entry : fs::directory_iterator(folder))
-        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+        EXPECT_EQ(entry.path().string().find(".boxlod-tmp"), std::string::npos) << entry.path();
 }
 
 // What a SIGKILL during a commit's renames leaves: some files of the new set
@@ -149,7 +176,7 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
 // journal does not list (a file still being written) goes.
 TEST(AtomicWrite, TheNextRunCompletesACommitThatAKillCutShort) {
     fs::path folder = test::scratch_folder("atomic_write_journal");
-    const std::string dead = ".tmp999999999";  // no process has this id
+    const std::string dead = ".boxlod-tmp999999999";  // no process has this id
     test::write_text(folder / "a.png", "new");  // renamed before the kill
     test::write_text(folder / ("b.gltf" + dead), "new");
     test::write_text(folder / "b.gltf", "old");
@@ -166,10 +193,10 @@ TEST(AtomicWrite, TheNextRunCompletesACommitThatAKillCutShort) {
 // run's temporaries in its folder is not ours, and the old set stays.
 TEST(AtomicWrite, AJournalListingOtherFilesRollsBack) {
     fs::path folder = test::scratch_folder("atomic_write_bad_journal");
-    const std::string dead = ".tmp999999999";
+    const std::string dead = ".boxlod-tmp999999999";
     test::write_text(folder / "b.gltf", "old");
     test::write_text(folder / ("b.gltf" + dead), "new");
-    for (const std::string& line : {"../b.gltf" + dead, std::string("b.gltf.tmp12"), std::string("b.gltf")}) {
+    for (const std::string& line : {"../b.gltf" + dead, std::string("b.gltf.boxlod-tmp12"), std::string("b.gltf")}) {
         test::write_text(folder / ("b.gltf" + dead), "new");
         test::write_text(folder / ".boxlod-commit999999999", "b.gltf" + dead + "\n" + line + "\n");
         check_output_file((folder / "other.png").string());

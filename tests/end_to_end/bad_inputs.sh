@@ -20,7 +20,7 @@
 #       option or key given after the command name (--x-y, also spelt x_y),
 #       the base name of a file or value given there, any --option, or a path,
 #   (d) leave nothing in @W or beside it, and nothing new or changed in @C or
-#       @D (outputs, temporaries such as *.tmp*).
+#       @D (outputs, temporaries such as *.boxlod-tmp*).
 set -u
 if [ $# -lt 2 ]; then
   echo "usage: $0 BOXLOD CORPUS_DIR [CASE_REGEX]" >&2

@@ -220,7 +220,7 @@ check "tiles gives the same bytes on two threads" bash -c "'$boxlod' tiles '$wor
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
 check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"
-check "no temporary files left behind" bash -c "! ls '$work' | grep -q tmp"
+check "no temporary files left behind" bash -c "! ls -a '$work' | grep -q 'boxlod-tmp\|boxlod-commit'"
 
 # Kill safety: a build interrupted at any moment leaves whole levels and no
 # temporaries; one killed outright (SIGKILL) leaves whole levels and no
@@ -230,7 +230,7 @@ cat > "$work/whole_levels.py" <<'PY'
 import json, os, re, sys
 folder = sys.argv[1]
 files = os.listdir(folder) if os.path.isdir(folder) else []  # interrupted before its first level
-levels = {m.group(1) for f in files if '.tmp' not in f for m in [re.match(r'(manual_lod_L\d+)[._]', f)] if m}
+levels = {m.group(1) for f in files if '.boxlod-tmp' not in f for m in [re.match(r'(manual_lod_L\d+)[._]', f)] if m}
 for level in levels:
     gltf = os.path.join(folder, level + '.gltf')
     if not os.path.exists(gltf):
@@ -252,7 +252,7 @@ wait $build_pid
 status=$?
 check "an interrupted build exits 143 (or had finished)" bash -c "test $status = 143 -o $status = 0"
 check "an interrupted build says so" bash -c "test $status = 0 || grep -q 'interrupted (signal 15); partial outputs removed' '$work/err'"
-check "an interrupted build leaves no temporary" bash -c "! ls '$work/interrupted' | grep -q '\.tmp'"
+check "an interrupted build leaves no temporary" bash -c "! ls -a '$work/interrupted' | grep -q 'boxlod-tmp\|boxlod-commit'"
 check "every level left is whole: its .gltf and every file it names" python3 "$work/whole_levels.py" "$work/interrupted"
 # Killed outright at several moments (so at least once while a level is written).
 for moment in 1 2 3 4; do
@@ -264,10 +264,10 @@ for moment in 1 2 3 4; do
   check "a build killed outright after ${moment} s leaves only whole levels" python3 "$work/whole_levels.py" "$work/killed"
   # Files wait unnamed (O_TMPFILE): at most the one being renamed into place has a name, unless a level was being placed.
   check "and no temporary (at most the one file being placed, or a level's with its journal)" \
-    bash -c "test \$(ls '$work/killed' 2>/dev/null | grep -c '\.tmp') -le 1 || ls -a '$work/killed' | grep -q '^\.boxlod-commit'"
+    bash -c "test \$(ls '$work/killed' 2>/dev/null | grep -c 'boxlod-tmp') -le 1 || ls -a '$work/killed' | grep -q '^\.boxlod-commit'"
 done
 check "the next run succeeds in the same folder" test "$(status_of "$boxlod" build "$work/manual.glb" -o "$work/killed" --level 2 --resolution 64 --preview-width 32 --preview-height 24)" = 0
-check "and removes the temporaries of the runs killed outright" bash -c "! ls -a '$work/killed' | grep -q '\.tmp\|\.boxlod-commit'"
+check "and removes the temporaries of the runs killed outright" bash -c "! ls -a '$work/killed' | grep -q 'boxlod-tmp\|boxlod-commit'"
 check "and every level there is whole" python3 "$work/whole_levels.py" "$work/killed"
 
 # A tileset replaces the one in its folder in one step (OutputFolder): a

@@ -16,6 +16,9 @@ static int run_render(const Arguments& arguments) {
     check_output_file(arguments.text("output"), {".png"});
     if (arguments.has("coverage")) check_output_file(arguments.text("coverage"), {".png"});
     if (arguments.has("exr")) check_output_file(arguments.text("exr"), {".exr"});
+    check_distinct_files({{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
+                         {{"--output", arguments.text("output")}, {"--coverage", arguments.text("coverage", "")},
+                          {"--exr", arguments.text("exr", "")}});
     Model model = load_model(arguments.positionals[0], arguments.integer("level", 0));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;

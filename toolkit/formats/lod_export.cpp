@@ -49,10 +49,9 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
                 const Image8& preview, int threads, bool binary) {
     namespace fs = std::filesystem;
     std::error_code error;
-    fs::create_directories(directory, error);
-    if (error) throw_input_error(directory, "", "cannot create the folder: " + error.message());
     // A level's files appear together or not at all: they wait as temporaries
-    // until the commit renames them, so even SIGKILL leaves no half level.
+    // until the commit renames them, so even SIGKILL leaves no half level; the
+    // folder is made by the first of them and goes with a failed group.
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     name_pages(lod, name);
