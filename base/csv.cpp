@@ -58,13 +58,29 @@ bool as_number(const std::string& field, double& value) {
     return error == std::errc() && end == field.data() + field.size();
 }
 
+// "" when `text` is UTF-8 without control characters (what boxlod writes), else what is wrong.
+std::string text_problem(const std::string& text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        if (byte < 0x20 || byte == 0x7f) return "a control character (byte " + std::to_string(byte) + ")";
+        // A lead byte and its continuation bytes (RFC 3629: C0, C1 and F5-FF never occur).
+        const int length = byte < 0x80 ? 1 : byte >= 0xc2 && byte <= 0xdf ? 2 : byte >= 0xe0 && byte <= 0xef ? 3
+                                       : byte >= 0xf0 && byte <= 0xf4 ? 4 : 0;
+        if (length == 0 || i + std::size_t(length) > text.size()) return "bytes that are not UTF-8";
+        for (int k = 1; k < length; ++k)
+            if ((static_cast<unsigned char>(text[i + std::size_t(k)]) & 0xc0) != 0x80) return "bytes that are not UTF-8";
+        i += std::size_t(length);
+    }
+    return "";
+}
+
 // "" when `field` is of `kind`, else what is wrong.
 std::string field_problem(const std::string& field, CsvValue kind) {
     if (field.size() > max_csv_field_bytes)
         return "a field of " + std::to_string(field.size()) + " bytes (at most " + std::to_string(max_csv_field_bytes) + ")";
     double value = 0;
     switch (kind) {
-        case CsvValue::text: return "";
+        case CsvValue::text: return text_problem(field);
         case CsvValue::count: return is_count(field) ? "" : "'" + field + "' is not a count (a whole number >= 0)";
         case CsvValue::optional_number:
             if (field.empty()) return "";

@@ -89,7 +89,7 @@ std::string this_build() {
 // settings.txt: what the folder's rows were made with (sweep_settings) and by
 // which build. A re-run with other settings or another build would skip rows
 // that no longer answer it. Written with the tables (write_tables).
-void check_settings(const fs::path& path, const std::string& settings) {
+void check_settings(const fs::path& path, const std::string& settings, const std::string& advice = "use another output folder") {
     if (!fs::exists(path)) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
     const std::vector<KeyValueLine> was = parse_key_value_lines(read_input_file(path.string(), "sweep settings"), path.string()),
                                     is = parse_key_value_lines(settings, "this sweep");
@@ -100,7 +100,7 @@ void check_settings(const fs::path& path, const std::string& settings) {
         if (k >= was.size() || k >= is.size() || was[k].key != is[k].key || was[k].value != is[k].value)
             throw_input_error(path.string(), k < was.size() ? "line " + std::to_string(was[k].line) : "",
                               "the rows here were made with " + text(was, k) + ", this sweep runs with " + text(is, k) +
-                                  "; use another output folder");
+                                  "; " + advice);
 }
 
 // A shard's rows into the merged table: a row two shards both hold must be the
@@ -149,6 +149,10 @@ void merge_shards(SweepOutput& out, const std::vector<std::string>& shard_folder
     for (const std::string& folder : shard_folders) {
         const fs::path results = fs::path(folder) / "results.csv";
         if (!fs::is_regular_file(results)) throw_input_error(results.string(), "", "no such shard results file");
+        // A shard of another sweep (settings or build) would merge rows that do not answer this one.
+        const fs::path settings = fs::path(folder) / "settings.txt";
+        if (!fs::is_regular_file(settings)) throw_input_error(settings.string(), "", "no such shard settings file");
+        check_settings(settings, out.settings, "merge only shards of this sweep");
         merge_rows(out.results, open_table(results.string(), out.results.columns));
         KeyedTable timings = open_table((fs::path(folder) / "timings.csv").string(), out.timings.columns);
         // Timings differ from run to run: the first shard's stand.

@@ -62,6 +62,11 @@ TEST(Csv, ATableReadBackRefusesWhatItsColumnsCannotHold) {
     EXPECT_EQ(refusal("house,12,1.5,,1\nhouse,12\n"), "results.csv: line 3: 2 fields, not 5");  // a cut row
     EXPECT_EQ(refusal(std::string(5000, 'x') + ",1,1,,1\n"), "results.csv: line 2: model: a field of 5000 bytes (at most 4096)");
     EXPECT_NE(refusal(std::string(1000000, 'x') + "\n").find("results.csv: line 2: a line of 1000000 bytes"), std::string::npos);
+    EXPECT_EQ(refusal(std::string("ho\0use,12,1.5,,1\n", 17)), "results.csv: line 2: model: a control character (byte 0)");
+    EXPECT_EQ(refusal("hou\tse,12,1.5,,1\n"), "results.csv: line 2: model: a control character (byte 9)");
+    EXPECT_EQ(refusal("ho\xffuse,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");
+    EXPECT_EQ(refusal("ho\xc3use,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");
+    EXPECT_EQ(refusal("Stra\xc3\x9f" "e,12,1.5,,1\n"), "");  // UTF-8 is text
     EXPECT_EQ(test::input_error_of([] { read_csv_table("some,other,columns\n1,2,3\n", "results.csv", table_columns); }),
               "results.csv: its columns are not model,faces,distance,error,psnr (a table of another run or kind)");
 }

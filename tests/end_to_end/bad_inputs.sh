@@ -99,10 +99,17 @@ damaged_sweep duplicate_row results.csv '2p'
 damaged_sweep timings_negative timings.csv '2s/,[^,]*$/,-1/'
 damaged_sweep settings_binary settings.txt '1s/$/\x01\x02/'
 damaged_sweep settings_cut settings.txt '3,$d'
+damaged_sweep nul_text results.csv '2s/top-down/top\x00down/'
+damaged_sweep binary_text results.csv '2s/^/\xff/'
+damaged_sweep timings_nul_text timings.csv '2s/top-down/top\x00down/'
 cp -r "$generated/sweep_made" "$generated/sweep_huge_field"
 /usr/bin/python3 -c 'import sys; p = sys.argv[1]; t = open(p).read().split("\n"); t[1] = "x" * 1000000 + t[1][t[1].index(","):]; open(p, "w").write("\n".join(t))' \
   "$generated/sweep_huge_field/results.csv"
 mkdir -p "$generated/sweep_shards_damaged" && cp -r "$generated/sweep_nan_metric" "$generated/sweep_shards_damaged/shard"
+mkdir -p "$generated/sweep_shards_other" && cp -r "$generated/sweep_made" "$generated/sweep_shards_other/shard" &&
+  sed -i 's/^width = .*/width = 999/' "$generated/sweep_shards_other/shard/settings.txt"
+mkdir -p "$generated/sweep_shards_unsettled" && cp -r "$generated/sweep_made" "$generated/sweep_shards_unsettled/shard" &&
+  rm "$generated/sweep_shards_unsettled/shard/settings.txt"
 
 # Everything in @C and @D, to notice files a case leaves there (directories by name only:
 # a temporary that was removed again changes a folder's time, not what it holds).
