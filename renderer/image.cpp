@@ -49,12 +49,18 @@ void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& 
     }
 }
 
+// stb's reason, or a general one where it gives none (as for some formats it knows only by name).
+std::string decode_failure() {
+    const char* reason = stbi_failure_reason();
+    return std::string("cannot decode image: ") + (reason && *reason ? reason : "not an image format boxlod reads");
+}
+
 // The header read before decoding: no allocation for a size the file only claims.
 void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
     int width = 0, height = 0, channels = 0;
     if (encoded.size() > std::size_t(std::numeric_limits<int>::max())) throw_input_error(name, "", "image file too large");
     if (!stbi_info_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels))
-        throw_input_error(name, "", std::string("cannot decode image: ") + stbi_failure_reason());
+        throw_input_error(name, "", decode_failure());
     if (width > max_image_side || height > max_image_side)
         throw_input_error(name, "", "image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than " +
                                         std::to_string(max_image_side) + " per side");
@@ -76,7 +82,7 @@ Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& na
     int width = 0, height = 0, channels_in_file = 0;
     stbi_uc* data = stbi_load_from_memory(encoded.data(), int(encoded.size()), &width, &height,
                                           &channels_in_file, 4);
-    if (!data) throw_input_error(name, "", std::string("cannot decode image: ") + stbi_failure_reason());
+    if (!data) throw_input_error(name, "", decode_failure());
     Image8 image(width, height, 4);
     std::copy(data, data + image.pixels.size(), image.pixels.begin());
     stbi_image_free(data);
@@ -143,7 +149,7 @@ Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string&
     check_image_header(encoded, name);
     int width = 0, height = 0, channels = 0;
     stbi_us* data = stbi_load_16_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels, 1);
-    if (!data) throw_input_error(name, "", std::string("cannot decode image: ") + stbi_failure_reason());
+    if (!data) throw_input_error(name, "", decode_failure());
     Image16 image(width, height, 1);
     std::copy(data, data + image.pixels.size(), image.pixels.begin());
     stbi_image_free(data);

@@ -151,7 +151,7 @@ void merge_shards(SweepOutput& out, const std::vector<std::string>& shard_folder
         if (!fs::is_regular_file(results)) throw_input_error(results.string(), "", "no such shard results file");
         // A shard of another sweep (settings or build) would merge rows that do not answer this one.
         const fs::path settings = fs::path(folder) / "settings.txt";
-        if (!fs::is_regular_file(settings)) throw_input_error(settings.string(), "", "no such shard settings file");
+        if (fs::exists(settings) && !fs::is_regular_file(settings)) throw_input_error(settings.string(), "", "is not a file");
         check_settings(settings, out.settings, "merge only shards of this sweep");
         merge_rows(out.results, open_table(results.string(), out.results.columns));
         KeyedTable timings = open_table((fs::path(folder) / "timings.csv").string(), out.timings.columns);

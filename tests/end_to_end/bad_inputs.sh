@@ -109,7 +109,7 @@ mkdir -p "$generated/sweep_shards_damaged" && cp -r "$generated/sweep_nan_metric
 mkdir -p "$generated/sweep_shards_other" && cp -r "$generated/sweep_made" "$generated/sweep_shards_other/shard" &&
   sed -i 's/^width = .*/width = 999/' "$generated/sweep_shards_other/shard/settings.txt"
 mkdir -p "$generated/sweep_shards_unsettled" && cp -r "$generated/sweep_made" "$generated/sweep_shards_unsettled/shard" &&
-  rm "$generated/sweep_shards_unsettled/shard/settings.txt"
+  rm "$generated/sweep_shards_unsettled/shard/settings.txt" && mkdir "$generated/sweep_shards_unsettled/shard/settings.txt"
 
 # Everything in @C and @D, to notice files a case leaves there (directories by name only:
 # a temporary that was removed again changes a folder's time, not what it holds).

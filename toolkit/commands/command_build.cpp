@@ -132,6 +132,16 @@ void write_levels(const Arguments& a, ChainSessions& sessions, const std::string
     writing.get();
 }
 
+// --name: one file name, whose longest file (NAME_L63_normal_99.png) still fits a file name.
+void check_base_name(const std::string& name) {
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos ||
+        std::any_of(name.begin(), name.end(), [](char c) { return (unsigned char)(c) < 0x20 || c == 0x7f; }))
+        throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
+    if (name.size() > max_output_name_bytes - 32)
+        throw InputError("--name: " + std::to_string(name.size()) + " bytes, more than the " +
+                         std::to_string(max_output_name_bytes - 32) + " its files' names leave");
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
@@ -149,13 +159,7 @@ int run_build(const Arguments& a) {
     }
     Model model = load_model(parameters.model);
     std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
-    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos ||
-        std::any_of(name.begin(), name.end(), [](char c) { return (unsigned char)(c) < 0x20 || c == 0x7f; }))
-        throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
-    // Its longest file, NAME_L63_normal_99.png, and the temporary that precedes it, must fit a file name.
-    if (name.size() > max_output_name_bytes - 32)
-        throw InputError("--name: " + std::to_string(name.size()) + " bytes, more than the " +
-                         std::to_string(max_output_name_bytes - 32) + " its files' names leave");
+    check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
     if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");

@@ -56,6 +56,9 @@ struct Reader {
         if (component_size <= 0 || components <= 0) fail(where, "unknown component or element type");
         std::size_t element = std::size_t(component_size) * components;
         std::size_t stride = buffer_view.byteStride ? buffer_view.byteStride : element;
+        // glTF 2.0 spec 3.6.2.4, Data Alignment: a stride of 4 to 252 bytes, a multiple of 4.
+        if (buffer_view.byteStride && (stride < 4 || stride > 252 || stride % 4 != 0))
+            fail(where, "byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
         if (stride < element) fail(where, "byteStride is smaller than an element");
         // Every size here comes from the file: checked against overflow before it is added.
         std::size_t needed = 0;
@@ -197,8 +200,11 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
     node.primitives.push_back(std::move(out));
 }
 
-int texture_image(const Reader& reader, int texture, const std::string& place) {
+// The image a material's texture samples (-1: none); boxlod reads TEXCOORD_0 only.
+int texture_image(const Reader& reader, int texture, int tex_coord, const std::string& place) {
     if (texture < 0) return -1;
+    if (tex_coord != 0)
+        reader.fail(place, "a texture read with TEXCOORD_" + std::to_string(tex_coord) + " (boxlod reads TEXCOORD_0 only)");
     if (texture >= int(reader.gltf.textures.size())) reader.fail(place, "texture index out of range");
     int source = reader.gltf.textures[texture].source;
     if (source < 0 || source >= int(reader.gltf.images.size())) reader.fail(place, "texture has no valid image");
@@ -278,7 +284,7 @@ tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string
 
 // The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
 void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place, Material& material) {
-    auto texture = [&](int index) { return texture_image(reader, index, place); };
+    auto texture = [&](int index) { return texture_image(reader, index, 0, place); };
     if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
         read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
     if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())
@@ -289,10 +295,15 @@ void read_material_extensions(const Reader& reader, const tinygltf::Material& in
 void read_textures(const Reader& reader, Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
     std::vector<bool> colour_or_normal(gltf.images.size(), false);
+    for (std::size_t t = 0; t < gltf.textures.size(); ++t)
+        if (gltf.textures[t].sampler >= int(gltf.samplers.size())) reader.fail("texture " + std::to_string(t), "sampler index out of range");
     for (std::size_t m = 0; m < gltf.materials.size(); ++m) {
         const std::string place = "material " + std::to_string(m);
-        for (int texture : {gltf.materials[m].pbrMetallicRoughness.baseColorTexture.index, gltf.materials[m].normalTexture.index})
-            if (int image = texture_image(reader, texture, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
+        const tinygltf::Material& material = gltf.materials[m];
+        for (const auto& [texture, tex_coord] : {std::pair{material.pbrMetallicRoughness.baseColorTexture.index,
+                                                           material.pbrMetallicRoughness.baseColorTexture.texCoord},
+                                                 std::pair{material.normalTexture.index, material.normalTexture.texCoord}})
+            if (int image = texture_image(reader, texture, tex_coord, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
         Material extensions;  // only for the images they name, all 8-bit
         read_material_extensions(reader, gltf.materials[m], place, extensions);
         for (const auto& slot : texture_slots(std::as_const(extensions)))
@@ -315,8 +326,9 @@ void read_materials(const Reader& reader, Model& model) {
         material.name = in.name;
         const auto& factor = in.pbrMetallicRoughness.baseColorFactor;
         if (factor.size() == 4) material.base_color = Eigen::Vector4d(factor[0], factor[1], factor[2], factor[3]).cast<float>();
-        material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, place);
-        material.normal_texture = texture_image(reader, in.normalTexture.index, place);
+        material.base_color_texture =
+            texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, in.pbrMetallicRoughness.baseColorTexture.texCoord, place);
+        material.normal_texture = texture_image(reader, in.normalTexture.index, in.normalTexture.texCoord, place);
         material.double_sided = in.doubleSided;
         if (!parse_enum(alpha_modes(), in.alphaMode, material.alpha_mode))
             reader.fail(place, "alphaMode '" + in.alphaMode + "' is not " + enum_names(alpha_modes(), ", ", " or "));
@@ -403,6 +415,8 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         int index = add_node(model, visit.parent, in.name);
         Node& node = model.nodes[index];
         if (in.mesh >= int(gltf.meshes.size())) reader.fail(place, "mesh index out of range");
+        if (in.skin >= int(gltf.skins.size())) reader.fail(place, "skin index out of range");
+        if (in.camera >= int(gltf.cameras.size())) reader.fail(place, "camera index out of range");
         if (in.mesh >= 0) {
             const tinygltf::Mesh& mesh = gltf.meshes[in.mesh];
             for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
@@ -415,6 +429,16 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
     }
 }
 
+// What a loader must refuse (glTF 2.0 spec 3.2, Asset; 3.12, Specifying
+// Extensions): another major version, an extension required but not read.
+void check_asset(const Reader& reader) {
+    const std::string& version = reader.gltf.asset.version;
+    if (!version.empty() && version.rfind("2.", 0) != 0) reader.fail("asset.version", "'" + version + "' is not glTF 2");
+    for (const std::string& name : reader.gltf.extensionsRequired)
+        if (name != "MSFT_lod" && name != specular_glossiness_name && name != specular_extension_name)
+            reader.fail("extensionsRequired", "'" + name + "' is required, and boxlod does not read it");
+}
+
 }  // namespace
 
 Model import_gltf(const std::string& path, int chain_level) {
@@ -422,12 +446,13 @@ Model import_gltf(const std::string& path, int chain_level) {
     return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path, chain_level);
 }
 
-// The steps: the structure checked, tinygltf's model, textures, materials, the
-// LoD mark, the node tree; then the whole model validated.
+// The steps: the structure checked, tinygltf's model, what a loader must
+// refuse, textures, materials, the LoD mark, the node tree; then the whole model validated.
 Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level) {
     check_gltf_structure(bytes, binary, path);
     const tinygltf::Model gltf = load_gltf(bytes, binary, path);
     Reader reader{gltf, path};
+    check_asset(reader);
     Model model;
     model.source = path;
     read_textures(reader, model);

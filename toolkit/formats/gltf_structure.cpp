@@ -95,7 +95,11 @@ struct MemberKind {
 
 // The members boxlod or tinygltf read.
 constexpr MemberKind member_kinds[] = {
-    {"asset", Kind::object}, {"scene", Kind::index}, {"extensionsUsed", Kind::strings}, {"extensionsRequired", Kind::strings},
+    {"asset", Kind::object}, {"asset.version", Kind::string}, {"scene", Kind::index},
+    {"extensionsUsed", Kind::strings}, {"extensionsRequired", Kind::strings},
+    {"bufferViews[].buffer", Kind::index}, {"bufferViews[].byteOffset", Kind::index},
+    {"bufferViews[].byteLength", Kind::index}, {"bufferViews[].byteStride", Kind::index},
+    {"nodes[].skin", Kind::index},
     {"scenes[].nodes", Kind::indices},
     {"nodes[].children", Kind::indices}, {"nodes[].mesh", Kind::index}, {"nodes[].camera", Kind::index},
     {"nodes[].matrix", Kind::numbers, 16}, {"nodes[].translation", Kind::numbers, 3},
@@ -120,6 +124,10 @@ constexpr MemberKind member_kinds[] = {
     {"materials[].normalTexture", Kind::object}, {"materials[].normalTexture.index", Kind::index},
     {"materials[].normalTexture.texCoord", Kind::index}, {"materials[].normalTexture.scale", Kind::number},
     {"materials[].occlusionTexture", Kind::object}, {"materials[].emissiveTexture", Kind::object},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.offset", Kind::numbers, 2},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.rotation", Kind::number},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.scale", Kind::numbers, 2},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord", Kind::index},
     {"textures[].source", Kind::index}, {"textures[].sampler", Kind::index},
     {"samplers[].magFilter", Kind::index}, {"samplers[].minFilter", Kind::index},
     {"samplers[].wrapS", Kind::index}, {"samplers[].wrapT", Kind::index},
