@@ -97,8 +97,7 @@ struct MemberKind {
 constexpr MemberKind member_kinds[] = {
     {"asset", Kind::object}, {"asset.version", Kind::string}, {"scene", Kind::index},
     {"extensionsUsed", Kind::strings}, {"extensionsRequired", Kind::strings},
-    {"bufferViews[].buffer", Kind::index}, {"bufferViews[].byteOffset", Kind::index},
-    {"bufferViews[].byteLength", Kind::index}, {"bufferViews[].byteStride", Kind::index},
+    {"bufferViews[].byteStride", Kind::index},  // the others: check_gltf_structure, with their ranges
     {"nodes[].skin", Kind::index},
     {"scenes[].nodes", Kind::indices},
     {"nodes[].children", Kind::indices}, {"nodes[].mesh", Kind::index}, {"nodes[].camera", Kind::index},
