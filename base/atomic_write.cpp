@@ -143,7 +143,23 @@ long temporary_owner(const std::string& filename, const std::string& suffix) {
     return std::stol(digits);
 }
 
-bool dead(long owner) { return owner > 0 && owner != ::getpid() && ::kill(pid_t(owner), 0) != 0 && errno == ESRCH; }
+// Whether the entry at `path` that run `owner` left is stale: that run is
+// gone, or it is this run (an id used again, as every run in a container may
+// be 1) and the entry is none of those this run is writing. The verdict on
+// another run is taken once per folder (`verdicts`): a run that ends between
+// two looks must not lose its temporaries while its journal stays. Mutex held.
+bool stale(long owner, const fs::path& path, const PartialOutputs& outputs, std::map<long, bool>& verdicts) {
+    if (owner <= 0) return false;
+    if (owner == ::getpid()) {
+        std::error_code error;
+        const fs::path entry = fs::absolute(path, error).lexically_normal();
+        auto ours = [&](const std::string& live) { return fs::absolute(live, error).lexically_normal() == entry; };
+        return std::none_of(outputs.temporaries.begin(), outputs.temporaries.end(), ours) &&
+               std::none_of(outputs.staging_folders.begin(), outputs.staging_folders.end(), ours);
+    }
+    if (!verdicts.count(owner)) verdicts[owner] = ::kill(pid_t(owner), 0) != 0 && errno == ESRCH;
+    return verdicts[owner];
+}
 
 // Completes the commit a killed run left half done: renames the temporaries
 // its journal lists, in the order listed, and removes the journal. The journal
@@ -175,16 +191,19 @@ void complete_commit(const fs::path& journal, long owner) {
 // What boxlod runs that no longer exist (killed with SIGKILL) left in the
 // folder outputs go to: commits half done are completed, then temporaries removed.
 void remove_stale_temporaries(const fs::path& directory) {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);  // no commit of this run is under way
     std::error_code error;
+    std::map<long, bool> verdicts;
     std::vector<std::pair<fs::path, long>> journals;
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error))
-        if (const long owner = temporary_owner(it->path().filename().string(), journal_suffix); dead(owner))
+        if (const long owner = temporary_owner(it->path().filename().string(), journal_suffix); stale(owner, it->path(), outputs, verdicts))
             journals.emplace_back(it->path(), owner);
     for (const auto& [journal, owner] : journals) complete_commit(journal, owner);
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-        const std::string name = it->path().filename().string();
         std::error_code ignored;
-        if (dead(temporary_owner(name, temporary_suffix))) fs::remove(it->path(), ignored);  // a file only
+        if (stale(temporary_owner(it->path().filename().string(), temporary_suffix), it->path(), outputs, verdicts))
+            fs::remove(it->path(), ignored);  // a file only
     }
 }
 
@@ -207,7 +226,11 @@ void place_journal(const std::string& path, const std::string& names, PartialOut
 // gets each as soon as it is placed.
 void write_journals(PartialOutputs& outputs, std::vector<std::string>& journals) {
     std::map<fs::path, std::string> listed;  // per folder, one temporary's name a line
-    for (const PendingRename& file : outputs.pending) listed[fs::path(file.path).parent_path()];
+    auto folder_of = [](const std::string& path) {
+        std::error_code error;
+        return fs::absolute(fs::path(path).parent_path(), error).lexically_normal();
+    };
+    for (const PendingRename& file : outputs.pending) listed[folder_of(file.path)];
     for (const auto& entry : listed) {
         const std::string journal = (entry.first / (journal_suffix + std::to_string(::getpid()))).string();
         place_journal(journal, "", outputs);
@@ -215,10 +238,17 @@ void write_journals(PartialOutputs& outputs, std::vector<std::string>& journals)
     }
     for (PendingRename& file : outputs.pending) {
         const fs::path from = named(file.temporary, file.path, outputs);
-        listed[fs::path(file.path).parent_path()] += from.filename().string() + "\n";
+        listed[folder_of(file.path)] += from.filename().string() + "\n";
     }
     std::size_t k = 0;
     for (const auto& entry : listed) place_journal(journals[k++], entry.second, outputs);
+}
+
+// The folders a group's writes made (absolute), deepest first, each only if left empty.
+void remove_empty_folders(std::vector<fs::path> folders) {
+    std::sort(folders.begin(), folders.end(),
+              [](const fs::path& a, const fs::path& b) { return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end()); });
+    for (const fs::path& folder : folders) ::rmdir(folder.c_str());
 }
 
 void remove_files(const std::vector<std::string>& files) {
@@ -228,13 +258,16 @@ void remove_files(const std::vector<std::string>& files) {
 // The staging folders killed runs left beside `folder` (FOLDER.boxlod-stagingPID,
 // FOLDER.old.boxlod-stagingPID): those of this folder only, nothing else beside it.
 void remove_stale_staging_folders(const fs::path& folder) {
+    PartialOutputs& outputs = partial_outputs();
+    std::lock_guard lock(outputs.mutex);
     std::error_code error;
+    std::map<long, bool> verdicts;
     const std::string name = folder.filename().string();
     for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end; it.increment(error)) {
         const std::string entry = it->path().filename().string();
         const bool of_this = entry.rfind(name + staging_suffix, 0) == 0 || entry.rfind(name + ".old" + staging_suffix, 0) == 0;
         std::error_code ignored;
-        if (of_this && dead(temporary_owner(entry, staging_suffix))) fs::remove_all(it->path(), ignored);
+        if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts)) fs::remove_all(it->path(), ignored);
     }
 }
 
@@ -255,7 +288,8 @@ void write_atomically(const std::string& path, const std::function<void(const st
     const fs::path folder = fs::path(path).parent_path();  // made here, as check_output_file allows
     std::error_code folder_error;
     std::vector<fs::path> missing;  // the folders this write makes
-    for (fs::path p = folder; !p.empty() && !fs::exists(p, folder_error) && p != p.parent_path(); p = p.parent_path())
+    for (fs::path p = fs::absolute(folder, folder_error).lexically_normal(); !fs::exists(p, folder_error) && p != p.parent_path();
+         p = p.parent_path())
         missing.push_back(p);
     if (!folder.empty()) fs::create_directories(folder, folder_error);
     if (folder_error) throw_input_error(path, "", "cannot make its folder: " + folder_error.message());
@@ -271,9 +305,15 @@ void write_atomically(const std::string& path, const std::function<void(const st
         std::lock_guard lock(outputs.mutex);
         if (outputs.open_groups > 0) {
             // Placed at the group's commit: a kill before it leaves nothing (unnamed) or only temporaries.
-            bool known = std::any_of(outputs.pending.begin(), outputs.pending.end(),
-                                     [&](const PendingRename& p) { return p.temporary.name == temporary.name && p.temporary.fd < 0; });
-            if (!known) outputs.pending.push_back({temporary, path});
+            // A path written again keeps its place in the order, with the last content.
+            auto earlier = std::find_if(outputs.pending.begin(), outputs.pending.end(),
+                                        [&](const PendingRename& p) { return p.path == path; });
+            if (earlier == outputs.pending.end()) {
+                outputs.pending.push_back({temporary, path});
+            } else if (earlier->temporary.name != temporary.name) {  // the same name: rewritten in place already
+                discard(earlier->temporary, outputs);
+                earlier->temporary = temporary;
+            }
             return;
         }
         place(temporary, path, outputs);
@@ -405,15 +445,7 @@ OutputGroup::~OutputGroup() {
         }
         outputs.group_files.clear();
     }
-    if (outputs.open_groups == 1 && !committed_) {
-        // The folders its writes made, deepest first; each only if left empty.
-        std::sort(outputs.made_folders.begin(), outputs.made_folders.end(),
-                  [](const fs::path& a, const fs::path& b) { return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end()); });
-        for (const fs::path& folder : outputs.made_folders) {
-            std::error_code ignored;
-            fs::remove(folder, ignored);
-        }
-    }
+    if (outputs.open_groups == 1 && !committed_) remove_empty_folders(outputs.made_folders);
     if (outputs.open_groups == 1) outputs.made_folders.clear();
     --outputs.open_groups;
 }
@@ -529,6 +561,7 @@ void remove_partial_outputs_on_interrupt() {
         outputs.mutex.lock();  // held until the end: no file is renamed after this
         for (const std::string& file : outputs.temporaries) ::unlink(file.c_str());
         for (const std::string& file : outputs.group_files) ::unlink(file.c_str());
+        remove_empty_folders(outputs.made_folders);
         for (const std::string& folder : outputs.staging_folders) {
             std::error_code ignored;
             fs::remove_all(folder, ignored);

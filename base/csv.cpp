@@ -58,8 +58,9 @@ bool as_number(const std::string& field, double& value) {
     return error == std::errc() && end == field.data() + field.size();
 }
 
-// "" when `text` is UTF-8 without control characters (what boxlod writes), else what is wrong.
-std::string text_problem(const std::string& text) {
+}  // namespace
+
+std::string csv_text_problem(const std::string& text) {
     for (std::size_t i = 0; i < text.size();) {
         const auto byte = static_cast<unsigned char>(text[i]);
         if (byte < 0x20 || byte == 0x7f) return "a control character (byte " + std::to_string(byte) + ")";
@@ -69,10 +70,17 @@ std::string text_problem(const std::string& text) {
         if (length == 0 || i + std::size_t(length) > text.size()) return "bytes that are not UTF-8";
         for (int k = 1; k < length; ++k)
             if ((static_cast<unsigned char>(text[i + std::size_t(k)]) & 0xc0) != 0x80) return "bytes that are not UTF-8";
+        // The second byte's range where the lead allows less: no overlong form, nothing past U+10FFFF; C1 controls.
+        const auto second = length > 1 ? static_cast<unsigned char>(text[i + 1]) : 0;
+        if ((byte == 0xe0 && second < 0xa0) || (byte == 0xf0 && second < 0x90) || (byte == 0xf4 && second > 0x8f))
+            return "bytes that are not UTF-8";
+        if (byte == 0xc2 && second < 0xa0) return "a control character (U+0080 to U+009F)";
         i += std::size_t(length);
     }
     return "";
 }
+
+namespace {
 
 // "" when `field` is of `kind`, else what is wrong.
 std::string field_problem(const std::string& field, CsvValue kind) {
@@ -80,7 +88,7 @@ std::string field_problem(const std::string& field, CsvValue kind) {
         return "a field of " + std::to_string(field.size()) + " bytes (at most " + std::to_string(max_csv_field_bytes) + ")";
     double value = 0;
     switch (kind) {
-        case CsvValue::text: return text_problem(field);
+        case CsvValue::text: return csv_text_problem(field);
         case CsvValue::count: return is_count(field) ? "" : "'" + field + "' is not a count (a whole number >= 0)";
         case CsvValue::optional_number:
             if (field.empty()) return "";

@@ -12,6 +12,8 @@ std::string csv_row(const std::vector<std::string>& fields);  // one line, witho
 
 // The fields of one line csv_row wrote.
 std::vector<std::string> csv_fields(std::string_view line);
+// "" when `text` may be a text field (UTF-8 without control characters), else what is wrong.
+std::string csv_text_problem(const std::string& text);
 
 // Tables boxlod writes and reads back (a sweep's results and timings) are
 // input like any other (docs/testing.md: Hardening): what each column holds.

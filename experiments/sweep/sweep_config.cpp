@@ -1,5 +1,6 @@
 #include "experiments/sweep/sweep_config.h"
 
+#include "base/csv.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_values.h"
@@ -126,6 +127,8 @@ struct Line {
 
 SweepModel model_entry(const Line& line, const std::string& item, const std::filesystem::path& folder) {
     SweepModel model{item, "", ""};
+    // The item names the model's rows in results.csv, which a resume reads back as text.
+    if (const std::string problem = csv_text_problem(item); !problem.empty()) line.fail("'" + item + "': " + problem);
     if (item.starts_with("sample:")) {
         model.sample = item.substr(7);
         if (model.sample.empty()) line.fail("'sample:' needs a sample name, e.g. sample:house");

@@ -67,12 +67,12 @@ TEST(AtomicWrite, AFileInAFolderThatDoesNotExistYetMakesItsFolder) {
 TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
     fs::path folder = test::scratch_folder("atomic_write_stale");
     test::write_text(folder / "a.png.boxlod-tmp999999999", "killed run");  // no process has this id
-    test::write_text(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid())), "this run");
+    test::write_text(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid())), "a run with this run's id, before it");
     test::write_text(folder / "c.tmpfile", "not ours");
     test::write_text(folder / "report.tmp999999999", "a user's, named like a temporary of other programs");
     check_output_file((folder / "a.png").string());
     EXPECT_FALSE(fs::exists(folder / "a.png.boxlod-tmp999999999"));
-    EXPECT_TRUE(fs::exists(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid()))));
+    EXPECT_FALSE(fs::exists(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid()))));  // not one this run writes
     EXPECT_TRUE(fs::exists(folder / "c.tmpfile"));
     EXPECT_TRUE(fs::exists(folder / "report.tmp999999999"));
 }
@@ -107,6 +107,14 @@ TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
     }
     EXPECT_EQ(test::read_text(folder / "a.png"), "page");
     EXPECT_EQ(test::read_text(folder / "b.gltf"), "names a.png");
+    {  // a file written twice in one group: its last content
+        OutputGroup group;
+        write_text_atomically((folder / "a.png").string(), "first");
+        write_text_atomically((folder / "b.gltf").string(), "names a.png again");
+        write_text_atomically((folder / "a.png").string(), "second");
+        group.commit();
+    }
+    EXPECT_EQ(test::read_text(folder / "a.png"), "second");
     for (const auto& entry : fs::directory_iterator(folder)) EXPECT_EQ(entry.path().filename().string().find(".boxlod-tmp"), std::string::npos);
 }
 
@@ -118,6 +126,10 @@ TEST(AtomicWrite, ManyFilesInAGroupWaitAsNamedTemporariesBeyondTheOpenFileBudget
         std::size_t named = 0;
         for (const auto& entry : fs::directory_iterator(folder)) named += entry.path().string().find(".boxlod-tmp") != std::string::npos;
         EXPECT_EQ(named, 300u - 256u);  // the first 256 unnamed, the rest named
+        check_output_file((folder / "other.txt").string());  // this run's own temporaries are not leftovers
+        std::size_t still = 0;
+        for (const auto& entry : fs::directory_iterator(folder)) still += entry.path().string().find(".boxlod-tmp") != std::string::npos;
+        EXPECT_EQ(still, named);
         group.commit();
     }
     std::size_t files = 0;

@@ -67,6 +67,9 @@ TEST(Csv, ATableReadBackRefusesWhatItsColumnsCannotHold) {
     EXPECT_EQ(refusal("ho\xffuse,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");
     EXPECT_EQ(refusal("ho\xc3use,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");
     EXPECT_EQ(refusal("Stra\xc3\x9f" "e,12,1.5,,1\n"), "");  // UTF-8 is text
+    EXPECT_EQ(refusal("\xe0\x80\xaf,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");  // overlong '/'
+    EXPECT_EQ(refusal("\xf4\x90\x80\x80,12,1.5,,1\n"), "results.csv: line 2: model: bytes that are not UTF-8");  // past U+10FFFF
+    EXPECT_EQ(refusal("a\xc2\x85,12,1.5,,1\n"), "results.csv: line 2: model: a control character (U+0080 to U+009F)");
     EXPECT_EQ(test::input_error_of([] { read_csv_table("some,other,columns\n1,2,3\n", "results.csv", table_columns); }),
               "results.csv: its columns are not model,faces,distance,error,psnr (a table of another run or kind)");
 }
