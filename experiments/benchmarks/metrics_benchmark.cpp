@@ -2,13 +2,16 @@
 // 512x512 and 1920x1080 images (a render of the FZK-Haus and the same view
 // from 5% farther away), and the render itself for scale.
 //   build/experiments/metrics_benchmark [--benchmark_filter=...]
-// The second argument of every case is the thread count.
+// The second argument of every case is the thread count. bm_sweep_rows
+// draws a sweep's rows one at a time or side by side (experiments/sweep/sweep.cpp: draw_rows).
 #include "experiments/metrics/flip.h"
 #include "experiments/metrics/image_metrics.h"
 #include "experiments/metrics/silhouette.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/formats/model_io.h"
+
+#include "base/parallel.h"
 
 #include <benchmark/benchmark.h>
 
@@ -27,19 +30,19 @@ const DrawableModel& house() {
 }
 
 // The view `boxlod render` takes by default (+X+Y+Z, fovy 45, framed), `distance_scale` times as far.
-RenderSettings house_view(double distance_scale, int threads) {
+RenderSettings house_view(double distance_scale, int threads, const Eigen::Vector3f& direction = {1, 1, 1}) {
     const Framing framing = framing_of(house().drawable.bounds);
     RenderSettings settings;
-    settings.camera = framed_camera(framing, {1, 1, 1}, float(framing_distance(framing, 45) * distance_scale), 45);
+    settings.camera = framed_camera(framing, direction, float(framing_distance(framing, 45) * distance_scale), 45);
     settings.light = light_for_camera(settings.camera);
     settings.light.shininess = 0;  // the material's
     settings.threads = threads;
     return settings;
 }
 
-Image8 render_house(int width, int height, double distance_scale, int threads) {
+Image8 render_house(int width, int height, double distance_scale, int threads, const Eigen::Vector3f& direction = {1, 1, 1}) {
     Frame frame = make_frame(width, height, {1, 1, 1});
-    render(house().drawable.batches, house_view(distance_scale, threads), frame);
+    render(house().drawable.batches, house_view(distance_scale, threads, direction), frame);
     return frame_to_srgb8(frame);
 }
 
@@ -102,6 +105,32 @@ void bm_iou(benchmark::State& state) {
     set_pixels(state);
 }
 
+// A sweep's rows at 256x256, 2 threads: the house 5 % farther away from each
+// of the 26 views, rendered and compared by FLIP with the view's prepared
+// original. side_by_side = 0: one row at a time, both threads on its render
+// and FLIP (as sweeps drew before); 1: each row on one thread, two rows at once.
+void bm_sweep_rows(benchmark::State& state) {
+    const int side = int(state.range(0));
+    const bool side_by_side = state.range(1) != 0;
+    std::vector<Eigen::Vector3f> directions;
+    for (const std::string& name : camera_position_names()) directions.push_back(*camera_direction(name));
+    std::vector<FlipReference> references;
+    for (const Eigen::Vector3f& direction : directions)
+        references.push_back(prepare_flip_reference(render_house(side, side, 1.0, 0, direction), 67, 0));
+    std::vector<double> means(directions.size());
+    auto row = [&](std::size_t r, int threads) {
+        means[r] = flip(references[r], render_house(side, side, 1.05, threads, directions[r]), threads).mean;
+    };
+    for (auto _ : state) {
+        if (side_by_side)
+            parallel_for(directions.size(), 2, [&](std::size_t r) { row(r, 1); });
+        else
+            for (std::size_t r = 0; r < directions.size(); ++r) row(r, 2);
+        benchmark::DoNotOptimize(means.data());
+    }
+    state.counters["rows/s"] = benchmark::Counter(double(directions.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 void sizes_and_threads(benchmark::internal::Benchmark* b) {
     for (auto [w, h] : {std::pair{64, 64}, std::pair{256, 256}, std::pair{512, 512}, std::pair{1920, 1080}})
         for (int threads : {1, 2}) b->Args({w, h, threads});
@@ -121,4 +150,5 @@ BENCHMARK(bm_ssim)->Apply(sizes_and_threads);
 BENCHMARK(bm_flip)->Apply(sizes_and_threads);
 BENCHMARK(bm_flip_prepared)->Apply(sizes_and_threads);
 BENCHMARK(bm_iou)->Apply(sizes);
+BENCHMARK(bm_sweep_rows)->ArgsProduct({{64, 256}, {0, 1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

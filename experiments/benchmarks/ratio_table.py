@@ -21,6 +21,8 @@ TIME_ROWS = [
      "llvmpipe_model/1/2", "Mesa llvmpipe"),
     ("FLIP at 1920x1080 against a prepared reference, 2 threads", "metrics", "bm_flip_prepared/1920/1080/2",
      "bm_render/1920/1080/2", "rendering the frame"),
+    ("a sweep's 26 rows at 256x256 (render + FLIP), 2 threads, each row on one thread", "metrics",
+     "bm_sweep_rows/256/1", "bm_sweep_rows/256/0", "one row at a time"),
     ("PNG pages of one `manual` level (colour + normal)", "png", "boxlod_png/0", "stb_png/5/0", "stb_image_write"),
     ("simplifying `manual` to 10 % of its triangles", "simplification", "bm_meshoptimizer/100/1",
      "bm_cgal_garland_heckbert/100", "CGAL Garland-Heckbert"),

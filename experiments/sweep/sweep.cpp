@@ -2,6 +2,7 @@
 
 #include "base/csv.h"
 #include "base/memory_budget.h"
+#include "base/parallel.h"
 #include "base/input_error.h"
 #include "base/key_values.h"
 #include "base/timing.h"
@@ -13,6 +14,7 @@
 #include "experiments/metrics/image_metrics.h"
 #include "experiments/metrics/metric_registry.h"
 #include "experiments/metrics/silhouette.h"
+#include "experiments/sweep/sweep_shots.h"
 #include "experiments/sweep/sweep_tables.h"
 #include "toolkit/lod/level_values.h"
 #include "toolkit/lod/level_budgets.h"
@@ -46,64 +48,6 @@ std::string extend_row(const std::string& key, const std::vector<std::string>& m
 Model load_sweep_model(const SweepModel& model) {
     if (!model.sample.empty()) return generate_building(sample_grammar(model.sample), BuildingOptions{});
     return load_model(model.path);
-}
-
-// A render as the metrics need it.
-struct Shot {
-    Image8 image;
-    Coverage coverage;
-    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
-};
-
-Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height) {
-    Frame frame = make_frame(width, height, {1, 1, 1});
-    render(batches, settings, frame);
-    Shot shot;
-    shot.image = frame_to_srgb8(frame);
-    shot.coverage = coverage_from_mask(coverage_mask(frame));
-    return shot;
-}
-
-// The manual's camera positions, `multiple` times the framing distance away (as `boxlod render --camera`).
-RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
-                             const LodParameters& lod, int threads) {
-    RenderSettings settings;
-    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
-    settings.mode = mode;
-    settings.parallax_scale = lod.parallax_scale;
-    settings.parallax_bias = lod.parallax_bias;
-    settings.light = light_for_camera(settings.camera);
-    settings.threads = threads;
-    return settings;
-}
-
-struct Metrics {
-    std::vector<std::string> values;  // in the config's metric order
-    Plane heatmap;                    // FLIP's error when computed, else the RGB error
-    double error = 0;                 // what simplification-best minimizes (choice_error)
-};
-
-// One error, lower = better, from the metrics measured: FLIP if measured, else
-// 1 - SSIM, else RMSE, else -PSNR, else 1 - IoU.
-double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {
-    for (Metric preferred : {Metric::flip, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
-        for (std::size_t i = 0; i < metrics.size(); ++i) {
-            if (metrics[i] != preferred) continue;
-            if (preferred == Metric::ssim || preferred == Metric::iou) return 1 - values[i];
-            return preferred == Metric::psnr ? -values[i] : values[i];
-        }
-    return 0;
-}
-
-Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads) {
-    MetricPair pair{reference.image, test.image, &reference.coverage, &test.coverage,
-                    reference.flip_reference ? &*reference.flip_reference : nullptr, config.pixels_per_degree, threads};
-    MetricValues measured = measure_metrics(config.metrics, pair);
-    Metrics out;
-    for (double value : measured.values) out.values.push_back(format_number(value));  // psnr of identical images: inf
-    out.error = choice_error(config.metrics, measured.values);
-    if (want_heatmap) out.heatmap = measured.flip_error ? std::move(*measured.flip_error) : rgb_error_map(reference.image, test.image);
-    return out;
 }
 
 // What one group of rows draws: an LoD level or a baseline mesh.
@@ -221,25 +165,6 @@ std::size_t rows_per_group(const SweepConfig& config) {
     return config.views.size() * config.distances.size() * config.render_modes.size();
 }
 
-const Shot& reference_shot(ModelRun& run, SweepOutput& out, SweepReport& report, std::size_t v, std::size_t d, RenderMode mode) {
-    const SweepConfig& config = run.config;
-    auto key = std::make_tuple(v, d, mode);
-    auto found = run.references.find(key);
-    if (found != run.references.end()) return found->second;
-    if (!run.original) run.original = make_drawable_model(run.model);
-    const RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, run.threads);
-    Shot shot = timed(report.render_seconds,
-                      [&] { return render_shot(run.original->drawable.batches, settings, config.width, config.height); });
-    if (std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end())
-        shot.flip_reference = timed(report.metric_seconds,
-                                    [&] { return prepare_flip_reference(shot.image, config.pixels_per_degree, run.threads); });
-    ++report.original_renders;
-    if (out.keep_images)
-        save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
-                   shot.image);
-    return run.references.emplace(key, std::move(shot)).first->second;
-}
-
 // The results.csv fields of a row after its key.
 std::vector<std::string> result_fields(const Candidate& c, RenderMode mode, const Shot& original, const Metrics& metrics) {
     const ModelCost cost = drawn_cost({&c.cost}, mode);
@@ -280,26 +205,82 @@ std::vector<MissingRow> missing_rows(ModelRun& run, SweepOutput& out, SweepRepor
     return missing;
 }
 
-// A row as drawn: its results.csv and timings.csv lines, its image and heat map, its choice_error.
-struct DrawnRow { std::string result, timing; Image8 image; Plane heatmap; double error = 0; };
-
-// One row: the candidate rendered from the row's view and compared with the original's render.
-DrawnRow draw_row(ModelRun& run, SweepOutput& out, SweepReport& report, const Candidate& c, const MissingRow& row) {
+// The original's renders that the rows need and the run has not made yet,
+// drawn as the rows are (draw_rows), in the rows' order.
+void make_reference_shots(ModelRun& run, SweepOutput& out, SweepReport& report, const std::vector<MissingRow>& rows) {
     const SweepConfig& config = run.config;
-    const Shot& original_shot = reference_shot(run, out, report, row.view, row.distance, row.mode);
-    double render_seconds = 0, metric_seconds = 0;
-    const RenderSettings settings = view_settings(run.framing, config.views[row.view], config.distances[row.distance],
-                                                  row.mode, config.lod, run.threads);
-    Shot shot = timed(render_seconds, [&] { return render_shot(c.drawable->drawable.batches, settings, config.width, config.height); });
-    Metrics metrics = timed(metric_seconds, [&] {
-        return compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, run.threads);
+    std::vector<std::tuple<std::size_t, std::size_t, RenderMode>> keys;
+    for (const MissingRow& row : rows) {
+        auto key = std::make_tuple(row.view, row.distance, row.mode);
+        if (!run.references.count(key) && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+    if (keys.empty()) return;
+    if (!run.original) run.original = make_drawable_model(run.model);
+    const bool flip_measured = std::find(config.metrics.begin(), config.metrics.end(), Metric::flip) != config.metrics.end();
+    std::vector<Shot> shots(keys.size());
+    std::vector<double> render_seconds(keys.size(), 0), metric_seconds(keys.size(), 0);
+    parallel_for(keys.size(), run.threads, [&](std::size_t k) {
+        const auto [v, d, mode] = keys[k];
+        const RenderSettings settings = view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, 1);
+        shots[k] = timed(render_seconds[k],
+                         [&] { return render_shot(run.original->drawable.batches, settings, config.width, config.height); });
+        if (flip_measured)
+            shots[k].flip_reference =
+                timed(metric_seconds[k], [&] { return prepare_flip_reference(shots[k].image, config.pixels_per_degree, 1); });
     });
-    report.render_seconds += render_seconds;
-    report.metric_seconds += metric_seconds;
-    ++report.lod_renders;
-    return {extend_row(row.key, result_fields(c, row.mode, original_shot, metrics)),
-            extend_row(row.key, {format_number(c.seconds), format_number(render_seconds), format_number(metric_seconds)}),
-            out.keep_images ? std::move(shot.image) : Image8{}, std::move(metrics.heatmap), metrics.error};
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const auto [v, d, mode] = keys[k];
+        report.render_seconds += render_seconds[k];
+        report.metric_seconds += metric_seconds[k];
+        ++report.original_renders;
+        if (out.keep_images)
+            save_image(out, csv_row({run.entry.name, "original", config.views[v], format_number(config.distances[d]), render_mode_name(mode)}),
+                       shots[k].image);
+        run.references.emplace(keys[k], std::move(shots[k]));
+    }
+}
+
+// A row as drawn: its results.csv and timings.csv lines, its image and heat map, its choice_error.
+struct DrawnRow {
+    std::string result, timing;
+    Image8 image;
+    Plane heatmap;
+    double error = 0, render_seconds = 0, metric_seconds = 0;
+};
+
+// One row on the calling thread: the candidate rendered from the row's view
+// and compared with the original's render.
+DrawnRow draw_row(const ModelRun& run, bool keep_image, const Candidate& c, const MissingRow& row) {
+    const SweepConfig& config = run.config;
+    const Shot& original_shot = run.references.at({row.view, row.distance, row.mode});
+    const RenderSettings settings =
+        view_settings(run.framing, config.views[row.view], config.distances[row.distance], row.mode, config.lod, 1);
+    DrawnRow drawn;
+    Shot shot = timed(drawn.render_seconds,
+                      [&] { return render_shot(c.drawable->drawable.batches, settings, config.width, config.height); });
+    Metrics metrics = timed(drawn.metric_seconds,
+                            [&] { return compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, 1); });
+    drawn.result = extend_row(row.key, result_fields(c, row.mode, original_shot, metrics));
+    drawn.timing =
+        extend_row(row.key, {format_number(c.seconds), format_number(drawn.render_seconds), format_number(drawn.metric_seconds)});
+    if (keep_image) drawn.image = std::move(shot.image);
+    drawn.heatmap = std::move(metrics.heatmap);
+    drawn.error = metrics.error;
+    return drawn;
+}
+
+// The rows, `candidates[r]` drawing row r: each row on one thread, the rows
+// side by side. Small renders and their metrics gain more so than from
+// splitting one image among threads (docs/performance.md: Sweep); every
+// pixel and metric is the same.
+std::vector<DrawnRow> draw_rows(ModelRun& run, SweepOutput& out, SweepReport& report,
+                                const std::vector<const Candidate*>& candidates, const std::vector<MissingRow>& rows) {
+    make_reference_shots(run, out, report, rows);
+    std::vector<DrawnRow> drawn(rows.size());
+    parallel_for(rows.size(), run.threads, [&](std::size_t r) { drawn[r] = draw_row(run, out.keep_images, *candidates[r], rows[r]); });
+    for (const DrawnRow& row : drawn) report.render_seconds += row.render_seconds, report.metric_seconds += row.metric_seconds;
+    report.lod_renders += rows.size();
+    return drawn;
 }
 
 // The group's line on the progress stream, with the model's ETA.
@@ -329,6 +310,7 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
     std::vector<double> mean_error(std::size_t(alternatives), 0);
     for (int a = 0; a < alternatives; ++a) {
         std::map<int, Candidate> candidates;
+        std::vector<const Candidate*> of_row;
         for (const MissingRow& row : missing) {
             int s = slot(row.mode, row.view, row.distance);
             auto found = candidates.find(s);
@@ -344,9 +326,10 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
                 ++report.lods_built;
                 found = candidates.emplace(s, std::move(made)).first;
             }
-            drawn[std::size_t(a)].push_back(draw_row(run, out, report, found->second, row));
-            mean_error[std::size_t(a)] += drawn[std::size_t(a)].back().error / double(missing.size());
+            of_row.push_back(&found->second);
         }
+        drawn[std::size_t(a)] = draw_rows(run, out, report, of_row, missing);
+        for (const DrawnRow& row : drawn[std::size_t(a)]) mean_error[std::size_t(a)] += row.error / double(missing.size());
     }
     const auto best = std::size_t(std::min_element(mean_error.begin(), mean_error.end()) - mean_error.begin());
     for (std::size_t r = 0; r < missing.size(); ++r) {

@@ -290,13 +290,22 @@ TEST(Sweep, SizingPerLevelBakesCoarserLevelsForFartherAway) {
     EXPECT_EQ(per_level[1][covered], one[2][covered]);
 }
 
-TEST(Sweep, ResultsAreIdenticalForOneAndTwoThreads) {
-    SmallSweep s = small_sweep("sweep_threads");
+// Two threads draw two rows at a time, each on one thread (draw_rows); one
+// thread draws them one by one: the same pixels, heat maps and metrics.
+TEST(Sweep, ResultsAndImagesAreIdenticalForOneAndTwoThreads) {
+    SmallSweep s = small_sweep("sweep_threads", "keep_images = all\n");
     run_sweep(s.config, (s.folder / "one").string(), 1);
     run_sweep(s.config, (s.folder / "two").string(), 2);
     std::string one = test::read_text(s.folder / "one" / "results.csv");
     EXPECT_GT(one.size(), 100u);
     EXPECT_EQ(one, test::read_text(s.folder / "two" / "results.csv"));
+    std::size_t images = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(s.folder / "one" / "images")) {
+        EXPECT_EQ(test::read_text(entry.path()), test::read_text(s.folder / "two" / "images" / entry.path().filename()))
+            << entry.path().filename();
+        ++images;
+    }
+    EXPECT_EQ(images, 2u * 2u * 2u * 2u + 2u);  // level modes x levels x views, a heat map each; the original per view
 }
 
 TEST(Sweep, ResumingFillsInOnlyTheMissingRows) {

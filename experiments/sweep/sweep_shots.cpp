@@ -1,0 +1,51 @@
+#include "experiments/sweep/sweep_shots.h"
+
+#include "base/key_values.h"
+#include "experiments/metrics/image_metrics.h"
+#include "experiments/metrics/metric_registry.h"
+
+namespace boxlod {
+
+Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height) {
+    Frame frame = make_frame(width, height, {1, 1, 1});
+    render(batches, settings, frame);
+    Shot shot;
+    shot.image = frame_to_srgb8(frame);
+    shot.coverage = coverage_from_mask(coverage_mask(frame));
+    return shot;
+}
+
+RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
+                             const LodParameters& lod, int threads) {
+    RenderSettings settings;
+    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
+    settings.mode = mode;
+    settings.parallax_scale = lod.parallax_scale;
+    settings.parallax_bias = lod.parallax_bias;
+    settings.light = light_for_camera(settings.camera);
+    settings.threads = threads;
+    return settings;
+}
+
+double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {
+    for (Metric preferred : {Metric::flip, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
+        for (std::size_t i = 0; i < metrics.size(); ++i) {
+            if (metrics[i] != preferred) continue;
+            if (preferred == Metric::ssim || preferred == Metric::iou) return 1 - values[i];
+            return preferred == Metric::psnr ? -values[i] : values[i];
+        }
+    return 0;
+}
+
+Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads) {
+    MetricPair pair{reference.image, test.image, &reference.coverage, &test.coverage,
+                    reference.flip_reference ? &*reference.flip_reference : nullptr, config.pixels_per_degree, threads};
+    MetricValues measured = measure_metrics(config.metrics, pair);
+    Metrics out;
+    for (double value : measured.values) out.values.push_back(format_number(value));  // psnr of identical images: inf
+    out.error = choice_error(config.metrics, measured.values);
+    if (want_heatmap) out.heatmap = measured.flip_error ? std::move(*measured.flip_error) : rgb_error_map(reference.image, test.image);
+    return out;
+}
+
+}  // namespace boxlod
