@@ -9,7 +9,9 @@ model=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
 failures=0
 check() {
   local name=$1; shift
-  if "$@"; then echo "ok   $name"; else echo "FAIL $name"; failures=$((failures + 1)); fi
+  if "$@"; then echo "ok   $name"; return; fi
+  echo "FAIL $name"; failures=$((failures + 1))
+  sed 's/^/     stderr: /' "$work/err" 2>/dev/null | head -5  # the last run's, to tell the viewer's failure from X's
 }
 # xvfb-run -a, again when the X server itself failed to start (another
 # server taking the same display number at that moment): the viewer's own

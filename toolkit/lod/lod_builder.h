@@ -9,6 +9,7 @@
 #include "toolkit/lod/cut.h"
 #include "toolkit/lod/error_greedy.h"
 #include "toolkit/lod/hybrid.h"
+#include "toolkit/lod/level_pages.h"
 #include "toolkit/lod/parameter_file.h"
 #include "toolkit/lod/texture_sizing.h"
 
@@ -65,13 +66,6 @@ struct LodSession {
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
                                       const std::vector<std::optional<OrientedBox>>* boxes = nullptr,
                                       HybridMeasurements* measurements = nullptr);
-
-// The textures of atlas page K in an LoD's model: its colour, normal and
-// height maps (color_K.png, normal_K.png, height_K.png); material K draws it.
-struct LodPage {
-    int color, normal, height;  // indices into Model::textures
-};
-LodPage lod_page(int page);
 
 struct Lod {
     int current_level = 0;

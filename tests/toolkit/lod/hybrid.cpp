@@ -362,6 +362,40 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
     }
 }
 
+// Six small facades whose boxes' faces are at most 8 texels at this sizing:
+// drawn flat, from one swatch, they cost far less than the pages their
+// estimates count. A level that spends less than 95 % of its budget asks for
+// one within a larger estimate and keeps it if it fits and errs less
+// (lod_builder.cpp: grow_to_budget): without, levels 2 and 3 stopped where
+// their estimates did, at 7 and 15 times the error.
+TEST(Hybrid, ALevelTheEstimatesUnderspendGrowsIntoItsBudget) {
+    Model model;
+    model.source = "flat-facades";
+    add_node(model, -1, "root");
+    for (int k = 0; k < 6; ++k) add_facade(model, 0, 5.0f * float(k), 8);
+    validate_model(model);
+    LodParameters parameters;
+    parameters.level_mode = LevelMode::hybrid;
+    parameters.box_kind = BoxKind::minimal;
+    ASSERT_EQ(parse_budgets("0.5,0.25,0.1,0.05", parameters.budgets), "");
+    parameters.distance = settings_for(0.25f, 1).sizing.distance;
+    auto session = start_lod(model, parameters, 2);
+    const double original = double(session->derived.original_cost.bytes());
+    for (int c = 1; c <= 4; ++c) {
+        const double budget = budget_bytes(parameters.budgets[std::size_t(c - 1)], original);
+        const HybridLevel within_estimate = hybrid_level_within(model, *session->derived.hybrid, budget);
+        const Lod lod = build_lod(*session, c, 2);
+        EXPECT_LE(double(combined_cost({&lod.cost}).bytes()), budget) << "level " << c;
+        EXPECT_LE(lod.measured_error, within_estimate.error) << "level " << c;
+        if (c == 2 || c == 3) {
+            EXPECT_LT(lod.measured_error * 5, within_estimate.error) << "level " << c;
+        }
+        const Cut kept = hybrid_cut(model, *session->derived.hybrid, session->cache.hybrid_levels[std::size_t(c)].state);
+        EXPECT_EQ(kept.box_nodes, lod.cut.box_nodes);  // the session keeps the level drawn
+        EXPECT_EQ(kept.geometry_nodes, lod.cut.geometry_nodes);
+    }
+}
+
 // A textured part under untextured levels: the plan still measures it (it
 // read textures never decoded: a crash in build --render-mode untextured and sweeps).
 TEST(Hybrid, PlansTexturedPartsForUntexturedLevels) {
