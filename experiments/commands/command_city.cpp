@@ -56,10 +56,13 @@ FlyThroughOptions fly_through_options(const Arguments& arguments) {
     return options;
 }
 
-// --detail K[,K...]: distinct numbers in the detail range.
+// --detail K[,K...]: at most 64 distinct numbers in the detail range (each a pass over every frame).
 std::vector<double> details_option(const Arguments& arguments) {
+    constexpr std::size_t most_details = 64;
     std::vector<double> details;
-    for (const std::string& item : comma_list(arguments.text("detail", "1"))) {
+    const std::vector<std::string> items = comma_list(arguments.text("detail", "1"));
+    require(items.size() <= most_details, "--detail takes at most 64 values, got " + std::to_string(items.size()));
+    for (const std::string& item : items) {
         char* end = nullptr;
         double detail = std::strtod(item.c_str(), &end);
         require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
@@ -162,7 +165,7 @@ Subcommand city_subcommand() {
         {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
         {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
                                 "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
-                                "levels, images under OUTDIR/detail_K/"},
+                                "levels (at most 64), images under OUTDIR/detail_K/"},
         {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
         {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
         {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
