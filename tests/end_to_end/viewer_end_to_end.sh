@@ -15,11 +15,13 @@ check() {
 }
 # xvfb-run -a, again when the X server itself failed to start (another
 # server taking the same display number at that moment): the viewer's own
-# failures are never retried. stderr goes to $work/err.
+# failures are never retried. stderr goes to $work/err. The authority file is
+# ours (-f): xvfb-run's own temporary folder once failed its clean-up under
+# ctest -j2, and its exit status 5 hid the viewer's.
 xrun() {
   local attempt status
   for attempt in 1 2 3; do
-    xvfb-run -a "$@" > /dev/null 2> "$work/err"
+    xvfb-run -a -f "$work/Xauthority" "$@" > /dev/null 2> "$work/err"
     status=$?
     grep -q "Xvfb failed to start" "$work/err" || return $status
   done
