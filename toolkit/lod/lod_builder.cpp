@@ -532,12 +532,10 @@ void check_budget_reachable(LodSession& session, int level, int threads) {
     const std::vector<ByteBudget>& budgets = session.input.parameters.budgets;
     if (budgets.empty() || level < 1 || level > int(budgets.size())) return;
     // The coarsest cut built for real, its level then set back as it was.
-    const HybridLevel hybrid_level = session.derived.hybrid ? session.cache.hybrid_levels[std::size_t(level)] : HybridLevel{};
-    const std::size_t opening_steps = session.derived.opening ? session.cache.opening_steps[std::size_t(level)] : 0;
+    const LevelChoice chosen = level_choice(session, std::size_t(level));
     set_level_within(session, level, -1);
     const double coarsest = spent_bytes(build_cut(session, level, level_cut(session, level), threads));
-    if (session.derived.hybrid) session.cache.hybrid_levels[std::size_t(level)] = hybrid_level;
-    else session.cache.opening_steps[std::size_t(level)] = opening_steps;
+    set_level_choice(session, std::size_t(level), chosen);
     if (coarsest > level_budget(session, level))
         throw_input_error(session.input.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
 }
