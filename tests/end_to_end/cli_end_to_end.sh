@@ -169,7 +169,7 @@ check "--manual sizes every level for one distance and boxes every sub-tree" bas
 check "build --budgets keeps every level within its budget" bash -c "'$boxlod' build '$work/house.glb' -o '$work/budgets' --all-levels --level-mode hybrid --budgets 0.5,0.25 --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 > '$work/budgets.txt' && awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"budget_bytes\" { n++; if (b > \$2) exit 1 } END { exit n != 2 }' '$work/budgets.txt'"
 bad "budgets that do not descend" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-mode hybrid --budgets 0.1,0.5
 check "the budgets error names the option" grep -q "^boxlod: --budgets: '0.5' comes after '0.1': budgets must descend" "$work/err"
-bad "a budget below the coarsest cut" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-mode hybrid --budgets 0.5,0.01 --resolution 256 --min-texture-size 16
+bad "a budget below the coarsest cut" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-mode hybrid --budgets 0.5,0.001 --resolution 256 --min-texture-size 16
 check "the refusal names the level and the coarsest cut's bytes" grep -q "level 2's budget of [0-9]* bytes is below the coarsest cut's [0-9]* bytes\$" "$work/err"
 # Flat faces (docs/design.md: Atlas): some faces drawn from swatches, the same bytes on one thread as on two.
 flat_chain="build '$work/house.glb' --all-levels --level-distances auto --resolution 256 --min-texture-size 16 --preview-width 32 --preview-height 24 --flat-faces 8"

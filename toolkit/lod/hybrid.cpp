@@ -43,11 +43,16 @@ constexpr std::size_t fewest_simplified_triangles = 4;
 // On every sub-tree, building every level of `manual` took 1.5x as long for
 // one more view won (docs/cost.md: The hybrid level mode).
 constexpr std::size_t fewest_clustered_triangles = 1000;
-// A box is also offered with texels 2 and 4 times as large as the sizing
-// distance gives them: a page is dear, and without them a level within 5 % of
-// `classical`'s bytes drew one sharp box where `top-down` drew four blurred
-// ones and won (docs/cost.md: The hybrid level mode).
-constexpr std::array<int, 3> box_texel_scales = {1, 2, 4};
+// A box is also offered with texels 2, 4, 8 and 16 times as large as the
+// sizing distance gives them: a page is dear. Without 2 and 4, a level within
+// 5 % of `classical`'s bytes drew one sharp box where `top-down` drew four
+// blurred ones and won; without 8 and 16, one within 5 % of `office`'s spent
+// half of it and won 15 of 26 views (now 24). A coarser box is offered only
+// where it costs at most 3/4 of the last one offered: most save a few bytes of
+// pages at their least size, and measuring those too took 1.2x as long for no
+// more views won (docs/cost.md: The hybrid level mode).
+constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
+constexpr double coarser_box_most_bytes = 0.75;
 
 // Where a sub-tree is measured: its bounding sphere seen orthographically from
 // the measuring corners, `side` pixels of `pixel` metres a side.
@@ -364,7 +369,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         box_proxy.texel_scale = scale;
         const TextureSizing sizing = coarser_sizing(settings.sizing, scale);
         box_proxy.bytes = double(box_bytes_estimate(box, sizing, settings.mode != RenderMode::untextured));
-        if (scale > 1 && box_proxy.bytes >= proxies.back().bytes) break;
+        if (scale > 1 && box_proxy.bytes > coarser_box_most_bytes * proxies.back().bytes) continue;
         const float texel = scale == 1 ? view.pixel : float(scale * pixel);  // the measurements' key
         if (scale > 1 && !(texel > view.pixel)) continue;
         box_texels.push_back({texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});

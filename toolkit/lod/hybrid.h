@@ -1,6 +1,6 @@
 // The hybrid level mode (beyond the manual; docs/design.md: The hybrid level
 // mode). Each node may stand in for its sub-tree by one of several proxies:
-// its textured box, with texels as the sizing distance gives them or 2 or 4
+// its textured box, with texels as the sizing distance gives them or 2 to 16
 // times as large, or the sub-tree simplified on its own at a few face
 // targets (meshoptimizer's edge collapse, and vertex clustering for large
 // sub-trees; the sub-tree's own materials and textures). Each
