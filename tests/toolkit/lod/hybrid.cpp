@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <iterator>
 #include <map>
-#include <cmath>
 
 using namespace boxlod;
 
