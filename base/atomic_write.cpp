@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/utf8.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -351,6 +352,8 @@ void check_output_file(const std::string& path) {
     if (const std::size_t bytes = fs::path(path).filename().string().size(); bytes > max_output_name_bytes)
         throw_input_error(path, "", "a file name of " + std::to_string(bytes) + " bytes, more than the " +
                                         std::to_string(max_output_name_bytes) + " an output may have");
+    // Names go into glTF's URIs and tileset.json, which JSON holds as UTF-8.
+    if (!is_utf8(fs::path(path).filename().string())) throw_input_error(path, "", "the file's name is not UTF-8 text");
     fs::path directory = fs::path(path).parent_path();
     check_folder_or_ancestor(directory.empty() ? fs::path(".") : directory, path);
 }

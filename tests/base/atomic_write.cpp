@@ -34,6 +34,9 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
     EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()), "");  // made when written
     EXPECT_FALSE(fs::exists(folder / "none"));  // checked, not made
     EXPECT_EQ(output_problem(check_output_file, "/proc/a.png").rfind("/proc/a.png: cannot write here: ", 0), 0u);
+    // A name goes into glTF's URIs, which JSON holds as UTF-8; a folder's does not.
+    EXPECT_EQ(output_problem(check_output_file, (folder / "caf\xe9.gltf").string()), (folder / "caf\xe9.gltf").string() + ": the file's name is not UTF-8 text");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "caf\xc3\xa9.gltf").string()), "");
     EXPECT_EQ(output_problem(check_output_directory, (folder / "new" / "deeper").string()), "");
     EXPECT_FALSE(fs::exists(folder / "new"));  // checked, not made
     EXPECT_EQ(output_problem(check_output_directory, (folder / "file").string()), (folder / "file").string() + ": exists and is not a folder");

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/parallel.h"
 #include "base/timing.h"
+#include "base/utf8.h"
 #include "renderer/image.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
@@ -137,6 +138,7 @@ void check_base_name(const std::string& name) {
     if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos ||
         std::any_of(name.begin(), name.end(), [](char c) { return (unsigned char)(c) < 0x20 || c == 0x7f; }))
         throw InputError("--name: '" + name + "' is not a file name (the files go into OUTDIR)");
+    if (!is_utf8(name)) throw InputError("--name: '" + name + "' is not UTF-8 text (glTF names its files by URIs in UTF-8)");
     if (name.size() > max_output_name_bytes - 32)
         throw InputError("--name: " + std::to_string(name.size()) + " bytes, more than the " +
                          std::to_string(max_output_name_bytes - 32) + " its files' names leave");
@@ -158,7 +160,7 @@ int run_build(const Arguments& a) {
         check_output_directory(a.text("output"));
     }
     Model model = load_model(parameters.model);
-    std::string name = a.text("name", std::filesystem::path(parameters.model).stem().string() + "_lod");
+    std::string name = a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
     if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");

@@ -3,6 +3,7 @@
 #include "base/child_process.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/utf8.h"
 #include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/model_bytes.h"
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 namespace boxlod {
 namespace {
@@ -58,20 +60,30 @@ Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
     return out;
 }
 
-// Texture names in FBX/3DS files often differ from the files in letter case
-// (written on Windows): fall back to a case-insensitive match in the folder.
+// A texture as files written on Windows name it: the exact path, else with
+// backslashes as folder separators (".\wall.jpg"), else its bare name beside
+// the model (an absolute "C:\...\wall.jpg" of the author's machine), as
+// Blender's "Find Missing Files" looks; each also in another letter case,
+// which FBX and 3DS names often differ in.
 fs::path find_file(const fs::path& directory, const std::string& name) {
-    fs::path exact = directory / name;
-    std::error_code error;
-    if (fs::exists(exact, error)) return exact;
     auto lower = [](std::string s) {
         for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
         return s;
     };
-    fs::path wanted = exact.filename();
-    for (const auto& entry : fs::directory_iterator(exact.parent_path(), error))
-        if (lower(entry.path().filename().string()) == lower(wanted.string())) return entry.path();
-    return exact;  // reading it gives the error that names the missing file
+    auto found = [&](const fs::path& path) -> std::optional<fs::path> {
+        std::error_code error;
+        if (fs::exists(path, error)) return path;
+        const std::string wanted = lower(path.filename().string());
+        for (const auto& entry : fs::directory_iterator(path.parent_path(), error))
+            if (lower(entry.path().filename().string()) == wanted) return entry.path();
+        return std::nullopt;
+    };
+    std::string slashes = name;
+    std::replace(slashes.begin(), slashes.end(), '\\', '/');
+    const std::string bare = fs::path(slashes).filename().string();
+    for (const fs::path& candidate : {directory / name, directory / slashes, directory / bare})
+        if (auto path = found(candidate); path && !fs::is_directory(*path)) return *path;
+    return directory / name;  // reading it gives the error that names the missing file
 }
 
 int load_texture(Model& model, const aiScene& scene, const aiMaterial& material, aiTextureType type,
@@ -80,7 +92,7 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
     if (material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
     std::string file = name.C_Str();
     Texture texture;
-    texture.name = fs::path(file).filename().string();
+    texture.name = utf8_or_latin1(fs::path(file).filename().string());  // the name; the file is read by its bytes
     if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
         if (embedded->mHeight == 0) {
             texture.image = decode_image({reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
@@ -108,7 +120,7 @@ std::size_t address_space_allowance(std::size_t file_bytes) { return (std::size_
 // specular terms as glTF's specular-glossiness, and its textures.
 Material convert_material(Model& model, const aiScene& scene, const aiMaterial& in, const fs::path& directory) {
     Material material;
-    material.name = in.GetName().C_Str();
+    material.name = utf8_or_latin1(in.GetName().C_Str());
     aiColor4D color;
     if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
         material.base_color = {color.r, color.g, color.b, color.a};
@@ -145,7 +157,7 @@ void add_nodes(Model& model, const aiScene& scene) {
         Visit visit = stack.back();
         stack.pop_back();
         Eigen::Matrix4d world = visit.parent_world * to_eigen(visit.node->mTransformation);
-        int index = add_node(model, visit.parent, visit.node->mName.C_Str());
+        int index = add_node(model, visit.parent, utf8_or_latin1(visit.node->mName.C_Str()));
         for (unsigned m = 0; m < visit.node->mNumMeshes; ++m) {
             unsigned mesh = visit.node->mMeshes[m];
             ++mesh_users[mesh];
@@ -157,7 +169,7 @@ void add_nodes(Model& model, const aiScene& scene) {
     }
     for (auto [node, mesh] : node_meshes)
         if (mesh_users[mesh] > 1) {
-            std::string name = scene.mMeshes[mesh]->mName.C_Str();
+            std::string name = utf8_or_latin1(scene.mMeshes[mesh]->mName.C_Str());
             model.nodes[node].instance_of = name.empty() ? "mesh " + std::to_string(mesh) : name;
         }
 }

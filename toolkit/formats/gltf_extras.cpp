@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "base/utf8.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +68,7 @@ double json_number(float value) { return std::strtod(format_number(value).c_str(
 tinygltf::Value asset_extras(const Model& model) {
     if (!model.is_lod) return {};
     tinygltf::Value::Object params;
-    for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(value);
+    for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(utf8_or_latin1(value));  // a path may be neither
     return boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
 }
 

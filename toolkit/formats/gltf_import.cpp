@@ -429,16 +429,6 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
     }
 }
 
-// What a loader must refuse (glTF 2.0 spec 3.2, Asset; 3.12, Specifying
-// Extensions): another major version, an extension required but not read.
-void check_asset(const Reader& reader) {
-    const std::string& version = reader.gltf.asset.version;
-    if (!version.empty() && version.rfind("2.", 0) != 0) reader.fail("asset.version", "'" + version + "' is not glTF 2");
-    for (const std::string& name : reader.gltf.extensionsRequired)
-        if (name != "MSFT_lod" && name != specular_glossiness_name && name != specular_extension_name)
-            reader.fail("extensionsRequired", "'" + name + "' is required, and boxlod does not read it");
-}
-
 }  // namespace
 
 Model import_gltf(const std::string& path, int chain_level) {
@@ -446,13 +436,12 @@ Model import_gltf(const std::string& path, int chain_level) {
     return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path, chain_level);
 }
 
-// The steps: the structure checked, tinygltf's model, what a loader must
-// refuse, textures, materials, the LoD mark, the node tree; then the whole model validated.
+// The steps: the structure checked (and what a loader must refuse), tinygltf's
+// model, textures, materials, the LoD mark, the node tree; then the whole model validated.
 Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level) {
     check_gltf_structure(bytes, binary, path);
     const tinygltf::Model gltf = load_gltf(bytes, binary, path);
     Reader reader{gltf, path};
-    check_asset(reader);
     Model model;
     model.source = path;
     read_textures(reader, model);

@@ -1,6 +1,7 @@
 #include "toolkit/formats/gltf_structure.h"
 
 #include "base/input_error.h"
+#include "toolkit/formats/gltf_extras.h"
 
 #include <nlohmann/json.hpp>
 
@@ -189,6 +190,23 @@ void check_member(const nlohmann::json& value, const MemberKind& member, std::st
         check_member((*found)[i], member, path.substr(dot + 1), here + "[" + std::to_string(i) + "]", file);
 }
 
+// What a glTF 2.0 reader must refuse (spec, 3.2 Asset and 3.12 Extensions),
+// before tinygltf reads the file: a glTF 1.0 file fails there on the first
+// member 1.0 spells otherwise, and a Draco-compressed one on its accessors,
+// with messages that name neither.
+void check_version_and_required_extensions(const nlohmann::json& root, const std::string& file) {
+    if (const auto asset = root.find("asset"); asset != root.end() && asset->is_object())
+        if (const auto version = asset->find("version"); version != asset->end()) {
+            if (version->is_number()) throw_input_error(file, "asset.version", version->dump() + " is not glTF 2 (boxlod reads glTF 2.0)");
+            if (version->is_string() && !version->get<std::string>().starts_with("2."))
+                throw_input_error(file, "asset.version", "'" + version->get<std::string>() + "' is not glTF 2 (boxlod reads glTF 2.0)");
+        }
+    if (const auto required = root.find("extensionsRequired"); required != root.end() && required->is_array())
+        for (const nlohmann::json& name : *required)
+            if (name.is_string() && name != "MSFT_lod" && name != specular_glossiness_name && name != specular_extension_name)
+                throw_input_error(file, "extensionsRequired", "'" + name.get<std::string>() + "' is required, and boxlod does not read it");
+}
+
 // Every `extensions` member, wherever it is, is an object (glTF 2.0, 3.12:
 // extensions are a dictionary); a JSON nested at most max_nesting_depth deep
 // keeps this recursion shallow.
@@ -216,6 +234,7 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
         throw_input_error(file, "", std::string("malformed JSON: ") + error.what());
     }
     if (!root.is_object()) throw_input_error(file, "", "the JSON is not an object");
+    check_version_and_required_extensions(root, file);
     for (const MemberKind& member : member_kinds) check_member(root, member, member.path, "", file);
     check_extensions(root, "", file);
 

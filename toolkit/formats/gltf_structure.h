@@ -1,4 +1,5 @@
-// What a glTF or glb file must satisfy before tinygltf reads it, so that no
+// What a glTF or glb file must satisfy before tinygltf reads it: glTF 2 with
+// no extension required that boxlod does not read, and so that no
 // offset or nesting from a hostile file can reach memory outside it or
 // overflow the stack (glTF 2.0 spec, sections 4.4 "Binary glTF" and 5.11
 // "bufferView"): the glb header and chunks inside the file, the JSON nested at

@@ -4,6 +4,7 @@
 #include "base/key_values.h"
 #include "toolkit/lod/parameter_file.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace boxlod {
@@ -11,14 +12,16 @@ namespace boxlod {
 std::vector<float> level_distances(const std::string& text, float distance, int levels) {
     std::vector<float> distances;
     if (text == "auto") {
-        for (int c = 1; c <= levels; ++c) distances.push_back(distance * std::ldexp(1.0f, c - 1));
+        for (int c = 1; c <= levels; ++c)  // within the range a parameter file reads back (64 levels double past it)
+            distances.push_back(float(std::min(double(distance) * std::ldexp(1.0, c - 1), parameter_range::distance.max)));
         return distances;
     }
     for (const std::string& item : comma_list(text)) {
         char* end = nullptr;
         const double d = std::strtod(item.c_str(), &end);
         if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)
-            throw InputError("--level-distances: '" + item + "' is not a distance in [0.001, 1000000] m");
+            throw InputError("--level-distances: '" + item + "' is not a distance in [" + format_number(parameter_range::min_positive_distance) +
+                             ", " + format_number(parameter_range::distance.max) + "] m");
         if (!distances.empty() && float(d) < distances.back())
             throw InputError("--level-distances: " + item + " comes after " + format_number(distances.back()) +
                              ": the distances must ascend, one per level 1.." + std::to_string(levels));

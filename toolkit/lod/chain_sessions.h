@@ -14,8 +14,9 @@
 
 namespace boxlod {
 
-// The distances of levels 1..N from "auto" or "D1,...,DN" (ascending, each in
-// [0.001, 1e6] m); throws InputError naming --level-distances.
+// The distances of levels 1..N from "auto" (at most parameter_range::distance's
+// largest) or "D1,...,DN" (ascending, each within that range and at least
+// 1 mm); throws InputError naming --level-distances.
 std::vector<float> level_distances(const std::string& text, float distance, int levels);
 
 struct ChainSessions {

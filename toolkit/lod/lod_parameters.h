@@ -48,7 +48,10 @@ namespace parameter_range {
 constexpr NumberRange wanted_levels{1, 64};
 constexpr NumberRange current_level{0, 10000};  // and at most the levels obtained, checked when building
 constexpr NumberRange fovy{0.1, 179};
-constexpr NumberRange distance{0, 1e6};         // metres; 0: the distance that frames the model
+// Metres, or the model's units (an FBX in centimetres: 100 per metre); 0: the
+// distance that frames the model. As far as a level's may lie: auto doubles
+// the distance per level, to 2^9 times the framing distance in a 10-level chain.
+constexpr NumberRange distance{0, 1e12};
 constexpr double min_positive_distance = 1e-3;  // a sizing camera nearer than 1 mm sizes nothing sensible
 constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two

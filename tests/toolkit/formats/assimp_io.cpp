@@ -36,6 +36,23 @@ f 1 2 5
     EXPECT_EQ(model_bounds(model).size(), Eigen::Vector3f(2, 3, 1));
 }
 
+// Names in a legacy encoding (assimp's regr01.obj: "usemtl Terraind\xe6k",
+// Latin-1) come in as UTF-8, which glTF's JSON must hold: writing the raw
+// bytes failed inside the JSON writer (exit 1).
+TEST(AssimpIo, Latin1NamesBecomeUtf8) {
+    auto folder = test::scratch_folder("assimp_latin1");
+    test::write_text(folder / "m.mtl", "newmtl Terraind\xe6k\nKd 0.5 0.5 0.5\n");
+    test::write_text(folder / "m.obj", "mtllib m.mtl\ng Gel\xe4nde\nusemtl Terraind\xe6k\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    Model model = load_model((folder / "m.obj").string());
+    const auto material = std::find_if(model.materials.begin(), model.materials.end(), [](const Material& m) { return m.name.starts_with("Terrain"); });
+    ASSERT_NE(material, model.materials.end());
+    EXPECT_EQ(material->name, "Terraind\xc3\xa6k");
+    EXPECT_TRUE(std::any_of(model.nodes.begin(), model.nodes.end(), [](const Node& n) { return n.name == "Gel\xc3\xa4nde"; }));
+    save_model(model, (folder / "m.gltf").string());
+    const Model read_back = load_model((folder / "m.gltf").string());
+    EXPECT_TRUE(std::any_of(read_back.materials.begin(), read_back.materials.end(), [](const Material& m) { return m.name == "Terraind\xc3\xa6k"; }));
+}
+
 TEST(AssimpIo, MalformedFilesAreInputErrors) {
     auto folder = test::scratch_folder("assimp_bad");
     test::write_text(folder / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n");
@@ -65,6 +82,26 @@ TEST(AssimpIo, EveryFormatReadsWithItsHierarchy) {
     Model textured = load_model("/usr/share/assimp/models/3DS/cube_with_diffuse_texture.3DS");
     ASSERT_EQ(textured.textures.size(), 1u);
     EXPECT_GT(textured.textures[0].image.width, 0);
+}
+
+// Files written on Windows name their textures with backslashes (spider.obj:
+// ".\wal67ar_small.jpg"; test.x: ".\test.png") or by the author's absolute
+// path: read from the folder or beside the model, they load.
+TEST(AssimpIo, TexturesNamedAsOnWindowsLoad) {
+    for (const char* file : {"OBJ/spider.obj", "X/test.x"}) {
+        Model model = load_model(std::string("/usr/share/assimp/models/") + file);
+        ASSERT_FALSE(model.textures.empty()) << file;
+        EXPECT_GT(model.textures[0].image.width, 0) << file;
+    }
+    auto folder = test::scratch_folder("assimp_windows_path");
+    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "Wall.png", fs::copy_options::overwrite_existing);
+    test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\textures\\wall.png\n");
+    test::write_text(folder / "m.obj", "mtllib m.mtl\nusemtl wall\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    Model model = load_model((folder / "m.obj").string());
+    ASSERT_EQ(model.textures.size(), 1u);
+    EXPECT_GT(model.textures[0].image.width, 0);
+    test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\missing.png\n");
+    EXPECT_NE(test::input_error_of([&] { load_model((folder / "m.obj").string()); }).find("missing.png: no such file"), std::string::npos);
 }
 
 // Every command reads through the isolated reader (a child process, the scene

@@ -84,3 +84,15 @@ TEST(GltfStructure, MembersBoxlodReadsHaveTheirSchemasKind) {
               "m.gltf: materials[0].normalTexture.extensions: must be an object");
     EXPECT_EQ(problem(R"({"asset":{"version":"2.0","extras":{"extensions":[1]}},"materials":[{"alphaCutoff":0.5,"doubleSided":true}]})"), "");
 }
+
+// glTF 1.0 and Draco files are refused by what they are, before tinygltf reads
+// them: it would fail on a member that 1.0 spells otherwise ("scene" a string)
+// or on the compressed accessors, with a message that names neither.
+TEST(GltfStructure, RefusesOtherVersionsAndRequiredExtensionsByName) {
+    EXPECT_NE(problem(R"({"asset":{"version":"1.0"},"scene":"defaultScene"})").find("asset.version: '1.0' is not glTF 2"), std::string::npos);
+    EXPECT_NE(problem(R"({"asset":{"version":1},"scene":"defaultScene"})").find("asset.version: 1 is not glTF 2"), std::string::npos);
+    EXPECT_NE(problem(R"({"asset":{"version":"2.0"},"extensionsRequired":["KHR_draco_mesh_compression"],"accessors":[{"count":3}]})")
+                  .find("extensionsRequired: 'KHR_draco_mesh_compression' is required, and boxlod does not read it"),
+              std::string::npos);
+    EXPECT_EQ(problem(R"({"asset":{"version":"2.0"},"extensionsRequired":["MSFT_lod","KHR_materials_specular"]})"), "");
+}
