@@ -61,10 +61,10 @@ Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
 }
 
 // A texture as files written on Windows name it: the exact path, else with
-// backslashes as folder separators (".\wall.jpg"), else its bare name beside
-// the model (an absolute "C:\...\wall.jpg" of the author's machine), as
-// Blender's "Find Missing Files" looks; each also in another letter case,
-// which FBX and 3DS names often differ in.
+// backslashes as folder separators (".\wall.jpg"; Blender's "//wall.jpg" is
+// in the model's folder), else its bare name beside the model (an absolute
+// "C:\...\wall.jpg" of the author's machine), as Blender's "Find Missing
+// Files" looks; each also in another letter case, as FBX and 3DS names often differ.
 fs::path find_file(const fs::path& directory, const std::string& name) {
     auto lower = [](std::string s) {
         for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -80,6 +80,7 @@ fs::path find_file(const fs::path& directory, const std::string& name) {
     };
     std::string slashes = name;
     std::replace(slashes.begin(), slashes.end(), '\\', '/');
+    if (slashes.starts_with("//")) slashes.erase(0, 2);  // Blender's "relative to the .blend file"
     const std::string bare = fs::path(slashes).filename().string();
     for (const fs::path& candidate : {directory / name, directory / slashes, directory / bare})
         if (auto path = found(candidate); path && !fs::is_directory(*path)) return *path;
@@ -189,8 +190,11 @@ Model import_with_assimp_in_process(const std::string& path) {
     const std::string extension = lowercase_extension(path);
     check_assimp_input(bytes, extension, path);
     Assimp::Importer importer;
-    // No triangulation here (see convert_mesh); validation rejects inconsistent data.
-    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);  // from the path: OBJ and others read files beside it
+    // No triangulation here (see convert_mesh); validation rejects inconsistent
+    // data; textures mapped by projection (LightWave's planar, cylindrical and
+    // spherical mappings) get the texture coordinates a glTF texture needs.
+    // From the path: OBJ and others read files beside it.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_GenUVCoords);
     if (!scene || !scene->mRootNode) {
         std::string reason = importer.GetErrorString();
         if (reason.find("bad_alloc") != std::string::npos)
@@ -206,6 +210,7 @@ Model import_with_assimp_in_process(const std::string& path) {
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
         model.materials.push_back(convert_material(model, *scene, *scene->mMaterials[i], directory));
     add_nodes(model, *scene);
+    make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;
 }

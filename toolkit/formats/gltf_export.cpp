@@ -39,6 +39,9 @@ struct Writer {
     // Where the model being added lands: its texture i is glTF texture textures[i],
     // its material i glTF material materials[i], its node 0 node_offset.
     std::vector<int> textures, materials;
+    // ... and glTF material untextured_materials[i] where drawn without its
+    // textures (drawn_untextured); the same as materials[i] where it is only so or never.
+    std::vector<int> untextured_materials;
     int node_offset = 0;
     // A chain's levels share what is equal: textures by content, materials, and
     // the geometry of the parts a level keeps (its nodes and meshes stay its own).
@@ -214,37 +217,70 @@ void add_images(Writer& w, const Model& model, const fs::path& target, bool bina
     }
 }
 
+tinygltf::Material gltf_material(Writer& w, const Material& material) {
+    tinygltf::Material out;
+    out.name = material.name;
+    out.pbrMetallicRoughness.baseColorFactor.clear();
+    for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
+    auto texture = [&](int index) { return index < 0 ? -1 : w.textures[std::size_t(index)]; };
+    out.pbrMetallicRoughness.baseColorTexture.index = texture(material.base_color_texture);
+    out.pbrMetallicRoughness.metallicFactor = 0;
+    out.pbrMetallicRoughness.roughnessFactor = 1;
+    out.normalTexture.index = texture(material.normal_texture);
+    out.doubleSided = material.double_sided;
+    out.alphaMode = enum_name(alpha_modes(), material.alpha_mode);
+    if (material.alpha_mode == AlphaMode::mask) out.alphaCutoff = json_number(material.alpha_cutoff);
+    out.extras = material_extras(material, texture(material.height_texture));
+    auto add_extension = [&](const char* name, tinygltf::Value value) {
+        out.extensions[name] = std::move(value);
+        if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), name) == w.gltf.extensionsUsed.end())
+            w.gltf.extensionsUsed.push_back(name);
+    };
+    if (material.specular_glossiness)
+        add_extension(specular_glossiness_name, specular_glossiness_extension(material, texture(material.base_color_texture),
+                                                                              texture(material.specular_texture)));
+    if (const auto& specular = material.specular_extension)
+        add_extension(specular_extension_name,
+                      specular_extension_value(*specular, texture(specular->texture), texture(specular->color_texture)));
+    return out;
+}
+
+// Its glTF index: an equal material's where the levels share them.
+int add_material(Writer& w, const Material& material) {
+    const tinygltf::Material out = gltf_material(w, material);
+    const auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
+    if (equal != w.gltf.materials.end()) return int(equal - w.gltf.materials.begin());
+    w.gltf.materials.push_back(out);
+    return int(w.gltf.materials.size()) - 1;
+}
+
+// A primitive without texture coordinates is drawn in its material's colours
+// alone (renderer/fragment_stage.cpp), and a glTF texture needs them (glTF
+// 2.0, 3.9.2; the validator's MESH_PRIMITIVE_TOO_FEW_TEXCOORDS): its material
+// is written without textures.
+bool drawn_untextured(const Model& model, const Primitive& primitive) {
+    return primitive.material >= 0 && primitive.uvs.empty() && samples_textures(model.materials[std::size_t(primitive.material)]);
+}
+
+// Each material as its primitives draw it: with its textures, without, or both
+// (then the one without follows it).
 void add_materials(Writer& w, const Model& model) {
-    w.materials.clear();
-    for (const Material& material : model.materials) {
-        tinygltf::Material out;
-        out.name = material.name;
-        out.pbrMetallicRoughness.baseColorFactor.clear();
-        for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
-        auto texture = [&](int index) { return index < 0 ? -1 : w.textures[std::size_t(index)]; };
-        out.pbrMetallicRoughness.baseColorTexture.index = texture(material.base_color_texture);
-        out.pbrMetallicRoughness.metallicFactor = 0;
-        out.pbrMetallicRoughness.roughnessFactor = 1;
-        out.normalTexture.index = texture(material.normal_texture);
-        out.doubleSided = material.double_sided;
-        out.alphaMode = enum_name(alpha_modes(), material.alpha_mode);
-        if (material.alpha_mode == AlphaMode::mask) out.alphaCutoff = json_number(material.alpha_cutoff);
-        out.extras = material_extras(material, texture(material.height_texture));
-        auto add_extension = [&](const char* name, tinygltf::Value value) {
-            out.extensions[name] = std::move(value);
-            if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), name) == w.gltf.extensionsUsed.end())
-                w.gltf.extensionsUsed.push_back(name);
-        };
-        if (material.specular_glossiness)
-            add_extension(specular_glossiness_name, specular_glossiness_extension(material, texture(material.base_color_texture),
-                                                                                  texture(material.specular_texture)));
-        if (const auto& specular = material.specular_extension)
-            add_extension(specular_extension_name,
-                          specular_extension_value(*specular, texture(specular->texture), texture(specular->color_texture)));
-        auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
-        w.materials.push_back(int(equal - w.gltf.materials.begin()));
-        if (equal == w.gltf.materials.end()) w.gltf.materials.push_back(out);
+    std::vector<bool> with(model.materials.size(), false), without(model.materials.size(), false);
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives)
+            if (primitive.material >= 0) (drawn_untextured(model, primitive) ? without : with)[std::size_t(primitive.material)] = true;
+    w.materials.clear(), w.untextured_materials.clear();
+    for (std::size_t m = 0; m < model.materials.size(); ++m) {
+        Material untextured = model.materials[m];
+        for (const auto& slot : texture_slots(untextured)) *slot.index = -1;
+        w.materials.push_back(add_material(w, without[m] && !with[m] ? untextured : model.materials[m]));
+        w.untextured_materials.push_back(without[m] && with[m] ? add_material(w, untextured) : w.materials.back());
     }
+}
+
+int material_of(const Writer& w, const Model& model, const Primitive& primitive) {
+    if (primitive.material < 0) return -1;
+    return (drawn_untextured(model, primitive) ? w.untextured_materials : w.materials)[std::size_t(primitive.material)];
 }
 
 // FNV-1a over a node's positions and indices: finds candidates for sharing.
@@ -293,8 +329,7 @@ void add_nodes(Writer& w, const Model& model) {
         for (int child : node.children) out.children.push_back(child + w.node_offset);
         out.extras = node_extras(node);
         std::vector<int> materials;
-        for (const Primitive& primitive : node.primitives)
-            materials.push_back(primitive.material < 0 ? -1 : w.materials[std::size_t(primitive.material)]);
+        for (const Primitive& primitive : node.primitives) materials.push_back(material_of(w, model, primitive));
         const std::uint64_t hash = w.share && node.has_geometry() ? geometry_hash(node) : 0;
         const int shared = w.share && node.has_geometry() ? written_mesh(w, node, hash, materials) : -1;
         if (shared >= 0) {

@@ -448,6 +448,7 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_materials(reader, model);
     read_asset_extras(gltf.asset.extras, model);
     read_nodes(reader, chain_level_roots(reader, scene_roots(reader), chain_level), model);
+    make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;
 }

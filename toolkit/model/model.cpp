@@ -41,6 +41,11 @@ std::vector<TextureSlot<int>> texture_slots(const Material& material) {
     return slots;
 }
 
+bool samples_textures(const Material& material) {
+    const auto slots = texture_slots(material);
+    return std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.index >= 0; });
+}
+
 int add_node(Model& model, int parent, std::string name) {
     int index = int(model.nodes.size());
     Node& node = model.nodes.emplace_back();
@@ -127,6 +132,24 @@ void validate_material(const Model& model, const Material& material) {
 }
 
 }  // namespace
+
+void make_unit_normals_and_tangents(Model& model) {
+    constexpr float least_squared_length = 1e-12f;
+    auto unit = [](auto& vectors, auto&& xyz) {
+        for (auto& v : vectors)
+            if (!v.allFinite()) return true;  // validate_model's to refuse
+        for (auto& v : vectors)
+            if (!(xyz(v).squaredNorm() > least_squared_length)) return false;
+        for (auto& v : vectors) xyz(v).normalize();
+        return true;
+    };
+    for (Node& node : model.nodes)
+        for (Primitive& p : node.primitives) {
+            if (!unit(p.normals, [](Eigen::Vector3f& n) -> Eigen::Vector3f& { return n; })) p.normals.clear();
+            if (!unit(p.tangents, [](Eigen::Vector4f& t) { return t.head<3>(); })) p.tangents.clear();
+            for (Eigen::Vector4f& t : p.tangents) t.w() = t.w() < 0 ? -1.0f : 1.0f;
+        }
+}
 
 void validate_model(const Model& model) {
     const std::string& file = model.source;

@@ -98,6 +98,7 @@ struct TextureSlot {
 };
 std::vector<TextureSlot<int*>> texture_slots(Material& material);
 std::vector<TextureSlot<int>> texture_slots(const Material& material);
+bool samples_textures(const Material& material);  // any slot with a texture
 
 // A triangle list with one material. `polygon_count` is how many polygons the
 // source stored (a quad is one polygon, two triangles): the manual's # Faces.
@@ -155,5 +156,12 @@ Bounds model_bounds(const Model& model);
 // Checks the invariants every importer guarantees (indices in range, finite
 // numbers, a tree, some geometry); throws InputError naming `model.source`.
 void validate_model(const Model& model);
+
+// Normals and tangents of unit length, handedness +-1, as glTF holds them
+// (glTF 2.0, 3.7.2.1) and the renderer assumes. A primitive with one of no
+// direction (zero: glTF-Sample-Models' BoxBadNormals) is drawn without them,
+// flat or unmapped. An importer calls it before validate_model, which refuses
+// what is not finite.
+void make_unit_normals_and_tangents(Model& model);
 
 }  // namespace boxlod

@@ -11,9 +11,7 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
     VertexLayout layout;
     layout.normals = !primitive.normals.empty();
-    const auto slots = material ? texture_slots(*material) : std::vector<TextureSlot<int>>{};
-    const bool sampled = std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.index >= 0; });
-    layout.uvs = !primitive.uvs.empty() && sampled;
+    layout.uvs = !primitive.uvs.empty() && material && samples_textures(*material);
     layout.tangents = !primitive.tangents.empty() && mapped;
     layout.index_bytes = primitive.positions.size() <= 65535 ? 2 : 4;
     return layout;

@@ -100,8 +100,28 @@ TEST(AssimpIo, TexturesNamedAsOnWindowsLoad) {
     Model model = load_model((folder / "m.obj").string());
     ASSERT_EQ(model.textures.size(), 1u);
     EXPECT_GT(model.textures[0].image.width, 0);
+    fs::create_directories(folder / "maps");
+    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "maps" / "stone.png", fs::copy_options::overwrite_existing);
+    test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd //maps/stone.png\n");  // Blender's "from the .blend's folder"
+    EXPECT_EQ(load_model((folder / "m.obj").string()).textures.size(), 1u);
     test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\missing.png\n");
     EXPECT_NE(test::input_error_of([&] { load_model((folder / "m.obj").string()); }).find("missing.png: no such file"), std::string::npos);
+}
+
+// LightWave maps textures by projection (planar, cylindrical, spherical):
+// assimp's GenUVCoords turns each into the texture coordinates glTF needs.
+TEST(AssimpIo, ProjectionMappedTexturesGetTextureCoordinates) {
+    for (const char* file : {"earth_planar_z.lwo", "earth_cylindrical_y.lwo", "earth_spherical_x.lwo"}) {
+        const Model model = load_model(std::string("/usr/share/assimp/models/LWO/LWO2/MappingModes/") + file);
+        int textured = 0;
+        for (const Node& node : model.nodes)
+            for (const Primitive& primitive : node.primitives)
+                if (primitive.material >= 0 && samples_textures(model.materials[std::size_t(primitive.material)])) {
+                    EXPECT_EQ(primitive.uvs.size(), primitive.positions.size()) << file;
+                    ++textured;
+                }
+        EXPECT_GT(textured, 0) << file;
+    }
 }
 
 // Every command reads through the isolated reader (a child process, the scene

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <algorithm>
 
 using namespace boxlod;
 namespace fs = std::filesystem;
@@ -225,6 +226,43 @@ TEST(GltfIo, IndicesAttributesAndExtensionsAsAClientReadsThem) {
     expect_same_model(as_written(model), load_model((folder / "house.glb").string()));
 }
 
+// A primitive without texture coordinates draws its material untextured
+// (the renderer) and is written so: a glTF texture needs them (the validator's
+// MESH_PRIMITIVE_TOO_FEW_TEXCOORDS on LightWave files whose textures are
+// mapped by projection). A material drawn both ways is written both ways.
+TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
+    auto folder = test::scratch_folder("gltf_untextured");
+    Model model = sample_model();
+    const int brick = model.nodes[1].primitives[0].material;
+    ASSERT_TRUE(samples_textures(model.materials[std::size_t(brick)]));
+    Primitive bare = model.nodes[1].primitives[0];
+    bare.uvs.clear(), bare.tangents.clear();
+    model.nodes[1].primitives.push_back(bare);
+    save_model(model, (folder / "both.glb").string());
+    tinygltf::Model gltf;
+    std::string error, warning;
+    ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "both.glb").string())) << error;
+    int textured = 0, untextured = 0;
+    for (const tinygltf::Mesh& mesh : gltf.meshes)
+        for (const tinygltf::Primitive& p : mesh.primitives) {
+            const tinygltf::Material& material = gltf.materials[std::size_t(p.material)];
+            if (material.name != model.materials[std::size_t(brick)].name) continue;
+            const bool sampled = material.pbrMetallicRoughness.baseColorTexture.index >= 0 || material.normalTexture.index >= 0;
+            EXPECT_EQ(sampled, p.attributes.count("TEXCOORD_0") == 1);
+            ++(sampled ? textured : untextured);
+        }
+    EXPECT_EQ(textured, 1);
+    EXPECT_EQ(untextured, 1);
+    // Drawn only without them, the material is written once, untextured.
+    model.nodes[1].primitives.erase(model.nodes[1].primitives.begin());
+    save_model(model, (folder / "bare.glb").string());
+    const Model back = load_model((folder / "bare.glb").string());
+    const auto written = std::find_if(back.materials.begin(), back.materials.end(),
+                                      [&](const Material& m) { return m.name == model.materials[std::size_t(brick)].name; });
+    ASSERT_NE(written, back.materials.end());
+    EXPECT_FALSE(samples_textures(*written));
+}
+
 namespace {
 
 // A one-triangle glTF at `path` whose material states `extension` with `fields` (JSON).
@@ -292,6 +330,8 @@ TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
     model.textures.push_back({"tint.png", Image8(2, 2, 4, 100), {}});
     model.materials[0].specular_extension->texture = 0;
     model.materials[0].specular_extension->color_texture = 1;
+    for (Node& node : model.nodes)  // texture coordinates, without which a primitive draws no texture (and is written so)
+        for (Primitive& primitive : node.primitives) primitive.uvs.assign(primitive.positions.size(), Eigen::Vector2f(0.5f, 0.5f));
     save_model(model, (folder / "converted.glb").string());
     Model back = load_model((folder / "converted.glb").string());
     ASSERT_TRUE(back.materials[0].specular_extension);

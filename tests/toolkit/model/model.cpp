@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace boxlod;
 
 namespace {
@@ -89,4 +91,25 @@ TEST(Model, ValidationRejectsEachKindOfBadData) {
         EXPECT_NE(message.find("out of range"), std::string::npos);
         EXPECT_EQ(message.find('\n'), std::string::npos);
     }
+}
+
+TEST(Model, NormalsAndTangentsBecomeUnitOrAreDropped) {
+    Model model;
+    add_node(model, -1, "root");
+    Primitive scaled = triangle(), zero = triangle();
+    scaled.normals = {{0, 0, 2}, {0, 0, 0.5f}, {3, 0, 4}};
+    scaled.tangents = {{2, 0, 0, 0.3f}, {1, 0, 0, -7}, {0, 4, 0, 1}};
+    zero.normals = {{0, 0, 1}, {0, 0, 0}, {0, 0, 1}};  // glTF-Sample-Models' BoxBadNormals
+    zero.tangents = {{1, 0, 0, 1}, {1, 0, 0, 1}, {0, 0, 0, 1}};
+    model.nodes[0].primitives = {scaled, zero};
+    make_unit_normals_and_tangents(model);
+    const Primitive &a = model.nodes[0].primitives[0], &b = model.nodes[0].primitives[1];
+    EXPECT_EQ(a.normals, (std::vector<Eigen::Vector3f>{{0, 0, 1}, {0, 0, 1}, {0.6f, 0, 0.8f}}));
+    EXPECT_EQ(a.tangents, (std::vector<Eigen::Vector4f>{{1, 0, 0, 1}, {1, 0, 0, -1}, {0, 1, 0, 1}}));
+    EXPECT_TRUE(b.normals.empty());   // drawn flat
+    EXPECT_TRUE(b.tangents.empty());  // unmapped
+    // What is not finite is left for validate_model to refuse.
+    model.nodes[0].primitives[0].normals[0].x() = std::nanf("");
+    make_unit_normals_and_tangents(model);
+    EXPECT_THROW(validate_model(model), InputError);
 }
