@@ -6,12 +6,15 @@
 // (glTF has no slot for them: docs/design.md, Files) and the levels MSFT_lod names;
 // in an MSFT_lod chain, the level buffers' data URIs are warned of and allowed
 // (Babylon.js loads the levels in order only through them: docs/cost.md).
-//   node gltf_validator.mjs VALIDATOR_DIR FILE...
+// --allow CODE also allows that warning (a source's own, kept as it was).
+//   node gltf_validator.mjs VALIDATOR_DIR [--allow CODE] FILE...
 import { readFile } from "node:fs/promises";
 import { createRequire } from "node:module";
 import path from "node:path";
 
-const [validatorDir, ...files] = process.argv.slice(2);
+const [validatorDir, ...rest] = process.argv.slice(2);
+const allowed = rest[0] === "--allow" ? rest[1] : undefined;
+const files = allowed ? rest.slice(2) : rest;
 const validator = createRequire(path.join(validatorDir, "index.js"))(validatorDir);
 // The JSON of a .gltf, or of a .glb's first chunk (glTF 2.0, GLB File Format Specification).
 function gltfJson(bytes) {
@@ -26,7 +29,7 @@ function gltfJson(bytes) {
 function namedElsewhere(gltf) {
     const pointers = new Set();
     for (const node of gltf.nodes ?? [])
-        for (const id of node.extensions?.MSFT_lod?.ids ?? []) pointers.add(`/nodes/${id}`);
+        for (const id of node?.extensions?.MSFT_lod?.ids ?? []) pointers.add(`/nodes/${id}`);
     for (const material of gltf.materials ?? []) {
         const texture = material.extras?.boxlod?.height_texture;
         if (texture === undefined) continue;
@@ -54,7 +57,8 @@ for (const file of files) {
         if (m.severity <= 1 || unused.includes(m))
             console.log(`  ${["error", "warning", "info"][m.severity]} ${m.code} ${m.pointer ?? ""}: ${m.message}`);
     }
-    const warnings = i.messages.filter((m) => m.severity === 1 && !(chain && m.code === "DATA_URI_GLB" && m.pointer.startsWith("/buffers/")));
+    const warnings = i.messages.filter((m) => m.severity === 1 && m.code !== allowed &&
+        !(chain && m.code === "DATA_URI_GLB" && m.pointer.startsWith("/buffers/")));
     failed ||= i.numErrors + warnings.length + unused.length > 0;
 }
 process.exit(failed ? 1 : 0);

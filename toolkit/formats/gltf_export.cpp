@@ -162,13 +162,43 @@ struct Writer {
     }
 };
 
-// The textures as PNG images: in the .glb's buffer, or as files beside a .gltf
-// (named after the texture where that makes a plain .png name).
-void add_images(Writer& w, const Model& model, const fs::path& target, bool binary, int threads) {
+// A primitive without texture coordinates is drawn in its material's colours
+// alone (renderer/fragment_stage.cpp), and a glTF texture needs them (glTF
+// 2.0, 3.9.2; the validator's MESH_PRIMITIVE_TOO_FEW_TEXCOORDS): its material
+// is written without textures.
+bool drawn_untextured(const Model& model, const Primitive& primitive) {
+    return primitive.material >= 0 && primitive.uvs.empty() && samples_textures(model.materials[std::size_t(primitive.material)]);
+}
+
+// Which way each material is drawn: with its textures (or by nothing: as it
+// is), without them, or both.
+struct MaterialUse {
+    std::vector<bool> textured, untextured;
+};
+
+MaterialUse material_use(const Model& model) {
+    MaterialUse use{std::vector<bool>(model.materials.size(), false), std::vector<bool>(model.materials.size(), false)};
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives)
+            if (primitive.material >= 0)
+                (drawn_untextured(model, primitive) ? use.untextured : use.textured)[std::size_t(primitive.material)] = true;
+    for (std::size_t m = 0; m < model.materials.size(); ++m) use.textured[m] = use.textured[m] || !use.untextured[m];
+    return use;
+}
+
+// The textures a material drawn with them samples, as PNG images: in the
+// .glb's buffer, or as files beside a .gltf (named after the texture where
+// that makes a plain .png name).
+void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs::path& target, bool binary, int threads) {
+    std::vector<bool> sampled(model.textures.size(), false);
+    for (std::size_t m = 0; m < model.materials.size(); ++m)
+        for (const auto& slot : texture_slots(model.materials[m]))
+            if (use.textured[m] && slot.index >= 0) sampled[std::size_t(slot.index)] = true;
     // A texture equal to one already written (a chain's levels share the original's) is referred to, not stored again.
     w.textures.assign(model.textures.size(), -1);
     std::vector<std::size_t> fresh;
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
+        if (!sampled[i]) continue;
         int next = int(w.gltf.textures.size() + fresh.size());
         // (Digests only for chains: a single model's textures are distinct, and hashing pages costs.)
         auto [at, added] = w.share ? w.texture_of.try_emplace(texture_digest(model.textures[i]), next)
@@ -254,27 +284,14 @@ int add_material(Writer& w, const Material& material) {
     return int(w.gltf.materials.size()) - 1;
 }
 
-// A primitive without texture coordinates is drawn in its material's colours
-// alone (renderer/fragment_stage.cpp), and a glTF texture needs them (glTF
-// 2.0, 3.9.2; the validator's MESH_PRIMITIVE_TOO_FEW_TEXCOORDS): its material
-// is written without textures.
-bool drawn_untextured(const Model& model, const Primitive& primitive) {
-    return primitive.material >= 0 && primitive.uvs.empty() && samples_textures(model.materials[std::size_t(primitive.material)]);
-}
-
-// Each material as its primitives draw it: with its textures, without, or both
-// (then the one without follows it).
-void add_materials(Writer& w, const Model& model) {
-    std::vector<bool> with(model.materials.size(), false), without(model.materials.size(), false);
-    for (const Node& node : model.nodes)
-        for (const Primitive& primitive : node.primitives)
-            if (primitive.material >= 0) (drawn_untextured(model, primitive) ? without : with)[std::size_t(primitive.material)] = true;
+// Each material as its primitives draw it (material_use); drawn both ways, the one without textures follows.
+void add_materials(Writer& w, const Model& model, const MaterialUse& use) {
     w.materials.clear(), w.untextured_materials.clear();
     for (std::size_t m = 0; m < model.materials.size(); ++m) {
         Material untextured = model.materials[m];
         for (const auto& slot : texture_slots(untextured)) *slot.index = -1;
-        w.materials.push_back(add_material(w, without[m] && !with[m] ? untextured : model.materials[m]));
-        w.untextured_materials.push_back(without[m] && with[m] ? add_material(w, untextured) : w.materials.back());
+        w.materials.push_back(add_material(w, use.textured[m] ? model.materials[m] : untextured));
+        w.untextured_materials.push_back(use.textured[m] && use.untextured[m] ? add_material(w, untextured) : w.materials.back());
     }
 }
 
@@ -328,6 +345,10 @@ void add_nodes(Writer& w, const Model& model) {
         out.name = node.name;
         for (int child : node.children) out.children.push_back(child + w.node_offset);
         out.extras = node_extras(node);
+        // tinygltf writes a node with no member as null, which no reader takes
+        // (an unnamed, empty OBJ group): such a node is named by its index.
+        if (out.name.empty() && out.children.empty() && !node.has_geometry() && !out.extras.IsObject())
+            out.name = "node " + std::to_string(w.gltf.nodes.size());
         std::vector<int> materials;
         for (const Primitive& primitive : node.primitives) materials.push_back(material_of(w, model, primitive));
         const std::uint64_t hash = w.share && node.has_geometry() ? geometry_hash(node) : 0;
@@ -448,8 +469,9 @@ void build_document(Writer& w, const std::vector<const Model*>& levels, const st
         w.node_offset = int(w.gltf.nodes.size());
         roots.push_back(w.node_offset);
         w.start_level();
-        add_images(w, *model, target, binary, threads);
-        add_materials(w, *model);
+        const MaterialUse use = material_use(*model);
+        add_images(w, *model, use, target, binary, threads);
+        add_materials(w, *model, use);
         add_nodes(w, *model);
     }
     if (w.share) sequence_levels(w);

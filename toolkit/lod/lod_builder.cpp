@@ -87,6 +87,8 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
                                       const std::vector<std::optional<OrientedBox>>* boxes, HybridMeasurements* measurements) {
     if (model.is_lod)
         throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
+    if (!draws_anything(model))  // every level would be empty (teapots.DAE: a transparency of "0,200000" read as 0)
+        throw_input_error(model.source, "", "every surface is fully transparent (opacity 0): nothing to draw or bake");
     validate_parameters(parameters, model.source);
     if (!parameters.budgets.empty() && !orders_by_bytes(parameters.level_mode))  // a sweep drops them for the other modes
         throw_input_error(model.source, "", std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +

@@ -46,6 +46,17 @@ bool samples_textures(const Material& material) {
     return std::any_of(slots.begin(), slots.end(), [](const auto& slot) { return slot.index >= 0; });
 }
 
+bool draws_anything(const Model& model) {
+    for (const Node& node : model.nodes)
+        for (const Primitive& primitive : node.primitives) {
+            if (primitive.indices.empty()) continue;
+            if (primitive.material < 0 || primitive.material >= int(model.materials.size())) return true;
+            const Material& material = model.materials[std::size_t(primitive.material)];
+            if (material.alpha_mode == AlphaMode::opaque || material.base_color.w() > 0) return true;
+        }
+    return false;
+}
+
 int add_node(Model& model, int parent, std::string name) {
     int index = int(model.nodes.size());
     Node& node = model.nodes.emplace_back();

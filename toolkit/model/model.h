@@ -157,6 +157,11 @@ Bounds model_bounds(const Model& model);
 // numbers, a tree, some geometry); throws InputError naming `model.source`.
 void validate_model(const Model& model);
 
+// Whether any triangle can be seen: one whose material is not fully
+// transparent (blended or masked with a base colour alpha of 0; a texture's
+// alpha only scales it). A model that draws nothing has nothing to bake.
+bool draws_anything(const Model& model);
+
 // Normals and tangents of unit length, handedness +-1, as glTF holds them
 // (glTF 2.0, 3.7.2.1) and the renderer assumes. A primitive with one of no
 // direction (zero: glTF-Sample-Models' BoxBadNormals) is drawn without them,

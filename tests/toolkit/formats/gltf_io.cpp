@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 #include <algorithm>
 
@@ -253,7 +254,8 @@ TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
         }
     EXPECT_EQ(textured, 1);
     EXPECT_EQ(untextured, 1);
-    // Drawn only without them, the material is written once, untextured.
+    // Drawn only without them, the material is written once, untextured, and
+    // the textures only it samples not at all (the validator's UNUSED_OBJECT).
     model.nodes[1].primitives.erase(model.nodes[1].primitives.begin());
     save_model(model, (folder / "bare.glb").string());
     const Model back = load_model((folder / "bare.glb").string());
@@ -261,6 +263,20 @@ TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
                                       [&](const Material& m) { return m.name == model.materials[std::size_t(brick)].name; });
     ASSERT_NE(written, back.materials.end());
     EXPECT_FALSE(samples_textures(*written));
+    EXPECT_TRUE(back.textures.empty());
+}
+
+// A node with nothing to write (an unnamed, empty OBJ group in assimp's
+// regr01.obj) came out as null, which no reader takes: it is named instead.
+TEST(GltfIo, AnEmptyUnnamedNodeIsWrittenAsAnObject) {
+    auto folder = test::scratch_folder("gltf_empty_node");
+    Model model = sample_model();
+    add_node(model, 0, "");
+    save_model(model, (folder / "m.gltf").string());
+    const nlohmann::json gltf = nlohmann::json::parse(test::read_text(folder / "m.gltf"));
+    for (const nlohmann::json& node : gltf.at("nodes")) EXPECT_TRUE(node.is_object()) << node.dump();
+    EXPECT_EQ(gltf.at("nodes").back().value("name", ""), "node " + std::to_string(model.nodes.size() - 1));
+    EXPECT_EQ(load_model((folder / "m.gltf").string()).nodes.size(), model.nodes.size());
 }
 
 namespace {

@@ -113,3 +113,22 @@ TEST(Model, NormalsAndTangentsBecomeUnitOrAreDropped) {
     make_unit_normals_and_tangents(model);
     EXPECT_THROW(validate_model(model), InputError);
 }
+
+TEST(Model, DrawsAnythingUnlessEverySurfaceIsFullyTransparent) {
+    Model model;
+    add_node(model, -1, "root");
+    model.nodes[0].primitives = {triangle()};
+    EXPECT_TRUE(draws_anything(model));  // no material: the default, opaque
+    Material clear;
+    clear.alpha_mode = AlphaMode::blend;
+    clear.base_color.w() = 0;
+    model.materials = {clear};
+    model.nodes[0].primitives[0].material = 0;
+    EXPECT_FALSE(draws_anything(model));
+    model.materials[0].alpha_mode = AlphaMode::opaque;  // alpha ignored
+    EXPECT_TRUE(draws_anything(model));
+    model.materials[0].alpha_mode = AlphaMode::mask;
+    EXPECT_FALSE(draws_anything(model));
+    model.materials[0].base_color.w() = 0.2f;
+    EXPECT_TRUE(draws_anything(model));
+}
