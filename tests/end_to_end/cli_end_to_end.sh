@@ -217,6 +217,20 @@ assert len(uris) == len(set(uris)) > 3 and all(os.path.getsize(os.path.join(sys.
 assert sorted(uris) == sorted(f for f in os.listdir(sys.argv[1]) if f.endswith('.glb'))
 PY
 check "tiles gives the same bytes on two threads" bash -c "'$boxlod' tiles '$work/city2.glb' -o '$work/tiles2' --resolution 128 --threads 2 >/dev/null && diff -r '$work/tiles1' '$work/tiles2'"
+# A model from a file keeps its geometry where it is: all on the root, one
+# object; on the root and below it, the root's own geometry one object more.
+/usr/bin/python3 - "$work" <<'PY'
+import json, shutil, sys
+work = sys.argv[1]
+tree = json.load(open('/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf'))
+shutil.copy('/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured0.bin', work)
+shutil.copy('/usr/share/assimp/models/glTF2/BoxTextured-glTF/CesiumLogoFlat.png', work)
+root = tree['scenes'][tree.get('scene', 0)]['nodes'][0]
+tree['nodes'][root]['mesh'] = 0  # the box on the root too, beside its child's (the matrix turns it)
+json.dump(tree, open(f'{work}/root_and_child.gltf', 'w'))
+PY
+check "tiles of a model all on its root: one object" bash -c "'$boxlod' tiles /usr/share/assimp/models/OBJ/box.obj -o '$work/tiles_box' --resolution 64 | grep -qx 'objects = 1' && test -s '$work/tiles_box/object_0_L0.glb'"
+check "tiles of geometry on the root and below: the root's own one object more" bash -c "'$boxlod' tiles '$work/root_and_child.gltf' -o '$work/tiles_root' --resolution 64 | grep -qx 'objects = 2' && test -s '$work/tiles_root/object_1_L0.glb'"
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0
 check "city with several details reports and images each" bash -c "grep -q '^detail_0.5.faces_mean = ' '$work/out' && grep -q '^detail_2.flip_mean = ' '$work/out' && test -s '$work/city_details/detail_2/contact_sheet.png' -a -s '$work/city_details/detail_0.5/frames/frame_0001.png' && test \$(wc -l < '$work/city_details/frames.csv') = 5"
 check "no OUTDIR after a failed city" test ! -e "$work/city_bad"

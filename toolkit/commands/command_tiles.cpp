@@ -26,16 +26,15 @@ constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, heigh
 // (auto distances; --manual: all at one distance), with a geometric error from
 // the level's measured deviation that makes clients switch where a chain does
 // at the latest (level_geometric_error).
-TileObject build_object(const Model& city, int node, int index, const LodParameters& parameters, bool per_level,
-                        bool keep_hierarchy, const std::string& folder) {
-    Model model = extract_subtree(city, node);
+TileObject build_object(const Model& model, int index, const LodParameters& parameters, bool per_level, bool keep_hierarchy,
+                        const std::string& folder) {
     ChainSessions sessions(model, parameters, 1);
     // Level c is drawn from d_c on, as a chain switches (auto distances), also
     // where --manual sizes every level at one distance.
     const std::vector<float> switches = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
     if (per_level) sessions.distances = switches;
     // The bounding volume encloses the geometry whatever box kind the levels use.
-    TileObject object{city.nodes[std::size_t(node)].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
+    TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
     const SurfaceViews original = surface_views(model, object.box);
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
@@ -64,6 +63,33 @@ bool has_geometry_below(const Model& model, int node) {
     return false;
 }
 
+// The objects of a tileset: each child of the root with geometry below it; the
+// root's own geometry (-1) besides them (a ground under the buildings), or the
+// whole model (0) where it is all on the root (a single building from a file).
+std::vector<int> tile_objects(const Model& city) {
+    std::vector<int> nodes;
+    for (int child : city.nodes[0].children)
+        if (has_geometry_below(city, child)) nodes.push_back(child);
+    if (city.nodes[0].has_geometry()) nodes.insert(nodes.begin(), nodes.empty() ? 0 : -1);
+    return nodes;
+}
+
+// Object `node` of tile_objects as a model of its own.
+Model tile_object(const Model& city, int node) {
+    if (node >= 0) return extract_subtree(city, node);
+    Model model;
+    model.source = city.source;
+    const Node& root = city.nodes[0];
+    const int n = add_node(model, -1, root.name);
+    model.nodes[std::size_t(n)].rule = root.rule, model.nodes[std::size_t(n)].scope = root.scope;
+    MaterialCopier copier{city, model};
+    for (Primitive primitive : root.primitives) {
+        primitive.material = copier.material(primitive.material);
+        model.nodes[std::size_t(n)].primitives.push_back(std::move(primitive));
+    }
+    return model;
+}
+
 // What `tiles` writes into its folder: the tileset and its tiles.
 bool is_tileset_file(const std::string& name) {
     static const std::regex tile(R"(object_\d+_L\d+\.glb)");
@@ -78,18 +104,15 @@ int run_tiles(const Arguments& a) {
     const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),
                           a.number("longitude", Geodetic{}.longitude_degrees), a.number("height", 0)};
     Model city = load_model(parameters.model);
-    std::vector<int> nodes;  // the objects: children of the root with geometry
-    for (int child : city.nodes[0].children)
-        if (has_geometry_below(city, child)) nodes.push_back(child);
-    if (nodes.empty()) throw InputError(parameters.model + ": the root has no child with geometry to make tiles of");
-    start_lod(extract_subtree(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
+    const std::vector<int> nodes = tile_objects(city);
+    start_lod(tile_object(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     // The new tileset replaces a folder holding an old one in one step, so no
     // client ever loads a mix of two tilesets' tiles.
     OutputFolder output(folder.string(), is_tileset_file);
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(city, nodes[k], int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), output.path());
+        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), output.path());
     });
     write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));
     files.commit();
@@ -106,6 +129,7 @@ int run_tiles(const Arguments& a) {
 Subcommand tiles_subcommand() {
     Subcommand tiles{{"tiles", "MODEL|PARAMS.txt",
                       "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and streets) "
+                      "and the root's own geometry (the whole model where all of it is on the root) "
                       "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down to the "
                       "original; glb content, boxes from boxlod's boxes, geometric errors in metres that make clients "
                       "switch levels where a chain does (16 pixels at the level's switch distance); "
