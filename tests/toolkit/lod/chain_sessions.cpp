@@ -10,7 +10,7 @@
 
 using namespace boxlod;
 
-TEST(ChainSessions, AutoDoublesTheDistancePerLevel) {
+TEST(ChainSessions, AutoSizesEachLevelForTwiceTheLastDistance) {
     EXPECT_EQ(level_distances("auto", 10, 4), (std::vector<float>{10, 20, 40, 80}));
     EXPECT_EQ(level_distances("5,5,9", 10, 3), (std::vector<float>{5, 5, 9}));
     EXPECT_NE(test::input_error_of([] { level_distances("1,2,2e12", 10, 3); }).find("is not a distance in [0.001, 1e+12] m"),
