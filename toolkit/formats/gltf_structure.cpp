@@ -196,11 +196,10 @@ void check_member(const nlohmann::json& value, const MemberKind& member, std::st
 // with messages that name neither.
 void check_version_and_required_extensions(const nlohmann::json& root, const std::string& file) {
     if (const auto asset = root.find("asset"); asset != root.end() && asset->is_object())
-        if (const auto version = asset->find("version"); version != asset->end()) {
-            if (version->is_number()) throw_input_error(file, "asset.version", version->dump() + " is not glTF 2 (boxlod reads glTF 2.0)");
-            if (version->is_string() && !version->get<std::string>().starts_with("2."))
-                throw_input_error(file, "asset.version", "'" + version->get<std::string>() + "' is not glTF 2 (boxlod reads glTF 2.0)");
-        }
+        if (const auto version = asset->find("version");  // 1.0's is a string or a number; another kind is the schema's finding
+            version != asset->end() && (version->is_number() || (version->is_string() && !version->get<std::string>().starts_with("2."))))
+            throw_input_error(file, "asset.version", (version->is_string() ? "'" + version->get<std::string>() + "'" : version->dump()) +
+                                                         " is not glTF 2 (boxlod reads glTF 2.0)");
     if (const auto required = root.find("extensionsRequired"); required != root.end() && required->is_array())
         for (const nlohmann::json& name : *required)
             if (name.is_string() && name != "MSFT_lod" && name != specular_glossiness_name && name != specular_extension_name)
