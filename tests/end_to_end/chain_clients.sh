@@ -9,8 +9,10 @@
 # - three.js and Babylon.js in boxlod's viewer pages, as build --chain --viewer
 #   writes them beside the chain (clients/chain_three.html: a THREE.LOD,
 #   clients/chain_babylon.html: Mesh.addLODLevel, both at boxlod's switch
-#   distances) draw level 0 near, a middle level in the middle
-#   of its distances and the coarsest far, each with boxlod's triangle count,
+#   distances) draw level 0 near, a middle level in the middle of its
+#   distances and the coarsest still 8 pixels across where it switches in
+#   (coarser ones are dots: the bounding sphere in the sizing view, 1080 pixels
+#   high, as the pages keep pixels per radian), each with boxlod's triangle count,
 #   and cover the pixels boxlod's own render of that level covers (render
 #   --level, same camera): only pixels on boxlod's silhouette (antialiased
 #   edges) may differ, but 0.5 % of the union or 4 pixels.
@@ -47,8 +49,8 @@ serve "$work/site"
 failures=0
 for model in $models; do
   open_page "http://127.0.0.1:$port/msft_lod.html?file=$model.glb" "$work/$model.msft_lod.json" "$work/$model.png"
-  levels=$(grep -c "^triangles_lod = " "$work/$model.txt")
-  for at in 0 $(((levels - 1) / 2)) $((levels - 1)); do
+  far=$(/usr/bin/python3 -c 'import re, sys; sizes = re.findall(r"^unreal_screen_size = (\S+)$", open(sys.argv[1]).read(), re.M); print(max([0] + [c for c, size in enumerate(sizes, 1) if float(size) * 1080 >= 8]))' "$work/$model.txt")
+  for at in 0 $((far / 2)) "$far"; do
     for page in three babylon; do  # the pages boxlod wrote, opening the chain by default
       open_page "http://127.0.0.1:$port/$model.$page.html?at=$at" "$work/$model.$page$at.json" "$work/$model.$page$at.png"
       # boxlod's render of the level the page should show, from the page's camera.

@@ -3,6 +3,7 @@
 set -u
 boxlod=$1
 data=$2
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -201,6 +202,13 @@ names = [image['name'] for image in gltf['images']]
 assert names.count('brick_color.png') == 1 and len(names) == len(set(names)), names
 PY
 bad "a chain written to a .txt" build "$work/house.glb" --chain -o "$work/house_chain.txt"
+# Each level once: Testwuson.X's boxes cost more than its geometry, so its
+# finer levels keep the original, which the chain has once (it had it 10
+# times) and the tileset once (it had two equal tiles).
+testwuson=/usr/share/assimp/models/X/Testwuson.X
+check "build --chain writes each level once" bash -c "'$boxlod' build '$testwuson' --chain -o '$work/once.glb' 2>'$work/once.err' >/dev/null && grep -q '^boxlod build: level 10 draws what the level before it does' '$work/once.err' && /usr/bin/python3 '$here/chain_levels_once.py' '$work/once.glb'"
+check "the house chain draws each level once" /usr/bin/python3 "$here/chain_levels_once.py" "$work/house_chain.glb"
+check "tiles writes each level once" bash -c "'$boxlod' tiles '$testwuson' -o '$work/tiles_once' | grep -qx 'tiles = 1' && test -s '$work/tiles_once/object_0_L0.glb' -a ! -e '$work/tiles_once/object_0_L1.glb'"
 # A city as 3D Tiles: a tileset naming one glb per level of every object, the same bytes for any thread count.
 "$boxlod" generate --city 2 -o "$work/city2.glb" > /dev/null
 check "tiles succeeds" test "$(status_of "$boxlod" tiles "$work/city2.glb" -o "$work/tiles1" --resolution 128 --threads 1)" = 0

@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <optional>
 
 namespace boxlod {
 namespace {
@@ -70,26 +71,41 @@ KeyValues level_report(const std::string& name, const Lod& lod, const LodSession
     return report;
 }
 
+// Babylon.js loads at most 10 levels of MSFT_lod, the coarsest (its
+// maxLODsToLoad): a chain keeps the 10 finest, the ones drawn nearest.
 constexpr int max_chain_levels = 10;
 
-// Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels).
-void write_chain(const Arguments& a, ChainSessions& sessions, const std::vector<int>& levels, ChainCost& chain) {
+// Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels),
+// each drawing once (chain_sessions.h: LevelDrawing).
+void write_chain(const Arguments& a, ChainSessions& sessions, ChainCost& chain) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
     const Bounds bounds = model_bounds(sessions.model);
+    const int obtained = sessions.obtained_levels();
     std::vector<Model> models;
     std::vector<LodSwitch> switches;
-    for (int level : levels) {
+    std::optional<LevelDrawing> last;
+    int level = 0;
+    for (; level <= obtained && int(models.size()) < max_chain_levels; ++level) {
         LodSession& session = sessions.for_level(level);
         Lod lod = build_lod(session, level, sessions.threads);
+        std::fprintf(stderr, "boxlod build: level %d of %d\n", level, obtained);
+        LevelDrawing drawing = level_drawing(lod, session);
+        if (last && draws_the_same(*last, drawing)) {
+            std::fprintf(stderr, "boxlod build: level %d draws what the level before it does: the chain has it once\n", level);
+            continue;
+        }
+        last = std::move(drawing);
         chain.add(lod);
         const std::string name = stem + "_L" + std::to_string(level);
         name_pages(lod, name);
         if (level >= 1) switches.push_back(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
-        std::fprintf(stderr, "boxlod build: level %d of %d\n", level, sessions.obtained_levels());
         std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
         models.push_back(a.has("keep-hierarchy") ? std::move(lod.model) : merge_draw_calls(std::move(lod.model), name));
     }
+    if (level <= obtained)
+        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", level - 1,
+                     obtained, max_chain_levels);
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
     std::vector<std::string> pages;
@@ -171,14 +187,8 @@ int run_build(const Arguments& a) {
     ChainSessions sessions(model, parameters, threads);
     int obtained = sessions.obtained_levels();
     std::vector<int> levels;
-    // Babylon.js loads at most 10 levels of MSFT_lod, the coarsest (its
-    // maxLODsToLoad): a chain keeps the 10 finest, the ones drawn nearest.
-    const int last = chain_file ? std::min(obtained, max_chain_levels - 1) : obtained;
-    if (chain_file && last < obtained)
-        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", last,
-                     obtained, max_chain_levels);
     if (all_levels)
-        for (int c = 0; c <= last; ++c) levels.push_back(c);
+        for (int c = 0; c <= obtained; ++c) levels.push_back(c);
     else
         levels.push_back(parameters.current_level);
     if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
@@ -186,7 +196,7 @@ int run_build(const Arguments& a) {
     for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
     ChainCost chain;
     if (chain_file)
-        write_chain(a, sessions, levels, chain);
+        write_chain(a, sessions, chain);
     else
         write_levels(a, sessions, name, levels, chain);
     if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain.levels, chain.finest_textured)).c_str(), stdout);
@@ -213,7 +223,7 @@ Subcommand build_subcommand() {
                  {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces, sized by --level-distances"},
                  {"glb", "", "write each level as one NAME.glb, its pages inside, instead of NAME.gltf + .bin + PNGs"},
                  {"chain", "",
-                  "write every level 0..N (at most the 10 finest, as MSFT_lod clients load) into one file, -o OUT.glb or "
+                  "write every level 0..N (each once; at most the 10 finest, as MSFT_lod clients load) into one file, -o OUT.glb or "
                   "OUT.gltf: glTF's MSFT_lod, switch hints in extras.MSFT_screencoverage, shared textures stored once; "
                   "levels sized by --level-distances"},
                  keep_hierarchy_option(),

@@ -15,6 +15,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <regex>
 
 namespace boxlod {
@@ -37,9 +38,13 @@ TileObject build_object(const Model& model, int index, const LodParameters& para
     TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
     const SurfaceViews original = surface_views(model, object.box);
+    std::optional<LevelDrawing> last;
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
         LodSession& session = sessions.for_level(c);
         Lod lod = build_lod(session, c, 1);
+        LevelDrawing drawing = level_drawing(lod, session);
+        if (last && draws_the_same(*last, drawing)) continue;  // a tile that repeats the finer one is left out
+        last = std::move(drawing);
         const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c);
         TileLevel level{name + ".glb", 0, 0};
         if (c > 0) {
