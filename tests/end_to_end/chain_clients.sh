@@ -15,7 +15,10 @@
 #   high, as the pages keep pixels per radian), each with boxlod's triangle count,
 #   and cover the pixels boxlod's own render of that level covers (render
 #   --level, same camera): only pixels on boxlod's silhouette (antialiased
-#   edges) may differ, but 0.5 % of the union or 4 pixels.
+#   edges) may differ, but 0.5 % of the union or 4 pixels;
+# - the same pages opened as a user opens them show the whole model from the
+#   same camera: it covers some of the window and touches none of its edges
+#   (the label aside), and both draw as many pixels, to 5 % (none black).
 # Usage: chain_clients.sh BOXLOD [SAMPLE...]   (default samples: house office classical manual)
 set -euo pipefail
 boxlod=$1; shift
@@ -59,6 +62,7 @@ for model in $models; do
         -o "$work/$model.$page$at.boxlod.png" --coverage "$work/$model.$page$at.mask.png" > /dev/null
     done
   done
+  for page in three babylon; do open_page "http://127.0.0.1:$port/$model.$page.html" "$work/$model.$page.json" "$work/$model.$page.png"; done
   /usr/bin/python3 - "$work" "$model" <<'PY' || failures=$((failures + 1))
 import glob, json, re, sys
 import imageio
@@ -72,6 +76,17 @@ assert result["state"] == "complete" and not result["errors"], "the loader did n
 assert result["ready"] == triangles[-1], f"ready with {result['ready']} triangles, not the coarsest level's {triangles[-1]}"
 assert result["complete"] == triangles[0], f"complete with {result['complete']} triangles, not level 0's {triangles[0]}"
 assert result["drawn"] > 0.01 * result["pixels"], "the picture is blank"
+opened = {}
+for page in ("three", "babylon"):  # as a user opens it: black around the model, the label at the top left
+    result = json.load(open(f"{work}/{model}.{page}.json"))
+    assert "error" not in result, f"{page}: {result['error']}"
+    drawn = imageio.imread(f"{work}/{model}.{page}.png")[:, :, :3].max(axis=2) > 24
+    edges = numpy.concatenate([drawn[40:, 0], drawn[40:, -1], drawn[-1, :], drawn[0, 320:]])
+    opened[page] = drawn.mean()
+    print(f"chain_clients {model}: the {page} page opens at {result['distance']:.1f} m, level {result['shown']}, "
+          f"{drawn.mean():.1%} of the window drawn, {int(edges.sum())} edge pixels")
+    assert drawn.mean() > 0.02 and not edges.any(), f"the {page} page does not open on the whole model"
+assert abs(opened["babylon"] - opened["three"]) <= 0.05 * opened["three"], f"the pages draw {opened} of the window"
 for page, client in (("three", "three.js"), ("babylon", "Babylon.js addLODLevel")):
     for path in sorted(glob.glob(f"{work}/{model}.{page}[0-9]*.json")):
         at = int(path[len(f"{work}/{model}.{page}"):-len(".json")])
