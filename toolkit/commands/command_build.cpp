@@ -27,34 +27,36 @@
 namespace boxlod {
 namespace {
 
-// What levels 1..N cost shipped together (a texture shared by levels paid
-// once), and their textures against those of the finest level with pages.
-KeyValues chain_report(const std::string& name, const std::vector<CostParts>& levels, int finest_textured) {
-    std::vector<const CostParts*> all;
-    for (const CostParts& level : levels) all.push_back(&level);
-    const ModelCost chain = combined_cost(all);
-    KeyValues report{text_entry("name", name + "_chain")};
-    const KeyValues cost = cost_entries(chain, "_chain");
-    report.insert(report.end(), cost.begin(), cost.end());
-    if (finest_textured >= 0) {
-        const ModelCost finest = combined_cost({&levels[std::size_t(finest_textured)]});
-        report.push_back(number_entry("finest_textured_level", finest_textured + 1));
-        report.push_back(number_entry("chain_texture_ratio", double(chain.texture_bytes_gpu) / double(finest.texture_bytes_gpu)));
-    }
-    return report;
-}
-
-// The levels 1..N for the chain's cost, and which of them is the finest with pages.
+// The levels 1..N written for the chain's cost, and which of them is the
+// finest with pages (its index in `levels` and its level number).
 struct ChainCost {
     std::vector<CostParts> levels;
-    int finest_textured = -1;
+    int finest_textured = -1, finest_textured_level = -1;
 
     void add(const Lod& lod) {
         if (lod.current_level < 1) return;
         levels.push_back(lod.cost);
-        if (finest_textured < 0 && !lod.atlas.pages.empty()) finest_textured = int(levels.size()) - 1;
+        if (finest_textured < 0 && !lod.atlas.pages.empty())
+            finest_textured = int(levels.size()) - 1, finest_textured_level = lod.current_level;
     }
 };
+
+// What levels 1..N cost shipped together (a texture shared by levels paid
+// once), and their textures against those of the finest level with pages.
+KeyValues chain_report(const std::string& name, const ChainCost& written) {
+    std::vector<const CostParts*> all;
+    for (const CostParts& level : written.levels) all.push_back(&level);
+    const ModelCost chain = combined_cost(all);
+    KeyValues report{text_entry("name", name + "_chain")};
+    const KeyValues cost = cost_entries(chain, "_chain");
+    report.insert(report.end(), cost.begin(), cost.end());
+    if (written.finest_textured >= 0) {
+        const ModelCost finest = combined_cost({&written.levels[std::size_t(written.finest_textured)]});
+        report.push_back(number_entry("finest_textured_level", written.finest_textured_level));
+        report.push_back(number_entry("chain_texture_ratio", double(chain.texture_bytes_gpu) / double(finest.texture_bytes_gpu)));
+    }
+    return report;
+}
 
 // A level's stdout block: its name, sizing distance, where engines switch to it
 // (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
@@ -76,7 +78,7 @@ KeyValues level_report(const std::string& name, const Lod& lod, const LodSession
 constexpr int max_chain_levels = 10;
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels),
-// each drawing once (chain_sessions.h: LevelDrawing).
+// each once (model.h: draws_the_same).
 void write_chain(const Arguments& a, ChainSessions& sessions, ChainCost& chain) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
@@ -84,18 +86,18 @@ void write_chain(const Arguments& a, ChainSessions& sessions, ChainCost& chain) 
     const int obtained = sessions.obtained_levels();
     std::vector<Model> models;
     std::vector<LodSwitch> switches;
-    std::optional<LevelDrawing> last;
-    int level = 0;
+    std::optional<Model> last;  // the last level written, as built
+    int last_level = 0, level = 0;
     for (; level <= obtained && int(models.size()) < max_chain_levels; ++level) {
         LodSession& session = sessions.for_level(level);
+        check_budget_reachable(session, level, sessions.threads);  // nothing is written before the whole chain
         Lod lod = build_lod(session, level, sessions.threads);
         std::fprintf(stderr, "boxlod build: level %d of %d\n", level, obtained);
-        LevelDrawing drawing = level_drawing(lod, session);
-        if (last && draws_the_same(*last, drawing)) {
-            std::fprintf(stderr, "boxlod build: level %d draws what the level before it does: the chain has it once\n", level);
+        if (last && draws_the_same(*last, lod.model)) {
+            std::fprintf(stderr, "boxlod build: level %d draws what level %d does: the chain has it once\n", level, last_level);
             continue;
         }
-        last = std::move(drawing);
+        last = lod.model, last_level = level;
         chain.add(lod);
         const std::string name = stem + "_L" + std::to_string(level);
         name_pages(lod, name);
@@ -193,13 +195,14 @@ int run_build(const Arguments& a) {
         levels.push_back(parameters.current_level);
     if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
         sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->input.parameters.distance, obtained);
-    for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
+    if (!chain_file)  // a chain checks each level it builds (write_chain)
+        for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
     ChainCost chain;
     if (chain_file)
         write_chain(a, sessions, chain);
     else
         write_levels(a, sessions, name, levels, chain);
-    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain.levels, chain.finest_textured)).c_str(), stdout);
+    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain)).c_str(), stdout);
     if (a.has("timings")) {
         LodTimes t = sessions.times();
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),

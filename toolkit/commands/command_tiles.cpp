@@ -23,10 +23,10 @@ namespace {
 
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
-// One object's chain: every level as OUTDIR/object_K_L<c>.glb, sized per level
-// (auto distances; --manual: all at one distance), with a geometric error from
-// the level's measured deviation that makes clients switch where a chain does
-// at the latest (level_geometric_error).
+// One object's chain: each level once (model.h: draws_the_same), as
+// OUTDIR/object_K_L<c>.glb, sized per level (auto distances; --manual: all at
+// one distance), with a geometric error from the level's measured deviation
+// that makes clients switch where a chain does at the latest (level_geometric_error).
 TileObject build_object(const Model& model, int index, const LodParameters& parameters, bool per_level, bool keep_hierarchy,
                         const std::string& folder) {
     ChainSessions sessions(model, parameters, 1);
@@ -38,13 +38,12 @@ TileObject build_object(const Model& model, int index, const LodParameters& para
     TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
     const SurfaceViews original = surface_views(model, object.box);
-    std::optional<LevelDrawing> last;
+    std::optional<Model> last;  // the last level written, as built
     for (int c = 0; c <= sessions.obtained_levels(); ++c) {
         LodSession& session = sessions.for_level(c);
         Lod lod = build_lod(session, c, 1);
-        LevelDrawing drawing = level_drawing(lod, session);
-        if (last && draws_the_same(*last, drawing)) continue;  // a tile that repeats the finer one is left out
-        last = std::move(drawing);
+        if (last && draws_the_same(*last, lod.model)) continue;  // a tile that repeats the finer one is left out
+        last = lod.model;
         const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c);
         TileLevel level{name + ".glb", 0, 0};
         if (c > 0) {

@@ -26,7 +26,7 @@ struct TileLevel {
 struct TileObject {
     std::string name;
     OrientedBox box;                // encloses every level (boxlod's box of the object's root)
-    std::vector<TileLevel> levels;  // 0 (the original) .. N
+    std::vector<TileLevel> levels;  // 0 (the original) .. N, each drawing other than the one before
 };
 
 // The tileset JSON. The root (ADD, no content) holds every object's chain; its

@@ -60,14 +60,4 @@ LodTimes ChainSessions::times() const {
     return t;
 }
 
-LevelDrawing level_drawing(const Lod& lod, const LodSession& session) {
-    return {lod.cut, session.input.parameters.distance};
-}
-
-bool draws_the_same(const LevelDrawing& a, const LevelDrawing& b) {
-    const Cut &x = a.cut, &y = b.cut;  // used_nodes aside: sub-trees without geometry draw nothing
-    return x.geometry_nodes == y.geometry_nodes && x.box_nodes == y.box_nodes && x.simplified_nodes == y.simplified_nodes &&
-           x.box_texel_scales == y.box_texel_scales && (x.box_nodes.empty() || a.sizing_distance == b.sizing_distance);
-}
-
 }  // namespace boxlod

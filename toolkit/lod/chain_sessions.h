@@ -33,17 +33,4 @@ struct ChainSessions {
     LodTimes times() const;  // summed over every session
 };
 
-// What a level of a chain draws: its cut, and the distance its boxes are sized
-// for. A chain writes a level once: on small models whose boxes cost more than
-// their geometry, every level keeps the original (Testwuson.X: 10 levels of
-// 3,732 triangles each), and a level that draws what the last one written does
-// is left out, the last drawn on to the next one's switch.
-struct LevelDrawing {
-    Cut cut;
-    float sizing_distance = 0;
-};
-LevelDrawing level_drawing(const Lod& lod, const LodSession& session);
-// The same parts kept, boxed and simplified and, where there are boxes, the same sizing distance.
-bool draws_the_same(const LevelDrawing& a, const LevelDrawing& b);
-
 }  // namespace boxlod

@@ -57,6 +57,19 @@ bool draws_anything(const Model& model) {
     return false;
 }
 
+bool draws_the_same(const Model& a, const Model& b) {
+    if (a.materials != b.materials || a.textures.size() != b.textures.size()) return false;
+    for (std::size_t t = 0; t < a.textures.size(); ++t)
+        if (texture_digest(a.textures[t]) != texture_digest(b.textures[t])) return false;
+    std::vector<const Primitive*> drawn_a, drawn_b;
+    for (const Node& node : a.nodes)
+        for (const Primitive& primitive : node.primitives) drawn_a.push_back(&primitive);
+    for (const Node& node : b.nodes)
+        for (const Primitive& primitive : node.primitives) drawn_b.push_back(&primitive);
+    return std::equal(drawn_a.begin(), drawn_a.end(), drawn_b.begin(), drawn_b.end(),
+                      [](const Primitive* x, const Primitive* y) { return *x == *y; });
+}
+
 int add_node(Model& model, int parent, std::string name) {
     int index = int(model.nodes.size());
     Node& node = model.nodes.emplace_back();

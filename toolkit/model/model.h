@@ -112,6 +112,7 @@ struct Primitive {
     int material = -1;  // index into Model::materials; -1 = default material
 
     std::size_t triangle_count() const { return indices.size() / 3; }
+    bool operator==(const Primitive&) const = default;
 };
 
 struct Node {
@@ -161,6 +162,14 @@ void validate_model(const Model& model);
 // transparent (blended or masked with a base colour alpha of 0; a texture's
 // alpha only scales it). A model that draws nothing has nothing to bake.
 bool draws_anything(const Model& model);
+
+// Whether two models draw the same picture: the same primitives in node order,
+// the same materials, textures of the same texels; names and the tree aside.
+// A chain writes a level once (a level that draws what the last one written
+// does is left out): on small models whose boxes cost more than their
+// geometry every fine level keeps the original (Testwuson.X: 10 levels of
+// 3,732 triangles), and far levels are one box whose faces are drawn flat.
+bool draws_the_same(const Model& a, const Model& b);
 
 // Normals and tangents of unit length, handedness +-1, as glTF holds them
 // (glTF 2.0, 3.7.2.1) and the renderer assumes. A primitive with one of no

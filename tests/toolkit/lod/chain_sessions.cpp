@@ -38,25 +38,3 @@ TEST(ChainSessions, ABuildingInCentimetresBuildsItsFarLevels) {
     EXPECT_EQ(double(many.back()), double(float(parameter_range::distance.max)));
     EXPECT_TRUE(std::is_sorted(many.begin(), many.end()));
 }
-
-// A chain writes a level once: levels that keep the same parts draw the same
-// wherever they are sized, but boxes baked for other distances do not.
-TEST(ChainSessions, ALevelDrawsTheSameOnlyWithTheSamePartsAndBoxes) {
-    Cut kept;
-    kept.geometry_nodes = {0, 2, 3};
-    Cut boxed = kept;
-    boxed.box_nodes = {1};
-    EXPECT_TRUE(draws_the_same({kept, 10}, {kept, 20}));
-    EXPECT_FALSE(draws_the_same({kept, 10}, {boxed, 10}));
-    EXPECT_TRUE(draws_the_same({boxed, 10}, {boxed, 10}));
-    EXPECT_FALSE(draws_the_same({boxed, 10}, {boxed, 20}));
-    Cut coarser = boxed;
-    coarser.box_texel_scales[1] = 2;
-    EXPECT_FALSE(draws_the_same({boxed, 10}, {coarser, 10}));
-    Cut simplified = kept;
-    simplified.simplified_nodes = {{1, 0}};
-    EXPECT_FALSE(draws_the_same({kept, 10}, {simplified, 10}));
-    Cut visited = kept;  // a sub-tree without geometry, visited or not, draws nothing
-    visited.used_nodes = {0, 1, 2, 3, 4};
-    EXPECT_TRUE(draws_the_same({kept, 10}, {visited, 10}));
-}

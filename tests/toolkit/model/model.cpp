@@ -132,3 +132,27 @@ TEST(Model, DrawsAnythingUnlessEverySurfaceIsFullyTransparent) {
     model.materials[0].base_color.w() = 0.2f;
     EXPECT_TRUE(draws_anything(model));
 }
+
+// What a chain compares its levels by: the picture, not the names or the tree.
+TEST(Model, DrawsTheSameWithTheSamePrimitivesMaterialsAndTexels) {
+    Model a;
+    add_node(a, -1, "root");
+    add_node(a, 0, "part");
+    a.nodes[1].primitives = {triangle()};
+    a.materials = {Material{}};
+    a.nodes[1].primitives[0].material = 0;
+    a.textures = {Texture{"a_L1_color_0.png", Image8(2, 2, 3), {}, Wrap::clamp}};
+    a.materials[0].base_color_texture = 0;
+    Model b = a;
+    b.nodes[0].name = "other", b.textures[0].name = "a_L2_color_0.png";
+    add_node(b, 0, "empty");
+    EXPECT_TRUE(draws_the_same(a, b));
+    b.nodes[1].primitives[0].positions[2].z() = 1e-6f;
+    EXPECT_FALSE(draws_the_same(a, b));
+    b = a, b.textures[0].image.pixels[3] = 1;
+    EXPECT_FALSE(draws_the_same(a, b));
+    b = a, b.materials[0].base_color.x() = 0.5f;
+    EXPECT_FALSE(draws_the_same(a, b));
+    b = a, b.nodes[0].primitives = {triangle()};  // one triangle more, on the root
+    EXPECT_FALSE(draws_the_same(a, b));
+}
