@@ -12,7 +12,7 @@
 #include "toolkit/formats/model_bytes.h"
 #include "toolkit/lod/boxes.h"
 #include "toolkit/selection/face_budget.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/drawing/resident_drawables.h"
 #include "toolkit/model/statistics.h"
@@ -183,7 +183,7 @@ std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width 
 }  // namespace
 
 float level_sizing_distance(const FlyThroughOptions& options, int level) {
-    return options.base_distance * std::ldexp(1.0f, level - 1);
+    return float(doubled_distance(options.base_distance, level));
 }
 
 CityLevels build_city_levels(const CityPlan& city, const FlyThroughOptions& options, bool measure_error,

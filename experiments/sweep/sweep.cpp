@@ -24,7 +24,7 @@
 #include "toolkit/model/cost.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 
@@ -374,8 +374,8 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
                 p.level_mode = variant.mode;
                 p.box_kind = variant.box;
                 p.interpolation = variant.interpolation;
-                p.distance = config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy) *
-                             std::ldexp(1.0f, sizing_level - 1);
+                p.distance = float(doubled_distance(config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy),
+                                                    sizing_level));
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
                 if (!orders_by_bytes(p.level_mode)) p.budgets.clear();  // the other modes make wanted_levels levels
                 session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));

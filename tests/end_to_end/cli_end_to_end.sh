@@ -158,12 +158,12 @@ check "build --level-distances auto succeeds" test "$(status_of "$boxlod" build 
 check "each level is sized for twice the previous level's distance" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { for (c = 3; c <= n; ++c) if ((d[c] - 2 * d[c - 1]) ^ 2 > (1e-6 * d[c]) ^ 2) exit 1; exit n < 5 }' '$work/out'"
 check "coarser levels of the chain pay fewer texture bytes" bash -c "awk -F' = ' '\$1 == \"page_texels\" { t[++n] = \$2 } END { exit !(t[2] > t[4] && t[4] > t[6]) }' '$work/out'"
 check "the chain's cost follows its levels" bash -c "grep -qx 'name = house_lod_chain' '$work/out' && grep -q '^texture_bytes_gpu_chain = [1-9]' '$work/out' && grep -q '^chain_texture_ratio = ' '$work/out'"
-check "a level's parameter file records its distance" bash -c "grep -qx \"distance = \$(awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } END { print d }' '$work/out')\" '$work/chain/house_lod_L9.params.txt'"
+check "a level's parameter file records the chain's distances" bash -c "grep -qx 'level_distances = auto' '$work/chain/house_lod_L9.params.txt' && grep -qx \"distance = \$(awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { print d[1] }' '$work/out')\" '$work/chain/house_lod_L9.params.txt'"
 # Without the rule the house's level 1 boxes single quads and costs more than the original; with it no level does.
 over_original="awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"bytes_original\" && b > \$2 { over = 1 } END { exit !over }'"
 check "a box-everything chain has a level dearer than the original" bash -c "$over_original '$work/out'"
 check "build --all-levels succeeds with the defaults" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --resolution 256 --preview-width 32 --preview-height 24)" = 0
-check "by default boxes pay their way: no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L3.params.txt'"
+check "by default boxes pay their way: no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L0.params.txt'"
 check "by default levels are sized per level" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { exit !(n > 4 && d[4] > 1.99 * d[3]) }' '$work/out'"
 check "--manual sizes every level for one distance and boxes every sub-tree" bash -c "'$boxlod' build '$work/house.glb' -o '$work/manual' --all-levels --manual --resolution 256 --preview-width 32 --preview-height 24 > '$work/manual.txt' && test \$(awk -F' = ' '\$1 == \"sizing_distance\"' '$work/manual.txt' | sort -u | wc -l) = 1 && grep -qx 'keep_cheaper_subtrees = false' '$work/manual/house_lod_L3.params.txt' && grep -qx 'min_texture_size = 256' '$work/manual/house_lod_L3.params.txt'"
 # Levels by byte budget (docs/design.md: Levels by byte budget): each level's bytes within its budget, stated beside them.
@@ -180,7 +180,8 @@ bad "level distances that do not ascend" build "$work/house.glb" -o "$work/chain
 bad "a negative level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances -5,10,20,30,40,50,60,70,80
 bad "a NaN level distance" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances nan,10,20,30,40,50,60,70,80
 bad "too few level distances" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 10,20
-bad "level distances without --all-levels" build "$work/house.glb" -o "$work/chain_bad" --level-distances auto
+bad "equal level distances" build "$work/house.glb" -o "$work/chain_bad" --all-levels --level-distances 10,10,30,40,50,60,70,80,90
+check "equal distances are refused by name" grep -q "^boxlod: --level-distances: 10 comes after 10: the distances must ascend" "$work/err"
 check "no output folder for a refused chain" test ! -e "$work/chain_bad"
 # The same chain in one .glb (MSFT_lod): level 0 in the scene, the others listed by its root,
 # switch hints falling with distance, each texture stored once.
@@ -266,7 +267,8 @@ for level in levels:
             sys.exit(level + ': ' + suffix + ' missing')
 PY
 "$boxlod" generate --sample manual -o "$work/manual.glb" > /dev/null
-"$boxlod" build "$work/manual.glb" --all-levels -o "$work/interrupted" --preview-width 64 --preview-height 48 > /dev/null 2> "$work/err" &
+# --manual at 2160 pixels: some 20 s, its first levels written in the first 2 s.
+"$boxlod" build "$work/manual.glb" --all-levels --manual --resolution 2160 -o "$work/interrupted" --preview-width 64 --preview-height 48 > /dev/null 2> "$work/err" &
 build_pid=$!
 sleep 3
 kill -TERM $build_pid
@@ -278,7 +280,7 @@ check "an interrupted build leaves no temporary" bash -c "! ls -a '$work/interru
 check "every level left is whole: its .gltf and every file it names" python3 "$work/whole_levels.py" "$work/interrupted"
 # Killed outright at several moments (so at least once while a level is written).
 for moment in 1 2 3 4; do
-  "$boxlod" build "$work/manual.glb" --all-levels -o "$work/killed" --preview-width 64 --preview-height 48 > /dev/null 2>&1 &
+  "$boxlod" build "$work/manual.glb" --all-levels --manual --resolution 2160 -o "$work/killed" --preview-width 64 --preview-height 48 > /dev/null 2>&1 &
   build_pid=$!
   sleep $moment
   kill -KILL $build_pid

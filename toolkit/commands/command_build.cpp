@@ -11,7 +11,7 @@
 #include "toolkit/model/cost.h"
 #include "toolkit/lod/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/chain_sessions.h"
+#include "toolkit/lod/chain.h"
 #include "toolkit/formats/lod_export.h"
 #include "toolkit/selection/lod_switch.h"
 #include "toolkit/formats/model_io.h"
@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <limits>
 #include <optional>
 
 namespace boxlod {
@@ -58,11 +59,18 @@ KeyValues chain_report(const std::string& name, const ChainCost& written) {
     return report;
 }
 
-// A level's stdout block: its name, sizing distance, where engines switch to it
+// A level's stdout block: its name, sizing distance, the later levels it
+// stands for (they draw what it draws: chain.h), where engines switch to it
 // (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
-KeyValues level_report(const std::string& name, const Lod& lod, const LodSession& session, const Bounds& bounds,
-                       bool switches) {
+KeyValues level_report(const std::string& name, const ChainLevel& level, const Bounds& bounds, bool switches) {
+    const Lod& lod = level.lod;
+    const LodSession& session = *level.session;
     KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.input.parameters.distance)};
+    if (!level.same_levels.empty()) {
+        std::string same;
+        for (int c : level.same_levels) same += (same.empty() ? "" : ",") + std::to_string(c);
+        report.push_back(text_entry("same_as_levels", same));
+    }
     if (switches && lod.current_level >= 1) {
         const LodSwitch s = lod_switch(session.input.parameters.distance, bounds, session.derived.sizing);
         report.insert(report.end(), {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
@@ -78,43 +86,35 @@ KeyValues level_report(const std::string& name, const Lod& lod, const LodSession
 constexpr int max_chain_levels = 10;
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels),
-// each once (model.h: draws_the_same).
-void write_chain(const Arguments& a, ChainSessions& sessions, ChainCost& chain) {
+// each once.
+void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
-    const Bounds bounds = model_bounds(sessions.model);
-    const int obtained = sessions.obtained_levels();
+    const Bounds bounds = model_bounds(chain.model);
+    const int obtained = chain.obtained_levels();
     std::vector<Model> models;
     std::vector<LodSwitch> switches;
-    std::optional<Model> last;  // the last level written, as built
-    int last_level = 0, level = 0;
-    for (; level <= obtained && int(models.size()) < max_chain_levels; ++level) {
-        LodSession& session = sessions.for_level(level);
-        check_budget_reachable(session, level, sessions.threads);  // nothing is written before the whole chain
-        Lod lod = build_lod(session, level, sessions.threads);
-        std::fprintf(stderr, "boxlod build: level %d of %d\n", level, obtained);
-        if (last && draws_the_same(*last, lod.model)) {
-            std::fprintf(stderr, "boxlod build: level %d draws what level %d does: the chain has it once\n", level, last_level);
-            continue;
-        }
-        last = lod.model, last_level = level;
-        chain.add(lod);
-        const std::string name = stem + "_L" + std::to_string(level);
-        name_pages(lod, name);
-        if (level >= 1) switches.push_back(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
-        std::fputs((format_key_values(level_report(name, lod, session, bounds, true)) + "\n").c_str(), stdout);
-        models.push_back(a.has("keep-hierarchy") ? std::move(lod.model) : merge_draw_calls(std::move(lod.model), name));
-    }
-    if (level <= obtained)
-        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", level - 1,
+    const int cut = take_distinct_levels(chain, 0, obtained, max_chain_levels, [&](ChainLevel level) {
+        const std::string name = stem + "_L" + std::to_string(level.level);
+        for (int c : level.same_levels)
+            std::fprintf(stderr, "boxlod build: level %d draws what level %d does: the chain has it once\n", c, level.level);
+        cost.add(level.lod);
+        name_pages(level.lod, name);
+        const LodSession& session = *level.session;
+        if (level.level >= 1) switches.push_back(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
+        std::fputs((format_key_values(level_report(name, level, bounds, true)) + "\n").c_str(), stdout);
+        models.push_back(a.has("keep-hierarchy") ? std::move(level.lod.model) : merge_draw_calls(std::move(level.lod.model), name));
+    });
+    if (cut <= obtained)
+        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", cut - 1,
                      obtained, max_chain_levels);
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
     std::vector<std::string> pages;
     {
-        const ScopedTimer timer(sessions.first->times.write);
+        const ScopedTimer timer(chain.first->times.write);
         OutputGroup files;  // the chain and its viewer pages, or nothing
-        export_gltf_lods(pointers, switches, output, sessions.threads);
+        export_gltf_lods(pointers, switches, output, chain.threads);
         if (a.has("viewer")) pages = write_viewer_pages(output);
         files.commit();
     }
@@ -122,32 +122,36 @@ void write_chain(const Arguments& a, ChainSessions& sessions, ChainCost& chain) 
     for (const std::string& page : pages) std::printf("viewer = %s\n", page.c_str());
 }
 
-// Level c is written (preview, glTF, pages) while level c + 1 is built: writing is
-// partly serial (the .gltf's JSON), so the overlap keeps both cores busy. Files,
-// their bytes and the order of the output stay the same.
-void write_levels(const Arguments& a, ChainSessions& sessions, const std::string& name, const std::vector<int>& levels,
-                  ChainCost& chain) {
+// The levels first..last, each as NAME_L<c> (one level: NAME), a level that
+// draws what the one before draws not again (--all-levels: its block names
+// it). Level c is written (preview, glTF, pages) while the next are built:
+// writing is partly serial (the .gltf's JSON), so the overlap keeps both
+// cores busy. Files, their bytes and the order of the output stay the same.
+void write_levels(const Arguments& a, Chain& chain, const std::string& name, int first, int last, ChainCost& cost) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
-    const Bounds bounds = model_bounds(sessions.model);
+    const Bounds bounds = model_bounds(chain.model);
+    const bool all_levels = a.has("all-levels");
     std::future<void> writing;
-    for (int level : levels) {
-        LodSession* session = &sessions.for_level(level);
-        Lod lod = build_lod(*session, level, sessions.threads);
-        chain.add(lod);
+    take_distinct_levels(chain, first, last, std::numeric_limits<int>::max(), [&](ChainLevel level) {
+        cost.add(level.lod);
         if (writing.valid()) writing.get();
-        writing = std::async(std::launch::async, [&, session, level, lod = std::move(lod)]() mutable {
-            std::string level_name = a.has("all-levels") ? name + "_L" + std::to_string(level) : name;
+        writing = std::async(std::launch::async, [&, level = std::move(level)]() mutable {
+            const std::string level_name = all_levels ? name + "_L" + std::to_string(level.level) : name;
             KeyValues report;
             {
-                const ScopedTimer timer(session->times.write);  // build_lod touches the other times only
-                Image8 preview = render_lod_preview(lod, *session, preview_width, preview_height, sessions.threads);
-                report = level_report(level_name, lod, *session, bounds, !sessions.distances.empty());
-                export_lod(std::move(lod), *session, a.text("output"), level_name, preview, sessions.threads, a.has("glb"));
+                const ScopedTimer timer(level.session->times.write);  // build_lod touches the other times only
+                Image8 preview = render_lod_preview(level.lod, *level.session, preview_width, preview_height, chain.threads);
+                report = level_report(level_name, level, bounds, !chain.distances.empty());
+                export_lod(std::move(level.lod), chain.parameters(), a.text("output"), level_name, preview, chain.threads,
+                           a.has("glb"));
             }
-            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level, sessions.obtained_levels(), level_name.c_str());
-            std::fputs((format_key_values(report) + (levels.size() > 1 ? "\n" : "")).c_str(), stdout);
+            std::fprintf(stderr, "boxlod build: level %d of %d -> %s\n", level.level, chain.obtained_levels(), level_name.c_str());
+            for (int c : level.same_levels)
+                std::fprintf(stderr, "boxlod build: level %d draws what level %d does: %s stands for it\n", c, level.level,
+                             level_name.c_str());
+            std::fputs((format_key_values(report) + (all_levels ? "\n" : "")).c_str(), stdout);
         });
-    }
+    });
     writing.get();
 }
 
@@ -181,30 +185,24 @@ int run_build(const Arguments& a) {
     std::string name = a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
-    if (a.has("level-distances") && !all_levels) throw InputError("--level-distances needs --all-levels or --chain");
     if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
     if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
     if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");
-    int threads = a.integer("threads", 0);
-    ChainSessions sessions(model, parameters, threads);
-    int obtained = sessions.obtained_levels();
-    std::vector<int> levels;
-    if (all_levels)
-        for (int c = 0; c <= obtained; ++c) levels.push_back(c);
-    else
-        levels.push_back(parameters.current_level);
-    if (all_levels && (a.has("level-distances") || !a.has("manual")))  // the manual sizes every level for one distance
-        sessions.distances = level_distances(a.text("level-distances", "auto"), sessions.first->input.parameters.distance, obtained);
-    if (!chain_file)  // a chain checks each level it builds (write_chain)
-        for (int level : levels) check_budget_reachable(sessions.for_level(level), level, threads);
-    ChainCost chain;
-    if (chain_file)
-        write_chain(a, sessions, chain);
-    else
-        write_levels(a, sessions, name, levels, chain);
-    if (levels.size() > 1) std::fputs(format_key_values(chain_report(name, chain)).c_str(), stdout);
+    // Level c is sized as the chain sizes it, however many levels are asked for.
+    Chain chain(model, parameters, a.integer("threads", 0));
+    const int first = all_levels ? 0 : parameters.current_level, last = all_levels ? chain.obtained_levels() : first;
+    ChainCost cost;
+    if (chain_file) {  // nothing is written before the whole chain is built (a budget no cut fits fails its level)
+        write_chain(a, chain, cost);
+    } else {
+        std::vector<int> levels;
+        for (int c = first; c <= last; ++c) levels.push_back(c);
+        check_chain_budgets(chain, levels);  // before any level is written
+        write_levels(a, chain, name, first, last, cost);
+    }
+    if (all_levels) std::fputs(format_key_values(chain_report(name, cost)).c_str(), stdout);
     if (a.has("timings")) {
-        LodTimes t = sessions.times();
+        LodTimes t = chain.times();
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
                         number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
                         number_entry("time_mesh", t.mesh), number_entry("time_write", t.write)};
@@ -223,7 +221,7 @@ Subcommand build_subcommand() {
                  {"output", "OUTDIR", "folder for the files (required)", {}, 'o'},
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
-                 {"all-levels", "", "write every level 0..N as NAME_L<c>, sharing boxes and baked faces, sized by --level-distances"},
+                 {"all-levels", "", "write every level 0..N as NAME_L<c> (a level that draws what the one before draws not again: the block of the one written names it), sharing boxes and baked faces, sized by --level-distances"},
                  {"glb", "", "write each level as one NAME.glb, its pages inside, instead of NAME.gltf + .bin + PNGs"},
                  {"chain", "",
                   "write every level 0..N (each once; at most the 10 finest, as MSFT_lod clients load) into one file, -o OUT.glb or "
@@ -233,10 +231,6 @@ Subcommand build_subcommand() {
                  {"viewer", "",
                   "with --chain: also write OUT.three.html and OUT.babylon.html beside it, viewers that switch its levels at "
                   "its switch distances in three.js and Babylon.js (docs/cost.md: Switching levels)"},
-                 {"level-distances", "auto|D1,...,DN",
-                  "with --all-levels or --chain: size level c's textures for distance Dc (ascending, one per level 1..N); auto "
-                  "(the default; --manual: every level at the sizing distance): the sizing distance x 2^(c-1), so each level "
-                  "is as sharp as the screen where it is used"},
                  {"preview-width", "W", "preview image width (default 1024)", image_side_range},
                  {"preview-height", "H", "preview image height (default 768)", image_side_range},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},

@@ -7,7 +7,7 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/lod/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/chain_sessions.h"
+#include "toolkit/lod/chain.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/lod/surface_deviation.h"
@@ -15,6 +15,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <regex>
 
@@ -23,37 +24,35 @@ namespace {
 
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
-// One object's chain: each level once (model.h: draws_the_same), as
-// OUTDIR/object_K_L<c>.glb, sized per level (auto distances; --manual: all at
-// one distance), with a geometric error from the level's measured deviation
-// that makes clients switch where a chain does at the latest (level_geometric_error).
-TileObject build_object(const Model& model, int index, const LodParameters& parameters, bool per_level, bool keep_hierarchy,
+// One object's chain (chain.h: each level once), as OUTDIR/object_K_L<c>.glb,
+// with a geometric error from the level's measured deviation that makes
+// clients switch where a chain does at the latest (level_geometric_error):
+// at d_c, or where the levels share one sizing distance (--manual), where
+// auto distances would switch.
+TileObject build_object(const Model& model, int index, const LodParameters& parameters, bool keep_hierarchy,
                         const std::string& folder) {
-    ChainSessions sessions(model, parameters, 1);
-    // Level c is drawn from d_c on, as a chain switches (auto distances), also
-    // where --manual sizes every level at one distance.
-    const std::vector<float> switches = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
-    if (per_level) sessions.distances = switches;
+    Chain chain(model, parameters, 1);
+    std::vector<float> switches = chain.distances;
+    if (switches.empty()) switches = level_distances({}, chain.parameters().distance, chain.obtained_levels());
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
-    for (int c = 1; c <= sessions.obtained_levels(); ++c) check_budget_reachable(sessions.for_level(c), c, 1);
+    std::vector<int> levels;
+    for (int c = 1; c <= chain.obtained_levels(); ++c) levels.push_back(c);
+    check_chain_budgets(chain, levels);
     const SurfaceViews original = surface_views(model, object.box);
-    std::optional<Model> last;  // the last level written, as built
-    for (int c = 0; c <= sessions.obtained_levels(); ++c) {
-        LodSession& session = sessions.for_level(c);
-        Lod lod = build_lod(session, c, 1);
-        if (last && draws_the_same(*last, lod.model)) continue;  // a tile that repeats the finer one is left out
-        last = lod.model;
+    take_distinct_levels(chain, 0, chain.obtained_levels(), std::numeric_limits<int>::max(), [&](ChainLevel built) {
+        const int c = built.level;
         const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c);
         TileLevel level{name + ".glb", 0, 0};
         if (c > 0) {
-            level.surface_deviation = surface_deviation(original, surface_views(lod.model, object.box));
-            level.geometric_error = level_geometric_error(switches[std::size_t(c - 1)], session.derived.sizing, level.surface_deviation);
+            level.surface_deviation = surface_deviation(original, surface_views(built.lod.model, object.box));
+            level.geometric_error =
+                level_geometric_error(switches[std::size_t(c - 1)], built.session->derived.sizing, level.surface_deviation);
         }
-        export_gltf(keep_hierarchy ? lod.model : merge_draw_calls(std::move(lod.model), name),
+        export_gltf(keep_hierarchy ? built.lod.model : merge_draw_calls(std::move(built.lod.model), name),
                     (std::filesystem::path(folder) / level.content).string(), 1);
         object.levels.push_back(std::move(level));
-    }
+    });
     return object;
 }
 
@@ -116,7 +115,7 @@ int run_tiles(const Arguments& a) {
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, !a.has("manual"), a.has("keep-hierarchy"), output.path());
+        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, a.has("keep-hierarchy"), output.path());
     });
     write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));
     files.commit();

@@ -160,7 +160,7 @@ void load_session_parameters(ViewerState& state, const std::string& path) {
     if (p.light) state.settings.light = *p.light;
     state.light_follows_camera = !p.light;
     state.settings.mode = p.render_mode;
-    state.session.reset();
+    state.chain.reset();
     state.needs_update = true;
     state.message = "loaded " + path;
 }
@@ -204,12 +204,12 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
         state.load_parameters = false, redraw = true;
     }
     if (state.export_lod) {
-        if (state.lod && state.session) {
+        if (state.lod && state.chain) {
             std::string name = std::filesystem::path(state.parameters.model).stem().string() + "_L" +
                                std::to_string(state.parameters.current_level);
             std::string folder = a.text("export-dir", "boxlod-view-export");
             shown([&] {
-                export_lod(*state.lod, *state.session, folder, name, frame_to_srgb8(frame), threads);
+                export_lod(*state.lod, state.chain->parameters(), folder, name, frame_to_srgb8(frame), threads);
                 state.message = "exported " + folder + "/" + name + ".gltf";
             });
         } else {

@@ -60,7 +60,7 @@ struct ViewerKey {
 };
 
 bool cycle_lod_parameter(ViewerState& s, const std::string& message) {
-    s.session.reset();
+    s.chain.reset();
     parameters_changed(s, message);
     return true;
 }
@@ -227,9 +227,9 @@ Frame render_view(ViewerState& s, int threads) {
         s.lod.reset();
         s.lod_drawable.reset();
         if (s.parameters.current_level > 0) {
-            if (!s.session) s.session = start_lod(*s.model, s.parameters, threads);
-            s.parameters.current_level = std::min(s.parameters.current_level, s.session->derived.levels.obtained_levels);
-            s.lod = std::make_unique<Lod>(build_lod(*s.session, s.parameters.current_level, threads));
+            if (!s.chain) s.chain = std::make_unique<Chain>(*s.model, s.parameters, threads);
+            s.parameters.current_level = std::min(s.parameters.current_level, s.chain->obtained_levels());
+            s.lod = std::make_unique<Lod>(build_lod(s.chain->for_level(s.parameters.current_level), s.parameters.current_level, threads));
             s.lod_drawable = make_drawable_model(s.lod->model);
         }
         s.needs_update = false;
@@ -257,7 +257,7 @@ std::vector<std::string> overlay_lines(const ViewerState& s) {
     lines.push_back(view.str());
     std::ostringstream lod;
     lod << "level " << s.parameters.current_level;
-    if (s.session) lod << " of " << s.session->derived.levels.obtained_levels;
+    if (s.chain) lod << " of " << s.chain->obtained_levels();
     lod << "  " << level_mode_name(s.parameters.level_mode) << "  box " << box_kind_name(s.parameters.box_kind)
         << (s.auto_update ? "  auto-update" : "  (U: update)") << (s.needs_update ? "  *changed*" : "");
     lines.push_back(s.model->is_lod ? "an exported LoD (view only)" : lod.str());

@@ -5,7 +5,7 @@
 // person would see.
 #pragma once
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain.h"
 
 #include <memory>
 #include <string>
@@ -37,7 +37,7 @@ struct ViewerState {
     bool screenshot = false, save_parameters = false, load_parameters = false, export_lod = false, quit = false;
 
     // The LoD currently shown (null at level 0 or for an LoD file) and what is drawn.
-    std::unique_ptr<LodSession> session;
+    std::unique_ptr<Chain> chain;  // level c as build --all-levels makes it (chain.h)
     std::unique_ptr<Lod> lod;
     std::unique_ptr<DrawableModel> original_drawable, lod_drawable;
 };

@@ -45,7 +45,7 @@ void name_pages(Lod& lod, const std::string& name) {
             lod.model.textures[std::size_t(texture)].name = name + "_" + lod.model.textures[std::size_t(texture)].name;
 }
 
-void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
+void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory, const std::string& name,
                 const Image8& preview, int threads, bool binary) {
     namespace fs = std::filesystem;
     std::error_code error;
@@ -55,7 +55,7 @@ void export_lod(Lod lod, const LodSession& session, const std::string& directory
     OutputGroup files;
     auto file = [&](const std::string& suffix) { return (fs::path(directory) / (name + suffix)).string(); };
     name_pages(lod, name);
-    LodParameters parameters = session.input.parameters;
+    LodParameters parameters = chain_parameters;
     parameters.current_level = lod.current_level;
     // The parameter file names its model relative to itself, so the folder can move.
     fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);

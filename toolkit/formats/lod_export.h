@@ -15,9 +15,11 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
 void name_pages(Lod& lod, const std::string& name);
 
 // `lod` by value: its page textures are renamed NAME_color_K.png ... in place;
-// move it in when it is not needed afterwards (the pages are large). `binary`:
+// move it in when it is not needed afterwards (the pages are large). The
+// parameter file saves `chain_parameters` (toolkit/lod/chain.h: Chain::parameters)
+// at the level's number, so that building from it makes the same level. `binary`:
 // NAME.glb with the pages inside, instead of NAME.gltf + .bin + PNGs.
-void export_lod(Lod lod, const LodSession& session, const std::string& directory, const std::string& name,
+void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory, const std::string& name,
                 const Image8& preview, int threads, bool binary = false);
 
 }  // namespace boxlod

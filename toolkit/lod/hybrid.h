@@ -42,7 +42,7 @@ struct HybridPlan {
 };
 
 // What plan_hybrid measured, kept for the plans of the same model at other
-// sizing distances (chain_sessions.h: one plan per distance): a node measured
+// sizing distances (chain.h: one plan per distance): a node measured
 // again in the same measuring view takes its proxies' errors from here, and
 // its simplified sub-trees, which no distance changes, are made once. Each
 // node's entry is written by the one thread that measures it.

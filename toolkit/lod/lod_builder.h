@@ -62,7 +62,7 @@ struct LodSession {
 // Throws InputError for an LoD model (boxlod does not simplify its own output) or bad parameters.
 // `boxes`, when given, are the model's node_boxes for parameters.box_kind (computed once, reused).
 // `measurements`, when given, are shared with the sessions of the same model at
-// other distances (level mode hybrid: chain_sessions.h).
+// other distances (level mode hybrid: chain.h).
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
                                       const std::vector<std::optional<OrientedBox>>* boxes = nullptr,
                                       HybridMeasurements* measurements = nullptr);

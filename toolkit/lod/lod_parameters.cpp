@@ -4,6 +4,7 @@
 #include "base/key_values.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <type_traits>
 #include <utility>
@@ -82,6 +83,50 @@ ParameterDeclaration budgets_parameter() {
     return d;
 }
 
+std::string format_level_distances(const LevelDistances& distances) {
+    if (distances.rule == LevelDistances::Rule::doubling) return "auto";
+    if (distances.rule == LevelDistances::Rule::same) return "same";
+    std::string text;
+    for (float d : distances.listed) text += (text.empty() ? "" : ",") + format_number(d);
+    return text;
+}
+
+// auto, same, or distances that ascend strictly: two levels sized for one
+// distance would draw the same (docs/design.md: Files).
+std::string parse_level_distances(const std::string& text, LevelDistances& distances) {
+    LevelDistances parsed;
+    if (text == "auto" || text == "same") {
+        parsed.rule = text == "auto" ? LevelDistances::Rule::doubling : LevelDistances::Rule::same;
+        distances = parsed;
+        return "";
+    }
+    parsed.rule = LevelDistances::Rule::listed;
+    for (const std::string& item : comma_list(text)) {
+        char* end = nullptr;
+        const double d = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) || d < parameter_range::min_positive_distance)
+            return "'" + item + "' is not a distance in [" + format_number(parameter_range::min_positive_distance) + ", " +
+                   format_number(parameter_range::distance.max) + "] m (or auto, or same)";
+        if (!parsed.listed.empty() && !(float(d) > parsed.listed.back()))
+            return item + " comes after " + format_number(parsed.listed.back()) + ": the distances must ascend, one per level 1..N";
+        parsed.listed.push_back(float(d));
+    }
+    distances = parsed;
+    return "";
+}
+
+ParameterDeclaration level_distances_parameter() {
+    ParameterDeclaration d =
+        named("level_distances", "level-distances", "auto|same|D1,...,DN",
+              "where a chain's level c >= 1 is sized: auto, the distance x 2^(c-1), so each level is as sharp as the "
+              "screen where it is used; same, every level at the distance (--manual); or one distance per level 1..N, "
+              "ascending (docs/cost.md: Switching levels)");
+    d.sweep_key = false;  // a sweep sizes by its own `sizing` rule
+    d.format = [](const LodParameters& p) { return format_level_distances(p.level_distances); };
+    d.parse = [](const std::string& text, LodParameters& p) { return parse_level_distances(text, p.level_distances); };
+    return d;
+}
+
 ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
     declaration.sweep_key = false;
     return declaration;
@@ -124,6 +169,7 @@ std::vector<ParameterDeclaration> make_declarations() {
         not_in_sweeps(number_parameter("distance", "distance", "D",
                                        "texture sizing: camera distance in metres, 0: the distance that frames the model",
                                        &P::distance, r::distance)),
+        level_distances_parameter(),
         number_parameter("resolution", "resolution", "R", "texture sizing: screen height in pixels", &P::resolution,
                          r::resolution),
         number_parameter("min_texture_size", "min-texture-size", "S", "smallest LoD texture page side, a power of two",
@@ -161,6 +207,7 @@ void set_manual(LodParameters& p) {
     p.keep_small_subtrees = false, p.keep_cheaper_subtrees = false;
     p.min_texture_size = 256;
     p.flat_faces = 0;
+    p.level_distances.rule = LevelDistances::Rule::same;
 }
 
 int asked_levels(const LodParameters& p) {

@@ -17,6 +17,14 @@
 
 namespace boxlod {
 
+// Where levels 1..N of a chain are sized (toolkit/lod/chain.h): `auto`
+// doubles the distance per level, `same` sizes every level at the distance
+// (the manual's program), or one listed distance per level.
+struct LevelDistances {
+    enum class Rule { doubling, same, listed } rule = Rule::doubling;
+    std::vector<float> listed;  // rule listed: ascending, one per level 1..N
+};
+
 struct LodParameters {
     std::string model;  // the model file (relative paths are relative to the parameter file)
     LevelMode level_mode = LevelMode::top_down;
@@ -32,7 +40,8 @@ struct LodParameters {
     int flat_faces = 8;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
-    float distance = 0;  // 0: the distance that frames the model
+    float distance = 0;  // 0: the distance that frames the model; a chain's level 1
+    LevelDistances level_distances;
     float resolution = 1080;
     int min_texture_size = 16, max_texture_size = 4096;
     RenderMode render_mode = RenderMode::normal;
@@ -82,8 +91,8 @@ std::span<const ParameterDeclaration> lod_parameter_declarations();
 const ParameterDeclaration* find_lod_parameter(const std::string& key);  // nullptr when unknown
 
 // The manual's program (docs/design.md: Level values and the cut): every
-// sub-tree boxed, pages of at least 256 texels a side, no flat faces. With
-// one sizing distance for every level, the commands' --manual (a sweep's
+// sub-tree boxed, pages of at least 256 texels a side, no flat faces, one
+// sizing distance for every level; the commands' --manual (a sweep's
 // `manual = true`) sets this.
 void set_manual(LodParameters& parameters);
 

@@ -94,7 +94,7 @@ TEST(ViewerState, LevelKeysRebuildTheLodWithAutoUpdate) {
     apply_event(s, key("y"));
     for (int i = 0; i < 10; ++i) apply_event(s, key("+"));
     render_view(s, 2);
-    EXPECT_EQ(s.parameters.current_level, s.session->derived.levels.obtained_levels);
+    EXPECT_EQ(s.parameters.current_level, s.chain->obtained_levels());
 }
 
 TEST(ViewerState, LightOptionsAndTheManualsGetSetDistance) {

@@ -5,7 +5,7 @@
 #include "lod_scene.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/error_greedy.h"
-#include "toolkit/lod/chain_sessions.h"
+#include "toolkit/lod/chain.h"
 #include "toolkit/formats/lod_export.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
@@ -308,7 +308,7 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     Lod lod = build_lod(*session, 2, 2);
     auto folder = test::scratch_folder("lod_export");
     Image8 preview = render_lod_preview(lod, *session, 64, 48, 2);
-    export_lod(lod, *session, folder.string(), "house", preview, 2);
+    export_lod(lod, session->input.parameters, folder.string(), "house", preview, 2);
     for (const char* file : {"house.gltf", "house.bin", "house_color_0.png", "house_normal_0.png", "house_height_0.png",
                              "house.params.txt", "house.preview.png", "house.stats.txt"})
         EXPECT_TRUE(std::filesystem::exists(folder / file)) << file;
@@ -329,7 +329,7 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     EXPECT_EQ(saved.current_level, 2);
     EXPECT_EQ(saved.distance, session->input.parameters.distance);
     // As one .glb: the pages inside, the same LoD read back.
-    export_lod(lod, *session, folder.string(), "packed", preview, 2, true);
+    export_lod(lod, session->input.parameters, folder.string(), "packed", preview, 2, true);
     EXPECT_TRUE(std::filesystem::exists(folder / "packed.glb"));
     EXPECT_FALSE(std::filesystem::exists(folder / "packed_color_0.png"));
     Model packed = load_model((folder / "packed.glb").string());
@@ -377,12 +377,11 @@ TEST(LodGolden, FzkHausDefaultChain) {
     Model model = load_model(test::fzk_haus_ifc);
     LodParameters p;
     p.resolution = 128;
-    ChainSessions sessions(model, p, 2);
-    sessions.distances = level_distances("auto", sessions.first->input.parameters.distance, sessions.obtained_levels());
+    Chain chain(model, p, 2);  // level_distances auto
     for (int c : {2, 4}) {
-        Lod lod = build_lod(sessions.for_level(c), c, 2);
-        EXPECT_LT(combined_cost({&lod.cost}).bytes(), sessions.first->derived.original_cost.bytes()) << "level " << c;
-        test::expect_golden(render_lod_preview(lod, *sessions.first, 200, 150, 2), "lod_fzk_default_chain_level" + std::to_string(c));
+        Lod lod = build_lod(chain.for_level(c), c, 2);
+        EXPECT_LT(combined_cost({&lod.cost}).bytes(), chain.first->derived.original_cost.bytes()) << "level " << c;
+        test::expect_golden(render_lod_preview(lod, *chain.first, 200, 150, 2), "lod_fzk_default_chain_level" + std::to_string(c));
     }
 }
 

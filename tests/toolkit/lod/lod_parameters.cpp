@@ -17,7 +17,7 @@ TEST(LodParameters, KeysAndOptionsAreDeclaredOnce) {
         EXPECT_EQ(find_lod_parameter(d.key), &d);
     }
     EXPECT_EQ(find_lod_parameter("smoothness"), nullptr);
-    EXPECT_EQ(keys.size(), 18u);
+    EXPECT_EQ(keys.size(), 19u);
 }
 
 TEST(LodParameters, EveryValueReadsBackAsWritten) {
@@ -34,6 +34,7 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
     changed.max_texture_size = 1024;
     changed.render_mode = RenderMode::pom;
     changed.parallax_bias = -0.0123f;
+    changed.level_distances = {LevelDistances::Rule::listed, {12.5f, 40, 1e9f}};
     for (const LodParameters& p : {LodParameters{}, changed})
         for (const ParameterDeclaration& d : lod_parameter_declarations()) {
             LodParameters read;

@@ -130,7 +130,7 @@ TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     EXPECT_LE(cost.texture_bytes, page_bytes + mip_chain_texels(32, 32) * 3);
 
     auto folder = test::scratch_folder("cost_export");
-    export_lod(std::move(lod), *session, folder.string(), "house", Image8(4, 4, 3, 0), 1);
+    export_lod(std::move(lod), session->input.parameters, folder.string(), "house", Image8(4, 4, 3, 0), 1);
     EXPECT_EQ(std::filesystem::file_size(folder / "house.bin"), cost.mesh_bytes);
 }
 
