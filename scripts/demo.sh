@@ -40,7 +40,8 @@ demo_model() {  # demo_model NAME MODEL
   grep -E '^(bytes_chain|texture_bytes_gpu_chain) ' "$out/$name/chain.txt" | tr '\n' ' '; echo
   "$boxlod" render "$model" -o "$out/$name/original.png" > /dev/null
   local middle
-  middle=$(awk -F' = ' '$1 == "obtained_levels" { n = $2 } END { print int(n / 2) }' "$out/$name/build.txt")
+  # The middle one of the levels written (a level that repeats the one before is not).
+  middle=$(awk -F' = ' '$1 == "current_level" { c[n++] = $2 } END { print c[int(n / 2)] }' "$out/$name/build.txt")
   "$boxlod" render "$out/$name/${name}_L${middle}.gltf" --split-view "$model" -o "$out/$name/split_L${middle}.png" > /dev/null
   echo "renders: $out/$name/original.png, $out/$name/split_L${middle}.png (level $middle left, original right)"
   echo
