@@ -4,9 +4,9 @@
 //   build/experiments/metrics_benchmark [--benchmark_filter=...]
 // The second argument of every case is the thread count. bm_sweep_rows
 // draws a sweep's rows one at a time or side by side (experiments/sweep/sweep.cpp: draw_rows).
-#include "experiments/metrics/flip.h"
-#include "experiments/metrics/image_metrics.h"
-#include "experiments/metrics/silhouette.h"
+#include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/image_metrics.h"
+#include "toolkit/metrics/silhouette.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/formats/model_io.h"

@@ -7,7 +7,7 @@
 #include "experiments/city/camera_path.h"
 #include "data_gen/commands/commands.h"
 #include "experiments/commands/commands.h"
-#include "experiments/metrics/flip.h"
+#include "toolkit/metrics/flip.h"
 #include "experiments/city/fly_through.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/lod/parameter_file.h"

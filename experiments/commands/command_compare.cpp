@@ -4,9 +4,9 @@
 #include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "experiments/commands/commands.h"
-#include "experiments/metrics/heatmap.h"
-#include "experiments/metrics/image_metrics.h"
-#include "experiments/metrics/metric_registry.h"
+#include "toolkit/metrics/heatmap.h"
+#include "toolkit/metrics/image_metrics.h"
+#include "toolkit/metrics/metric_registry.h"
 #include "toolkit/commands/render_options.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include "base/key_value_lines.h"
 #include "base/parallel.h"
 #include "data_gen/samples.h"
-#include "experiments/metrics/flip.h"
+#include "toolkit/metrics/flip.h"
 #include "experiments/sweep/impostor.h"
 #include "toolkit/lod/parameter_file.h"
 

@@ -4,7 +4,7 @@
 // size, metrics, which images to keep, and any LoD parameter the sweep does
 // not vary (toolkit/lod/lod_parameters.h). Paths are relative to the file.
 #pragma once
-#include "experiments/metrics/metric_registry.h"
+#include "toolkit/metrics/metric_registry.h"
 #include "renderer/renderer.h"
 #include "toolkit/lod/boxes.h"
 #include "toolkit/lod/level_modes.h"

@@ -1,8 +1,8 @@
 #include "experiments/sweep/sweep_shots.h"
 
 #include "base/key_values.h"
-#include "experiments/metrics/image_metrics.h"
-#include "experiments/metrics/metric_registry.h"
+#include "toolkit/metrics/image_metrics.h"
+#include "toolkit/metrics/metric_registry.h"
 
 namespace boxlod {
 

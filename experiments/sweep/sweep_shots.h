@@ -3,8 +3,8 @@
 // metrics of a pair (docs/sweeps.md). One thread each in a sweep: rows are
 // drawn side by side.
 #pragma once
-#include "experiments/metrics/flip.h"
-#include "experiments/metrics/silhouette.h"
+#include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/silhouette.h"
 #include "experiments/sweep/sweep_config.h"
 #include "renderer/renderer.h"
 #include "toolkit/model/framing.h"

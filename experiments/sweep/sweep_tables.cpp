@@ -5,7 +5,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_value_lines.h"
-#include "experiments/metrics/metric_registry.h"
+#include "toolkit/metrics/metric_registry.h"
 
 #include <libdeflate.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/metrics/separable_filter.h"
+#include "toolkit/metrics/separable_filter.h"
 
 #include "base/parallel.h"
 

@@ -1,4 +1,4 @@
-#include "experiments/metrics/flip.h"
+#include "toolkit/metrics/flip.h"
 
 #include "base/parallel.h"
 

@@ -2,7 +2,7 @@
 // alpha and further channels are ignored): RMSE, PSNR and SSIM.
 // Both images must have the same size (std::invalid_argument otherwise).
 #pragma once
-#include "experiments/metrics/separable_filter.h"
+#include "toolkit/metrics/separable_filter.h"
 #include "renderer/image.h"
 
 namespace boxlod {

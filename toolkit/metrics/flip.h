@@ -17,7 +17,7 @@
 // identical images, about 0.967 for black against white.
 #pragma once
 #include "base/input_error.h"
-#include "experiments/metrics/separable_filter.h"
+#include "toolkit/metrics/separable_filter.h"
 #include "renderer/image.h"
 
 namespace boxlod {

@@ -4,9 +4,9 @@
 // one FLIP for its mean and its error map).
 #pragma once
 #include "base/enum_table.h"
-#include "experiments/metrics/flip.h"
-#include "experiments/metrics/separable_filter.h"
-#include "experiments/metrics/silhouette.h"
+#include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/separable_filter.h"
+#include "toolkit/metrics/silhouette.h"
 #include "renderer/image.h"
 
 #include <optional>

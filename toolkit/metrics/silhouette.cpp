@@ -1,4 +1,4 @@
-#include "experiments/metrics/silhouette.h"
+#include "toolkit/metrics/silhouette.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,7 +1,7 @@
-#include "experiments/metrics/metric_registry.h"
+#include "toolkit/metrics/metric_registry.h"
 
 #include "base/input_error.h"
-#include "experiments/metrics/image_metrics.h"
+#include "toolkit/metrics/image_metrics.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "experiments/metrics/heatmap.h"
+#include "toolkit/metrics/heatmap.h"
 
 #include <algorithm>
 #include <cmath>

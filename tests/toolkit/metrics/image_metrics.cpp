@@ -1,4 +1,4 @@
-#include "experiments/metrics/image_metrics.h"
+#include "toolkit/metrics/image_metrics.h"
 
 #include "metric_images.h"
 
