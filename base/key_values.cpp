@@ -24,6 +24,12 @@ KeyValue float_entry(std::string key, float value) { return {std::move(key), for
 KeyValue number_entry(std::string key, double value) { return {std::move(key), format_number(value), true}; }
 KeyValue text_entry(std::string key, std::string value) { return {std::move(key), std::move(value), false}; }
 
+KeyValue numbers_entry(std::string key, const std::vector<double>& values) {
+    std::string text;
+    for (double value : values) text += (text.empty() ? "" : ",") + format_number(value);
+    return text_entry(std::move(key), std::move(text));
+}
+
 std::string value_of(const KeyValues& entries, const std::string& key) {
     for (const KeyValue& e : entries)
         if (e.key == key) return e.value;

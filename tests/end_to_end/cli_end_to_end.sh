@@ -185,8 +185,24 @@ check "equal distances are refused by name" grep -q "^boxlod: --level-distances:
 check "no output folder for a refused chain" test ! -e "$work/chain_bad"
 # The same chain in one .glb (MSFT_lod): level 0 in the scene, the others listed by its root,
 # switch hints falling with distance, each texture stored once.
-check "build --chain succeeds" test "$(status_of "$boxlod" build "$work/house.glb" --chain -o "$work/house_chain.glb" --resolution 256 --min-texture-size 16)" = 0
-check "a chain level reports where engines switch to it" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } \$1 == \"switch_distance\" { s[++n] = \$2; if ((\$2 - d) ^ 2 > (1e-6 * d) ^ 2) exit 1 } \$1 == \"screen_coverage\" { c[n] = \$2 } END { for (k = 2; k <= n; ++k) if (!(s[k] > s[k - 1] && c[k] < c[k - 1])) exit 1; exit n < 5 }' '$work/out'"
+check "build --chain --switch-error 0 succeeds" test "$(status_of "$boxlod" build "$work/house.glb" --chain --switch-error 0 -o "$work/house_chain_texels.glb" --resolution 256 --min-texture-size 16)" = 0
+check "without a threshold a level switches in at its sizing distance" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d = \$2 } \$1 == \"switch_distance\" { s[++n] = \$2; if ((\$2 - d) ^ 2 > (1e-6 * d) ^ 2) exit 1 } \$1 == \"screen_coverage\" { c[n] = \$2 } END { for (k = 2; k <= n; ++k) if (!(s[k] > s[k - 1] && c[k] < c[k - 1])) exit 1; exit n < 3 }' '$work/out'"
+check "build --chain succeeds" test "$(status_of "$boxlod" build "$work/house.glb" --chain -o "$work/house_chain.glb" --resolution 256 --min-texture-size 16 --switch-error 0.1)" = 0
+check "a chain level switches in where its measured error stays within the threshold, farther and cheaper than the one before" /usr/bin/python3 - "$work/out" <<'PY'
+import sys
+blocks, measured = [], None
+for line in open(sys.argv[1]):
+    key, _, value = line.strip().partition(' = ')
+    if key == 'measured_distances': measured = [float(v) for v in value.split(',')]
+    elif key == 'name' and value.startswith('house_chain_L'): blocks.append({})
+    elif blocks and key: blocks[-1][key] = value
+assert measured and len(blocks) >= 2, (measured, len(blocks))
+for finer, level in zip(blocks, blocks[1:]):
+    assert float(level['switch_distance']) > float(finer.get('switch_distance', 0)), (finer, level)
+    assert int(level['bytes_lod']) < int(finer['bytes_lod']), (finer['bytes_lod'], level['bytes_lod'])
+    errors = [float(v) for v in level['errors_by_distance'].split(',')]
+    assert all(e <= 0.1 for d, e in zip(measured, errors) if d >= float(level['switch_distance'])), errors
+PY
 check "the chain .glb lists every level through MSFT_lod" /usr/bin/python3 - "$work/house_chain.glb" "$work/out" <<'PY'
 import json, struct, sys
 data = open(sys.argv[1], 'rb').read()

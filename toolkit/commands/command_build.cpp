@@ -59,6 +59,12 @@ KeyValues chain_report(const std::string& name, const ChainCost& written) {
     return report;
 }
 
+// Where engines switch to a level, in their terms.
+KeyValues switch_entries(const LodSwitch& s) {
+    return {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
+            number_entry("unity_relative_height", s.unity_relative_height), number_entry("unreal_screen_size", s.unreal_screen_size)};
+}
+
 // A level's stdout block: its name, sizing distance, the later levels it
 // stands for (they draw what it draws: chain.h), where engines switch to it
 // (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
@@ -66,16 +72,11 @@ KeyValues level_report(const std::string& name, const ChainLevel& level, const B
     const Lod& lod = level.lod;
     const LodSession& session = *level.session;
     KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.input.parameters.distance)};
-    if (!level.same_levels.empty()) {
-        std::string same;
-        for (int c : level.same_levels) same += (same.empty() ? "" : ",") + std::to_string(c);
-        report.push_back(text_entry("same_as_levels", same));
-    }
+    if (!level.same_levels.empty())
+        report.push_back(numbers_entry("same_as_levels", std::vector<double>(level.same_levels.begin(), level.same_levels.end())));
     if (switches && lod.current_level >= 1) {
-        const LodSwitch s = lod_switch(session.input.parameters.distance, bounds, session.derived.sizing);
-        report.insert(report.end(), {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
-                                     number_entry("unity_relative_height", s.unity_relative_height),
-                                     number_entry("unreal_screen_size", s.unreal_screen_size)});
+        const KeyValues at = switch_entries(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
+        report.insert(report.end(), at.begin(), at.end());
     }
     report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
     return report;
@@ -86,28 +87,35 @@ KeyValues level_report(const std::string& name, const ChainLevel& level, const B
 constexpr int max_chain_levels = 10;
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels),
-// each once.
+// each once, those that some distance draws, switching where their error says.
 void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
     const std::string output = a.text("output");
     const std::string stem = std::filesystem::path(output).stem().string();
     const Bounds bounds = model_bounds(chain.model);
-    const int obtained = chain.obtained_levels();
+    SwitchedChain switched = switched_levels(chain, switch_error(a), max_chain_levels);
+    if (!switched.distances.empty()) std::fputs(format_key_values({numbers_entry("measured_distances", switched.distances)}).c_str(), stdout);
     std::vector<Model> models;
     std::vector<LodSwitch> switches;
-    const int cut = take_distinct_levels(chain, 0, obtained, max_chain_levels, [&](ChainLevel level) {
+    for (std::size_t k = 0; k < switched.levels.size(); ++k) {
+        ChainLevel& level = switched.levels[k];
         const std::string name = stem + "_L" + std::to_string(level.level);
         for (int c : level.same_levels)
             std::fprintf(stderr, "boxlod build: level %d draws what level %d does: the chain has it once\n", c, level.level);
         cost.add(level.lod);
         name_pages(level.lod, name);
-        const LodSession& session = *level.session;
-        if (level.level >= 1) switches.push_back(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
-        std::fputs((format_key_values(level_report(name, level, bounds, true)) + "\n").c_str(), stdout);
+        KeyValues report = level_report(name, level, bounds, false);
+        if (k > 0) {
+            const LodSwitch s = lod_switch(switched.switch_distances[k], bounds, level.session->derived.sizing);
+            switches.push_back(s);
+            KeyValues at = switch_entries(s);
+            report.insert(report.begin() + 2, at.begin(), at.end());
+        }
+        if (!switched.errors.empty()) report.insert(report.begin() + 2, numbers_entry("errors_by_distance", switched.errors[k]));
+        std::fputs((format_key_values(report) + "\n").c_str(), stdout);
         models.push_back(a.has("keep-hierarchy") ? std::move(level.lod.model) : merge_draw_calls(std::move(level.lod.model), name));
-    });
-    if (cut <= obtained)
-        std::fprintf(stderr, "boxlod build: --chain keeps levels 0..%d of 0..%d (MSFT_lod clients load at most %d)\n", cut - 1,
-                     obtained, max_chain_levels);
+    }
+    std::fprintf(stderr, "boxlod build: --chain holds %zu of the %d distinct levels (%d drawn at some distance; MSFT_lod clients load at most %d)\n",
+                 models.size(), switched.distinct, switched.reachable, max_chain_levels);
     std::vector<const Model*> pointers;
     for (const Model& model : models) pointers.push_back(&model);
     std::vector<std::string> pages;
@@ -228,6 +236,7 @@ Subcommand build_subcommand() {
                   "OUT.gltf: glTF's MSFT_lod, switch hints in extras.MSFT_screencoverage, shared textures stored once; "
                   "levels sized by --level-distances"},
                  keep_hierarchy_option(),
+                 switch_error_option(),
                  {"viewer", "",
                   "with --chain: also write OUT.three.html and OUT.babylon.html beside it, viewers that switch its levels at "
                   "its switch distances in three.js and Babylon.js (docs/cost.md: Switching levels)"},

@@ -24,35 +24,33 @@ namespace {
 
 constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, height_range{-11000, 100000};
 
-// One object's chain (chain.h: each level once), as OUTDIR/object_K_L<c>.glb,
-// with a geometric error from the level's measured deviation that makes
-// clients switch where a chain does at the latest (level_geometric_error):
-// at d_c, or where the levels share one sizing distance (--manual), where
-// auto distances would switch.
-TileObject build_object(const Model& model, int index, const LodParameters& parameters, bool keep_hierarchy,
+// One object's chain (chain.h: switched_levels), as OUTDIR/object_K_L<c>.glb,
+// with a geometric error from the level's switch distance and measured
+// deviation that makes clients switch where a chain does at the latest
+// (level_geometric_error).
+TileObject build_object(const Model& model, int index, const LodParameters& parameters, double switch_error, bool keep_hierarchy,
                         const std::string& folder) {
     Chain chain(model, parameters, 1);
-    std::vector<float> switches = chain.distances;
-    if (switches.empty()) switches = level_distances({}, chain.parameters().distance, chain.obtained_levels());
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
     std::vector<int> levels;
     for (int c = 1; c <= chain.obtained_levels(); ++c) levels.push_back(c);
     check_chain_budgets(chain, levels);
     const SurfaceViews original = surface_views(model, object.box);
-    take_distinct_levels(chain, 0, chain.obtained_levels(), std::numeric_limits<int>::max(), [&](ChainLevel built) {
-        const int c = built.level;
-        const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(c);
+    SwitchedChain switched = switched_levels(chain, switch_error, std::numeric_limits<int>::max());
+    for (std::size_t k = 0; k < switched.levels.size(); ++k) {
+        ChainLevel& built = switched.levels[k];
+        const std::string name = "object_" + std::to_string(index) + "_L" + std::to_string(built.level);
         TileLevel level{name + ".glb", 0, 0};
-        if (c > 0) {
+        if (k > 0) {
             level.surface_deviation = surface_deviation(original, surface_views(built.lod.model, object.box));
             level.geometric_error =
-                level_geometric_error(switches[std::size_t(c - 1)], built.session->derived.sizing, level.surface_deviation);
+                level_geometric_error(switched.switch_distances[k], built.session->derived.sizing, level.surface_deviation);
         }
         export_gltf(keep_hierarchy ? built.lod.model : merge_draw_calls(std::move(built.lod.model), name),
                     (std::filesystem::path(folder) / level.content).string(), 1);
         object.levels.push_back(std::move(level));
-    });
+    }
     return object;
 }
 
@@ -109,13 +107,14 @@ int run_tiles(const Arguments& a) {
     Model city = load_model(parameters.model);
     const std::vector<int> nodes = tile_objects(city);
     start_lod(tile_object(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
+    const double error = switch_error(a);
     // The new tileset replaces a folder holding an old one in one step, so no
     // client ever loads a mix of two tilesets' tiles.
     OutputFolder output(folder.string(), is_tileset_file);
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
-        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, a.has("keep-hierarchy"), output.path());
+        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
     });
     write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));
     files.commit();
@@ -135,7 +134,7 @@ Subcommand tiles_subcommand() {
                       "and the root's own geometry (the whole model where all of it is on the root) "
                       "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down to the "
                       "original; glb content, boxes from boxlod's boxes, geometric errors in metres that make clients "
-                      "switch levels where a chain does (16 pixels at the level's switch distance); "
+                      "switch levels where a chain does (16 pixels at the level's switch distance, --switch-error); "
                       "OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
                       {
                           {"output", "OUTDIR", "folder for the tileset (required)", {}, 'o'},
@@ -143,6 +142,7 @@ Subcommand tiles_subcommand() {
                           {"longitude", "DEG", "(default 8.412: Karlsruhe)", longitude_range},
                           {"height", "M", "above the ellipsoid (default 0)", height_range},
                           keep_hierarchy_option(),
+                          switch_error_option(),
                           threads_option(),
                       },
                       1, 1},

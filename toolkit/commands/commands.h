@@ -2,6 +2,8 @@
 // building and the interactive viewer.
 #pragma once
 #include "base/command_registry.h"
+#include "base/key_values.h"
+#include "toolkit/lod/error_by_distance.h"
 
 namespace boxlod {
 
@@ -25,6 +27,24 @@ inline Option keep_hierarchy_option() {
     return {"keep-hierarchy", "",
             "keep one node per kept part and box in each level, with its scope and rule in extras, instead of one node per "
             "material (draw call)"};
+}
+
+// For the commands that write chains for engines (build --chain, tiles): the
+// error within which a level switches in (toolkit/lod/error_by_distance.h).
+constexpr double default_switch_error = 0.05;
+inline Option switch_error_option() {
+    return {"switch-error", "E",
+            "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over the pixels "
+            "either covers, stays within E (measured from four views in half octaves out to where the model spans 4 "
+            "pixels); 0: at its sizing distance, where its texels meet the screen's pixels (default " +
+                format_number(default_switch_error) + ")",
+            NumberRange{0, switch_error_range.max}};
+}
+inline double switch_error(const Arguments& arguments) {
+    const double error = arguments.number("switch-error", default_switch_error);
+    if (error > 0 && error < switch_error_range.min)
+        throw InputError("--switch-error: " + format_number(error) + " is neither 0 nor in " + range_text(switch_error_range));
+    return error;
 }
 
 inline std::vector<Subcommand> toolkit_commands() {

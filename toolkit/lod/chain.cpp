@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace boxlod {
@@ -81,6 +82,37 @@ int take_distinct_levels(Chain& chain, int first, int last, int max_levels, cons
     }
     if (pending) take(std::move(*pending));
     return level;
+}
+
+SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
+    std::vector<ChainLevel> distinct;
+    take_distinct_levels(chain, 0, chain.obtained_levels(), std::numeric_limits<int>::max(),
+                         [&](ChainLevel level) { distinct.push_back(std::move(level)); });
+    SwitchedChain switched;
+    ErrorByDistance measured;
+    std::vector<double> switches;
+    std::vector<std::uint64_t> bytes;
+    for (const ChainLevel& level : distinct) bytes.push_back(combined_cost({&level.lod.cost}).bytes());
+    if (threshold > 0) {
+        std::vector<const Model*> models;
+        for (const ChainLevel& level : distinct) models.push_back(&level.lod.model);
+        const LodParameters& p = chain.parameters();
+        measured = measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p.render_mode, chain.threads);
+        switches = switch_distances(measured, threshold);
+        switched.distances = measured.distances;
+    } else {
+        for (const ChainLevel& level : distinct) switches.push_back(level.session->input.parameters.distance);
+    }
+    const std::vector<std::size_t> reachable = reachable_levels(switches, bytes);
+    switched.distinct = int(distinct.size());
+    switched.reachable = int(reachable.size());
+    for (std::size_t k : reachable) {
+        if (int(switched.levels.size()) == max_levels) break;
+        switched.switch_distances.push_back(k == 0 ? 0 : switches[k]);
+        if (threshold > 0) switched.errors.push_back(measured.errors[k]);
+        switched.levels.push_back(std::move(distinct[k]));
+    }
+    return switched;
 }
 
 }  // namespace boxlod

@@ -7,6 +7,7 @@
 // tiles, view) asks the chain for them, so level c is the same level
 // whichever command, or however many levels, asked.
 #pragma once
+#include "toolkit/lod/error_by_distance.h"
 #include "toolkit/lod/lod_builder.h"
 
 #include <functional>
@@ -59,5 +60,23 @@ void check_chain_budgets(Chain& chain, const std::vector<int>& levels);
 // (in order, once the next distinct level is known), at most `max_levels` of
 // them. Returns the first level not held: last + 1, or where the cap cut.
 int take_distinct_levels(Chain& chain, int first, int last, int max_levels, const std::function<void(ChainLevel)>& take);
+
+// A chain as engines get it: the levels some distance draws, each with the
+// distance it switches in at (level 0: 0).
+struct SwitchedChain {
+    std::vector<ChainLevel> levels;
+    std::vector<double> switch_distances;
+    // Measured (a threshold given): the distances, and each level's error at them.
+    std::vector<double> distances;
+    std::vector<std::vector<double>> errors;
+    int distinct = 0, reachable = 0;  // the chain's distinct levels, and those some distance draws
+};
+
+// Every distinct level, then those that some distance draws, each cheaper
+// than the one before (error_by_distance.h: reachable_levels), the `max_levels`
+// finest of them. Switch distances from the error measured by distance
+// within `threshold` (> 0), or where a level's texels meet the screen's
+// pixels, its sizing distance (0).
+SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels);
 
 }  // namespace boxlod

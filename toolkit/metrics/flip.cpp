@@ -343,4 +343,15 @@ FlipResult flip(const Image8& reference, const Image8& test, double ppd, int thr
     return flip(prepare_flip_reference(reference, ppd, threads), test, threads);
 }
 
+double covered_mean(const Plane& error, const Coverage& reference, const Coverage& test) {
+    if (reference.width != error.width || reference.height != error.height || test.width != error.width ||
+        test.height != error.height)
+        throw std::invalid_argument("covered_mean: the error and the coverages differ in size");
+    double sum = 0;
+    std::size_t covered = 0;
+    for (std::size_t i = 0; i < reference.covered.size(); ++i)
+        if (reference.covered[i] || test.covered[i]) sum += error.pixels[i], ++covered;
+    return covered ? sum / double(covered) : 0;
+}
+
 }  // namespace boxlod

@@ -18,6 +18,7 @@
 #pragma once
 #include "base/input_error.h"
 #include "toolkit/metrics/separable_filter.h"
+#include "toolkit/metrics/silhouette.h"
 #include "renderer/image.h"
 
 namespace boxlod {
@@ -47,5 +48,12 @@ struct FlipReference {
 };
 FlipReference prepare_flip_reference(const Image8& reference, double pixels_per_degree = 67, int threads = 0);
 FlipResult flip(const FlipReference& reference, const Image8& test, int threads = 0);
+
+// The mean of a per-pixel error (FLIP's) over the pixels either image
+// covers, 0 where neither covers any: a building's error as the viewer sees
+// it, where whole-image error shrinks with the building's pixels and makes
+// far levels look free (docs/cost.md: Switching levels). Throws
+// std::invalid_argument on sizes that differ.
+double covered_mean(const Plane& error, const Coverage& reference, const Coverage& test);
 
 }  // namespace boxlod

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "lod_scene.h"
 #include "test_support.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
 
 #include <gtest/gtest.h>
@@ -151,4 +152,33 @@ TEST(Chain, ALevelsParameterFileBuildsTheSameLevel) {
     EXPECT_EQ(again.for_level(c).input.parameters.distance, chain.for_level(c).input.parameters.distance);
     EXPECT_TRUE(draws_the_same(a.model, b.model));
     EXPECT_EQ(format_key_values(a.statistics), format_key_values(b.statistics));
+}
+
+// A chain as engines get it: levels that switch in farther and cost less,
+// each within the threshold from its switch distance on; without a
+// threshold, at their sizing distances.
+TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
+    const Model model = load_model(test::fzk_haus_ifc);
+    LodParameters p = small_chain_parameters();
+    p.resolution = 256;
+    Chain chain(model, p, 2);
+    for (double threshold : {0.02, 0.2}) {
+        const SwitchedChain switched = switched_levels(chain, threshold, 100);
+        ASSERT_GE(switched.levels.size(), 1u);
+        ASSERT_EQ(switched.errors.size(), switched.levels.size());
+        EXPECT_EQ(switched.levels[0].level, 0);
+        EXPECT_EQ(switched.switch_distances[0], 0);
+        for (std::size_t k = 1; k < switched.levels.size(); ++k) {
+            EXPECT_GT(switched.switch_distances[k], switched.switch_distances[k - 1]);
+            EXPECT_LT(combined_cost({&switched.levels[k].lod.cost}).bytes(), combined_cost({&switched.levels[k - 1].lod.cost}).bytes());
+            for (std::size_t d = 0; d < switched.distances.size(); ++d)
+                if (switched.distances[d] >= switched.switch_distances[k]) EXPECT_LE(switched.errors[k][d], threshold);
+        }
+        if (threshold > 0.1) EXPECT_GE(switched.levels.size(), 2u);  // a lenient threshold reaches boxes
+    }
+    const SwitchedChain sized = switched_levels(chain, 0, 100);
+    EXPECT_TRUE(sized.errors.empty());
+    for (std::size_t k = 1; k < sized.levels.size(); ++k)
+        EXPECT_EQ(sized.switch_distances[k], sized.levels[k].session->input.parameters.distance);
+    EXPECT_EQ(switched_levels(chain, 0, 2).levels.size(), 2u);  // the cap
 }

@@ -177,3 +177,27 @@ TEST(Flip, BadInputIsRejected) {
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(10, 10), 0), std::invalid_argument);
     EXPECT_THROW(flip(prepare_flip_reference(pattern_image(10, 10)), pattern_image(10, 11)), std::invalid_argument);
 }
+
+// A building of known pixels: 4 covered by the reference, 2 by the test (1 of
+// them also by the reference), on a 4x2 image whose other 3 pixels differ
+// too; the mean over the 5 pixels either covers, not over all 8.
+TEST(Flip, CoveredMeanIsOverThePixelsEitherImageCovers) {
+    Plane error(4, 2, 1);
+    error.pixels = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8};
+    const Coverage reference{4, 2, {1, 1, 1, 1, 0, 0, 0, 0}}, test{4, 2, {0, 0, 0, 1, 1, 0, 0, 0}};
+    EXPECT_DOUBLE_EQ(covered_mean(error, reference, test), (0.1 + 0.2 + 0.3 + 0.4 + 0.5) / 5);
+    const Coverage none{4, 2, std::vector<std::uint8_t>(8, 0)};
+    EXPECT_EQ(covered_mean(error, none, none), 0);  // nothing drawn: nothing differs
+    EXPECT_THROW(covered_mean(error, Coverage{2, 2, std::vector<std::uint8_t>(4, 1)}, test), std::invalid_argument);
+    // A building a quarter of the image: the whole-image mean is a quarter of the covered one.
+    const Image8 white(40, 40, 3, 255);
+    Image8 a = white, b = white;
+    Coverage covered{40, 40, std::vector<std::uint8_t>(1600, 0)};
+    for (int y = 10; y < 30; ++y)
+        for (int x = 10; x < 30; ++x) {
+            std::fill(a.at(x, y), a.at(x, y) + 3, 40), std::fill(b.at(x, y), b.at(x, y) + 3, 90);
+            covered.covered[std::size_t(y * 40 + x)] = 1;
+        }
+    const FlipResult r = flip(a, b, 67, 1);
+    EXPECT_GT(covered_mean(r.error, covered, covered), 3.5 * r.mean);
+}
