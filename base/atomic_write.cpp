@@ -115,7 +115,8 @@ void place(Temporary& temporary, const std::string& path, PartialOutputs& output
     std::error_code error;
     fs::rename(from, path, error);
     if (error) {
-        fs::remove(from, error);
+        std::error_code ignored;  // the rename's error is the cause to name
+        fs::remove(from, ignored);
         outputs.temporaries.erase(from);
         throw_input_error(path, "", "cannot write: " + error.message());
     }

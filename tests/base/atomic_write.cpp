@@ -44,6 +44,17 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
               (folder / "file" / "sub").string() + ": '" + (folder / "file").string() + "' is not a folder");
 }
 
+// A folder that appears where an output goes, after the check (a level of
+// --all-levels named like a folder): the rename's cause is named, not the
+// removal's (it said "cannot write: Success").
+TEST(AtomicWrite, AFolderInTheWayIsNamedAsTheCause) {
+    fs::path folder = test::scratch_folder("atomic_write_folder_in_the_way");
+    fs::create_directories(folder / "level.gltf" / "inside");
+    const std::string problem = test::input_error_of([&] { write_text_atomically((folder / "level.gltf").string(), "x"); });
+    EXPECT_EQ(problem, (folder / "level.gltf").string() + ": cannot write: Is a directory");
+    EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);  // no temporary left
+}
+
 TEST(AtomicWrite, AnOutputIsNamedForTheFormatItHolds) {
     fs::path folder = test::scratch_folder("atomic_write_extensions");
     auto problem = [&](const std::string& name) {

@@ -164,6 +164,9 @@ over_original="awk -F' = ' '\$1 == \"bytes_lod\" { b = \$2 } \$1 == \"bytes_orig
 check "a box-everything chain has a level dearer than the original" bash -c "$over_original '$work/out'"
 check "build --all-levels succeeds with the defaults" test "$(status_of "$boxlod" build "$work/house.glb" -o "$work/cheap" --all-levels --resolution 256 --preview-width 32 --preview-height 24)" = 0
 check "by default boxes pay their way: no level costs more than the original" bash -c "! $over_original '$work/out' && grep -qx 'keep_cheaper_subtrees = true' '$work/cheap/house_lod_L0.params.txt'"
+# A folder in the way of one level (73): its cause named, and no level left (L0-L4 stayed behind).
+mkdir -p "$work/in_the_way/house_lod_L5.glb/x"
+check "a level that cannot be written names why and leaves no level" bash -c "'$boxlod' build '$work/house.glb' --all-levels --glb -o '$work/in_the_way' --resolution 256 --preview-width 32 --preview-height 24 > /dev/null 2> '$work/err'; test \$? = 2 && grep -qx 'boxlod: $work/in_the_way/house_lod_L5.glb: cannot write: Is a directory' '$work/err' && test \"\$(ls -A '$work/in_the_way')\" = house_lod_L5.glb"
 check "by default levels are sized per level" bash -c "awk -F' = ' '\$1 == \"sizing_distance\" { d[++n] = \$2 } END { exit !(n > 4 && d[4] > 1.99 * d[3]) }' '$work/out'"
 check "--manual sizes every level for one distance and boxes every sub-tree" bash -c "'$boxlod' build '$work/house.glb' -o '$work/manual' --all-levels --manual --resolution 256 --preview-width 32 --preview-height 24 > '$work/manual.txt' && test \$(awk -F' = ' '\$1 == \"sizing_distance\"' '$work/manual.txt' | sort -u | wc -l) = 1 && grep -qx 'keep_cheaper_subtrees = false' '$work/manual/house_lod_L3.params.txt' && grep -qx 'min_texture_size = 256' '$work/manual/house_lod_L3.params.txt'"
 # Levels by byte budget (docs/design.md: Levels by byte budget): each level's bytes within its budget, stated beside them.

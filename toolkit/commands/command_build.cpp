@@ -132,14 +132,15 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
 
 // The levels first..last, each as NAME_L<c> (one level: NAME), a level that
 // draws what the one before draws not again (--all-levels: its block names
-// it). Level c is written (preview, glTF, pages) while the next are built:
+// it), all placed together once the last is written. Level c is written (preview, glTF, pages) while the next are built:
 // writing is partly serial (the .gltf's JSON), so the overlap keeps both
 // cores busy. Files, their bytes and the order of the output stay the same.
 void write_levels(const Arguments& a, Chain& chain, const std::string& name, int first, int last, ChainCost& cost) {
     int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
     const Bounds bounds = model_bounds(chain.model);
     const bool all_levels = a.has("all-levels");
-    std::future<void> writing;
+    OutputGroup files;  // every level or none: a level that fails leaves the folder as it was (73)
+    std::future<void> writing;  // destroyed first: a level being written is done before the group goes
     take_distinct_levels(chain, first, last, std::numeric_limits<int>::max(), [&](ChainLevel level) {
         cost.add(level.lod);
         if (writing.valid()) writing.get();
@@ -161,6 +162,7 @@ void write_levels(const Arguments& a, Chain& chain, const std::string& name, int
         });
     });
     writing.get();
+    files.commit();
 }
 
 // --name: one file name, whose longest file (NAME_L63_normal_99.png) still fits a file name.
