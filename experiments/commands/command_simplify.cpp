@@ -29,6 +29,10 @@ int run_simplify(const Arguments& arguments) {
     auto start = Clock::now();
     Model simplified = simplify_model(model, std::size_t(faces), options);
     double seconds = seconds_since(start);
+    // The model was fine; the request is what cannot be met (it said the input was empty).
+    if (mesh_counts(simplified).triangles == 0)
+        throw InputError("--faces " + std::to_string(faces) + ": simplifying " + arguments.positionals[0] + " to " +
+                         std::to_string(faces) + " face(s) keeps no triangle; ask for more");
     if (!arguments.has("keep-materials")) merge_materials(simplified);
     save_model(simplified, arguments.text("output"));
 

@@ -170,6 +170,7 @@ const std::vector<SweepKey>& sweep_keys() {
              c.views.clear();
              std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
              for (const std::string& view : items) {
+                 if (view == "all" && items.size() > 1) l.fail("'all' stands alone: it names every camera position");
                  if (!camera_direction(view)) l.fail("unknown camera position '" + view + "' (e.g. +X, -Y, +X+Y+Z, or all)");
                  if (std::find(c.views.begin(), c.views.end(), view) == c.views.end()) c.views.push_back(view);
              }

@@ -112,6 +112,8 @@ check "simplify prints its counts" bash -c "for k in faces_original faces triang
 check "simplify keeps at most the faces asked for" bash -c "f=\$(sed -n 's/^faces = //p' '$work/out'); test \"\$f\" -le 500 -a \"\$f\" -ge 400"
 check "the simplified model loads" test "$(status_of "$boxlod" info "$work/simple.glb")" = 0
 bad "simplify with --faces 0" simplify "$ifc" --faces 0 -o "$work/none.glb"
+bad "simplify to fewer faces than keep a triangle" simplify "$ifc" --faces 1 -o "$work/none.glb"
+check "the refusal blames the request, not the model" grep -q "^boxlod: --faces 1: simplifying .* to 1 face(s) keeps no triangle; ask for more\$" "$work/err"
 check "no output after a failed simplify" test ! -e "$work/none.glb"
 # sweep: one mode, two levels, one view of the FZK-Haus; a bad config is one line, exit 2.
 printf 'models = %s\nlevel_modes = top-down\nlevels = 0, 8\nviews = -Z\nwidth = 64\nheight = 48\nmetrics = psnr, ssim\n' "$ifc" > "$work/sweep.txt"

@@ -100,6 +100,7 @@ bool is_tileset_file(const std::string& name) {
 int run_tiles(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
+    if (a.has("level")) throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
     const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),

@@ -92,6 +92,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nfrobnicate = 1\n", "cfg.txt: line 2: frobnicate: unknown key");
     expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n", "cfg.txt: line 3: level_modes: unknown value 'sideways'");
     expect_error("models = a.glb\nviews = +X, +W\n", "cfg.txt: line 2: views: unknown camera position '+W'");
+    expect_error("models = a.glb\nviews = all, all\n", "cfg.txt: line 2: views: 'all' stands alone: it names every camera position");
     expect_error("models = a.glb\nwidth = wide\n", "cfg.txt: line 2: width: expected a number");
     expect_error("models = a.glb\nwidth = 4\n", "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
     expect_error("models = a.glb\ndistances = 1, -2\n", "cfg.txt: line 2: distances: expected a number in [0.01, 1000], got '-2'");
