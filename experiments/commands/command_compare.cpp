@@ -35,7 +35,7 @@ KeyValue metric_entry(const std::string& key, double value) {
     return number_entry(key, value);
 }
 
-// The two coverages iou compares: from --mask-a/--mask-b, else the pixels that differ from the background.
+// The two coverages iou and flip_covered read: from --mask-a/--mask-b, else the pixels that differ from the background.
 std::pair<Coverage, Coverage> silhouettes(const Arguments& arguments, const Image8& a, const Image8& b) {
     if (arguments.has("mask-a") != arguments.has("mask-b"))
         throw InputError("boxlod compare: --mask-a and --mask-b go together");
@@ -72,7 +72,7 @@ int run_compare(const Arguments& arguments) {
     if (asks(Metric::ssim) && (a.width < 11 || a.height < 11))
         throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");
     std::optional<std::pair<Coverage, Coverage>> coverages;
-    if (asks(Metric::iou)) coverages = silhouettes(arguments, a, b);
+    if (asks(Metric::iou) || asks(Metric::flip_covered)) coverages = silhouettes(arguments, a, b);
 
     // A FLIP heat map needs FLIP's error map: measured once, with the metrics asked for or after them.
     std::vector<Metric> measured_metrics = asked;
@@ -104,9 +104,9 @@ Subcommand compare_subcommand() {
               {"heatmap", "FILE", "write a PNG of the per-pixel error (black, red, yellow, white = 0 .. 1)"},
               {"heatmap-metric", "NAME", "the heat map's error: flip (default) or rmse (per-pixel RMS over RGB)"},
               {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)", pixels_per_degree_range},
-              {"mask-a", "FILE", "coverage mask of A for iou (covered where > 127; e.g. from render --coverage)"},
-              {"mask-b", "FILE", "coverage mask of B for iou"},
-              {"background", "R,G,B", "without masks, iou counts pixels differing from this sRGB colour in [0, 1] "
+              {"mask-a", "FILE", "coverage mask of A for iou and flip_covered (covered where > 127; e.g. from render --coverage)"},
+              {"mask-b", "FILE", "coverage mask of B for iou and flip_covered"},
+              {"background", "R,G,B", "without masks, iou and flip_covered count pixels differing from this sRGB colour in [0, 1] "
                                       "(default 1,1,1, the render background)"},
               threads_option(),
               json_option()},

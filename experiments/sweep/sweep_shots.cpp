@@ -28,7 +28,7 @@ RenderSettings view_settings(const Framing& framing, const std::string& view, fl
 }
 
 double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {
-    for (Metric preferred : {Metric::flip, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
+    for (Metric preferred : {Metric::flip, Metric::flip_covered, Metric::ssim, Metric::rmse, Metric::psnr, Metric::iou})
         for (std::size_t i = 0; i < metrics.size(); ++i) {
             if (metrics[i] != preferred) continue;
             if (preferred == Metric::ssim || preferred == Metric::iou) return 1 - values[i];

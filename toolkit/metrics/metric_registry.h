@@ -1,7 +1,7 @@
 // The image metrics by name: one table that `compare`, sweep configs and
 // `city` read, and one function that measures a list of them on a pair of
 // images, sharing the work they have in common (one RMSE for RMSE and PSNR,
-// one FLIP for its mean and its error map).
+// one FLIP for its mean, its mean over covered pixels and its error map).
 #pragma once
 #include "base/enum_table.h"
 #include "toolkit/metrics/flip.h"
@@ -16,7 +16,7 @@
 
 namespace boxlod {
 
-enum class Metric { rmse, psnr, ssim, flip, iou };
+enum class Metric { rmse, psnr, ssim, flip, flip_covered, iou };
 std::span<const EnumEntry<Metric>> metrics();  // names ("rmse", ...) and help
 std::vector<Metric> all_metrics();
 
@@ -27,7 +27,7 @@ std::vector<Metric> parse_metrics(const std::vector<std::string>& names, const s
 struct MetricPair {
     const Image8& reference;
     const Image8& test;
-    const Coverage* reference_coverage = nullptr;  // needed for iou
+    const Coverage* reference_coverage = nullptr;  // needed for iou and flip_covered
     const Coverage* test_coverage = nullptr;
     const FlipReference* flip_reference = nullptr;  // the reference's half of FLIP, prepared once per reference
     double pixels_per_degree = 67;                  // FLIP's, without a prepared reference

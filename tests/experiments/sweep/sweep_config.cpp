@@ -58,7 +58,7 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_EQ(c.views, camera_position_names());
     EXPECT_EQ(c.views.size(), 26u);
     EXPECT_TRUE(c.levels.empty());
-    EXPECT_EQ(c.metrics.size(), 5u);  // default: every metric
+    EXPECT_EQ(c.metrics.size(), 6u);  // default: every metric
     EXPECT_EQ(c.sizing, SizingRule::per_level);  // the chain that pays its way
     EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
     EXPECT_TRUE(c.baselines.empty());
@@ -99,7 +99,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nppd = 1e8\n", "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
     expect_error("models = a.glb\nwanted_levels = 1000000000\n", "cfg.txt: line 2: wanted_levels: expected a number in [1, 64]");
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
-    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, iou)");
+    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, flip_covered, iou)");
     expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
     expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two in [1, 16384], got '100'");
     expect_error("models = a.glb\nmin_texture_size = 8192\n", "cfg.txt: min_texture_size and max_texture_size must be powers of two");

@@ -15,7 +15,7 @@ TEST(MetricRegistry, NamesParseInTheGivenOrderEachOnce) {
     EXPECT_EQ(parse_metrics({"flip", "psnr", "flip"}, "--metric"), (std::vector<Metric>{Metric::flip, Metric::psnr}));
     EXPECT_EQ(all_metrics().size(), metrics().size());
     EXPECT_EQ(test::input_error_of([] { parse_metrics({"psnr", "vmaf"}, "boxlod compare: --metric"); }),
-              "boxlod compare: --metric: unknown metric 'vmaf' (rmse, psnr, ssim, flip, iou)");
+              "boxlod compare: --metric: unknown metric 'vmaf' (rmse, psnr, ssim, flip, flip_covered, iou)");
 }
 
 TEST(MetricRegistry, MeasuresWhatEachMetricsOwnFunctionGives) {
@@ -40,4 +40,11 @@ TEST(MetricRegistry, MeasuresWhatEachMetricsOwnFunctionGives) {
     EXPECT_EQ(measure_metrics({Metric::flip}, pair).values[0], flipped.mean);
     EXPECT_TRUE(std::isinf(measure_metrics({Metric::psnr}, {a, a}).values[0]));
     EXPECT_FALSE(measure_metrics({Metric::rmse}, pair).flip_error.has_value());
+    // flip_covered: FLIP's error over the pixels either covers, here the whole image; over the left half alone otherwise.
+    EXPECT_EQ(measure_metrics({Metric::flip_covered}, pair).values[0], covered_mean(flipped.error, full, half));
+    const MetricPair halves{a, b, &half, &half, &prepared};
+    const MetricValues both = measure_metrics({Metric::flip, Metric::flip_covered}, halves);
+    EXPECT_EQ(both.values[1], covered_mean(flipped.error, half, half));
+    EXPECT_NE(both.values[1], both.values[0]);
+    EXPECT_THROW(measure_metrics({Metric::flip_covered}, {a, b}), std::logic_error);  // a caller without coverages
 }
