@@ -59,26 +59,21 @@ KeyValues chain_report(const std::string& name, const ChainCost& written) {
     return report;
 }
 
-// Where engines switch to a level, in their terms.
-KeyValues switch_entries(const LodSwitch& s) {
-    return {number_entry("switch_distance", s.distance), number_entry("screen_coverage", s.screen_coverage),
-            number_entry("unity_relative_height", s.unity_relative_height), number_entry("unreal_screen_size", s.unreal_screen_size)};
-}
-
 // A level's stdout block: its name, sizing distance, the later levels it
-// stands for (they draw what it draws: chain.h), where engines switch to it
-// (levels >= 1 of a chain sized per level: toolkit/selection/lod_switch.h), its statistics.
-KeyValues level_report(const std::string& name, const ChainLevel& level, const Bounds& bounds, bool switches) {
-    const Lod& lod = level.lod;
-    const LodSession& session = *level.session;
-    KeyValues report{text_entry("name", name), float_entry("sizing_distance", session.input.parameters.distance)};
+// stands for (they draw what it draws: chain.h), its errors by distance
+// (a chain's: error_by_distance.h), where engines switch to it, in their
+// terms (toolkit/selection/lod_switch.h), its statistics.
+KeyValues level_report(const std::string& name, const ChainLevel& level, const std::optional<LodSwitch>& at,
+                       const std::vector<double>& errors) {
+    KeyValues report{text_entry("name", name), float_entry("sizing_distance", level.session->input.parameters.distance)};
     if (!level.same_levels.empty())
         report.push_back(numbers_entry("same_as_levels", std::vector<double>(level.same_levels.begin(), level.same_levels.end())));
-    if (switches && lod.current_level >= 1) {
-        const KeyValues at = switch_entries(lod_switch(session.input.parameters.distance, bounds, session.derived.sizing));
-        report.insert(report.end(), at.begin(), at.end());
-    }
-    report.insert(report.end(), lod.statistics.begin(), lod.statistics.end());
+    if (!errors.empty()) report.push_back(numbers_entry("errors_by_distance", errors));
+    if (at)
+        report.insert(report.end(), {number_entry("switch_distance", at->distance), number_entry("screen_coverage", at->screen_coverage),
+                                     number_entry("unity_relative_height", at->unity_relative_height),
+                                     number_entry("unreal_screen_size", at->unreal_screen_size)});
+    report.insert(report.end(), level.lod.statistics.begin(), level.lod.statistics.end());
     return report;
 }
 
@@ -103,14 +98,12 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
             std::fprintf(stderr, "boxlod build: level %d draws what level %d does: the chain has it once\n", c, level.level);
         cost.add(level.lod);
         name_pages(level.lod, name);
-        KeyValues report = level_report(name, level, bounds, false);
+        std::optional<LodSwitch> at;
         if (k > 0) {
-            const LodSwitch s = lod_switch(switched.switch_distances[k], bounds, level.session->derived.sizing);
-            switches.push_back(s);
-            KeyValues at = switch_entries(s);
-            report.insert(report.begin() + 2, at.begin(), at.end());
+            at = lod_switch(switched.switch_distances[k], bounds, level.session->derived.sizing);
+            switches.push_back(*at);
         }
-        if (!switched.errors.empty()) report.insert(report.begin() + 2, numbers_entry("errors_by_distance", switched.errors[k]));
+        const KeyValues report = level_report(name, level, at, switched.errors.empty() ? std::vector<double>{} : switched.errors[k]);
         std::fputs((format_key_values(report) + "\n").c_str(), stdout);
         models.push_back(a.has("keep-hierarchy") ? std::move(level.lod.model) : merge_draw_calls(std::move(level.lod.model), name));
     }
@@ -150,7 +143,10 @@ void write_levels(const Arguments& a, Chain& chain, const std::string& name, int
             {
                 const ScopedTimer timer(level.session->times.write);  // build_lod touches the other times only
                 Image8 preview = render_lod_preview(level.lod, *level.session, preview_width, preview_height, chain.threads);
-                report = level_report(level_name, level, bounds, !chain.distances.empty());
+                std::optional<LodSwitch> at;  // sized per level: where its texels meet the screen's pixels
+                if (!chain.distances.empty() && level.level >= 1)
+                    at = lod_switch(level.session->input.parameters.distance, bounds, level.session->derived.sizing);
+                report = level_report(level_name, level, at, {});
                 export_lod(std::move(level.lod), chain.parameters(), a.text("output"), level_name, preview, chain.threads,
                            a.has("glb"));
             }
