@@ -12,6 +12,8 @@ Option threads_option(const std::string& what, const std::string& default_text) 
     return {"threads", "N", what + " (default: " + default_text + ")", thread_count_range};
 }
 
+int threads_from(const Arguments& arguments, int absent) { return arguments.integer("threads", absent); }
+
 void print_report(const KeyValues& report, const Arguments& arguments) {
     std::fputs((arguments.has("json") ? format_json(report) : format_key_values(report)).c_str(), stdout);
 }

@@ -259,7 +259,7 @@ std::vector<std::size_t> buildings_in_view(const CityLevels& city, const std::ve
     for (std::size_t b = 0; b < city.buildings.size(); ++b) {
         const PackedDrawable& level = level_drawn(city, b, levels[b]);
         const Eigen::Vector3f center = level.bounds.center() + city.buildings[b].translation;
-        if (!level.bounds.empty() && sphere_in_view(camera, aspect, center, level.bounds.size().norm() / 2))
+        if (!level.bounds.empty() && sphere_in_view(camera, aspect, center, framing_of(level.bounds).radius))
             shown.push_back(b);
     }
     return shown;

@@ -51,7 +51,7 @@ FlyThroughOptions fly_through_options(const Arguments& arguments) {
     apply_lod_options(arguments, options.levels, city_lod_parameters);
     options.base_distance = float(arguments.number("base-distance", options.base_distance));
     options.memory_budget = std::size_t(arguments.integer("memory", int(options.memory_budget >> 20))) << 20;
-    options.threads = arguments.integer("threads", 0);
+    options.threads = threads_from(arguments);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
     return options;
 }

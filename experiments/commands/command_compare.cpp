@@ -62,7 +62,7 @@ int run_compare(const Arguments& arguments) {
     if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"), {".png"});
     check_distinct_files({{"IMAGE_A", a_name}, {"IMAGE_B", b_name}}, {{"--heatmap", arguments.text("heatmap", "")}});
     double ppd = arguments.number("ppd", 67);
-    int threads = arguments.integer("threads", 0);
+    int threads = threads_from(arguments);
 
     Image8 a = read_image(a_name), b = read_image(b_name);
     require_same_size(a, a_name, b, b_name);

@@ -23,7 +23,7 @@ int run_simplify(const Arguments& arguments) {
     const int faces = arguments.integer("faces", 0);
     SimplifyOptions options;
     options.lock_border = arguments.has("lock-border");
-    options.threads = arguments.integer("threads", 0);
+    options.threads = threads_from(arguments);
 
     Model model = load_model(arguments.positionals[0]);
     auto start = Clock::now();

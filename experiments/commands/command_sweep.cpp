@@ -28,7 +28,7 @@ std::vector<std::string> shard_folders(const std::string& parent) {
 int run_sweep_command(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod sweep: -o/--output OUTDIR is required");
     check_output_directory(arguments.text("output"));
-    int threads = arguments.integer("threads", -1);  // -1: the config's
+    int threads = threads_from(arguments, -1);  // -1: the config's
     SweepConfig config = load_sweep_config(arguments.positionals[0]);
     const std::string& output = arguments.text("output");
     if (arguments.has("shard") && arguments.has("merge")) throw InputError("boxlod sweep: --shard and --merge exclude each other");

@@ -195,7 +195,7 @@ int run_build(const Arguments& a) {
     if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
     if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");
     // Level c is sized as the chain sizes it, however many levels are asked for.
-    Chain chain(model, parameters, a.integer("threads", 0));
+    Chain chain(model, parameters, threads_from(a));
     const int first = all_levels ? 0 : parameters.current_level, last = all_levels ? chain.obtained_levels() : first;
     ChainCost cost;
     if (chain_file) {  // nothing is written before the whole chain is built (a budget no cut fits fails its level)

@@ -23,7 +23,7 @@ static int run_levels(const Arguments& arguments) {
     const BoxKind kind = parameters.box_kind;
     const Interpolation interpolation = parameters.interpolation;
     const int wanted_levels = parameters.wanted_levels;
-    const int threads = arguments.integer("threads", 0);
+    const int threads = threads_from(arguments);
 
     const std::string& path = arguments.positionals[0];
     Model model = load_model(path);

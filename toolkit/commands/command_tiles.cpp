@@ -114,7 +114,7 @@ int run_tiles(const Arguments& a) {
     OutputFolder output(folder.string(), is_tileset_file);
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
-    parallel_for(nodes.size(), a.integer("threads", 0), [&](std::size_t k) {
+    parallel_for(nodes.size(), threads_from(a), [&](std::size_t k) {
         objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
     });
     write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));

@@ -87,7 +87,7 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     else if (cull == "front") s.culling = Culling::front;
     else if (cull != "none") throw InputError("--cull: expected none, back or front");
     s.wireframe = a.has("wireframe");
-    s.threads = a.integer("threads", 0);
+    s.threads = threads_from(a);
     return view;
 }
 

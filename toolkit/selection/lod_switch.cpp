@@ -1,12 +1,13 @@
 #include "toolkit/selection/lod_switch.h"
 
+#include "toolkit/model/framing.h"
+
 #include <cmath>
 
 namespace boxlod {
 
 LodSwitch lod_switch(double distance, const Bounds& bounds, const TextureSizing& view) {
-    const Eigen::Vector3d size = bounds.size().cast<double>();
-    const double radius = size.norm() / 2, extent = size.maxCoeff();
+    const double radius = framing_of(bounds).radius, extent = bounds.size().maxCoeff();
     const double height = 2 * distance * std::tan(double(view.fovy_degrees) * M_PI / 360);
     LodSwitch s;
     s.distance = distance;
