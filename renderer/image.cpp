@@ -56,7 +56,7 @@ std::string decode_failure() {
 }
 
 // The header read before decoding: no allocation for a size the file only claims.
-void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
+ImageSize header_size(std::span<const std::uint8_t> encoded, const std::string& name) {
     int width = 0, height = 0, channels = 0;
     if (encoded.size() > std::size_t(std::numeric_limits<int>::max())) throw_input_error(name, "", "image file too large");
     if (!stbi_info_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels))
@@ -64,10 +64,15 @@ void check_image_header(std::span<const std::uint8_t> encoded, const std::string
     if (width > max_image_side || height > max_image_side)
         throw_input_error(name, "", "image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than " +
                                         std::to_string(max_image_side) + " per side");
-    // Decoding is bounded by the size the header declares: RGBA8, and stb's copy of it.
-    check_memory(name + ": decoding its " + std::to_string(width) + "x" + std::to_string(height) + " pixels",
-                 8.0 * double(width) * double(height));
     check_png_chunks(encoded, name);
+    return {width, height};
+}
+
+void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
+    const ImageSize size = header_size(encoded, name);
+    // Decoding is bounded by the size the header declares: RGBA8, and stb's copy of it.
+    check_memory(name + ": decoding its " + std::to_string(size.width) + "x" + std::to_string(size.height) + " pixels",
+                 8.0 * double(size.width) * double(size.height));
 }
 }  // namespace
 
@@ -92,6 +97,11 @@ Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& na
 Image8 read_image(const std::string& path) {
     std::string bytes = read_input_file(path, "image file");
     return decode_image({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path);
+}
+
+ImageSize read_image_size(const std::string& path) {
+    std::string bytes = read_input_file(path, "image file");
+    return header_size({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path);
 }
 
 namespace {

@@ -33,6 +33,12 @@ constexpr NumberRange image_side_range{1, max_image_side};
 // Decodes PNG/JPEG/BMP/TGA/... bytes to RGBA8; `name` names the source in errors.
 Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& name);
 Image8 read_image(const std::string& path);
+// The size an image file declares, from its header alone, checked as decoding
+// checks it (but for memory): to refuse work on images before decoding them.
+struct ImageSize {
+    int width = 0, height = 0;
+};
+ImageSize read_image_size(const std::string& path);
 
 // 8-bit PNG with 1..4 channels; byte-identical for identical pixels.
 std::vector<std::uint8_t> encode_png(const Image8& image);

@@ -97,6 +97,15 @@ bad "generate with an unknown sample" generate --sample castle -o "$work/castle.
 check "compare succeeds" test "$(status_of "$boxlod" compare "$work/a.png" "$work/other.png")" = 0
 check "compare prints every metric" bash -c "for k in rmse psnr ssim flip iou; do grep -q \"^\$k = [0-9.e-]*\$\" '$work/out' || exit 1; done"
 check "compare of an image with itself: rmse 0, psnr inf, ssim 1, flip 0" bash -c "'$boxlod' compare '$work/a.png' '$work/b.png' > '$work/same' && grep -qx 'rmse = 0' '$work/same' && grep -qx 'psnr = inf' '$work/same' && grep -qx 'ssim = 1' '$work/same' && grep -qx 'flip = 0' '$work/same'"
+# Declared sizes first (73): two 16384x8192 PNGs of under 1 MB, whose decoding alone took tens of seconds before the refusal.
+python3 -c "
+import struct, sys, zlib
+w, h = 16384, 8192
+data = zlib.compress(b''.join(b'\\0' * (1 + 3 * w) for _ in range(h)), 9)
+chunk = lambda t, d: struct.pack('>I', len(d)) + t + d + struct.pack('>I', zlib.crc32(t + d))
+open(sys.argv[1], 'wb').write(b'\\x89PNG\\r\\n\\x1a\\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 2, 0, 0, 0)) + chunk(b'IDAT', data) + chunk(b'IEND', b''))
+" "$work/huge.png"
+check "compare refuses images the memory budget cannot measure before decoding them" bash -c "timeout 10 '$boxlod' compare '$work/huge.png' '$work/huge.png' --max-memory 4 > /dev/null 2> '$work/err'; test \$? = 2 && grep -q 'measuring two 16384x8192 images would need' '$work/err'"
 check "compare --json is a JSON object" bash -c "'$boxlod' compare '$work/a.png' '$work/other.png' --metric psnr,ssim --json | python3 -c \"import json,sys; d=json.load(sys.stdin); sys.exit(0 if set(d) == {'psnr', 'ssim'} and 0 < d['ssim'] < 1 else 1)\""
 check "compare --heatmap writes a PNG" test "$(status_of "$boxlod" compare "$work/a.png" "$work/other.png" --metric rmse --heatmap "$work/heat.png" --heatmap-metric rmse)" = 0 -a -s "$work/heat.png"
 check "compare with masks gives iou" test "$(status_of "$boxlod" compare "$work/a.png" "$work/b.png" --metric iou --mask-a "$work/mask.png" --mask-b "$work/mask.png")" = 0
