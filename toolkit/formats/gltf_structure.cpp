@@ -128,6 +128,8 @@ constexpr MemberKind member_kinds[] = {
     {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.rotation", Kind::number},
     {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.scale", Kind::numbers, 2},
     {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord", Kind::index},
+    {"materials[].extensions.KHR_materials_specular", Kind::object},  // the material extensions boxlod reads
+    {"materials[].extensions.KHR_materials_pbrSpecularGlossiness", Kind::object},
     {"textures[].source", Kind::index}, {"textures[].sampler", Kind::index},
     {"samplers[].magFilter", Kind::index}, {"samplers[].minFilter", Kind::index},
     {"samplers[].wrapS", Kind::index}, {"samplers[].wrapT", Kind::index},
