@@ -17,8 +17,13 @@ namespace {
 std::vector<std::string> shard_folders(const std::string& parent) {
     std::error_code error;
     std::vector<std::string> folders;
-    for (const auto& entry : std::filesystem::directory_iterator(parent, error))
-        if (std::filesystem::is_regular_file(entry.path() / "results.csv")) folders.push_back(entry.path().string());
+    for (const auto& entry : std::filesystem::directory_iterator(parent, error)) {
+        const std::filesystem::path results = entry.path() / "results.csv";
+        std::error_code ignored;
+        if (std::filesystem::is_regular_file(results, ignored)) folders.push_back(entry.path().string());
+        else if (std::filesystem::exists(results, ignored))  // a shard whose rows cannot be read is no shard to skip
+            throw_input_error(results.string(), "", "is not a file: the shard's rows cannot be merged");
+    }
     if (error) throw_input_error(parent, "", "cannot read the shards' folder: " + error.message());
     if (folders.empty()) throw_input_error(parent, "", "no shard folder with a results.csv in it");
     std::sort(folders.begin(), folders.end());

@@ -110,6 +110,9 @@ mkdir -p "$generated/sweep_shards_other" && cp -r "$generated/sweep_made" "$gene
   sed -i 's/^width = .*/width = 999/' "$generated/sweep_shards_other/shard/settings.txt"
 mkdir -p "$generated/sweep_shards_unsettled" && cp -r "$generated/sweep_made" "$generated/sweep_shards_unsettled/shard" &&
   rm "$generated/sweep_shards_unsettled/shard/settings.txt" && mkdir "$generated/sweep_shards_unsettled/shard/settings.txt"
+# A whole shard beside one whose results.csv is a folder: merged, it would silently lose the second.
+mkdir -p "$generated/sweep_shards_hollow" && cp -r "$generated/sweep_made" "$generated/sweep_shards_hollow/shard_a" &&
+  mkdir -p "$generated/sweep_shards_hollow/shard_b/results.csv"
 
 # Everything in @C and @D, to notice files a case leaves there (directories by name only:
 # a temporary that was removed again changes a folder's time, not what it holds).

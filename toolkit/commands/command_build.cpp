@@ -197,6 +197,11 @@ int run_build(const Arguments& a) {
     // Level c is sized as the chain sizes it, however many levels are asked for.
     Chain chain(model, parameters, threads_from(a));
     const int first = all_levels ? 0 : parameters.current_level, last = all_levels ? chain.obtained_levels() : first;
+    if (last > chain.obtained_levels()) {  // named where it was set: the option, or the parameter file (73)
+        const std::string problem = std::to_string(last) + " is past the levels obtained, 0.." + std::to_string(chain.obtained_levels());
+        if (a.has("level")) throw InputError("--level: " + problem);
+        throw_input_error(a.has("params") ? a.text("params") : a.positionals[0], "current_level", problem);
+    }
     ChainCost cost;
     if (chain_file) {  // nothing is written before the whole chain is built (a budget no cut fits fails its level)
         write_chain(a, chain, cost);
