@@ -84,18 +84,18 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
     std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
     built.triangles = {original.triangles};
     built.costs = {cost_parts(model)};
-    auto boxes = node_boxes(model, options.levels.box_kind, 1);
     LodParameters p = options.levels;
     p.fovy = options.fovy;
     p.resolution = float(options.height);
-    // One session per sizing distance: a session bakes its boxes for one distance.
-    for (int c = 1, n = 1; c <= n; ++c) {
-        p.distance = level_sizing_distance(options, c);
-        std::unique_ptr<LodSession> session = start_lod(model, p, 1, &boxes);
-        n = session->derived.levels.obtained_levels;
-        Lod lod = build_lod(*session, c, 1);
+    p.distance = options.base_distance;  // level 1's; level c's doubles it (chain.h)
+    p.level_distances = {};
+    Chain chain(model, p, 1);
+    const auto& boxes = chain.first->derived.boxes;
+    for (int c = 1; c <= chain.obtained_levels(); ++c) {
+        LodSession& session = chain.for_level(c);
+        Lod lod = build_lod(session, c, 1);
         MeshCounts counts = mesh_counts(lod.model);
-        levels.push_back({counts.faces, session->derived.sizing, std::nullopt});
+        levels.push_back({counts.faces, session.derived.sizing, std::nullopt});
         built.triangles.push_back(counts.triangles);
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));

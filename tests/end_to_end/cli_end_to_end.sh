@@ -297,6 +297,7 @@ for level in levels:
             sys.exit(level + ': ' + suffix + ' missing')
 PY
 "$boxlod" generate --sample manual -o "$work/manual.glb" > /dev/null
+check "a chain keeping 32,000 nodes warns that engines import them slowly" bash -c "'$boxlod' build '$work/manual.glb' --chain --keep-hierarchy --switch-error 0 -o '$work/manual_nodes.glb' 2>&1 >/dev/null | grep -q '^boxlod build: warning: the chain holds [0-9]* nodes (--keep-hierarchy)' && ! '$boxlod' build '$work/house.glb' --chain --keep-hierarchy --switch-error 0 -o '$work/house_nodes.glb' 2>&1 >/dev/null | grep -q warning"
 # --manual at 2160 pixels: some 20 s, its first levels written in the first 2 s.
 "$boxlod" build "$work/manual.glb" --all-levels --manual --resolution 2160 -o "$work/interrupted" --preview-width 64 --preview-height 48 > /dev/null 2> "$work/err" &
 build_pid=$!

@@ -80,6 +80,8 @@ KeyValues level_report(const std::string& name, const ChainLevel& level, const s
 // Babylon.js loads at most 10 levels of MSFT_lod, the coarsest (its
 // maxLODsToLoad): a chain keeps the 10 finest, the ones drawn nearest.
 constexpr int max_chain_levels = 10;
+// The nodes a chain may hold before engines import it slowly (docs/cost.md: Draw calls).
+constexpr std::size_t max_engine_nodes = 10000;
 
 // Levels 0..N in one .glb/.gltf with MSFT_lod (docs/cost.md: Switching levels),
 // each once, those that some distance draws, switching where their error says.
@@ -110,7 +112,14 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
     std::fprintf(stderr, "boxlod build: --chain holds %zu of the %d distinct levels (%d drawn at some distance; MSFT_lod clients load at most %d)\n",
                  models.size(), switched.distinct, switched.reachable, max_chain_levels);
     std::vector<const Model*> pointers;
-    for (const Model& model : models) pointers.push_back(&model);
+    std::size_t nodes = 0;
+    for (const Model& model : models) {
+        pointers.push_back(&model);
+        nodes += model.nodes.size();
+    }
+    if (nodes > max_engine_nodes)  // engines import a node as an object: Blender 3.4 did not import 32,254 in 8 minutes
+        std::fprintf(stderr, "boxlod build: warning: the chain holds %zu nodes (--keep-hierarchy); engines import each as an object, "
+                     "and more than %zu import slowly or not at all (docs/cost.md: Draw calls)\n", nodes, max_engine_nodes);
     std::vector<std::string> pages;
     {
         const ScopedTimer timer(chain.first->times.write);
