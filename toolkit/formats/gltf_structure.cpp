@@ -133,7 +133,7 @@ constexpr MemberKind member_kinds[] = {
     {"textures[].source", Kind::index}, {"textures[].sampler", Kind::index},
     {"samplers[].magFilter", Kind::index}, {"samplers[].minFilter", Kind::index},
     {"samplers[].wrapS", Kind::index}, {"samplers[].wrapT", Kind::index},
-    {"images[].uri", Kind::string}, {"images[].mimeType", Kind::string},
+    {"images[].uri", Kind::string}, {"images[].mimeType", Kind::string}, {"buffers[].uri", Kind::string},
     {"cameras[].type", Kind::string}, {"cameras[].perspective", Kind::object}, {"cameras[].orthographic", Kind::object},
 };
 
@@ -208,6 +208,18 @@ void check_version_and_required_extensions(const nlohmann::json& root, const std
                 throw_input_error(file, "extensionsRequired", "'" + name.get<std::string>() + "' is required, and boxlod does not read it");
 }
 
+// A buffer's or image's uri names a file relative to the glTF file, or is a
+// data URI (glTF 2.0, 2.8: URIs): an absolute path or a file: URI would read
+// whatever the path names (it said "File not found" of a file that exists).
+void check_relative_uri(const nlohmann::json& item, const std::string& file, const std::string& place) {
+    const auto uri = item.find("uri");
+    if (uri == item.end() || !uri->is_string()) return;
+    const std::string& text = uri->get_ref<const std::string&>();
+    if (text.starts_with("/") || text.starts_with("file:"))
+        throw_input_error(file, place, "uri '" + text + "' is absolute: glTF's URIs are relative to the file or data: URIs (glTF 2.0, 2.8), "
+                                       "so a model names nothing by where it was made");
+}
+
 // Every `extensions` member, wherever it is, is an object (glTF 2.0, 3.12:
 // extensions are a dictionary); a JSON nested at most max_nesting_depth deep
 // keeps this recursion shallow.
@@ -249,6 +261,7 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
             throw_input_error(file, place, "byteLength " + std::to_string(length) + " exceeds the " +
                                                std::to_string(glb.binary_chunk) + "-byte BIN chunk (truncated file?)");
         buffer_bytes.push_back(length);
+        check_relative_uri(buffers[b], file, place);
     }
     const nlohmann::json& views = array_member(root, "bufferViews", file);
     for (std::size_t v = 0; v < views.size(); ++v) {
@@ -269,6 +282,7 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
         if (!images[i].is_object()) throw_input_error(file, place, "must be an object");
         if (images[i].contains("bufferView") && size_member(images[i], "bufferView", 0, file, place) >= views.size())
             throw_input_error(file, place, "bufferView index out of range");
+        check_relative_uri(images[i], file, place);
     }
 }
 
