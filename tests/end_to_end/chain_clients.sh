@@ -50,6 +50,15 @@ for model in $models; do
 done
 serve "$work/site"
 failures=0
+# Opened from disk, both pages say to serve the folder, with the command (they showed a black page or nothing).
+for page in three babylon; do
+  open_page "file://$work/site/fzk.$page.html" "$work/fzk.$page.file.json" "$work/fzk.$page.file.png"
+  if grep -q 'opened from file://: serve the folder (python3 -m http.server)' "$work/fzk.$page.file.json"; then
+    echo "chain_clients: the $page page opened from disk says to serve its folder"
+  else
+    echo "FAIL chain_clients: the $page page opened from disk: $(cat "$work/fzk.$page.file.json")"; failures=$((failures + 1))
+  fi
+done
 for model in $models; do
   open_page "http://127.0.0.1:$port/msft_lod.html?file=$model.glb" "$work/$model.msft_lod.json" "$work/$model.png"
   far=$(/usr/bin/python3 -c 'import re, sys; sizes = re.findall(r"^unreal_screen_size = (\S+)$", open(sys.argv[1]).read(), re.M); print(max([0] + [c for c, size in enumerate(sizes, 1) if float(size) * 1080 >= 8]))' "$work/$model.txt")

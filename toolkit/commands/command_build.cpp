@@ -200,6 +200,7 @@ int run_build(const Arguments& a) {
     std::string name = a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
+    if (a.has("level") && all_levels) throw InputError(std::string("--level: ") + (chain_file ? "--chain" : "--all-levels") + " writes every level");
     if (a.has("glb") && chain_file) throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
     if (a.has("keep-hierarchy") && !chain_file) throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
     if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");

@@ -227,8 +227,8 @@ int run_view(const Arguments& a) {
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
     Model model = load_model(parameters.model);
     ViewerState state = start_state(a, model, parameters);
-    if (parameters.current_level > 0) {  // a level asked for exists, or the view is refused before a window opens (73)
-        state.chain = std::make_unique<Chain>(model, parameters, state.settings.threads);
+    if (parameters.current_level > 0 && !model.is_lod) {  // a level asked for exists, or no window opens (73)
+        state.chain = std::make_unique<Chain>(model, state.parameters, state.settings.threads);
         if (parameters.current_level > state.chain->obtained_levels())
             throw_input_error(parameters.model, "", "--level " + std::to_string(parameters.current_level) + " is past the levels obtained, 0.." +
                                                         std::to_string(state.chain->obtained_levels()));

@@ -97,11 +97,15 @@ SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
         std::vector<const Model*> models;
         for (const ChainLevel& level : distinct) models.push_back(&level.lod.model);
         const LodParameters& p = chain.parameters();
-        measured = measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p.render_mode, chain.threads);
+        measured = measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p, chain.threads);
         switches = switch_distances(measured, threshold);
         switched.distances = measured.distances;
     } else {
-        for (const ChainLevel& level : distinct) switches.push_back(level.session->input.parameters.distance);
+        // Where its texels meet the screen's pixels: d_c, or where auto distances put it when every
+        // level is sized for one distance (--manual), which would otherwise switch all at once.
+        for (const ChainLevel& level : distinct)
+            switches.push_back(chain.distances.empty() ? doubled_distance(chain.parameters().distance, level.level)
+                                                       : level.session->input.parameters.distance);
     }
     const std::vector<std::size_t> reachable = reachable_levels(switches, bytes);
     switched.distinct = int(distinct.size());

@@ -24,10 +24,12 @@ struct View {
     Coverage coverage;
 };
 
-View render_view(const Drawable& drawable, const Camera& camera, RenderMode mode, int pixels) {
+View render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
     RenderSettings settings;
     settings.camera = camera;
-    settings.mode = mode;
+    settings.mode = drawn.render_mode;
+    settings.parallax_scale = drawn.parallax_scale;
+    settings.parallax_bias = drawn.parallax_bias;
     settings.light = light_for_camera(camera);
     settings.threads = 1;  // views are measured side by side
     Frame frame = make_frame(pixels, pixels, {1, 1, 1});
@@ -49,7 +51,7 @@ std::vector<double> measured_distances(const Model& original, const TextureSizin
 }
 
 ErrorByDistance measure_error_by_distance(const Model& original, const std::vector<const Model*>& levels,
-                                          const TextureSizing& screen, RenderMode mode, int threads) {
+                                          const TextureSizing& screen, const LodParameters& drawn, int threads) {
     ErrorByDistance measured;
     measured.distances = measured_distances(original, screen);
     const Framing framing = model_framing(original);
@@ -65,13 +67,14 @@ ErrorByDistance measure_error_by_distance(const Model& original, const std::vect
         // narrowed by pixels / resolution.
         const double distance = measured.distances[v / direction_count];
         const double sphere_pixels = double(screen.resolution) * framing.radius / (distance * tangent);
-        const int pixels = int(std::clamp(std::ceil(1.25 * sphere_pixels), 16.0, double(std::min(measure_pixels, int(screen.resolution)))));
+        const double largest = std::max(16.0, std::min(double(measure_pixels), double(screen.resolution)));
+        const int pixels = int(std::clamp(std::ceil(1.25 * sphere_pixels), 16.0, largest));
         const float fovy = float(2 * std::atan(tangent * pixels / double(screen.resolution)) * 180 / M_PI);
         const Camera camera = framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
-        const View seen = render_view(reference->drawable, camera, mode, pixels);
+        const View seen = render_view(reference->drawable, camera, drawn, pixels);
         const FlipReference prepared = prepare_flip_reference(seen.image, 67, 1);
         for (std::size_t l = 0; l < levels.size(); ++l) {
-            const View level = render_view(drawables[l]->drawable, camera, mode, pixels);
+            const View level = render_view(drawables[l]->drawable, camera, drawn, pixels);
             per_view[v][l] = covered_mean(flip(prepared, level.image, 1).error, seen.coverage, level.coverage);
         }
     });
@@ -92,13 +95,18 @@ std::vector<double> switch_distances(const ErrorByDistance& measured, double thr
 }
 
 std::vector<std::size_t> reachable_levels(const std::vector<double>& switches, const std::vector<std::uint64_t>& bytes) {
-    std::vector<std::size_t> kept{0};
     auto from = [&](std::size_t k) { return k == 0 ? 0.0 : switches[k]; };  // the finest is drawn from 0 on
-    for (std::size_t c = 1; c < switches.size(); ++c) {
-        if (!std::isfinite(switches[c])) continue;
-        // A cheaper level that switches in no farther makes the finer ones before it needless.
-        while (kept.size() > 1 && switches[c] <= from(kept.back()) && bytes[c] < bytes[kept.back()]) kept.pop_back();
-        if (switches[c] > from(kept.back()) && bytes[c] < bytes[kept.back()]) kept.push_back(c);
+    // At each distance a chain draws the cheapest level within the threshold there: levels by the
+    // distance they switch in at (the finer first among equals), each kept where it becomes the cheapest.
+    std::vector<std::size_t> order;
+    for (std::size_t c = 1; c < switches.size(); ++c)
+        if (std::isfinite(switches[c])) order.push_back(c);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return from(a) < from(b); });
+    std::vector<std::size_t> kept{0};
+    for (std::size_t c : order) {
+        if (bytes[c] >= bytes[kept.back()]) continue;  // a cheaper level is drawn here already
+        if (kept.size() > 1 && from(c) == from(kept.back())) kept.pop_back();  // switching in together: never drawn
+        kept.push_back(c);
     }
     return kept;
 }

@@ -12,6 +12,7 @@
 // distance draws, each cheaper than the one before it.
 #pragma once
 #include "renderer/scene.h"
+#include "toolkit/lod/lod_parameters.h"
 #include "toolkit/lod/texture_sizing.h"
 #include "toolkit/model/model.h"
 
@@ -32,18 +33,21 @@ struct ErrorByDistance {
 // The distances measured for `original` seen on `screen` (its fovy and resolution).
 std::vector<double> measured_distances(const Model& original, const TextureSizing& screen);
 
-// `levels` drawn in `mode` against `original`; the same for any thread count.
+// `levels` against `original`, drawn in the parameters' render mode and
+// parallax; the same for any thread count.
 ErrorByDistance measure_error_by_distance(const Model& original, const std::vector<const Model*>& levels,
-                                          const TextureSizing& screen, RenderMode mode, int threads);
+                                          const TextureSizing& screen, const LodParameters& drawn, int threads);
 
 // Per level, the nearest measured distance from which on its error is at most
 // `threshold`; infinity where its error at the farthest exceeds it.
 std::vector<double> switch_distances(const ErrorByDistance& measured, double threshold);
 
 // The levels a chain keeps, as indices into the levels given (the first, the
-// finest, always kept and drawn from 0 on): each switching in farther than the
-// one before it and costing fewer bytes. A level left out is never needed: the finer level
-// kept before it stays within the threshold wherever it would be drawn.
+// finest, always kept and drawn from 0 on), in the order a chain draws them:
+// at each distance the cheapest level within the threshold there, so each
+// kept level switches in farther and costs fewer bytes than the one before.
+// A level left out is never needed: a cheaper one is within the threshold
+// wherever it would be drawn.
 std::vector<std::size_t> reachable_levels(const std::vector<double>& switches, const std::vector<std::uint64_t>& bytes);
 
 }  // namespace boxlod

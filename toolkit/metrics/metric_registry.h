@@ -21,7 +21,7 @@ std::span<const EnumEntry<Metric>> metrics();  // names ("rmse", ...) and help
 std::vector<Metric> all_metrics();
 
 // Names, each kept once in the order given; an unknown one throws InputError
-// "CONTEXT: unknown metric 'x' (rmse, psnr, ssim, flip, iou)".
+// "CONTEXT: unknown metric 'x' (rmse, psnr, ssim, flip, flip_covered, iou)".
 std::vector<Metric> parse_metrics(const std::vector<std::string>& names, const std::string& context);
 
 struct MetricPair {

@@ -181,4 +181,12 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
     for (std::size_t k = 1; k < sized.levels.size(); ++k)
         EXPECT_EQ(sized.switch_distances[k], sized.levels[k].session->input.parameters.distance);
     EXPECT_EQ(switched_levels(chain, 0, 2).levels.size(), 2u);  // the cap
+    LodParameters manual = p;  // every level sized for one distance: switched where auto distances put them
+    set_manual(manual);
+    manual.max_texture_size = 256;
+    Chain same(model, manual, 2);
+    const SwitchedChain texels = switched_levels(same, 0, 100);
+    EXPECT_GE(texels.levels.size(), 3u);
+    for (std::size_t k = 1; k < texels.levels.size(); ++k)
+        EXPECT_EQ(texels.switch_distances[k], doubled_distance(same.parameters().distance, texels.levels[k].level));
 }

@@ -41,13 +41,13 @@ TEST(ErrorByDistance, MeasuresWhatALevelChanges) {
     const Model model = test::lod_test_building();
     Model recoloured = model;
     recoloured.materials[2].base_color = {0.1f, 0.6f, 0.2f, 1};  // the roof
-    const ErrorByDistance one = measure_error_by_distance(model, {&model, &recoloured}, screen(540), RenderMode::normal, 1);
+    const ErrorByDistance one = measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 1);
     ASSERT_EQ(one.errors.size(), 2u);
     for (std::size_t d = 0; d < one.distances.size(); ++d) {
         EXPECT_EQ(one.errors[0][d], 0) << d;
         EXPECT_GT(one.errors[1][d], 0.05) << d;  // a green roof instead of a red one, on every view
     }
-    const ErrorByDistance two = measure_error_by_distance(model, {&model, &recoloured}, screen(540), RenderMode::normal, 2);
+    const ErrorByDistance two = measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 2);
     EXPECT_EQ(two.errors, one.errors);
 }
 
@@ -68,6 +68,8 @@ TEST(ErrorByDistance, ReachableLevelsSwitchFartherAndCostLess) {
     EXPECT_EQ(reachable_levels({0, 10, never, 40}, {100, 50, 40, 30}), (std::vector<std::size_t>{0, 1, 3}));
     // A coarser level within the threshold nearer than a finer one takes its place.
     EXPECT_EQ(reachable_levels({0, 40, 20, 80}, {100, 50, 40, 30}), (std::vector<std::size_t>{0, 2, 3}));
+    // A cheaper coarser level within the threshold nearer than a finer, dearer one is drawn first.
+    EXPECT_EQ(reachable_levels({0, 10, 20, 5}, {100, 50, 10, 30}), (std::vector<std::size_t>{0, 3, 2}));
     // Level 0 is drawn from 0: a level within the threshold at the nearest distance switches in there.
     EXPECT_EQ(reachable_levels({10, 10, 20}, {100, 50, 40}), (std::vector<std::size_t>{0, 1, 2}));
 }
