@@ -3,8 +3,7 @@
 // metrics of a pair (docs/sweeps.md). One thread each in a sweep: rows are
 // drawn side by side.
 #pragma once
-#include "toolkit/metrics/flip.h"
-#include "toolkit/metrics/silhouette.h"
+#include "toolkit/metrics/shot.h"
 #include "experiments/sweep/sweep_config.h"
 #include "renderer/renderer.h"
 #include "toolkit/model/framing.h"
@@ -14,15 +13,6 @@
 #include <vector>
 
 namespace boxlod {
-
-// A render as the metrics need it.
-struct Shot {
-    Image8 image;
-    Coverage coverage;
-    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
-};
-
-Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height);
 
 // The manual's camera position `view`, `multiple` times the framing distance
 // away (as `boxlod render --camera`), drawn in `mode` with the LoD's parallax.

@@ -4,6 +4,7 @@
 #include "renderer/renderer.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/shot.h"
 #include "toolkit/model/framing.h"
 
 #include <algorithm>
@@ -19,22 +20,16 @@ const Eigen::Vector3f measured_directions[] = {{1, 1, 1}, {-1, 1, 1}, {-1, 1, -1
 constexpr std::size_t direction_count = std::size(measured_directions);
 constexpr int max_distances = 64;
 
-struct View {
-    Image8 image;
-    Coverage coverage;
-};
-
-View render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
+// A view of `drawable` as the chain draws it (its render mode and parallax), one thread: views are measured side by side.
+Shot render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
     RenderSettings settings;
     settings.camera = camera;
     settings.mode = drawn.render_mode;
     settings.parallax_scale = drawn.parallax_scale;
     settings.parallax_bias = drawn.parallax_bias;
     settings.light = light_for_camera(camera);
-    settings.threads = 1;  // views are measured side by side
-    Frame frame = make_frame(pixels, pixels, {1, 1, 1});
-    render(drawable.batches, settings, frame);
-    return {frame_to_srgb8(frame), coverage_from_mask(coverage_mask(frame))};
+    settings.threads = 1;
+    return render_shot(drawable.batches, settings, pixels, pixels);
 }
 
 }  // namespace
@@ -71,10 +66,10 @@ ErrorByDistance measure_error_by_distance(const Model& original, const std::vect
         const int pixels = int(std::clamp(std::ceil(1.25 * sphere_pixels), 16.0, largest));
         const float fovy = float(2 * std::atan(tangent * pixels / double(screen.resolution)) * 180 / M_PI);
         const Camera camera = framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
-        const View seen = render_view(reference->drawable, camera, drawn, pixels);
+        const Shot seen = render_view(reference->drawable, camera, drawn, pixels);
         const FlipReference prepared = prepare_flip_reference(seen.image, 67, 1);
         for (std::size_t l = 0; l < levels.size(); ++l) {
-            const View level = render_view(drawables[l]->drawable, camera, drawn, pixels);
+            const Shot level = render_view(drawables[l]->drawable, camera, drawn, pixels);
             per_view[v][l] = covered_mean(flip(prepared, level.image, 1).error, seen.coverage, level.coverage);
         }
     });

@@ -1,0 +1,22 @@
+// A render as the metrics need it: the image on a white background and the
+// pixels it covers (docs/sweeps.md; a chain's error by distance), and an
+// original's half of FLIP when it is compared with many.
+#pragma once
+#include "renderer/renderer.h"
+#include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/silhouette.h"
+
+#include <optional>
+#include <vector>
+
+namespace boxlod {
+
+struct Shot {
+    Image8 image;
+    Coverage coverage;
+    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
+};
+
+Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height);
+
+}  // namespace boxlod
