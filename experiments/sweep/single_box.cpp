@@ -57,7 +57,7 @@ OrientedBox root_box(const Model& model, int threads) {
 
 Model single_box_model(const Model& model, int threads) {
     Model result;
-    result.source = model.source;
+    keep_provenance(model, result);
     Material material;
     material.name = "average";
     Eigen::Vector3f color = average_color(model);

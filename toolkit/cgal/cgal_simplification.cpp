@@ -148,7 +148,7 @@ Model cgal_simplify(const Model& model, std::size_t target_faces) {
     for (const Part& part : parts) area += part.area;
 
     Model result;
-    result.source = model.source;
+    keep_provenance(model, result);
     result.materials = model.materials;
     result.textures = model.textures;
     add_node(result, -1, model.nodes.empty() ? "simplified" : model.nodes[0].name);

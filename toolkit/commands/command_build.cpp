@@ -196,7 +196,7 @@ int run_build(const Arguments& a) {
     } else {
         check_output_directory(a.text("output"));
     }
-    Model model = load_model(parameters.model);
+    Model model = load_parameters_model(parameters);
     std::string name = a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;

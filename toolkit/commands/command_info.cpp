@@ -1,6 +1,7 @@
 #include "toolkit/commands/commands.h"
 
 #include "base/common_options.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 
@@ -9,7 +10,7 @@
 namespace boxlod {
 
 static int run_info(const Arguments& arguments) {
-    Model model = load_model(arguments.positionals[0]);
+    Model model = load_model(arguments.positionals[0], {.chain_level = 0, .city_lod = city_lod_from(arguments)});
     KeyValues statistics = model_statistics(model);
     statistics.push_back(number_entry("lod", model.is_lod));
     print_report(statistics, arguments);
@@ -17,8 +18,8 @@ static int run_info(const Arguments& arguments) {
 }
 
 Subcommand info_subcommand() {
-    return {{"info", "MODEL", "Read a model (glTF, FBX, OBJ, DAE, PLY, OFF, 3DS, IFC, ...) and print its statistics.",
-             {json_option()}, 1, 1},
+    return {{"info", "MODEL", "Read a model (glTF, CityJSON, FBX, OBJ, DAE, PLY, OFF, 3DS, IFC, ...) and print its statistics.",
+             {json_option(), city_lod_option()}, 1, 1},
             run_info};
 }
 

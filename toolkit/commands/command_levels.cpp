@@ -26,7 +26,7 @@ static int run_levels(const Arguments& arguments) {
     const int threads = threads_from(arguments);
 
     const std::string& path = arguments.positionals[0];
-    Model model = load_model(path);
+    Model model = load_model(path, {.chain_level = 0, .city_lod = parameters.city_lod});
     if (model.is_lod) throw InputError(path + ": an LoD exported by boxlod cannot be simplified again");
 
     // Only the box modes and error-greedy look at boxes.

@@ -5,6 +5,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/render_options.h"
 #include "toolkit/drawing/drawable.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/formats/model_io.h"
 
 #include <cstdio>
@@ -19,7 +20,7 @@ static int run_render(const Arguments& arguments) {
     check_distinct_files({{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
                          {{"--output", arguments.text("output")}, {"--coverage", arguments.text("coverage", "")},
                           {"--exr", arguments.text("exr", "")}});
-    Model model = load_model(arguments.positionals[0], arguments.integer("level", 0));
+    Model model = load_model(arguments.positionals[0], {.chain_level = arguments.integer("level", 0), .city_lod = city_lod_from(arguments)});
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
     View view = view_from_arguments(arguments, drawable.bounds);
@@ -69,6 +70,7 @@ Subcommand render_subcommand() {
         {"split-view", "MODEL", "left half this model, right half MODEL (the manual's split view)"},
         {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does (default 0)", NumberRange{0, 63}},
     };
+    options.push_back(city_lod_option());
     for (const Option& o : render_options()) options.push_back(o);
     return {{"render", "MODEL", "Render a model with the deterministic CPU renderer.", options, 1, 1}, run_render};
 }

@@ -79,7 +79,7 @@ std::vector<int> tile_objects(const Model& city) {
 Model tile_object(const Model& city, int node) {
     if (node >= 0) return extract_subtree(city, node);
     Model model;
-    model.source = city.source;
+    keep_provenance(city, model);
     const Node& root = city.nodes[0];
     const int n = add_node(model, -1, root.name);
     model.nodes[std::size_t(n)].rule = root.rule, model.nodes[std::size_t(n)].scope = root.scope;
@@ -105,7 +105,7 @@ int run_tiles(const Arguments& a) {
     check_output_directory(folder.string());
     const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),
                           a.number("longitude", Geodetic{}.longitude_degrees), a.number("height", 0)};
-    Model city = load_model(parameters.model);
+    Model city = load_parameters_model(parameters);
     const std::vector<int> nodes = tile_objects(city);
     start_lod(tile_object(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     const double error = switch_error(a);

@@ -225,7 +225,7 @@ int run_view(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
-    Model model = load_model(parameters.model);
+    Model model = load_parameters_model(parameters);
     ViewerState state = start_state(a, model, parameters);
     if (parameters.current_level > 0 && !model.is_lod) {  // a level asked for exists, or no window opens (73)
         state.chain = std::make_unique<Chain>(model, state.parameters, state.settings.threads);

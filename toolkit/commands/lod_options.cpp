@@ -1,6 +1,7 @@
 #include "toolkit/commands/lod_options.h"
 
 #include "base/input_error.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
 
 #include <algorithm>
@@ -64,6 +65,18 @@ LodParameters lod_parameters_from(const Arguments& a) {
     apply_lod_options(a, p);
     validate_parameters(p, "command line");
     return p;
+}
+
+Model load_parameters_model(const LodParameters& parameters) {
+    return load_model(parameters.model, {.chain_level = 0, .city_lod = parameters.city_lod});
+}
+
+Option city_lod_option() { return option_of(*find_lod_parameter("city_lod")); }
+
+std::string city_lod_from(const Arguments& arguments) {
+    LodParameters parameters;
+    apply_lod_options(arguments, parameters, {"city_lod"});
+    return parameters.city_lod;
 }
 
 }  // namespace boxlod

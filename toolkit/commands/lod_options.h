@@ -5,6 +5,7 @@
 #pragma once
 #include "base/command_line.h"
 #include "toolkit/lod/parameter_file.h"
+#include "toolkit/model/model.h"
 
 #include <string>
 #include <vector>
@@ -18,5 +19,12 @@ std::vector<Option> lod_options(const std::vector<std::string>& keys);
 // keys; empty: all); throws InputError.
 void apply_lod_options(const Arguments& arguments, LodParameters& parameters, const std::vector<std::string>& keys = {});
 LodParameters lod_parameters_from(const Arguments& arguments);
+
+// The model the parameters name, read as they say (a CityJSON model's LoD).
+Model load_parameters_model(const LodParameters& parameters);
+// For the commands that read a model without the LoD options (info, convert,
+// render): --city-lod, declared with the parameter (toolkit/lod/lod_parameters.h).
+Option city_lod_option();
+std::string city_lod_from(const Arguments& arguments);
 
 }  // namespace boxlod

@@ -428,9 +428,19 @@ void sequence_levels(Writer& w) {
 // The finest level's root is the scene; the others hang off its MSFT_lod
 // extension, coarsest last, with switch hints in extras.MSFT_screencoverage
 // (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod) and extras.boxlod.switch_distances.
-void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches) {
+// A model with an origin (a city file's) hangs under a node that moves it there.
+void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches, const Eigen::Vector3d& origin) {
     tinygltf::Scene scene;
     scene.nodes = {roots[0]};
+    if (!origin.isZero()) {
+        tinygltf::Node placed;
+        placed.name = "origin";
+        placed.translation = {origin.x(), origin.y(), origin.z()};
+        placed.children = {roots[0]};
+        placed.extras = origin_node_extras();
+        w.gltf.nodes.push_back(std::move(placed));
+        scene.nodes = {int(w.gltf.nodes.size()) - 1};
+    }
     w.gltf.scenes.push_back(scene);
     w.gltf.defaultScene = 0;
     if (roots.size() < 2) return;
@@ -475,7 +485,7 @@ void build_document(Writer& w, const std::vector<const Model*>& levels, const st
         add_nodes(w, *model);
     }
     if (w.share) sequence_levels(w);
-    add_scene(w, roots, switches);
+    add_scene(w, roots, switches, levels[0]->origin);
 }
 
 // The .glb bytes of a finished document.

@@ -103,6 +103,14 @@ tinygltf::Value primitive_extras(const Primitive& primitive) {
     return boxlod_object({{"polygons", tinygltf::Value(int(primitive.polygon_count))}});
 }
 
+tinygltf::Value origin_node_extras() { return boxlod_object({{"origin", tinygltf::Value(true)}}); }
+
+bool is_origin_node(const tinygltf::Node& node) {
+    const tinygltf::Value* fields = boxlod_fields(node.extras);
+    return fields && fields->Has("origin") && fields->Get("origin").IsBool() && fields->Get("origin").Get<bool>() &&
+           node.translation.size() == 3 && node.rotation.empty() && node.scale.empty() && node.matrix.empty() && node.mesh < 0;
+}
+
 void read_asset_extras(const tinygltf::Value& extras, Model& model) {
     const tinygltf::Value* fields = boxlod_fields(extras);
     if (!fields) return;

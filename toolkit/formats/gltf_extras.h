@@ -22,6 +22,9 @@ tinygltf::Value asset_extras(const Model& model);
 tinygltf::Value material_extras(const Material& material, int height_image);  // height_image < 0: none
 tinygltf::Value node_extras(const Node& node);
 tinygltf::Value primitive_extras(const Primitive& primitive);
+// The node above the scene that carries Model::origin as its translation.
+tinygltf::Value origin_node_extras();
+bool is_origin_node(const tinygltf::Node& node);  // that node as written: a translation only
 
 // Where a reader is: the file and the place in it ("material 3", "node 7 mesh 2 primitive 0").
 struct ExtrasPlace {

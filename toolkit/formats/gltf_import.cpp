@@ -360,6 +360,18 @@ std::vector<int> scene_roots(const Reader& reader) {
     return roots;
 }
 
+// A root that boxlod wrote to carry Model::origin: its translation is kept
+// as the origin, not applied to the float geometry, and its children are the roots.
+std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model& model) {
+    if (roots.size() != 1 || roots[0] < 0 || roots[0] >= int(reader.gltf.nodes.size())) return roots;
+    const tinygltf::Node& node = reader.gltf.nodes[std::size_t(roots[0])];
+    if (!is_origin_node(node)) return roots;
+    model.origin = Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]);
+    if (!model.origin.allFinite()) reader.fail("node " + std::to_string(roots[0]), "origin translation is NaN or infinite");
+    if (node.children.empty()) reader.fail("node " + std::to_string(roots[0]), "origin node without children");
+    return node.children;
+}
+
 // Level K of a chain: the scene's one root, or the K-th of its MSFT_lod.ids.
 std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>& roots, int chain_level) {
     if (chain_level == 0) return roots;
@@ -447,7 +459,7 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_textures(reader, model);
     read_materials(reader, model);
     read_asset_extras(gltf.asset.extras, model);
-    read_nodes(reader, chain_level_roots(reader, scene_roots(reader), chain_level), model);
+    read_nodes(reader, chain_level_roots(reader, take_origin(reader, scene_roots(reader), model), chain_level), model);
     make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;

@@ -68,6 +68,7 @@ auto& filled(O& optional) {
 template <typename Stream, typename M>
 void walk(Stream& s, M& model) {
     s.text(model.source);
+    s.value(model.origin);
     s.value(model.is_lod);
     std::uint64_t count = model.lod_params.size();
     s.value(count);

@@ -73,7 +73,7 @@ void weld(Primitive& primitive) {
 
 Model model_of_primitives(const Model& source, std::vector<Primitive> primitives, const std::string& root_name) {
     Model result;
-    result.source = source.source;
+    keep_provenance(source, result);
     result.materials = source.materials;
     result.textures = source.textures;
     result.is_lod = source.is_lod;

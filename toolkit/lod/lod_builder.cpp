@@ -373,7 +373,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     {
         const ScopedTimer timer(session.times.mesh);
         Model& out = lod.model;
-        out.source = model.source;
+        keep_provenance(model, out);
         out.is_lod = true;
         LodParameters saved = p;
         saved.current_level = current_level;

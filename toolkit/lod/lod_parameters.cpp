@@ -87,7 +87,10 @@ std::string format_level_distances(const LevelDistances& distances) {
     if (distances.rule == LevelDistances::Rule::doubling) return "auto";
     if (distances.rule == LevelDistances::Rule::same) return "same";
     std::string text;
-    for (float d : distances.listed) text += (text.empty() ? "" : ",") + format_number(d);
+    for (float d : distances.listed) {
+        if (!text.empty()) text += ',';
+        text += format_number(d);
+    }
     return text;
 }
 
@@ -127,6 +130,24 @@ ParameterDeclaration level_distances_parameter() {
     return d;
 }
 
+// Which geometry of a CityJSON model is read: the model's, as the file names
+// its LoDs, so a parameter file states it only for such models.
+ParameterDeclaration city_lod_parameter() {
+    ParameterDeclaration d = named("city_lod", "city-lod", "finest|L",
+                                   "CityJSON models: the LoD read, as the file names it (1.2, 2.2; objects without it are "
+                                   "left out), or each object's finest");
+    d.sweep_key = false;
+    d.written_at_default = false;
+    d.format = [](const LodParameters& p) { return p.city_lod.empty() ? std::string("finest") : p.city_lod; };
+    d.parse = [](const std::string& text, LodParameters& p) -> std::string {
+        if (text != "finest" && (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789.") != std::string::npos))
+            return "'" + text + "' is not a LoD (finest, or as the file names it: 1.2, 2.2)";
+        p.city_lod = text == "finest" ? "" : text;
+        return "";
+    };
+    return d;
+}
+
 ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
     declaration.sweep_key = false;
     return declaration;
@@ -136,6 +157,7 @@ std::vector<ParameterDeclaration> make_declarations() {
     namespace r = parameter_range;
     using P = LodParameters;
     return {
+        city_lod_parameter(),
         enum_parameter("level_mode", "level-mode", "M", "how nodes get their level values: ", &P::level_mode, level_modes()),
         number_parameter("wanted_levels", "wanted-levels", "N", "wanted number of levels for the box modes",
                          &P::wanted_levels, r::wanted_levels),

@@ -27,6 +27,7 @@ struct LevelDistances {
 
 struct LodParameters {
     std::string model;  // the model file (relative paths are relative to the parameter file)
+    std::string city_lod;  // a CityJSON model's LoD read ("": each object's finest; toolkit/formats/cityjson_import.h)
     LevelMode level_mode = LevelMode::top_down;
     int wanted_levels = 8;
     std::vector<ByteBudget> budgets;  // beyond the manual: one level per budget (level_budgets.h); empty: wanted_levels
@@ -76,6 +77,7 @@ struct ParameterDeclaration {
     std::optional<NumberRange> range;  // numbers only
     bool power_of_two = false;         // numbers only
     bool sweep_key = true;  // a sweep config sets it with `key = value`; false: the sweep varies it under a key of its own
+    bool written_at_default = true;  // false: a parameter file names it only where it differs from the default
     std::function<std::string(const LodParameters&)> format;  // reads back exactly through parse
     // Reads `text` into `parameters`; returns what is wrong ("" when nothing is).
     std::function<std::string(const std::string& text, LodParameters& parameters)> parse;

@@ -50,7 +50,8 @@ KeyValues parameter_entries(const LodParameters& p) {
     KeyValues out;
     auto line = [&](const std::string& key, const std::string& value) { out.push_back(text_entry(key, value)); };
     line("model", p.model);
-    for (const ParameterDeclaration& d : lod_parameter_declarations()) line(d.key, d.format(p));
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (d.written_at_default || d.format(p) != d.format(LodParameters{})) line(d.key, d.format(p));
     if (p.camera) {
         line("camera_position", vector_text(p.camera->position));
         line("camera_target", vector_text(p.camera->target));

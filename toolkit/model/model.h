@@ -132,10 +132,21 @@ struct Model {
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::string source;  // the file it came from
+    // Where the model's (0, 0, 0) lies in the source's coordinates, in the
+    // model's frame (y up): a city file's vertices are kept relative to it so
+    // that float keeps them exact; glTF writes it as the root's translation
+    // and 3D Tiles as the root tile's transform (docs/design.md: Files).
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     // An LoD that boxlod exported: viewable, never simplified again.
     bool is_lod = false;
     std::vector<std::pair<std::string, std::string>> lod_params;
 };
+
+// What a model made from another keeps of it: its source file and origin.
+inline void keep_provenance(const Model& from, Model& to) {
+    to.source = from.source;
+    to.origin = from.origin;
+}
 
 // Appends a node under `parent` (-1 for the root) and returns its index.
 int add_node(Model& model, int parent, std::string name);

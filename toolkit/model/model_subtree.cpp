@@ -23,7 +23,7 @@ int MaterialCopier::material(int index) {
 
 Model extract_subtree(const Model& model, int root) {
     Model out;
-    out.source = model.source;
+    keep_provenance(model, out);
     out.is_lod = model.is_lod;  // a part of an LoD is one too: viewed, never built from again
     MaterialCopier copier{model, out};
     // Depth first, children in order: a parent always comes before its children.

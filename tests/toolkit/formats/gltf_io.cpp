@@ -166,7 +166,7 @@ const char* triangle_mesh = R"(
 
 std::string expect_input_error(const std::string& path, int chain_level = 0) {
     try {
-        load_model(path, chain_level);
+        load_model(path, {.chain_level = chain_level, .city_lod = ""});
     } catch (const InputError& error) {
         std::string message = error.what();
         EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -402,7 +402,7 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         read_back.textures.resize(finest.textures.size());
         expect_same_model(as_written(finest), read_back);
         // Level 1 on request (render --level), as an MSFT_lod client draws it; past the last, refused.
-        Model level_1 = load_model(path, 1);
+        Model level_1 = load_model(path, {.chain_level = 1, .city_lod = ""});
         ASSERT_EQ(level_1.nodes.size(), coarse.nodes.size());
         EXPECT_EQ(level_1.nodes[1].primitives.at(0).positions, coarse.nodes[1].primitives.at(0).positions);
         EXPECT_EQ(level_1.materials[std::size_t(level_1.nodes[1].primitives[0].material)].name,

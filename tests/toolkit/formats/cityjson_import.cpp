@@ -1,0 +1,253 @@
+#include "toolkit/formats/cityjson_import.h"
+
+#include "renderer/image.h"
+#include "test_support.h"
+#include "toolkit/formats/gltf_io.h"
+#include "toolkit/formats/model_io.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// A CityJSON 2.0 file of these objects over these vertices (millimetres).
+json city(const json& objects, const json& vertices, const json& translate = {0, 0, 0}) {
+    return {{"type", "CityJSON"},
+            {"version", "2.0"},
+            {"transform", {{"scale", {0.001, 0.001, 0.001}}, {"translate", translate}}},
+            {"CityObjects", objects},
+            {"vertices", vertices}};
+}
+
+Model read(const json& file, const std::string& name, const std::string& lod = "") {
+    const fs::path path = test::scratch_folder("cityjson_" + name) / (name + ".city.json");
+    test::write_text(path, file.dump());
+    return import_cityjson(path.string(), lod);
+}
+
+int node_named(const Model& model, const std::string& name) {
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (model.nodes[n].name == name) return int(n);
+    return -1;
+}
+
+double area(const Node& node) {
+    double sum = 0;
+    for (const Primitive& p : node.primitives)
+        for (std::size_t i = 0; i < p.indices.size(); i += 3)
+            sum += (p.positions[p.indices[i + 1]] - p.positions[p.indices[i]])
+                       .cross(p.positions[p.indices[i + 2]] - p.positions[p.indices[i]])
+                       .norm() / 2;
+    return sum;
+}
+
+std::size_t triangles(const Model& model) {
+    std::size_t count = 0;
+    for (const Node& node : model.nodes)
+        for (const Primitive& p : node.primitives) count += p.triangle_count();
+    return count;
+}
+
+// A unit square: four vertex indices from `first`.
+const json square_vertices = {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0}};
+json surface(int first) { return {{first, first + 1, first + 2, first + 3}}; }
+
+TEST(CityJsonImport, ObjectsHangUnderTheirParentsWithTheirTypes) {
+    const json objects = {
+        {"house", {{"type", "Building"}, {"children", {"east", "west"}}}},
+        {"east", {{"type", "BuildingPart"}, {"parents", {"house"}},
+                  {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}},
+        {"west", {{"type", "BuildingPart"}, {"parents", {"house"}},
+                  {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}}};
+    const Model model = read(city(objects, square_vertices), "parts");
+    const int house = node_named(model, "house"), east = node_named(model, "east"), west = node_named(model, "west");
+    ASSERT_GE(house, 0);
+    EXPECT_EQ(model.nodes[std::size_t(house)].parent, 0);
+    EXPECT_EQ(model.nodes[std::size_t(east)].parent, house);
+    EXPECT_EQ(model.nodes[std::size_t(west)].parent, house);
+    EXPECT_EQ(model.nodes[std::size_t(house)].rule, "Building");
+    EXPECT_EQ(model.nodes[std::size_t(east)].rule, "BuildingPart");
+    EXPECT_FALSE(model.nodes[std::size_t(house)].has_geometry());
+    EXPECT_NEAR(area(model.nodes[std::size_t(east)]), 1, 1e-6);
+    EXPECT_EQ(tree_depth(model), 2);
+}
+
+TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
+    // A 4 x 3 m wall facing -y with a 1 x 1 m window hole, and the window.
+    const json vertices = {{0, 0, 0},       {4000, 0, 0},    {4000, 0, 3000}, {0, 0, 3000},
+                           {1000, 0, 1000}, {1000, 0, 2000}, {2000, 0, 2000}, {2000, 0, 1000}};
+    const json geometry = {{"type", "MultiSurface"},
+                           {"lod", "3"},
+                           {"boundaries", {{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{4, 7, 6, 5}}}},
+                           {"semantics", {{"surfaces", {{{"type", "WallSurface"}}, {{"type", "Window"}, {"parent", 0}}}},
+                                          {"values", {0, 1}}}}};
+    const Model model = read(city({{"shed", {{"type", "Building"}, {"geometry", {geometry}}}}}, vertices), "window");
+    const int wall = node_named(model, "WallSurface 0"), window = node_named(model, "Window 1");
+    ASSERT_GE(wall, 0);
+    ASSERT_GE(window, 0);
+    EXPECT_EQ(model.nodes[std::size_t(window)].parent, wall);
+    EXPECT_EQ(model.nodes[std::size_t(wall)].parent, node_named(model, "shed"));
+    EXPECT_EQ(model.nodes[std::size_t(window)].rule, "Window");
+    EXPECT_NEAR(area(model.nodes[std::size_t(wall)]), 11, 1e-5);
+    EXPECT_NEAR(area(model.nodes[std::size_t(window)]), 1, 1e-5);
+    EXPECT_EQ(tree_depth(model), 3);
+    // Untextured and without a material: drawn in the semantic type's colour.
+    const Material& wall_material = model.materials[std::size_t(model.nodes[std::size_t(wall)].primitives[0].material)];
+    const Material& window_material = model.materials[std::size_t(model.nodes[std::size_t(window)].primitives[0].material)];
+    EXPECT_NE(wall_material.base_color, window_material.base_color);
+    // z up becomes y up: the wall faces -y in the file, +z in the model.
+    const Primitive& p = model.nodes[std::size_t(wall)].primitives[0];
+    const Eigen::Vector3f normal = (p.positions[p.indices[1]] - p.positions[p.indices[0]])
+                                       .cross(p.positions[p.indices[2]] - p.positions[p.indices[0]]);
+    EXPECT_GT(normal.z(), 0);
+    EXPECT_EQ(p.polygon_count, 1u);
+}
+
+TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
+    const fs::path folder = test::scratch_folder("cityjson_textured");
+    Image8 image(2, 2, 4);  // as read_image gives it: RGBA
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = i % 4 == 3 ? 255 : std::uint8_t(40 * i);
+    write_png((folder / "roof.png").string(), image);
+    json file = city({{"roof", {{"type", "Building"},
+                                {"geometry", {{{"type", "MultiSurface"},
+                                               {"lod", "2"},
+                                               {"boundaries", {surface(0), surface(4)}},
+                                               {"material", {{"colour", {{"values", {0, 0}}}}}},
+                                               {"texture", {{"photo", {{"values", {{{0, 0, 1, 2, 3}}, {{1, 0, 1, 2, 3}}}}}}}}}}}}}},
+                     {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0},
+                      {0, 0, 100}, {1000, 0, 100}, {1000, 1000, 100}, {0, 1000, 100}});
+    file["appearance"] = {{"materials", {{{"name", "red"}, {"diffuseColor", {1, 0, 0}}, {"transparency", 0.25}}}},
+                          {"textures", {{{"type", "PNG"}, {"image", "roof.png"}}, {{"type", "PNG"}, {"image", "gone.png"}}}},
+                          {"vertices-texture", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}};
+    test::write_text(folder / "roof.city.json", file.dump());
+    testing::internal::CaptureStderr();
+    const Model model = import_cityjson((folder / "roof.city.json").string());
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warning.find("1 texture files are missing (gone.png)"), std::string::npos) << warning;
+    EXPECT_EQ(std::count(warning.begin(), warning.end(), '\n'), 1);
+    const Node& roof = model.nodes[std::size_t(node_named(model, "roof"))];
+    ASSERT_EQ(roof.primitives.size(), 2u);
+    const Primitive& textured = roof.primitives[0];
+    const Material& photo = model.materials[std::size_t(textured.material)];
+    ASSERT_GE(photo.base_color_texture, 0);
+    EXPECT_EQ(model.textures[std::size_t(photo.base_color_texture)].image.pixels, image.pixels);
+    ASSERT_EQ(textured.uvs.size(), 4u);
+    EXPECT_EQ(textured.uvs[0], Eigen::Vector2f(0, 1));  // CityGML's (0, 0) is the image's bottom left
+    const Primitive& plain = roof.primitives[1];
+    EXPECT_TRUE(plain.uvs.empty());
+    const Material& red = model.materials[std::size_t(plain.material)];
+    EXPECT_EQ(red.base_color_texture, -1);
+    EXPECT_EQ(red.base_color, Eigen::Vector4f(1, 0, 0, 0.75f));
+    EXPECT_EQ(red.alpha_mode, AlphaMode::blend);
+}
+
+// A 10 m square with a 1 mm step in one corner, at the origin or 400 km out.
+Model step_at(const json& translate, const std::string& name) {
+    const json vertices = {{0, 0, 0}, {10000, 0, 0}, {10000, 10000, 0}, {1, 10000, 0}, {1, 10001, 0}, {0, 10001, 0}};
+    return read(city({{"plot", {{"type", "Building"},
+                                {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 3, 4, 5}}}}}}}}}},
+                     vertices, translate),
+                name);
+}
+
+TEST(CityJsonImport, FarFromTheOriginReadsAsNearIt) {
+    const Model near = step_at({0, 0, 0}, "near"), far = step_at({150000.25, 400000.25, 12}, "far");
+    EXPECT_EQ(near.origin, Eigen::Vector3d(5, 0, -5));  // the middle of the ground rectangle in whole metres, y up
+    EXPECT_EQ(far.origin, Eigen::Vector3d(150005, 12, -400005));
+    const Primitive& a = near.nodes[1].primitives[0];
+    const Primitive& b = far.nodes[1].primitives[0];
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    for (std::size_t i = 0; i < a.positions.size(); ++i)  // 0.25 m further from their origin, each
+        EXPECT_LT((b.positions[i] - a.positions[i] - Eigen::Vector3f(0.25f, 0, -0.25f)).norm(), 1e-5f);
+    // The 1 mm step survives: its two vertices differ by 1 mm in float.
+    EXPECT_NEAR((b.positions[3] - b.positions[4]).norm(), 0.001, 1e-5);
+}
+
+TEST(CityJsonImport, GltfKeepsTheOriginAsTheRootsTranslation) {
+    const Model far = step_at({150000.25, 400000.25, 12}, "far_gltf");
+    const fs::path path = test::scratch_folder("cityjson_far_gltf_out") / "far.glb";
+    save_model(far, path.string());
+    const Model back = load_model(path.string());
+    EXPECT_EQ(back.origin, far.origin);
+    EXPECT_EQ(back.nodes.size(), far.nodes.size());
+    EXPECT_EQ(back.nodes[1].primitives[0].positions, far.nodes[1].primitives[0].positions);
+    // What any client sees: the scene's one node moves the model there.
+    tinygltf::Model gltf;
+    std::string error, warning;
+    ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, path.string()));
+    const tinygltf::Node& root = gltf.nodes[std::size_t(gltf.scenes[0].nodes[0])];
+    EXPECT_EQ(root.translation, std::vector<double>({150005, 12, -400005}));
+}
+
+TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
+    const json geometries = {{{"type", "MultiSurface"}, {"lod", "1.2"}, {"boundaries", {surface(0)}}},
+                             {{"type", "MultiSurface"}, {"lod", "2.2"}, {"boundaries", {surface(0), surface(0)}}}};
+    const json file = city({{"b", {{"type", "Building"}, {"geometry", geometries}}}}, square_vertices);
+    EXPECT_EQ(read(file, "lod_finest").nodes[1].primitives[0].polygon_count, 2u);
+    EXPECT_EQ(read(file, "lod_asked", "1.2").nodes[1].primitives[0].polygon_count, 1u);
+    EXPECT_NE(test::input_error_of([&] { read(file, "lod_absent", "3"); }).find("no surface of LoD 3 (the file has LoD 1.2, 2.2)"),
+              std::string::npos);
+}
+
+TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
+    const json header = {{"type", "CityJSON"}, {"version", "2.0"},
+                         {"transform", {{"scale", {0.001, 0.001, 0.001}}, {"translate", {0, 0, 0}}}},
+                         {"CityObjects", json::object()}, {"vertices", json::array()}};
+    auto feature = [](const std::string& id, int x) {
+        return json{{"type", "CityJSONFeature"}, {"id", id},
+                    {"CityObjects", {{id, {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}}}},
+                    {"vertices", {{x, 0, 0}, {x + 1000, 0, 0}, {x + 1000, 1000, 0}, {x, 1000, 0}}}};
+    };
+    const fs::path path = test::scratch_folder("cityjson_seq") / "two.city.jsonl";
+    test::write_text(path, header.dump() + "\n" + feature("a", 0).dump() + "\n" + feature("b", 5000).dump() + "\n");
+    const Model model = load_model(path.string());
+    ASSERT_EQ(model.nodes[0].children.size(), 2u);
+    EXPECT_EQ(model_bounds(model).size().x(), 6);
+}
+
+// Bad input: one line naming the file and the place.
+TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
+    auto error_of = [](json file, const std::string& name) {
+        return test::input_error_of([&] { read(file, name); });
+    };
+    const json one = {{"b", {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 9}}}}}}}}}};
+    EXPECT_NE(error_of(city(one, square_vertices), "bad_vertex").find("CityObjects 'b': geometry 0: vertex index 9 is outside 0..3"),
+              std::string::npos);
+    const json cycle = {{"a", {{"type", "Building"}, {"parents", {"b"}}}}, {"b", {{"type", "BuildingPart"}, {"parents", {"a"}}}}};
+    EXPECT_NE(error_of(city(cycle, square_vertices), "cycle").find("parents: a cycle (a > b > a)"), std::string::npos);
+    json no_transform = city(one, square_vertices);
+    no_transform.erase("transform");
+    EXPECT_NE(error_of(no_transform, "no_transform").find("missing member 'transform'"), std::string::npos);
+    json textured = city({{"b", {{"type", "Building"},
+                                 {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}},
+                                                {"texture", {{"t", {{"values", {{{5, 0, 0, 0, 0}}}}}}}}}}}}}},
+                         square_vertices);
+    textured["appearance"] = {{"textures", {{{"type", "PNG"}, {"image", "a.png"}}}}, {"vertices-texture", {{0, 0}}}};
+    EXPECT_NE(error_of(textured, "bad_texture").find("texture index 5 is outside 0..0"), std::string::npos);
+    EXPECT_NE(error_of(json::array(), "not_object").find("not a CityJSON object"), std::string::npos);
+}
+
+// The CityJSON files of ../shared/models beside the checkout, where present.
+fs::path shared_cityjson(const std::string& name) {
+    return (fs::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / "cityjson" / name).lexically_normal();
+}
+
+TEST(CityJsonImport, SharedModelsReadWithTheirHierarchy) {
+    const fs::path parts = shared_cityjson("DH_01_subs.city.json"), bag = shared_cityjson("3dbag_multi_lod.city.json");
+    if (!fs::exists(parts) || !fs::exists(bag)) GTEST_SKIP() << "../shared/models/cityjson is absent";
+    const Model with_parts = load_model(parts.string());
+    EXPECT_EQ(tree_depth(with_parts), 3);  // file > Building > BuildingPart > surface
+    EXPECT_EQ(with_parts.nodes[0].children.size(), 4u);
+    const Model ladder = load_model(bag.string());
+    EXPECT_EQ(ladder.nodes[0].children.size(), 10u);
+    EXPECT_GT(triangles(ladder), triangles(load_model(bag.string(), {.chain_level = 0, .city_lod = "1.2"})));
+}
+
+}  // namespace
+}  // namespace boxlod

@@ -1,0 +1,48 @@
+// The geometry of CityJSON objects as boxlod nodes and primitives, for
+// toolkit/formats/cityjson_import.cpp (CityJSON 2.0, sections "Geometry
+// objects", "Semantics of geometric primitives" and "Appearance object").
+#pragma once
+#include "toolkit/model/model.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace boxlod {
+
+struct CityReadState;  // what the reading has made so far (the .cpp's)
+
+// Where a reader is: the file and a prefix naming the place ("line 3:
+// CityObjects 'id': geometry 0: "); fail throws the InputError.
+struct CityPlace {
+    const std::string& file;
+    std::string place;
+    [[noreturn]] void fail(const std::string& what) const;
+    CityPlace in(const std::string& step) const { return {file, place + step + ": "}; }
+};
+
+// Reads objects into `model` one document at a time: start_part with the
+// document's vertices (in the file's coordinates) and appearance, then
+// add_object for each object, parents first; finish says what was left out.
+class CityGeometryReader {
+  public:
+    CityGeometryReader(Model& model, const std::string& file, const Eigen::Vector3d& origin);
+    ~CityGeometryReader();
+    void start_part(const CityPlace& at, const nlohmann::json& document, const std::vector<Eigen::Vector3d>& vertices);
+    // The object's node under `parent_node`, with its geometry of `lod`
+    // ("": its finest) and a child node per semantic surface.
+    int add_object(const CityPlace& at, const std::string& id, const nlohmann::json& object, int parent_node,
+                   const std::string& lod);
+    // Refuses a reading that drew nothing (naming the LoDs the file has);
+    // prints one warning line for objects without the LoD and one for missing textures.
+    void finish(const std::string& lod) const;
+
+  private:
+    std::unique_ptr<CityReadState> state_;
+};
+
+}  // namespace boxlod

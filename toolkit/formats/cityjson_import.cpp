@@ -1,0 +1,217 @@
+#include "toolkit/formats/cityjson_import.h"
+
+#include "base/input_error.h"
+#include "base/input_file.h"
+#include "toolkit/formats/cityjson_geometry.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace boxlod {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// One document of the file: the whole file, or a CityJSONSeq line (its own
+// vertices and appearance, the first line's transform).
+struct Part {
+    json document;
+    std::string line;  // "line N: " in a CityJSONSeq, else ""
+    std::vector<Eigen::Vector3d> vertices;  // transformed: the file's coordinates
+};
+
+struct Transform {
+    Eigen::Vector3d scale, translate;
+};
+
+// A member's value with one line for each way it can be missing or wrong.
+const json& member(const CityPlace& at, const json& object, const char* name, json::value_t type, const char* what) {
+    auto it = object.find(name);
+    if (it == object.end()) at.fail(std::string("missing member '") + name + "'");
+    if (it->type() != type && !(type == json::value_t::number_float && it->is_number()))
+        at.fail(std::string("'") + name + "' is not " + what);
+    return *it;
+}
+
+Eigen::Vector3d read_triple(const CityPlace& at, const json& value, const char* name, bool positive) {
+    if (!value.is_array() || value.size() != 3) at.fail(std::string("'") + name + "' is not three numbers");
+    Eigen::Vector3d out;
+    for (int i = 0; i < 3; ++i) {
+        if (!value[i].is_number()) at.fail(std::string("'") + name + "' is not three numbers");
+        out[i] = value[i].get<double>();
+        if (!std::isfinite(out[i]) || (positive && !(out[i] > 0)))
+            at.fail(std::string("'") + name + "' holds " + value[i].dump() + (positive ? ": scales are positive" : ""));
+    }
+    return out;
+}
+
+// CityJSON 1.1 and 2.0 store vertices as integers scaled and translated by
+// `transform` (CityJSON 2.0, section "Transform object"), which both require.
+Transform read_transform(const CityPlace& at, const json& root) {
+    if (!root.contains("transform"))
+        at.fail("missing member 'transform' (CityJSON 1.1 and 2.0 require it; cjio upgrades older files)");
+    const json& transform = member(at, root, "transform", json::value_t::object, "an object");
+    const CityPlace in{at.file, at.place + "transform: "};
+    return {read_triple(in, member(in, transform, "scale", json::value_t::array, "an array"), "scale", true),
+            read_triple(in, member(in, transform, "translate", json::value_t::array, "an array"), "translate", false)};
+}
+
+void read_vertices(const CityPlace& at, Part& part, const Transform& transform) {
+    const json& vertices = member(at, part.document, "vertices", json::value_t::array, "an array");
+    part.vertices.reserve(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const CityPlace in{at.file, at.place + "vertex " + std::to_string(i) + ": "};
+        const Eigen::Vector3d stored = read_triple(in, vertices[i], "vertex", false);
+        part.vertices.push_back(stored.cwiseProduct(transform.scale) + transform.translate);
+        if (!part.vertices.back().allFinite()) in.fail("coordinates beyond a double");
+    }
+}
+
+void check_version(const CityPlace& at, const json& root, const char* type) {
+    const json& found = member(at, root, "type", json::value_t::string, "a string");
+    if (found != type) at.fail("type is " + found.dump() + ", not \"" + type + "\"");
+    if (std::string(type) != "CityJSON") return;
+    const json& version = member(at, root, "version", json::value_t::string, "a string");
+    if (version != "1.1" && version != "2.0")
+        at.fail("version " + version.dump() + ": boxlod reads CityJSON 1.1 and 2.0 (cjio upgrades older files)");
+}
+
+json parse_json(const CityPlace& at, std::string_view text) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& error) {
+        std::string what = error.what();
+        what = what.substr(what.find(']') + 2);  // drop "[json.exception.parse_error.101] "
+        at.fail("not valid JSON: " + what);
+    }
+}
+
+// The documents of a file: one, or a CityJSONSeq's lines (the first holds
+// the transform; each later line a CityJSONFeature).
+std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
+    std::vector<Part> parts;
+    const CityPlace file{path, ""};
+    if (lowercase_extension(path) != ".jsonl") {
+        parts.push_back({parse_json(file, bytes), "", {}});
+        if (!parts[0].document.is_object()) file.fail("not a CityJSON object");
+        check_version(file, parts[0].document, "CityJSON");
+        read_vertices(file, parts[0], read_transform(file, parts[0].document));
+        return parts;
+    }
+    std::size_t line_number = 0;
+    Transform transform;
+    for (std::size_t start = 0; start < bytes.size();) {
+        std::size_t end = std::min(bytes.find('\n', start), bytes.size());
+        std::string_view line = bytes.substr(start, end - start);
+        start = end + 1;
+        ++line_number;
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+        const std::string prefix = "line " + std::to_string(line_number) + ": ";
+        const CityPlace at{path, prefix};
+        json document = parse_json(at, line);
+        if (!document.is_object()) at.fail("not a JSON object");
+        if (line_number == 1) {
+            check_version(at, document, "CityJSON");
+            transform = read_transform(at, document);
+            continue;
+        }
+        check_version(at, document, "CityJSONFeature");
+        parts.push_back({std::move(document), prefix, {}});
+        read_vertices(at, parts.back(), transform);
+    }
+    if (line_number == 0) file.fail("empty file: a CityJSONSeq starts with a CityJSON line");
+    return parts;
+}
+
+// The model's origin in the file's coordinates: the middle of the vertices'
+// ground rectangle, in whole units, so local coordinates stay small.
+Eigen::Vector3d local_origin(const CityPlace& at, const std::vector<Part>& parts) {
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
+    for (const Part& part : parts)
+        for (const Eigen::Vector3d& p : part.vertices) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    if (!(low.array() <= high.array()).all()) at.fail("no vertices: nothing to draw");
+    return {std::round((low.x() + high.x()) / 2), std::round((low.y() + high.y()) / 2), std::round(low.z())};
+}
+
+// Each object's parent (its first `parents` entry, or an object listing it
+// in `children`), checked to exist and to lead to a root.
+std::map<std::string, std::string> parents_of(const CityPlace& at, const json& objects) {
+    std::map<std::string, std::string> parent;
+    for (const auto& [id, object] : objects.items()) {
+        const CityPlace in{at.file, at.place + "CityObjects '" + id + "': "};
+        if (!object.is_object()) in.fail("not an object");
+        for (const char* key : {"parents", "children"}) {
+            if (!object.contains(key)) continue;
+            const json& list = member(in, object, key, json::value_t::array, "an array");
+            for (const json& other : list) {
+                if (!other.is_string() || !objects.contains(other.get<std::string>()))
+                    in.fail(std::string(key) + ": " + other.dump() + " is not a CityObject of the file");
+                if (std::string(key) == "parents" && !parent.count(id)) parent[id] = other.get<std::string>();
+                if (std::string(key) == "children" && !parent.count(other.get<std::string>())) parent[other.get<std::string>()] = id;
+            }
+        }
+    }
+    for (const auto& [id, first] : parent) {
+        std::string chain = id, at_id = id;
+        for (int depth = 0; parent.count(at_id); ++depth) {
+            at_id = parent.at(at_id);
+            chain += " > " + at_id;
+            if (at_id == id) at.fail("CityObjects '" + id + "': parents: a cycle (" + chain + ")");
+            if (depth > max_nesting_depth) at.fail("CityObjects '" + id + "': parents " + nesting_message());
+        }
+    }
+    return parent;
+}
+
+}  // namespace
+
+Model import_cityjson(const std::string& path, const std::string& lod) {
+    return import_cityjson_bytes(read_input_file(path, "CityJSON file"), path, lod);
+}
+
+// The steps: the documents and their vertices, the local origin, then each
+// document's objects, parents first, with the geometry of the chosen LoD.
+Model import_cityjson_bytes(std::string_view bytes, const std::string& path, const std::string& lod) {
+    std::vector<Part> parts = read_parts(bytes, path);
+    const Eigen::Vector3d origin = local_origin({path, ""}, parts);
+    Model model;
+    model.source = path;
+    model.origin = Eigen::Vector3d(origin.x(), origin.z(), -origin.y());  // z-up to the model's y-up
+    add_node(model, -1, fs::path(path).stem().string());
+    CityGeometryReader reader(model, path, origin);
+    for (Part& part : parts) {
+        const CityPlace at{path, part.line};
+        const json& objects = member(at, part.document, "CityObjects", json::value_t::object, "an object");
+        const std::map<std::string, std::string> parent = parents_of(at, objects);
+        reader.start_part(at, part.document, part.vertices);
+        std::map<std::string, int> node_of;
+        // Parents before children: an explicit stack from the roots.
+        std::vector<std::pair<std::string, int>> pending;
+        for (auto it = objects.rbegin(); it != objects.rend(); ++it)
+            if (!parent.count(it.key())) pending.emplace_back(it.key(), 0);
+        std::multimap<std::string, std::string> children;
+        for (const auto& [child, p] : parent) children.emplace(p, child);
+        while (!pending.empty()) {
+            auto [id, parent_node] = pending.back();
+            pending.pop_back();
+            const int node = reader.add_object(at, id, objects.at(id), parent_node, lod);
+            auto range = children.equal_range(id);
+            std::vector<std::string> kids;
+            for (auto it = range.first; it != range.second; ++it) kids.push_back(it->second);
+            for (auto it = kids.rbegin(); it != kids.rend(); ++it) pending.emplace_back(*it, node);
+        }
+    }
+    reader.finish(lod);
+    make_unit_normals_and_tangents(model);
+    validate_model(model);
+    return model;
+}
+
+}  // namespace boxlod
