@@ -17,7 +17,7 @@ TEST(LodParameters, KeysAndOptionsAreDeclaredOnce) {
         EXPECT_EQ(find_lod_parameter(d.key), &d);
     }
     EXPECT_EQ(find_lod_parameter("smoothness"), nullptr);
-    EXPECT_EQ(keys.size(), 19u);
+    EXPECT_EQ(keys.size(), 20u);
 }
 
 TEST(LodParameters, EveryValueReadsBackAsWritten) {
@@ -35,6 +35,7 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
     changed.render_mode = RenderMode::pom;
     changed.parallax_bias = -0.0123f;
     changed.level_distances = {LevelDistances::Rule::listed, {12.5f, 40, 1e9f}};
+    changed.city_lod = "2.2";
     for (const LodParameters& p : {LodParameters{}, changed})
         for (const ParameterDeclaration& d : lod_parameter_declarations()) {
             LodParameters read;
@@ -42,6 +43,9 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
             EXPECT_EQ(d.format(read), d.format(p)) << d.key;
         }
     EXPECT_EQ(parse_parameters(format_parameters(changed), "p.txt").parallax_bias, changed.parallax_bias);
+    // A CityJSON model's LoD is written only where one is asked.
+    EXPECT_EQ(parse_parameters(format_parameters(changed), "p.txt").city_lod, "2.2");
+    EXPECT_EQ(format_parameters(LodParameters{}).find("city_lod"), std::string::npos);
 }
 
 TEST(LodParameters, ParsingChecksTheDeclaredRange) {
