@@ -58,7 +58,7 @@ static int run_levels(const Arguments& arguments) {
 }
 
 Subcommand levels_subcommand() {
-    std::vector<Option> options = lod_options({"level_mode", "wanted_levels", "budgets", "box_kind", "interpolation"});
+    std::vector<Option> options = lod_options({"city_lod", "level_mode", "wanted_levels", "budgets", "box_kind", "interpolation"});
     options[0].help = enum_names(level_modes(), ", ", " or ") + " (required)";  // level_mode comes first
     return {{"levels",
              "MODEL",

@@ -106,6 +106,9 @@ int run_tiles(const Arguments& a) {
     const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),
                           a.number("longitude", Geodetic{}.longitude_degrees), a.number("height", 0)};
     Model city = load_parameters_model(parameters);
+    // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
+    const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(), city.origin.y());  // y up to the file's z up
+    city.origin = Eigen::Vector3d::Zero();
     const std::vector<int> nodes = tile_objects(city);
     start_lod(tile_object(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     const double error = switch_error(a);
@@ -117,7 +120,7 @@ int run_tiles(const Arguments& a) {
     parallel_for(nodes.size(), threads_from(a), [&](std::size_t k) {
         objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
     });
-    write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin));
+    write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin, source_origin));
     files.commit();
     output.commit();
     const std::string tileset = (folder / "tileset.json").string();

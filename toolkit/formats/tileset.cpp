@@ -78,7 +78,7 @@ double level_geometric_error(double switch_distance, const TextureSizing& view, 
     return std::max(surface_deviation, client_screen_space_error * pixel_world_size(at));
 }
 
-std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin) {
+std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin, const Eigen::Vector3d& source_origin) {
     Bounds bounds;  // of every object's box, in the tiles' z-up frame
     for (const TileObject& object : objects) {
         const std::array<double, 12> b = tile_box(object.box);
@@ -107,6 +107,7 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
         {"refine", "ADD"},
         {"children", std::move(children)},
     };
+    if (!source_origin.isZero()) root["extras"] = {{"boxlod", {{"source_origin", {source_origin.x(), source_origin.y(), source_origin.z()}}}}};
     nlohmann::json tileset = {{"asset", {{"version", "1.1"}, {"generator", "boxlod"}}},
                               {"geometricError", root_error},
                               {"root", std::move(root)}};

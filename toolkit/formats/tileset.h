@@ -35,7 +35,11 @@ struct TileObject {
 // coarsest level's error, so a coarsest level is drawn over one doubling of
 // distance as every other level is. A level's error is made at least that of
 // every finer level, as refinement requires.
-std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin);
+// `source_origin`: where the model's local origin lies in its file's
+// coordinates (a city file's, z up; Model::origin), kept in the root's
+// extras.boxlod.source_origin; the tiles are placed at `origin` (no map projection).
+std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin,
+                         const Eigen::Vector3d& source_origin = Eigen::Vector3d::Zero());
 
 // The screen-space error, in pixels, at which 3D Tiles clients refine a tile
 // by default (CesiumJS's maximumScreenSpaceError, 3d-tiles-renderer's errorTarget).
