@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -140,6 +141,55 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
     if (tag == answer_input_error) throw InputError(answer);
     if (tag == answer_other_error) throw std::runtime_error(answer);
     return answer;
+}
+
+namespace {
+
+// In the child of run_in_child: the program with its pipes, and what it wrote on descriptor 3.
+std::string run_program(const std::vector<std::string>& command, const std::string& input, const std::string& file,
+                        const std::string& reader) {
+    int to_program[2], from_program[2];
+    if (::pipe(to_program) != 0 || ::pipe(from_program) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+    if (pid == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // killed with the reading child (a timeout, boxlod interrupted)
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(to_program[0], 0), ::dup2(null, 1), ::dup2(null, 2), ::dup2(from_program[1], 3);
+        for (int fd : {to_program[0], to_program[1], from_program[0], from_program[1], null})
+            if (fd > 3) ::close(fd);
+        std::vector<char*> argv;
+        for (const std::string& word : command) argv.push_back(const_cast<char*>(word.c_str()));
+        argv.push_back(nullptr);
+        ::execvp(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(to_program[0]), ::close(from_program[1]);
+    std::signal(SIGPIPE, SIG_IGN);  // a program that stops reading early: its answer says why
+    write_all(to_program[1], input.data(), input.size());
+    ::close(to_program[1]);
+    std::string output;
+    for (char buffer[65536];;) {
+        const ssize_t got = ::read(from_program[0], buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) break;
+        output.append(buffer, std::size_t(got));
+    }
+    ::close(from_program[0]);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && output.empty())
+        throw_input_error(file, "", reader + " needs '" + command[0] + "', which is not installed");
+    if (WIFSIGNALED(status)) throw_input_error(file, "", reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
+    return output;
+}
+
+}  // namespace
+
+std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
+                                 const ChildLimits& limits, const std::string& file, const std::string& reader) {
+    return run_in_child([&] { return run_program(command, input, file, reader); }, limits, file, reader);
 }
 
 }  // namespace boxlod

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace boxlod {
 
@@ -21,5 +22,13 @@ struct ChildLimits {
 // with its message (an internal error, as it would be in this process).
 std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits, const std::string& file,
                          const std::string& reader);
+
+// A reader that is another program (node running web-ifc): `command` (looked
+// up in PATH) run inside run_in_child with `input` on its standard input,
+// its standard output and error dropped (such readers log there); returns what
+// it wrote to file descriptor 3. It dies with its parent. A program that is
+// not installed is an InputError naming it.
+std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
+                                 const ChildLimits& limits, const std::string& file, const std::string& reader);
 
 }  // namespace boxlod

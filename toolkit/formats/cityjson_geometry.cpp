@@ -452,6 +452,7 @@ int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, c
     CityReadState& s = *state_;
     const CityPlace here = at.in("CityObjects '" + id + "'");
     const int node = add_node(s.model, parent_node, id);
+    s.model.nodes[std::size_t(node)].source_id = id;
     if (object.contains("type") && object["type"].is_string()) s.model.nodes[std::size_t(node)].rule = object["type"].get<std::string>();
     auto geometries = object.find("geometry");
     if (geometries == object.end()) return node;

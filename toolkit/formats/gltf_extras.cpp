@@ -85,6 +85,7 @@ tinygltf::Value node_extras(const Node& node) {
     tinygltf::Value::Object extras;
     if (!node.rule.empty()) extras["rule"] = tinygltf::Value(node.rule);
     if (!node.instance_of.empty()) extras["instance_of"] = tinygltf::Value(node.instance_of);
+    if (!node.source_id.empty()) extras["source_id"] = tinygltf::Value(utf8_or_latin1(node.source_id));
     if (node.scope) {
         tinygltf::Value::Array axes;
         for (int i = 0; i < 3; ++i) {
@@ -145,6 +146,7 @@ void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node
     if (fields->Has("scope")) node.scope = read_scope(fields->Get("scope"), at);
     if (fields->Has("instance_of") && fields->Get("instance_of").IsString())
         node.instance_of = fields->Get("instance_of").Get<std::string>();
+    if (fields->Has("source_id") && fields->Get("source_id").IsString()) node.source_id = fields->Get("source_id").Get<std::string>();
 }
 
 void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Primitive& primitive) {

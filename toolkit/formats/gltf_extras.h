@@ -1,7 +1,7 @@
 // boxlod's fields in glTF `extras.boxlod` (docs/design.md: Scene model), one
 // schema for export and import: the LoD mark and its parameters on the asset;
-// specular colour, shininess and the height texture on a material; rule, scope
-// and instance_of on a node; the polygon count on a primitive. Each writer
+// specular colour, shininess and the height texture on a material; rule, scope,
+// instance_of and source_id on a node; the polygon count on a primitive. Each writer
 // returns a null Value when it has nothing to say; each reader throws
 // InputError "FILE: PLACE: what" for a field of the wrong form.
 #pragma once

@@ -78,7 +78,7 @@ void walk(Stream& s, M& model) {
     s.value(count);
     resize_to(model.nodes, count);
     for (auto& node : model.nodes) {
-        s.text(node.name), s.text(node.rule), s.text(node.instance_of);
+        s.text(node.name), s.text(node.rule), s.text(node.instance_of), s.text(node.source_id);
         s.value(node.parent);
         s.values(node.children);
         bool scoped = node.scope.has_value();

@@ -5,8 +5,23 @@
 #include "toolkit/formats/assimp_io.h"
 #include "toolkit/formats/cityjson_import.h"
 #include "toolkit/formats/gltf_io.h"
+#include "toolkit/formats/ifc_io.h"
+
+#include <fstream>
 
 namespace boxlod {
+
+namespace {
+
+// IFC 2x3 (and the older 2x) through assimp, whose reading the project's
+// measurements were made with; IFC 4 and 4x3, which assimp cannot read, through web-ifc.
+bool read_by_web_ifc(const std::string& path) {
+    std::string header(4096, '\0');
+    std::ifstream(path, std::ios::binary).read(header.data(), std::streamsize(header.size()));
+    return !ifc_schema(header).starts_with("IFC2X");
+}
+
+}  // namespace
 
 Model load_model(const std::string& path, const ReadOptions& options) {
     check_input_file(path, "model file");
@@ -14,6 +29,7 @@ Model load_model(const std::string& path, const ReadOptions& options) {
     if (extension == ".gltf" || extension == ".glb") return import_gltf(path, options.chain_level);
     if (options.chain_level > 0) throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
     if (extension == ".json" || extension == ".jsonl") return import_cityjson(path, options.city_lod);
+    if (extension == ".ifc" && read_by_web_ifc(path)) return import_ifc_with_web_ifc(path);
     static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",
                                            ".blend", ".ase", ".lwo", ".ms3d", ".x", ".3mf", ".ac"};
     for (const char* known : assimp_formats)

@@ -277,6 +277,7 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
         new_index[n] = index;
         out.nodes[index].rule = node.rule;
         out.nodes[index].scope = node.scope;
+        out.nodes[index].source_id = node.source_id;
         if (auto proxy = simplified.find(n); proxy != simplified.end())  // the source's materials
             add_primitives(proxy->second->primitives, writer, out.nodes[index]);
         else if (!is_box[n])  // kept: its own geometry (a replaced node without box has none)

@@ -121,6 +121,7 @@ struct Node {
     std::vector<Primitive> primitives;
     std::optional<Scope> scope;
     std::string instance_of;  // source mesh shared with other nodes before expansion
+    std::string source_id;    // the object's id in its source: an IFC GlobalId, a CityJSON object id
     int parent = -1;
     std::vector<int> children;
 

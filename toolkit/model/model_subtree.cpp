@@ -37,6 +37,7 @@ Model extract_subtree(const Model& model, int root) {
         copy.rule = node.rule;
         copy.scope = node.scope;
         copy.instance_of = node.instance_of;
+        copy.source_id = node.source_id;
         for (const Primitive& primitive : node.primitives) {
             copy.primitives.push_back(primitive);
             copy.primitives.back().material = copier.material(primitive.material);

@@ -1,0 +1,25 @@
+// IFC 4 and 4x3 (and 2x3 where asked) read with web-ifc (npm, MPL-2.0; pinned
+// in web_ifc_version.txt, installed by `make demo` and `make test` into the
+// npm cache folder), run by node in a child process: the spatial structure as
+// the node tree (Project > Site > Building > Storey > element > its parts,
+// from IfcRelAggregates and IfcRelContainedInSpatialStructure), each element's
+// colour and transparency from its styles, its IFC type as the node's rule and
+// its GlobalId as the node's source id (docs/design.md: Scene model).
+#pragma once
+#include "toolkit/model/model.h"
+
+#include <string>
+
+namespace boxlod {
+
+// The web-ifc module folder: $BOXLOD_WEB_IFC, else web-ifc-VERSION in the npm
+// cache folder ($BOXLOD_NPM_CACHE, else $XDG_CACHE_HOME or ~/.cache, /boxlod/npm);
+// "" when it is not there.
+std::string web_ifc_module();
+
+// The schema a STEP file's header names (FILE_SCHEMA(('IFC4'))), upper case; "" if none.
+std::string ifc_schema(const std::string& header);
+
+Model import_ifc_with_web_ifc(const std::string& path);
+
+}  // namespace boxlod

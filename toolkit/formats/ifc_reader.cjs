@@ -1,0 +1,101 @@
+// Reads an IFC file (2x3, 4, 4x3) with web-ifc for boxlod (toolkit/formats/ifc_io.h),
+// which runs it under node in a child process and embeds this file in its
+// program. Usage: node - WEB_IFC_MODULE IFC_FILE; the answer goes to file
+// descriptor 3 (web-ifc logs to stdout and stderr): an 8-byte little-endian
+// length, a JSON header of that length, then the vertex and index bytes the
+// header's pieces point into. On failure the header is {"error": "..."}.
+'use strict';
+const fs = require('fs');
+
+function answer(header, chunks) {
+  const json = Buffer.from(JSON.stringify(header));
+  const length = Buffer.alloc(8);
+  length.writeBigUInt64LE(BigInt(json.length));
+  for (const bytes of [length, json, ...chunks]) {
+    for (let done = 0; done < bytes.length;) done += fs.writeSync(3, bytes, done);
+  }
+}
+
+// Nodes of the spatial structure (IfcRelAggregates and
+// IfcRelContainedInSpatialStructure: Project > Site > Building > Storey >
+// element > its parts), parents first, with names and GlobalIds.
+function spatialNodes(api, model, tree) {
+  const nodes = [], indexOf = new Map();
+  const pending = [[tree, -1, 0]];
+  while (pending.length > 0) {
+    const [node, parent, depth] = pending.pop();
+    if (indexOf.has(node.expressID) || depth > 200) continue;  // a cycle, or deeper than any real building
+    const line = api.GetLine(model, node.expressID);
+    indexOf.set(node.expressID, nodes.length);
+    nodes.push({
+      name: line && line.Name && typeof line.Name.value === 'string' ? line.Name.value : '',
+      type: api.GetNameFromTypeCode(api.GetLineType(model, node.expressID)) || '',
+      global_id: line && line.GlobalId && typeof line.GlobalId.value === 'string' ? line.GlobalId.value : '',
+      parent,
+    });
+    const index = nodes.length - 1;
+    for (let c = node.children.length - 1; c >= 0; --c) pending.push([node.children[c], index, depth + 1]);
+  }
+  return {nodes, indexOf};
+}
+
+// Each placed geometry in world coordinates (y up, as web-ifc gives them),
+// relative to web-ifc's coordination origin where the model lies far from its own.
+function pieces(api, model, nodes, indexOf, shift) {
+  const out = [], chunks = [];
+  let offset = 0;
+  api.StreamAllMeshes(model, (mesh) => {
+    let node = indexOf.get(mesh.expressID);
+    if (node === undefined) {  // an element outside the spatial structure: under the root
+      const line = api.GetLine(model, mesh.expressID);
+      node = nodes.length;
+      indexOf.set(mesh.expressID, node);
+      nodes.push({name: line && line.Name && typeof line.Name.value === 'string' ? line.Name.value : '',
+                  type: api.GetNameFromTypeCode(api.GetLineType(model, mesh.expressID)) || '',
+                  global_id: line && line.GlobalId && typeof line.GlobalId.value === 'string' ? line.GlobalId.value : '',
+                  parent: 0});
+    }
+    for (let g = 0; g < mesh.geometries.size(); ++g) {
+      const placed = mesh.geometries.get(g);
+      const geometry = api.GetGeometry(model, placed.geometryExpressID);
+      const data = api.GetVertexArray(geometry.GetVertexData(), geometry.GetVertexDataSize());
+      const indices = api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize());
+      const t = placed.flatTransformation;  // column-major 4x4
+      const count = data.length / 6;
+      const positions = new Float32Array(count * 3), normals = new Float32Array(count * 3);
+      for (let v = 0; v < count; ++v) {
+        const [x, y, z, nx, ny, nz] = data.subarray(v * 6, v * 6 + 6);
+        for (let r = 0; r < 3; ++r) {
+          positions[v * 3 + r] = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r] - shift[r];
+          normals[v * 3 + r] = t[r] * nx + t[4 + r] * ny + t[8 + r] * nz;
+        }
+      }
+      geometry.delete();
+      const c = placed.color;
+      const bytes = [Buffer.from(positions.buffer), Buffer.from(normals.buffer), Buffer.from(new Uint32Array(indices).buffer)];
+      out.push({node, color: [c.x, c.y, c.z, c.w], positions: [offset, count], normals: [offset + bytes[0].length, count],
+                indices: [offset + bytes[0].length + bytes[1].length, indices.length]});
+      for (const b of bytes) { chunks.push(b); offset += b.length; }
+    }
+  });
+  return {out, chunks};
+}
+
+(async () => {
+  try {
+    const WebIFC = require(process.argv[2]);
+    const api = new WebIFC.IfcAPI();
+    await api.Init();
+    const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: true});
+    if (model < 0) throw new Error('web-ifc cannot open it');
+    // web-ifc moves a far model to its origin; a near one is moved back here, exactly.
+    const moved = api.GetCoordinationMatrix(model).slice(12, 15);
+    const far = Math.hypot(...moved) > 1e4;
+    const shift = far ? [0, 0, 0] : moved;
+    const {nodes, indexOf} = spatialNodes(api, model, await api.properties.getSpatialStructure(model));
+    const {out, chunks} = pieces(api, model, nodes, indexOf, shift);
+    answer({schema: api.GetModelSchema(model), origin: far ? moved.map((m) => -m) : [0, 0, 0], nodes, pieces: out}, chunks);
+  } catch (error) {
+    answer({error: String(error && error.message ? error.message : error)}, []);
+  }
+})();
