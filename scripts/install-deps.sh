@@ -51,6 +51,9 @@ cluster_packages=(slurmctld slurmd slurm-client munge)
 
 wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}" "${cluster_packages[@]}")
 # make demo: the program, the FZK-Haus and the plot; no tests, benchmarks, viewer test or LaTeX.
+# IFC 4 is read by web-ifc under Node.js (toolkit/formats/ifc_io.h), installed below.
+program_packages+=(nodejs)
+command -v npm > /dev/null 2>&1 || program_packages+=(npm)
 [ "${1:-}" = demo ] && wanted=("${program_packages[@]}" assimp-testmodels python3-matplotlib)
 [ "${1:-}" = bench ] && wanted+=("${bench_packages[@]}")
 [ "${1:-}" = fuzz ] && wanted+=("${fuzz_packages[@]}")
@@ -61,18 +64,28 @@ for package in "${wanted[@]}"; do
     missing+=("$package")
   fi
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
-
-echo "install-deps: installing missing Debian packages: ${missing[*]}" >&2
-if [ "$(id -u)" -eq 0 ]; then
-  run=()
-elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
-  run=(sudo -n)
-else
-  echo "install-deps: need root or password-less sudo to install: ${missing[*]}" >&2
-  echo "install-deps: run as root: apt-get install -y ${missing[*]}" >&2
-  exit 1
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing missing Debian packages: ${missing[*]}" >&2
+  if [ "$(id -u)" -eq 0 ]; then
+    run=()
+  elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    run=(sudo -n)
+  else
+    echo "install-deps: need root or password-less sudo to install: ${missing[*]}" >&2
+    echo "install-deps: run as root: apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${run[@]}" apt-get update -qq
+  "${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 fi
-export DEBIAN_FRONTEND=noninteractive
-"${run[@]}" apt-get update -qq
-"${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+
+# web-ifc, pinned (toolkit/formats/web_ifc_version.txt), from npm into the
+# npm cache folder the program looks in (toolkit/formats/ifc_io.h), never committed.
+web_ifc_version=$(cat "$(dirname "$0")/../toolkit/formats/web_ifc_version.txt")
+web_ifc=${BOXLOD_NPM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/boxlod/npm}/web-ifc-$web_ifc_version
+if [ ! -f "$web_ifc/node_modules/web-ifc/web-ifc-api-node.js" ]; then
+  echo "install-deps: installing web-ifc $web_ifc_version from npm into $web_ifc" >&2
+  mkdir -p "$web_ifc"
+  npm install --prefix "$web_ifc" --no-audit --no-fund --loglevel=error "web-ifc@$web_ifc_version" >&2
+fi

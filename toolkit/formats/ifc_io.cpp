@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <tuple>
+#include <unordered_set>
 
 namespace boxlod {
 namespace {
@@ -117,6 +118,39 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
 
 }  // namespace
 
+void check_ifc_references(std::string_view bytes, const std::string& path) {
+    std::unordered_set<std::uint64_t> defined;
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> used;  // (entity, the one it names)
+    std::uint64_t entity = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const char c = bytes[i];
+        if (c == '\'') {  // a string: '' inside it is a quote
+            for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
+                if (bytes[i] == '\'') ++i;
+        } else if (c == '/' && i + 1 < bytes.size() && bytes[i + 1] == '*') {
+            const std::size_t end = bytes.find("*/", i + 2);
+            i = end == std::string_view::npos ? bytes.size() : end + 1;
+        } else if (c == '#') {
+            std::uint64_t id = 0;
+            std::size_t digits = 0;
+            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])) && digits < 18; ++digits, ++i)
+                id = id * 10 + std::uint64_t(bytes[i + 1] - '0');
+            if (digits == 0) throw_input_error(path, "byte " + std::to_string(i), "'#' without an entity number");
+            std::size_t next = i + 1;
+            while (next < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[next]))) ++next;
+            if (next < bytes.size() && bytes[next] == '=') {
+                if (!defined.insert(id).second) throw_input_error(path, "#" + std::to_string(id), "defined twice");
+                entity = id;
+            } else {
+                used.emplace_back(entity, id);
+            }
+        }
+    }
+    for (const auto& [from, to] : used)
+        if (!defined.count(to))
+            throw_input_error(path, "#" + std::to_string(from), "names #" + std::to_string(to) + ", which the file does not define");
+}
+
 std::string web_ifc_module() {
     std::string folder;
     if (const char* module = std::getenv("BOXLOD_WEB_IFC"); module && *module) {
@@ -144,6 +178,7 @@ std::string ifc_schema(const std::string& header) {
 
 Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
+    check_ifc_references(read_input_file(path, "IFC file"), path);
     const std::string module = web_ifc_module();
     if (module.empty()) throw_input_error(path, "", "reading IFC 4 needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
     // A minute, and a second more per megabyte; no address-space limit: a

@@ -9,6 +9,7 @@
 #include "toolkit/model/model.h"
 
 #include <string>
+#include <string_view>
 
 namespace boxlod {
 
@@ -19,6 +20,11 @@ std::string web_ifc_module();
 
 // The schema a STEP file's header names (FILE_SCHEMA(('IFC4'))), upper case; "" if none.
 std::string ifc_schema(const std::string& header);
+
+// Every #N an entity names is one the file defines (ISO 10303-21), each
+// defined once: web-ifc leaves out what a dangling reference leads to without
+// a word. Throws InputError naming the entity.
+void check_ifc_references(std::string_view bytes, const std::string& path);
 
 Model import_ifc_with_web_ifc(const std::string& path);
 

@@ -39,11 +39,9 @@ function spatialNodes(api, model, tree) {
   return {nodes, indexOf};
 }
 
-// Each placed geometry in world coordinates (y up, as web-ifc gives them),
-// relative to web-ifc's coordination origin where the model lies far from its own.
-function pieces(api, model, nodes, indexOf, shift) {
-  const out = [], chunks = [];
-  let offset = 0;
+// Each placed geometry in world coordinates (y up, as web-ifc gives them), in double.
+function pieces(api, model, nodes, indexOf) {
+  const out = [];
   api.StreamAllMeshes(model, (mesh) => {
     let node = indexOf.get(mesh.expressID);
     if (node === undefined) {  // an element outside the spatial structure: under the root
@@ -59,25 +57,51 @@ function pieces(api, model, nodes, indexOf, shift) {
       const placed = mesh.geometries.get(g);
       const geometry = api.GetGeometry(model, placed.geometryExpressID);
       const data = api.GetVertexArray(geometry.GetVertexData(), geometry.GetVertexDataSize());
-      const indices = api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize());
+      const indices = new Uint32Array(api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize()));
       const t = placed.flatTransformation;  // column-major 4x4
       const count = data.length / 6;
-      const positions = new Float32Array(count * 3), normals = new Float32Array(count * 3);
+      const positions = new Float64Array(count * 3), normals = new Float32Array(count * 3);
       for (let v = 0; v < count; ++v) {
         const [x, y, z, nx, ny, nz] = data.subarray(v * 6, v * 6 + 6);
         for (let r = 0; r < 3; ++r) {
-          positions[v * 3 + r] = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r] - shift[r];
+          positions[v * 3 + r] = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r];
           normals[v * 3 + r] = t[r] * nx + t[4 + r] * ny + t[8 + r] * nz;
         }
       }
       geometry.delete();
       const c = placed.color;
-      const bytes = [Buffer.from(positions.buffer), Buffer.from(normals.buffer), Buffer.from(new Uint32Array(indices).buffer)];
-      out.push({node, color: [c.x, c.y, c.z, c.w], positions: [offset, count], normals: [offset + bytes[0].length, count],
-                indices: [offset + bytes[0].length + bytes[1].length, indices.length]});
-      for (const b of bytes) { chunks.push(b); offset += b.length; }
+      out.push({node, color: [c.x, c.y, c.z, c.w], positions, normals, indices});
     }
   });
+  return out;
+}
+
+// A model far from its file's origin (a georeferenced one) is moved, in
+// double, to the middle of its bounds in whole units, which the answer names
+// as its origin; a near one keeps the file's coordinates.
+function originOf(placed) {
+  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+  for (const piece of placed)
+    for (let i = 0; i < piece.positions.length; ++i) {
+      low[i % 3] = Math.min(low[i % 3], piece.positions[i]);
+      high[i % 3] = Math.max(high[i % 3], piece.positions[i]);
+    }
+  const middle = low.map((l, r) => (l + high[r]) / 2);
+  return placed.length > 0 && Math.hypot(...middle) > 1e4 ? middle.map(Math.round) : [0, 0, 0];
+}
+
+function packed(placed, origin) {
+  const out = [], chunks = [];
+  let offset = 0;
+  for (const piece of placed) {
+    const positions = new Float32Array(piece.positions.length);
+    for (let i = 0; i < positions.length; ++i) positions[i] = piece.positions[i] - origin[i % 3];
+    const bytes = [Buffer.from(positions.buffer), Buffer.from(piece.normals.buffer), Buffer.from(piece.indices.buffer)];
+    const count = positions.length / 3;
+    out.push({node: piece.node, color: piece.color, positions: [offset, count], normals: [offset + bytes[0].length, count],
+              indices: [offset + bytes[0].length + bytes[1].length, piece.indices.length]});
+    for (const b of bytes) { chunks.push(b); offset += b.length; }
+  }
   return {out, chunks};
 }
 
@@ -86,15 +110,13 @@ function pieces(api, model, nodes, indexOf, shift) {
     const WebIFC = require(process.argv[2]);
     const api = new WebIFC.IfcAPI();
     await api.Init();
-    const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: true});
+    const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
     if (model < 0) throw new Error('web-ifc cannot open it');
-    // web-ifc moves a far model to its origin; a near one is moved back here, exactly.
-    const moved = api.GetCoordinationMatrix(model).slice(12, 15);
-    const far = Math.hypot(...moved) > 1e4;
-    const shift = far ? [0, 0, 0] : moved;
     const {nodes, indexOf} = spatialNodes(api, model, await api.properties.getSpatialStructure(model));
-    const {out, chunks} = pieces(api, model, nodes, indexOf, shift);
-    answer({schema: api.GetModelSchema(model), origin: far ? moved.map((m) => -m) : [0, 0, 0], nodes, pieces: out}, chunks);
+    const placed = pieces(api, model, nodes, indexOf);
+    const origin = originOf(placed);
+    const {out, chunks} = packed(placed, origin);
+    answer({schema: api.GetModelSchema(model), origin, nodes, pieces: out}, chunks);
   } catch (error) {
     answer({error: String(error && error.message ? error.message : error)}, []);
   }
