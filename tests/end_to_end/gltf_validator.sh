@@ -45,6 +45,10 @@ grep -q '^flat_faces = [1-9]' "$work/flat_level/house_lod.stats.txt" || { echo "
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)
 quiet "$boxlod" build "$fzk" --chain -o "$work/fzk_chain.glb" --resolution 256
+/usr/bin/python3 "$here/make_district.py" "$work/district.city.json" 4     # CityJSON: the origin as the root's translation
+quiet "$boxlod" convert "$work/district.city.json" -o "$work/district.glb"
+quiet "$boxlod" build "$work/district.city.json" --chain -o "$work/district_chain.glb" --resolution 256
+quiet "$boxlod" convert "$here/../data/ifc/two_storeys.ifc" -o "$work/two_storeys.glb"   # IFC 4 through web-ifc
 quiet "$boxlod" generate --city 2 -o "$work/city2.glb"                      # a city's 3D Tiles content
 quiet "$boxlod" tiles "$work/city2.glb" -o "$work/tiles" --resolution 256
 
@@ -78,7 +82,8 @@ echo "gltf_validator: $chains of Debian's assimp test models converted, read bac
 
 cd "$work"
 node "$here/gltf_validator.mjs" "$cache/node_modules/gltf-validator" house.glb manual.gltf city.glb fzk.glb fzk.gltf \
-  house_converted.gltf specular_glossiness.glb specular.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf flat_level/house_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb
+  house_converted.gltf specular_glossiness.glb specular.glb level/house_lod.gltf fzk_level/AC14-FZK-Haus_lod.gltf flat_level/house_lod.gltf chain/house.gltf fzk_chain.glb tiles/*.glb \
+  district.glb district_chain.glb two_storeys.glb
 # convert keeps the source's specular-glossiness material, factors as they were.
 node -e '
 const b = require("fs").readFileSync(process.argv[1]);
