@@ -4,6 +4,7 @@
 #include "data_gen/grammar_parser.h"
 #include "base/random.h"
 #include "data_gen/samples.h"
+#include "toolkit/model/model_subtree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -147,11 +148,22 @@ Eigen::Vector3f street_along_x(const CityPlan& plan, int r) {
 }
 
 Model city_streets(const CityPlan& plan) {
+    if (!plan.given_designs.empty()) {
+        Model model;
+        model.source = "city";
+        add_node(model, -1, "City");
+        return model;
+    }
     MaterialCache materials;
     return make_streets(plan, materials);
 }
 
 Model design_model(const CityPlan& plan, std::size_t design, const std::string& name) {
+    if (!plan.given_designs.empty()) {
+        Model model = plan.given_designs[design];
+        model.nodes[0].name = name;
+        return model;
+    }
     Model model;
     model.source = "city";
     MaterialCache materials;
@@ -168,5 +180,29 @@ Model generate_city(const CityOptions& options) {
 }
 
 double city_file_memory(int buildings) { return 16e6 * double(buildings); }
+
+CityPlan plan_from_model(const Model& city) {
+    CityPlan plan;
+    plan.options.buildings = 0;
+    Bounds whole;
+    for (int node : object_nodes(city)) {
+        Model design = object_model(city, node);
+        const Bounds bounds = model_bounds(design);
+        const Eigen::Vector3f center(bounds.center().x(), bounds.min.y(), bounds.center().z());
+        for (Node& n : design.nodes) {
+            for (Primitive& p : n.primitives)
+                for (Eigen::Vector3f& position : p.positions) position -= center;
+            if (n.scope) n.scope->center -= center;
+        }
+        plan.lots.push_back({design.nodes[0].name, plan.given_designs.size(), center});
+        plan.designs.push_back({});
+        plan.given_designs.push_back(std::move(design));
+        plan.cell = plan.cell.cwiseMax(Eigen::Vector2f(bounds.size().x(), bounds.size().z()));
+        whole.add(bounds.min), whole.add(bounds.max);
+    }
+    plan.options.buildings = int(plan.lots.size());
+    plan.size = Eigen::Vector2f(whole.size().x(), whole.size().z());
+    return plan;
+}
 
 }  // namespace boxlod

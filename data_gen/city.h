@@ -49,8 +49,14 @@ struct CityPlan {
     std::vector<CityLot> lots;
     Eigen::Vector2f cell = Eigen::Vector2f::Zero();  // a lot's cell: the largest lot and a margin
     Eigen::Vector2f size = Eigen::Vector2f::Zero();  // the whole city, streets included
+    // A city read from a file: its objects as designs, each centred on its lot (no grammar, no streets).
+    std::vector<Model> given_designs;
 };
 CityPlan plan_city(const CityOptions& options);
+// A city model read from a file (a CityJSON district, a glTF city): each
+// object (toolkit/model/model_subtree.h: object_nodes) is a design of its own,
+// moved to the origin, on a lot at the middle of its footprint, on its ground.
+CityPlan plan_from_model(const Model& city);
 int city_rows(const CityPlan& plan);
 int city_columns(const CityPlan& plan);
 // The middle of street r along x (r = 0..rows, in order of z), on the ground;
@@ -58,7 +64,7 @@ int city_columns(const CityPlan& plan);
 Eigen::Vector3f street_along_x(const CityPlan& plan, int r);
 
 // The root "City" holding a "Streets" node only: a "Street" node per street
-// segment and a paved "Block" per lot, with geometry.
+// segment and a paved "Block" per lot, with geometry (none for a city read from a file).
 Model city_streets(const CityPlan& plan);
 
 // A design's derivation tree on a lot centred at the origin, its root named

@@ -133,10 +133,17 @@ std::vector<CameraPose> line_path(const Eigen::Vector3f& start, const Eigen::Vec
     return poses;
 }
 
+void check_city_path(const std::string& name, const CityPlan& city) {
+    if (name == "street" && !city.given_designs.empty())
+        throw InputError("--path street: a city read from a file has no streets of boxlod's grid (orbit, or a keyframe file)");
+    if (name != "street" && name != "orbit")
+        throw InputError("--path: unknown built-in path '" + name + "' (orbit, street, or a keyframe file)");
+}
+
 std::vector<CameraPose> city_path(const std::string& name, const CityPlan& city, const Bounds& bounds,
                                   float fovy_degrees, int frames) {
+    check_city_path(name, city);
     if (name == "street") return street_path(city, frames);
-    if (name != "orbit") throw InputError("--path: unknown built-in path '" + name + "' (orbit, street, or a keyframe file)");
     const Framing framing = framing_of(bounds);
     float distance = framing_distance(framing, fovy_degrees);
     const double elevation = M_PI / 6;  // 30 degrees above the horizon

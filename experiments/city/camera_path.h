@@ -47,7 +47,9 @@ std::vector<CameraPose> line_path(const Eigen::Vector3f& start, const Eigen::Vec
 // with `fovy_degrees`: `orbit` circles the city at the distance that frames it, 30
 // degrees above the horizon, looking at its centre; `street` walks at eye height (2 m)
 // down the first street along x with lots on both sides (the first one if there is only
-// one row), end to end, looking ahead. Throws InputError for another name.
+// one row), end to end, looking ahead (not in a city read from a file). Throws
+// InputError for another name, as check_city_path does before anything is built.
+void check_city_path(const std::string& name, const CityPlan& city);
 std::vector<CameraPose> city_path(const std::string& name, const CityPlan& city, const Bounds& bounds,
                                   float fovy_degrees, int frames);
 

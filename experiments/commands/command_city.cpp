@@ -10,6 +10,7 @@
 #include "toolkit/metrics/flip.h"
 #include "experiments/city/fly_through.h"
 #include "toolkit/commands/lod_options.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
 #include "toolkit/selection/strategy_text.h"
 
@@ -23,7 +24,7 @@ namespace boxlod {
 namespace {
 
 // The LoD parameters a city takes from the command line (the sizing ones are set per level).
-const std::vector<std::string> city_lod_parameters{"level_mode", "wanted_levels", "keep_small_subtrees",
+const std::vector<std::string> city_lod_parameters{"city_lod", "level_mode", "wanted_levels", "keep_small_subtrees",
                                                    "keep_cheaper_subtrees"};
 
 const std::string prefix = "boxlod city: ";
@@ -132,8 +133,17 @@ int run_city(const Arguments& arguments) {
     bool built_in = path_name == "orbit" || path_name == "street";
     std::vector<Keyframe> keys;
     if (!built_in) keys = load_keyframes(path_name);
-    CityPlan plan = plan_city(city);
-    check_memory("boxlod city: a fly-through of " + std::to_string(city.buildings) + " buildings",
+    CityPlan plan;
+    if (arguments.positionals.empty()) {
+        plan = plan_city(city);
+    } else {  // a city from a file: its objects are the buildings
+        for (const char* generated : {"buildings", "designs", "seed"})
+            require(!arguments.has(generated), std::string("--") + generated + ": a city read from " +
+                                                   arguments.positionals[0] + " has its own buildings");
+        plan = plan_from_model(load_model(arguments.positionals[0], {.chain_level = 0, .city_lod = options.levels.city_lod}));
+    }
+    if (built_in) check_city_path(path_name, plan);
+    check_memory("boxlod city: a fly-through of " + std::to_string(plan.lots.size()) + " buildings",
                  fly_through_memory(plan, options));
     CityLevels levels = build_city_levels(plan, options, needs_measured_errors(options.strategy), stderr);
     std::vector<CameraPose> path =
@@ -178,14 +188,15 @@ Subcommand city_subcommand() {
         threads_option(),
         json_option(),
     });
-    return {{"city", "",
-             "Fly through a generated city with run-time LoD selection. Every building gets its own LoD, built once "
+    return {{"city", "[CITY]",
+             "Fly through a city with run-time LoD selection: a generated one, or CITY, a model whose root's children "
+             "are its buildings (a CityJSON district's Buildings, a glTF city), without streets. Every building gets its own LoD, built once "
              "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
              "(with hysteresis, optionally under a face budget). Writes OUTDIR/frames/frame_NNNN.png, "
              "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
              "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
              "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
-             options, 0, 0},
+             options, 0, 1},
             run_city};
 }
 

@@ -120,3 +120,33 @@ TEST(City, LotsDrawFromTheDesignsAndShowThemInPlace) {
 }
 
 }  // namespace boxlod
+
+namespace boxlod {
+namespace {
+
+// A generated city read back as a file city: its lots are the root's children
+// with geometry (the streets too, as one object), each centred on its lot.
+TEST(City, AModelsObjectsAreTheLotsOfAFileCity) {
+    CityOptions options;
+    options.buildings = 4;
+    const Model city = generate_city(options);
+    const CityPlan plan = plan_from_model(city);
+    ASSERT_EQ(plan.lots.size(), plan.given_designs.size());
+    EXPECT_EQ(plan.lots.size(), city.nodes[0].children.size());
+    EXPECT_TRUE(city_streets(plan).nodes[0].primitives.empty());
+    Bounds whole = model_bounds(city);
+    for (std::size_t i = 0; i < plan.lots.size(); ++i) {
+        const Model design = design_model(plan, plan.lots[i].design, "d");
+        EXPECT_EQ(design.nodes[0].name, "d");
+        const Bounds bounds = model_bounds(design);
+        // Centred on its lot, standing on the ground plane at y = 0.
+        EXPECT_NEAR(bounds.center().x(), 0, 1e-3);
+        EXPECT_NEAR(bounds.center().z(), 0, 1e-3);
+        EXPECT_NEAR(bounds.min.y(), 0, 1e-3);
+        EXPECT_TRUE(((bounds.max + plan.lots[i].center).array() <= whole.max.array() + 1e-3f).all());
+    }
+    EXPECT_NEAR(plan.size.x(), whole.size().x(), 1e-3);
+}
+
+}  // namespace
+}  // namespace boxlod

@@ -153,6 +153,10 @@ printf '# a dolly\n0  100 20 100  0 0 0\n1  40 10 40  0 0 0\n' > "$work/keys.txt
 check "a second city run replaces the first's frames whole" bash -c "'$boxlod' city --buildings 1 --strategy distance:40,80,160 --frames 2 --width 32 --height 24 --error-every 0 -o '$work/city1' >/dev/null 2>&1 && test \$(ls '$work/city1/frames' | wc -l) = 2 && test \$(wc -l < '$work/city1/frames.csv') = 3"
 check "city along a keyframe file succeeds" test "$(status_of "$boxlod" city --buildings 1 --strategy texel --path "$work/keys.txt" --frames 3 --width 64 --height 48 --budget 500 --json -o "$work/city_keys")" = 0
 check "city --json is a JSON object" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['frames']==3 and d['faces_max']<=500 else 1)"
+# A city from a CityJSON file: its Buildings are the fly-through's buildings.
+/usr/bin/python3 "$(dirname "$0")/make_district.py" "$work/district.city.json" 6
+check "city from a CityJSON district succeeds" test "$(status_of "$boxlod" city "$work/district.city.json" --frames 3 --width 64 --height 48 --error-every 0 -o "$work/city_district")" = 0
+check "city from a CityJSON district flies over its 6 buildings" bash -c "grep -qx 'buildings = 6' '$work/out' && test \$(wc -l < '$work/city_district/frames.csv') = 4"
 bad "city with a bad strategy" city --buildings 1 --strategy distance:80,40 -o "$work/city_bad"
 check "the strategy error names the option" grep -q "^boxlod: --strategy: distance bands: thresholds must increase strictly\$" "$work/err"
 bad "city with an unknown strategy" city --buildings 1 --strategy sideways -o "$work/city_bad"

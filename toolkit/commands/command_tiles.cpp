@@ -54,43 +54,6 @@ TileObject build_object(const Model& model, int index, const LodParameters& para
     return object;
 }
 
-bool has_geometry_below(const Model& model, int node) {
-    for (std::vector<int> pending{node}; !pending.empty();) {
-        const Node& n = model.nodes[std::size_t(pending.back())];
-        if (n.has_geometry()) return true;
-        pending.pop_back();
-        pending.insert(pending.end(), n.children.begin(), n.children.end());
-    }
-    return false;
-}
-
-// The objects of a tileset: each child of the root with geometry below it; the
-// root's own geometry (-1) besides them (a ground under the buildings), or the
-// whole model (0) where it is all on the root (a single building from a file).
-std::vector<int> tile_objects(const Model& city) {
-    std::vector<int> nodes;
-    for (int child : city.nodes[0].children)
-        if (has_geometry_below(city, child)) nodes.push_back(child);
-    if (city.nodes[0].has_geometry()) nodes.insert(nodes.begin(), nodes.empty() ? 0 : -1);
-    return nodes;
-}
-
-// Object `node` of tile_objects as a model of its own.
-Model tile_object(const Model& city, int node) {
-    if (node >= 0) return extract_subtree(city, node);
-    Model model;
-    keep_provenance(city, model);
-    const Node& root = city.nodes[0];
-    const int n = add_node(model, -1, root.name);
-    model.nodes[std::size_t(n)].rule = root.rule, model.nodes[std::size_t(n)].scope = root.scope;
-    MaterialCopier copier{city, model};
-    for (Primitive primitive : root.primitives) {
-        primitive.material = copier.material(primitive.material);
-        model.nodes[std::size_t(n)].primitives.push_back(std::move(primitive));
-    }
-    return model;
-}
-
 // What `tiles` writes into its folder: the tileset and its tiles.
 bool is_tileset_file(const std::string& name) {
     static const std::regex tile(R"(object_\d+_L\d+\.glb)");
@@ -109,8 +72,8 @@ int run_tiles(const Arguments& a) {
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
     const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(), city.origin.y());  // y up to the file's z up
     city.origin = Eigen::Vector3d::Zero();
-    const std::vector<int> nodes = tile_objects(city);
-    start_lod(tile_object(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
+    const std::vector<int> nodes = object_nodes(city);
+    start_lod(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     const double error = switch_error(a);
     // The new tileset replaces a folder holding an old one in one step, so no
     // client ever loads a mix of two tilesets' tiles.
@@ -118,7 +81,7 @@ int run_tiles(const Arguments& a) {
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), threads_from(a), [&](std::size_t k) {
-        objects[k] = build_object(tile_object(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
+        objects[k] = build_object(object_model(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
     });
     write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin, source_origin));
     files.commit();

@@ -60,4 +60,42 @@ std::vector<int> subtree_nodes(const Model& model, int root) {
     return nodes;
 }
 
+namespace {
+
+bool has_geometry_below(const Model& model, int node) {
+    for (std::vector<int> pending{node}; !pending.empty();) {
+        const Node& n = model.nodes[std::size_t(pending.back())];
+        if (n.has_geometry()) return true;
+        pending.pop_back();
+        pending.insert(pending.end(), n.children.begin(), n.children.end());
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<int> object_nodes(const Model& city) {
+    std::vector<int> nodes;
+    for (int child : city.nodes[0].children)
+        if (has_geometry_below(city, child)) nodes.push_back(child);
+    if (city.nodes[0].has_geometry()) nodes.insert(nodes.begin(), nodes.empty() ? 0 : -1);
+    return nodes;
+}
+
+Model object_model(const Model& city, int node) {
+    if (node >= 0) return extract_subtree(city, node);
+    Model model;
+    keep_provenance(city, model);
+    const Node& root = city.nodes[0];
+    const int n = add_node(model, -1, root.name);
+    model.nodes[std::size_t(n)].rule = root.rule;
+    model.nodes[std::size_t(n)].scope = root.scope;
+    MaterialCopier copier{city, model};
+    for (Primitive primitive : root.primitives) {
+        primitive.material = copier.material(primitive.material);
+        model.nodes[std::size_t(n)].primitives.push_back(std::move(primitive));
+    }
+    return model;
+}
+
 }  // namespace boxlod
