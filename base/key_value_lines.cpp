@@ -7,7 +7,16 @@
 #include <sstream>
 
 namespace boxlod {
+
 namespace {
+
+// A comment starts at a '#' that begins the line or follows a blank, so that
+// a value may hold one (a city file's object: district.city.json#house_3).
+std::size_t comment_start(const std::string& line) {
+    for (std::size_t at = line.find('#'); at != std::string::npos; at = line.find('#', at + 1))
+        if (at == 0 || line[at - 1] == ' ' || line[at - 1] == '\t') return at;
+    return std::string::npos;
+}
 
 std::string trim(const std::string& s) {
     std::size_t begin = s.find_first_not_of(" \t\r"), end = s.find_last_not_of(" \t\r");
@@ -29,7 +38,7 @@ std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const s
                 std::snprintf(byte, sizeof byte, "0x%02x", unsigned(c));
                 throw_input_error(file, "line " + std::to_string(number), std::string("not text (byte ") + byte + ")");
             }
-        std::string content = trim(raw.substr(0, raw.find('#')));
+        std::string content = trim(raw.substr(0, comment_start(raw)));
         if (content.empty()) continue;
         std::size_t equals = content.find('=');
         if (equals == std::string::npos) throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");

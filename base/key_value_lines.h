@@ -1,5 +1,6 @@
 // The plain-text files boxlod reads (parameter files, sweep configs): one
-// `key = value` per line, `#` starts a comment, blank lines are ignored.
+// `key = value` per line, `#` at a line's start or after a blank starts a
+// comment (a value may hold one: FILE#OBJECT), blank lines are ignored.
 #pragma once
 #include <string>
 #include <vector>

@@ -25,7 +25,9 @@
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/lod/chain.h"
+#include "toolkit/formats/cityjson_import.h"
 #include "toolkit/formats/model_io.h"
+#include "base/input_file.h"
 #include "toolkit/model/statistics.h"
 
 #include <algorithm>
@@ -44,6 +46,21 @@ namespace fs = std::filesystem;
 
 // A row key (CSV text already) extended by more fields.
 std::string extend_row(const std::string& key, const std::vector<std::string>& more) { return key + "," + csv_row(more); }
+
+// A CityJSON model's LoDs coarser than the one the sweep reads (its finest,
+// or city_lod), finest first; none for a sample or another format. `path`
+// may name one object (FILE#OBJECT).
+std::vector<std::string> coarser_file_lods(const SweepConfig& config, const std::string& path) {
+    std::string file = path;
+    std::error_code error;
+    if (const std::size_t hash = path.rfind('#'); hash != std::string::npos && !std::filesystem::exists(path, error))
+        file = path.substr(0, hash);
+    const std::string extension = lowercase_extension(file);
+    if (path.empty() || (extension != ".json" && extension != ".jsonl")) return {};
+    const std::vector<std::string> lods = cityjson_lods(file);
+    auto read = std::find(lods.begin(), lods.end(), config.lod.city_lod);
+    return {read == lods.end() ? (lods.empty() ? lods.end() : lods.begin() + 1) : read + 1, lods.end()};
+}
 
 Model load_sweep_model(const SweepModel& model) {
     if (!model.sample.empty()) return generate_building(sample_grammar(model.sample), BuildingOptions{});
@@ -124,7 +141,7 @@ struct ModelPlan {
     std::size_t groups = 0;
 };
 
-ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads) {
+ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::string& model_path, int threads) {
     ModelPlan plan;
     for (BoxKind kind : config.box_kinds) plan.boxes[kind] = node_boxes(model, kind, threads);
     for (LevelMode mode : config.level_modes)
@@ -142,7 +159,9 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, int threads)
             }
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
     for (Baseline baseline : config.baselines)
-        plan.groups += baseline == Baseline::single_box || baseline == Baseline::impostor ? 1 : plan.variants.front().levels.size();
+        plan.groups += baseline == Baseline::file_lods ? coarser_file_lods(config, model_path).size()
+                       : baseline == Baseline::single_box || baseline == Baseline::impostor ? 1
+                                                                                            : plan.variants.front().levels.size();
     return plan;
 }
 
@@ -394,6 +413,18 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
 
 // The impostor: one atlas per model, captured for texel = pixel at the nearest of the
 // distances; each view and distance draws the quad of the direction nearest its camera.
+// file-lods: each of a CityJSON model's LoDs coarser than the one read, a group of its own.
+void run_file_lods(ModelRun& run, SweepOutput& out, SweepReport& report, int obtained_levels) {
+    auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
+    const std::vector<std::string> lods = coarser_file_lods(run.config, run.entry.path);
+    for (std::size_t k = 0; k < lods.size(); ++k)
+        run_group(run, out, report, csv_row({run.entry.name, "file-lods", "-", "-", std::to_string(k + 1)}), one_slot, [&](int, int) {
+            Candidate c = candidate(load_model(run.entry.path, {.chain_level = 0, .city_lod = lods[k]}), {}, 0, obtained_levels);
+            c.variant = "LoD " + lods[k];
+            return c;
+        });
+}
+
 void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group, int level) {
     const SweepConfig& config = run.config;
     std::optional<ImpostorAtlas> atlas;
@@ -461,6 +492,10 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
             run_impostor(run, out, report, top_group, first.obtained_levels);
             continue;
         }
+        if (baseline == Baseline::file_lods) {
+            run_file_lods(run, out, report, first.obtained_levels);
+            continue;
+        }
         // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.
         const int alternatives = baseline == Baseline::simplification_best ? int(variants.size()) : 1;
         // Levels by byte budget: each simplified as finely as its budget allows (equal bytes, not equal triangles).
@@ -506,7 +541,7 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     merge_shards(out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
-        ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, threads); });
+        ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, config.models[m].path, threads); });
         ModelRun run{config, config.models[m], model, model_framing(model)};
         run.index = m;
         run.rows = plan.groups * rows_per_group(config);

@@ -7,6 +7,7 @@
 #include "base/key_value_lines.h"
 #include "base/parallel.h"
 #include "data_gen/samples.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/metrics/flip.h"
 #include "experiments/sweep/impostor.h"
 #include "toolkit/lod/parameter_file.h"
@@ -35,6 +36,9 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
     {Baseline::impostor, "impostor",
      "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing distance, "
      "one quad facing the direction nearest the camera"},
+    {Baseline::file_lods, "file-lods",
+     "a CityJSON model's own coarser LoDs (3DBAG's 1.3 and 1.2 below 2.2), read from the same file: the official "
+     "ladder; level k is the k-th below the one read, results.csv's baseline_variant names it (no rows for other formats)"},
 };
 
 }  // namespace
@@ -154,7 +158,16 @@ const std::vector<SweepKey>& sweep_keys() {
     using Folder = const std::filesystem::path&;
     static const std::vector<SweepKey> keys = {
         {"models", [](SweepConfig& c, const Line& l, Folder folder) {
-             for (const std::string& item : l.items()) c.models.push_back(model_entry(l, item, folder));
+             for (const std::string& item : l.items()) {
+                 if (!item.ends_with("#*")) {
+                     c.models.push_back(model_entry(l, item, folder));
+                     continue;
+                 }
+                 // FILE#*: each object of a city file, as FILE#OBJECT (toolkit/formats/model_io.h).
+                 const std::string file = item.substr(0, item.size() - 2);
+                 for (const std::string& object : object_names(load_model(model_entry(l, file, folder).path)))
+                     c.models.push_back(model_entry(l, file + "#" + object, folder));
+             }
          }},
         {"level_modes", [](SweepConfig& c, const Line& l, Folder) { c.level_modes = l.words(level_modes()); }},
         {"box_kinds", [](SweepConfig& c, const Line& l, Folder) { c.box_kinds = l.words(box_kinds()); }},

@@ -23,6 +23,9 @@ TEST(KeyValueLines, KeysValuesCommentsAndLineNumbers) {
     EXPECT_EQ(lines[1].key, "mode");
     EXPECT_EQ(lines[1].value, "normal");
     EXPECT_EQ(lines[2].value, "");
+    // A '#' inside a value is no comment: a city file's object.
+    const auto object = parse_key_value_lines("model = district.city.json#house_3 # the third\n", "p.txt");
+    EXPECT_EQ(object[0].value, "district.city.json#house_3");
 }
 
 // An editor's UTF-8 byte-order mark is no part of the first key; bytes that are no text are refused.

@@ -17,6 +17,23 @@ namespace boxlod {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+// The LoD of a geometry as the file spells it (numbers as their shortest text).
+std::string city_geometry_lod(const json& geometry) {
+    auto lod = geometry.find("lod");
+    if (lod == geometry.end()) return "";
+    if (lod->is_string()) return lod->get<std::string>();
+    if (!lod->is_number()) return "";
+    std::ostringstream text;
+    text << lod->get<double>();
+    return text.str();
+}
+
+double city_lod_number(const std::string& lod) {
+    char* end = nullptr;
+    const double value = std::strtod(lod.c_str(), &end);
+    return end != lod.c_str() && std::isfinite(value) ? value : -1;
+}
+
 void CityPlace::fail(const std::string& what) const {
     std::string where = place;
     while (!where.empty() && (where.back() == ' ' || where.back() == ':')) where.pop_back();
@@ -46,25 +63,8 @@ Eigen::Vector3f semantic_colour(const std::string& type) {
     return unnamed_colour;
 }
 
-// The LoD of a geometry as the file spells it (numbers as their shortest text).
-std::string lod_text(const json& geometry) {
-    auto lod = geometry.find("lod");
-    if (lod == geometry.end()) return "";
-    if (lod->is_string()) return lod->get<std::string>();
-    if (!lod->is_number()) return "";
-    std::ostringstream text;
-    text << lod->get<double>();
-    return text.str();
-}
-
-double lod_number(const std::string& lod) {
-    char* end = nullptr;
-    const double value = std::strtod(lod.c_str(), &end);
-    return end != lod.c_str() && std::isfinite(value) ? value : -1;
-}
-
 bool same_lod(const std::string& a, const std::string& b) {
-    return a == b || (lod_number(a) >= 0 && lod_number(a) == lod_number(b));
+    return a == b || (city_lod_number(a) >= 0 && city_lod_number(a) == city_lod_number(b));
 }
 
 // A value of the semantics, material or texture tree one level down: an
@@ -261,6 +261,16 @@ struct GeometryEmission {
     }
 };
 
+// Up: a roof; down: the ground; else a wall (the file's z is up).
+std::string facing_type(const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::size_t>& ring) {
+    std::vector<Eigen::Vector3d> points;
+    for (std::size_t v : ring) points.push_back(vertices[v] - vertices[ring[0]]);
+    const Eigen::Vector3d normal = newell_normal(points);
+    if (normal.z() > 0.5 * normal.norm()) return "RoofSurface";
+    if (normal.z() < -0.5 * normal.norm()) return "GroundSurface";
+    return "WallSurface";
+}
+
 std::vector<std::size_t> ring_indices(const CityPlace& at, const json& ring, std::size_t vertex_count) {
     if (!ring.is_array()) at.fail("a ring is not an array of vertex indices");
     std::vector<std::size_t> out;
@@ -307,7 +317,10 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
         material = int(index_in(at, *values.material, materials && materials->is_array() ? materials->size() : 0, "material index"));
     }
     const int model_texture = texture >= 0 ? texture_index(at, s, std::size_t(texture)) : -1;
-    const int model_material = material_index(at, s, material, model_texture, type);
+    // A surface that names no semantic type is coloured as the type its facing
+    // suggests, so that a LoD without semantics (3DBAG's 1.2 and 1.3) is
+    // drawn in the same colours as one with them.
+    const int model_material = material_index(at, s, material, model_texture, type.empty() ? facing_type(g.vertices, rings[0]) : type);
     Primitive& primitive = g.primitive(node, model_material);
     std::vector<std::vector<Eigen::Vector3d>> points;
     for (const auto& ring : rings) {
@@ -459,13 +472,13 @@ int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, c
     if (!geometries->is_array()) here.fail("'geometry' is not an array");
     double finest = -INFINITY;
     for (const json& geometry : *geometries) {
-        if (!lod_text(geometry).empty()) s.lods.insert(lod_text(geometry));
-        finest = std::max(finest, lod_number(lod_text(geometry)));
+        if (!city_geometry_lod(geometry).empty()) s.lods.insert(city_geometry_lod(geometry));
+        finest = std::max(finest, city_lod_number(city_geometry_lod(geometry)));
     }
     bool read = false;
     for (std::size_t g = 0; g < geometries->size(); ++g) {
-        const std::string own = lod_text((*geometries)[g]);
-        if (lod.empty() ? lod_number(own) != finest : !same_lod(own, lod)) continue;
+        const std::string own = city_geometry_lod((*geometries)[g]);
+        if (lod.empty() ? city_lod_number(own) != finest : !same_lod(own, lod)) continue;
         read_geometry(here.in("geometry " + std::to_string(g)), s, (*geometries)[g], node, *s.vertices);
         read = true;
     }

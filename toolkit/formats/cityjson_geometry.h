@@ -25,6 +25,11 @@ struct CityPlace {
     CityPlace in(const std::string& step) const { return {file, place + step + ": "}; }
 };
 
+// The LoD of a geometry as the file spells it (numbers as their shortest
+// text: 2 -> "2"), "" without one; and as a number (-1 if it is none).
+std::string city_geometry_lod(const nlohmann::json& geometry);
+double city_lod_number(const std::string& lod);
+
 // Reads objects into `model` one document at a time: start_part with the
 // document's vertices (in the file's coordinates) and appearance, then
 // add_object for each object, parents first; finish says what was left out.

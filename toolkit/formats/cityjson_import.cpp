@@ -214,4 +214,21 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
     return model;
 }
 
+std::vector<std::string> cityjson_lods(const std::string& path) {
+    std::set<std::string> lods;
+    for (const Part& part : read_parts(read_input_file(path, "CityJSON file"), path)) {
+        auto objects = part.document.find("CityObjects");
+        if (objects == part.document.end() || !objects->is_object()) continue;
+        for (const auto& [id, object] : objects->items()) {
+            auto geometries = object.is_object() ? object.find("geometry") : object.end();
+            if (geometries == object.end() || !geometries->is_array()) continue;
+            for (const json& geometry : *geometries)
+                if (geometry.is_object() && !city_geometry_lod(geometry).empty()) lods.insert(city_geometry_lod(geometry));
+        }
+    }
+    std::vector<std::string> out(lods.begin(), lods.end());
+    std::stable_sort(out.begin(), out.end(), [](const std::string& a, const std::string& b) { return city_lod_number(a) > city_lod_number(b); });
+    return out;
+}
+
 }  // namespace boxlod

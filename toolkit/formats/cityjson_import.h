@@ -13,6 +13,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace boxlod {
 
@@ -23,5 +24,8 @@ Model import_cityjson(const std::string& path, const std::string& lod = "");
 // The same from bytes; `path` names the file in messages and places its
 // texture files (CityJSONSeq when it ends in .jsonl).
 Model import_cityjson_bytes(std::string_view bytes, const std::string& path, const std::string& lod = "");
+
+// Every LoD the file's geometries have, finest first ("2.2", "1.3", "1.2" for 3DBAG).
+std::vector<std::string> cityjson_lods(const std::string& path);
 
 }  // namespace boxlod

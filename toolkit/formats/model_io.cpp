@@ -6,12 +6,16 @@
 #include "toolkit/formats/cityjson_import.h"
 #include "toolkit/formats/gltf_io.h"
 #include "toolkit/formats/ifc_io.h"
+#include "toolkit/model/model_subtree.h"
 
+#include <filesystem>
 #include <fstream>
 
 namespace boxlod {
 
 namespace {
+
+namespace fs = std::filesystem;
 
 // IFC 2x3 (and the older 2x) through assimp, whose reading the project's
 // measurements were made with; IFC 4 and 4x3, which assimp cannot read, through web-ifc.
@@ -21,9 +25,8 @@ bool read_by_web_ifc(const std::string& path) {
     return !ifc_schema(header).starts_with("IFC2X");
 }
 
-}  // namespace
-
-Model load_model(const std::string& path, const ReadOptions& options) {
+// The file itself, by its extension.
+Model load_file(const std::string& path, const ReadOptions& options) {
     check_input_file(path, "model file");
     std::string extension = lowercase_extension(path);
     if (extension == ".gltf" || extension == ".glb") return import_gltf(path, options.chain_level);
@@ -36,6 +39,33 @@ Model load_model(const std::string& path, const ReadOptions& options) {
         if (extension == known) return import_with_assimp(path);
     throw_input_error(path, "", "unknown model format '" + extension +
                                     "' (known: .gltf .glb .json .jsonl (CityJSON) .fbx .obj .dae .ply .off .3ds .ifc .stl .x3d .blend .ase .lwo .ms3d .x .3mf .ac)");
+}
+
+}  // namespace
+
+std::vector<std::string> object_names(const Model& city) {
+    std::vector<std::string> names;
+    for (int node : object_nodes(city)) names.push_back(node < 0 ? city.nodes[0].name : city.nodes[std::size_t(node)].name);
+    return names;
+}
+
+Model load_model(const std::string& path, const ReadOptions& options) {
+    std::error_code error;
+    const std::size_t hash = path.rfind('#');
+    if (hash == std::string::npos || fs::exists(path, error) || !fs::is_regular_file(path.substr(0, hash), error))
+        return load_file(path, options);
+    const std::string file = path.substr(0, hash), object = path.substr(hash + 1);
+    const Model city = load_file(file, options);
+    const std::vector<int> nodes = object_nodes(city);
+    const std::vector<std::string> names = object_names(city);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+        if (names[k] == object) {
+            Model one = object_model(city, nodes[k]);
+            one.source = path;
+            return one;
+        }
+    throw_input_error(file, "", "no object named '" + object + "' (" + std::to_string(names.size()) + " objects: " +
+                                    (names.empty() ? std::string("none") : names.front() + ", ...") + ")");
 }
 
 void save_model(const Model& model, const std::string& path) {

@@ -5,6 +5,7 @@
 #include "toolkit/model/model.h"
 
 #include <string>
+#include <vector>
 
 namespace boxlod {
 
@@ -14,7 +15,14 @@ struct ReadOptions {
     std::string city_lod;  // CityJSON: the LoD read ("": each object's finest; toolkit/formats/cityjson_import.h)
 };
 
+// `path` may name one object of a city file, FILE#OBJECT (a CityJSON
+// Building's id, a node name of a generated city's root's children): that
+// object alone (toolkit/model/model_subtree.h: object_model), at the file's
+// origin, when FILE exists and the whole path does not.
 Model load_model(const std::string& path, const ReadOptions& options = {});
+
+// The names of a city file's objects, for FILE#OBJECT (in the file's order).
+std::vector<std::string> object_names(const Model& city);
 void save_model(const Model& model, const std::string& path);  // .gltf or .glb
 
 }  // namespace boxlod

@@ -243,6 +243,31 @@ TEST(Sweep, ImpostorDrawsOneQuadPerViewFromOneAtlas) {
     EXPECT_NE(variants, "direction 0;direction 0;");  // +X+Y+Z and -Z are seen from different cells
 }
 
+// A CityJSON district's objects (FILE#*), each against its own coarser LoDs
+// read from the same file: two blocks at LoD 1.2 under gabled houses at 2.2.
+TEST(Sweep, FileLodsAreEachObjectsOwnCoarserLevels) {
+    const std::filesystem::path folder = test::scratch_folder("sweep_file_lods");
+    ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(BOXLOD_TEST_DATA) + "/../end_to_end/make_district.py " +
+                           (folder / "district.city.json").string() + " 2").c_str()),
+              0);
+    test::write_text(folder / "sweep.txt",
+                     "models = district.city.json#*\nlevel_modes = top-down\nlevels = 0\nviews = +X+Y+Z\nwidth = 64\n"
+                     "height = 48\nmetrics = flip\nresolution = 48\nbaselines = file-lods\n");
+    const SweepConfig config = load_sweep_config((folder / "sweep.txt").string());
+    ASSERT_EQ(config.models.size(), 2u);
+    EXPECT_EQ(config.models[1].name, "district.city.json#house_1");
+    SweepReport report = run_sweep(config, (folder / "out").string(), 2);
+    EXPECT_EQ(report.rows, 4u);  // per house: its level 0 and its LoD 1.2
+    Table t = read_csv(folder / "out" / "results.csv");
+    for (const char* house : {"house_0", "house_1"}) {
+        const auto original = row_of(t, std::string("district.city.json#") + house + ",top-down,expanded,linear,0,");
+        const auto rival = row_of(t, std::string("district.city.json#") + house + ",file-lods,-,-,1,");
+        EXPECT_EQ(rival[column(t, "baseline_variant")], "LoD 1.2");
+        EXPECT_LT(std::stoull(rival[column(t, "triangles")]), std::stoull(original[column(t, "triangles")]));  // a block, no roof
+        EXPECT_GT(std::stod(rival[column(t, "flip")]), 0);
+    }
+}
+
 // each-distance bakes an LoD per distance: four times the distance, about a sixteenth
 // of the texels; nearest draws the texels of the smallest distance everywhere.
 TEST(Sweep, SizingEachDistanceBakesFewerTexelsFartherAway) {

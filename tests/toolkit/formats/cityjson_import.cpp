@@ -4,6 +4,7 @@
 #include "test_support.h"
 #include "toolkit/formats/gltf_io.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/model/model_subtree.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -209,6 +210,31 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     const Model model = load_model(path.string());
     ASSERT_EQ(model.nodes[0].children.size(), 2u);
     EXPECT_EQ(model_bounds(model).size().x(), 6);
+}
+
+// FILE#OBJECT reads one object of a city file, at the whole file's origin;
+// a surface without semantics is coloured as its facing suggests.
+TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
+    const json objects = {
+        {"a", {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
+        {"b", {{"type", "Building"},
+               {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(4)}},
+                              {"semantics", {{"surfaces", {{{"type", "RoofSurface"}}}}, {"values", {0}}}}}}}}}};
+    const json vertices = {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0},
+                           {50000, 0, 0}, {51000, 0, 0}, {51000, 1000, 0}, {50000, 1000, 0}};
+    const fs::path path = test::scratch_folder("cityjson_object") / "two.city.json";
+    test::write_text(path, city(objects, vertices).dump());
+    const Model whole = load_model(path.string()), b = load_model(path.string() + "#b");
+    EXPECT_EQ(b.origin, whole.origin);
+    EXPECT_EQ(b.nodes[0].name, "b");
+    ASSERT_EQ(whole.nodes[2].name, "b");
+    EXPECT_EQ(model_bounds(b).min, model_bounds(extract_subtree(whole, 2)).min);  // where the district has it
+    EXPECT_NE(test::input_error_of([&] { load_model(path.string() + "#c"); }).find("no object named 'c' (2 objects: a, ...)"),
+              std::string::npos);
+    // a's square faces up without semantics: drawn in the roof colour of b's RoofSurface.
+    const Model a = load_model(path.string() + "#a");
+    EXPECT_EQ(a.materials[std::size_t(a.nodes[0].primitives[0].material)].base_color,
+              b.materials[std::size_t(b.nodes[1].primitives[0].material)].base_color);
 }
 
 // Bad input: one line naming the file and the place.
