@@ -34,8 +34,9 @@ matplotlib.rcParams.update({
 KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "distance", "render_mode"]
 # Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
-         "box-max-extent", "error-greedy", "hybrid", "simplification", "simplification-best", "cgal", "single-box", "impostor"]
-BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor")
+         "box-max-extent", "error-greedy", "hybrid", "simplification", "simplification-best", "cgal", "single-box", "impostor",
+         "file-lods"]
+BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor", "file-lods")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
@@ -151,6 +152,30 @@ def best_within(levels, mode, budget, metric="flip"):
         return None
     values = members[metric]
     return values.min() if LOWER_IS_BETTER[metric] else values.max()
+
+
+def level_means(results, model):
+    """One row per family, level and distance measured in every view of the model: mean covered FLIP
+    over the views, and the level's bytes (an impostor's or a best simplification's variant may differ
+    by view: its largest)."""
+    rows = results[results.model == model]
+    means = rows.groupby(["level_mode", "level", "distance"], as_index=False).agg(
+        error=("flip_covered", "mean"), measured=("flip_covered", "count"), bytes=("bytes", "max"))
+    return means[means.measured == rows.view.nunique()]
+
+
+def cheapest_bytes(means, original, family, distance, threshold):
+    """The bytes of the family's cheapest level within the threshold at the distance and every farther
+    one (as a chain draws it from its switch on: toolkit/lod/error_by_distance.h), the original's if none
+    is; NaN for a family the sweep did not run on the model."""
+    if means[means.level_mode == family].empty:
+        return float("nan")
+    distances = sorted(means.distance.unique())
+    rows = means[(means.level_mode == family) & (means.distance >= distance)]
+    farther = sum(d >= distance for d in distances)
+    levels = rows.groupby("level").agg(worst=("error", "max"), measured=("error", "count"), bytes=("bytes", "max"))
+    within = levels[(levels.measured == farther) & (levels.worst <= threshold)]
+    return min([original] + list(within.bytes))
 
 
 def save(fig, stem):
