@@ -10,6 +10,7 @@
 #include "data_gen/samples.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/heatmap.h"
+#include "experiments/sweep/file_lods.h"
 #include "experiments/sweep/impostor.h"
 #include "toolkit/metrics/image_metrics.h"
 #include "toolkit/metrics/metric_registry.h"
@@ -25,9 +26,7 @@
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/lod/chain.h"
-#include "toolkit/formats/cityjson_import.h"
 #include "toolkit/formats/model_io.h"
-#include "base/input_file.h"
 #include "toolkit/model/statistics.h"
 
 #include <algorithm>
@@ -46,21 +45,6 @@ namespace fs = std::filesystem;
 
 // A row key (CSV text already) extended by more fields.
 std::string extend_row(const std::string& key, const std::vector<std::string>& more) { return key + "," + csv_row(more); }
-
-// A CityJSON model's LoDs coarser than the one the sweep reads (its finest,
-// or city_lod), finest first; none for a sample or another format. `path`
-// may name one object (FILE#OBJECT).
-std::vector<std::string> coarser_file_lods(const SweepConfig& config, const std::string& path) {
-    std::string file = path;
-    std::error_code error;
-    if (const std::size_t hash = path.rfind('#'); hash != std::string::npos && !std::filesystem::exists(path, error))
-        file = path.substr(0, hash);
-    const std::string extension = lowercase_extension(file);
-    if (path.empty() || (extension != ".json" && extension != ".jsonl")) return {};
-    const std::vector<std::string> lods = cityjson_lods(file);
-    auto read = std::find(lods.begin(), lods.end(), config.lod.city_lod);
-    return {read == lods.end() ? (lods.empty() ? lods.end() : lods.begin() + 1) : read + 1, lods.end()};
-}
 
 Model load_sweep_model(const SweepModel& model) {
     if (!model.sample.empty()) return generate_building(sample_grammar(model.sample), BuildingOptions{});
@@ -159,7 +143,7 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
             }
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
     for (Baseline baseline : config.baselines)
-        plan.groups += baseline == Baseline::file_lods ? coarser_file_lods(config, model_path).size()
+        plan.groups += baseline == Baseline::file_lods ? coarser_file_lods(config.lod.city_lod, model_path).size()
                        : baseline == Baseline::single_box || baseline == Baseline::impostor ? 1
                                                                                             : plan.variants.front().levels.size();
     return plan;
@@ -416,7 +400,7 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
 // file-lods: each of a CityJSON model's LoDs coarser than the one read, a group of its own.
 void run_file_lods(ModelRun& run, SweepOutput& out, SweepReport& report, int obtained_levels) {
     auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
-    const std::vector<std::string> lods = coarser_file_lods(run.config, run.entry.path);
+    const std::vector<std::string> lods = coarser_file_lods(run.config.lod.city_lod, run.entry.path);
     for (std::size_t k = 0; k < lods.size(); ++k)
         run_group(run, out, report, csv_row({run.entry.name, "file-lods", "-", "-", std::to_string(k + 1)}), one_slot, [&](int, int) {
             Candidate c = candidate(load_model(run.entry.path, {.chain_level = 0, .city_lod = lods[k]}), {}, 0, obtained_levels);
@@ -488,12 +472,9 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
             });
             continue;
         }
-        if (baseline == Baseline::impostor) {
-            run_impostor(run, out, report, top_group, first.obtained_levels);
-            continue;
-        }
-        if (baseline == Baseline::file_lods) {
-            run_file_lods(run, out, report, first.obtained_levels);
+        if (baseline == Baseline::impostor || baseline == Baseline::file_lods) {  // their own groups
+            if (baseline == Baseline::impostor) run_impostor(run, out, report, top_group, first.obtained_levels);
+            else run_file_lods(run, out, report, first.obtained_levels);
             continue;
         }
         // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.

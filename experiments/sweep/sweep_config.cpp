@@ -146,6 +146,17 @@ SweepModel model_entry(const Line& line, const std::string& item, const std::fil
     return model;
 }
 
+// An item of `models`; FILE#* is each object of a city file, as FILE#OBJECT (toolkit/formats/model_io.h).
+void add_models(SweepConfig& c, const Line& line, const std::string& item, const std::filesystem::path& folder) {
+    if (!item.ends_with("#*")) {
+        c.models.push_back(model_entry(line, item, folder));
+        return;
+    }
+    const std::string file = item.substr(0, item.size() - 2);
+    for (const std::string& object : object_names(load_model(model_entry(line, file, folder).path)))
+        c.models.push_back(model_entry(line, file + "#" + object, folder));
+}
+
 // A sweep's own keys, one row each: how its value sets the config. The LoD
 // parameters a sweep may set are declared in toolkit/lod/lod_parameters.cpp;
 // parsing and the help (sweep_config_keys) read both.
@@ -158,16 +169,7 @@ const std::vector<SweepKey>& sweep_keys() {
     using Folder = const std::filesystem::path&;
     static const std::vector<SweepKey> keys = {
         {"models", [](SweepConfig& c, const Line& l, Folder folder) {
-             for (const std::string& item : l.items()) {
-                 if (!item.ends_with("#*")) {
-                     c.models.push_back(model_entry(l, item, folder));
-                     continue;
-                 }
-                 // FILE#*: each object of a city file, as FILE#OBJECT (toolkit/formats/model_io.h).
-                 const std::string file = item.substr(0, item.size() - 2);
-                 for (const std::string& object : object_names(load_model(model_entry(l, file, folder).path)))
-                     c.models.push_back(model_entry(l, file + "#" + object, folder));
-             }
+             for (const std::string& item : l.items()) add_models(c, l, item, folder);
          }},
         {"level_modes", [](SweepConfig& c, const Line& l, Folder) { c.level_modes = l.words(level_modes()); }},
         {"box_kinds", [](SweepConfig& c, const Line& l, Folder) { c.box_kinds = l.words(box_kinds()); }},

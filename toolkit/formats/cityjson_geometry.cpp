@@ -289,20 +289,34 @@ int ring_texture(const CityPlace& at, const CityReadState& s, const json* value,
     return texture;
 }
 
-void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon, const SurfaceValues& values) {
-    CityReadState& s = g.s;
-    if (!polygon.is_array() || polygon.empty()) at.fail("a surface is not an array of rings");
+// A surface's rings (vertex indices) and, where it is textured, its texture
+// and the uv index of each ring's vertices in order.
+struct SurfaceRings {
     std::vector<std::vector<std::size_t>> rings;
     std::vector<int> uvs;
     int texture = -1;
+};
+
+SurfaceRings read_rings(const CityPlace& at, const CityReadState& s, const json& polygon, const json* texture_values,
+                        std::size_t vertex_count) {
+    if (!polygon.is_array() || polygon.empty()) at.fail("a surface is not an array of rings");
+    SurfaceRings out;
+    std::size_t corners = 0;
     for (std::size_t r = 0; r < polygon.size(); ++r) {
-        rings.push_back(ring_indices(at, polygon[r], g.vertices.size()));
-        const json* ring_value = entry(at, values.texture, r, polygon.size(), "texture values");
-        const int ring_texture_index = ring_texture(at, s, ring_value, rings.back().size(), uvs);
-        if (r == 0) texture = ring_texture_index;
+        out.rings.push_back(ring_indices(at, polygon[r], vertex_count));
+        corners += out.rings.back().size();
+        const json* ring_value = entry(at, texture_values, r, polygon.size(), "texture values");
+        const int ring_texture_index = ring_texture(at, s, ring_value, out.rings.back().size(), out.uvs);
+        if (r == 0) out.texture = ring_texture_index;
     }
-    if (texture >= 0 && uvs.size() != [&] { std::size_t n = 0; for (auto& ring : rings) n += ring.size(); return n; }())
+    if (out.texture >= 0 && out.uvs.size() != corners)
         at.fail("texture values: every ring of a textured surface needs its uv indices");
+    return out;
+}
+
+void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon, const SurfaceValues& values) {
+    CityReadState& s = g.s;
+    const auto [rings, uvs, texture] = read_rings(at, s, polygon, values.texture, g.vertices.size());
     int node = g.nodes.object_node;
     std::string type;
     if (values.semantic && !values.semantic->is_null()) {
