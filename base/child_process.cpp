@@ -150,10 +150,12 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
                         const std::string& reader) {
     int to_program[2], from_program[2];
     if (::pipe(to_program) != 0 || ::pipe(from_program) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
     if (pid == 0) {
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // killed with the reading child (a timeout, boxlod interrupted)
+        if (::getppid() != parent) ::_exit(1);  // it died before prctl
         const int null = ::open("/dev/null", O_WRONLY);
         ::dup2(to_program[0], 0), ::dup2(null, 1), ::dup2(null, 2), ::dup2(from_program[1], 3);
         for (int fd : {to_program[0], to_program[1], from_program[0], from_program[1], null})

@@ -7,6 +7,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <cmath>
 #include <deque>
 #include <limits>
 
@@ -76,7 +77,7 @@ PolygonTriangles triangulate_polygon(const std::vector<std::vector<Eigen::Vector
     std::vector<Eigen::Vector3d> outer;
     for (const Eigen::Vector3d& p : rings[0]) outer.push_back(p - anchor);
     const Eigen::Vector3d normal = newell_normal(outer);
-    if (!(normal.norm() > 0)) return out;
+    if (!normal.allFinite() || !(normal.norm() > 0) || !std::isfinite(normal.norm())) return out;
     // A right-handed basis (u, v, normal): counter-clockwise in (u, v) turns about the normal.
     const Eigen::Vector3d w = normal.normalized();
     const Eigen::Vector3d u = w.unitOrthogonal(), v = w.cross(u);

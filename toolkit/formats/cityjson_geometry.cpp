@@ -1,6 +1,7 @@
 #include "toolkit/formats/cityjson_geometry.h"
 
 #include "base/input_error.h"
+#include "base/key_values.h"
 #include "renderer/image.h"
 #include "toolkit/cgal/polygon_triangulation.h"
 
@@ -401,11 +402,14 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
     const json& points = templates->at("vertices-templates");
     if (!geometry.contains("template") || !list.is_array() || !points.is_array()) at.fail("a GeometryInstance without a template");
     const json& shape = list[index_in(at, geometry["template"], list.size(), "template")];
-    const json& boundaries = geometry.contains("boundaries") ? geometry["boundaries"] : json();
-    if (!boundaries.is_array() || boundaries.size() != 1) at.fail("a GeometryInstance's boundaries hold its one reference point");
-    const Eigen::Vector3d reference = (*s.vertices)[index_in(at, boundaries[0], s.vertices->size(), "vertex index")];
-    const json& m = geometry.contains("transformationMatrix") ? geometry["transformationMatrix"] : json();
-    if (!m.is_array() || m.size() != 16) at.fail("'transformationMatrix' is not 16 numbers");
+    auto boundaries = geometry.find("boundaries");
+    if (boundaries == geometry.end() || !boundaries->is_array() || boundaries->size() != 1)
+        at.fail("a GeometryInstance's boundaries hold its one reference point");
+    const Eigen::Vector3d reference = (*s.vertices)[index_in(at, (*boundaries)[0], s.vertices->size(), "vertex index")];
+    auto matrix_value = geometry.find("transformationMatrix");
+    if (matrix_value == geometry.end() || !matrix_value->is_array() || matrix_value->size() != 16)
+        at.fail("'transformationMatrix' is not 16 numbers");
+    const json& m = *matrix_value;
     Eigen::Matrix4d matrix;
     for (int i = 0; i < 16; ++i) {
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
@@ -417,7 +421,8 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
             at.fail("vertices-templates: not three numbers");
         const Eigen::Vector4d moved = matrix * Eigen::Vector4d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>(), 1);
         placed.push_back(moved.head<3>() + reference);
-        if (!placed.back().allFinite()) at.fail("a placed template vertex is not finite");
+        if (!(placed.back().array().abs() <= max_city_coordinate).all())
+            at.fail("a placed template vertex lies beyond " + format_number(max_city_coordinate));
     }
     read_geometry(at.in("template"), s, shape, object_node, placed, true);
 }

@@ -16,6 +16,10 @@ namespace boxlod {
 
 struct CityReadState;  // what the reading has made so far (the .cpp's)
 
+// The largest coordinate a city file may have, in its units: far beyond any
+// CRS on Earth, far within what double arithmetic on it keeps finite.
+constexpr double max_city_coordinate = 1e12;
+
 // Where a reader is: the file and a prefix naming the place ("line 3:
 // CityObjects 'id': geometry 0: "); fail throws the InputError.
 struct CityPlace {

@@ -2,7 +2,9 @@
 
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/key_values.h"
 #include "toolkit/formats/cityjson_geometry.h"
+#include "toolkit/formats/gltf_structure.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -28,7 +31,7 @@ struct Part {
 };
 
 struct Transform {
-    Eigen::Vector3d scale, translate;
+    Eigen::Vector3d scale = Eigen::Vector3d::Ones(), translate = Eigen::Vector3d::Zero();
 };
 
 // A member's value with one line for each way it can be missing or wrong.
@@ -70,7 +73,8 @@ void read_vertices(const CityPlace& at, Part& part, const Transform& transform) 
         const CityPlace in{at.file, at.place + "vertex " + std::to_string(i) + ": "};
         const Eigen::Vector3d stored = read_triple(in, vertices[i], "vertex", false);
         part.vertices.push_back(stored.cwiseProduct(transform.scale) + transform.translate);
-        if (!part.vertices.back().allFinite()) in.fail("coordinates beyond a double");
+        if (!(part.vertices.back().array().abs() <= max_city_coordinate).all())
+            in.fail("coordinates beyond " + format_number(max_city_coordinate) + " (the Earth is 1.3e7 m across)");
     }
 }
 
@@ -84,6 +88,7 @@ void check_version(const CityPlace& at, const json& root, const char* type) {
 }
 
 json parse_json(const CityPlace& at, std::string_view text) {
+    check_json_depth(text, at.file);
     try {
         return json::parse(text);
     } catch (const json::exception& error) {  // a syntax error, or a number beyond a double (out_of_range.406)
@@ -106,7 +111,7 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
         return parts;
     }
     std::size_t line_number = 0;
-    Transform transform;
+    std::optional<Transform> transform;  // from the first line that is not blank
     for (std::size_t start = 0; start < bytes.size();) {
         std::size_t end = std::min(bytes.find('\n', start), bytes.size());
         std::string_view line = bytes.substr(start, end - start);
@@ -117,16 +122,16 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
         const CityPlace at{path, prefix};
         json document = parse_json(at, line);
         if (!document.is_object()) at.fail("not a JSON object");
-        if (line_number == 1) {
+        if (!transform) {
             check_version(at, document, "CityJSON");
             transform = read_transform(at, document);
             continue;
         }
         check_version(at, document, "CityJSONFeature");
         parts.push_back({std::move(document), prefix, {}});
-        read_vertices(at, parts.back(), transform);
+        read_vertices(at, parts.back(), *transform);
     }
-    if (line_number == 0) file.fail("empty file: a CityJSONSeq starts with a CityJSON line");
+    if (!transform) file.fail("empty file: a CityJSONSeq starts with a CityJSON line");
     return parts;
 }
 

@@ -47,25 +47,6 @@ Glb split_glb(std::string_view bytes, const std::string& file) {
     return glb;
 }
 
-// Deepest nesting of [ and { outside strings, without recursion.
-void check_json_depth(std::string_view json, const std::string& file) {
-    int depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < json.size(); ++i) {
-        char c = json[i];
-        if (in_string) {
-            if (c == '\\') ++i;
-            else if (c == '"') in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > max_nesting_depth) throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-}
-
 // A non-negative integer member, `fallback` when absent.
 std::size_t size_member(const nlohmann::json& object, const char* key, std::size_t fallback, const std::string& file,
                         const std::string& place) {
@@ -285,5 +266,24 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
         check_relative_uri(images[i], file, place);
     }
 }
+
+void check_json_depth(std::string_view json, const std::string& file) {
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        char c = json[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max_nesting_depth) throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
 
 }  // namespace boxlod

@@ -16,4 +16,9 @@ namespace boxlod {
 // `bytes` is the whole file; `binary` for .glb. Throws InputError naming `file`.
 void check_gltf_structure(std::string_view bytes, bool binary, const std::string& file);
 
+// Refuses JSON nested deeper than max_nesting_depth (base/input_error.h),
+// counting [ and { outside strings without recursion: what nlohmann-json
+// copies or prints of it recurses (glTF, CityJSON).
+void check_json_depth(std::string_view json, const std::string& file);
+
 }  // namespace boxlod

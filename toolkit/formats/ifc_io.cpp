@@ -49,7 +49,7 @@ std::vector<T> values_at(const Answer& answer, const json& range, std::size_t pe
     if (!checked_multiply(count, per_item * sizeof(T), bytes) || !range_fits(offset, bytes, answer.bytes.size()))
         throw_input_error(path, "", "web-ifc's answer points outside its bytes");
     std::vector<T> out(count * per_item);
-    std::memcpy(out.data(), answer.bytes.data() + offset, bytes);
+    if (bytes > 0) std::memcpy(out.data(), answer.bytes.data() + offset, bytes);
     return out;
 }
 
@@ -163,7 +163,8 @@ std::string web_ifc_module() {
         folder = (cache / ("web-ifc-" + std::string(web_ifc_version)) / "node_modules" / "web-ifc").string();
     }
     std::error_code error;
-    return fs::is_regular_file(fs::path(folder) / "web-ifc-api-node.js", error) ? folder : "";
+    // Absolute: node takes a bare relative name for a package to look up.
+    return fs::is_regular_file(fs::path(folder) / "web-ifc-api-node.js", error) ? fs::absolute(folder, error).string() : "";
 }
 
 std::string ifc_schema(const std::string& header) {

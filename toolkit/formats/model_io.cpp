@@ -20,8 +20,10 @@ namespace fs = std::filesystem;
 // IFC 2x3 (and the older 2x) through assimp, whose reading the project's
 // measurements were made with; IFC 4 and 4x3, which assimp cannot read, through web-ifc.
 bool read_by_web_ifc(const std::string& path) {
-    std::string header(4096, '\0');
-    std::ifstream(path, std::ios::binary).read(header.data(), std::streamsize(header.size()));
+    std::ifstream in(path, std::ios::binary);
+    std::string header;
+    for (std::string line; header.size() < (1 << 20) && header.find("ENDSEC") == std::string::npos && std::getline(in, line);)
+        header += line + '\n';  // the HEADER section: FILE_NAME may be long
     return !ifc_schema(header).starts_with("IFC2X");
 }
 

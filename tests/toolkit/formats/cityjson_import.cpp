@@ -206,7 +206,10 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
                     {"vertices", {{x, 0, 0}, {x + 1000, 0, 0}, {x + 1000, 1000, 0}, {x, 1000, 0}}}};
     };
     const fs::path path = test::scratch_folder("cityjson_seq") / "two.city.jsonl";
-    test::write_text(path, header.dump() + "\n" + feature("a", 0).dump() + "\n" + feature("b", 5000).dump() + "\n");
+    // A blank line before the header is no header.
+    std::string lines = "\n";
+    for (const json& line : {header, feature("a", 0), feature("b", 5000)}) lines += line.dump() + "\n";
+    test::write_text(path, lines);
     const Model model = load_model(path.string());
     ASSERT_EQ(model.nodes[0].children.size(), 2u);
     EXPECT_EQ(model_bounds(model).size().x(), 6);
