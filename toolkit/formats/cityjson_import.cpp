@@ -140,7 +140,10 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
 Eigen::Vector3d local_origin(const CityPlace& at, const std::vector<Part>& parts) {
     Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
     for (const Part& part : parts)
-        for (const Eigen::Vector3d& p : part.vertices) low = low.cwiseMin(p), high = high.cwiseMax(p);
+        for (const Eigen::Vector3d& p : part.vertices) {
+            low = low.cwiseMin(p);
+            high = high.cwiseMax(p);
+        }
     if (!(low.array() <= high.array()).all()) at.fail("no vertices: nothing to draw");
     return {std::round((low.x() + high.x()) / 2), std::round((low.y() + high.y()) / 2), std::round(low.z())};
 }
@@ -164,12 +167,14 @@ std::map<std::string, std::string> parents_of(const CityPlace& at, const json& o
         }
     }
     for (const auto& [id, first] : parent) {
-        std::string chain = id, at_id = id;
+        std::string at_id = id;
         for (int depth = 0; parent.count(at_id); ++depth) {
             at_id = parent.at(at_id);
-            chain += " > " + at_id;
-            if (at_id == id) at.fail("CityObjects '" + id + "': parents: a cycle (" + chain + ")");
             if (depth > max_nesting_depth) at.fail("CityObjects '" + id + "': parents " + nesting_message());
+            if (at_id != id) continue;
+            std::string chain = id;  // the cycle, named once it is found
+            for (std::string step = parent.at(id); step != id; step = parent.at(step)) chain += " > " + step;
+            at.fail("CityObjects '" + id + "': parents: a cycle (" + chain + " > " + id + ")");
         }
     }
     return parent;
