@@ -35,8 +35,8 @@ KEYS = ["model", "level_mode", "box_kind", "interpolation", "level", "view", "di
 # Level modes in the order of the manual, then the baselines (docs/sweeps.md).
 MODES = ["top-down", "bottom-up", "bottom-up-siblings", "box-volume", "box-area", "box-diagonal",
          "box-max-extent", "error-greedy", "hybrid", "simplification", "simplification-best", "cgal", "single-box", "impostor",
-         "file-lods"]
-BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor", "file-lods")
+         "proxy-baked", "file-lods"]
+BASELINES = ("simplification", "simplification-best", "cgal", "single-box", "impostor", "proxy-baked", "file-lods")
 # docs/design.md: Cost; bytes = mesh_bytes + texture_bytes_gpu, the uncompressed total is mesh_bytes + texture_bytes.
 COST_COLUMNS = ("draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes")
 _CYCLE = plt.get_cmap("tab10").colors
@@ -48,6 +48,7 @@ STYLE["simplification-best"] = dict(color="dimgrey", marker="+", linestyle=":")
 STYLE["cgal"] = dict(color="grey", marker="1", linestyle="-.")
 STYLE["single-box"] = dict(color="black", marker="*", linestyle="none", markersize=10)
 STYLE["impostor"] = dict(color="black", marker="D", linestyle="none", markersize=6)
+STYLE["proxy-baked"] = dict(color="saddlebrown", marker="h", linestyle="--")
 LOWER_IS_BETTER = {"flip": True, "rmse": True, "psnr": False, "ssim": False, "iou": False}
 LABEL = {"psnr": "PSNR (dB)", "ssim": "SSIM", "flip": "FLIP", "rmse": "RMSE", "iou": "IoU"}
 

@@ -12,11 +12,13 @@
 #include "toolkit/metrics/heatmap.h"
 #include "experiments/sweep/file_lods.h"
 #include "experiments/sweep/impostor.h"
+#include "experiments/sweep/proxy_baked.h"
 #include "toolkit/metrics/image_metrics.h"
 #include "toolkit/metrics/metric_registry.h"
 #include "toolkit/metrics/silhouette.h"
 #include "experiments/sweep/sweep_shots.h"
 #include "experiments/sweep/sweep_tables.h"
+#include "experiments/sweep/within_budget.h"
 #include "toolkit/lod/level_values.h"
 #include "toolkit/lod/level_budgets.h"
 #include "toolkit/lod/simplification.h"
@@ -142,10 +144,12 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
                 plan.variants.push_back(std::move(variant));
             }
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
+    const std::vector<int>& levels = plan.variants.front().levels;
     for (Baseline baseline : config.baselines)
         plan.groups += baseline == Baseline::file_lods ? coarser_file_lods(config.lod.city_lod, model_path).size()
                        : baseline == Baseline::single_box || baseline == Baseline::impostor ? 1
-                                                                                            : plan.variants.front().levels.size();
+                       : baseline == Baseline::proxy_baked ? levels.size() - std::size_t(std::count(levels.begin(), levels.end(), 0))
+                                                           : levels.size();
     return plan;
 }
 
@@ -434,19 +438,41 @@ void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const st
     });
 }
 
-// The finest simplification whose bytes (cost.h, every texture) stay within
-// `budget`: from the original's triangles scaled by the bytes, down in
-// proportion to the overshoot (a few rounds: bytes follow the triangles closely).
+// The finest simplification whose bytes (cost.h, every texture) stay within `budget`.
 Model simplified_within(const Model& model, double budget, const std::function<Model(std::size_t)>& simplify) {
-    std::size_t target = std::max<std::size_t>(mesh_counts(model).triangles, 1);
-    Model simplified = simplify(target);
-    for (int round = 0; round < 16; ++round) {
-        const double bytes = double(model_cost(simplified).bytes());
-        if (bytes <= budget || target == 1) break;
-        target = std::max<std::size_t>(1, std::min(target - 1, std::size_t(double(target) * budget / bytes * 0.98)));
-        simplified = simplify(target);
+    return finest_within<Model>(mesh_counts(model).triangles, budget, simplify,
+                                [](const Model& simplified) { return double(model_cost(simplified).bytes()); });
+}
+
+// proxy-baked: per level but the original (a baked copy of it is no level)
+// the best of its variants, each within the level's budget (or at its
+// triangles), baked as the first variant's level is sized (one session per
+// sizing level, which bakes the root's box once).
+void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first,
+                     const std::function<std::size_t(int)>& triangles_of_level) {
+    const SweepConfig& config = run.config;
+    const std::vector<ProxyBakedVariant> variants = proxy_baked_variants(run.threads);
+    const bool by_budget = orders_by_bytes(first.mode) && !config.lod.budgets.empty();
+    const double nearest = *std::min_element(config.distances.begin(), config.distances.end()) * framing_distance(run.framing, config.lod.fovy);
+    std::map<int, std::unique_ptr<LodSession>> sessions;  // per sizing level
+    for (int level : first.levels) {
+        if (level == 0) continue;
+        const int sizing_level = config.sizing == SizingRule::per_level ? level : 1;
+        const double budget = by_budget
+                                  ? budget_bytes(config.lod.budgets[std::size_t(level - 1)], double(model_cost(run.model).bytes())) : -1;
+        auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
+        run_group(run, out, report, csv_row({run.entry.name, "proxy-baked", "-", "-", std::to_string(level)}), one_slot, [&](int, int a) {
+            std::unique_ptr<LodSession>& session = sessions[sizing_level];
+            if (!session)
+                session = start_lod(run.model, proxy_baked_parameters(config.lod, float(doubled_distance(nearest, sizing_level))), run.threads);
+            const ProxyBakedVariant& v = variants[std::size_t(a)];
+            Lod lod = proxy_baked_level(*session, v, triangles_of_level(level), budget, level, run.threads);
+            Candidate c = candidate(std::move(lod.model), std::move(lod.atlas), 0, first.obtained_levels, &lod.cost);
+            c.face_texels = lod.face_texels;
+            c.variant = v.name;
+            return c;
+        }, int(variants.size()));
     }
-    return simplified;
 }
 
 // The baselines: the same rows, drawn by a mesh that depends on no view, distance or mode.
@@ -472,8 +498,9 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
             });
             continue;
         }
-        if (baseline == Baseline::impostor || baseline == Baseline::file_lods) {  // their own groups
+        if (baseline == Baseline::impostor || baseline == Baseline::file_lods || baseline == Baseline::proxy_baked) {  // their own groups
             if (baseline == Baseline::impostor) run_impostor(run, out, report, top_group, first.obtained_levels);
+            else if (baseline == Baseline::proxy_baked) run_proxy_baked(run, out, report, first, triangles_of_level);
             else run_file_lods(run, out, report, first.obtained_levels);
             continue;
         }
@@ -556,37 +583,6 @@ SweepReport merge_sweep(const SweepConfig& config, const std::vector<std::string
             fs::remove_all(output_folder, ignored);
         throw;
     }
-}
-
-std::vector<SweepShard> sweep_shards(const SweepConfig& config) {
-    std::vector<SweepShard> shards;
-    for (std::size_t m = 0; m < config.models.size(); ++m)
-        for (LevelMode mode : config.level_modes) shards.push_back({m, mode});
-    return shards;
-}
-
-SweepConfig shard_config(const SweepConfig& config, const SweepShard& shard) {
-    SweepConfig part = config;
-    part.models = {config.models.at(shard.model)};
-    part.level_modes = {shard.level_mode};
-    if (shard.level_mode != config.level_modes.front()) part.baselines.clear();
-    return part;
-}
-
-SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text) {
-    const std::size_t colon = text.find(':');
-    auto fail = [&](const std::string& what) { throw InputError("boxlod sweep: --shard '" + text + "': " + what); };
-    if (colon == std::string::npos) fail("expected M:MODE, the model's position from 1 and a level mode of the config");
-    const std::string position = text.substr(0, colon), mode_name = text.substr(colon + 1);
-    const NumberRange models{1, double(config.models.size())};
-    char* end = nullptr;
-    const double m = std::strtod(position.c_str(), &end);
-    if (position.empty() || *end || !models.contains(m) || m != std::floor(m)) fail(out_of_range_message(models, position));
-    SweepShard shard{std::size_t(m) - 1, LevelMode::top_down};
-    if (!parse_level_mode(mode_name, shard.level_mode) ||
-        std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) == config.level_modes.end())
-        fail("'" + mode_name + "' is not one of the config's level modes");
-    return shard;
 }
 
 }  // namespace boxlod

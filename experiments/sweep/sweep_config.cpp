@@ -36,6 +36,11 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
     {Baseline::impostor, "impostor",
      "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing distance, "
      "one quad facing the direction nearest the camera"},
+    {Baseline::proxy_baked, "proxy-baked",
+     "the whole model's geometry simplified as one mesh and drawn with its root box's baked faces (the far level of "
+     "Simplygon and Unreal's HLOD), at each level but 0: of meshoptimizer's variants and texel scales 1, 4 and 16 the one "
+     "with the lowest image error at the level's triangles or byte budget, baked for its sizing distance; results.csv "
+     "names it in baseline_variant"},
     {Baseline::file_lods, "file-lods",
      "a CityJSON model's own coarser LoDs (3DBAG's 1.3 and 1.2 below 2.2), read from the same file: the official "
      "ladder; level k is the k-th below the one read, results.csv's baseline_variant names it (no rows for other formats)"},

@@ -28,7 +28,7 @@ std::span<const EnumEntry<KeptImages>> kept_images();
 enum class SizingRule { nearest, each_distance, per_level };
 
 // The baselines a sweep compares the LoDs with (docs/sweeps.md).
-enum class Baseline { simplification, simplification_best, cgal, single_box, impostor, file_lods };
+enum class Baseline { simplification, simplification_best, cgal, single_box, impostor, proxy_baked, file_lods };
 std::span<const EnumEntry<Baseline>> baselines();  // names and help
 std::span<const EnumEntry<SizingRule>> sizing_rules();
 

@@ -14,13 +14,22 @@
 
 namespace boxlod {
 
+// A node drawn by a baked proxy (baked_proxy.h): a simplified geometry of its
+// sub-tree (the model's materials) sampling its box's baked faces.
+struct BakedNode {
+    int node = 0;
+    int proxy = -1;  // hybrid.h: its proxy in the plan; -1: none (the proxy-baked baseline)
+    const std::vector<Primitive>* geometry = nullptr;  // owned by the plan or the caller
+};
+
 struct Cut {
     std::vector<int> used_nodes;      // every node the cut visits, in tree order
     std::vector<int> geometry_nodes;  // used nodes that keep their own geometry
     std::vector<int> box_nodes;       // used nodes replaced by their box (sub-trees with geometry)
     std::vector<std::pair<int, int>> simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
-    // hybrid.h: box nodes whose texels are as at s > 1 times the sizing
-    // distance (texture_sizing.h), with s; every other box node's s is 1.
+    std::vector<BakedNode> baked_nodes;
+    // hybrid.h: box and baked nodes whose texels are as at s > 1 times the sizing
+    // distance (texture_sizing.h), with s; every other's s is 1.
     std::map<int, int> box_texel_scales;
 };
 

@@ -2,7 +2,9 @@
 
 #include "base/parallel.h"
 #include "toolkit/lod/bake.h"
+#include "toolkit/lod/baked_proxy.h"
 #include "toolkit/lod/hybrid_order.h"
+#include "toolkit/lod/proxy_drawables.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/lod/kept_subtrees.h"
 #include "toolkit/lod/level_budgets.h"
@@ -43,6 +45,8 @@ constexpr std::size_t fewest_simplified_triangles = 4;
 // On every sub-tree, building every level of `manual` took 1.5x as long for
 // one more view won (docs/cost.md: The hybrid level mode).
 constexpr std::size_t fewest_clustered_triangles = 1000;
+// A baked proxy's geometry at these shares of its sub-tree's triangles (baked_geometry).
+constexpr std::array<double, 3> baked_shares = {0.25, 1.0 / 16, 1.0 / 64};
 // A box is also offered with texels 2, 4, 8 and 16 times as large as the
 // sizing distance gives them: a page is dear. Without 2 and 4, a level within
 // 5 % of `classical`'s bytes drew one sharp box where `top-down` drew four
@@ -86,12 +90,21 @@ struct SimplifiedSubtree {
     bool clustered = false;
 };
 
+// A baked proxy as measured: its error sum, its mesh's bytes and the faces it samples.
+struct BakedSum {
+    double sum = 0;
+    std::uint64_t mesh_bytes = 0;
+    std::array<bool, 6> sampled{};
+};
+
 struct NodeMeasurement {
-    bool simplified_made = false;
-    std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
+    bool simplified_made = false, baked_made = false;
+    std::vector<SimplifiedSubtree> simplified;
+    std::vector<SimplifiedSubtree> baked;  // baked proxies' geometry (baked_geometry)  // by edge collapse, then clustering: each simpler than the one before, in share order
     float pixel = 0;  // the measuring view the sums below are of (0: none yet)
     int side = 0;
     std::map<float, double> box_sums;     // per texel size (m) of the baked box
+    std::map<float, std::vector<BakedSum>> baked_sums;  // per texel size, per geometry in `baked`
     bool simplified_measured = false;
     std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
 };
@@ -199,54 +212,6 @@ double measured_error(double pixel_error_sum, const MeasuringView& view, const H
     return pixel_error_sum * scale * scale / measuring_directions;
 }
 
-// The box as a drawable: each face one quad over its whole baked texture.
-struct BoxProxyDrawable {
-    std::vector<Material> materials;
-    DecodedTextures textures;
-    std::vector<Primitive> quads;
-    Drawable drawable;
-};
-
-// Its texels as `measuring` sizes them.
-std::unique_ptr<BoxProxyDrawable> box_proxy_drawable(const Drawable& subtree, const OrientedBox& box, const TextureSizing& measuring,
-                                                     const HybridSettings& settings) {
-    auto proxy = std::make_unique<BoxProxyDrawable>();
-    const bool textured = settings.mode != RenderMode::untextured;
-    for (const OrientedBoxFace& face : oriented_box_faces(box)) {
-        Primitive quad;
-        quad.material = int(proxy->materials.size());
-        Material material;
-        material.base_color = textured ? Eigen::Vector4f(1, 1, 1, 1) : Eigen::Vector4f(0.7f, 0.7f, 0.7f, 1);
-        if (textured) {
-            const Eigen::Vector2i texels = face_texels(2 * face.half_width, 2 * face.half_height, measuring);
-            BakedFace baked = bake_face(subtree, face, texels, 1);
-            material.base_color_texture = int(proxy->textures.color.size());
-            material.normal_texture = int(proxy->textures.color.size());
-            material.alpha_mode = AlphaMode::mask;
-            proxy->textures.color.push_back(std::make_shared<const MipTexture>(make_texture(baked.color, ColorSpace::srgb, Wrap::clamp)));
-            proxy->textures.linear.push_back(std::make_shared<const MipTexture>(make_texture(baked.normal, ColorSpace::linear, Wrap::clamp)));
-        }
-        const float corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) over the face, as bake_face's image
-        for (const auto& c : corners) {
-            const float s = 2 * c[0] - 1, t = 1 - 2 * c[1];
-            quad.positions.push_back(face.center + face.tangent * (s * face.half_width) + face.bitangent * (t * face.half_height));
-            quad.normals.push_back(face.normal);
-            if (textured) {
-                quad.uvs.emplace_back(c[0], c[1]);
-                quad.tangents.emplace_back(face.tangent.x(), face.tangent.y(), face.tangent.z(), 1.0f);
-            }
-        }
-        quad.indices = {0, 1, 2, 0, 2, 3};
-        quad.polygon_count = 1;
-        proxy->quads.push_back(std::move(quad));
-        proxy->materials.push_back(material);
-    }
-    std::vector<const Primitive*> quads;
-    for (const Primitive& quad : proxy->quads) quads.push_back(&quad);
-    proxy->drawable = make_drawable(proxy->materials, proxy->textures, quads);
-    return proxy;
-}
-
 std::size_t triangle_count(const std::vector<Primitive>& primitives) {
     std::size_t triangles = 0;
     for (const Primitive& p : primitives) triangles += p.triangle_count();
@@ -280,11 +245,58 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
     return measurement.simplified;
 }
 
+// The geometry of node n's baked proxies (baked_proxy.h; made once per
+// model): its sub-tree as one mesh of positions, simplified across material
+// seams to 1/4, 1/16 and 1/64 of its triangles by edge collapse, and for
+// large sub-trees by clustering too. Baking is for far levels, where a box
+// would lose the silhouette and simplification the colours.
+const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, std::size_t subtree_triangles,
+                                                     NodeMeasurement& measurement) {
+    if (measurement.baked_made) return measurement.baked;
+    SimplifyOptions options;
+    options.geometry_only = true;
+    options.threads = 1;
+    for (const bool clustering : {false, true}) {
+        if (clustering && subtree_triangles < fewest_clustered_triangles) break;
+        options.edge_collapse = !clustering;
+        for (double share : baked_shares) {
+            const auto target = std::size_t(double(subtree_triangles) * share);
+            if (target < fewest_simplified_triangles) break;
+            SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
+            simplified.triangles = triangle_count(simplified.primitives);
+            if (simplified.triangles > 0) measurement.baked.push_back(std::move(simplified));
+        }
+    }
+    measurement.baked_made = true;
+    return measurement.baked;
+}
+
 // A box's texels: their size in metres (as measurements are kept) and the sizing that bakes them.
 struct BoxTexels {
     float size = 0;
     TextureSizing sizing;
 };
+
+// Among its siblings: the parent's sub-tree but n's own, drawn in every
+// measuring render; only what those can see, within 2 radii of the centre
+// (camera at 2r, view r wide).
+std::vector<const Primitive*> sibling_primitives(const Model& model, int n, const MeasuringView& view) {
+    std::vector<const Primitive*> others;
+    const int parent = model.nodes[std::size_t(n)].parent;
+    if (parent < 0) return others;
+    std::vector<bool> mine(model.nodes.size(), false);
+    for (int k : subtree_nodes(model, n)) mine[std::size_t(k)] = true;
+    const Eigen::Vector3f center = view.sphere.center;
+    const float reach = 2 * view.sphere.radius;
+    for (int k : subtree_nodes(model, parent))
+        if (!mine[std::size_t(k)])
+            for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
+                Eigen::AlignedBox3f bounds;
+                for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
+                if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
+            }
+    return others;
+}
 
 // The error sums of node n's box at each of `box_texels` and of its
 // simplified sub-trees in `view`, rendered among their siblings, but those
@@ -293,29 +305,15 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
                         const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles, const Drawable& subtree,
                         const MeasuringView& view, const HybridSettings& settings, NodeMeasurement& measurement) {
     if (measurement.pixel != view.pixel || measurement.side != view.side) {
-        measurement.box_sums.clear(), measurement.simplified_sums.clear(), measurement.simplified_measured = false;
+        measurement.box_sums.clear(), measurement.baked_sums.clear(), measurement.simplified_sums.clear();
+        measurement.simplified_measured = false;
         measurement.pixel = view.pixel, measurement.side = view.side;
     }
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
         if (!measurement.box_sums.count(texels.size)) missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
-    // Among its siblings: the parent's sub-tree but n's own, drawn in every measuring render.
-    std::vector<const Primitive*> others;
-    if (const int parent = model.nodes[std::size_t(n)].parent; parent >= 0) {
-        std::vector<bool> mine(model.nodes.size(), false);
-        for (int k : subtree_nodes(model, n)) mine[std::size_t(k)] = true;
-        // Only what the measuring renders can see: within 2 radii of the centre (camera at 2r, view r wide).
-        const Eigen::Vector3f center = view.sphere.center;
-        const float reach = 2 * view.sphere.radius;
-        for (int k : subtree_nodes(model, parent))
-            if (!mine[std::size_t(k)])
-                for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
-                    Eigen::AlignedBox3f bounds;
-                    for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
-                    if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
-                }
-    }
+    const std::vector<const Primitive*> others = sibling_primitives(model, n, view);
     // Drawn in its materials' base colours, untextured: it only hides and is
     // hidden, the same in every render. Its opaque part is rendered once per
     // direction and each candidate over it from its depth (renderer.h:
@@ -334,11 +332,23 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         return compared_views(render_views(batches, view, settings.mode, &underlay));
     };
     const auto original = among_context(subtree);
-    for (const BoxTexels& texels : missing)
-        measurement.box_sums[texels.size] =
-            pixel_error_sum(original, among_context(box_proxy_drawable(subtree, box, texels.sizing, settings)->drawable));
+    const std::vector<SimplifiedSubtree>& simplified_list = simplified_subtrees(model, n, subtree_triangles, measurement);
+    const bool textured = settings.mode != RenderMode::untextured;
+    for (const BoxTexels& texels : missing) {
+        const std::array<BakedFace, 6> baked = textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
+        measurement.box_sums[texels.size] = pixel_error_sum(original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
+        std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
+        if (!textured || !settings.baked_proxies) continue;
+        for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
+            std::array<Primitive, 6> faces = baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
+            BakedSum measured{0, baked_proxy_mesh_bytes(faces), {}};
+            for (std::size_t f = 0; f < 6; ++f) measured.sampled[f] = !faces[f].indices.empty();
+            measured.sum = pixel_error_sum(original, among_context(baked_proxy_drawable(std::move(faces), baked)->drawable));
+            baked_sums.push_back(measured);
+        }
+    }
     if (measurement.simplified_measured) return;
-    for (const SimplifiedSubtree& simplified : simplified_subtrees(model, n, subtree_triangles, measurement)) {
+    for (const SimplifiedSubtree& simplified : simplified_list) {
         double sum = 0;
         if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
             std::vector<const Primitive*> primitives;
@@ -348,6 +358,27 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         measurement.simplified_sums.push_back(sum);
     }
     measurement.simplified_measured = true;
+}
+
+// The baked proxies measured with its box at `texel_scale` (`sums`, per geometry in measurement.baked).
+void add_baked_proxies(const OrientedBox& box, int texel_scale, const std::vector<BakedSum>& sums, const NodeMeasurement& measurement,
+                       const MeasuringView& view, const HybridSettings& settings, std::vector<Proxy>& proxies) {
+    const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(box);
+    const TextureSizing sizing = coarser_sizing(settings.sizing, texel_scale);
+    for (std::size_t c = 0; c < sums.size(); ++c) {
+        if (sums[c].mesh_bytes == 0) continue;  // it samples no face that saw anything: it would draw nothing
+        Proxy proxy;
+        proxy.kind = ProxyKind::baked;
+        proxy.primitives = measurement.baked[c].primitives;
+        proxy.clustered = measurement.baked[c].clustered;
+        proxy.texel_scale = texel_scale;
+        std::uint64_t texels = 0;
+        for (std::size_t f = 0; f < 6; ++f)
+            if (sums[c].sampled[f]) texels += face_page_texels(faces[f], sizing);
+        proxy.bytes = double(sums[c].mesh_bytes + page_bytes(texels));
+        proxy.error = measured_error(sums[c].sum, view, settings);
+        proxies.push_back(std::move(proxy));
+    }
 }
 
 // Every proxy of node n, measured (or its measurements reused); then sorted by
@@ -389,9 +420,11 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
         proxies.push_back(std::move(proxy));
     }
+    for (std::size_t k = 0; k < box_texels.size(); ++k)
+        add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums[box_texels[k].size], measurement, view, settings, proxies);
     std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
     for (Proxy& proxy : proxies) {
-        const double alone = proxy.bytes + bytes_of(paid, textures_of(paid, proxy.primitives));
+        const double alone = proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy));
         by_bytes.emplace_back(alone, std::move(proxy));
     }
     std::stable_sort(by_bytes.begin(), by_bytes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -470,10 +503,11 @@ Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int
         const Node& node = model.nodes[std::size_t(n)];
         cut.used_nodes.push_back(n);
         if (const int s = state[std::size_t(n)]; s >= 0) {
-            if (const Proxy& proxy = plan.proxies[std::size_t(n)][std::size_t(s)]; proxy.kind == ProxyKind::simplified)
-                cut.simplified_nodes.emplace_back(n, s);
-            else if (cut.box_nodes.push_back(n); proxy.texel_scale > 1)
-                cut.box_texel_scales[n] = proxy.texel_scale;
+            const Proxy& proxy = plan.proxies[std::size_t(n)][std::size_t(s)];
+            if (proxy.kind == ProxyKind::simplified) cut.simplified_nodes.emplace_back(n, s);
+            if (proxy.kind == ProxyKind::baked) cut.baked_nodes.push_back({n, s, &proxy.primitives});
+            if (proxy.kind == ProxyKind::box) cut.box_nodes.push_back(n);
+            if (proxy.kind != ProxyKind::simplified && proxy.texel_scale > 1) cut.box_texel_scales[n] = proxy.texel_scale;
             continue;
         }
         if (node.has_geometry()) cut.geometry_nodes.push_back(n);
@@ -488,6 +522,8 @@ double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
         for (const Proxy& proxy : plan.proxies[std::size_t(n)])
             if (proxy.kind == ProxyKind::box && proxy.texel_scale == texel_scale(cut, n)) error += proxy.error;
     for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
+    for (const BakedNode& baked : cut.baked_nodes)
+        if (baked.proxy >= 0) error += plan.proxies[std::size_t(baked.node)][std::size_t(baked.proxy)].error;
     return error;
 }
 

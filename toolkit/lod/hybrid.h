@@ -56,6 +56,7 @@ struct HybridSettings {
     int threads = 0;      // nodes measured in parallel; the plan never depends on it
     int max_side = 48;    // measuring renders at most this many pixels a side (coarser pixels weigh more)
     HybridMeasurements* measurements = nullptr;  // set: reused and filled (the same plan as without)
+    bool baked_proxies = false;  // also each sub-tree's baked proxies (textured modes; baked_proxy.h)
 };
 
 // The error of one pixel between two renders of the same view, in [0, 2]:

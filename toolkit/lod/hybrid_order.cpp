@@ -9,6 +9,11 @@
 #include <tuple>
 
 namespace boxlod {
+
+std::vector<int> proxy_textures(const PaidTextures& paid, const Proxy& proxy) {
+    return proxy.kind == ProxyKind::simplified ? textures_of(paid, proxy.primitives) : std::vector<int>{};
+}
+
 namespace {
 
 // The greedy order (docs/design.md: The hybrid level mode), within a byte
@@ -31,7 +36,7 @@ public:
         for (std::size_t n = 0; n < model.nodes.size(); ++n) {
             subtree_bytes_[n] = double(subtree[n]);
             own_bytes_[n] = double(mesh_bytes(model.nodes[n].primitives, model));
-            for (const Proxy& proxy : proxies[n]) proxy_textures_[n].push_back(textures_of(paid_, proxy.primitives));
+            for (const Proxy& proxy : proxies[n]) proxy_textures_[n].push_back(proxy_textures(paid_, proxy));
             if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
         }
     }

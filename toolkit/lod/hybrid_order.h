@@ -6,10 +6,15 @@
 // pays for it (paid_textures.h).
 #pragma once
 #include "toolkit/lod/hybrid_proxy.h"
+#include "toolkit/lod/paid_textures.h"
 
 #include <vector>
 
 namespace boxlod {
+
+// The source's textures a proxy samples: a simplified sub-tree's (a box and
+// a baked proxy sample their level's pages, which their bytes count).
+std::vector<int> proxy_textures(const PaidTextures& paid, const Proxy& proxy);
 
 // The steps taken within `budget` bytes (infinity: to the original), and the
 // bytes and error before any step and after each; deterministic, ties to the

@@ -8,15 +8,17 @@
 
 namespace boxlod {
 
-enum class ProxyKind { box, simplified };
+// box: its textured box; simplified: its simplified geometry in the source's
+// materials; baked: a simplified geometry sampling its box's baked faces (baked_proxy.h).
+enum class ProxyKind { box, simplified, baked };
 
 // One way to draw a sub-tree instead of its geometry.
 struct Proxy {
     ProxyKind kind = ProxyKind::box;
-    std::vector<Primitive> primitives;  // simplified: the sub-tree's simplified geometry (the model's materials)
+    std::vector<Primitive> primitives;  // simplified, baked: the sub-tree's simplified geometry (the model's materials)
     bool clustered = false;  // simplified by vertex clustering (large sub-trees), else by edge collapse
-    int texel_scale = 1;  // box: its texels as at this many times the sizing distance
-    double bytes = 0;  // box: box_bytes_estimate at its texels; simplified: its mesh bytes
+    int texel_scale = 1;  // box, baked: its texels as at this many times the sizing distance
+    double bytes = 0;  // box: box_bytes_estimate at its texels; simplified: its mesh bytes; baked: both (baked_proxy.h)
     double error = 0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
 };
 

@@ -38,12 +38,16 @@ std::uint64_t box_bytes_estimate(const OrientedBox& box, const TextureSizing& si
     std::uint64_t bytes = 6 * (4 * vertex_bytes + 6 * 2);
     if (!textured) return bytes;
     std::uint64_t texels = 0;
-    for (const OrientedBoxFace& face : oriented_box_faces(box)) {
-        const Eigen::Vector2i size = face_texels(2 * face.half_width, 2 * face.half_height, sizing);
-        texels += std::uint64_t(size.x() + 2 * sizing.gutter) * std::uint64_t(size.y() + 2 * sizing.gutter);
-    }
-    return bytes + texels * 2 * 4 / 3;
+    for (const OrientedBoxFace& face : oriented_box_faces(box)) texels += face_page_texels(face, sizing);
+    return bytes + page_bytes(texels);
 }
+
+std::uint64_t face_page_texels(const OrientedBoxFace& face, const TextureSizing& sizing) {
+    const Eigen::Vector2i size = face_texels(2 * face.half_width, 2 * face.half_height, sizing);
+    return std::uint64_t(size.x() + 2 * sizing.gutter) * std::uint64_t(size.y() + 2 * sizing.gutter);
+}
+
+std::uint64_t page_bytes(std::uint64_t texels) { return texels * 2 * 4 / 3; }
 
 std::vector<bool> kept_subtrees(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes,
                                 KeptSubtrees rules, const TextureSizing& sizing, bool textured) {

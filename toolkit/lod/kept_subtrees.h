@@ -11,6 +11,7 @@
 // A node is kept with its whole sub-tree: boxing the children of a node too
 // cheap to box could cost more than its own box.
 #pragma once
+#include "toolkit/lod/bake.h"
 #include "toolkit/model/model.h"
 #include "toolkit/lod/texture_sizing.h"
 
@@ -31,6 +32,10 @@ std::vector<std::uint64_t> subtree_mesh_bytes(const Model& model);
 // sizing.gutter on each side, at 2 bytes per texel (BC1 colour, BC5 normal and
 // BC4 height: 8 + 16 + 8 bytes per 4 x 4 block) times 4/3 for the mip chain.
 std::uint64_t box_bytes_estimate(const OrientedBox& box, const TextureSizing& sizing, bool textured);
+// Its parts: a face's texels as sized with the gutter on each side, and what
+// texels cost in pages (2 bytes each, 4/3 for the mip chain).
+std::uint64_t face_page_texels(const OrientedBoxFace& face, const TextureSizing& sizing);
+std::uint64_t page_bytes(std::uint64_t texels);
 
 struct KeptSubtrees {
     bool small = false;    // at most 6 faces

@@ -43,6 +43,23 @@ void add_pages(Model& out, const Atlas& atlas, float height_depth, bool textured
     }
 }
 
+int baked_page_material(Model& out, int page, std::map<int, int>& made) {
+    auto [at, added] = made.try_emplace(page, int(out.materials.size()));
+    if (added) {
+        Material material = out.materials[std::size_t(page)];
+        material.name += "_proxy";
+        material.height_texture = -1, material.height_depth = 0;
+        material.alpha_mode = AlphaMode::opaque;
+        out.materials.push_back(material);
+    }
+    return at->second;
+}
+
+Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page, float x, float y) {
+    const float page_x = at.rotated ? float(region.height) - y : x, page_y = at.rotated ? x : y;
+    return {(float(at.x) + page_x) / float(page.x()), (float(at.y) + page_y) / float(page.y())};
+}
+
 void place_swatches(const Swatches& swatches, const AtlasPlacement& at, int gutter, Model& out) {
     const LodPage page = lod_page(at.page);
     Texture &color = out.textures[std::size_t(page.color)], &normal = out.textures[std::size_t(page.normal)],

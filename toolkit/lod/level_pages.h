@@ -22,6 +22,15 @@ struct LodPage {
 };
 LodPage lod_page(int page);
 
+// A baked proxy's material on page K (baked_proxy.h), made on first use
+// (`made`: page -> material): the page's colour and normal maps, opaque (its
+// triangles give the outline, not the coverage), no height map (parallax
+// would move its triangles off the surface they stand for).
+int baked_page_material(Model& out, int page, std::map<int, int>& made);
+
+// Where a point `x`, `y` texels into a face's region (right, down) lies on its page, as a uv.
+Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page, float x, float y);
+
 // Flat faces (docs/design.md: Atlas): one 4x4 swatch per distinct colour, in
 // one square block of the atlas whose swatches lie on 4-texel boundaries of
 // the page (one GPU compression block each); 3 spare texels per side find them.

@@ -9,7 +9,7 @@
 #include "toolkit/model/framing.h"
 #include "toolkit/lod/kept_subtrees.h"
 #include "toolkit/lod/level_budgets.h"
-#include "toolkit/lod/level_pages.h"
+#include "toolkit/lod/level_faces.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/model/statistics.h"
 
@@ -28,35 +28,6 @@ double level_budget(const LodSession& session, int level) {
     return budget_bytes(session.input.parameters.budgets[std::size_t(level - 1)], original_bytes);
 }
 
-// The quad of a face's `region` of its `texels` (the whole face for untextured
-// boxes): TL, BL, BR, TR seen from outside; uvs into the region's atlas block.
-void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vector2i& texels, const TexelRect& region,
-                      const AtlasPlacement* at, const Eigen::Vector2i& page) {
-    auto base = std::uint32_t(p.positions.size());
-    const int corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) in the region
-    for (const auto& c : corners) {
-        // The corner in face texels (x right, y down), and as -1..1 along tangent and bitangent.
-        const int x = region.x + c[0] * region.width, y = region.y + c[1] * region.height;
-        const float s = 2 * (float(x) / float(texels.x())) - 1, t = 1 - 2 * (float(y) / float(texels.y()));
-        p.positions.push_back(f.center + f.tangent * (s * f.half_width) + f.bitangent * (t * f.half_height));
-        p.normals.push_back(f.normal);
-        if (at) {
-            const int rx = c[0] * region.width, ry = c[1] * region.height;  // in the region
-            const int page_x = at->rotated ? region.height - ry : rx, page_y = at->rotated ? rx : ry;
-            p.uvs.emplace_back(float(at->x + page_x) / float(page.x()), float(at->y + page_y) / float(page.y()));
-            p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
-        }
-    }
-    p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    ++p.polygon_count;
-}
-
-// The texels of a face of box node n, sized at its texel scale (cut.h), and n's key in the bake cache.
-Eigen::Vector2i texels_of(const OrientedBoxFace& face, const LodSession& session, const Cut& cut, int n) {
-    return face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(session.derived.sizing, texel_scale(cut, n)));
-}
-std::pair<int, int> baked_key(const Cut& cut, int n) { return {n, texel_scale(cut, n)}; }
-
 // The level values of the session's level mode; hybrid and error-greedy with
 // budgets also make the plan whose prefixes the levels are, and each level's prefix.
 void derive_levels(LodSession& session, int threads, HybridMeasurements* measurements) {
@@ -69,7 +40,8 @@ void derive_levels(LodSession& session, int threads, HybridMeasurements* measure
     const bool textured = p.render_mode != RenderMode::untextured;
     if (p.level_mode == LevelMode::hybrid) {
         d.hybrid = std::make_shared<const HybridPlan>(plan_hybrid(
-            model, d.textures, d.boxes, {.sizing = d.sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements}));
+            model, d.textures, d.boxes, {.sizing = d.sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements,
+                                  .baked_proxies = p.baked_proxies}));
         if (budgets.empty()) budgets = geometric_budgets(d.hybrid->bytes.front(), d.hybrid->bytes.back(), levels);
         d.levels = hybrid_levels(model, *d.hybrid, budgets, session.cache.hybrid_levels);
     } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
@@ -119,97 +91,6 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
 
 namespace {
 
-// Bake: the faces of the cut's boxes that no earlier level baked, in parallel (one face per task).
-void bake_new_boxes(LodSession& session, const Cut& cut, int threads) {
-    struct FaceJob { int node, face; };
-    std::vector<FaceJob> jobs;
-    for (int node : cut.box_nodes)
-        if (session.cache.baked.try_emplace(baked_key(cut, node)).second)  // the slots made before the parallel work
-            for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
-    std::map<int, Drawable> subtrees;
-    const LodDerived& d = session.derived;
-    for (const FaceJob& job : jobs)
-        if (job.face == 0) subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
-    parallel_for(jobs.size(), threads, [&](std::size_t j) {
-        const FaceJob& job = jobs[j];
-        OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
-        session.cache.baked.at(baked_key(cut, job.node))[job.face] =
-            bake_face(subtrees.at(job.node), face, texels_of(face, session, cut, job.node), 1);
-    });
-}
-
-// The faces that go into the atlas, in cut order and face order, each with the
-// rectangle of its texels it keeps: cropped to the covered ones, none for a
-// face that covers nothing (unless crop_faces is off).
-struct PackedFace {
-    int node, face;
-    TexelRect region;
-    int placement = -1;  // its block in the atlas; -1: drawn flat from `swatch`
-    int swatch = -1;
-};
-
-struct Packing {
-    std::vector<PackedFace> faces;
-    Atlas atlas;
-    Swatches swatches;
-    int swatch_placement = -1;  // the swatches' block in the atlas
-    std::uint64_t face_texels = 0, gutter_texels = 0;
-    int flat_faces = 0;
-    float longest_face = 0;  // metres over the texel scale, for min_distance
-    float height_depth = 0;  // metres: the deepest packed face's box depth, height 0 on every page
-};
-
-// Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as swatches.
-Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads) {
-    const LodParameters& p = session.input.parameters;
-    Packing packing;
-    std::vector<Eigen::Vector2i> sizes;
-    const int most_columns = (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
-    const std::size_t max_swatches = std::size_t(most_columns) * std::size_t(most_columns);
-    for (int node : cut.box_nodes) {
-        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[node]);
-        for (int f = 0; f < 6; ++f) {
-            const OrientedBoxFace& face = faces[f];
-            const float scale = float(texel_scale(cut, node));  // a coarser box reaches the largest page 1:1 nearer
-            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width / scale, 2 * face.half_height / scale});
-            if (!textured) continue;
-            const Eigen::Vector2i texels = texels_of(face, session, cut, node);
-            const BakedFace& baked = session.cache.baked.at(baked_key(cut, node))[f];
-            const TexelRect region = p.crop_faces ? baked.covered : TexelRect{0, 0, texels.x(), texels.y()};
-            if (region.empty()) continue;
-            packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
-            if (auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt) {
-                Swatches& swatches = packing.swatches;
-                auto known = swatches.index.find(*color);
-                if (known == swatches.index.end() && swatches.colors.size() < max_swatches) {
-                    known = swatches.index.emplace(*color, int(swatches.colors.size())).first;
-                    swatches.colors.push_back(*color);
-                }
-                if (known != swatches.index.end()) {  // else the swatches are full: it keeps its texels
-                    packing.faces.push_back({node, f, region, -1, known->second});
-                    ++packing.flat_faces;
-                    continue;
-                }
-            }
-            packing.faces.push_back({node, f, region, int(sizes.size())});
-            sizes.emplace_back(region.width, region.height);
-            packing.face_texels += std::uint64_t(region.width) * std::uint64_t(region.height);
-        }
-    }
-    if (Swatches& swatches = packing.swatches; !swatches.colors.empty()) {
-        swatches.columns = int(std::ceil(std::sqrt(double(swatches.colors.size()))));
-        packing.swatch_placement = int(sizes.size());
-        sizes.emplace_back(swatches.block_side(), swatches.block_side());  // square: never turned
-        packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
-    }
-    if (textured) {
-        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.derived.sizing.gutter, threads);
-        packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.derived.sizing.gutter);
-        if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
-    }
-    return packing;
-}
-
 // Copies of `primitives` into `node`, their materials the output's (copied on first use).
 void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& writer, Node& node) {
     for (const Primitive& primitive : primitives) {
@@ -219,57 +100,21 @@ void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& wr
     }
 }
 
-// Box node n's quads, one primitive per page its faces landed on (the pages'
-// materials come first, in page order), its baked texels placed in its pages;
-// `next_packed` walks the packing's faces, which are in the cut's order.
-std::map<int, Primitive> box_primitives(const LodSession& session, const Cut& cut, int n, const Packing& packing, const Atlas& atlas,
-                                        bool textured, std::size_t& next_packed, Model& out) {
-    std::map<int, Primitive> by_page;
-    std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[n]);
-    for (int f = 0; f < 6; ++f) {
-        if (!textured) {
-            Primitive& primitive = by_page[0];
-            primitive.material = 0;
-            append_face_quad(primitive, faces[f], {1, 1}, {0, 0, 1, 1}, nullptr, Eigen::Vector2i::Zero());
-            continue;
-        }
-        const std::vector<PackedFace>& packed = packing.faces;
-        if (next_packed == packed.size() || packed[next_packed].node != n || packed[next_packed].face != f) continue;
-        const PackedFace& face = packed[next_packed++];
-        const bool flat = face.placement < 0;
-        const AtlasPlacement& at = atlas.placements[std::size_t(flat ? packing.swatch_placement : face.placement)];
-        const Eigen::Vector2i page_size = atlas.pages[std::size_t(at.page)];
-        Primitive& primitive = by_page[at.page];
-        primitive.material = at.page;
-        append_face_quad(primitive, faces[f], texels_of(faces[f], session, cut, n), face.region, &at, page_size);
-        if (flat) {  // every corner at the swatch's centre: bilinear reads its 2x2 middle texels, all one colour
-            const Eigen::Vector2i texel = swatch_texel(packing.swatches, at, face.swatch);
-            const Eigen::Vector2f center(float(texel.x() + swatch_side / 2) / float(page_size.x()),
-                                         float(texel.y() + swatch_side / 2) / float(page_size.y()));
-            std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), center);
-            continue;
-        }
-        const LodPage page = lod_page(at.page);
-        place_face(session.cache.baked.at(baked_key(cut, n))[f], face.region, at, session.derived.sizing.gutter,
-                   2 * faces[f].half_depth / packing.height_depth, out.textures[std::size_t(page.color)],
-                   out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
-    }
-    return by_page;
-}
-
 // Mesh: the cut's nodes in tree order; a kept node brings its geometry (and its
 // materials and textures), a simplified one its simplified sub-tree, a box
-// node becomes a leaf with one quad per packed face.
+// node becomes a leaf with one quad per packed face, a baked one a leaf with
+// its proxy's triangles on the pages.
 void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
                    bool textured) {
     const Model& model = *session.input.model;
     MaterialCopier writer{model, out};
-    std::vector<bool> is_box(model.nodes.size(), false);
+    std::vector<bool> is_box(model.nodes.size(), false), is_baked(model.nodes.size(), false);
     for (int n : cut.box_nodes) is_box[n] = true;
+    for (const BakedNode& baked : cut.baked_nodes) is_baked[std::size_t(baked.node)] = true;
     std::map<int, const Proxy*> simplified;
     for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.derived.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
-    std::map<int, int> new_index;
-    std::size_t next_packed = 0;
+    std::map<int, int> new_index, baked_materials;
+    if (textured) place_packed_faces(session, cut, packing, atlas, out);
     for (int n : cut.used_nodes) {
         const Node& node = model.nodes[n];
         int parent = node.parent >= 0 ? new_index.at(node.parent) : -1;
@@ -278,13 +123,16 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
         out.nodes[index].rule = node.rule;
         out.nodes[index].scope = node.scope;
         out.nodes[index].source_id = node.source_id;
+        std::map<int, Primitive> by_page;
         if (auto proxy = simplified.find(n); proxy != simplified.end())  // the source's materials
             add_primitives(proxy->second->primitives, writer, out.nodes[index]);
-        else if (!is_box[n])  // kept: its own geometry (a replaced node without box has none)
+        else if (is_baked[n])
+            by_page = baked_primitives(n, packing, atlas, baked_materials, out);
+        else if (is_box[n])
+            by_page = box_primitives(session, cut, n, packing, atlas, textured);
+        else  // kept: its own geometry (a replaced node without box has none)
             add_primitives(node.primitives, writer, out.nodes[index]);
-        else
-            for (auto& [page, primitive] : box_primitives(session, cut, n, packing, atlas, textured, next_packed, out))
-                out.nodes[index].primitives.push_back(std::move(primitive));
+        for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
     }
     if (packing.swatch_placement >= 0) place_swatches(packing.swatches, atlas.placements[std::size_t(packing.swatch_placement)], session.derived.sizing.gutter, out);
 }
@@ -307,6 +155,7 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("nodes_with_geometry", double(lod.cut.geometry_nodes.size())),
         number_entry("nodes_with_box", double(lod.cut.box_nodes.size())),
         number_entry("nodes_simplified", double(lod.cut.simplified_nodes.size())),
+        number_entry("nodes_baked", double(lod.cut.baked_nodes.size())),
         number_entry("depth", tree_depth(model)),
         number_entry("batches_lod", double(lod_counts.batches)),
         number_entry("faces_lod", double(lod_counts.faces)),
@@ -358,7 +207,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     if (session.derived.hybrid) lod.measured_error = hybrid_cut_error(*session.derived.hybrid, lod.cut);
     if (textured) {
         const ScopedTimer timer(session.times.bake);
-        bake_new_boxes(session, lod.cut, threads);
+        bake_new_faces(session, lod.cut, threads);
     }
     Packing packing = timed(session.times.pack, [&] {
         Packing plain = pack_faces(session, lod.cut, textured, 0, threads);
@@ -529,6 +378,17 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
                          " (the obtained number of levels)");
     Lod lod = build_cut(session, current_level, level_cut(session, current_level), threads);
     return session.input.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
+}
+
+Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads) {
+    if (!session.derived.boxes[0]) throw_input_error(session.input.model->source, "", "has no geometry to bake a proxy from");
+    Cut cut;
+    cut.used_nodes = {0};
+    cut.baked_nodes = {{0, -1, &geometry}};
+    if (texel_scale > 1) cut.box_texel_scales[0] = texel_scale;
+    Lod lod = build_cut(session, level, std::move(cut), threads);
+    lod.cut.baked_nodes.front().geometry = nullptr;  // the caller's: the level holds its copy
+    return lod;
 }
 
 void check_budget_reachable(LodSession& session, int level, int threads) {

@@ -4,6 +4,7 @@
 #pragma once
 #include "base/key_values.h"
 #include "toolkit/lod/atlas.h"
+#include "toolkit/lod/lod_session.h"
 #include "toolkit/lod/bake.h"
 #include "toolkit/model/cost.h"
 #include "toolkit/lod/cut.h"
@@ -17,47 +18,6 @@
 #include <memory>
 
 namespace boxlod {
-
-struct LodTimes {  // seconds, for the time split in docs/performance.md
-    double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0, write = 0;  // write: preview + files
-};
-
-// What the user gave: the model and its parameters.
-struct LodInput {
-    const Model* model = nullptr;
-    LodParameters parameters;  // distance resolved (never 0 here), model named
-    bool budgets_strict = true;  // false (sweeps): a level no cut fits draws the coarsest instead of failing
-};
-
-// What start_lod derives once from the input, read by every level.
-struct LodDerived {
-    DecodedTextures textures;
-    std::vector<std::optional<OrientedBox>> boxes;
-    std::vector<double> depth_errors;  // per node with a box, error_greedy.h's proxy e(n) in m^3
-    LevelValues levels;
-    TextureSizing sizing;
-    std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
-    std::shared_ptr<const HybridPlan> hybrid;      // level mode hybrid: the plan its levels are prefixes of
-    std::shared_ptr<const GreedyOpening> opening;  // error-greedy with budgets: the openings its levels are prefixes of
-    ModelCost original_cost;
-};
-
-// What changes as levels are built: the faces baked so far (once for all
-// levels), and each budgeted level's prefix of the plan, start_lod's
-// estimate until build_lod fits it to the level's real bytes.
-struct LodCache {
-    std::map<std::pair<int, int>, std::array<BakedFace, 6>> baked;  // per box node and texel scale (cut.h)
-    std::vector<HybridLevel> hybrid_levels;  // hybrid: per current level c, its state
-    std::vector<std::size_t> opening_steps;  // error-greedy with budgets: per level c, the openings drawn
-};
-
-// What every level of one model shares.
-struct LodSession {
-    LodInput input;
-    LodDerived derived;
-    LodCache cache;
-    LodTimes times;
-};
 
 // Throws InputError for an LoD model (boxlod does not simplify its own output) or bad parameters.
 // `boxes`, when given, are the model's node_boxes for parameters.box_kind (computed once, reused).
@@ -81,6 +41,14 @@ struct Lod {
 };
 
 Lod build_lod(LodSession& session, int current_level, int threads);
+
+// The whole model as one baked proxy (baked_proxy.h): `geometry` (the model
+// simplified, in its materials) drawn with the colours and normals of the
+// root's box faces baked at the session's sizing, texels `texel_scale` times
+// as large (texture_sizing.h: coarser_sizing): the proxy-baked baseline
+// (docs/sweeps.md), a far level as Simplygon and Unreal's HLOD make it.
+// Its parameters and statistics name it level `level`.
+Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads);
 
 // Throws InputError when level c's byte budget lies below the real bytes of
 // the session's coarsest cut, where build_lod would fail: a command calls it

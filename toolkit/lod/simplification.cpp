@@ -104,6 +104,18 @@ std::vector<std::size_t> proportional_budget(std::size_t total, const std::vecto
     return parts;
 }
 
+// The groups' positions and triangles as one primitive (no material).
+Primitive positions_only(const std::vector<Primitive>& groups) {
+    Primitive one;
+    for (const Primitive& group : groups) {
+        const auto base = std::uint32_t(one.positions.size());
+        one.positions.insert(one.positions.end(), group.positions.begin(), group.positions.end());
+        for (std::uint32_t index : group.indices) one.indices.push_back(base + index);
+    }
+    one.polygon_count = one.triangle_count();
+    return one;
+}
+
 }  // namespace
 
 std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options) {
@@ -111,6 +123,7 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
     std::vector<Primitive> groups = merge_primitives(model, subtree_nodes(model, root));
     if (groups.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
+    if (options.geometry_only) groups = {positions_only(groups)};
 
     std::vector<Primitive> welded(groups.size());
     parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g])); });

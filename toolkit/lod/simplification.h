@@ -22,6 +22,10 @@ struct SimplifyOptions {
     // or with this to their surface area: large walls of few triangles then keep
     // them while dense small parts (furniture, fittings) give theirs up.
     bool budget_by_area = false;
+    // Every primitive as one mesh of positions alone (materials, normals and
+    // uvs dropped), simplified across material seams: a baked proxy takes its
+    // colours and normals from its bake (baked_proxy.h), not from its materials.
+    bool geometry_only = false;
     int threads = 0;  // 0 = all cores; the result never depends on it
 };
 

@@ -1,6 +1,7 @@
 #include "experiments/sweep/sweep.h"
 
 #include "base/input_error.h"
+#include "experiments/sweep/proxy_baked.h"
 #include "toolkit/lod/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
@@ -219,6 +220,40 @@ TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
             EXPECT_GT(std::stoul(cgal[triangles]), 0u);
         }
         EXPECT_LE(best, plain) << level;
+    }
+}
+
+// proxy-baked: per level the model's geometry simplified as one mesh and drawn
+// with its root box's baked pages, as finely as the level's budget allows, the
+// variant with the lowest error kept (one for every view of a level, named).
+// Nothing that draws fits 10 % of the small test building: that level draws
+// the cheapest that does, over its budget as its bytes say.
+TEST(Sweep, ProxyBakedDrawsTheSimplifiedModelOnItsBakedBoxWithinEachBudget) {
+    const std::filesystem::path folder = test::scratch_folder("sweep_proxy_baked");
+    const Model building = test::lod_test_building();
+    save_model(building, (folder / "building.glb").string());
+    test::write_text(folder / "sweep.txt", "models = building.glb\nlevel_modes = error-greedy\nbudgets = 0.9, 0.1\n"
+                                           "baselines = proxy-baked\nviews = +X+Y+Z, -Z\nwidth = 64\nheight = 48\n"
+                                           "metrics = flip\nresolution = 48\n");
+    const SweepReport report = run_sweep(load_sweep_config((folder / "sweep.txt").string()), (folder / "out").string(), 2);
+    EXPECT_EQ(report.rows, 6u + 4u);  // no level 0: a baked copy of the original is no level
+    Table t = read_csv(folder / "out" / "results.csv");
+    const std::size_t variant = column(t, "baseline_variant"), bytes = column(t, "bytes"), pages = column(t, "pages"),
+                      triangles = column(t, "triangles");
+    std::vector<std::string> names;
+    for (const ProxyBakedVariant& v : proxy_baked_variants(1)) names.push_back(v.name);
+    const double original = double(model_cost(building).bytes());
+    for (const auto& [level, budget] : {std::pair{"1,", 0.9}, std::pair{"2,", 0.1}}) {
+        std::string chosen;
+        for (const char* view : {"+X+Y+Z,", "-Z,"}) {
+            auto row = row_of(t, std::string("building.glb,proxy-baked,-,-,") + level + view);
+            EXPECT_NE(std::find(names.begin(), names.end(), row[variant]), names.end()) << row[variant];
+            if (chosen.empty()) chosen = row[variant];
+            EXPECT_EQ(row[variant], chosen);
+            if (budget == 0.9) EXPECT_LE(std::stod(row[bytes]), budget * original);
+            EXPECT_GE(std::stoi(row[pages]), 1) << level;  // its colours are baked
+            EXPECT_GT(std::stoi(row[triangles]), 0) << level;
+        }
     }
 }
 

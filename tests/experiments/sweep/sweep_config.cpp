@@ -106,7 +106,7 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nlevel_mode = top-down\n", "cfg.txt: line 2: level_mode: the sweep varies this itself");
     expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
     expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
-    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, cgal, single-box, impostor, file-lods)");
+    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, cgal, single-box, impostor, proxy-baked, file-lods)");
     expect_error("models = a.glb\nimpostor_directions = 64\n", "cfg.txt: line 2: impostor_directions: ");
     expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice (first on line 1)");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");

@@ -73,6 +73,29 @@ int add_sphere(Model& model, int parent, float cx) {
     return sphere;
 }
 
+// A curved roof: half a cylinder of radius 2 and length 6 along z, of 96 x 24
+// separate tiles in a red and white checker (as a roof's tiles are modelled).
+int add_roof(Model& model, int parent) {
+    const int first_material = int(model.materials.size());
+    model.materials.emplace_back().base_color = {0.8f, 0.15f, 0.1f, 1};
+    model.materials.emplace_back().base_color = {0.9f, 0.9f, 0.9f, 1};
+    const int roof = add_node(model, parent, "roof");
+    for (int k = 0; k < 2; ++k) model.nodes[std::size_t(roof)].primitives.emplace_back().material = first_material + k;
+    const int around = 96, along = 24;
+    const double pi = 3.14159265358979323846;
+    auto point = [&](int i, int j) {
+        const double angle = pi * i / around;
+        return Eigen::Vector3f(float(2 * std::cos(angle)), float(2 * std::sin(angle)), 6.0f * float(j) / float(along));
+    };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < along; ++j) {
+            const Eigen::Vector3f corner = point(i + 1, j);
+            add_quad(model.nodes[std::size_t(roof)].primitives[std::size_t((i + j) % 2)], corner, point(i + 1, j + 1) - corner,
+                     point(i, j) - corner);
+        }
+    return roof;
+}
+
 struct Scene {
     Model model;
     int facade = -1, sphere = -1;
@@ -199,18 +222,23 @@ TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
     EXPECT_EQ(hidden[0].error, 0);
 }
 
+// With baked proxies too.
 TEST(Hybrid, PlansTheSameForAnyThreadCount) {
     Scene s = facade_and_sphere();
     const DecodedTextures textures = decode_textures(s.model);
-    const HybridPlan one = plan_hybrid(s.model, textures, s.boxes, settings_for(0.04f, 1));
-    const HybridPlan two = plan_hybrid(s.model, textures, s.boxes, settings_for(0.04f, 2));
-    ASSERT_EQ(one.steps.size(), two.steps.size());
-    for (std::size_t k = 0; k < one.steps.size(); ++k) {
-        EXPECT_EQ(one.steps[k].node, two.steps[k].node);
-        EXPECT_EQ(one.steps[k].proxy, two.steps[k].proxy);
+    for (const bool baked : {false, true}) {
+        HybridSettings on_one = settings_for(0.04f, 1), on_two = settings_for(0.04f, 2);
+        on_one.baked_proxies = on_two.baked_proxies = baked;
+        const HybridPlan one = plan_hybrid(s.model, textures, s.boxes, on_one);
+        const HybridPlan two = plan_hybrid(s.model, textures, s.boxes, on_two);
+        ASSERT_EQ(one.steps.size(), two.steps.size());
+        for (std::size_t k = 0; k < one.steps.size(); ++k) {
+            EXPECT_EQ(one.steps[k].node, two.steps[k].node);
+            EXPECT_EQ(one.steps[k].proxy, two.steps[k].proxy);
+        }
+        EXPECT_EQ(one.bytes, two.bytes);
+        EXPECT_EQ(one.error, two.error);
     }
-    EXPECT_EQ(one.bytes, two.bytes);
-    EXPECT_EQ(one.error, two.error);
 }
 
 TEST(Hybrid, MeasurementsReusedAtAnotherDistancePlanAsMeasuringAgain) {
@@ -497,4 +525,54 @@ TEST(Hybrid, OffersTheBoxWithCoarserTexelsForFewerBytes) {
     }
     EXPECT_GT(lod.face_texels, 0u);
     EXPECT_LE(lod.face_texels, texels);
+}
+
+// A curved roof of many small tiles seen from far: its box misses the curve,
+// and simplified in its materials it keeps one colour or the other where
+// the tiles average to pink. Offered (baked_proxies), the baked proxy has
+// the curve from the roof's geometry simplified as one mesh and the tiles'
+// colours from its box's faces: the roof's proxies are all simplified or
+// baked, each baked one beats every simplified proxy that costs as much, and
+// the budget of the cheapest baked one draws it. Not offered, none is there.
+TEST(Hybrid, AFarCurvedRoofIsDrawnByItsBakedProxyWhereOffered) {
+    Model model;
+    model.source = "roof";
+    add_node(model, -1, "root");
+    const int roof = add_roof(model, 0);
+    validate_model(model);
+    const std::vector<std::optional<OrientedBox>> boxes = node_boxes(model, BoxKind::minimal, 1);
+    HybridSettings settings = settings_for(0.1f, 2);
+    const HybridPlan plain = plan_hybrid(model, decode_textures(model), boxes, settings);
+    for (const Proxy& p : plain.proxies[std::size_t(roof)]) EXPECT_NE(p.kind, ProxyKind::baked);
+    settings.baked_proxies = true;
+    const HybridPlan plan = plan_hybrid(model, decode_textures(model), boxes, settings);
+    const std::vector<Proxy>& proxies = plan.proxies[std::size_t(roof)];
+    auto baked = std::find_if(proxies.begin(), proxies.end(), [](const Proxy& p) { return p.kind == ProxyKind::baked; });
+    ASSERT_NE(baked, proxies.end());
+    for (const Proxy& p : proxies) {
+        EXPECT_NE(p.kind, ProxyKind::box);
+        if (p.kind == ProxyKind::simplified && p.bytes <= baked->bytes) {
+            EXPECT_GT(p.error, baked->error);
+        }
+    }
+    const HybridLevel level = hybrid_level_within(model, plan, baked->bytes);
+    EXPECT_EQ(level.state[std::size_t(roof)], int(baked - proxies.begin()));
+    // Drawn, it samples the roof's pages: its triangles are on the level's baked page material.
+    LodParameters parameters;
+    parameters.level_mode = LevelMode::hybrid;
+    parameters.box_kind = BoxKind::minimal;
+    parameters.baked_proxies = true;
+    parameters.distance = settings.sizing.distance;
+    parameters.resolution = settings.sizing.resolution;
+    parameters.fovy = settings.sizing.fovy_degrees;
+    ASSERT_EQ(parse_budgets(std::to_string(baked->bytes * 1.5) + "B", parameters.budgets), "");
+    auto session = start_lod(model, parameters, 2);
+    const Lod lod = build_lod(*session, 1, 2);
+    ASSERT_EQ(lod.cut.baked_nodes.size(), 1u);
+    EXPECT_EQ(value_of(lod.statistics, "nodes_baked"), "1");
+    bool sampled = false;
+    for (const Node& node : lod.model.nodes)
+        for (const Primitive& p : node.primitives)
+            sampled = sampled || (lod.model.materials[std::size_t(p.material)].name.find("_proxy") != std::string::npos && !p.uvs.empty());
+    EXPECT_TRUE(sampled);
 }

@@ -17,7 +17,7 @@ TEST(LodParameters, KeysAndOptionsAreDeclaredOnce) {
         EXPECT_EQ(find_lod_parameter(d.key), &d);
     }
     EXPECT_EQ(find_lod_parameter("smoothness"), nullptr);
-    EXPECT_EQ(keys.size(), 20u);
+    EXPECT_EQ(keys.size(), 21u);
 }
 
 TEST(LodParameters, EveryValueReadsBackAsWritten) {
@@ -29,6 +29,7 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
     changed.box_kind = BoxKind::minimal;
     changed.keep_small_subtrees = true;
     changed.crop_faces = false;
+    changed.baked_proxies = true;
     changed.fovy = 33.3f;
     changed.resolution = 720.5f;
     changed.max_texture_size = 1024;
