@@ -1,11 +1,13 @@
 #include "base/atomic_write.h"
 
 #include "base/input_error.h"
+#include "base/folder_removal.h"
 #include "base/input_file.h"
 #include "base/utf8.h"
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -257,20 +259,29 @@ void remove_files(const std::vector<std::string>& files) {
     for (const std::string& file : files) ::unlink(file.c_str());
 }
 
+// Where a stale staging folder goes at once (remove_in_background): a name
+// remove_stale_staging_folders knows, FOLDER.trashK.boxlod-stagingPID.
+fs::path trash_name(const fs::path& folder, const std::string& suffix, int k) {
+    return folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix + std::to_string(::getpid()));
+}
+
 // The staging folders killed runs left beside `folder` (FOLDER.boxlod-stagingPID,
-// FOLDER.old.boxlod-stagingPID): those of this folder only, nothing else beside it.
+// FOLDER.old.boxlod-stagingPID, FOLDER.trashK.boxlod-stagingPID): those of
+// this folder only, nothing else beside it.
 void remove_stale_staging_folders(const fs::path& folder) {
     PartialOutputs& outputs = partial_outputs();
     std::lock_guard lock(outputs.mutex);
     std::error_code error;
     std::map<long, bool> verdicts;
     const std::string name = folder.filename().string();
+    std::vector<fs::path> stale_folders;  // listed first: renaming them changes the folder being listed
     for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end; it.increment(error)) {
         const std::string entry = it->path().filename().string();
-        const bool of_this = entry.rfind(name + staging_suffix, 0) == 0 || entry.rfind(name + ".old" + staging_suffix, 0) == 0;
-        std::error_code ignored;
-        if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts)) fs::remove_all(it->path(), ignored);
+        const bool trash = entry.rfind(name + ".trash", 0) == 0 && entry.find(staging_suffix) != std::string::npos;
+        const bool of_this = trash || entry.rfind(name + staging_suffix, 0) == 0 || entry.rfind(name + ".old" + staging_suffix, 0) == 0;
+        if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts)) stale_folders.push_back(it->path());
     }
+    for (std::size_t k = 0; k < stale_folders.size(); ++k) remove_in_background(stale_folders[k], trash_name(folder, staging_suffix, int(k)));
 }
 
 std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }
@@ -566,11 +577,12 @@ void remove_partial_outputs_on_interrupt() {
         for (const std::string& file : outputs.temporaries) ::unlink(file.c_str());
         for (const std::string& file : outputs.group_files) ::unlink(file.c_str());
         remove_empty_folders(outputs.made_folders);
-        for (const std::string& folder : outputs.staging_folders) {
-            std::error_code ignored;
-            fs::remove_all(folder, ignored);
-        }
-        std::fprintf(stderr, "boxlod: interrupted (signal %d); partial outputs removed\n", signal);
+        // Within a second: what is left of a staging folder then goes with the next run (remove_stale_staging_folders).
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+        bool left = false;
+        for (const std::string& folder : outputs.staging_folders) left = !remove_until(folder, deadline) || left;
+        std::fprintf(stderr, "boxlod: interrupted (signal %d); partial outputs removed%s\n", signal,
+                     left ? " (a staging folder's rest goes with the next run that writes there)" : "");
         std::_Exit(128 + signal);
     }).detach();
 }

@@ -544,9 +544,12 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     // A row holds its view's reference shot and the one it measures, both compared.
     check_memory("boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) + " pixels",
                  2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
+    const double most_rows = most_sweep_rows(config);  // refused before a model is read, an enormous one ran until killed
+    check_memory("boxlod sweep: the tables of up to " + format_number(most_rows) + " rows", most_rows * sweep_row_memory);
     SweepReport report;
     SweepOutput out = open_output(config, output_folder, result_columns(config), timing_columns());
     merge_shards(out, shard_folders);
+    if (progress) std::fprintf(progress, "boxlod sweep: up to %s rows; each model's lines give its ETA\n", format_number(most_rows).c_str());
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
         ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, config.models[m].path, threads); });

@@ -260,6 +260,15 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
     return c;
 }
 
+double most_sweep_rows(const SweepConfig& config) {
+    const double levels = config.levels.empty()
+                              ? double(std::max<std::size_t>(std::size_t(config.lod.wanted_levels), config.lod.budgets.size()) + 1)
+                              : double(config.levels.size());
+    const double variants = double(config.level_modes.size() * config.box_kinds.size() * config.interpolations.size());
+    const double groups = double(config.models.size()) * (variants + double(config.baselines.size())) * levels;
+    return groups * double(config.views.size() * config.distances.size() * config.render_modes.size());
+}
+
 SweepConfig load_sweep_config(const std::string& path) {
     return parse_sweep_config(read_input_file(path, "sweep config"), path);
 }

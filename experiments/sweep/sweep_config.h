@@ -72,6 +72,15 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
 std::vector<std::string> sweep_config_keys();
 SweepConfig load_sweep_config(const std::string& path);
 
+// The most rows the sweep can make, known before any model is read: per
+// model, each variant and baseline at most one group per level (the levels
+// listed, else wanted_levels or the budgets, and level 0), each group a row
+// per view, distance and render mode.
+double most_sweep_rows(const SweepConfig& config);
+// What a row takes while the sweep runs: its results.csv and timings.csv
+// lines and keys, held in memory (about 1 kB; docs/sweeps.md).
+constexpr double sweep_row_memory = 1024;
+
 // What every row of a sweep shares but its key columns do not name (image size,
 // FLIP's pixels per degree, sizing rule, impostor directions, the LoD parameters
 // it does not vary), as `key = value` lines: a re-run into a folder made with

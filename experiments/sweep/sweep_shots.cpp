@@ -8,14 +8,8 @@ namespace boxlod {
 
 RenderSettings view_settings(const Framing& framing, const std::string& view, float multiple, RenderMode mode,
                              const LodParameters& lod, int threads) {
-    RenderSettings settings;
-    settings.camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
-    settings.mode = mode;
-    settings.parallax_scale = lod.parallax_scale;
-    settings.parallax_bias = lod.parallax_bias;
-    settings.light = light_for_camera(settings.camera);
-    settings.threads = threads;
-    return settings;
+    const Camera camera = framed_camera(framing, *camera_direction(view), multiple * framing_distance(framing, lod.fovy), lod.fovy);
+    return drawing_settings(camera, mode, lod, threads);
 }
 
 double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values) {

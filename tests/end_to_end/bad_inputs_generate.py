@@ -104,3 +104,10 @@ put("declared_16384.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">II
 # and a real 128 x 128 one, whose metrics (84 bytes a pixel) need more than 1 MB
 put("grey_128.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 128, 128, 8, 0, 0, 0, 0)) +
     chunk(b"IDAT", zlib.compress(b"\0" * (129 * 128))) + chunk(b"IEND", b""))
+
+# A sweep whose cross product would not fit in memory: 65 levels x 26 views x
+# 99,900 distances x 2 groups, 338 million rows (refused before a model is read).
+put("sweep_enormous.txt", ("models = sample:house\nlevel_modes = top-down\nlevels = all\nwanted_levels = 64\nviews = all\n"
+                           "baselines = simplification\ndistances = " +
+                           ", ".join("%.2f" % (1 + i * 0.01) for i in range(99900)) + "\n").encode())
+

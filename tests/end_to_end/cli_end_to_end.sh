@@ -364,6 +364,25 @@ done
 "$boxlod" tiles "$work/city4.glb" -o "$work/tileset" --level-mode box-area --wanted-levels 3 > /dev/null
 check "the next run puts its tileset in place" python3 "$work/whole_tileset.py" "$work/tileset" "$old_tiles"
 check "and removes the staging folders of the runs killed outright" bash -c "! ls '$work' | grep -q 'tileset\.boxlod-staging'"
+# A fly-through of many frames stops within 2 s of SIGTERM, whatever it has
+# staged (it removed 27,600 staged frames first, 52 s); what is left of its
+# staging folder goes with the next run, which does not wait for it.
+"$boxlod" city --buildings 1 --frames 100000 --width 16 --height 16 --error-every 0 -o "$work/flight" > /dev/null 2> "$work/flight_err" &
+city_pid=$!
+sleep 4
+stopped_at=$(date +%s%N)
+kill -TERM $city_pid
+wait $city_pid
+status=$?
+stop_ms=$(( ($(date +%s%N) - stopped_at) / 1000000 ))
+check "a city stopped by SIGTERM exits 143 within 2 s (${stop_ms} ms)" bash -c "test $status = 143 -a $stop_ms -lt 2000"
+check "and says so" grep -q 'interrupted (signal 15); partial outputs removed' "$work/flight_err"
+started_at=$(date +%s%N)
+check "the next city in that folder succeeds" test "$(status_of "$boxlod" city --buildings 1 --frames 2 --width 16 --height 16 -o "$work/flight")" = 0
+next_ms=$(( ($(date +%s%N) - started_at) / 1000000 ))
+check "without waiting for the staged frames to go (${next_ms} ms)" test $next_ms -lt 10000
+check "whose staging folder is out of the way at once" bash -c "! ls '$work' | grep -q '^flight\.boxlod-staging'"
+check "and gone soon after" bash -c "for i in \$(seq 60); do ls '$work' | grep -q '^flight\.' || exit 0; sleep 0.5; done; exit 1"
 mkdir -p "$work/shared" && echo notes > "$work/shared/notes.txt"
 "$boxlod" tiles "$work/city4.glb" -o "$work/shared" --level-mode box-area --wanted-levels 3 > /dev/null
 check "a folder holding other files keeps them beside the tileset" test -s "$work/shared/notes.txt" -a -s "$work/shared/tileset.json"

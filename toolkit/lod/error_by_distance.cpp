@@ -22,14 +22,7 @@ constexpr int max_distances = 64;
 
 // A view of `drawable` as the chain draws it (its render mode and parallax), one thread: views are measured side by side.
 Shot render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
-    RenderSettings settings;
-    settings.camera = camera;
-    settings.mode = drawn.render_mode;
-    settings.parallax_scale = drawn.parallax_scale;
-    settings.parallax_bias = drawn.parallax_bias;
-    settings.light = light_for_camera(camera);
-    settings.threads = 1;
-    return render_shot(drawable.batches, settings, pixels, pixels);
+    return render_shot(drawable.batches, drawing_settings(camera, drawn.render_mode, drawn, 1), pixels, pixels);
 }
 
 }  // namespace

@@ -276,4 +276,15 @@ void validate_parameters(const LodParameters& p, const std::string& where) {
         fail("min_texture_size and max_texture_size must be powers of two with 16 <= max and min <= max");
 }
 
+RenderSettings drawing_settings(const Camera& camera, RenderMode mode, const LodParameters& parameters, int threads) {
+    RenderSettings settings;
+    settings.camera = camera;
+    settings.mode = mode;
+    settings.parallax_scale = parameters.parallax_scale;
+    settings.parallax_bias = parameters.parallax_bias;
+    settings.light = light_for_camera(camera);
+    settings.threads = threads;
+    return settings;
+}
+
 }  // namespace boxlod

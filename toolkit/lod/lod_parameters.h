@@ -107,4 +107,8 @@ int asked_levels(const LodParameters& parameters);
 // texture size, the camera, the light); throws InputError naming `where`.
 void validate_parameters(const LodParameters& parameters, const std::string& where);
 
+// How a level is drawn through `camera`: in `mode`, with the parallax its
+// parameters state, lit from the camera (docs/design.md: Rendering).
+RenderSettings drawing_settings(const Camera& camera, RenderMode mode, const LodParameters& parameters, int threads);
+
 }  // namespace boxlod

@@ -123,6 +123,18 @@ TEST(SweepConfig, LoadNamesAMissingFile) {
     EXPECT_EQ(c.models.at(0).path, (folder / "m.glb").lexically_normal().string());
 }
 
+// The most rows a sweep can make, before any model is read: per model (2),
+// variants (2 level modes) and baselines (1), each at every level (wanted 8,
+// or the 4 budgets, and level 0), times views (3), distances (2) and modes (1).
+TEST(SweepConfig, MostRowsBoundTheCrossProductBeforeAModelIsRead) {
+    const std::string lists = "models = a.glb, b.glb\nlevel_modes = top-down, hybrid\nbaselines = simplification\n"
+                              "views = +X, -X, +Z\ndistances = 1, 2\n";
+    EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists, "c.txt")), 2.0 * 3 * 9 * 6);
+    EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists + "budgets = 0.5, 0.1, 0.01, 0.001\nwanted_levels = 2\n", "c.txt")),
+              2.0 * 3 * 5 * 6);
+    EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists + "levels = 0, 3\n", "c.txt")), 2.0 * 3 * 2 * 6);
+}
+
 // The configs the README and docs point to load as shipped (their models exist once make test has installed them).
 TEST(SweepConfig, EveryShippedConfigLoads) {
     const std::filesystem::path configs = std::filesystem::path(BOXLOD_TEST_DATA).parent_path().parent_path() / "experiments" / "configs";

@@ -1,0 +1,19 @@
+// Removing folders of many files without making anyone wait: a city's
+// 27,600 staged frames took 52 s to remove, first after SIGTERM, then at the
+// next run (base/atomic_write.h: OutputFolder).
+#pragma once
+#include <chrono>
+#include <filesystem>
+
+namespace boxlod {
+
+// Removes `folder`'s files one by one until `deadline`, then the folder if
+// they all went; whether it did.
+bool remove_until(const std::filesystem::path& folder, std::chrono::steady_clock::time_point deadline);
+
+// Renames `folder` to `trash` at once (beside it) and removes it with a
+// detached `rm -rf` that this process does not wait for; where the rename or
+// the spawn fails, what it can here and now.
+void remove_in_background(const std::filesystem::path& folder, const std::filesystem::path& trash);
+
+}  // namespace boxlod
