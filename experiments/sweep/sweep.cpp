@@ -549,10 +549,11 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     SweepReport report;
     SweepOutput out = open_output(config, output_folder, result_columns(config), timing_columns());
     merge_shards(out, shard_folders);
-    if (progress) std::fprintf(progress, "boxlod sweep: up to %s rows; each model's lines give its ETA\n", format_number(most_rows).c_str());
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
         ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, config.models[m].path, threads); });
+        if (progress && m == 0)  // once a model is read: a sweep refused for it says so in one line
+            std::fprintf(progress, "boxlod sweep: up to %s rows; each model's lines give its ETA\n", format_number(most_rows).c_str());
         ModelRun run{config, config.models[m], model, model_framing(model)};
         run.index = m;
         run.rows = plan.groups * rows_per_group(config);

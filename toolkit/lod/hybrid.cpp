@@ -99,8 +99,8 @@ struct BakedSum {
 
 struct NodeMeasurement {
     bool simplified_made = false, baked_made = false;
-    std::vector<SimplifiedSubtree> simplified;
-    std::vector<SimplifiedSubtree> baked;  // baked proxies' geometry (baked_geometry)  // by edge collapse, then clustering: each simpler than the one before, in share order
+    std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
+    std::vector<SimplifiedSubtree> baked;       // baked proxies' geometry (baked_geometry)
     float pixel = 0;  // the measuring view the sums below are of (0: none yet)
     int side = 0;
     std::map<float, double> box_sums;     // per texel size (m) of the baked box
