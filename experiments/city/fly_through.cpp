@@ -72,6 +72,15 @@ MeasuredError measure_level_error(const Drawable& level, const Drawable& origina
     return {1 - ssim(a, b, 1), distance, options.fovy, double(options.height)};
 }
 
+// Measured switching: each level some distance draws switches in where the
+// chain measured it to stay within `error` (chain.h: switched_levels, as
+// build --chain and tiles switch); the others have no switch distance.
+void set_switch_distances(Chain& chain, double error, std::vector<SelectionLevel>& levels) {
+    const SwitchedChain switched = switched_levels(chain, error, int(levels.size()));
+    for (std::size_t k = 0; k < switched.levels.size(); ++k)
+        levels[std::size_t(switched.levels[k].level)].switch_distance = switched.switch_distances[k];
+}
+
 // A design's LoD, built by one thread. Its textures go into `cache` first, so
 // that its levels share them instead of packing copies.
 DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThroughOptions& options,
@@ -100,6 +109,8 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));
     }
+    if (const auto* measured = std::get_if<MeasuredSwitch>(&options.strategy))  // where the chain measured each level within the error
+        set_switch_distances(chain, measured->error, levels);
     if (boxes[0]) {
         built.object = selection_object(*boxes[0], std::move(levels));
     } else {  // no geometry at all: a point that draws nothing

@@ -166,7 +166,9 @@ Subcommand city_subcommand() {
         designs_option(),
         {"seed", "S", "the city's seed (default 0)", seed_range},
         {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
-                          "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] (default texel)"},
+                          "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] | measured[:ERROR] "
+                          "(each level from where its chain measured it within ERROR of the original, 0.05, as build --chain "
+                          "switches) (default texel)"},
         {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
         {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
         {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},

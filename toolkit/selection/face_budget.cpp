@@ -9,7 +9,8 @@ namespace boxlod {
 
 double selection_importance(const Strategy& strategy, const SelectionObject& object, const SelectionView& view) {
     double value = strategy_value(strategy, object, view);
-    bool grows_coarser = std::holds_alternative<DistanceBands>(strategy) || std::holds_alternative<TexelExact>(strategy);
+    bool grows_coarser = std::holds_alternative<DistanceBands>(strategy) || std::holds_alternative<TexelExact>(strategy) ||
+                         std::holds_alternative<MeasuredSwitch>(strategy);
     return grows_coarser ? -value : value;
 }
 

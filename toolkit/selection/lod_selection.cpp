@@ -67,6 +67,15 @@ int texel_exact_level(const TexelExact& strategy, const SelectionObject& object,
     return 0;
 }
 
+// The coarsest level whose switch distance `distance` / detail has reached.
+int measured_level(const MeasuredSwitch& strategy, const SelectionObject& object, double distance) {
+    for (int c = coarsest_level(object); c >= 1; --c) {
+        const std::optional<double>& at = object.levels[std::size_t(c)].switch_distance;
+        if (at && distance / strategy.detail >= *at) return c;
+    }
+    return 0;
+}
+
 // choose_level's rules that override every strategy.
 std::optional<int> forced_level(const SelectionObject& object, const SelectionView& view, double value) {
     if (!(object.radius > 0)) return coarsest_level(object);
@@ -113,6 +122,8 @@ void validate_strategy(const Strategy& strategy, const std::string& where) {
     if (auto* s = std::get_if<TexelExact>(&strategy))
         check(!s->error_budget || (std::isfinite(*s->error_budget) && *s->error_budget >= 0), where, "texel exact",
               "the error budget must be finite and non-negative");
+    if (auto* s = std::get_if<MeasuredSwitch>(&strategy))
+        check(s->error > 0 && s->error <= 1, where, "measured switching", "the error must be in (0, 1]");
 }
 
 Strategy scale_detail(const Strategy& strategy, double detail) {
@@ -126,6 +137,7 @@ Strategy scale_detail(const Strategy& strategy, double detail) {
     if (auto* s = std::get_if<ScreenRatio>(&out)) scale(s->ratios, 1 / (detail * detail));
     if (auto* s = std::get_if<BoxDiagonal>(&out)) s->min_pixels /= detail, s->max_pixels /= detail;
     if (auto* s = std::get_if<TexelExact>(&out)) s->detail *= detail;
+    if (auto* s = std::get_if<MeasuredSwitch>(&out)) s->detail *= detail;
     return out;
 }
 
@@ -208,7 +220,8 @@ double scaled_error(const MeasuredError& error, double footprint) {
 }
 
 double strategy_value(const Strategy& strategy, const SelectionObject& object, const SelectionView& view) {
-    if (std::holds_alternative<DistanceBands>(strategy)) return camera_distance(object, view);
+    if (std::holds_alternative<DistanceBands>(strategy) || std::holds_alternative<MeasuredSwitch>(strategy))
+        return camera_distance(object, view);
     if (std::holds_alternative<PixelCount>(strategy)) return sphere_pixel_count(object, view);
     if (std::holds_alternative<ScreenRatio>(strategy)) {
         // screen-ratio-lod-strategy.txt: the pixel count over the screen's, so that a
@@ -229,6 +242,7 @@ int level_for_value(const Strategy& strategy, const SelectionObject& object, dou
     if (auto* s = std::get_if<BoxDiagonal>(&strategy))
         // Detail floor(t N) as the reference truncates, counted from the coarsest level.
         return n - std::clamp(int(std::floor(diagonal_weight(*s, value) * n)), 0, n);
+    if (auto* s = std::get_if<MeasuredSwitch>(&strategy)) return measured_level(*s, object, value);
     return texel_exact_level(std::get<TexelExact>(strategy), object, value);
 }
 

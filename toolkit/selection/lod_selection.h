@@ -32,6 +32,10 @@ struct SelectionLevel {
     std::size_t faces = 0;                // faces drawn at this level (statistics: faces_lod)
     std::optional<TextureSizing> sizing;  // the texel = pixel view its boxes were baked for (hybrid: its finest boxes)
     std::optional<MeasuredError> error;   // for texel-exact selection under an error budget
+    // For measured switching: the camera distance (metres, for the fovy and
+    // resolution its chain was sized for) from which it is drawn, as the
+    // chain measured it (chain.h: switched_levels); none: no distance draws it.
+    std::optional<double> switch_distance;
 };
 
 // The object being drawn: its bounding sphere, optionally its oriented box, and
@@ -80,7 +84,15 @@ struct TexelExact {
     std::optional<double> error_budget;
     double detail = 1;  // judge levels at the pixel footprint / detail (see scale_detail)
 };
-using Strategy = std::variant<DistanceBands, PixelCount, ScreenRatio, BoxDiagonal, TexelExact>;
+// Each level from the distance its chain measured it to stay within `error`
+// of the original (FLIP over covered pixels; chain.h: switched_levels, as
+// `build --chain` and `tiles` switch): the coarsest level whose switch
+// distance the camera has passed, judged at the distance / detail.
+struct MeasuredSwitch {
+    double error = 0.05;
+    double detail = 1;
+};
+using Strategy = std::variant<DistanceBands, PixelCount, ScreenRatio, BoxDiagonal, TexelExact, MeasuredSwitch>;
 
 // A level-of-detail bias (the engines' "LOD bias"): the strategy picks levels as if
 // every object were seen from 1/detail of its distance, so detail > 1 keeps finer

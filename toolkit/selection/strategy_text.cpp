@@ -92,16 +92,23 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
             texel.error_budget = parse_number(parts[0], where, name);
         }
         strategy = texel;
+    } else if (name == "measured") {
+        MeasuredSwitch measured;
+        if (has_arguments) {
+            if (parts.size() != 1) throw_input_error(where, name, "expected measured or measured:ERROR");
+            measured.error = parse_number(parts[0], where, name);
+        }
+        strategy = measured;
     } else {
         throw_input_error(where, "", "unknown strategy '" + text + "' (distance:D1,D2,..., pixels:P1,P2,..., "
-                                     "ratio:R1,R2,..., diagonal[:MIN,MAX[,INTERPOLATION]], texel[:BUDGET])");
+                                     "ratio:R1,R2,..., diagonal[:MIN,MAX[,INTERPOLATION]], texel[:BUDGET], measured[:ERROR])");
     }
     validate_strategy(strategy, where);
     return strategy;
 }
 
 std::string strategy_name(const Strategy& strategy) {
-    static const char* const names[] = {"distance", "pixels", "ratio", "diagonal", "texel"};
+    static const char* const names[] = {"distance", "pixels", "ratio", "diagonal", "texel", "measured"};
     return names[strategy.index()];
 }
 
@@ -112,6 +119,7 @@ std::string format_strategy(const Strategy& strategy) {
     if (auto* s = std::get_if<ScreenRatio>(&strategy)) return name + ":" + join_numbers(s->ratios);
     if (auto* s = std::get_if<BoxDiagonal>(&strategy))
         return name + ":" + join_numbers({s->min_pixels, s->max_pixels}) + "," + interpolation_text(s->interpolation);
+    if (auto* s = std::get_if<MeasuredSwitch>(&strategy)) return name + ":" + format_number(s->error);
     const TexelExact& texel = std::get<TexelExact>(strategy);
     return texel.error_budget ? name + ":" + format_number(*texel.error_budget) : name;
 }

@@ -102,6 +102,26 @@ TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
     }
 }
 
+// Measured switching (--strategy measured): each level a distance draws gets
+// the distance from which its design's chain measured it within the error,
+// farther for coarser levels, and a dolly from 3 km passes from coarse to fine.
+TEST(FlyThrough, MeasuredSwitchingTakesTheChainsSwitchDistances) {
+    FlyThroughOptions options = tiny_frames();
+    options.strategy = parse_strategy("measured:0.1", "test");
+    options.error_every = 0;
+    const CityLevels levels = build_city_levels(small_city(1), options, false);
+    const SelectionObject& object = levels.objects[0];
+    std::vector<double> switched_at;
+    for (int c = 1; c <= coarsest_level(object); ++c)
+        if (object.levels[std::size_t(c)].switch_distance) switched_at.push_back(*object.levels[std::size_t(c)].switch_distance);
+    ASSERT_GE(switched_at.size(), 1u);
+    for (std::size_t k = 1; k < switched_at.size(); ++k) EXPECT_GT(switched_at[k], switched_at[k - 1]);
+    const std::vector<FrameRecord> frames = fly_through(levels, dolly(object, 40), options);
+    for (std::size_t k = 1; k < frames.size(); ++k) EXPECT_LE(frames[k].levels[0], frames[k - 1].levels[0]) << "frame " << k;
+    EXPECT_GT(frames.front().levels[0], 0);
+    EXPECT_EQ(frames.back().levels[0], 0);
+}
+
 // Levels are unpacked on demand: how much stays unpacked changes how often a level is
 // unpacked again, never what a frame shows; each level is unpacked once when all fit.
 // (The full-detail frames compared are unpacked apart, not through this cache.)

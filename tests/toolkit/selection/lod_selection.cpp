@@ -186,6 +186,22 @@ TEST(LodSelection, DistanceBandsCountTheThresholdsPassed) {
     EXPECT_EQ(choose_level(bands, sphere(1, 0), on_axis(100, 45, 640, 480)).level, 0);
 }
 
+// Measured switching: the coarsest level whose measured switch distance the
+// camera has passed; a level no distance draws (level 2 here) is never picked;
+// the detail bias judges the distance / K.
+TEST(LodSelection, MeasuredSwitchingPicksTheCoarsestLevelSwitchedIn) {
+    SelectionObject object = sphere(1, 4);
+    object.levels[1].switch_distance = 10;
+    object.levels[3].switch_distance = 40;
+    const MeasuredSwitch measured;
+    EXPECT_EQ(choose_level(measured, object, on_axis(5, 45, 640, 480)).level, 0);
+    EXPECT_EQ(choose_level(measured, object, on_axis(15, 45, 640, 480)).level, 1);
+    EXPECT_EQ(choose_level(measured, object, on_axis(30, 45, 640, 480)).level, 1);
+    EXPECT_EQ(choose_level(measured, object, on_axis(50, 45, 640, 480)).level, 3);
+    EXPECT_EQ(choose_level(scale_detail(measured, 2), object, on_axis(50, 45, 640, 480)).level, 1);
+    EXPECT_EQ(choose_level(measured, sphere(1, 4), on_axis(1000, 45, 640, 480)).level, 0);  // nothing measured: the original
+}
+
 TEST(LodSelection, TexelExactAcceptsALevelFromItsBakedDistanceOn) {
     SelectionObject object = sphere(2, 4);
     for (int c = 1; c <= 3; ++c) object.levels[c].sizing = sizing(25.0f * float(1 << c));  // 50, 100, 200

@@ -47,12 +47,15 @@ TEST(StrategyText, ParsesEveryStrategyWithItsParameters) {
 
     EXPECT_FALSE(std::get<TexelExact>(parse_strategy("texel", "--strategy")).error_budget);
     EXPECT_EQ(std::get<TexelExact>(parse_strategy("texel:0.05", "--strategy")).error_budget, 0.05);
+
+    EXPECT_EQ(std::get<MeasuredSwitch>(parse_strategy("measured", "--strategy")).error, 0.05);
+    EXPECT_EQ(std::get<MeasuredSwitch>(parse_strategy("measured:0.1", "--strategy")).error, 0.1);
 }
 
 TEST(StrategyText, FormatParsesBackToTheSameText) {
     for (const char* text : {"distance:40,80,160", "pixels:2e+05,50000,10000", "ratio:0.2,0.05,0.01",
                              "diagonal:16,512,linear", "diagonal:8,300,square-root", "diagonal:1,2,square", "texel",
-                             "texel:0.05", "distance:0.1,0.30000000000000004"}) {
+                             "texel:0.05", "measured:0.1", "distance:0.1,0.30000000000000004"}) {
         Strategy strategy = parse_strategy(text, "--strategy");
         EXPECT_EQ(format_strategy(strategy), text);
         EXPECT_EQ(format_strategy(parse_strategy(format_strategy(strategy), "again")), text);
@@ -64,6 +67,8 @@ TEST(StrategyText, FormatParsesBackToTheSameText) {
     EXPECT_EQ(strategy_name(parse_strategy("ratio:1", "x")), "ratio");
     EXPECT_EQ(strategy_name(parse_strategy("diagonal", "x")), "diagonal");
     EXPECT_EQ(strategy_name(parse_strategy("texel:1", "x")), "texel");
+    EXPECT_EQ(strategy_name(parse_strategy("measured", "x")), "measured");
+    EXPECT_EQ(format_strategy(parse_strategy("measured", "x")), "measured:0.05");
 }
 
 TEST(StrategyText, BadTextIsOneErrorNamingWhere) {
@@ -71,7 +76,8 @@ TEST(StrategyText, BadTextIsOneErrorNamingWhere) {
     for (const char* text : {"sideways", "", "distance", "distance:", "distance:40,,80", "distance:40,abc",
                              "distance:80,40", "pixels:10,20", "ratio:0.1,0.1", "pixels:-5", "distance:nan",
                              "diagonal:16", "diagonal:16,512,cubic", "diagonal:600,500", "diagonal:1,2,linear,4",
-                             "texel:", "texel:-1", "texel:0.1,0.2", "distance:40 ,80"}) {
+                             "texel:", "texel:-1", "texel:0.1,0.2", "distance:40 ,80", "measured:0", "measured:1.5",
+                             "measured:0.1,0.2", "measured:nan"}) {
         std::string message = error_of(text);
         EXPECT_EQ(message.rfind("--strategy: ", 0), 0u) << "'" << text << "' gave '" << message << "'";
         EXPECT_EQ(message.find('\n'), std::string::npos);
