@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
         parameters.budgets = {{true, 0.05}};  // 5 % of the original's bytes
         const boxlod::Level level = boxlod::build_levels_by_budget(model, parameters).front();
         boxlod::write_model(level.model, argv[2]);
-        const boxlod::View view{.direction = {1, 1, 1}, .distance = 2};
+        const boxlod::Viewpoint view{.direction = {1, 1, 1}, .distance = 2};
         const boxlod::Shot original = boxlod::render_model(model, model, view);
         const boxlod::Shot drawn = boxlod::render_model(level.model, model, view);
         const boxlod::Comparison difference = boxlod::compare_renders(original, drawn);

@@ -59,7 +59,7 @@ std::vector<Level> build_levels_by_budget(const Model& model, const LodParameter
     return distinct_levels(chain, 1, chain.obtained_levels());
 }
 
-Shot render_model(const Model& model, const Model& framed, const View& view, int threads) {
+Shot render_model(const Model& model, const Model& framed, const Viewpoint& view, int threads) {
     if (!(view.direction.squaredNorm() > 0)) throw InputError("render: the view's direction has no length");
     if (!(view.distance > 0 && view.distance <= 1e6f)) throw InputError("render: the view's distance must be in (0, 1e6]");
     if (!image_side_range.contains(view.width) || !image_side_range.contains(view.height))

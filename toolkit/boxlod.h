@@ -61,7 +61,7 @@ std::vector<Level> build_levels_by_budget(const Model& model, const LodParameter
 // A camera around a model: from `direction` (from the centre of its bounding
 // box towards the camera, e.g. (1, 1, 1)), `distance` times the distance at
 // which its bounding sphere fills a vertical field of view of 45 degrees.
-struct View {
+struct Viewpoint {
     Eigen::Vector3f direction{1, 1, 1};
     float distance = 1;
     int width = 256, height = 256;
@@ -71,7 +71,7 @@ struct View {
 // `model` through `view` around `framed` (the original: a level and its
 // original are seen from the same camera), on white: the image and the
 // pixels the model covers, as the metrics take them.
-Shot render_model(const Model& model, const Model& framed, const View& view, int threads = 0);
+Shot render_model(const Model& model, const Model& framed, const Viewpoint& view, int threads = 0);
 
 // How `test` differs from `reference` (same size): as `boxlod compare` measures.
 struct Comparison {
