@@ -62,6 +62,10 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
             throw_input_error(where, name, std::string("needs thresholds, e.g. '") + example + "'");
         return parse_numbers(parts, where, name);
     };
+    auto one_number = [&](const char* value_name) {  // NAME:VALUE
+        if (parts.size() != 1) throw_input_error(where, name, "expected " + name + " or " + name + ":" + value_name);
+        return parse_number(parts[0], where, name);
+    };
     Strategy strategy;
     if (name == "distance") {
         strategy = DistanceBands{thresholds("distance:40,80,160")};
@@ -87,17 +91,11 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
         strategy = diagonal;
     } else if (name == "texel") {
         TexelExact texel;
-        if (has_arguments) {
-            if (parts.size() != 1) throw_input_error(where, name, "expected texel or texel:ERROR_BUDGET");
-            texel.error_budget = parse_number(parts[0], where, name);
-        }
+        if (has_arguments) texel.error_budget = one_number("ERROR_BUDGET");
         strategy = texel;
     } else if (name == "measured") {
         MeasuredSwitch measured;
-        if (has_arguments) {
-            if (parts.size() != 1) throw_input_error(where, name, "expected measured or measured:ERROR");
-            measured.error = parse_number(parts[0], where, name);
-        }
+        if (has_arguments) measured.error = one_number("ERROR");
         strategy = measured;
     } else {
         throw_input_error(where, "", "unknown strategy '" + text + "' (distance:D1,D2,..., pixels:P1,P2,..., "
