@@ -2,7 +2,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/model/material_merge.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 
 #include <cstdio>
 
@@ -11,9 +11,9 @@ namespace boxlod {
 static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
-    Model model = load_model(arguments.positionals[0], {.chain_level = 0, .city_lod = city_lod_from(arguments)});
+    Model model = read_model(arguments.positionals[0], city_lod_from(arguments));  // through the library's face
     if (!arguments.has("keep-materials")) merge_materials(model);
-    save_model(model, arguments.text("output"));
+    write_model(model, arguments.text("output"));
     std::printf("output = %s\n", arguments.text("output").c_str());
     return 0;
 }
