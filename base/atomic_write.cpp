@@ -260,9 +260,22 @@ void remove_files(const std::vector<std::string>& files) {
 }
 
 // Where a stale staging folder goes at once (remove_in_background): a name
-// remove_stale_staging_folders knows, FOLDER.trashK.boxlod-stagingPID.
-fs::path trash_name(const fs::path& folder, const std::string& suffix, int k) {
-    return folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix + std::to_string(::getpid()));
+// remove_stale_staging_folders knows, FOLDER.trashK.boxlod-stagingPID, that
+// nothing has yet (a run before with this process id may have left one).
+fs::path free_trash_name(const fs::path& folder, const std::string& suffix) {
+    for (long k = 0;; ++k) {
+        fs::path trash = folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix + std::to_string(::getpid()));
+        std::error_code error;
+        if (!fs::exists(fs::symlink_status(trash, error))) return trash;
+    }
+}
+
+// FOLDER.trashK.boxlod-stagingPID, K digits.
+bool is_trash_of(const std::string& entry, const std::string& name, const std::string& suffix) {
+    const std::string prefix = name + ".trash";
+    if (entry.rfind(prefix, 0) != 0) return false;
+    const std::size_t digits = entry.find_first_not_of("0123456789", prefix.size());
+    return digits > prefix.size() && digits != std::string::npos && entry.compare(digits, suffix.size(), suffix) == 0;
 }
 
 // The staging folders killed runs left beside `folder` (FOLDER.boxlod-stagingPID,
@@ -277,11 +290,11 @@ void remove_stale_staging_folders(const fs::path& folder) {
     std::vector<fs::path> stale_folders;  // listed first: renaming them changes the folder being listed
     for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end; it.increment(error)) {
         const std::string entry = it->path().filename().string();
-        const bool trash = entry.rfind(name + ".trash", 0) == 0 && entry.find(staging_suffix) != std::string::npos;
-        const bool of_this = trash || entry.rfind(name + staging_suffix, 0) == 0 || entry.rfind(name + ".old" + staging_suffix, 0) == 0;
+        const bool of_this = is_trash_of(entry, name, staging_suffix) || entry.rfind(name + staging_suffix, 0) == 0 ||
+                             entry.rfind(name + ".old" + staging_suffix, 0) == 0;
         if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts)) stale_folders.push_back(it->path());
     }
-    for (std::size_t k = 0; k < stale_folders.size(); ++k) remove_in_background(stale_folders[k], trash_name(folder, staging_suffix, int(k)));
+    for (const fs::path& stale_folder : stale_folders) remove_in_background(stale_folder, free_trash_name(folder, staging_suffix));
 }
 
 std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }

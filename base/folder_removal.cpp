@@ -1,6 +1,7 @@
 #include "base/folder_removal.h"
 
 #include <csignal>
+#include <fcntl.h>
 #include <spawn.h>
 #include <string>
 #include <unistd.h>
@@ -11,10 +12,12 @@ namespace fs = std::filesystem;
 
 bool remove_until(const fs::path& folder, std::chrono::steady_clock::time_point deadline) {
     std::error_code error;
-    for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
-        if (std::chrono::steady_clock::now() > deadline) return false;
-        if (!it->is_directory()) ::unlink(it->path().c_str());
+    for (fs::recursive_directory_iterator it(folder, error), end; it != end; it.increment(error)) {
+        if (error || std::chrono::steady_clock::now() > deadline) return false;
+        std::error_code status_error;
+        if (!fs::is_directory(it->symlink_status(status_error)) && !status_error) ::unlink(it->path().c_str());
     }
+    if (error) return false;  // not listed: what remains, if anything, is left for later
     fs::remove_all(folder, error);
     return !error;
 }
@@ -22,17 +25,24 @@ bool remove_until(const fs::path& folder, std::chrono::steady_clock::time_point 
 void remove_in_background(const fs::path& folder, const fs::path& trash) {
     std::error_code error;
     fs::rename(folder, trash, error);
-    std::string path = (error ? folder : trash).string();
-    char rm[] = "rm", flags[] = "-rf", end_of_options[] = "--";
+    if (error) return;  // left as it is: a later run tries again, and never removes a name in use
+    std::string path = trash.string();
+    char rm[] = "/bin/rm", flags[] = "-rf", end_of_options[] = "--";
     char* argv[] = {rm, flags, end_of_options, path.data(), nullptr};
+    // Detached: a session of its own (no terminal's Ctrl-C), no output on
+    // ours, and not blocking the signals this process blocks (atomic_write.h).
     posix_spawnattr_t attributes;
+    posix_spawn_file_actions_t files;
     sigset_t none;
     sigemptyset(&none);
     posix_spawnattr_init(&attributes);
-    posix_spawnattr_setsigmask(&attributes, &none);  // a caller may block SIGINT and SIGTERM (atomic_write.h)
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSID);
+    posix_spawn_file_actions_init(&files);
+    for (int fd : {0, 1, 2}) posix_spawn_file_actions_addopen(&files, fd, "/dev/null", fd == 0 ? O_RDONLY : O_WRONLY, 0);
     pid_t child = 0;
-    if (posix_spawnp(&child, "rm", nullptr, &attributes, argv, environ) != 0) fs::remove_all(path, error);
+    if (posix_spawn(&child, rm, &files, &attributes, argv, environ) != 0) fs::remove_all(trash, error);
+    posix_spawn_file_actions_destroy(&files);
     posix_spawnattr_destroy(&attributes);
 }
 

@@ -8,12 +8,14 @@
 namespace boxlod {
 
 // Removes `folder`'s files one by one until `deadline`, then the folder if
-// they all went; whether it did.
+// they all went; whether it did (false also where it cannot be listed).
 bool remove_until(const std::filesystem::path& folder, std::chrono::steady_clock::time_point deadline);
 
-// Renames `folder` to `trash` at once (beside it) and removes it with a
-// detached `rm -rf` that this process does not wait for; where the rename or
-// the spawn fails, what it can here and now.
+// Renames `folder` to `trash` at once (beside it; a name nothing has) and
+// removes it with a detached `rm -rf` that this process does not wait for
+// (its own session, no output; a zombie until this process ends), or here
+// and now where it cannot be started. A folder that cannot be renamed is
+// left as it is: a later run tries again.
 void remove_in_background(const std::filesystem::path& folder, const std::filesystem::path& trash);
 
 }  // namespace boxlod

@@ -6,7 +6,10 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
-    if (argc != 3) return 2;
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: api_example MODEL OUT.glb\n");
+        return 2;
+    }
     try {
         const boxlod::Model model = boxlod::read_model(argv[1]);
         boxlod::LodParameters parameters;

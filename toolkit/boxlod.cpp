@@ -1,6 +1,7 @@
 #include "toolkit/boxlod.h"
 
 #include "base/memory_budget.h"
+#include "base/parallel.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/chain.h"
@@ -9,6 +10,10 @@
 
 namespace boxlod {
 namespace {
+
+void check_threads(int threads) {
+    if (!thread_count_range.contains(threads)) throw InputError("threads: " + out_of_range_message(thread_count_range, std::to_string(threads)));
+}
 
 // The most levels a chain holds: MSFT_lod clients load the 10 finest (command_build.cpp).
 constexpr int max_chain_levels = 10;
@@ -34,14 +39,16 @@ Model read_model(const std::string& path, const std::string& city_lod) { return 
 void write_model(const Model& model, const std::string& path) { save_model(model, path); }
 
 Level build_level(const Model& model, const LodParameters& parameters, int level, int threads) {
+    check_threads(threads);
     Chain chain(model, parameters, threads);
     if (level < 0 || level > chain.obtained_levels())
-        throw InputError("level " + std::to_string(level) + " is past the levels obtained, 0.." + std::to_string(chain.obtained_levels()));
+        throw InputError("level " + std::to_string(level) + " is outside the levels obtained, 0.." + std::to_string(chain.obtained_levels()));
     return std::move(distinct_levels(chain, level, level).front());
 }
 
 std::vector<Level> build_chain(const Model& model, const LodParameters& parameters, double switch_error, int threads) {
-    if (!(switch_error >= 0 && switch_error <= 1)) throw InputError("switch error " + std::to_string(switch_error) + " is outside [0, 1]");
+    if (!(switch_error >= 0 && switch_error <= 1)) throw InputError("switch error " + format_number(switch_error) + " is outside [0, 1]");
+    check_threads(threads);
     Chain chain(model, parameters, threads);
     std::vector<int> every;
     for (int c = 1; c <= chain.obtained_levels(); ++c) every.push_back(c);
@@ -55,11 +62,13 @@ std::vector<Level> build_chain(const Model& model, const LodParameters& paramete
 
 std::vector<Level> build_levels_by_budget(const Model& model, const LodParameters& parameters, int threads) {
     if (parameters.budgets.empty()) throw InputError("budgets: none given (one level per byte budget)");
+    check_threads(threads);
     Chain chain(model, parameters, threads);
     return distinct_levels(chain, 1, chain.obtained_levels());
 }
 
 Shot render_model(const Model& model, const Model& framed, const Viewpoint& view, int threads) {
+    check_threads(threads);
     if (!(view.direction.squaredNorm() > 0)) throw InputError("render: the view's direction has no length");
     if (!(view.distance > 0 && view.distance <= 1e6f)) throw InputError("render: the view's distance must be in (0, 1e6]");
     if (!image_side_range.contains(view.width) || !image_side_range.contains(view.height))
@@ -75,8 +84,11 @@ Shot render_model(const Model& model, const Model& framed, const Viewpoint& view
 }
 
 Comparison compare_renders(const Shot& reference, const Shot& test, int threads) {
-    if (reference.image.width != test.image.width || reference.image.height != test.image.height)
-        throw InputError("compare: the shots differ in size");
+    check_threads(threads);
+    auto same_size = [&](const Coverage& coverage) { return coverage.width == reference.image.width && coverage.height == reference.image.height; };
+    if (reference.image.width != test.image.width || reference.image.height != test.image.height || !same_size(reference.coverage) ||
+        !same_size(test.coverage))
+        throw InputError("compare: the shots and their coverages differ in size");
     const std::vector<Metric> asked = {Metric::rmse, Metric::psnr, Metric::ssim, Metric::flip, Metric::flip_covered, Metric::iou};
     const MetricValues v = measure_metrics(
         asked, {.reference = reference.image, .test = test.image, .reference_coverage = &reference.coverage, .test_coverage = &test.coverage,

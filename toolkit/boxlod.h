@@ -6,8 +6,8 @@
 //
 // Errors: every function throws boxlod::InputError (base/input_error.h), one
 // line naming the file or parameter and what is wrong, for input it refuses;
-// anything else it throws is a bug. Threads: `threads` 0 uses every core; the
-// results are byte-identical for any count. The functions keep no state
+// anything else it throws is a bug. Threads: `threads` 0 uses every core (at
+// most 1024); the results are byte-identical for any count. The functions keep no state
 // between calls: call them from any thread, on models no other thread changes.
 #pragma once
 #include "base/key_values.h"
@@ -55,7 +55,8 @@ std::vector<Level> build_chain(const Model& model, const LodParameters& paramete
 
 // One level per byte budget of parameters.budgets (fractions of the
 // original's bytes, or sizes), for level modes error-greedy and hybrid, as
-// `build --budgets B1,...,BN --all-levels` writes levels 1..N.
+// `build --budgets B1,...,BN --all-levels` writes levels 1..N: a level that
+// draws what the one before draws is left out, as there.
 std::vector<Level> build_levels_by_budget(const Model& model, const LodParameters& parameters, int threads = 0);
 
 // A camera around a model: from `direction` (from the centre of its bounding

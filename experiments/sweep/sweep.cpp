@@ -305,16 +305,18 @@ void report_group(const ModelRun& run, const std::string& group, std::size_t row
 // share one candidate, `make(slot, alternative)` builds it; both run only for rows missing
 // from results.csv.
 // With several `alternatives` (simplification-best), each is drawn for every missing row
-// and the group keeps the one with the lowest mean choice_error over them.
+// and the group keeps the one with the lowest mean choice_error over them, of
+// those within `budget` bytes (every texture) where there are any.
 void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
                const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
                const std::function<Candidate(int, int)>& make,
-               int alternatives = 1) {
+               int alternatives = 1, double budget = -1) {
     auto group_start = Clock::now();
     const std::vector<MissingRow> missing = missing_rows(run, out, report, group);
     if (missing.empty()) return;
     std::vector<std::vector<DrawnRow>> drawn(static_cast<std::size_t>(alternatives));
     std::vector<double> mean_error(std::size_t(alternatives), 0);
+    std::vector<char> fits(std::size_t(alternatives), true);
     for (int a = 0; a < alternatives; ++a) {
         std::map<int, Candidate> candidates;
         std::vector<const Candidate*> of_row;
@@ -334,11 +336,15 @@ void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::
                 found = candidates.emplace(s, std::move(made)).first;
             }
             of_row.push_back(&found->second);
+            if (budget >= 0 && double(combined_cost({&found->second.cost}).bytes()) > budget) fits[std::size_t(a)] = false;
         }
         drawn[std::size_t(a)] = draw_rows(run, out, report, of_row, missing);
         for (const DrawnRow& row : drawn[std::size_t(a)]) mean_error[std::size_t(a)] += row.error / double(missing.size());
     }
-    const auto best = std::size_t(std::min_element(mean_error.begin(), mean_error.end()) - mean_error.begin());
+    const bool any_fits = std::find(fits.begin(), fits.end(), true) != fits.end();
+    std::size_t best = fits.size();  // the first of the lowest error among those within the budget, or all where none is
+    for (std::size_t a = 0; a < fits.size(); ++a)
+        if ((fits[a] || !any_fits) && (best == fits.size() || mean_error[a] < mean_error[best])) best = a;
     for (std::size_t r = 0; r < missing.size(); ++r) {
         DrawnRow& row = drawn[best][r];
         out.results.rows[missing[r].key] = row.result;
@@ -438,6 +444,14 @@ void run_impostor(ModelRun& run, SweepOutput& out, SweepReport& report, const st
     });
 }
 
+// Levels by byte budget: a baseline's level c >= 1 as finely as budget c
+// allows (equal bytes, not equal triangles), in bytes; -1 where levels are not by budget.
+double level_budget(const ModelRun& run, const Variant& first, int level) {
+    const LodParameters& lod = run.config.lod;
+    if (!orders_by_bytes(first.mode) || lod.budgets.empty() || level == 0) return -1;
+    return budget_bytes(lod.budgets[std::size_t(level - 1)], double(model_cost(run.model).bytes()));
+}
+
 // The finest simplification whose bytes (cost.h, every texture) stay within `budget`.
 Model simplified_within(const Model& model, double budget, const std::function<Model(std::size_t)>& simplify) {
     return finest_within<Model>(mesh_counts(model).triangles, budget, simplify,
@@ -445,21 +459,20 @@ Model simplified_within(const Model& model, double budget, const std::function<M
 }
 
 // proxy-baked: per level but the original (a baked copy of it is no level)
-// the best of its variants, each within the level's budget (or at its
-// triangles), baked as the first variant's level is sized (one session per
+// the best of its variants that fit the level's budget (or at its
+// triangles), baked as the first variant's level is sized (sizing
+// each-distance: for the nearest distance, as the impostor; one session per
 // sizing level, which bakes the root's box once).
 void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const Variant& first,
                      const std::function<std::size_t(int)>& triangles_of_level) {
     const SweepConfig& config = run.config;
     const std::vector<ProxyBakedVariant> variants = proxy_baked_variants(run.threads);
-    const bool by_budget = orders_by_bytes(first.mode) && !config.lod.budgets.empty();
     const double nearest = *std::min_element(config.distances.begin(), config.distances.end()) * framing_distance(run.framing, config.lod.fovy);
     std::map<int, std::unique_ptr<LodSession>> sessions;  // per sizing level
     for (int level : first.levels) {
         if (level == 0) continue;
         const int sizing_level = config.sizing == SizingRule::per_level ? level : 1;
-        const double budget = by_budget
-                                  ? budget_bytes(config.lod.budgets[std::size_t(level - 1)], double(model_cost(run.model).bytes())) : -1;
+        const double budget = level_budget(run, first, level);
         auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
         run_group(run, out, report, csv_row({run.entry.name, "proxy-baked", "-", "-", std::to_string(level)}), one_slot, [&](int, int a) {
             std::unique_ptr<LodSession>& session = sessions[sizing_level];
@@ -471,7 +484,7 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
             c.face_texels = lod.face_texels;
             c.variant = v.name;
             return c;
-        }, int(variants.size()));
+        }, int(variants.size()), budget);
     }
 }
 
@@ -506,15 +519,11 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
         }
         // simplification: the first variant (boxlod simplify's); simplification-best: the best of all.
         const int alternatives = baseline == Baseline::simplification_best ? int(variants.size()) : 1;
-        // Levels by byte budget: each simplified as finely as its budget allows (equal bytes, not equal triangles).
-        const bool by_budget = orders_by_bytes(first.mode) && !config.lod.budgets.empty();
         for (int level : first.levels) {
             const std::size_t target = triangles_of_level(level);
+            const double budget = level_budget(run, first, level);
             auto simplified = [&](const std::function<Model(std::size_t)>& simplify) {
-                if (!by_budget || level == 0) return simplify(target);
-                return simplified_within(run.model, budget_bytes(config.lod.budgets[std::size_t(level - 1)],
-                                                                 double(model_cost(run.model).bytes())),
-                                         simplify);
+                return budget < 0 ? simplify(target) : simplified_within(run.model, budget, simplify);
             };
             run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
                       [&](int, int a) {
@@ -531,7 +540,7 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
                           c.variant = v.name;
                           return c;
                       },
-                      alternatives);
+                      alternatives, budget);
         }
     }
 }

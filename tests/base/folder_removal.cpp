@@ -42,3 +42,13 @@ TEST(FolderRemoval, InTheBackgroundTheNameIsFreeAtOnce) {
     }
     EXPECT_TRUE(gone);
 }
+
+// A trash name in use (a run before with this process id left it): the folder stays as it is.
+TEST(FolderRemoval, AFolderThatCannotMoveAsideStays) {
+    const fs::path folder = folder_of_files("folder_removal_taken", 4);
+    const fs::path trash = folder.parent_path() / "frames.trash";
+    fs::create_directories(trash / "kept");
+    remove_in_background(folder, trash);
+    EXPECT_TRUE(fs::exists(folder / "frame_0"));
+    EXPECT_TRUE(fs::exists(trash / "kept"));
+}

@@ -15,11 +15,11 @@
 namespace boxlod {
 
 // A node drawn by a baked proxy (baked_proxy.h): a simplified geometry of its
-// sub-tree (the model's materials) sampling its box's baked faces.
+// sub-tree (positions; simplification.h: geometry_only) sampling its box's baked faces.
 struct BakedNode {
     int node = 0;
     int proxy = -1;  // hybrid.h: its proxy in the plan; -1: none (the proxy-baked baseline)
-    const std::vector<Primitive>* geometry = nullptr;  // owned by the plan or the caller
+    const std::vector<Primitive>* geometry = nullptr;  // the plan's or the caller's, while a level is built (then null)
 };
 
 struct Cut {

@@ -298,6 +298,9 @@ std::vector<const Primitive*> sibling_primitives(const Model& model, int n, cons
     return others;
 }
 
+// Baked proxies are offered where asked for and the levels are textured (they draw their box's pages).
+bool baked_wanted(const HybridSettings& settings) { return settings.baked_proxies && settings.mode != RenderMode::untextured; }
+
 // The error sums of node n's box at each of `box_texels` and of its
 // simplified sub-trees in `view`, rendered among their siblings, but those
 // `measurement` holds for this view.
@@ -311,7 +314,8 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
     }
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
-        if (!measurement.box_sums.count(texels.size)) missing.push_back(texels);
+        if (!measurement.box_sums.count(texels.size) || (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
+            missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
     const std::vector<const Primitive*> others = sibling_primitives(model, n, view);
     // Drawn in its materials' base colours, untextured: it only hides and is
@@ -338,7 +342,7 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         const std::array<BakedFace, 6> baked = textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
         measurement.box_sums[texels.size] = pixel_error_sum(original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
         std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
-        if (!textured || !settings.baked_proxies) continue;
+        if (!baked_wanted(settings)) continue;
         for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
             std::array<Primitive, 6> faces = baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
             BakedSum measured{0, baked_proxy_mesh_bytes(faces), {}};
@@ -421,7 +425,8 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxies.push_back(std::move(proxy));
     }
     for (std::size_t k = 0; k < box_texels.size(); ++k)
-        add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums[box_texels[k].size], measurement, view, settings, proxies);
+        if (baked_wanted(settings))
+            add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size), measurement, view, settings, proxies);
     std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
     for (Proxy& proxy : proxies) {
         const double alone = proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy));

@@ -15,7 +15,7 @@ enum class ProxyKind { box, simplified, baked };
 // One way to draw a sub-tree instead of its geometry.
 struct Proxy {
     ProxyKind kind = ProxyKind::box;
-    std::vector<Primitive> primitives;  // simplified, baked: the sub-tree's simplified geometry (the model's materials)
+    std::vector<Primitive> primitives;  // simplified: the sub-tree simplified (the model's materials); baked: positions only
     bool clustered = false;  // simplified by vertex clustering (large sub-trees), else by edge collapse
     int texel_scale = 1;  // box, baked: its texels as at this many times the sizing distance
     double bytes = 0;  // box: box_bytes_estimate at its texels; simplified: its mesh bytes; baked: both (baked_proxy.h)

@@ -237,6 +237,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
 
     lod.cost = cost_parts(lod.model);
     lod.statistics = lod_statistics(session, lod, packing);
+    for (BakedNode& baked : lod.cut.baked_nodes) baked.geometry = nullptr;  // the plan's or the caller's: not kept past the build
     return lod;
 }
 
@@ -382,13 +383,13 @@ Lod build_lod(LodSession& session, int current_level, int threads) {
 
 Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads) {
     if (!session.derived.boxes[0]) throw_input_error(session.input.model->source, "", "has no geometry to bake a proxy from");
+    if (session.input.parameters.render_mode == RenderMode::untextured)
+        throw_input_error(session.input.model->source, "", "a baked proxy draws baked pages: its levels cannot be untextured");
     Cut cut;
     cut.used_nodes = {0};
     cut.baked_nodes = {{0, -1, &geometry}};
     if (texel_scale > 1) cut.box_texel_scales[0] = texel_scale;
-    Lod lod = build_cut(session, level, std::move(cut), threads);
-    lod.cut.baked_nodes.front().geometry = nullptr;  // the caller's: the level holds its copy
-    return lod;
+    return build_cut(session, level, std::move(cut), threads);
 }
 
 void check_budget_reachable(LodSession& session, int level, int threads) {

@@ -43,11 +43,12 @@ struct Lod {
 Lod build_lod(LodSession& session, int current_level, int threads);
 
 // The whole model as one baked proxy (baked_proxy.h): `geometry` (the model
-// simplified, in its materials) drawn with the colours and normals of the
+// simplified; its materials are not read) drawn with the colours and normals of the
 // root's box faces baked at the session's sizing, texels `texel_scale` times
 // as large (texture_sizing.h: coarser_sizing): the proxy-baked baseline
 // (docs/sweeps.md), a far level as Simplygon and Unreal's HLOD make it.
-// Its parameters and statistics name it level `level`.
+// Its parameters and statistics name it level `level`. Throws InputError for
+// an untextured session (a baked proxy draws pages) or a model without geometry.
 Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads);
 
 // Throws InputError when level c's byte budget lies below the real bytes of
