@@ -259,25 +259,6 @@ void remove_files(const std::vector<std::string>& files) {
     for (const std::string& file : files) ::unlink(file.c_str());
 }
 
-// Where a stale staging folder goes at once (remove_in_background): a name
-// remove_stale_staging_folders knows, FOLDER.trashK.boxlod-stagingPID, that
-// nothing has yet (a run before with this process id may have left one).
-fs::path free_trash_name(const fs::path& folder, const std::string& suffix) {
-    for (long k = 0;; ++k) {
-        fs::path trash = folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix + std::to_string(::getpid()));
-        std::error_code error;
-        if (!fs::exists(fs::symlink_status(trash, error))) return trash;
-    }
-}
-
-// FOLDER.trashK.boxlod-stagingPID, K digits.
-bool is_trash_of(const std::string& entry, const std::string& name, const std::string& suffix) {
-    const std::string prefix = name + ".trash";
-    if (entry.rfind(prefix, 0) != 0) return false;
-    const std::size_t digits = entry.find_first_not_of("0123456789", prefix.size());
-    return digits > prefix.size() && digits != std::string::npos && entry.compare(digits, suffix.size(), suffix) == 0;
-}
-
 // The staging folders killed runs left beside `folder` (FOLDER.boxlod-stagingPID,
 // FOLDER.old.boxlod-stagingPID, FOLDER.trashK.boxlod-stagingPID): those of
 // this folder only, nothing else beside it.

@@ -22,6 +22,22 @@ bool remove_until(const fs::path& folder, std::chrono::steady_clock::time_point 
     return !error;
 }
 
+fs::path free_trash_name(const fs::path& folder, const std::string& suffix) {
+    std::error_code error;
+    for (long k = 0;; ++k)
+        if (fs::path trash = folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix +
+                                                     std::to_string(::getpid()));
+            !fs::exists(fs::symlink_status(trash, error)))
+            return trash;
+}
+
+bool is_trash_of(const std::string& entry, const std::string& name, const std::string& suffix) {
+    const std::string prefix = name + ".trash";
+    if (entry.rfind(prefix, 0) != 0) return false;
+    const std::size_t digits = entry.find_first_not_of("0123456789", prefix.size());
+    return digits > prefix.size() && digits != std::string::npos && entry.compare(digits, suffix.size(), suffix) == 0;
+}
+
 void remove_in_background(const fs::path& folder, const fs::path& trash) {
     std::error_code error;
     fs::rename(folder, trash, error);

@@ -4,6 +4,7 @@
 #pragma once
 #include <chrono>
 #include <filesystem>
+#include <string>
 
 namespace boxlod {
 
@@ -17,5 +18,12 @@ bool remove_until(const std::filesystem::path& folder, std::chrono::steady_clock
 // and now where it cannot be started. A folder that cannot be renamed is
 // left as it is: a later run tries again.
 void remove_in_background(const std::filesystem::path& folder, const std::filesystem::path& trash);
+
+// Where a folder goes to be removed: FOLDER.trashK<suffix><pid>, the first K
+// that nothing has yet (a run before with this process id may have left one).
+std::filesystem::path free_trash_name(const std::filesystem::path& folder, const std::string& suffix);
+
+// Whether `entry` (a file name) is such a name for the folder named `name`.
+bool is_trash_of(const std::string& entry, const std::string& name, const std::string& suffix);
 
 }  // namespace boxlod

@@ -452,12 +452,6 @@ double level_budget(const ModelRun& run, const Variant& first, int level) {
     return budget_bytes(lod.budgets[std::size_t(level - 1)], double(model_cost(run.model).bytes()));
 }
 
-// The finest simplification whose bytes (cost.h, every texture) stay within `budget`.
-Model simplified_within(const Model& model, double budget, const std::function<Model(std::size_t)>& simplify) {
-    return finest_within<Model>(mesh_counts(model).triangles, budget, simplify,
-                                [](const Model& simplified) { return double(model_cost(simplified).bytes()); });
-}
-
 // proxy-baked: per level but the original (a baked copy of it is no level)
 // the best of its variants that fit the level's budget (or at its
 // triangles), baked as the first variant's level is sized (sizing
@@ -474,7 +468,8 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
         const int sizing_level = config.sizing == SizingRule::per_level ? level : 1;
         const double budget = level_budget(run, first, level);
         auto one_slot = [](RenderMode, std::size_t, std::size_t) { return 0; };
-        run_group(run, out, report, csv_row({run.entry.name, "proxy-baked", "-", "-", std::to_string(level)}), one_slot, [&](int, int a) {
+        const std::string group = csv_row({run.entry.name, "proxy-baked", "-", "-", std::to_string(level)});
+        run_group(run, out, report, group, one_slot, [&](int, int a) {
             std::unique_ptr<LodSession>& session = sessions[sizing_level];
             if (!session)
                 session = start_lod(run.model, proxy_baked_parameters(config.lod, float(doubled_distance(nearest, sizing_level))), run.threads);
@@ -522,8 +517,10 @@ void run_baselines(ModelRun& run, SweepOutput& out, SweepReport& report, const V
         for (int level : first.levels) {
             const std::size_t target = triangles_of_level(level);
             const double budget = level_budget(run, first, level);
-            auto simplified = [&](const std::function<Model(std::size_t)>& simplify) {
-                return budget < 0 ? simplify(target) : simplified_within(run.model, budget, simplify);
+            auto simplified = [&](const std::function<Model(std::size_t)>& simplify) {  // bytes: cost.h, every texture
+                if (budget < 0) return simplify(target);
+                return finest_within<Model>(mesh_counts(run.model).triangles, budget, simplify,
+                                            [](const Model& model) { return double(model_cost(model).bytes()); });
             };
             run_group(run, out, report, csv_row({run.entry.name, name, "-", "-", std::to_string(level)}), one_slot,
                       [&](int, int a) {
