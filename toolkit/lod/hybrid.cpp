@@ -46,7 +46,10 @@ constexpr std::size_t fewest_simplified_triangles = 4;
 // one more view won (docs/cost.md: The hybrid level mode).
 constexpr std::size_t fewest_clustered_triangles = 1000;
 // A baked proxy's geometry at these shares of its sub-tree's triangles (baked_geometry).
-constexpr std::array<double, 3> baked_shares = {0.25, 1.0 / 16, 1.0 / 64};
+// At 1, the geometry as it is: a textured low-poly building (3DBAG's) then
+// keeps its shape and draws its texture re-baked at the level's texels; without
+// it, rotterdam_one's hybrid levels within 0.1 of covered FLIP were the original.
+constexpr std::array<double, 4> baked_shares = {1, 0.25, 1.0 / 16, 1.0 / 64};
 // A box is also offered with texels 2, 4, 8 and 16 times as large as the
 // sizing distance gives them: a page is dear. Without 2 and 4, a level within
 // 5 % of `classical`'s bytes drew one sharp box where `top-down` drew four
@@ -246,9 +249,9 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
 }
 
 // The geometry of node n's baked proxies (baked_proxy.h; made once per
-// model): its sub-tree as one mesh of positions, simplified across material
-// seams to 1/4, 1/16 and 1/64 of its triangles by edge collapse, and for
-// large sub-trees by clustering too. Baking is for far levels, where a box
+// model): its sub-tree as one mesh of positions, as it is and simplified
+// across material seams to 1/4, 1/16 and 1/64 of its triangles by edge
+// collapse, and for large sub-trees by clustering too (but at 1). Baking is for far levels, where a box
 // would lose the silhouette and simplification the colours.
 const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, std::size_t subtree_triangles,
                                                      NodeMeasurement& measurement) {
@@ -262,6 +265,7 @@ const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, 
         for (double share : baked_shares) {
             const auto target = std::size_t(double(subtree_triangles) * share);
             if (target < fewest_simplified_triangles) break;
+            if (clustering && share == 1) continue;  // as it is: once
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
             if (simplified.triangles > 0) measurement.baked.push_back(std::move(simplified));
