@@ -78,7 +78,7 @@ fuzz:
 # boxlod's and the peer's runs interleaved at random, so both see the same
 # states of a shared machine; ratio_table.py prints the medians with their
 # spread as one table, naming the CPU. Each writes its JSON to $(BUILD)/bench/.
-BENCHMARKS = rasterizer metrics png simplification city
+BENCHMARKS = rasterizer metrics png gltf simplification city
 BENCH_REPETITIONS ?= 5
 REPEATED = --benchmark_repetitions=$(BENCH_REPETITIONS) --benchmark_enable_random_interleaving=true
 bench:

@@ -24,6 +24,8 @@ TIME_ROWS = [
     ("a sweep's 26 rows at 256x256 (render + FLIP), 2 threads, each row on one thread", "metrics",
      "bm_sweep_rows/256/1", "bm_sweep_rows/256/0", "one row at a time"),
     ("PNG pages of one `manual` level (colour + normal)", "png", "boxlod_png/0", "stb_png/5/0", "stb_image_write"),
+    ("writing level 0 of `manual` as .gltf (10,748 nodes)", "gltf", "BM_WriteManualLevel/boxlod:1",
+     "BM_WriteManualLevel/boxlod:0", "tinygltf's writer"),
     ("simplifying `manual` to 10 % of its triangles", "simplification", "bm_meshoptimizer/100/1",
      "bm_cgal_garland_heckbert/100", "CGAL Garland-Heckbert"),
     ("unpacking every level of 25 city buildings", "city", "bm_unpack_levels/25", "bm_city_levels/25/0",

@@ -86,7 +86,7 @@ printf 'Lot --> extrude(3) Box\nBox --> i(box)\n' > "$work/box.grammar"
 check "generate from a grammar file with --lot" test "$(status_of "$boxlod" generate "$work/box.grammar" --lot 4x2 -o "$work/box.gltf")" = 0
 check "the generated box is 4 x 3 x 2" bash -c "grep -qx 'mesh_width = 4' '$work/out' && grep -qx 'mesh_height = 3' '$work/out' && grep -qx 'mesh_depth = 2' '$work/out'"
 "$boxlod" generate --sample house -o "$work/a.gltf" > /dev/null && "$boxlod" generate --sample office -o "$work/b.gltf" > /dev/null
-check "a generated .gltf's files are named after it, so another model beside it cannot overwrite them" bash -c "for m in a b; do grep -o '\"uri\": \"[^\"]*\"' \"$work/\$m.gltf\" | cut -d'\"' -f4 | while read -r f; do case \$f in \$m.bin|\$m\_*.png) test -s \"$work/\$f\" || exit 1;; *) exit 1;; esac; done || exit 1; done"
+check "a generated .gltf's files are named after it, so another model beside it cannot overwrite them" bash -c "for m in a b; do grep -o '\"uri\":\"[^\"]*\"' \"$work/\$m.gltf\" | cut -d'\"' -f4 | while read -r f; do case \$f in \$m.bin|\$m\_*.png) test -s \"$work/\$f\" || exit 1;; *) exit 1;; esac; done || exit 1; done"
 printf 'Lot --> split(y) { 1 : A\n' > "$work/broken.grammar"
 bad "generate with a grammar syntax error" generate "$work/broken.grammar" -o "$work/broken.glb"
 check "the syntax error names file:line:column" grep -q "broken.grammar:2:1: expected" "$work/err"

@@ -149,9 +149,13 @@ void write_levels(const Arguments& a, Chain& chain, const std::string& name, int
         writing = std::async(std::launch::async, [&, level = std::move(level)]() mutable {
             const std::string level_name = all_levels ? name + "_L" + std::to_string(level.level) : name;
             KeyValues report;
+            Image8 preview;
             {
-                const ScopedTimer timer(level.session->times.write);  // build_lod touches the other times only
-                Image8 preview = render_lod_preview(level.lod, *level.session, preview_width, preview_height, chain.threads);
+                const ScopedTimer timer(level.session->times.preview);  // build_lod touches the other times only
+                preview = render_lod_preview(level.lod, *level.session, preview_width, preview_height, chain.threads);
+            }
+            {
+                const ScopedTimer timer(level.session->times.write);
                 std::optional<LodSwitch> at;  // sized per level: where its texels meet the screen's pixels
                 if (!chain.distances.empty() && level.level >= 1)
                     at = lod_switch(level.session->input.parameters.distance, bounds, level.session->derived.sizing);
@@ -226,7 +230,8 @@ int run_build(const Arguments& a) {
         LodTimes t = chain.times();
         KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
                         number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
-                        number_entry("time_mesh", t.mesh), number_entry("time_write", t.write)};
+                        number_entry("time_mesh", t.mesh), number_entry("time_preview", t.preview),
+                        number_entry("time_write", t.write)};
         std::fputs(format_key_values(times).c_str(), stdout);
     }
     return 0;

@@ -3,8 +3,10 @@
 #include "base/input_error.h"
 #include "base/key_values.h"
 #include "base/utf8.h"
+#include "toolkit/formats/json_text.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -63,7 +65,14 @@ Scope read_scope(const tinygltf::Value& v, const ExtrasPlace& at) {
 
 }  // namespace
 
-double json_number(float value) { return std::strtod(format_number(value).c_str(), nullptr); }
+double json_number(float value) {
+    if (value == 0) return 0;  // -0 too, as format_number writes it
+    char digits[32];
+    const char* end = std::to_chars(digits, digits + sizeof digits, value).ptr;  // the float's shortest digits
+    double number = 0;
+    std::from_chars(digits, end, number);
+    return number;
+}
 
 tinygltf::Value asset_extras(const Model& model) {
     if (!model.is_lod) return {};
@@ -81,22 +90,53 @@ tinygltf::Value material_extras(const Material& material, int height_image) {
     return boxlod_object(std::move(extras));
 }
 
-tinygltf::Value node_extras(const Node& node) {
-    tinygltf::Value::Object extras;
-    if (!node.rule.empty()) extras["rule"] = tinygltf::Value(node.rule);
-    if (!node.instance_of.empty()) extras["instance_of"] = tinygltf::Value(node.instance_of);
-    if (!node.source_id.empty()) extras["source_id"] = tinygltf::Value(utf8_or_latin1(node.source_id));
-    if (node.scope) {
-        tinygltf::Value::Array axes;
-        for (int i = 0; i < 3; ++i) {
-            Eigen::Vector3f axis = node.scope->axes.col(i);
-            axes.push_back(number_array(axis.data(), 3));
-        }
-        extras["scope"] = tinygltf::Value(tinygltf::Value::Object{{"center", number_array(node.scope->center.data(), 3)},
-                                                                  {"axes", tinygltf::Value(std::move(axes))},
-                                                                  {"half_extents", number_array(node.scope->half_extents.data(), 3)}});
+std::string node_extras_json(const Node& node, const std::vector<LodSwitch>& switches) {
+    if (node.rule.empty() && node.instance_of.empty() && node.source_id.empty() && !node.scope && switches.empty()) return "";
+    JsonText j;
+    auto numbers = [&](const char* name, const float* values) {
+        if (name) j.key(name);
+        j.begin_array();
+        for (int i = 0; i < 3; ++i) j.number(json_number(values[i]));
+        j.end_array();
+    };
+    auto switch_numbers = [&](const char* name, double LodSwitch::*field) {
+        j.key(name);
+        j.begin_array();
+        for (const LodSwitch& s : switches) j.number(json_number(float(s.*field)));
+        if (field == &LodSwitch::screen_coverage) j.number(0);  // the coarsest level is drawn however small: culling is the engine's call
+        j.end_array();
+    };
+    j.begin_object();
+    if (!switches.empty()) switch_numbers("MSFT_screencoverage", &LodSwitch::screen_coverage);
+    j.key("boxlod");
+    j.begin_object();
+    if (!node.instance_of.empty()) {
+        j.key("instance_of");
+        j.string(node.instance_of);
     }
-    return extras.empty() ? tinygltf::Value() : boxlod_object(std::move(extras));
+    if (!node.rule.empty()) {
+        j.key("rule");
+        j.string(node.rule);
+    }
+    if (node.scope) {
+        j.key("scope");
+        j.begin_object();
+        j.key("axes");
+        j.begin_array();
+        for (int i = 0; i < 3; ++i) numbers(nullptr, node.scope->axes.col(i).eval().data());
+        j.end_array();
+        numbers("center", node.scope->center.data());
+        numbers("half_extents", node.scope->half_extents.data());
+        j.end_object();
+    }
+    if (!node.source_id.empty()) {
+        j.key("source_id");
+        j.string(utf8_or_latin1(node.source_id));
+    }
+    if (!switches.empty()) switch_numbers("switch_distances", &LodSwitch::distance);
+    j.end_object();
+    j.end_object();
+    return std::move(j.text);
 }
 
 tinygltf::Value primitive_extras(const Primitive& primitive) {

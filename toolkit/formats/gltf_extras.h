@@ -6,6 +6,7 @@
 // InputError "FILE: PLACE: what" for a field of the wrong form.
 #pragma once
 #include "toolkit/model/model.h"
+#include "toolkit/selection/lod_switch.h"
 
 #include <tiny_gltf.h>
 
@@ -20,7 +21,9 @@ double json_number(float value);
 
 tinygltf::Value asset_extras(const Model& model);
 tinygltf::Value material_extras(const Material& material, int height_image);  // height_image < 0: none
-tinygltf::Value node_extras(const Node& node);
+// A node's extras as JSON text, "" where it has none (tinygltf::Node::extras_json_string);
+// a chain's root also says where its levels switch (gltf_io.h: export_gltf_lods).
+std::string node_extras_json(const Node& node, const std::vector<LodSwitch>& switches = {});
 tinygltf::Value primitive_extras(const Primitive& primitive);
 // The node above the scene that carries Model::origin as its translation.
 tinygltf::Value origin_node_extras();

@@ -55,8 +55,11 @@ LodTimes Chain::times() const {
     LodTimes t = first->times;
     for (const auto& [distance, session] : sized) {
         t.levels += session->times.levels;  // each distance plans its own levels (hybrid measures again)
-        t.bake += session->times.bake, t.pack += session->times.pack;
-        t.mesh += session->times.mesh, t.write += session->times.write;
+        t.bake += session->times.bake;
+        t.pack += session->times.pack;
+        t.mesh += session->times.mesh;
+        t.preview += session->times.preview;
+        t.write += session->times.write;
     }
     return t;
 }

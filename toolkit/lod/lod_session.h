@@ -21,7 +21,8 @@
 namespace boxlod {
 
 struct LodTimes {  // seconds, for the time split in docs/performance.md
-    double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0, write = 0;  // write: preview + files
+    double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0;
+    double preview = 0, write = 0;  // rendering NAME.preview.png; writing the files
 };
 
 // What the user gave: the model and its parameters.

@@ -1,0 +1,97 @@
+// Writing a level's glTF: boxlod's writer (toolkit/formats/gltf_json.h, the
+// text written straight from the document) against tinygltf's writer on the
+// same document (a tree of nlohmann objects, then its indented text), which
+// boxlod used before; both write the .gltf, its .bin and nothing else to the
+// same folder, atomically. The model is level 0 of `build manual.glb
+// --all-levels` (the original, 10,748 nodes with their scopes: an 11.8 MB
+// .gltf), issue 72's case.
+//   build/experiments/gltf_benchmark
+#include "base/atomic_write.h"
+#include "data_gen/interpreter.h"
+#include "data_gen/samples.h"
+#include "toolkit/formats/gltf_document.h"
+#include "toolkit/formats/gltf_io.h"
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+using namespace boxlod;
+namespace fs = std::filesystem;
+
+namespace {
+
+const Model& manual() {
+    static const Model model = generate_building(sample_grammar("manual"), BuildingOptions{});
+    return model;
+}
+
+fs::path folder() {
+    static const fs::path path = [] {
+        fs::path p = fs::temp_directory_path() / ("boxlod_gltf_benchmark_" + std::to_string(::getpid()));
+        fs::create_directories(p);
+        return p;
+    }();
+    return path;
+}
+
+// The nodes' extras as tinygltf's writer takes them (tinygltf::Value, as
+// boxlod built them before): read by tinygltf from their text, outside the
+// timing, so the peer is spared making them.
+void extras_as_values(tinygltf::Model& document) {
+    std::string json = R"({"asset":{"version":"2.0"},"nodes":[)";
+    for (std::size_t k = 0; k < document.nodes.size(); ++k)
+        json += (k ? ",{" : "{") + (document.nodes[k].extras_json_string.empty() ? "" : "\"extras\":" + document.nodes[k].extras_json_string) + "}";
+    json += "]}";
+    tinygltf::Model read;
+    std::string error, warning;
+    if (!tinygltf::TinyGLTF().LoadASCIIFromString(&read, &error, &warning, json.c_str(), unsigned(json.size()), ""))
+        throw std::runtime_error(error);
+    for (std::size_t k = 0; k < document.nodes.size(); ++k) {
+        if (document.nodes[k].extras_json_string.empty()) continue;
+        document.nodes[k].extras = read.nodes[k].extras;
+        document.nodes[k].extras_json_string.clear();
+    }
+}
+
+// The writing boxlod did before: tinygltf's stream writer, indented, which
+// embeds the buffer as a data URI, pointed at the .bin as text.
+void write_with_tinygltf(const Model& model, const fs::path& path, benchmark::State& state) {
+    OutputGroup files;
+    tinygltf::Model document = gltf_document({&model}, {}, path, false, 0);
+    state.PauseTiming();
+    extras_as_values(document);
+    state.ResumeTiming();
+    const std::string bin_name = path.stem().string() + ".bin";
+    write_file_atomically((path.parent_path() / bin_name).string(), document.buffers[0].data);
+    tinygltf::TinyGLTF writer;
+    writer.SetImageWriter(nullptr, nullptr);
+    std::ostringstream stream;
+    writer.WriteGltfSceneToStream(&document, stream, true, false);
+    std::string json = stream.str();
+    const std::string data_uri = "\"uri\": \"data:application/octet-stream;base64,";
+    const std::size_t begin = json.find(data_uri), end = json.find('"', begin + data_uri.size());
+    json.replace(begin, end + 1 - begin, "\"uri\": \"" + bin_name + "\"");
+    write_text_atomically(path.string(), json);
+    files.commit();
+}
+
+void BM_WriteManualLevel(benchmark::State& state) {
+    const Model& model = manual();
+    const fs::path path = folder() / "manual_lod_L0.gltf";
+    for (auto _ : state) {
+        if (state.range(0) == 1) {
+            export_gltf(model, path.string());
+        } else {
+            write_with_tinygltf(model, path, state);
+        }
+    }
+    state.counters["MB"] = double(fs::file_size(path)) * 1e-6;
+}
+
+}  // namespace
+
+BENCHMARK(BM_WriteManualLevel)->ArgName("boxlod")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_MAIN();
