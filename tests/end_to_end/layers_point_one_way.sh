@@ -2,11 +2,20 @@
 # The layers point one way (docs/code.md): a file includes only headers of its
 # own layer and the layers below it, base < renderer < toolkit < data_gen <
 # experiments, and only a layer's commands/ folder includes commands/ headers
-# (the program sits on the libraries, never inside them). Prints every include
-# that breaks a rule and fails if there is one. Usage: layers_point_one_way.sh ROOT
+# (the program sits on the libraries, never inside them). Within toolkit the
+# concept folders point one way too: model < cgal < drawing < metrics <
+# formats < lod < selection < commands and the library's face (boxlod.h).
+# Prints every include that breaks a rule and fails if there is one.
+# Usage: layers_point_one_way.sh ROOT
 set -u
 cd "$1" || exit 2
 rank() { case $1 in base) echo 0 ;; renderer) echo 1 ;; toolkit) echo 2 ;; data_gen) echo 3 ;; experiments) echo 4 ;; *) echo -1 ;; esac; }
+toolkit_rank() {
+  case $1 in
+    toolkit/model/*) echo 0 ;; toolkit/cgal/*) echo 1 ;; toolkit/drawing/*) echo 2 ;; toolkit/metrics/*) echo 3 ;;
+    toolkit/formats/*) echo 4 ;; toolkit/lod/*) echo 5 ;; toolkit/selection/*) echo 6 ;; *) echo 7 ;;
+  esac
+}
 broken=0
 checked=0
 while IFS= read -r file; do
@@ -19,6 +28,9 @@ while IFS= read -r file; do
     [ "$target" -lt 0 ] && continue  # a system or third-party header
     if [ "$target" -gt "$own" ]; then
       echo "$file includes $header: $layer may not include ${header%%/*}, a layer above it"; broken=1
+    fi
+    if [ "$layer" = toolkit ] && [[ $header == toolkit/* ]] && [ "$(toolkit_rank "$header")" -gt "$(toolkit_rank "$file")" ]; then
+      echo "$file includes $header: toolkit's ${file#toolkit/} may not include a concept folder above it"; broken=1
     fi
     if [[ $header == */commands/* && $file != */commands/* ]]; then
       echo "$file includes $header: only a commands/ folder includes commands"; broken=1

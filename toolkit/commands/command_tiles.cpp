@@ -12,6 +12,7 @@
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/lod/surface_deviation.h"
 #include "toolkit/formats/tileset.h"
+#include "toolkit/lod/switch_measures.h"
 
 #include <cstdio>
 #include <filesystem>

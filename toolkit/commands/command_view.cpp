@@ -8,7 +8,7 @@
 #include "toolkit/commands/render_options.h"
 #include "toolkit/commands/sdl_library.h"
 #include "toolkit/commands/viewer_state.h"
-#include "toolkit/formats/lod_export.h"
+#include "toolkit/lod/lod_export.h"
 #include "toolkit/formats/model_io.h"
 
 #include <cstdio>

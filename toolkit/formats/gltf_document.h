@@ -3,7 +3,7 @@
 // toolkit/formats/gltf_json.h turns it into a file's text.
 #pragma once
 #include "toolkit/model/model.h"
-#include "toolkit/selection/lod_switch.h"
+#include "toolkit/model/lod_switch.h"
 
 #include <tiny_gltf.h>
 

@@ -6,7 +6,7 @@
 // InputError "FILE: PLACE: what" for a field of the wrong form.
 #pragma once
 #include "toolkit/model/model.h"
-#include "toolkit/selection/lod_switch.h"
+#include "toolkit/model/lod_switch.h"
 
 #include <tiny_gltf.h>
 

@@ -2,7 +2,7 @@
 // Node transforms are applied and shared meshes expanded on import; scopes,
 // rules and the LoD mark travel in `extras.boxlod` (docs/design.md: Scene model).
 #pragma once
-#include "toolkit/selection/lod_switch.h"
+#include "toolkit/model/lod_switch.h"
 #include "toolkit/model/model.h"
 
 #include <string>

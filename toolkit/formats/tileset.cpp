@@ -72,12 +72,6 @@ std::array<double, 16> east_north_up_to_ecef(const Geodetic& at) {
     return m;
 }
 
-double level_geometric_error(double switch_distance, const TextureSizing& view, double surface_deviation) {
-    TextureSizing at = view;
-    at.distance = float(switch_distance);
-    return std::max(surface_deviation, client_screen_space_error * pixel_world_size(at));
-}
-
 std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin, const Eigen::Vector3d& source_origin) {
     Bounds bounds;  // of every object's box, in the tiles' z-up frame
     for (const TileObject& object : objects) {

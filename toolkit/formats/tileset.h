@@ -5,7 +5,6 @@
 // glb content; the tileset placed on the WGS84 ellipsoid at a geodetic origin.
 #pragma once
 #include "toolkit/model/model.h"
-#include "toolkit/lod/texture_sizing.h"
 
 #include <array>
 #include <string>
@@ -44,17 +43,6 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
 // The screen-space error, in pixels, at which 3D Tiles clients refine a tile
 // by default (CesiumJS's maximumScreenSpaceError, 3d-tiles-renderer's errorTarget).
 constexpr double client_screen_space_error = 16;
-
-// The geometric error of a level drawn from `switch_distance` on (d_c,
-// docs/cost.md: Switching levels): the larger of its measured deviation from
-// the original (surface_deviation.h, metres) and the metres that
-// client_screen_space_error pixels of the sizing view cover at d_c. A client
-// projects it as e H / (2 d tan(fovy / 2)) pixels (3D Tiles 1.1: Geometric
-// error) and refines while that exceeds its limit: where the level's lost
-// depth would show as more than the limit, and at the latest, on a screen as
-// tall as the view, where boxlod switches (its texels there are a pixel).
-// view.distance is not read.
-double level_geometric_error(double switch_distance, const TextureSizing& view, double surface_deviation);
 
 // The east-north-up frame at `at` in Earth-centred Earth-fixed metres (WGS84),
 // column-major as 3D Tiles' `transform`.

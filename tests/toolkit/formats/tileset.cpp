@@ -27,27 +27,6 @@ TEST(Tileset, EastNorthUpFrameOnTheEllipsoid) {
     EXPECT_NEAR(pole[12], 0, 1e-6);
 }
 
-TEST(Tileset, ClientsRefineALevelNearerThanItsSwitchDistance) {
-    TextureSizing view;
-    view.fovy_degrees = 90;
-    view.resolution = 100;
-    const double error = level_geometric_error(50, view, 0.5);
-    EXPECT_NEAR(error, 16, 1e-4);  // a pixel at 50 m is 2 x 50 x tan(45 degrees) / 100 = 1 m
-    // CesiumJS's and 3d-tiles-renderer's projection of a tile's error on a screen as tall as the view.
-    auto screen_space_error = [&](double distance) { return error * view.resolution / (2 * distance * std::tan(M_PI / 4)); };
-    EXPECT_GT(screen_space_error(49.5), client_screen_space_error);  // nearer: level c - 1
-    EXPECT_LT(screen_space_error(50.5), client_screen_space_error);  // farther: level c stays
-}
-
-TEST(Tileset, ALevelWhoseLostDepthShowsRefinesFartherThanItsSwitchDistance) {
-    TextureSizing view;
-    view.fovy_degrees = 90;
-    view.resolution = 100;
-    // 16 pixels at 50 m are 16 m: a deviation of 40 m shows as 16 pixels at 125 m.
-    EXPECT_NEAR(level_geometric_error(50, view, 40), 40, 1e-9);
-    EXPECT_NEAR(level_geometric_error(50, view, 15.9), 16, 1e-4);
-}
-
 TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
     OrientedBox box;
     box.half_extents = {1, 1, 1};

@@ -6,7 +6,7 @@
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/error_greedy.h"
 #include "toolkit/lod/chain.h"
-#include "toolkit/formats/lod_export.h"
+#include "toolkit/lod/lod_export.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 

@@ -3,7 +3,7 @@
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/lod/lod_builder.h"
-#include "toolkit/formats/lod_export.h"
+#include "toolkit/lod/lod_export.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "toolkit/formats/lod_export.h"
+#include "toolkit/lod/lod_export.h"
 
 #include "base/atomic_write.h"
 #include "base/input_error.h"

@@ -1,7 +1,9 @@
-#include "toolkit/selection/lod_switch.h"
+#include "toolkit/lod/switch_measures.h"
 
+#include "toolkit/formats/tileset.h"
 #include "toolkit/model/framing.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace boxlod {
@@ -15,6 +17,12 @@ LodSwitch lod_switch(double distance, const Bounds& bounds, const TextureSizing&
     s.unity_relative_height = extent / height;
     s.unreal_screen_size = 2 * radius / height;
     return s;
+}
+
+double level_geometric_error(double switch_distance, const TextureSizing& view, double surface_deviation) {
+    TextureSizing at = view;
+    at.distance = float(switch_distance);
+    return std::max(surface_deviation, client_screen_space_error * pixel_world_size(at));
 }
 
 }  // namespace boxlod
