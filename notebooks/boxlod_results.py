@@ -167,7 +167,7 @@ def level_means(results, model):
 
 def cheapest_bytes(means, original, family, distance, threshold):
     """The bytes of the family's cheapest level within the threshold at the distance and every farther
-    one (as a chain draws it from its switch on: toolkit/lod/error_by_distance.h), the original's if none
+    one (as a chain draws it from its switch on: toolkit/lod/chain/error_by_distance.h), the original's if none
     is; NaN for a family the sweep did not run on the model."""
     if means[means.level_mode == family].empty:
         return float("nan")

@@ -4,7 +4,7 @@
 #include "base/parallel.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/model_io.h"
-#include "toolkit/lod/chain.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/metrics/metric_registry.h"
 #include "toolkit/model/framing.h"
 

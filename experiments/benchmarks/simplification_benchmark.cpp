@@ -13,7 +13,7 @@
 // (boxlod simplify's default).
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/lod/simplification.h"
+#include "toolkit/lod/hybrid/simplification.h"
 #include "toolkit/model/statistics.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

@@ -11,7 +11,7 @@
 #include "experiments/city/camera_path.h"
 #include "toolkit/model/cost.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/selection/lod_selection.h"
 #include "toolkit/drawing/packed_drawable.h"
 #include "toolkit/lod/parameter_file.h"

@@ -6,7 +6,7 @@
 #include "experiments/commands/commands.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/model/material_merge.h"
-#include "toolkit/lod/simplification.h"
+#include "toolkit/lod/hybrid/simplification.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/statistics.h"
 

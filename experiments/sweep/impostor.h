@@ -2,11 +2,11 @@
 // octahedral impostor. The model is captured orthographically from K x K
 // directions of a hemi-octahedral grid into one square atlas of K x K cells,
 // colour with coverage and a tangent-space normal map, each cell baked as a
-// box face is (toolkit/lod/bake.h). It is drawn as one quad through the centre of
+// box face is (toolkit/lod/pages/bake.h). It is drawn as one quad through the centre of
 // the model's bounding sphere, in the capture plane of the direction nearest
 // the camera, textured with that direction's cell.
 #pragma once
-#include "toolkit/lod/bake.h"
+#include "toolkit/lod/pages/bake.h"
 #include "toolkit/model/model.h"
 
 #include <vector>

@@ -6,7 +6,7 @@
 // with Debian's meshoptimizer instead of boxlod's levels.
 #pragma once
 #include "toolkit/lod/lod_builder.h"
-#include "toolkit/lod/simplification.h"
+#include "toolkit/lod/hybrid/simplification.h"
 
 #include <cstddef>
 #include <string>

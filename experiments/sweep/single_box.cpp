@@ -1,7 +1,7 @@
 #include "experiments/sweep/single_box.h"
 
-#include "toolkit/lod/bake.h"
-#include "toolkit/lod/boxes.h"
+#include "toolkit/lod/pages/bake.h"
+#include "toolkit/lod/pages/boxes.h"
 
 namespace boxlod {
 namespace {

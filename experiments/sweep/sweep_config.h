@@ -6,8 +6,8 @@
 #pragma once
 #include "toolkit/metrics/metric_registry.h"
 #include "renderer/renderer.h"
-#include "toolkit/lod/boxes.h"
-#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/lod_parameters.h"
 
 #include <string>

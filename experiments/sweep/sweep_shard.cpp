@@ -1,7 +1,7 @@
 #include "experiments/sweep/sweep_shard.h"
 
 #include "base/input_error.h"
-#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/cut/level_modes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,10 @@
 # experiments, and only a layer's commands/ folder includes commands/ headers
 # (the program sits on the libraries, never inside them). Within toolkit the
 # concept folders point one way too: model < cgal < drawing < metrics <
-# formats < lod < selection < commands and the library's face (boxlod.h).
+# formats < lod < selection < commands and the library's face (boxlod.h),
+# and so do lod's: pages (boxes and their baked pages) < cut (which parts a
+# level keeps) < hybrid (measured error per byte) < lod itself (a level: its
+# parameters, session, builder, files) < chain.
 # Prints every include that breaks a rule and fails if there is one.
 # Usage: layers_point_one_way.sh ROOT
 set -u
@@ -13,7 +16,8 @@ rank() { case $1 in base) echo 0 ;; renderer) echo 1 ;; toolkit) echo 2 ;; data_
 toolkit_rank() {
   case $1 in
     toolkit/model/*) echo 0 ;; toolkit/cgal/*) echo 1 ;; toolkit/drawing/*) echo 2 ;; toolkit/metrics/*) echo 3 ;;
-    toolkit/formats/*) echo 4 ;; toolkit/lod/*) echo 5 ;; toolkit/selection/*) echo 6 ;; *) echo 7 ;;
+    toolkit/formats/*) echo 4 ;; toolkit/lod/pages/*) echo 5 ;; toolkit/lod/cut/*) echo 6 ;; toolkit/lod/hybrid/*) echo 7 ;;
+    toolkit/lod/chain/*) echo 9 ;; toolkit/lod/*) echo 8 ;; toolkit/selection/*) echo 10 ;; *) echo 11 ;;
   esac
 }
 broken=0

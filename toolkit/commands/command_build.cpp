@@ -9,11 +9,11 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/viewer_pages.h"
 #include "toolkit/model/cost.h"
-#include "toolkit/lod/draw_calls.h"
+#include "toolkit/lod/hybrid/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/chain.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/lod_export.h"
-#include "toolkit/lod/switch_measures.h"
+#include "toolkit/lod/chain/switch_measures.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
 
@@ -62,7 +62,7 @@ KeyValues chain_report(const std::string& name, const ChainCost& written) {
 // A level's stdout block: its name, sizing distance, the later levels it
 // stands for (they draw what it draws: chain.h), its errors by distance
 // (a chain's: error_by_distance.h), where engines switch to it, in their
-// terms (toolkit/lod/switch_measures.h), its statistics.
+// terms (toolkit/lod/chain/switch_measures.h), its statistics.
 KeyValues level_report(const std::string& name, const ChainLevel& level, const std::optional<LodSwitch>& at,
                        const std::vector<double>& errors) {
     KeyValues report{text_entry("name", name), float_entry("sizing_distance", level.session->input.parameters.distance)};

@@ -2,17 +2,17 @@
 #include "base/atomic_write.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
-#include "toolkit/lod/boxes.h"
+#include "toolkit/lod/pages/boxes.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/lod/draw_calls.h"
+#include "toolkit/lod/hybrid/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/chain.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/lod/surface_deviation.h"
 #include "toolkit/formats/tileset.h"
-#include "toolkit/lod/switch_measures.h"
+#include "toolkit/lod/chain/switch_measures.h"
 
 #include <cstdio>
 #include <filesystem>

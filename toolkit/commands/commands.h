@@ -3,7 +3,7 @@
 #pragma once
 #include "base/command_registry.h"
 #include "base/key_values.h"
-#include "toolkit/lod/error_by_distance.h"
+#include "toolkit/lod/chain/error_by_distance.h"
 
 namespace boxlod {
 
@@ -22,7 +22,7 @@ inline Option keep_materials_option() {
 }
 
 // For the commands that write levels for engines (build --chain, tiles): a
-// level is one node per material (toolkit/lod/draw_calls.h) unless told not to.
+// level is one node per material (toolkit/lod/hybrid/draw_calls.h) unless told not to.
 inline Option keep_hierarchy_option() {
     return {"keep-hierarchy", "",
             "keep one node per kept part and box in each level, with its scope and rule in extras, instead of one node per "
@@ -30,7 +30,7 @@ inline Option keep_hierarchy_option() {
 }
 
 // For the commands that write chains for engines (build --chain, tiles): the
-// error within which a level switches in (toolkit/lod/error_by_distance.h).
+// error within which a level switches in (toolkit/lod/chain/error_by_distance.h).
 constexpr double default_switch_error = 0.05;
 inline Option switch_error_option() {
     return {"switch-error", "E",

@@ -5,7 +5,7 @@
 // person would see.
 #pragma once
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/lod/chain.h"
+#include "toolkit/lod/chain/chain.h"
 
 #include <memory>
 #include <string>

@@ -1,7 +1,7 @@
 #include "toolkit/lod/level_faces.h"
 
 #include "base/parallel.h"
-#include "toolkit/lod/baked_proxy.h"
+#include "toolkit/lod/hybrid/baked_proxy.h"
 
 #include <algorithm>
 #include <cmath>

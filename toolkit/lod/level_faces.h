@@ -3,8 +3,8 @@
 // the level's pages and copied in; a box draws them as one quad each, a baked
 // proxy as its triangles that sample them (baked_proxy.h).
 #pragma once
-#include "toolkit/lod/level_pages.h"
-#include "toolkit/lod/cut.h"
+#include "toolkit/lod/pages/level_pages.h"
+#include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/lod_session.h"
 
 #include <array>

@@ -3,16 +3,16 @@
 // atlas packing and the LoD mesh (kept original nodes + textured box quads).
 #pragma once
 #include "base/key_values.h"
-#include "toolkit/lod/atlas.h"
+#include "toolkit/lod/pages/atlas.h"
 #include "toolkit/lod/lod_session.h"
-#include "toolkit/lod/bake.h"
+#include "toolkit/lod/pages/bake.h"
 #include "toolkit/model/cost.h"
-#include "toolkit/lod/cut.h"
-#include "toolkit/lod/error_greedy.h"
-#include "toolkit/lod/hybrid.h"
-#include "toolkit/lod/level_pages.h"
+#include "toolkit/lod/cut/cut.h"
+#include "toolkit/lod/cut/error_greedy.h"
+#include "toolkit/lod/hybrid/hybrid.h"
+#include "toolkit/lod/pages/level_pages.h"
 #include "toolkit/lod/parameter_file.h"
-#include "toolkit/lod/texture_sizing.h"
+#include "toolkit/lod/pages/texture_sizing.h"
 
 #include <map>
 #include <memory>

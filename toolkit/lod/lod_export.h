@@ -16,7 +16,7 @@ void name_pages(Lod& lod, const std::string& name);
 
 // `lod` by value: its page textures are renamed NAME_color_K.png ... in place;
 // move it in when it is not needed afterwards (the pages are large). The
-// parameter file saves `chain_parameters` (toolkit/lod/chain.h: Chain::parameters)
+// parameter file saves `chain_parameters` (toolkit/lod/chain/chain.h: Chain::parameters)
 // at the level's number, so that building from it makes the same level. `binary`:
 // NAME.glb with the pages inside, instead of NAME.gltf + .bin + PNGs.
 void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory, const std::string& name,

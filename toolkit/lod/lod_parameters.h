@@ -5,9 +5,9 @@
 #pragma once
 #include "base/input_error.h"
 #include "renderer/renderer.h"
-#include "toolkit/lod/boxes.h"
-#include "toolkit/lod/level_budgets.h"
-#include "toolkit/lod/level_modes.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/lod/cut/level_budgets.h"
+#include "toolkit/lod/cut/level_modes.h"
 
 #include <functional>
 #include <optional>
@@ -17,7 +17,7 @@
 
 namespace boxlod {
 
-// Where levels 1..N of a chain are sized (toolkit/lod/chain.h): `auto`
+// Where levels 1..N of a chain are sized (toolkit/lod/chain/chain.h): `auto`
 // doubles the distance per level, `same` sizes every level at the distance
 // (the manual's program), or one listed distance per level.
 struct LevelDistances {

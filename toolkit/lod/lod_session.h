@@ -3,12 +3,12 @@
 // time spent, apart from the builder so the steps of a level (level_faces.h)
 // read it without depending on the builder.
 #pragma once
-#include "toolkit/lod/bake.h"
-#include "toolkit/lod/error_greedy.h"
-#include "toolkit/lod/hybrid.h"
-#include "toolkit/lod/level_values.h"
+#include "toolkit/lod/pages/bake.h"
+#include "toolkit/lod/cut/error_greedy.h"
+#include "toolkit/lod/hybrid/hybrid.h"
+#include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/lod_parameters.h"
-#include "toolkit/lod/texture_sizing.h"
+#include "toolkit/lod/pages/texture_sizing.h"
 #include "toolkit/model/cost.h"
 
 #include <array>

@@ -1,5 +1,5 @@
 // Where an engine switches to a level of a chain, in the terms each engine
-// takes (docs/cost.md: Switching levels); toolkit/lod/switch_measures.h
+// takes (docs/cost.md: Switching levels); toolkit/lod/chain/switch_measures.h
 // computes them from a level's sizing.
 #pragma once
 

@@ -8,7 +8,7 @@
 #pragma once
 #include "renderer/camera.h"
 #include "toolkit/model/model.h"
-#include "toolkit/lod/texture_sizing.h"
+#include "toolkit/lod/pages/texture_sizing.h"
 
 #include <cstddef>
 #include <optional>

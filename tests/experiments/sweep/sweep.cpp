@@ -2,7 +2,7 @@
 
 #include "base/input_error.h"
 #include "experiments/sweep/proxy_baked.h"
-#include "toolkit/lod/simplification.h"
+#include "toolkit/lod/hybrid/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/model/cost.h"

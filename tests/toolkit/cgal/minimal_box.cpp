@@ -1,7 +1,7 @@
 #include "toolkit/cgal/minimal_box.h"
 
 #include "toolkit/cgal/box_fit.h"
-#include "toolkit/lod/boxes.h"
+#include "toolkit/lod/pages/boxes.h"
 
 #include "box_checks.h"
 

@@ -1,0 +1,192 @@
+#include "toolkit/lod/chain/chain.h"
+
+#include "base/input_error.h"
+#include "lod_scene.h"
+#include "test_support.h"
+#include "toolkit/formats/model_io.h"
+#include "toolkit/lod/parameter_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace boxlod;
+
+namespace {
+
+LodParameters small_chain_parameters() {
+    LodParameters p;
+    p.resolution = 64, p.min_texture_size = 16, p.max_texture_size = 64;
+    return p;
+}
+
+LevelDistances listed(std::vector<float> distances) { return {LevelDistances::Rule::listed, std::move(distances)}; }
+
+}  // namespace
+
+TEST(Chain, AutoSizesEachLevelForTwiceTheLastDistance) {
+    EXPECT_EQ(doubled_distance(10, 1), 10);
+    EXPECT_EQ(doubled_distance(10, 4), 80);
+    EXPECT_EQ(level_distances({}, 10, 4), (std::vector<float>{10, 20, 40, 80}));
+    EXPECT_EQ(level_distances({LevelDistances::Rule::same, {}}, 10, 4), std::vector<float>{});
+    EXPECT_EQ(level_distances(listed({5, 6, 9}), 10, 3), (std::vector<float>{5, 6, 9}));
+    EXPECT_EQ(test::input_error_of([] { level_distances(listed({5, 6}), 10, 3); }),
+              "level_distances: 2 distances for 3 levels (1..3), or auto, or same");
+}
+
+// Equal distances would size two levels alike (issue 73: accepted without a word).
+TEST(Chain, ListedDistancesAscendStrictlyWithinTheirRange) {
+    LodParameters p;
+    const ParameterDeclaration& d = *find_lod_parameter("level_distances");
+    EXPECT_EQ(d.parse("10,10,20", p), "10 comes after 10: the distances must ascend, one per level 1..N");
+    EXPECT_EQ(d.parse("1,2,2e12", p), "'2e12' is not a distance in [0.001, 1e+12] m (or auto, or same)");
+    EXPECT_EQ(d.parse("nan", p), "'nan' is not a distance in [0.001, 1e+12] m (or auto, or same)");
+    EXPECT_EQ(d.parse("10,20,", p), "'' is not a distance in [0.001, 1e+12] m (or auto, or same)");
+    EXPECT_EQ(p.level_distances.rule, LevelDistances::Rule::doubling);  // a refused value changes nothing
+    EXPECT_EQ(d.parse("1.5,20,40.25", p), "");
+    EXPECT_EQ(d.format(p), "1.5,20,40.25");
+    EXPECT_EQ(d.parse("same", p), "");
+    EXPECT_EQ(d.format(p), "same");
+    LodParameters manual;
+    set_manual(manual);
+    EXPECT_EQ(manual.level_distances.rule, LevelDistances::Rule::same);
+}
+
+// A building in centimetres frames at some 10^4 units: its 10-level chain
+// sized levels past 10^6, which their own parameters refused (exit 2 from
+// `build --chain` on assimp's animation_with_skeleton.fbx, 7 km wide).
+TEST(Chain, ABuildingInCentimetresBuildsItsFarLevels) {
+    Model model = test::lod_test_building();
+    for (Node& node : model.nodes)
+        for (Primitive& primitive : node.primitives)
+            for (Eigen::Vector3f& position : primitive.positions) position *= 2000;
+    LodParameters p = small_chain_parameters();
+    const float first = Chain(model, p, 2).parameters().distance;
+    ASSERT_GT(first * 512, 1e6f);
+    p.distance = first * 512;  // a 10-level chain's level 10
+    Chain far(model, p, 2);
+    EXPECT_EQ(far.for_level(far.obtained_levels()).input.parameters.distance, first * 512 * float(std::ldexp(1.0, far.obtained_levels() - 1)));
+    EXPECT_EQ(test::input_error_of([&] { build_lod(far.for_level(far.obtained_levels()), far.obtained_levels(), 2); }), "");
+    // 64 levels double past any range: the farthest stay at its end, still ascending.
+    const std::vector<float> many = level_distances({}, first, 64);
+    EXPECT_EQ(double(many.back()), double(float(parameter_range::distance.max)));
+    EXPECT_TRUE(std::is_sorted(many.begin(), many.end()));
+}
+
+// Each level is sized by the chain, whichever command asks: level c's session
+// sizes for d_c; --manual's (same) for the one distance; past the levels
+// obtained, build_lod refuses the level.
+TEST(Chain, EachLevelIsSizedForItsOwnDistance) {
+    const Model model = test::lod_test_building();
+    Chain chain(model, small_chain_parameters(), 2);
+    const float d = chain.parameters().distance;
+    EXPECT_EQ(&chain.for_level(0), chain.first.get());
+    EXPECT_EQ(&chain.for_level(1), chain.first.get());  // auto's level 1 is at the distance
+    EXPECT_EQ(chain.for_level(3).input.parameters.distance, 4 * d);
+    EXPECT_EQ(chain.for_level(3).input.parameters.level_distances.rule, LevelDistances::Rule::same);
+    EXPECT_EQ(&chain.for_level(3), &chain.for_level(3));  // one session per distance
+    EXPECT_NE(test::input_error_of([&] { build_lod(chain.for_level(99), 99, 2); }), "");
+    LodParameters manual = small_chain_parameters();
+    set_manual(manual);
+    manual.max_texture_size = 256;
+    Chain same(model, manual, 2);
+    EXPECT_TRUE(same.distances.empty());
+    EXPECT_EQ(&same.for_level(same.obtained_levels()), same.first.get());
+}
+
+// Levels in order, each once: a level that draws what the one before draws
+// is named by it (the paying chain of a small building keeps its geometry at
+// every level: all are level 0), and the cap counts distinct levels.
+TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
+    const Model model = test::lod_test_building();
+    LodParameters manual = small_chain_parameters();
+    set_manual(manual);  // every sub-tree boxed: levels differ
+    manual.max_texture_size = 256;
+    for (const LodParameters& p : {small_chain_parameters(), manual}) {
+        Chain chain(model, p, 2);
+        const int obtained = chain.obtained_levels();
+        std::vector<ChainLevel> taken;
+        EXPECT_EQ(take_distinct_levels(chain, 0, obtained, 100, [&](ChainLevel level) { taken.push_back(std::move(level)); }),
+                  obtained + 1);
+        std::vector<int> every;  // each level once, as taken or as a repeat
+        for (std::size_t i = 0; i < taken.size(); ++i) {
+            every.push_back(taken[i].level);
+            EXPECT_EQ(taken[i].lod.current_level, taken[i].level);
+            EXPECT_EQ(taken[i].session, &chain.for_level(taken[i].level));
+            if (i > 0) {
+                EXPECT_FALSE(draws_the_same(taken[i - 1].lod.model, taken[i].lod.model)) << "level " << taken[i].level;
+            }
+            for (int c : taken[i].same_levels) {
+                every.push_back(c);
+                EXPECT_TRUE(draws_the_same(taken[i].lod.model, build_lod(chain.for_level(c), c, 2).model)) << "level " << c;
+            }
+        }
+        std::sort(every.begin(), every.end());
+        ASSERT_EQ(every.size(), std::size_t(obtained + 1));
+        for (int c = 0; c <= obtained; ++c) EXPECT_EQ(every[std::size_t(c)], c);
+        if (!p.keep_cheaper_subtrees) {
+            ASSERT_GE(taken.size(), 3u);
+            // At most two: the first level not held is the third distinct one.
+            std::vector<int> capped;
+            const int cut = take_distinct_levels(chain, 0, obtained, 2, [&](ChainLevel level) { capped.push_back(level.level); });
+            EXPECT_EQ(capped, (std::vector<int>{taken[0].level, taken[1].level}));
+            EXPECT_EQ(cut, taken[2].level);
+        } else {
+            EXPECT_EQ(taken.size(), 1u);  // the paying chain of a building this small: its geometry at every level
+        }
+    }
+}
+
+// A level's parameter file holds the chain's parameters at the level's
+// number: building from it makes the same level (a level is a level).
+TEST(Chain, ALevelsParameterFileBuildsTheSameLevel) {
+    const Model model = test::lod_test_building();
+    Chain chain(model, small_chain_parameters(), 2);
+    const int c = chain.obtained_levels() - 1;
+    ASSERT_GE(c, 2);
+    LodParameters saved = chain.parameters();
+    saved.current_level = c;
+    const LodParameters read = parse_parameters(format_parameters(saved), "level.params.txt");
+    Chain again(model, read, 2);
+    const Lod a = build_lod(chain.for_level(c), c, 2), b = build_lod(again.for_level(read.current_level), read.current_level, 2);
+    EXPECT_EQ(again.for_level(c).input.parameters.distance, chain.for_level(c).input.parameters.distance);
+    EXPECT_TRUE(draws_the_same(a.model, b.model));
+    EXPECT_EQ(format_key_values(a.statistics), format_key_values(b.statistics));
+}
+
+// A chain as engines get it: levels that switch in farther and cost less,
+// each within the threshold from its switch distance on; without a
+// threshold, at their sizing distances.
+TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
+    const Model model = load_model(test::fzk_haus_ifc);
+    LodParameters p = small_chain_parameters();
+    p.resolution = 256;
+    Chain chain(model, p, 2);
+    for (double threshold : {0.02, 0.2}) {
+        const SwitchedChain switched = switched_levels(chain, threshold, 100);
+        ASSERT_GE(switched.levels.size(), 1u);
+        ASSERT_EQ(switched.errors.size(), switched.levels.size());
+        EXPECT_EQ(switched.levels[0].level, 0);
+        EXPECT_EQ(switched.switch_distances[0], 0);
+        for (std::size_t k = 1; k < switched.levels.size(); ++k) {
+            EXPECT_GT(switched.switch_distances[k], switched.switch_distances[k - 1]);
+            EXPECT_LT(combined_cost({&switched.levels[k].lod.cost}).bytes(), combined_cost({&switched.levels[k - 1].lod.cost}).bytes());
+            for (std::size_t d = 0; d < switched.distances.size(); ++d)
+                if (switched.distances[d] >= switched.switch_distances[k]) EXPECT_LE(switched.errors[k][d], threshold);
+        }
+        if (threshold > 0.1) EXPECT_GE(switched.levels.size(), 2u);  // a lenient threshold reaches boxes
+    }
+    const SwitchedChain sized = switched_levels(chain, 0, 100);
+    EXPECT_TRUE(sized.errors.empty());
+    for (std::size_t k = 1; k < sized.levels.size(); ++k)
+        EXPECT_EQ(sized.switch_distances[k], sized.levels[k].session->input.parameters.distance);
+    EXPECT_EQ(switched_levels(chain, 0, 2).levels.size(), 2u);  // the cap
+    LodParameters manual = p;  // every level sized for one distance: switched where auto distances put them
+    set_manual(manual);
+    manual.max_texture_size = 256;
+    Chain same(model, manual, 2);
+    const SwitchedChain texels = switched_levels(same, 0, 100);
+    EXPECT_GE(texels.levels.size(), 3u);
+    for (std::size_t k = 1; k < texels.levels.size(); ++k)
+        EXPECT_EQ(texels.switch_distances[k], doubled_distance(same.parameters().distance, texels.levels[k].level));
+}

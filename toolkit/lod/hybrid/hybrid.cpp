@@ -1,0 +1,554 @@
+#include "toolkit/lod/hybrid/hybrid.h"
+
+#include "base/parallel.h"
+#include "toolkit/lod/pages/bake.h"
+#include "toolkit/lod/hybrid/baked_proxy.h"
+#include "toolkit/lod/hybrid/hybrid_order.h"
+#include "toolkit/lod/hybrid/proxy_drawables.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/lod/cut/kept_subtrees.h"
+#include "toolkit/lod/cut/level_budgets.h"
+#include "toolkit/model/model_subtree.h"
+#include "toolkit/lod/hybrid/paid_textures.h"
+#include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/model/vertex_layout.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <span>
+#include <utility>
+
+namespace boxlod {
+namespace {
+
+// The sub-tree simplified to these shares of its triangles: error targets
+// from slight to coarse, each half the one before. Without the half, a level
+// within a quarter of a building's bytes fell back to the eighth (docs/cost.md:
+// The hybrid level mode).
+constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// Large sub-trees by edge collapse also at 1/sqrt(2) and 1/sqrt(8): without
+// them, a level within half of `office`'s bytes drew its root at 1/2, and
+// `house` won 10 views instead of 25 there (docs/cost.md: The hybrid level mode).
+constexpr std::array<double, 9> large_simplified_shares = {1, 0.7071, 0.5, 0.3536, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// A sub-tree's simplified proxies are measured only if a quarter of its
+// triangles is enough to simplify to: measuring the many smaller sub-trees
+// too doubled the time to build every level of `manual`.
+constexpr double smallest_simplified_share_of_interest = 0.25;
+constexpr std::size_t fewest_simplified_triangles = 4;
+// A sub-tree of at least this many triangles is also simplified by vertex
+// clustering (meshopt_simplifySloppy), at every share below 1: a whole
+// building's many separate parts cluster together where edge collapse
+// stalls on each, and within 25 % of the FZK-Haus's bytes it won most views.
+// On every sub-tree, building every level of `manual` took 1.5x as long for
+// one more view won (docs/cost.md: The hybrid level mode).
+constexpr std::size_t fewest_clustered_triangles = 1000;
+// A baked proxy's geometry at these shares of its sub-tree's triangles (baked_geometry).
+// At 1, the geometry as it is: a textured low-poly building (3DBAG's) then
+// keeps its shape and draws its texture re-baked at the level's texels; without
+// it, rotterdam_one's hybrid levels within 0.1 of covered FLIP were the original.
+constexpr std::array<double, 4> baked_shares = {1, 0.25, 1.0 / 16, 1.0 / 64};
+// A box is also offered with texels 2, 4, 8 and 16 times as large as the
+// sizing distance gives them: a page is dear. Without 2 and 4, a level within
+// 5 % of `classical`'s bytes drew one sharp box where `top-down` drew four
+// blurred ones and won; without 8 and 16, one within 5 % of `office`'s spent
+// half of it and won 15 of 26 views (now 24). A coarser box is offered only
+// where it costs at most 3/4 of the last one offered: most save a few bytes of
+// pages at their least size, and measuring those too took 1.2x as long for no
+// more views won (docs/cost.md: The hybrid level mode).
+constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
+constexpr double coarser_box_most_bytes = 0.75;
+
+// Where a sub-tree is measured: its bounding sphere seen orthographically from
+// the measuring corners, `side` pixels of `pixel` metres a side.
+struct MeasuringView {
+    Framing sphere;
+    float pixel = 1;
+    int side = 1;
+};
+
+MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
+    MeasuringView view;
+    view.sphere = framing_of(bounds);
+    const float diameter = 2 * view.sphere.radius;
+    view.pixel = std::max(float(pixel_world_size(settings.sizing)), diameter / float(settings.max_side));
+    view.side = std::clamp(int(std::ceil(diameter / view.pixel)), 1, settings.max_side);
+    return view;
+}
+
+// Measured from the 4 corners of a cube that make a regular tetrahedron (bit k
+// of a corner: + along axis k). Against all 8 corners, every level of `manual`
+// built in 0.58x the time and the sweeps met the views target in as many
+// budgets (docs/cost.md: The hybrid level mode).
+constexpr std::array<int, 4> measuring_corners = {0, 3, 5, 6};
+constexpr int measuring_directions = int(measuring_corners.size());
+
+// A sub-tree simplified to one of simplified_shares, and the error sums it
+// was measured with, per measuring view.
+struct SimplifiedSubtree {
+    std::vector<Primitive> primitives;
+    std::size_t triangles = 0;
+    bool clustered = false;
+};
+
+// A baked proxy as measured: its error sum, its mesh's bytes and the faces it samples.
+struct BakedSum {
+    double sum = 0;
+    std::uint64_t mesh_bytes = 0;
+    std::array<bool, 6> sampled{};
+};
+
+struct NodeMeasurement {
+    bool simplified_made = false, baked_made = false;
+    std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
+    std::vector<SimplifiedSubtree> baked;       // baked proxies' geometry (baked_geometry)
+    float pixel = 0;  // the measuring view the sums below are of (0: none yet)
+    int side = 0;
+    std::map<float, double> box_sums;     // per texel size (m) of the baked box
+    std::map<float, std::vector<BakedSum>> baked_sums;  // per texel size, per geometry in `baked`
+    bool simplified_measured = false;
+    std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
+};
+
+}  // namespace
+
+struct HybridMeasurements {
+    std::vector<NodeMeasurement> nodes;
+};
+
+std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model) {
+    auto measurements = std::make_shared<HybridMeasurements>();
+    measurements->nodes.resize(model.nodes.size());
+    return measurements;
+}
+
+namespace {
+
+// Each view rendered at twice the side and averaged over 2 x 2 pixels: without
+// it, detail near the pixel's size aliases differently in the sub-tree and in
+// a texture baked from it, and the error measures the aliasing.
+constexpr int supersampling = 2;
+
+void downsample(Frame& frame) {
+    const int w = frame.width / supersampling, h = frame.height / supersampling;
+    std::vector<Eigen::Vector4f> color(std::size_t(w) * std::size_t(h), Eigen::Vector4f::Zero());
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x)
+            color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
+                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / float(supersampling * supersampling);
+    frame.width = w, frame.height = h, frame.color = std::move(color);
+    frame.depth.clear(), frame.normal.clear();
+}
+
+// The measuring renders of `batches`, from every direction. Over `underlay`
+// (full-size renders of what every candidate is drawn among) when given, from
+// its depth: the picture of the underlay's batches and these in one render.
+std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode,
+                                const std::vector<Frame>* underlay = nullptr, bool downsampled = true) {
+    std::vector<Frame> frames;
+    const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
+    for (int k = 0; k < measuring_directions; ++k) {
+        const int corner = measuring_corners[std::size_t(k)];
+        const Eigen::Vector3f direction =
+            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
+        RenderSettings settings;
+        settings.mode = mode;
+        settings.threads = 1;  // nodes are measured in parallel
+        settings.depth_from_frame = underlay != nullptr;
+        Camera& camera = settings.camera;
+        camera.orthographic = true;
+        camera.position = view.sphere.center + direction * (2 * r);
+        camera.target = view.sphere.center;
+        camera.left = camera.bottom = -half, camera.right = camera.top = half;
+        camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
+        settings.light = light_for_camera(camera);
+        frames.push_back(underlay ? (*underlay)[std::size_t(k)]
+                                  : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
+        render(batches, settings, frames.back());
+        if (downsampled) downsample(frames.back());
+    }
+    return frames;
+}
+
+// A measuring pixel as hybrid_pixel_error compares it: its coverage and its
+// colour in sRGB bytes, converted once per render rather than per comparison.
+struct ComparedPixel {
+    float coverage = 0;
+    std::array<int, 3> srgb{};
+};
+
+ComparedPixel compared_pixel(const Eigen::Vector4f& linear) {
+    return {std::clamp(linear.w(), 0.0f, 1.0f), {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
+}
+
+double compared_pixel_error(const ComparedPixel& a, const ComparedPixel& b) {
+    double colour = 0;
+    for (int c = 0; c < 3; ++c) colour += std::abs(a.srgb[std::size_t(c)] - b.srgb[std::size_t(c)]);
+    return double(std::abs(a.coverage - b.coverage)) + double(std::min(a.coverage, b.coverage)) * colour / (3 * 255.0);
+}
+
+// Every direction's pixels, as compared.
+std::vector<std::vector<ComparedPixel>> compared_views(const std::vector<Frame>& frames) {
+    std::vector<std::vector<ComparedPixel>> views;
+    for (const Frame& frame : frames) {
+        views.emplace_back();
+        views.back().reserve(frame.color.size());
+        for (const Eigen::Vector4f& c : frame.color) views.back().push_back(compared_pixel(c));
+    }
+    return views;
+}
+
+// The measuring pixels' errors summed over every direction.
+double pixel_error_sum(const std::vector<std::vector<ComparedPixel>>& original, const std::vector<std::vector<ComparedPixel>>& proxy) {
+    double sum = 0;
+    for (std::size_t v = 0; v < original.size(); ++v)
+        for (std::size_t i = 0; i < original[v].size(); ++i) sum += compared_pixel_error(original[v][i], proxy[v][i]);
+    return sum;
+}
+
+// Pixels of the sizing view that differ: the measuring pixels' errors, each
+// weighing (measuring pixel / sizing pixel)^2, mean over the directions.
+double measured_error(double pixel_error_sum, const MeasuringView& view, const HybridSettings& settings) {
+    const double scale = double(view.pixel) / pixel_world_size(settings.sizing);
+    return pixel_error_sum * scale * scale / measuring_directions;
+}
+
+std::size_t triangle_count(const std::vector<Primitive>& primitives) {
+    std::size_t triangles = 0;
+    for (const Primitive& p : primitives) triangles += p.triangle_count();
+    return triangles;
+}
+
+// Node n's simplified sub-trees, each simpler than the one before (made once per model).
+const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n, std::size_t subtree_triangles,
+                                                           NodeMeasurement& measurement) {
+    if (measurement.simplified_made) return measurement.simplified;
+    SimplifyOptions options;
+    options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
+    options.threads = 1;
+    for (const bool clustering : {false, true}) {
+        if (clustering && subtree_triangles < fewest_clustered_triangles) break;
+        options.edge_collapse = !clustering;
+        std::size_t previous = subtree_triangles + 1;
+        const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
+        for (double share : finer ? std::span<const double>(large_simplified_shares) : std::span<const double>(simplified_shares)) {
+            const auto target = std::size_t(double(subtree_triangles) * share);
+            if (target < fewest_simplified_triangles) break;
+            if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
+            SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
+            simplified.triangles = triangle_count(simplified.primitives);
+            if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
+            previous = simplified.triangles;
+            measurement.simplified.push_back(std::move(simplified));
+        }
+    }
+    measurement.simplified_made = true;
+    return measurement.simplified;
+}
+
+// The geometry of node n's baked proxies (baked_proxy.h; made once per
+// model): its sub-tree as one mesh of positions, as it is and simplified
+// across material seams to 1/4, 1/16 and 1/64 of its triangles by edge
+// collapse, and for large sub-trees by clustering too (but at 1). Baking is for far levels, where a box
+// would lose the silhouette and simplification the colours.
+const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, std::size_t subtree_triangles,
+                                                     NodeMeasurement& measurement) {
+    if (measurement.baked_made) return measurement.baked;
+    SimplifyOptions options;
+    options.geometry_only = true;
+    options.threads = 1;
+    for (const bool clustering : {false, true}) {
+        if (clustering && subtree_triangles < fewest_clustered_triangles) break;
+        options.edge_collapse = !clustering;
+        for (double share : baked_shares) {
+            const auto target = std::size_t(double(subtree_triangles) * share);
+            if (target < fewest_simplified_triangles) break;
+            if (clustering && share == 1) continue;  // as it is: once
+            SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
+            simplified.triangles = triangle_count(simplified.primitives);
+            if (simplified.triangles > 0) measurement.baked.push_back(std::move(simplified));
+        }
+    }
+    measurement.baked_made = true;
+    return measurement.baked;
+}
+
+// A box's texels: their size in metres (as measurements are kept) and the sizing that bakes them.
+struct BoxTexels {
+    float size = 0;
+    TextureSizing sizing;
+};
+
+// Among its siblings: the parent's sub-tree but n's own, drawn in every
+// measuring render; only what those can see, within 2 radii of the centre
+// (camera at 2r, view r wide).
+std::vector<const Primitive*> sibling_primitives(const Model& model, int n, const MeasuringView& view) {
+    std::vector<const Primitive*> others;
+    const int parent = model.nodes[std::size_t(n)].parent;
+    if (parent < 0) return others;
+    std::vector<bool> mine(model.nodes.size(), false);
+    for (int k : subtree_nodes(model, n)) mine[std::size_t(k)] = true;
+    const Eigen::Vector3f center = view.sphere.center;
+    const float reach = 2 * view.sphere.radius;
+    for (int k : subtree_nodes(model, parent))
+        if (!mine[std::size_t(k)])
+            for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
+                Eigen::AlignedBox3f bounds;
+                for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
+                if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
+            }
+    return others;
+}
+
+// Baked proxies are offered where asked for and the levels are textured (they draw their box's pages).
+bool baked_wanted(const HybridSettings& settings) { return settings.baked_proxies && settings.mode != RenderMode::untextured; }
+
+// The error sums of node n's box at each of `box_texels` and of its
+// simplified sub-trees in `view`, rendered among their siblings, but those
+// `measurement` holds for this view.
+void measure_error_sums(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                        const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles, const Drawable& subtree,
+                        const MeasuringView& view, const HybridSettings& settings, NodeMeasurement& measurement) {
+    if (measurement.pixel != view.pixel || measurement.side != view.side) {
+        measurement.box_sums.clear(), measurement.baked_sums.clear(), measurement.simplified_sums.clear();
+        measurement.simplified_measured = false;
+        measurement.pixel = view.pixel, measurement.side = view.side;
+    }
+    std::vector<BoxTexels> missing;
+    for (const BoxTexels& texels : box_texels)
+        if (!measurement.box_sums.count(texels.size) || (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
+            missing.push_back(texels);
+    if (missing.empty() && measurement.simplified_measured) return;
+    const std::vector<const Primitive*> others = sibling_primitives(model, n, view);
+    // Drawn in its materials' base colours, untextured: it only hides and is
+    // hidden, the same in every render. Its opaque part is rendered once per
+    // direction and each candidate over it from its depth (renderer.h:
+    // depth_from_frame), its blended part with each candidate: the pictures of
+    // one render of the context and the candidate, at a fraction of the cost.
+    std::vector<Material> plain = model.materials;
+    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
+    const Drawable context = make_drawable(plain, DecodedTextures{}, others);
+    std::vector<Batch> opaque_context, blended_context;
+    for (const Batch& batch : context.batches)
+        (batch.surface.alpha_mode == AlphaMode::blend ? blended_context : opaque_context).push_back(batch);
+    const std::vector<Frame> underlay = render_views(opaque_context, view, settings.mode, nullptr, false);
+    auto among_context = [&](const Drawable& d) {
+        std::vector<Batch> batches = blended_context;
+        batches.insert(batches.end(), d.batches.begin(), d.batches.end());
+        return compared_views(render_views(batches, view, settings.mode, &underlay));
+    };
+    const auto original = among_context(subtree);
+    const std::vector<SimplifiedSubtree>& simplified_list = simplified_subtrees(model, n, subtree_triangles, measurement);
+    const bool textured = settings.mode != RenderMode::untextured;
+    for (const BoxTexels& texels : missing) {
+        const std::array<BakedFace, 6> baked = textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
+        measurement.box_sums[texels.size] = pixel_error_sum(original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
+        std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
+        if (!baked_wanted(settings)) continue;
+        for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
+            std::array<Primitive, 6> faces = baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
+            BakedSum measured{0, baked_proxy_mesh_bytes(faces), {}};
+            for (std::size_t f = 0; f < 6; ++f) measured.sampled[f] = !faces[f].indices.empty();
+            measured.sum = pixel_error_sum(original, among_context(baked_proxy_drawable(std::move(faces), baked)->drawable));
+            baked_sums.push_back(measured);
+        }
+    }
+    if (measurement.simplified_measured) return;
+    for (const SimplifiedSubtree& simplified : simplified_list) {
+        double sum = 0;
+        if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
+            std::vector<const Primitive*> primitives;
+            for (const Primitive& p : simplified.primitives) primitives.push_back(&p);
+            sum = pixel_error_sum(original, among_context(make_drawable(model.materials, textures, primitives)));
+        }
+        measurement.simplified_sums.push_back(sum);
+    }
+    measurement.simplified_measured = true;
+}
+
+// The baked proxies measured with its box at `texel_scale` (`sums`, per geometry in measurement.baked).
+void add_baked_proxies(const OrientedBox& box, int texel_scale, const std::vector<BakedSum>& sums, const NodeMeasurement& measurement,
+                       const MeasuringView& view, const HybridSettings& settings, std::vector<Proxy>& proxies) {
+    const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(box);
+    const TextureSizing sizing = coarser_sizing(settings.sizing, texel_scale);
+    for (std::size_t c = 0; c < sums.size(); ++c) {
+        if (sums[c].mesh_bytes == 0) continue;  // it samples no face that saw anything: it would draw nothing
+        Proxy proxy;
+        proxy.kind = ProxyKind::baked;
+        proxy.primitives = measurement.baked[c].primitives;
+        proxy.clustered = measurement.baked[c].clustered;
+        proxy.texel_scale = texel_scale;
+        std::uint64_t texels = 0;
+        for (std::size_t f = 0; f < 6; ++f)
+            if (sums[c].sampled[f]) texels += face_page_texels(faces[f], sizing);
+        proxy.bytes = double(sums[c].mesh_bytes + page_bytes(texels));
+        proxy.error = measured_error(sums[c].sum, view, settings);
+        proxies.push_back(std::move(proxy));
+    }
+}
+
+// Every proxy of node n, measured (or its measurements reused); then sorted by
+// bytes drawn alone (with the textures they sample), keeping only those that
+// beat every cheaper one and cost less than the sub-tree itself.
+std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
+                                   double subtree_bytes, std::size_t subtree_triangles, const PaidTextures& paid,
+                                   const HybridSettings& settings) {
+    const Drawable subtree = make_drawable(model, textures, n);
+    const MeasuringView view = measuring_view(subtree.bounds, settings);
+    // The box at each texel scale that saves bytes and whose texels the
+    // measuring view can tell from the finest's (coarser than its pixel).
+    // The finest is measured with texels of the measuring pixel's size.
+    std::vector<Proxy> proxies;
+    std::vector<BoxTexels> box_texels;
+    const double pixel = pixel_world_size(settings.sizing);
+    for (int scale : box_texel_scales) {
+        Proxy box_proxy;
+        box_proxy.texel_scale = scale;
+        const TextureSizing sizing = coarser_sizing(settings.sizing, scale);
+        box_proxy.bytes = double(box_bytes_estimate(box, sizing, settings.mode != RenderMode::untextured));
+        if (scale > 1 && box_proxy.bytes > coarser_box_most_bytes * proxies.back().bytes) continue;
+        const float texel = scale == 1 ? view.pixel : float(scale * pixel);  // the measurements' key
+        if (scale > 1 && !(texel > view.pixel)) continue;
+        box_texels.push_back({texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});
+        proxies.push_back(std::move(box_proxy));
+    }
+    NodeMeasurement own;
+    NodeMeasurement& measurement = settings.measurements ? settings.measurements->nodes[std::size_t(n)] : own;
+    measure_error_sums(model, textures, n, box, box_texels, subtree_triangles, subtree, view, settings, measurement);
+    for (std::size_t k = 0; k < proxies.size(); ++k)
+        proxies[k].error = measured_error(measurement.box_sums.at(box_texels[k].size), view, settings);
+    for (std::size_t k = 0; k < measurement.simplified.size(); ++k) {
+        Proxy proxy;
+        proxy.kind = ProxyKind::simplified;
+        proxy.primitives = measurement.simplified[k].primitives;
+        proxy.clustered = measurement.simplified[k].clustered;
+        proxy.bytes = double(mesh_bytes(proxy.primitives, model));
+        proxy.error = measured_error(measurement.simplified_sums[k], view, settings);
+        proxies.push_back(std::move(proxy));
+    }
+    for (std::size_t k = 0; k < box_texels.size(); ++k)
+        if (baked_wanted(settings))
+            add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size), measurement, view, settings, proxies);
+    std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
+    for (Proxy& proxy : proxies) {
+        const double alone = proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy));
+        by_bytes.emplace_back(alone, std::move(proxy));
+    }
+    std::stable_sort(by_bytes.begin(), by_bytes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Proxy> kept;
+    for (auto& [alone, proxy] : by_bytes)
+        if (alone < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+    return kept;
+}
+
+// Per node, after the first `count` of `steps`: its proxy, or -1 where it keeps its geometry.
+std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps, std::size_t count) {
+    std::vector<int> state(plan.proxies.size(), -1);
+    for (std::size_t n = 0; n < plan.proxies.size(); ++n)
+        if (!plan.proxies[n].empty()) state[n] = 0;
+    for (std::size_t k = 0; k < std::min(count, steps.size()); ++k) state[std::size_t(steps[k].node)] = steps[k].proxy;
+    return state;
+}
+
+}  // namespace
+
+double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b) {
+    return compared_pixel_error(compared_pixel(a), compared_pixel(b));
+}
+
+HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
+                       const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings) {
+    HybridPlan plan;
+    plan.proxies.resize(model.nodes.size());
+    const bool textured = settings.mode != RenderMode::untextured;
+    const std::vector<std::uint64_t> bytes = subtree_mesh_bytes(model);
+    const std::vector<std::size_t> triangles = subtree_triangles(model);
+    // A node is measured where some proxy may cost less than its sub-tree:
+    // its coarsest box (than the sub-tree's mesh and the textures only it samples,
+    // which the box may free: counting those that others sample too measured
+    // 1.7x as long on `manual`), or a simplified sub-tree (enough triangles
+    // for the first share that simplifies). Proxies are then kept by their
+    // bytes alone, with every texture they sample.
+    const PaidTextures paid = paid_textures(model);
+    const std::vector<std::vector<int>> sampled = subtree_textures(model, paid), exclusive = exclusive_textures(model, paid);
+    std::vector<double> alone(model.nodes.size());
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) alone[n] = double(bytes[n]) + bytes_of(paid, sampled[n]);
+    std::vector<int> measured;
+    const TextureSizing coarsest = coarser_sizing(settings.sizing, box_texel_scales.back());
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], coarsest, textured) < double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
+                         double(triangles[n]) * smallest_simplified_share_of_interest >= double(fewest_simplified_triangles)))
+            measured.push_back(int(n));
+    parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
+        const auto n = std::size_t(measured[i]);
+        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], alone[n], triangles[n], paid, settings);
+    });
+    order_hybrid_plan(model, plan);
+    return plan;
+}
+
+void order_hybrid_plan(const Model& model, HybridPlan& plan) {
+    plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
+    order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes, plan.error);
+}
+
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { return state_after(plan, plan.steps, steps); }
+
+HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
+    std::vector<HybridStep> steps;
+    std::vector<double> bytes, error;
+    order_within(model, plan.proxies, budget, steps, bytes, error);
+    const std::size_t best = best_prefix_within(bytes, error, budget);
+    return {state_after(plan, steps, best), bytes[best], error[best]};
+}
+
+Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state) {
+    Cut cut;
+    for (std::vector<int> stack{0}; !stack.empty();) {
+        const int n = stack.back();
+        stack.pop_back();
+        const Node& node = model.nodes[std::size_t(n)];
+        cut.used_nodes.push_back(n);
+        if (const int s = state[std::size_t(n)]; s >= 0) {
+            const Proxy& proxy = plan.proxies[std::size_t(n)][std::size_t(s)];
+            if (proxy.kind == ProxyKind::simplified) cut.simplified_nodes.emplace_back(n, s);
+            if (proxy.kind == ProxyKind::baked) cut.baked_nodes.push_back({n, s, &proxy.primitives});
+            if (proxy.kind == ProxyKind::box) cut.box_nodes.push_back(n);
+            if (proxy.kind != ProxyKind::simplified && proxy.texel_scale > 1) cut.box_texel_scales[n] = proxy.texel_scale;
+            continue;
+        }
+        if (node.has_geometry()) cut.geometry_nodes.push_back(n);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+    }
+    return cut;
+}
+
+double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
+    double error = 0;
+    for (int n : cut.box_nodes)
+        for (const Proxy& proxy : plan.proxies[std::size_t(n)])
+            if (proxy.kind == ProxyKind::box && proxy.texel_scale == texel_scale(cut, n)) error += proxy.error;
+    for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
+    for (const BakedNode& baked : cut.baked_nodes)
+        if (baked.proxy >= 0) error += plan.proxies[std::size_t(baked.node)][std::size_t(baked.proxy)].error;
+    return error;
+}
+
+LevelValues hybrid_levels(const Model& model, const HybridPlan& plan, const std::vector<double>& budgets,
+                          std::vector<HybridLevel>& levels) {
+    const int count = int(budgets.size());
+    LevelValues values;
+    values.obtained_levels = count;
+    values.level.assign(model.nodes.size(), 0);
+    levels.assign(budgets.size() + 1, {std::vector<int>(model.nodes.size(), -1), plan.bytes.back(), 0});
+    for (int c = count; c >= 1; --c) {
+        levels[std::size_t(c)] = hybrid_level_within(model, plan, budgets[std::size_t(c - 1)]);
+        for (int n : hybrid_cut(model, plan, levels[std::size_t(c)].state).geometry_nodes)
+            values.level[std::size_t(n)] = std::max(values.level[std::size_t(n)], std::min(c, count - 1));
+    }
+    return values;
+}
+
+}  // namespace boxlod
