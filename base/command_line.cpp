@@ -12,8 +12,9 @@
 namespace boxlod {
 
 std::string Arguments::text(const std::string& name, const std::string& fallback) const {
-    auto it = values.find(name);
-    return it == values.end() ? fallback : it->second;
+    if (auto it = values.find(name); it != values.end()) return it->second;
+    auto declared = defaults.find(name);
+    return declared == defaults.end() ? fallback : declared->second;
 }
 
 std::vector<Option> with_options(std::vector<Option> options, const std::vector<Option>& more) {
@@ -23,24 +24,37 @@ std::vector<Option> with_options(std::vector<Option> options, const std::vector<
     return options;
 }
 
-double Arguments::number(const std::string& name, double fallback) const {
-    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as a number but declares no range");
-    auto it = values.find(name);
-    if (it == values.end()) return fallback;
+namespace {
+
+// The option's value as given or declared, or nullptr where the reader's fallback holds.
+template <typename Fallback>
+const std::string* value_or_default(const Arguments& a, const std::string& name, const std::optional<Fallback>& fallback) {
+    if (!a.ranges.count(name)) throw std::logic_error("option --" + name + " is read as a number but declares no range");
+    const bool declared = a.defaults.count(name) != 0;
+    if (declared == fallback.has_value())
+        throw std::logic_error("option --" + name + (declared ? " declares a default and is read with another" : " has no default"));
+    if (auto it = a.values.find(name); it != a.values.end()) return &it->second;
+    return declared ? &a.defaults.at(name) : nullptr;
+}
+
+}  // namespace
+
+double Arguments::number(const std::string& name, std::optional<double> fallback) const {
+    const std::string* text = value_or_default(*this, name, fallback);
+    if (!text) return *fallback;
     double value = 0;
-    const std::string& s = it->second;
+    const std::string& s = *text;
     auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
     if (error != std::errc() || end != s.data() + s.size() || !std::isfinite(value))
         throw InputError("--" + name + ": expected a number, got '" + s + "'");
     return value;
 }
 
-int Arguments::integer(const std::string& name, int fallback) const {
-    if (!ranges.count(name)) throw std::logic_error("option --" + name + " is read as an integer but declares no range");
-    auto it = values.find(name);
-    if (it == values.end()) return fallback;
+int Arguments::integer(const std::string& name, std::optional<int> fallback) const {
+    const std::string* text = value_or_default(*this, name, fallback);
+    if (!text) return *fallback;
     int value = 0;
-    const std::string& s = it->second;
+    const std::string& s = *text;
     auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
     if (error != std::errc() || end != s.data() + s.size())
         throw InputError("--" + name + ": expected an integer, got '" + s + "'");
@@ -50,8 +64,10 @@ int Arguments::integer(const std::string& name, int fallback) const {
 Arguments parse_arguments(const Command& command, const std::vector<std::string>& words) {
     Arguments arguments;
     std::string prefix = "boxlod " + command.name + ": ";
-    for (const Option& o : command.options)
+    for (const Option& o : command.options) {
         if (o.range) arguments.ranges[o.name] = *o.range;
+        if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
+    }
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string& word = words[i];
         if (word == "--help" || word == "-h") {
@@ -98,13 +114,15 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
 
 namespace {
 
-// An option's help names its range: "(default 9)" becomes "(default 9; range [1, 10000])".
+// An option's help names its default and range: "(default 9; range [1, 10000])";
+// a default the help describes ("(default: frames the model)") takes the range in.
 std::string help_with_range(const Option& o) {
-    if (!o.range) return o.help;
-    const std::string range = "range " + range_text(*o.range);
-    if (o.help.find("(default ") != std::string::npos && o.help.back() == ')')
-        return o.help.substr(0, o.help.size() - 1) + "; " + range + ")";
-    return o.help + " (" + range + ")";
+    std::string notes = o.default_value.empty() ? "" : "default " + o.default_value;
+    if (o.range) notes += (notes.empty() ? "" : "; ") + std::string("range ") + range_text(*o.range);
+    if (notes.empty()) return o.help;
+    if (o.default_value.empty() && o.help.find("(default") != std::string::npos && o.help.back() == ')')
+        return o.help.substr(0, o.help.size() - 1) + "; " + notes + ")";
+    return o.help + " (" + notes + ")";
 }
 
 }  // namespace

@@ -18,7 +18,10 @@ struct Option {
     std::string value_name;  // empty: a flag without value
     std::string help;
     std::optional<NumberRange> range = std::nullopt;  // a numeric option's accepted values, checked while parsing
-    char short_name = 0;               // e.g. 'o' for -o
+    // Its value when not given ("": none, or one the help describes), declared
+    // here only: --help shows it, and Arguments reads it.
+    std::string default_value = "";
+    char short_name = 0;  // e.g. 'o' for -o
 };
 
 // `options` followed by those of `more` whose names it does not have yet
@@ -37,13 +40,16 @@ struct Arguments {
     std::vector<std::string> positionals;
     std::map<std::string, std::string> values;  // flags map to ""
     std::map<std::string, NumberRange> ranges;  // of every numeric option declared
+    std::map<std::string, std::string> defaults;  // of every option declared with a default value
 
-    // number() and integer() read only options declared with a range: a
-    // number without one is a programming error (std::logic_error).
+    // An option not given reads as its declared default, else as `fallback`;
+    // number() and integer() read only options declared with a range, and a
+    // fallback for an option that declares a default, or neither, is a
+    // programming error (std::logic_error): each default is written once.
     bool has(const std::string& name) const { return values.count(name) != 0; }
     std::string text(const std::string& name, const std::string& fallback = "") const;
-    double number(const std::string& name, double fallback) const;
-    int integer(const std::string& name, int fallback) const;
+    double number(const std::string& name, std::optional<double> fallback = std::nullopt) const;
+    int integer(const std::string& name, std::optional<int> fallback = std::nullopt) const;
 };
 
 // Throws InputError ("boxlod NAME: ...") on an unknown option, a missing value,

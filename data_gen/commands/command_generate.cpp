@@ -39,7 +39,7 @@ int run_generate(const Arguments& arguments) {
     if (sources != 1) throw InputError(std::string(prefix) + "give exactly one of GRAMMAR, --sample NAME or --city N");
     if (!arguments.has("output")) throw InputError(std::string(prefix) + "-o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
-    int seed = arguments.integer("seed", 0);
+    const int seed = arguments.integer("seed");
 
     Model model;
     KeyValues report = {text_entry("output", arguments.text("output")), number_entry("seed", seed)};
@@ -50,7 +50,7 @@ int run_generate(const Arguments& arguments) {
             throw InputError(std::string(prefix) + "--start and --lot apply to one building, not to --city");
         CityOptions city;
         city.buildings = arguments.integer("city", 0);
-        city.designs = arguments.integer("designs", 0);
+        city.designs = arguments.integer("designs");
         check_memory(std::string(prefix) + "a city of " + std::to_string(city.buildings) + " buildings", city_file_memory(city.buildings));
         city.seed = std::uint64_t(seed);
         model = generate_city(city);
@@ -77,8 +77,8 @@ int run_generate(const Arguments& arguments) {
 }  // namespace
 
 Option designs_option() {
-    return {"designs", "K", "with --city: the lots draw from K distinct building designs (default 0: each lot its own)",
-            city_designs_range};
+    return {"designs", "K", "with --city: the lots draw from K distinct building designs (0: each lot its own)",
+            city_designs_range, std::to_string(CityOptions{}.designs)};
 }
 
 Subcommand generate_subcommand() {
@@ -91,8 +91,8 @@ Subcommand generate_subcommand() {
               designs_option(),
               {"start", "SYMBOL", "the rule to start from (default: the grammar's first rule)"},
               {"lot", "WxD", "the lot's width and depth in metres (default: the grammar's lot_width/lot_depth, else 20x20)"},
-              {"seed", "S", "seed of the random choices (default 0)", seed_range},
-              {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
+              {"seed", "S", "seed of the random choices", seed_range, std::to_string(CityOptions{}.seed)},
+              {"output", "FILE", "output file, .gltf or .glb (required)", {}, "", 'o'},
               json_option()},
              0, 1},
             run_generate};

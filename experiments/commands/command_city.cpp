@@ -37,21 +37,21 @@ void require(bool ok, const std::string& what) {
 
 FlyThroughOptions fly_through_options(const Arguments& arguments) {
     FlyThroughOptions options;
-    options.strategy = parse_strategy(arguments.text("strategy", "texel"), "--strategy");
-    options.width = arguments.integer("width", options.width);
-    options.height = arguments.integer("height", options.height);
-    options.fovy = float(arguments.number("fovy", options.fovy));
-    options.hysteresis = arguments.number("hysteresis", options.hysteresis);
+    options.strategy = parse_strategy(arguments.text("strategy"), "--strategy");
+    options.width = arguments.integer("width");
+    options.height = arguments.integer("height");
+    options.fovy = float(arguments.number("fovy"));
+    options.hysteresis = arguments.number("hysteresis");
     if (arguments.has("budget")) {
         double budget = arguments.number("budget", 0);
         require(budget == std::floor(budget), "--budget takes a whole number of faces");
         options.face_budget = std::size_t(budget);
     }
-    options.error_every = arguments.integer("error-every", options.error_every);
-    options.pixels_per_degree = arguments.number("ppd", options.pixels_per_degree);
+    options.error_every = arguments.integer("error-every");
+    options.pixels_per_degree = arguments.number("ppd");
     apply_lod_options(arguments, options.levels, city_lod_parameters);
-    options.base_distance = float(arguments.number("base-distance", options.base_distance));
-    options.memory_budget = std::size_t(arguments.integer("memory", int(options.memory_budget >> 20))) << 20;
+    options.base_distance = float(arguments.number("base-distance"));
+    options.memory_budget = std::size_t(arguments.integer("memory")) << 20;
     options.threads = threads_from(arguments);
     require(options.threads >= 0, "--threads: expected 0 (all cores) or a positive count");
     return options;
@@ -124,12 +124,12 @@ int run_city(const Arguments& arguments) {
     check_output_directory(arguments.text("output"));
     FlyThroughOptions options = fly_through_options(arguments);
     CityOptions city;
-    city.buildings = arguments.integer("buildings", 9);
-    city.seed = std::uint64_t(arguments.integer("seed", 0));
-    city.designs = arguments.integer("designs", 0);
-    int frames = arguments.integer("frames", 60);
+    city.buildings = arguments.integer("buildings");
+    city.seed = std::uint64_t(arguments.integer("seed"));
+    city.designs = arguments.integer("designs");
+    const int frames = arguments.integer("frames");
     std::vector<double> details = details_option(arguments);
-    std::string path_name = arguments.text("path", "orbit");
+    std::string path_name = arguments.text("path");
     bool built_in = path_name == "orbit" || path_name == "street";
     std::vector<Keyframe> keys;
     if (!built_in) keys = load_keyframes(path_name);
@@ -161,32 +161,36 @@ int run_city(const Arguments& arguments) {
 
 Subcommand city_subcommand() {
     std::vector<Option> options = {
-        {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, 'o'},
-        {"buildings", "N", "buildings in the city (default 9)", city_buildings_range},
+        {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, "", 'o'},
+        {"buildings", "N", "buildings in the city", city_buildings_range, std::to_string(CityOptions{}.buildings)},
         designs_option(),
-        {"seed", "S", "the city's seed (default 0)", seed_range},
+        {"seed", "S", "the city's seed", seed_range, std::to_string(CityOptions{}.seed)},
         {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
                           "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] | measured[:ERROR] "
                           "(each level from where its chain measured it within ERROR of the original, 0.05, as build --chain "
-                          "switches) (default texel)"},
-        {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines (default orbit)"},
-        {"frames", "F", "frames along the path (default 60)", NumberRange{1, 100000}},
-        {"width", "W", "frame width in pixels (default 320)", NumberRange{16, 8192}},
-        {"height", "H", "frame height in pixels, also the texture sizing resolution (default 240)", NumberRange{16, 8192}},
-        {"fovy", "DEGREES", "vertical field of view (default 45)", parameter_range::fovy},
-        {"hysteresis", "H", "relative margin before a level changes back (default 0.1)", NumberRange{0, 10}},
+                          "switches)", std::nullopt, format_strategy(FlyThroughOptions{}.strategy)},
+        {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines", std::nullopt, "orbit"},
+        {"frames", "F", "frames along the path", NumberRange{1, 100000}, "60"},
+        {"width", "W", "frame width in pixels", NumberRange{16, 8192}, std::to_string(FlyThroughOptions{}.width)},
+        {"height", "H", "frame height in pixels, also the texture sizing resolution", NumberRange{16, 8192},
+         std::to_string(FlyThroughOptions{}.height)},
+        {"fovy", "DEGREES", "vertical field of view", parameter_range::fovy, format_number(FlyThroughOptions{}.fovy)},
+        {"hysteresis", "H", "relative margin before a level changes back", NumberRange{0, 10},
+         format_number(FlyThroughOptions{}.hysteresis)},
         {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
                                 "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
                                 "levels (at most 64), images under OUTDIR/detail_K/"},
         {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
-        {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (default 10; 0: never)", NumberRange{0, 1e6}},
-        {"ppd", "P", "FLIP's pixels per degree (default 67)", pixels_per_degree_range},
+        {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (0: never)", NumberRange{0, 1e6},
+         std::to_string(FlyThroughOptions{}.error_every)},
+        {"ppd", "P", "FLIP's pixels per degree", pixels_per_degree_range, format_number(FlyThroughOptions{}.pixels_per_degree)},
     };
     options = with_options(options, lod_options(city_lod_parameters));
     options = with_options(options, {
-        {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1) (default 20)", NumberRange{1e-2, 1e6}},
-        {"memory", "MB", "unpacked levels kept between frames, in MiB (default 1024); levels are kept packed "
-                         "(deflated) and a frame's own levels are always unpacked", NumberRange{0, 1 << 20}},
+        {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1)", NumberRange{1e-2, 1e6},
+         format_number(FlyThroughOptions{}.base_distance)},
+        {"memory", "MB", "unpacked levels kept between frames, in MiB; levels are kept packed (deflated) and a frame's own "
+                         "levels are always unpacked", NumberRange{0, 1 << 20}, std::to_string(FlyThroughOptions{}.memory_budget >> 20)},
         threads_option(),
         json_option(),
     });

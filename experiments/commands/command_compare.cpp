@@ -46,7 +46,7 @@ std::pair<Coverage, Coverage> silhouettes(const Arguments& arguments, const Imag
         return {coverage_from_mask(mask_a), coverage_from_mask(mask_b)};
     }
     // boxlod render's background, white unless told otherwise (sRGB components in [0, 1]).
-    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background", "1,1,1"), colour_range);
+    Eigen::Vector3f srgb = parse_vector3("background", arguments.text("background"), colour_range);
     std::array<std::uint8_t, 3> background{};
     for (int c = 0; c < 3; ++c) background[c] = std::uint8_t(std::lround(srgb[c] * 255));
     return {coverage_from_background(a, background), coverage_from_background(b, background)};
@@ -56,12 +56,12 @@ int run_compare(const Arguments& arguments) {
     const std::string& a_name = arguments.positionals[0];
     const std::string& b_name = arguments.positionals[1];
     const std::vector<Metric> asked = metrics_option(arguments.text("metric", enum_names(metrics(), ",")));
-    std::string heatmap_metric = arguments.text("heatmap-metric", "flip");
+    std::string heatmap_metric = arguments.text("heatmap-metric");
     if (heatmap_metric != "flip" && heatmap_metric != "rmse")
         throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric + "'");
     if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"), {".png"});
     check_distinct_files({{"IMAGE_A", a_name}, {"IMAGE_B", b_name}}, {{"--heatmap", arguments.text("heatmap", "")}});
-    double ppd = arguments.number("ppd", 67);
+    const double ppd = arguments.number("ppd");
     int threads = threads_from(arguments);
 
     // The sizes the files declare, checked before either is decoded (two 16384x16384 PNGs of under 1 MB were decoded for 41 s).
@@ -104,12 +104,12 @@ Subcommand compare_subcommand() {
              "mean FLIP (LDR), and the silhouette IoU.",
              {{"metric", "LIST", "comma-separated metrics among " + enum_names(metrics(), ",") + " (default: all)"},
               {"heatmap", "FILE", "write a PNG of the per-pixel error (black, red, yellow, white = 0 .. 1)"},
-              {"heatmap-metric", "NAME", "the heat map's error: flip (default) or rmse (per-pixel RMS over RGB)"},
-              {"ppd", "N", "FLIP's pixels per degree of visual angle (default 67)", pixels_per_degree_range},
+              {"heatmap-metric", "NAME", "the heat map's error: flip or rmse (per-pixel RMS over RGB)", std::nullopt, "flip"},
+              {"ppd", "N", "FLIP's pixels per degree of visual angle", pixels_per_degree_range, "67"},
               {"mask-a", "FILE", "coverage mask of A for iou and flip_covered (covered where > 127; e.g. from render --coverage)"},
               {"mask-b", "FILE", "coverage mask of B for iou and flip_covered"},
               {"background", "R,G,B", "without masks, iou and flip_covered count pixels differing from this sRGB colour in [0, 1] "
-                                      "(default 1,1,1, the render background)"},
+                                      "(the render's background)", std::nullopt, "1,1,1"},
               threads_option(),
               json_option()},
              2, 2},

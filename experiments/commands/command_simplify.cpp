@@ -55,7 +55,7 @@ Subcommand simplify_subcommand() {
              "baseline LoD. Textures and the materials still drawn are kept (equal ones merged), geometry is merged into "
              "one node per material.",
              {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
-              {"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'},
+              {"output", "FILE", "output file, .gltf or .glb (required)", {}, "", 'o'},
               {"lock-border", "", "never move vertices on open mesh borders"},
               threads_option("threads, one material at a time"),
               keep_materials_option(),

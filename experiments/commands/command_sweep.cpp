@@ -67,7 +67,7 @@ Subcommand sweep_subcommand() {
              "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x render mode "
              "of CONFIG (key = value lines: " + keys + "), each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
              "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
-             {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, 'o'},
+             {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, "", 'o'},
               threads_option("threads to use, 0 = all cores", "the config's threads"),
               {"shard", "M:MODE", "only model M (from 1) with level mode MODE, and the baselines if MODE is the config's first: "
                                   "a part of the sweep that runs on its own (docs/sweeps.md: Shards)"},

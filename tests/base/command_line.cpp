@@ -12,7 +12,7 @@ using namespace boxlod;
 namespace {
 Command render_like() {
     return {"render", "MODEL", "Render.",
-            {{"output", "FILE", "output", {}, 'o'},
+            {{"output", "FILE", "output", {}, "", 'o'},
              {"width", "W", "width", NumberRange{1, 16384}},
              {"height", "H", "height", NumberRange{1, 16384}},
              {"name", "N", "a name"},
@@ -69,9 +69,29 @@ TEST(CommandLine, HelpListsEveryOption) {
 
 TEST(CommandLine, HelpNamesTheRangeOfEveryNumericOption) {
     Command command = render_like();
-    command.options[2].help = "height (default 480)";
+    command.options[2].help = "height (default: the model's)";
     std::string help = help_text(command);
     EXPECT_NE(help.find("width (range [1, 16384])\n"), std::string::npos) << help;
-    EXPECT_NE(help.find("height (default 480; range [1, 16384])\n"), std::string::npos) << help;
+    EXPECT_NE(help.find("height (default: the model's; range [1, 16384])\n"), std::string::npos) << help;
     EXPECT_NE(help.find("a name\n"), std::string::npos) << help;  // no range, nothing added
+}
+
+// A default is written once, in the option's declaration: the help shows it,
+// an option not given reads as it, and reading it with another fallback (or a
+// number with neither) is a programming error.
+TEST(CommandLine, ADeclaredDefaultIsShownAndReadFromItsDeclarationOnly) {
+    Command command = render_like();
+    command.options[1].default_value = "1024";
+    command.options[3].default_value = "boxlod";
+    const std::string help = help_text(command);
+    EXPECT_NE(help.find("width (default 1024; range [1, 16384])\n"), std::string::npos) << help;
+    EXPECT_NE(help.find("a name (default boxlod)\n"), std::string::npos) << help;
+    const Arguments absent = parse_arguments(command, {"m"});
+    EXPECT_EQ(absent.integer("width"), 1024);
+    EXPECT_EQ(absent.number("width"), 1024);
+    EXPECT_EQ(absent.text("name"), "boxlod");
+    EXPECT_EQ(parse_arguments(command, {"m", "--width", "8"}).integer("width"), 8);
+    EXPECT_THROW(absent.integer("width", 1024), std::logic_error);  // written twice
+    EXPECT_THROW(absent.integer("height"), std::logic_error);       // written nowhere
+    EXPECT_EQ(absent.integer("height", 3), 3);
 }

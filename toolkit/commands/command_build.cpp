@@ -138,7 +138,7 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
 // writing is partly serial (the .gltf's JSON), so the overlap keeps both
 // cores busy. Files, their bytes and the order of the output stay the same.
 void write_levels(const Arguments& a, Chain& chain, const std::string& name, int first, int last, ChainCost& cost) {
-    int preview_width = a.integer("preview-width", 1024), preview_height = a.integer("preview-height", 768);
+    const int preview_width = a.integer("preview-width"), preview_height = a.integer("preview-height");
     const Bounds bounds = model_bounds(chain.model);
     const bool all_levels = a.has("all-levels");
     OutputGroup files;  // every level or none: a level that fails leaves the folder as it was (73)
@@ -244,7 +244,7 @@ Subcommand build_subcommand() {
              "Build a textured-box LoD: level values, boxes, baked face textures, atlas pages, LoD mesh; writes "
              "NAME.gltf/.bin, NAME_{color,normal,height}_K.png, NAME.params.txt, NAME.preview.png, NAME.stats.txt.",
              {
-                 {"output", "OUTDIR", "folder for the files (required)", {}, 'o'},
+                 {"output", "OUTDIR", "folder for the files (required)", {}, "", 'o'},
                  {"name", "NAME", "base name of the files (default: MODEL's stem + _lod)"},
                  {"save-params", "FILE", "write the parameter file and stop"},
                  {"all-levels", "", "write every level 0..N as NAME_L<c> (a level that draws what the one before draws not again: the block of the one written names it), sharing boxes and baked faces, sized by --level-distances"},
@@ -258,8 +258,8 @@ Subcommand build_subcommand() {
                  {"viewer", "",
                   "with --chain: also write OUT.three.html and OUT.babylon.html beside it, viewers that switch its levels at "
                   "its switch distances in three.js and Babylon.js (docs/cost.md: Switching levels)"},
-                 {"preview-width", "W", "preview image width (default 1024)", image_side_range},
-                 {"preview-height", "H", "preview image height (default 768)", image_side_range},
+                 {"preview-width", "W", "preview image width", image_side_range, "1024"},
+                 {"preview-height", "H", "preview image height", image_side_range, "768"},
                  {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},
                  threads_option(),
              },

@@ -21,7 +21,7 @@ static int run_convert(const Arguments& arguments) {
 Subcommand convert_subcommand() {
     return {{"convert", "MODEL", "Convert any model boxlod reads into glTF (.gltf + .bin + textures, or one .glb), "
                                  "hierarchy, scopes and rules kept; equal materials merged, unused ones dropped.",
-             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, 'o'}, keep_materials_option(), city_lod_option()}, 1, 1},
+             {{"output", "FILE", "output file, .gltf or .glb (required)", {}, "", 'o'}, keep_materials_option(), city_lod_option()}, 1, 1},
             run_convert};
 }
 

@@ -20,7 +20,7 @@ static int run_render(const Arguments& arguments) {
     check_distinct_files({{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
                          {{"--output", arguments.text("output")}, {"--coverage", arguments.text("coverage", "")},
                           {"--exr", arguments.text("exr", "")}});
-    Model model = load_model(arguments.positionals[0], {.chain_level = arguments.integer("level", 0), .city_lod = city_lod_from(arguments)});
+    Model model = load_model(arguments.positionals[0], {.chain_level = arguments.integer("level"), .city_lod = city_lod_from(arguments)});
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
     View view = view_from_arguments(arguments, drawable.bounds);
@@ -63,12 +63,12 @@ static int run_render(const Arguments& arguments) {
 
 Subcommand render_subcommand() {
     std::vector<Option> options = {
-        {"output", "FILE", "PNG image to write (required)", {}, 'o'},
+        {"output", "FILE", "PNG image to write (required)", {}, "", 'o'},
         {"exr", "FILE", "also write linear half RGBA + float depth Z as OpenEXR"},
         {"coverage", "FILE", "also write the coverage mask as a PNG"},
         {"axes", "", "draw the coordinate cross (X red, Y green, Z blue) at the model's corner"},
         {"split-view", "MODEL", "left half this model, right half MODEL (the manual's split view)"},
-        {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does (default 0)", NumberRange{0, 63}},
+        {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does", NumberRange{0, 63}, "0"},
     };
     options.push_back(city_lod_option());
     for (const Option& o : render_options()) options.push_back(o);

@@ -67,8 +67,7 @@ int run_tiles(const Arguments& a) {
     if (a.has("level")) throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
-    const Geodetic origin{a.number("latitude", Geodetic{}.latitude_degrees),
-                          a.number("longitude", Geodetic{}.longitude_degrees), a.number("height", 0)};
+    const Geodetic origin{a.number("latitude"), a.number("longitude"), a.number("height")};
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
     const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(), city.origin.y());  // y up to the file's z up
@@ -105,10 +104,11 @@ Subcommand tiles_subcommand() {
                       "switch levels where a chain does (16 pixels at the level's switch distance, --switch-error); "
                       "OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
                       {
-                          {"output", "OUTDIR", "folder for the tileset (required)", {}, 'o'},
-                          {"latitude", "DEG", "where the model's origin lies on the WGS84 ellipsoid (default 49.0094)", latitude_range},
-                          {"longitude", "DEG", "(default 8.412: Karlsruhe)", longitude_range},
-                          {"height", "M", "above the ellipsoid (default 0)", height_range},
+                          {"output", "OUTDIR", "folder for the tileset (required)", {}, "", 'o'},
+                          {"latitude", "DEG", "where the model's origin lies on the WGS84 ellipsoid (by default KIT, Karlsruhe)",
+                           latitude_range, format_number(Geodetic{}.latitude_degrees)},
+                          {"longitude", "DEG", "its longitude", longitude_range, format_number(Geodetic{}.longitude_degrees)},
+                          {"height", "M", "its height above the ellipsoid", height_range, format_number(Geodetic{}.height)},
                           keep_hierarchy_option(),
                           switch_error_option(),
                           threads_option(),

@@ -146,7 +146,7 @@ ViewerState start_state(const Arguments& a, const Model& model, LodParameters pa
     state.light_follows_camera = !(parameters.light || a.has("light"));
     std::vector<std::string> positions = camera_position_names();
     for (std::size_t i = 0; i < positions.size(); ++i)  // C continues from the start position
-        if (camera_direction(positions[i]) == camera_direction(a.text("camera", "+X+Y+Z"))) state.camera_position = int(i);
+        if (camera_direction(positions[i]) == camera_direction(a.text("camera"))) state.camera_position = int(i);
     return state;
 }
 
@@ -179,7 +179,7 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
             ++failures;
         }
     };
-    const std::string params_out = a.text("params-out", "boxlod-view.params.txt");
+    const std::string params_out = a.text("params-out");
     bool redraw = false;
     if (state.screenshot) {  // the rendered frame, without the text overlay
         std::string path = a.text("screenshot", "boxlod-view-" + std::to_string(screenshots++) + ".png");
@@ -207,7 +207,7 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
         if (state.lod && state.chain) {
             std::string name = std::filesystem::path(state.parameters.model).stem().string() + "_L" +
                                std::to_string(state.parameters.current_level);
-            std::string folder = a.text("export-dir", "boxlod-view-export");
+            std::string folder = a.text("export-dir");
             shown([&] {
                 export_lod(*state.lod, state.chain->parameters(), folder, name, frame_to_srgb8(frame), threads);
                 state.message = "exported " + folder + "/" + name + ".gltf";
@@ -270,8 +270,8 @@ Subcommand view_subcommand() {
     std::vector<Option> options = {
         {"replay", "EVENTS", "replay an event file (lines 'key m', 'drag DX DY', 'wheel N'), then stop"},
         {"screenshot", "FILE", "write the final frame (without the text overlay) as PNG"},
-        {"params-out", "FILE", "where F5 saves and F9 loads parameters (default boxlod-view.params.txt)"},
-        {"export-dir", "DIR", "where F6 exports the current LoD (default boxlod-view-export)"},
+        {"params-out", "FILE", "where F5 saves and F9 loads parameters", std::nullopt, "boxlod-view.params.txt"},
+        {"export-dir", "DIR", "where F6 exports the current LoD", std::nullopt, "boxlod-view-export"},
     };
     // The camera's distance and fovy are the render options' (and size the LoD's textures too).
     options = with_options(with_options(options, render_options()), lod_options());

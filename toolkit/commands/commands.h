@@ -36,12 +36,11 @@ inline Option switch_error_option() {
     return {"switch-error", "E",
             "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over the pixels "
             "either covers, stays within E (measured from four views in half octaves out to where the model spans 4 "
-            "pixels); 0: at its sizing distance, where its texels meet the screen's pixels (default " +
-                format_number(default_switch_error) + ")",
-            NumberRange{0, switch_error_range.max}};
+            "pixels); 0: at its sizing distance, where its texels meet the screen's pixels",
+            NumberRange{0, switch_error_range.max}, format_number(default_switch_error)};
 }
 inline double switch_error(const Arguments& arguments) {
-    const double error = arguments.number("switch-error", default_switch_error);
+    const double error = arguments.number("switch-error");
     if (error > 0 && error < switch_error_range.min)
         throw InputError("--switch-error: " + format_number(error) + " is neither 0 nor in " + range_text(switch_error_range));
     return error;

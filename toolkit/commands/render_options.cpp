@@ -16,19 +16,19 @@
 namespace boxlod {
 std::vector<Option> render_options() {
     return with_options({
-        {"camera", "POS", "one of the 26 camera positions, e.g. +X+Y+Z (default), -Z, +Y"},
+        {"camera", "POS", "one of the 26 camera positions, e.g. +X+Y+Z, -Z, +Y", std::nullopt, "+X+Y+Z"},
         {"distance", "D", "camera distance from the model's centre (default: frames the model)", NumberRange{1e-3, 1e6}},
-        {"fovy", "DEG", "vertical field of view in degrees (default 45)", parameter_range::fovy},
-        {"width", "W", "image width in pixels (default 1024)", image_side_range},
-        {"height", "H", "image height in pixels (default 768)", image_side_range},
-        {"mode", "MODE", enum_names(render_modes(), ", ", " or ") + " (default normal)"},
+        {"fovy", "DEG", "vertical field of view in degrees", parameter_range::fovy, format_number(LodParameters{}.fovy)},
+        {"width", "W", "image width in pixels", image_side_range, "1024"},
+        {"height", "H", "image height in pixels", image_side_range, "768"},
+        {"mode", "MODE", enum_names(render_modes(), ", ", " or "), std::nullopt, render_mode_name(RenderSettings{}.mode)},
         {"light", "X,Y,Z", "light position in world space (default: above, right of the camera)"},
-        {"ambient", "A", "ambient light (default 0.25)", light_intensity_range},
-        {"diffuse", "D", "diffuse light (default 0.75)", light_intensity_range},
-        {"specular", "S", "specular light (default 0.25)", light_intensity_range},
+        {"ambient", "A", "ambient light", light_intensity_range, format_number(Light{}.ambient)},
+        {"diffuse", "D", "diffuse light", light_intensity_range, format_number(Light{}.diffuse)},
+        {"specular", "S", "specular light", light_intensity_range, format_number(Light{}.specular)},
         {"shininess", "N", "shininess for every material (default: the materials' own)", shininess_range},
-        {"background", "R,G,B", "background colour, sRGB components in [0, 1] (default 1,1,1)"},
-        {"cull", "FACES", "none (default) | back | front"},
+        {"background", "R,G,B", "background colour, sRGB components in [0, 1]", std::nullopt, "1,1,1"},
+        {"cull", "FACES", "none, back or front", std::nullopt, "none"},
         {"wireframe", "", "draw triangle edges over the shaded image"},
         threads_option(),
     }, lod_options({"parallax_scale", "parallax_bias"}));
@@ -54,19 +54,19 @@ Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text
 
 View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     View view;
-    view.width = a.integer("width", 1024);
-    view.height = a.integer("height", 768);
+    view.width = a.integer("width");
+    view.height = a.integer("height");
     check_memory("--width " + std::to_string(view.width) + " --height " + std::to_string(view.height) + ": the image",
                  render_memory(view.width, view.height));
-    float fovy = float(a.number("fovy", 45));
-    std::string position = a.text("camera", "+X+Y+Z");
+    const float fovy = float(a.number("fovy"));
+    const std::string position = a.text("camera");
     auto direction = camera_direction(position);
     if (!direction) throw InputError("--camera: unknown camera position '" + position + "' (e.g. +X, -Y, +X+Y+Z)");
     Framing framing = framing_of(bounds);
     view.distance = float(a.number("distance", framing_distance(framing, fovy)));
     RenderSettings& s = view.settings;
     s.camera = framed_camera(framing, *direction, view.distance, fovy);
-    if (a.has("mode") && !parse_render_mode(a.text("mode"), s.mode))
+    if (!parse_render_mode(a.text("mode"), s.mode))
         throw InputError("--mode: unknown render mode '" + a.text("mode") + "' (" + enum_names(render_modes()) + ")");
     LodParameters parallax;
     apply_lod_options(a, parallax, {"parallax_scale", "parallax_bias"});
@@ -74,15 +74,13 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     s.parallax_bias = parallax.parallax_bias;
     s.light = light_for_camera(s.camera);
     if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), position_range);
-    s.light.ambient = float(a.number("ambient", s.light.ambient));
-    s.light.diffuse = float(a.number("diffuse", s.light.diffuse));
-    s.light.specular = float(a.number("specular", s.light.specular));
+    s.light.ambient = float(a.number("ambient"));
+    s.light.diffuse = float(a.number("diffuse"));
+    s.light.specular = float(a.number("specular"));
     s.light.shininess = float(a.number("shininess", 0));
-    if (a.has("background")) {
-        Eigen::Vector3f srgb = parse_vector3("background", a.text("background"), colour_range);
-        for (int c = 0; c < 3; ++c) view.background[c] = srgb_to_linear(std::uint8_t(std::lround(srgb[c] * 255)));
-    }
-    std::string cull = a.text("cull", "none");
+    const Eigen::Vector3f srgb = parse_vector3("background", a.text("background"), colour_range);
+    for (int c = 0; c < 3; ++c) view.background[c] = srgb_to_linear(std::uint8_t(std::lround(srgb[c] * 255)));
+    const std::string cull = a.text("cull");
     if (cull == "back") s.culling = Culling::back;
     else if (cull == "front") s.culling = Culling::front;
     else if (cull != "none") throw InputError("--cull: expected none, back or front");
