@@ -59,7 +59,7 @@ void limit_address_space(std::size_t extra) {
     // kills the child by its signal, which the parent names (also under a sanitizer's handlers).
     for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
     // The parent's freed heap would come back to the child page by page as copies
-    // (copy-on-write: +20 % on the FZK-Haus read after earlier reads); given back, it comes back as fresh pages.
+    // (copy-on-write pages of the parent's heap count against the child); given back, it comes back as fresh pages.
     ::malloc_trim(0);
     limit_address_space(limits.extra_address_space);
     char tag = answer_bytes;

@@ -1,6 +1,6 @@
-// Removing folders of many files without making anyone wait: a city's
-// 27,600 staged frames took 52 s to remove, first after SIGTERM, then at the
-// next run (base/atomic_write.h: OutputFolder).
+// Removing folders of many files without making anyone wait: a long city
+// run's staged frames take tens of seconds to remove, which a stop or the
+// next run must not wait for (base/atomic_write.h: OutputFolder).
 #pragma once
 #include <chrono>
 #include <filesystem>

@@ -75,9 +75,9 @@ Model design_model(const CityPlan& plan, std::size_t design, const std::string& 
 // derived in place under the root.
 Model generate_city(const CityOptions& options);
 
-// What `generate --city` needs to make a city and write it: 16 MB a building
-// (its peak resident with 100, 200 and 400 buildings: 15.6, 14.9 and 16.0 MB
-// each; the model alone is a sixth of it, the rest the glTF being written).
+// What `generate --city` needs to make a city and write it: 16 MB a building,
+// its measured peak resident per building (the model a sixth of it, the rest
+// the glTF being written; docs/city.md: Scale).
 double city_file_memory(int buildings);
 
 }  // namespace boxlod

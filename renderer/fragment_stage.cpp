@@ -344,7 +344,7 @@ template <bool reads_uv>
 // Textured pixels reuse the lanes of their triangles (`t`, gathered again
 // where `ids` differ from its own), which pays for large triangles; untextured
 // ones gather them each time into a local: in the benchmark's frame of a
-// million small triangles, keeping them for reuse made it about 20 % slower
+// million small triangles, keeping them for reuse made it slower
 // (docs/performance.md: Lanes).
 FragmentLanes make_textured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], bool other_triangles,
                                            TexturedTriangleLanes& t, IntLanes x, int y, int count) {

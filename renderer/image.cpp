@@ -107,9 +107,8 @@ ImageSize read_image_size(const std::string& path) {
 namespace {
 
 // PNG through libspng (zlib). Baked pages are mostly flat colour: no row filter
-// and zlib level 2 write them 2-4x faster than stb's encoder at its level 5,
-// and 15-25 % smaller (measured on the `manual` sample's 4096 x 2048 pages;
-// docs/performance.md: Writing PNGs).
+// and zlib level 2 write them faster and smaller than stb's encoder at its
+// level 5 (png_benchmark; docs/performance.md: Writing PNGs).
 constexpr int png_compression_level = 2;
 
 std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size, int width, int height, int bit_depth,

@@ -29,8 +29,8 @@ struct Frame {
 // Refuses (InputError, base/memory_budget.h) a frame larger than the memory budget.
 Frame make_frame(int width, int height, const Eigen::Vector3f& background);
 // What rendering a width x height image and writing it needs: the frame, its
-// visibility buffer and its encoded copy, 40 bytes a pixel (measured with
-// `boxlod render` from 1024 to 4096 pixels a side: 35).
+// visibility buffer and its encoded copy, 40 bytes a pixel (a little over
+// what `boxlod render` peaks at, docs/testing.md: Hardening).
 double render_memory(int width, int height);
 void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame);
 

@@ -499,9 +499,9 @@ bool is_fly_through_file(const std::string& name) {
 
 double fly_through_memory(const CityPlan& city, const FlyThroughOptions& options) {
     const std::size_t lods = options.share_designs ? std::min(city.designs.size(), city.lots.size()) : city.lots.size();
-    // Measured peaks (docs/city.md: Scale): 0.76 GB for 1,000 unique buildings,
-    // 4.1 GB for 10,000 (2.9 GB of it packed levels, 0.29 MB each), 1.15 GB for
-    // 10,000 of 100 designs; a compared frame's originals a group at a time, with its render.
+    // Per distinct building its packed levels and per lot its placement, as the
+    // measured peaks give them (docs/city.md: Scale); a compared frame's
+    // originals a group at a time, with its render.
     return 0.3e6 * double(lods) + 0.1e6 * double(city.lots.size()) + 1.5 * double(options.full_detail_group_bytes) +
            render_memory(options.width, options.height) +
            (options.error_every > 0 ? metrics_memory(options.width, options.height) : 0);

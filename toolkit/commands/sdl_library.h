@@ -1,6 +1,6 @@
 // SDL2, loaded when the viewer first needs it (dlopen of libSDL2-2.0.so.0),
-// so that every other command starts without SDL's fifty-odd libraries (a
-// process start 14 -> 8 ms; docs/performance.md: Image metrics). SDL's
+// so that every other command starts without SDL's fifty-odd libraries, which
+// took most of a process start (docs/performance.md: Image metrics). SDL's
 // header gives the types and constants; the functions the viewer calls
 // are listed once below and reached as sdl().SDL_Init(...).
 #pragma once

@@ -9,7 +9,7 @@
 namespace boxlod {
 namespace {
 
-// Level 1: the fastest; baked pages still deflate 4-10x (colour) and 30x (normal maps).
+// Level 1: the fastest; baked pages, flat regions of colour and normals, still deflate well (docs/city.md: Scale).
 constexpr int compression_level = 1;
 
 // Plain arrays (indices, texels) and Eigen vectors, as their scalars in memory order.

@@ -179,7 +179,7 @@ void add_nodes(Model& model, const aiScene& scene) {
 
 Model import_with_assimp(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "model file");
-    // A minute, and a second more per megabyte (the FZK-Haus's 4 MB: 0.4 s).
+    // A minute, and a second more per megabyte: many times what assimp takes (docs/performance.md: Reading IFC).
     const ChildLimits limits{address_space_allowance(file_bytes), 60 + double(file_bytes) / 1e6};
     return model_from_bytes(
         run_in_child([&] { return model_bytes(import_with_assimp_in_process(path)); }, limits, path, "assimp's importer"));

@@ -42,8 +42,8 @@ struct MetricValues {
 MetricValues measure_metrics(const std::vector<Metric>& metrics, const MetricPair& pair);
 
 // What measuring every metric of two width x height images needs, the images
-// included: 84 bytes a pixel (`boxlod compare` measured 80 from 1024 to 4096
-// pixels a side), FLIP's filtered planes most of it.
+// included: 84 bytes a pixel (a little over what `boxlod compare` peaks at),
+// FLIP's filtered planes most of it.
 double metrics_memory(int width, int height);
 
 }  // namespace boxlod

@@ -29,35 +29,31 @@ namespace {
 // within a quarter of a building's bytes fell back to the eighth (docs/cost.md:
 // The hybrid level mode).
 constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
-// Large sub-trees by edge collapse also at 1/sqrt(2) and 1/sqrt(8): without
-// them, a level within half of `office`'s bytes drew its root at 1/2, and
-// `house` won 10 views instead of 25 there (docs/cost.md: The hybrid level mode).
+// Large sub-trees by edge collapse also at 1/sqrt(2) and 1/sqrt(8): a budget
+// between two halvings otherwise draws the coarser one
+// (docs/cost.md: The hybrid level mode).
 constexpr std::array<double, 9> large_simplified_shares = {1, 0.7071, 0.5, 0.3536, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 // A sub-tree's simplified proxies are measured only if a quarter of its
-// triangles is enough to simplify to: measuring the many smaller sub-trees
-// too doubled the time to build every level of `manual`.
+// triangles is enough to simplify to: the many smaller sub-trees cost most of
+// the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
 constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
 // A sub-tree of at least this many triangles is also simplified by vertex
 // clustering (meshopt_simplifySloppy), at every share below 1: a whole
 // building's many separate parts cluster together where edge collapse
-// stalls on each, and within 25 % of the FZK-Haus's bytes it won most views.
-// On every sub-tree, building every level of `manual` took 1.5x as long for
-// one more view won (docs/cost.md: The hybrid level mode).
+// stalls on each; on small sub-trees it costs measuring time and seldom wins
+// (docs/cost.md: The hybrid level mode).
 constexpr std::size_t fewest_clustered_triangles = 1000;
 // A baked proxy's geometry at these shares of its sub-tree's triangles (baked_geometry).
 // At 1, the geometry as it is: a textured low-poly building (3DBAG's) then
-// keeps its shape and draws its texture re-baked at the level's texels; without
-// it, rotterdam_one's hybrid levels within 0.1 of covered FLIP were the original.
+// keeps its shape and draws its texture re-baked at the level's texels, where
+// a simplified one loses the roof's ridges (docs/cost.md: Baked proxies).
 constexpr std::array<double, 4> baked_shares = {1, 0.25, 1.0 / 16, 1.0 / 64};
 // A box is also offered with texels 2, 4, 8 and 16 times as large as the
-// sizing distance gives them: a page is dear. Without 2 and 4, a level within
-// 5 % of `classical`'s bytes drew one sharp box where `top-down` drew four
-// blurred ones and won; without 8 and 16, one within 5 % of `office`'s spent
-// half of it and won 15 of 26 views (now 24). A coarser box is offered only
+// sizing distance gives them: a page is dear, and under a small budget several
+// blurred boxes draw more than one sharp one. A coarser box is offered only
 // where it costs at most 3/4 of the last one offered: most save a few bytes of
-// pages at their least size, and measuring those too took 1.2x as long for no
-// more views won (docs/cost.md: The hybrid level mode).
+// pages at their least size, not worth measuring (docs/cost.md: The hybrid level mode).
 constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
 constexpr double coarser_box_most_bytes = 0.75;
 
@@ -79,9 +75,9 @@ MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& setting
 }
 
 // Measured from the 4 corners of a cube that make a regular tetrahedron (bit k
-// of a corner: + along axis k). Against all 8 corners, every level of `manual`
-// built in 0.58x the time and the sweeps met the views target in as many
-// budgets (docs/cost.md: The hybrid level mode).
+// of a corner: + along axis k): every direction within 71 degrees of one, at
+// half the time of all 8 corners for the same choices in the sweeps
+// (docs/cost.md: The hybrid level mode).
 constexpr std::array<int, 4> measuring_corners = {0, 3, 5, 6};
 constexpr int measuring_directions = int(measuring_corners.size());
 
@@ -467,8 +463,8 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     const std::vector<std::size_t> triangles = subtree_triangles(model);
     // A node is measured where some proxy may cost less than its sub-tree:
     // its coarsest box (than the sub-tree's mesh and the textures only it samples,
-    // which the box may free: counting those that others sample too measured
-    // 1.7x as long on `manual`), or a simplified sub-tree (enough triangles
+    // which the box may free; counting those that others sample too would
+    // measure nodes no box can pay for), or a simplified sub-tree (enough triangles
     // for the first share that simplifies). Proxies are then kept by their
     // bytes alone, with every texture they sample.
     const PaidTextures paid = paid_textures(model);
