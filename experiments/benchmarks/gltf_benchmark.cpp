@@ -18,6 +18,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 using namespace boxlod;
 namespace fs = std::filesystem;
 
@@ -28,13 +30,19 @@ const Model& manual() {
     return model;
 }
 
+// A folder of this run's own, removed when the program ends.
+struct ScratchFolder {
+    fs::path path = fs::temp_directory_path() / ("boxlod_gltf_benchmark_" + std::to_string(::getpid()));
+    ScratchFolder() { fs::create_directories(path); }
+    ~ScratchFolder() {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+    }
+};
+
 fs::path folder() {
-    static const fs::path path = [] {
-        fs::path p = fs::temp_directory_path() / ("boxlod_gltf_benchmark_" + std::to_string(::getpid()));
-        fs::create_directories(p);
-        return p;
-    }();
-    return path;
+    static const ScratchFolder scratch;
+    return scratch.path;
 }
 
 // The nodes' extras as tinygltf's writer takes them (tinygltf::Value, as
