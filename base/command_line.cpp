@@ -14,6 +14,8 @@ namespace boxlod {
 std::string Arguments::text(const std::string& name, const std::string& fallback) const {
     if (auto it = values.find(name); it != values.end()) return it->second;
     auto declared = defaults.find(name);
+    if (declared != defaults.end() && !fallback.empty())
+        throw std::logic_error("option --" + name + " declares a default and is read with another");
     return declared == defaults.end() ? fallback : declared->second;
 }
 
@@ -67,6 +69,11 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
     for (const Option& o : command.options) {
         if (o.range) arguments.ranges[o.name] = *o.range;
         if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
+        double number = 0;  // a declared default lies in the option's range
+        if (o.range && !o.default_value.empty() &&
+            (std::from_chars(o.default_value.data(), o.default_value.data() + o.default_value.size(), number).ec != std::errc() ||
+             !o.range->contains(number)))
+            throw std::logic_error("option --" + o.name + ": default " + o.default_value + " outside its range");
     }
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string& word = words[i];

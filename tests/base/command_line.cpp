@@ -94,4 +94,7 @@ TEST(CommandLine, ADeclaredDefaultIsShownAndReadFromItsDeclarationOnly) {
     EXPECT_THROW(absent.integer("width", 1024), std::logic_error);  // written twice
     EXPECT_THROW(absent.integer("height"), std::logic_error);       // written nowhere
     EXPECT_EQ(absent.integer("height", 3), 3);
+    EXPECT_THROW(absent.text("name", "other"), std::logic_error);
+    command.options[1].default_value = "0";  // outside [1, 16384]
+    EXPECT_THROW(parse_arguments(command, {"m"}), std::logic_error);
 }

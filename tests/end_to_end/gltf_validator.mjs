@@ -49,7 +49,7 @@ for (const file of files) {
     });
     const i = report.issues;
     const gltf = gltfJson(bytes), elsewhere = namedElsewhere(gltf);
-    // A chain's level buffers are data URIs by design, also in a GLB (toolkit/formats/gltf_export.cpp: sequence_level).
+    // A chain's level buffers are data URIs by design, also in a GLB (toolkit/formats/gltf_document.cpp: sequence_levels).
     const chain = (gltf.extensionsUsed ?? []).includes("MSFT_lod");
     const unused = i.messages.filter((m) => (m.code === "UNUSED_OBJECT" || m.code === "UNUSED_MESH_TANGENT") && !elsewhere.has(m.pointer));
     console.log(`${file}: ${i.numErrors} errors, ${i.numWarnings} warnings, ${i.numInfos} infos (${unused.length} unused), ${i.numHints} hints`);

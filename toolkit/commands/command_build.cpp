@@ -260,7 +260,7 @@ Subcommand build_subcommand() {
                   "its switch distances in three.js and Babylon.js (docs/cost.md: Switching levels)"},
                  {"preview-width", "W", "preview image width", image_side_range, "1024"},
                  {"preview-height", "H", "preview image height", image_side_range, "768"},
-                 {"timings", "", "print the time split (boxes, levels, bake, pack, mesh) in seconds"},
+                 {"timings", "", "print the time split (boxes, levels, bake, pack, mesh, preview, write) in seconds"},
                  threads_option(),
              },
              1, 1},

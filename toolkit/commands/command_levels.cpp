@@ -59,7 +59,8 @@ static int run_levels(const Arguments& arguments) {
 
 Subcommand levels_subcommand() {
     std::vector<Option> options = lod_options({"city_lod", "level_mode", "wanted_levels", "budgets", "box_kind", "interpolation"});
-    options[0].help = enum_names(level_modes(), ", ", " or ") + " (required)";  // level_mode comes first
+    for (Option& option : options)
+        if (option.name == "level-mode") option.help = enum_names(level_modes(), ", ", " or ") + " (required)";
     return {{"levels",
              "MODEL",
              "Print every node's level value (level.K = L for node K) and the obtained number of levels.",

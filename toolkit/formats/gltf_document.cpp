@@ -340,8 +340,8 @@ void add_nodes(Writer& w, const Model& model) {
         out.name = node.name;
         for (int child : node.children) out.children.push_back(child + w.node_offset);
         out.extras_json_string = node_extras_json(node);
-        // tinygltf writes a node with no member as null, which no reader takes
-        // (an unnamed, empty OBJ group): such a node is named by its index.
+        // A node with no member at all (an unnamed, empty OBJ group) is named
+        // by its index: glTF readers differ on empty objects, and tinygltf wrote null.
         if (out.name.empty() && out.children.empty() && !node.has_geometry() && out.extras_json_string.empty())
             out.name = "node " + std::to_string(w.gltf.nodes.size());
         std::vector<int> materials;

@@ -20,37 +20,46 @@ void JsonText::open(char bracket, bool object) {
 void JsonText::begin_object() { open('{', true); }
 void JsonText::begin_array() { open('[', false); }
 
-void JsonText::end_object() {
+// Closes the innermost level, which must be of that kind.
+void JsonText::close(bool object) {
+    if (levels_.empty() || levels_.back().object != object) throw std::logic_error("JSON text: nothing of that kind to close");
     levels_.pop_back();
-    text += '}';
+    text += object ? '}' : ']';
 }
 
-void JsonText::end_array() {
-    levels_.pop_back();
-    text += ']';
-}
+void JsonText::end_object() { close(true); }
+void JsonText::end_array() { close(false); }
 
 // Before a value: in an array, the comma before every element but the first
 // (in an object its key wrote it).
 void JsonText::element() {
-    if (levels_.empty() || levels_.back().object) return;
+    if (levels_.empty()) return;
+    if (levels_.back().object) {  // after its key: the key wrote the comma
+        if (text.empty() || text.back() != ':') throw std::logic_error("JSON text: a value without a key in an object");
+        return;
+    }
     if (!levels_.back().empty) text += ',';
     levels_.back().empty = false;
 }
 
 void JsonText::key(std::string_view name) {
+    if (levels_.empty() || !levels_.back().object) throw std::logic_error("JSON text: a key outside an object");
     Level& level = levels_.back();
     if (!level.empty && name <= level.last_key) throw std::logic_error("JSON text: key '" + std::string(name) + "' out of order");
     if (!level.empty) text += ',';
     level.empty = false;
     level.last_key = name;
-    string(name);
+    quoted(name);
     text += ':';
 }
 
 void JsonText::string(std::string_view value) {
-    if (!is_utf8(value)) throw std::logic_error("JSON text: a string that is not UTF-8");
     element();
+    quoted(value);
+}
+
+void JsonText::quoted(std::string_view value) {
+    if (!is_utf8(value)) throw std::logic_error("JSON text: a string that is not UTF-8");
     text += '"';
     for (char c : value) {
         switch (c) {

@@ -35,7 +35,9 @@ private:
     };
     std::vector<Level> levels_;
     void open(char bracket, bool object);
+    void close(bool object);
     void element();
+    void quoted(std::string_view value);  // a string's text, escaped
 };
 
 }  // namespace boxlod

@@ -1,6 +1,6 @@
 // How far the surface a level draws lies from the original's: the geometric
 // error 3D Tiles asks of a tile, in metres (3D Tiles 1.1: Geometric error;
-// tileset.h). Measured, not guessed: each model is rendered orthographically
+// chain/switch_measures.h). Measured, not guessed: each model is rendered orthographically
 // along both directions of each axis of a frame (the object's box), at most
 // `max_side` pixels a side, and the deviation is the largest difference in
 // depth over the pixels both renders cover. A pixel that only one covers is
