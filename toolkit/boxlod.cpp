@@ -34,7 +34,9 @@ std::vector<Level> distinct_levels(Chain& chain, int first, int last) {
 
 }  // namespace
 
-Model read_model(const std::string& path, const std::string& city_lod) { return load_model(path, {.chain_level = 0, .city_lod = city_lod}); }
+Model read_model(const std::string& path, const std::string& city_lod, int chain_level) {
+    return load_model(path, {.chain_level = chain_level, .city_lod = city_lod});
+}
 
 void write_model(const Model& model, const std::string& path) { save_model(model, path); }
 

@@ -6,7 +6,7 @@
 #include "data_gen/grammar_parser.h"
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/model/statistics.h"
 
 #include <charconv>
@@ -68,7 +68,7 @@ int run_generate(const Arguments& arguments) {
     const std::filesystem::path output = arguments.text("output");
     if (output.extension() == ".gltf")
         for (Texture& texture : model.textures) texture.name = output.stem().string() + "_" + texture.name;
-    save_model(model, arguments.text("output"));
+    write_model(model, arguments.text("output"));
     for (KeyValue& entry : model_statistics(model)) report.push_back(std::move(entry));
     print_report(report, arguments);
     return 0;

@@ -10,7 +10,7 @@
 #include "toolkit/metrics/flip.h"
 #include "experiments/city/fly_through.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/lod/parameter_file.h"
 #include "toolkit/selection/strategy_text.h"
 
@@ -140,7 +140,7 @@ int run_city(const Arguments& arguments) {
         for (const char* generated : {"buildings", "designs", "seed"})
             require(!arguments.has(generated), std::string("--") + generated + ": a city read from " +
                                                    arguments.positionals[0] + " has its own buildings");
-        plan = plan_from_model(load_model(arguments.positionals[0], {.chain_level = 0, .city_lod = options.levels.city_lod}));
+        plan = plan_from_model(read_model(arguments.positionals[0], options.levels.city_lod));
     }
     if (built_in) check_city_path(path_name, plan);
     check_memory("boxlod city: a fly-through of " + std::to_string(plan.lots.size()) + " buildings",

@@ -7,7 +7,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/model/material_merge.h"
 #include "toolkit/lod/hybrid/simplification.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/model/statistics.h"
 
 #include <cstdio>
@@ -25,7 +25,7 @@ int run_simplify(const Arguments& arguments) {
     options.lock_border = arguments.has("lock-border");
     options.threads = threads_from(arguments);
 
-    Model model = load_model(arguments.positionals[0]);
+    Model model = read_model(arguments.positionals[0]);
     auto start = Clock::now();
     Model simplified = simplify_model(model, std::size_t(faces), options);
     double seconds = seconds_since(start);
@@ -34,7 +34,7 @@ int run_simplify(const Arguments& arguments) {
         throw InputError("--faces " + std::to_string(faces) + ": simplifying " + arguments.positionals[0] + " to " +
                          std::to_string(faces) + " face(s) keeps no triangle; ask for more");
     if (!arguments.has("keep-materials")) merge_materials(simplified);
-    save_model(simplified, arguments.text("output"));
+    write_model(simplified, arguments.text("output"));
 
     MeshCounts original = mesh_counts(model), result = mesh_counts(simplified);
     KeyValues report = {text_entry("output", arguments.text("output")),

@@ -2,7 +2,7 @@
 
 #include "base/common_options.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/model/statistics.h"
 
 #include <cstdio>
@@ -10,7 +10,7 @@
 namespace boxlod {
 
 static int run_info(const Arguments& arguments) {
-    Model model = load_model(arguments.positionals[0], {.chain_level = 0, .city_lod = city_lod_from(arguments)});
+    Model model = read_model(arguments.positionals[0], city_lod_from(arguments));
     KeyValues statistics = model_statistics(model);
     statistics.push_back(number_entry("lod", model.is_lod));
     print_report(statistics, arguments);

@@ -8,7 +8,7 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/lod_builder.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/lod/parameter_file.h"
 
 #include <cstdio>
@@ -26,7 +26,7 @@ static int run_levels(const Arguments& arguments) {
     const int threads = threads_from(arguments);
 
     const std::string& path = arguments.positionals[0];
-    Model model = load_model(path, {.chain_level = 0, .city_lod = parameters.city_lod});
+    Model model = read_model(path, parameters.city_lod);
     if (model.is_lod) throw InputError(path + ": an LoD exported by boxlod cannot be simplified again");
 
     // Only the box modes and error-greedy look at boxes.

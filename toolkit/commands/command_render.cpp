@@ -6,7 +6,7 @@
 #include "toolkit/commands/render_options.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/formats/model_io.h"
+#include "toolkit/boxlod.h"
 
 #include <cstdio>
 
@@ -20,14 +20,14 @@ static int run_render(const Arguments& arguments) {
     check_distinct_files({{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
                          {{"--output", arguments.text("output")}, {"--coverage", arguments.text("coverage", "")},
                           {"--exr", arguments.text("exr", "")}});
-    Model model = load_model(arguments.positionals[0], {.chain_level = arguments.integer("level"), .city_lod = city_lod_from(arguments)});
+    Model model = read_model(arguments.positionals[0], city_lod_from(arguments), arguments.integer("level"));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
     View view = view_from_arguments(arguments, drawable.bounds);
     Frame frame = make_frame(view.width, view.height, view.background);
     if (arguments.has("split-view")) {
         // The manual's split view: left half this model, right half the other, same camera.
-        Model other_model = load_model(arguments.text("split-view"));
+        Model other_model = read_model(arguments.text("split-view"));
         auto other_drawable = make_drawable_model(other_model);
         const Drawable& other = other_drawable->drawable;
         RenderSettings left = view.settings, right = view.settings;
