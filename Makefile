@@ -5,7 +5,7 @@ DEBUG_BUILD ?= build-debug
 SANITIZE_BUILD ?= build-sanitize
 JOBS  ?= $(shell nproc)
 
-.PHONY: all deps configure build debug-build sanitize-build demo test test-cluster test-sanitize fuzz bench paper paper-smoke clean
+.PHONY: all deps configure build debug-build sanitize-build demo test test-cluster test-sanitize fuzz bench paper paper-smoke format clean
 all: build
 
 deps:
@@ -108,6 +108,10 @@ paper paper-smoke:
 	@mkdir -p out/paper
 	@cp out/workflow/$(PROFILE)/paper/paper.pdf out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf
 	@echo "paper: out/paper/$(if $(filter full,$(PROFILE)),paper,paper-$(PROFILE)).pdf (everything: out/workflow/$(PROFILE)/)"
+
+# The project's layout (.clang-format), which ctest `formatted` checks.
+format: deps
+	@git ls-files '*.cpp' '*.h' | xargs clang-format-14 --style=file -i
 
 clean:
 	rm -rf $(BUILD) $(DEBUG_BUILD) $(SANITIZE_BUILD)

@@ -35,12 +35,6 @@ constexpr std::size_t max_output_name_bytes = 255 - 24;
 // named .exr that holds PNG bytes misleads every reader after it.
 void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions);
 void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
-// Outputs of one command, and the inputs it reads, name different files:
-// throws InputError "PATH: --B names the same file as --A" for the first
-// output of `outputs` ({option, path}, empty paths skipped) that names the
-// file of an earlier entry (of `inputs`, or of `outputs`).
-void check_distinct_files(const std::vector<std::pair<std::string, std::string>>& inputs,
-                          const std::vector<std::pair<std::string, std::string>>& outputs);
 
 // Files that appear together or not at all: inside a group, atomic writes
 // leave their temporaries, and the outermost group's commit() renames them all

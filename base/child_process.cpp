@@ -20,6 +20,7 @@
 #include <new>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace boxlod {
 namespace {
@@ -67,15 +68,18 @@ void limit_address_space(std::size_t extra) {
     try {
         payload = work();
     } catch (const InputError& error) {
-        tag = answer_input_error, payload = error.what();
+        tag = answer_input_error;
+        payload = error.what();
     } catch (const std::bad_alloc&) {
         tag = answer_input_error;
         payload = file + ": reading it would take more than " + std::to_string(limits.extra_address_space >> 20) +
                   " MiB (counts in the file too large?)";
     } catch (const std::exception& error) {
-        tag = answer_other_error, payload = error.what();
+        tag = answer_other_error;
+        payload = error.what();
     } catch (...) {
-        tag = answer_other_error, payload = "unknown exception";
+        tag = answer_other_error;
+        payload = "unknown exception";
     }
     const std::uint64_t size = payload.size();
     write_all(fd, &tag, 1);
@@ -83,6 +87,22 @@ void limit_address_space(std::size_t extra) {
     write_all(fd, payload.data(), payload.size());
     ::close(fd);  // the parent has its answer now, not after this process's memory is torn down
     ::_exit(0);   // no destructors, no atexit handlers, no flushing of the parent's stdio buffers
+}
+
+// All the child writes on `fd` until it closes it; {what was read, whether the deadline passed first}.
+std::pair<std::string, bool> read_answer(int fd, std::chrono::steady_clock::time_point deadline) {
+    std::string answer;
+    for (char buffer[65536];;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        pollfd poll_fd{fd, POLLIN, 0};
+        const int ready = ::poll(&poll_fd, 1, int(std::max<long long>(left.count(), 0)));
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready == 0) return {answer, true};
+        const ssize_t got = ::read(fd, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) return {answer, false};
+        answer.append(buffer, std::size_t(got));
+    }
 }
 
 }  // namespace
@@ -93,7 +113,8 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
     if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
     const pid_t pid = ::fork();
     if (pid < 0) {
-        ::close(fds[0]), ::close(fds[1]);
+        ::close(fds[0]);
+        ::close(fds[1]);
         throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
     }
     if (pid == 0) {
@@ -101,23 +122,9 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
         run_child(fds[1], work, limits, file);
     }
     ::close(fds[1]);
-    std::string answer;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
-    bool timed_out = false;
-    for (char buffer[65536];;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-        pollfd poll_fd{fds[0], POLLIN, 0};
-        const int ready = ::poll(&poll_fd, 1, int(std::max<long long>(left.count(), 0)));
-        if (ready < 0 && errno == EINTR) continue;
-        if (ready == 0) {
-            timed_out = true;
-            break;
-        }
-        const ssize_t got = ::read(fds[0], buffer, sizeof buffer);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) break;
-        answer.append(buffer, std::size_t(got));
-    }
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limits.seconds));
+    auto [answer, timed_out] = read_answer(fds[0], deadline);
     ::close(fds[0]);
     const std::size_t header = 1 + sizeof(std::uint64_t);
     std::uint64_t size = 0;
@@ -157,7 +164,10 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // killed with the reading child (a timeout, boxlod interrupted)
         if (::getppid() != parent) ::_exit(1);  // it died before prctl
         const int null = ::open("/dev/null", O_WRONLY);
-        ::dup2(to_program[0], 0), ::dup2(null, 1), ::dup2(null, 2), ::dup2(from_program[1], 3);
+        ::dup2(to_program[0], 0);
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::dup2(from_program[1], 3);
         for (int fd : {to_program[0], to_program[1], from_program[0], from_program[1], null})
             if (fd > 3) ::close(fd);
         std::vector<char*> argv;
@@ -166,7 +176,8 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
         ::execvp(argv[0], argv.data());
         ::_exit(127);
     }
-    ::close(to_program[0]), ::close(from_program[1]);
+    ::close(to_program[0]);
+    ::close(from_program[1]);
     std::signal(SIGPIPE, SIG_IGN);  // a program that stops reading early: its answer says why
     write_all(to_program[1], input.data(), input.size());
     ::close(to_program[1]);

@@ -39,16 +39,34 @@ const std::string* value_or_default(const Arguments& a, const std::string& name,
     return declared ? &a.defaults.at(name) : nullptr;
 }
 
+// `text` read whole as a number; false if any of it is not.
+template <typename Number>
+bool read_number(const std::string& text, Number& value) {
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+}
+
+// The ranges and defaults a command declares; a default outside its range is the program's error.
+Arguments declared_arguments(const Command& command) {
+    Arguments arguments;
+    for (const Option& o : command.options) {
+        if (o.range) arguments.ranges[o.name] = *o.range;
+        if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
+        double number = 0;
+        if (o.range && !o.default_value.empty() && (!read_number(o.default_value, number) || !o.range->contains(number)))
+            throw std::logic_error("option --" + o.name + ": default " + o.default_value + " outside its range");
+    }
+    return arguments;
+}
+
 }  // namespace
 
 double Arguments::number(const std::string& name, std::optional<double> fallback) const {
     const std::string* text = value_or_default(*this, name, fallback);
     if (!text) return *fallback;
     double value = 0;
-    const std::string& s = *text;
-    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-    if (error != std::errc() || end != s.data() + s.size() || !std::isfinite(value))
-        throw InputError("--" + name + ": expected a number, got '" + s + "'");
+    if (!read_number(*text, value) || !std::isfinite(value))
+        throw InputError("--" + name + ": expected a number, got '" + *text + "'");
     return value;
 }
 
@@ -56,25 +74,13 @@ int Arguments::integer(const std::string& name, std::optional<int> fallback) con
     const std::string* text = value_or_default(*this, name, fallback);
     if (!text) return *fallback;
     int value = 0;
-    const std::string& s = *text;
-    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-    if (error != std::errc() || end != s.data() + s.size())
-        throw InputError("--" + name + ": expected an integer, got '" + s + "'");
+    if (!read_number(*text, value)) throw InputError("--" + name + ": expected an integer, got '" + *text + "'");
     return value;
 }
 
 Arguments parse_arguments(const Command& command, const std::vector<std::string>& words) {
-    Arguments arguments;
+    Arguments arguments = declared_arguments(command);
     std::string prefix = "boxlod " + command.name + ": ";
-    for (const Option& o : command.options) {
-        if (o.range) arguments.ranges[o.name] = *o.range;
-        if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
-        double number = 0;  // a declared default lies in the option's range
-        if (o.range && !o.default_value.empty() &&
-            (std::from_chars(o.default_value.data(), o.default_value.data() + o.default_value.size(), number).ec != std::errc() ||
-             !o.range->contains(number)))
-            throw std::logic_error("option --" + o.name + ": default " + o.default_value + " outside its range");
-    }
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string& word = words[i];
         if (word == "--help" || word == "-h") {
@@ -90,7 +96,10 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
                     if (o.short_name == word[1]) name = o.name;
             std::size_t equals = name.find('=');
             bool inline_value = equals != std::string::npos;
-            if (inline_value) value = name.substr(equals + 1), name = name.substr(0, equals);
+            if (inline_value) {
+                value = name.substr(equals + 1);
+                name = name.substr(0, equals);
+            }
             const Option* option = nullptr;
             for (const Option& o : command.options)
                 if (o.name == name) option = &o;
@@ -103,8 +112,7 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
             }
             if (option->range) {
                 double number = 0;
-                auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), number);
-                if (error != std::errc() || end != value.data() + value.size() || !option->range->contains(number))
+                if (!read_number(value, number) || !option->range->contains(number))
                     throw InputError(prefix + "--" + name + ": " + out_of_range_message(*option->range, value));
             }
             arguments.values[name] = value;

@@ -26,7 +26,10 @@ KeyValue text_entry(std::string key, std::string value) { return {std::move(key)
 
 KeyValue numbers_entry(std::string key, const std::vector<double>& values) {
     std::string text;
-    for (double value : values) text += (text.empty() ? "" : ",") + format_number(value);
+    for (double value : values) {
+        if (!text.empty()) text += ',';
+        text += format_number(value);
+    }
     return text_entry(std::move(key), std::move(text));
 }
 
@@ -46,8 +49,10 @@ namespace {
 std::string json_string(const std::string& s) {
     std::string out = "\"";
     for (unsigned char c : s) {
-        if (c == '"' || c == '\\') out += '\\', out += char(c);
-        else if (c < 0x20) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += char(c);
+        } else if (c < 0x20) {
             char escaped[8];
             std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
             out += escaped;

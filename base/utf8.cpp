@@ -31,7 +31,10 @@ std::string utf8_or_latin1(std::string text) {
     for (const char c : text) {
         const auto byte = std::uint8_t(c);
         if (byte < 0x80) utf8 += c;
-        else utf8 += char(0xC0 | byte >> 6), utf8 += char(0x80 | (byte & 0x3F));
+        else {
+            utf8 += char(0xC0 | byte >> 6);
+            utf8 += char(0x80 | (byte & 0x3F));
+        }
     }
     return utf8;
 }

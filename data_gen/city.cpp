@@ -198,7 +198,8 @@ CityPlan plan_from_model(const Model& city) {
         plan.designs.push_back({});
         plan.given_designs.push_back(std::move(design));
         plan.cell = plan.cell.cwiseMax(Eigen::Vector2f(bounds.size().x(), bounds.size().z()));
-        whole.add(bounds.min), whole.add(bounds.max);
+        whole.add(bounds.min);
+        whole.add(bounds.max);
     }
     plan.options.buildings = int(plan.lots.size());
     plan.size = Eigen::Vector2f(whole.size().x(), whole.size().z());

@@ -3,92 +3,16 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "data_gen/expression.h"
+#include "data_gen/grammar_tokens.h"
 #include "data_gen/materials.h"
 #include "data_gen/primitives.h"
 #include "data_gen/textures.h"
 
-#include <cctype>
-#include <charconv>
 #include <filesystem>
 #include <set>
 
 namespace boxlod {
 namespace {
-
-struct Token {
-    enum class Kind { identifier, number, text, punctuation, end };
-    Kind kind = Kind::end;
-    std::string text;
-    double number = 0;
-    SourcePlace place;
-};
-
-std::string describe(const Token& token) {
-    switch (token.kind) {
-    case Token::Kind::end: return "the end of the file";
-    case Token::Kind::text: return "\"" + token.text + "\"";
-    default: return "'" + token.text + "'";
-    }
-}
-
-// Longest punctuation first, so "-->" is not read as "-" "-" ">".
-const char* const punctuation[] = {"-->", "<=", ">=", "==", "!=", "&&", "||", "(", ")", "{", "}", "[", "]", "|",
-                                   ":",   ",",  "*",  "'",  "~",  "%",  "+",  "-", "/", "<", ">", "=", "!"};
-
-std::vector<Token> tokenize(const std::string& text, const std::string& file) {
-    std::vector<Token> tokens;
-    std::size_t i = 0;
-    SourcePlace place{1, 1};
-    auto advance = [&](std::size_t n) {
-        for (std::size_t k = 0; k < n && i < text.size(); ++k, ++i) {
-            if (text[i] == '\n') place = {place.line + 1, 1};
-            else ++place.column;
-        }
-    };
-    while (i < text.size()) {
-        char c = text[i];
-        if (std::isspace(static_cast<unsigned char>(c))) { advance(1); continue; }
-        if (c == '#' || (c == '/' && i + 1 < text.size() && text[i + 1] == '/')) {
-            while (i < text.size() && text[i] != '\n') advance(1);
-            continue;
-        }
-        Token token;
-        token.place = place;
-        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-            std::size_t end = i;
-            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_' || text[end] == '.')) ++end;
-            token.kind = Token::Kind::identifier;
-            token.text = text.substr(i, end - i);
-            advance(end - i);
-        } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])))) {
-            auto [end, error] = std::from_chars(text.data() + i, text.data() + text.size(), token.number);
-            if (error != std::errc()) throw_grammar_error(file, place, "malformed number");
-            token.kind = Token::Kind::number;
-            token.text = text.substr(i, end - (text.data() + i));
-            advance(token.text.size());
-        } else if (c == '"') {
-            std::size_t end = text.find_first_of("\"\n", i + 1);
-            if (end == std::string::npos || text[end] != '"') throw_grammar_error(file, place, "unterminated string (expected '\"' on the same line)");
-            token.kind = Token::Kind::text;
-            token.text = text.substr(i + 1, end - i - 1);
-            advance(end + 1 - i);
-        } else {
-            for (const char* p : punctuation)
-                if (text.compare(i, std::char_traits<char>::length(p), p) == 0) {
-                    token.text = p;
-                    break;
-                }
-            if (token.text.empty()) throw_grammar_error(file, place, std::string("unexpected character '") + c + "'");
-            token.kind = Token::Kind::punctuation;
-            advance(token.text.size());
-        }
-        tokens.push_back(std::move(token));
-    }
-    Token end;
-    end.place = place;
-    tokens.push_back(end);
-    return tokens;
-}
 
 const std::set<std::string> keywords = {"attr", "case", "else", "NIL"};
 
@@ -408,8 +332,13 @@ private:
                 expect("}");
                 expect("*");
             } else {
-                if (is("'")) take(), entry.size.kind = Size::Kind::relative;
-                else if (is("~")) take(), entry.size.kind = Size::Kind::floating;
+                if (is("'")) {
+                    take();
+                    entry.size.kind = Size::Kind::relative;
+                } else if (is("~")) {
+                    take();
+                    entry.size.kind = Size::Kind::floating;
+                }
                 entry.size.value = parse_expression();
                 expect(":");
                 entry.successor = parse_sequence();

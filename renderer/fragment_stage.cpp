@@ -127,7 +127,10 @@ struct TexturedTriangleLanes : TriangleLanes {
 // A 4x4 transpose: out[i] holds element i of each row.
 void transpose(__m128 r0, __m128 r1, __m128 r2, __m128 r3, FloatLanes* out) {
     _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
-    out[0] = r0, out[1] = r1, out[2] = r2, out[3] = r3;
+    out[0] = r0;
+    out[1] = r1;
+    out[2] = r2;
+    out[3] = r3;
 }
 
 // Three floats at each lane's pointer, read as two and one: no read past a vector's end.
@@ -219,9 +222,13 @@ template <bool reads_uv>
     const DoubleLanes *sx = t.screen_x, *sy = t.screen_y;
     t.area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sy[1] - sy[0]) * (sx[2] - sx[0]);
 
-    for (int k = 0; k < 3; ++k) t.position[k] = gather(from.positions[k]), t.normal[k] = gather(from.normals[k]);
+    for (int k = 0; k < 3; ++k) {
+        t.position[k] = gather(from.positions[k]);
+        t.normal[k] = gather(from.normals[k]);
+    }
     if (t.translated) t.translation = gather(from.translations);
-    t.edge1 = t.position[1] - t.position[0], t.edge2 = t.position[2] - t.position[0];
+    t.edge1 = t.position[1] - t.position[0];
+    t.edge2 = t.position[2] - t.position[0];
     const Vector3Lanes across = cross(t.edge1, t.edge2);
     const FloatLanes length = square_root(dot(across, across));
     t.geometric_normal = select(length > 0, across / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
@@ -277,7 +284,9 @@ template <bool reads_uv>
     for (int j = 0; j < count; ++j)
         if (t.clipped[j]) {
             Eigen::Vector3f s = source_of_clipped(*t.clipped[j], Eigen::Vector3f(b[0][j], b[1][j], b[2][j]));
-            b[0][j] = s[0], b[1][j] = s[1], b[2][j] = s[2];
+            b[0][j] = s[0];
+            b[1][j] = s[1];
+            b[2][j] = s[2];
         }
 }
 
@@ -400,9 +409,13 @@ void shade_each_pixel(const Context& c, const TileTarget& t, ShadedTile& out) {
             const int k = (y - y0) * tile_size + (x - x0);
             std::uint32_t id = t.id[k];
             if (id == no_triangle) continue;
-            if (id != setup_id) set_up_triangle(c, id, setup), setup_id = id;
+            if (id != setup_id) {
+                set_up_triangle(c, id, setup);
+                setup_id = id;
+            }
             ShadedPixel shaded = shade_pixel(c, setup, x, y, reads_uv);
-            out.color[k] = shaded.color, out.normal[k] = shaded.normal;
+            out.color[k] = shaded.color;
+            out.normal[k] = shaded.normal;
         }
 }
 
@@ -449,7 +462,8 @@ void shade_in_lanes(const Context& c, const TileTarget& t, ShadedTile& out) {
                     if (edge_distance(setup, x[j], y) < 0.75f) color = c.settings.wireframe_color;
                 }
                 const int k = (y - y0) * tile_size + (x[j] - x0);
-                shaded_color[k] = color, shaded_normal[k] = lane(shaded.normal, j);
+                shaded_color[k] = color;
+                shaded_normal[k] = lane(shaded.normal, j);
             }
             count = 0;
         };

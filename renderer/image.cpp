@@ -123,8 +123,10 @@ std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size,
     spng_set_option(c, SPNG_IMG_COMPRESSION_LEVEL, png_compression_level);
     spng_set_option(c, SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_NONE);
     spng_ihdr header{};
-    header.width = std::uint32_t(width), header.height = std::uint32_t(height);
-    header.bit_depth = std::uint8_t(bit_depth), header.color_type = color_types[channels - 1];
+    header.width = std::uint32_t(width);
+    header.height = std::uint32_t(height);
+    header.bit_depth = std::uint8_t(bit_depth);
+    header.color_type = color_types[channels - 1];
     int error = spng_set_ihdr(c, &header);
     // SPNG_FMT_PNG: the samples as the PNG holds them, 16-bit ones in host byte order.
     if (!error) error = spng_encode_image(c, pixels, size, SPNG_FMT_PNG, SPNG_ENCODE_FINALIZE);

@@ -37,7 +37,9 @@ inline FloatLanes from_scalars(float a, float b, float c, float d) {
 inline Vector3Lanes broadcast(const Eigen::Vector3f& v) { return {broadcast(v.x()), broadcast(v.y()), broadcast(v.z())}; }
 inline Eigen::Vector3f lane(const Vector3Lanes& v, int j) { return {v.x[j], v.y[j], v.z[j]}; }
 inline void set_lane(Vector3Lanes& v, int j, const Eigen::Vector3f& value) {
-    v.x[j] = value.x(), v.y[j] = value.y(), v.z[j] = value.z();
+    v.x[j] = value.x();
+    v.y[j] = value.y();
+    v.z[j] = value.z();
 }
 inline FloatLanes square_root(FloatLanes v) { return _mm_sqrt_ps(v); }
 inline FloatLanes select(IntLanes mask, FloatLanes a, FloatLanes b) { return mask ? a : b; }

@@ -95,7 +95,12 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     ScreenTriangle& t = out.emplace_back();
     const ProjectedVertex* corner[3] = {&a, &b, &c};
     for (int i = 0; i < 3; ++i)
-        t.x[i] = corner[i]->x, t.y[i] = corner[i]->y, t.z[i] = corner[i]->z, t.inv_w[i] = corner[i]->inv_w;
+        {
+            t.x[i] = corner[i]->x;
+            t.y[i] = corner[i]->y;
+            t.z[i] = corner[i]->z;
+            t.inv_w[i] = corner[i]->inv_w;
+        }
     t.batch = batch;
     t.triangle = triangle;
     return true;
@@ -183,7 +188,12 @@ namespace {
 BarycentricSetup screen_setup(const ScreenTriangle& t) {
     const double s = 1.0 / (1 << subpixel_bits);
     BarycentricSetup b;
-    b.x0 = t.x[0] * s, b.y0 = t.y[0] * s, b.x1 = t.x[1] * s, b.y1 = t.y[1] * s, b.x2 = t.x[2] * s, b.y2 = t.y[2] * s;
+    b.x0 = t.x[0] * s;
+    b.y0 = t.y[0] * s;
+    b.x1 = t.x[1] * s;
+    b.y1 = t.y[1] * s;
+    b.x2 = t.x[2] * s;
+    b.y2 = t.y[2] * s;
     b.area = (b.x1 - b.x0) * (b.y2 - b.y0) - (b.y1 - b.y0) * (b.x2 - b.x0);
     for (int i = 0; i < 3; ++i) b.inv_w[i] = t.inv_w[i];
     return b;
@@ -236,7 +246,8 @@ struct PixelBox {
     const std::int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
     const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits), own_x1 = int((max_x - half) >> subpixel_bits);
-    b.width = max_x - min_x, b.height = max_y - min_y;
+    b.width = max_x - min_x;
+    b.height = max_y - min_y;
     b.x0 = std::max(own_x0, tile.x0);
     b.y0 = std::max<int>(int((min_y - half + one - 1) >> subpixel_bits), tile.y0);
     b.x1 = std::min(own_x1, tile.x1 - 1);
@@ -283,7 +294,11 @@ void edge_setup(const ScreenTriangle& t, const PixelBox& box, EdgeSetup& s) {
     if (area < 0) std::swap(o[1], o[2]), area = -area;
     const std::int64_t X[3] = {t.x[o[0]], t.x[o[1]], t.x[o[2]]}, Y[3] = {t.y[o[0]], t.y[o[1]], t.y[o[2]]};
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
-    s.x0 = box.x0, s.y0 = box.y0, s.x1 = box.x1, s.y1 = box.y1, s.cut_by_tile = box.cut_by_tile;
+    s.x0 = box.x0;
+    s.y0 = box.y0;
+    s.x1 = box.x1;
+    s.y1 = box.y1;
+    s.cut_by_tile = box.cut_by_tile;
     const std::int64_t px = std::int64_t(s.x0) * one + half, py = std::int64_t(s.y0) * one + half;
     for (int k = 0; k < 3; ++k) {
         const int a = (k + 1) % 3, b = (k + 2) % 3;
@@ -373,7 +388,9 @@ void walk_each_centre(const EdgeSetup& s, const TileTarget& tile, OnPixel& on_pi
                 const int i = x - tile.x0;
                 if (z < depth[i]) on_pixel(x, y, z, depth[i], ids[i]);
             }
-            e0 += s.step_x[0], e1 += s.step_x[1], e2 += s.step_x[2];
+            e0 += s.step_x[0];
+            e1 += s.step_x[1];
+            e2 += s.step_x[2];
         }
         for (int k = 0; k < 3; ++k) row[k] += s.step_y[k];
     }
@@ -387,8 +404,12 @@ void walk_each_centre(const EdgeSetup& s, const TileTarget& tile, OnPixel& on_pi
 struct RunBound {
     std::int64_t f, r, m, fb, rb;
     void next_row() {
-        f += fb, r += rb;
-        if (r >= m) r -= m, ++f;
+        f += fb;
+        r += rb;
+        if (r >= m) {
+            r -= m;
+            ++f;
+        }
     }
 };
 
@@ -437,7 +458,8 @@ void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_
                 const int j = __builtin_ctz(unsigned(passed));
                 on_pixel(x + j, y, z[j], depth[j], ids[j]);
             }
-            e0 = e0 + group0, e1 = e1 + group1;
+            e0 = e0 + group0;
+            e1 = e1 + group1;
         }
     }
 }

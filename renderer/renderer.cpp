@@ -118,7 +118,10 @@ void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, co
             Eigen::Vector4f& color = frame.color[pixel];
             color.head<3>() = shaded.color * a + color.head<3>() * (1 - a);
             color.w() += a * (1 - color.w());
-            if (depth < frame.depth[pixel]) frame.depth[pixel] = depth, frame.normal[pixel] = shaded.normal;
+            if (depth < frame.depth[pixel]) {
+                frame.depth[pixel] = depth;
+                frame.normal[pixel] = shaded.normal;
+            }
         });
     }
 }
@@ -166,8 +169,10 @@ void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eige
 TileTarget tile_pixels(const Tiling& tiling, int tile, const Viewport& viewport) {
     int x0 = (tile % tiling.columns) * tile_size, y0 = (tile / tiling.columns) * tile_size;
     int x1 = std::min(x0 + tile_size, viewport.width), y1 = std::min(y0 + tile_size, viewport.height);
-    x0 = std::max(x0, viewport.scissor_x0), y0 = std::max(y0, viewport.scissor_y0);
-    x1 = std::min(x1, viewport.scissor_x1), y1 = std::min(y1, viewport.scissor_y1);
+    x0 = std::max(x0, viewport.scissor_x0);
+    y0 = std::max(y0, viewport.scissor_y0);
+    x1 = std::min(x1, viewport.scissor_x1);
+    y1 = std::min(y1, viewport.scissor_y1);
     return {x0, y0, x1, y1, tile_size, nullptr, nullptr};
 }
 
@@ -226,7 +231,8 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     if (target.x0 >= target.x1 || target.y0 >= target.y1 || !has_triangles(c, tile)) return;
     float depth[tile_size * tile_size];
     std::uint32_t ids[tile_size * tile_size];
-    target.depth = depth, target.id = ids;
+    target.depth = depth;
+    target.id = ids;
     std::vector<std::uint32_t> blended = find_visible(c, tile, target, frame);
     ShadedTile shaded;
     shade_tile(c, target, shaded);
@@ -289,7 +295,10 @@ std::vector<ChunkRanges> project_vertices(const std::vector<Batch>& batches, con
         std::size_t triangles = batches[b].mesh->indices.size() / 3;
         for (std::size_t i = 0; i < triangles; i += triangles_per_chunk) {
             const Range range{b, i, std::min(triangles, i + triangles_per_chunk)};
-            if (filled >= chunk_fill) chunk_ranges.emplace_back(), filled = 0;
+            if (filled >= chunk_fill) {
+                chunk_ranges.emplace_back();
+                filled = 0;
+            }
             chunk_ranges.back().push_back(range);
             filled += range.end - range.begin;
         }

@@ -18,7 +18,8 @@ public:
     float of(const MipTexture& texture) {
         const MipTexture::Level& top = texture.levels[0];
         if (top.width != width_ || top.height != height_) {
-            width_ = top.width, height_ = top.height;
+            width_ = top.width;
+            height_ = top.height;
             level_ = mip_level(texture, fragment_.duv_dx, fragment_.duv_dy);
         }
         return level_;
@@ -221,8 +222,13 @@ private:
             const Surface& lane_surface = *f.surface[j];
             const float lod = mip_level(*lane_surface.color, {f.du_dx[j], f.dv_dx[j]}, {f.du_dy[j], f.dv_dy[j]});
             const auto [color, normal] = sample_both(*lane_surface.color, lod, *lane_surface.normal, lod, {f.u[j], f.v[j]});
-            color_texel.x[j] = color.x(), color_texel.y[j] = color.y(), color_texel.z[j] = color.z(), color_texel.w[j] = color.w();
-            normal_texel.x[j] = normal.x(), normal_texel.y[j] = normal.y(), normal_texel.z[j] = normal.z();
+            color_texel.x[j] = color.x();
+            color_texel.y[j] = color.y();
+            color_texel.z[j] = color.z();
+            color_texel.w[j] = color.w();
+            normal_texel.x[j] = normal.x();
+            normal_texel.y[j] = normal.y();
+            normal_texel.z[j] = normal.z();
         }
     }
 
@@ -294,7 +300,9 @@ protected:
         Eigen::Vector2f uv = f.uv, previous_uv = f.uv;
         float h = sample_surface(height, levels, uv).x(), previous_h = h;
         for (int i = 0; i < steps && h < ray; ++i) {
-            previous_uv = uv, previous_ray = ray, previous_h = h;
+            previous_uv = uv;
+            previous_ray = ray;
+            previous_h = h;
             uv -= step;
             ray -= layer;
             h = sample_surface(height, levels, uv).x();

@@ -54,7 +54,8 @@ void encode(MipTexture::Level& level, TexelFormat format, std::size_t i, const E
 
 MipTexture::Level make_level(TexelFormat format, int width, int height) {
     MipTexture::Level level;
-    level.width = width, level.height = height;
+    level.width = width;
+    level.height = height;
     std::size_t n = std::size_t(width) * height;
     if (format == TexelFormat::unorm16) level.r16.resize(n);
     else if (format == TexelFormat::float32) level.r32.resize(n);
@@ -117,14 +118,21 @@ Footprint footprint(const MipTexture::Level& level, Wrap wrap, Eigen::Vector2f u
     float fx = std::floor(x), fy = std::floor(y);
     int i = int(fx), j = int(fy);
     f.single = false;
-    f.s = x - fx, f.t = y - fy;
+    f.s = x - fx;
+    f.t = y - fy;
     if (i >= 0 && j >= 0 && i + 1 < level.width && j + 1 < level.height) {  // inside: no wrapping (most samples)
-        f.k00 = std::size_t(j) * level.width + i, f.k10 = f.k00 + 1, f.k01 = f.k00 + std::size_t(level.width), f.k11 = f.k01 + 1;
+        f.k00 = std::size_t(j) * level.width + i;
+        f.k10 = f.k00 + 1;
+        f.k01 = f.k00 + std::size_t(level.width);
+        f.k11 = f.k01 + 1;
     } else {  // each coordinate wrapped once, its neighbour from it (a tiled texture's every sample lands here)
         const int i0 = wrap_index(i, level.width, wrap), j0 = wrap_index(j, level.height, wrap);
         const int i1 = wrap_next(i0, i + 1, level.width, wrap), j1 = wrap_next(j0, j + 1, level.height, wrap);
         const std::size_t row0 = std::size_t(j0) * level.width, row1 = std::size_t(j1) * level.width;
-        f.k00 = row0 + i0, f.k10 = row0 + i1, f.k01 = row1 + i0, f.k11 = row1 + i1;
+        f.k00 = row0 + i0;
+        f.k10 = row0 + i1;
+        f.k01 = row1 + i0;
+        f.k11 = row1 + i1;
     }
     return f;
 }
@@ -165,7 +173,10 @@ struct SamplePlan {
     const int fine = int(std::floor(lod));
     plan.level[0] = fine;
     plan.blend = lod - float(fine);
-    if (plan.blend != 0) plan.count = 2, plan.level[1] = fine + 1;
+    if (plan.blend != 0) {
+        plan.count = 2;
+        plan.level[1] = fine + 1;
+    }
 }
 
 SamplePlan plan_sample(const MipTexture& texture, Eigen::Vector2f uv, float lod) {
@@ -201,7 +212,8 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
         IntLanes width{}, height{};
         for (int j = 0; j < count; ++j) {
             const MipTexture::Level& level = texture.levels[std::size_t(plans[j].level[slot])];
-            width[j] = level.width, height[j] = level.height;
+            width[j] = level.width;
+            height[j] = level.height;
         }
         FloatLanes x = u * __builtin_convertvector(width, FloatLanes) - 0.5f;
         FloatLanes y = v * __builtin_convertvector(height, FloatLanes) - 0.5f;
@@ -216,11 +228,16 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
         IntLanes i0, i1, j0, j1, in_lanes = finite;
         auto clamp = [&](IntLanes value, IntLanes last) { return value < 0 ? zero : (last < value ? last : value); };
         if (texture.wrap == Wrap::clamp) {
-            i0 = clamp(i, last_x), i1 = clamp(i + 1, last_x), j0 = clamp(jy, last_y), j1 = clamp(jy + 1, last_y);
+            i0 = clamp(i, last_x);
+            i1 = clamp(i + 1, last_x);
+            j0 = clamp(jy, last_y);
+            j1 = clamp(jy + 1, last_y);
         } else {
             in_lanes &= ((width & last_x) == 0) & ((height & last_y) == 0);
-            i0 = i & last_x, j0 = jy & last_y;
-            i1 = i0 + 1 == width ? zero : i0 + 1, j1 = j0 + 1 == height ? zero : j0 + 1;
+            i0 = i & last_x;
+            j0 = jy & last_y;
+            i1 = i0 + 1 == width ? zero : i0 + 1;
+            j1 = j0 + 1 == height ? zero : j0 + 1;
         }
         for (int j = 0; j < count; ++j) {
             SamplePlan& plan = plans[j];
@@ -231,10 +248,13 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
                 continue;
             }
             f.single = false;
-            f.s = s[j], f.t = t[j];
+            f.s = s[j];
+            f.t = t[j];
             const std::size_t row0 = std::size_t(j0[j]) * std::size_t(width[j]), row1 = std::size_t(j1[j]) * std::size_t(width[j]);
-            f.k00 = row0 + std::size_t(i0[j]), f.k10 = row0 + std::size_t(i1[j]);
-            f.k01 = row1 + std::size_t(i0[j]), f.k11 = row1 + std::size_t(i1[j]);
+            f.k00 = row0 + std::size_t(i0[j]);
+            f.k10 = row0 + std::size_t(i1[j]);
+            f.k01 = row1 + std::size_t(i0[j]);
+            f.k11 = row1 + std::size_t(i1[j]);
         }
     }
 }
@@ -272,8 +292,16 @@ MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap) {
     for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
         const std::uint8_t* p = &image.pixels[i * image.channels];
         std::uint8_t* q = &level.rgba8[i * 4];
-        if (image.channels <= 2) q[0] = q[1] = q[2] = p[0], q[3] = image.channels == 2 ? p[1] : 255;
-        else q[0] = p[0], q[1] = p[1], q[2] = p[2], q[3] = image.channels == 4 ? p[3] : 255;
+        if (image.channels <= 2) {
+            q[0] = q[1] = q[2] = p[0];
+            q[3] = image.channels == 2 ? p[1] : 255;
+        }
+        else {
+            q[0] = p[0];
+            q[1] = p[1];
+            q[2] = p[2];
+            q[3] = image.channels == 4 ? p[3] : 255;
+        }
     }
     texture.levels.push_back(std::move(level));
     build_mips(texture);
@@ -319,8 +347,14 @@ void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLa
     for (int j = 0; j < count; ++j) {
         const SamplePlan& plan = plans[j];
         const Eigen::Vector4f texel_a = sample_planned(a, plan), texel_b = sample_planned(b, plan);
-        from_a.x[j] = texel_a.x(), from_a.y[j] = texel_a.y(), from_a.z[j] = texel_a.z(), from_a.w[j] = texel_a.w();
-        from_b.x[j] = texel_b.x(), from_b.y[j] = texel_b.y(), from_b.z[j] = texel_b.z(), from_b.w[j] = texel_b.w();
+        from_a.x[j] = texel_a.x();
+        from_a.y[j] = texel_a.y();
+        from_a.z[j] = texel_a.z();
+        from_a.w[j] = texel_a.w();
+        from_b.x[j] = texel_b.x();
+        from_b.y[j] = texel_b.y();
+        from_b.z[j] = texel_b.z();
+        from_b.w[j] = texel_b.w();
     }
 }
 

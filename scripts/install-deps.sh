@@ -15,6 +15,8 @@ program_packages=(
 )
 # The tests and benchmarks.
 build_packages=("${program_packages[@]}" libgtest-dev libgmock-dev libbenchmark-dev)
+# The layout test (tests/end_to_end/formatted.sh): this clang-format exactly, as versions lay out differently.
+build_packages+=(clang-format-14)
 # Real data for the tests and the demo: the KIT FZK-Haus (IFC) and the assimp CLI that converts it.
 data_packages=(assimp-utils assimp-testmodels)
 # The SSIM reference test: scikit-image's structural_similarity (reads PNGs through imageio).

@@ -8,7 +8,10 @@ namespace boxlod::test {
 inline void add_quad(Primitive& p, Eigen::Vector3f a, Eigen::Vector3f b, Eigen::Vector3f c, Eigen::Vector3f d) {
     auto base = std::uint32_t(p.positions.size());
     Eigen::Vector3f n = (b - a).cross(d - a).normalized();
-    for (const auto& v : {a, b, c, d}) p.positions.push_back(v), p.normals.push_back(n);
+    for (const auto& v : {a, b, c, d}) {
+        p.positions.push_back(v);
+        p.normals.push_back(n);
+    }
     p.uvs.insert(p.uvs.end(), {{0, 1}, {1, 1}, {1, 0}, {0, 0}});
     p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     ++p.polygon_count;
@@ -41,7 +44,9 @@ inline Model lod_test_building() {
         for (int x = 0; x < 32; ++x) {
             bool mortar = y % 8 == 0 || (x + (y / 8 % 2) * 8) % 16 == 0;
             std::uint8_t* p = bricks.image.at(x, y);
-            p[0] = mortar ? 210 : 170, p[1] = mortar ? 205 : 80, p[2] = mortar ? 200 : 60;
+            p[0] = mortar ? 210 : 170;
+            p[1] = mortar ? 205 : 80;
+            p[2] = mortar ? 200 : 60;
         }
     model.textures.push_back(bricks);
 

@@ -13,7 +13,9 @@ inline Image8 flat_image(int width, int height, std::uint8_t r, std::uint8_t g, 
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             std::uint8_t* p = image.at(x, y);
-            p[0] = r, p[1] = g, p[2] = b;
+            p[0] = r;
+            p[1] = g;
+            p[2] = b;
         }
     return image;
 }

@@ -23,7 +23,9 @@ inline std::unique_ptr<RenderScene> make_render_scene() {
         for (int x = 0; x < n; ++x) {
             std::uint8_t* c = color.at(x, y);
             bool dark = ((x / 8) + (y / 8)) % 2;
-            c[0] = dark ? 60 : 220, c[1] = dark ? 90 : 200, c[2] = dark ? 160 : 120;
+            c[0] = dark ? 60 : 220;
+            c[1] = dark ? 90 : 200;
+            c[2] = dark ? 160 : 120;
             // Hemispherical bumps, one per 16x16 cell: height and its exact normal.
             float u = float(x % 16) - 7.5f, v = float(y % 16) - 7.5f, r2 = (u * u + v * v) / 49.0f;
             float h = r2 < 1 ? std::sqrt(1 - r2) : 0;

@@ -51,7 +51,9 @@ void bm_city_levels(benchmark::State& state) {
     std::size_t packed = 0, unpacked = 0, lods = 0;
     for (auto _ : state) {
         CityLevels levels = build_city_levels(city, options, false);
-        packed = levels.packed_bytes, unpacked = levels.unpacked_bytes, lods = levels.designs.size();
+        packed = levels.packed_bytes;
+        unpacked = levels.unpacked_bytes;
+        lods = levels.designs.size();
     }
     // kIsRate | kInvert: seconds over the count, here per building in ms.
     state.counters["ms per building"] = benchmark::Counter(
@@ -72,7 +74,10 @@ void bm_unpack_levels(benchmark::State& state) {
     for (auto _ : state) {
         count = 0;
         for (const DesignLevels& design : levels.designs)
-            for (const PackedDrawable& level : design.levels) benchmark::DoNotOptimize(unpack_drawable(level)), ++count;
+            for (const PackedDrawable& level : design.levels) {
+                benchmark::DoNotOptimize(unpack_drawable(level));
+                ++count;
+            }
     }
     state.counters["levels"] = double(count);
 }

@@ -69,9 +69,15 @@ void boxlod_png(::benchmark::State& state) {
     std::size_t raw = 0, encoded = 0;
     for (auto _ : state) {
         raw = encoded = 0;
-        for (const Image8* image : pages.images8) raw += image->pixels.size(), encoded += encode_png(*image).size();
+        for (const Image8* image : pages.images8) {
+            raw += image->pixels.size();
+            encoded += encode_png(*image).size();
+        }
         if (state.range(0))
-            for (const Image16* image : pages.images16) raw += image->pixels.size() * 2, encoded += encode_png16(*image).size();
+            for (const Image16* image : pages.images16) {
+                raw += image->pixels.size() * 2;
+                encoded += encode_png16(*image).size();
+            }
     }
     count(state, raw, encoded);
 }
@@ -91,7 +97,8 @@ void stb_png(::benchmark::State& state) {
             unsigned char* png = stbi_write_png_to_mem(image->pixels.data(), image->width * image->channels, image->width,
                                                        image->height, image->channels, &length);
             std::free(png);
-            raw += image->pixels.size(), encoded += std::size_t(length);
+            raw += image->pixels.size();
+            encoded += std::size_t(length);
         }
     }
     count(state, raw, encoded);

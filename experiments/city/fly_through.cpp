@@ -90,7 +90,7 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
     built.bounds = model_bounds(model);
     built.levels.push_back(pack_drawable(model, &cache, maps_drawn(city_render_mode).height));
     MeshCounts original = mesh_counts(model);
-    std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt}};
+    std::vector<SelectionLevel> levels = {{original.faces, std::nullopt, std::nullopt, std::nullopt}};
     built.triangles = {original.triangles};
     built.costs = {cost_parts(model)};
     LodParameters p = options.levels;
@@ -104,7 +104,7 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
         LodSession& session = chain.for_level(c);
         Lod lod = build_lod(session, c, 1);
         MeshCounts counts = mesh_counts(lod.model);
-        levels.push_back({counts.faces, session.derived.sizing, std::nullopt});
+        levels.push_back({counts.faces, session.derived.sizing, std::nullopt, std::nullopt});
         built.triangles.push_back(counts.triangles);
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));
@@ -477,7 +477,10 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
         report.error_seconds += f.error_seconds;
         if (!f.error) continue;
         ++report.sampled_frames;
-        if (std::isfinite(f.error->psnr)) psnr_sum += f.error->psnr, ++finite_psnr;
+        if (std::isfinite(f.error->psnr)) {
+            psnr_sum += f.error->psnr;
+            ++finite_psnr;
+        }
         ssim_sum += f.error->ssim;
         flip_sum += f.error->flip;
     }

@@ -157,9 +157,8 @@ int run_city(const Arguments& arguments) {
     return 0;
 }
 
-}  // namespace
-
-Subcommand city_subcommand() {
+// The city's own options, the LoD parameters a city uses, then those it shares with other commands.
+std::vector<Option> city_options() {
     std::vector<Option> options = {
         {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, "", 'o'},
         {"buildings", "N", "buildings in the city", city_buildings_range, std::to_string(CityOptions{}.buildings)},
@@ -186,7 +185,7 @@ Subcommand city_subcommand() {
         {"ppd", "P", "FLIP's pixels per degree", pixels_per_degree_range, format_number(FlyThroughOptions{}.pixels_per_degree)},
     };
     options = with_options(options, lod_options(city_lod_parameters));
-    options = with_options(options, {
+    return with_options(options, {
         {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1)", NumberRange{1e-2, 1e6},
          format_number(FlyThroughOptions{}.base_distance)},
         {"memory", "MB", "unpacked levels kept between frames, in MiB; levels are kept packed (deflated) and a frame's own "
@@ -194,6 +193,11 @@ Subcommand city_subcommand() {
         threads_option(),
         json_option(),
     });
+}
+
+}  // namespace
+
+Subcommand city_subcommand() {
     return {{"city", "[CITY]",
              "Fly through a city with run-time LoD selection: a generated one, or CITY, a model whose root's children "
              "are its buildings (a CityJSON district's Buildings, a glTF city), without streets. Every building gets its own LoD, built once "
@@ -202,7 +206,7 @@ Subcommand city_subcommand() {
              "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
              "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
              "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
-             options, 0, 1},
+             city_options(), 0, 1},
             run_city};
 }
 

@@ -1,5 +1,6 @@
 #include "base/common_options.h"
 #include "base/atomic_write.h"
+#include "base/distinct_files.h"
 #include "base/key_values.h"
 #include "base/memory_budget.h"
 #include "base/parallel.h"
@@ -80,7 +81,10 @@ int run_compare(const Arguments& arguments) {
     std::vector<Metric> measured_metrics = asked;
     if (arguments.has("heatmap") && heatmap_metric == "flip" && !asks(Metric::flip)) measured_metrics.push_back(Metric::flip);
     MetricPair pair{a, b};
-    if (coverages) pair.reference_coverage = &coverages->first, pair.test_coverage = &coverages->second;
+    if (coverages) {
+        pair.reference_coverage = &coverages->first;
+        pair.test_coverage = &coverages->second;
+    }
     pair.pixels_per_degree = ppd;
     pair.threads = threads;
     MetricValues measured = measure_metrics(measured_metrics, pair);

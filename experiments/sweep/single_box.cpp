@@ -72,7 +72,10 @@ Model single_box_model(const Model& model, int threads) {
         // tangent x bitangent = normal: this order is counter-clockwise seen from outside.
         for (Eigen::Vector3f corner : {Eigen::Vector3f(face.center - t - b), Eigen::Vector3f(face.center + t - b),
                                        Eigen::Vector3f(face.center + t + b), Eigen::Vector3f(face.center - t + b)})
-            quads.positions.push_back(corner), quads.normals.push_back(face.normal);
+            {
+                quads.positions.push_back(corner);
+                quads.normals.push_back(face.normal);
+            }
         quads.indices.insert(quads.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         ++quads.polygon_count;
     }

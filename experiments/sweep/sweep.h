@@ -10,6 +10,7 @@
 // after every finished LoD, so an interrupted sweep keeps what it has.
 #pragma once
 #include "experiments/sweep/sweep_config.h"
+#include "experiments/sweep/sweep_report.h"
 #include "experiments/sweep/sweep_shard.h"
 
 #include <cstdio>
@@ -17,14 +18,6 @@
 #include <vector>
 
 namespace boxlod {
-
-struct SweepReport {
-    std::size_t rows = 0;          // rows of the cross product
-    std::size_t rows_computed = 0;  // rows computed by this run
-    std::size_t rows_skipped = 0;   // rows found in results.csv
-    std::size_t lods_built = 0, lod_renders = 0, original_renders = 0;
-    double boxes_seconds = 0, build_seconds = 0, render_seconds = 0, metric_seconds = 0, total_seconds = 0;
-};
 
 // The columns of results.csv and of timings.csv for a config's metrics.
 std::vector<std::string> result_columns(const SweepConfig& config);

@@ -213,7 +213,10 @@ const std::vector<SweepKey>& sweep_keys() {
         // The manual's program (set_manual, one sizing distance); the keys after it change single settings.
         {"manual", [](SweepConfig& c, const Line& l, Folder) {
              if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false, got '" + l.line.value + "'");
-             if (l.line.value == "true") set_manual(c.lod), c.sizing = SizingRule::nearest;
+             if (l.line.value == "true") {
+                 set_manual(c.lod);
+                 c.sizing = SizingRule::nearest;
+             }
          }},
         {"impostor_directions", [](SweepConfig& c, const Line& l, Folder) {
              c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});

@@ -9,7 +9,7 @@ import subprocess
 import sys
 
 MAX_FILE_LINES, MAX_FUNCTION_LINES = 600, 60
-TABLES = {"viewer_keys"}  # one row per key: a table, not steps
+TABLES = {"viewer_keys", "sweep_keys", "make_declarations"}  # one row per key: a table, not steps
 SOURCES = (".cpp", ".h", ".py")
 
 
@@ -30,6 +30,8 @@ def long_functions(lines):
             if container:
                 stack.append("container")
                 container = None
+            elif in_container and start is None and re.search(r"=\s*$", recent.rsplit("{", 1)[0]):
+                stack.append("block")  # a table's initializer (`... = {`), not a function body
             elif in_container and start is None:
                 head = re.search(r"(~?\w+)\s*\(", recent)
                 start, name = number, head.group(1) if head else "?"

@@ -56,7 +56,10 @@ TEST(Camera, DepthRangeFitsTheSphereFromOutsideAndInside) {
 
 TEST(Camera, ProjectionMapsNearAndFarToTheDepthRange) {
     Camera c;
-    c.position = {0, 0, 0}, c.target = {0, 0, -1}, c.near_plane = 2, c.far_plane = 20;
+    c.position = {0, 0, 0};
+    c.target = {0, 0, -1};
+    c.near_plane = 2;
+    c.far_plane = 20;
     Eigen::Matrix4f m = projection_matrix(c, 1.5f) * view_matrix(c);
     Eigen::Vector4f near = m * Eigen::Vector4f(0, 0, -2, 1), far = m * Eigen::Vector4f(0, 0, -20, 1);
     EXPECT_NEAR(near.z() / near.w(), -1, 1e-6);
@@ -66,7 +69,10 @@ TEST(Camera, ProjectionMapsNearAndFarToTheDepthRange) {
     Eigen::Vector4f edge = m * Eigen::Vector4f(0, top, -2, 1);
     EXPECT_NEAR(edge.y() / edge.w(), 1, 1e-6);
     c.orthographic = true;
-    c.left = -3, c.right = 1, c.bottom = -1, c.top = 2;
+    c.left = -3;
+    c.right = 1;
+    c.bottom = -1;
+    c.top = 2;
     Eigen::Vector4f corner = projection_matrix(c, 1) * view_matrix(c) * Eigen::Vector4f(1, 2, -20, 1);
     EXPECT_NEAR(corner.x(), 1, 1e-6);
     EXPECT_NEAR(corner.y(), 1, 1e-6);
@@ -78,15 +84,21 @@ TEST(Camera, ProjectionMapsNearAndFarToTheDepthRange) {
 // edges, some in, some out, from a perspective and an orthographic camera.
 TEST(Camera, ASphereOutsideTheViewDrawsNothing) {
     Camera camera;
-    camera.position = {0, 0, 0}, camera.target = {0, 0, -1}, camera.fovy_degrees = 60;
-    camera.near_plane = 0.5f, camera.far_plane = 50;
+    camera.position = {0, 0, 0};
+    camera.target = {0, 0, -1};
+    camera.fovy_degrees = 60;
+    camera.near_plane = 0.5f;
+    camera.far_plane = 50;
     EXPECT_TRUE(sphere_in_view(camera, 1.5f, {0, 0, -10}, 1));
     EXPECT_FALSE(sphere_in_view(camera, 1.5f, {0, 0, 10}, 1));     // behind
     EXPECT_FALSE(sphere_in_view(camera, 1.5f, {0, 0, -60}, 1));    // beyond far
     EXPECT_FALSE(sphere_in_view(camera, 1.5f, {100, 0, -10}, 1));  // aside
     Camera orthographic = camera;
     orthographic.orthographic = true;
-    orthographic.left = -4, orthographic.right = 4, orthographic.bottom = -3, orthographic.top = 3;
+    orthographic.left = -4;
+    orthographic.right = 4;
+    orthographic.bottom = -3;
+    orthographic.top = 3;
     int outside = 0, inside = 0;
     for (const Camera& c : {camera, orthographic})
         for (int i = 0; i < 200; ++i) {

@@ -56,7 +56,9 @@ TEST(Rasterizer, FanOverRectangleTouchesEveryPixelExactlyOnce) {
     for (int i = 0; i < 16; ++i) ring.emplace_back(x1, y0 + (y1 - y0) * i / 16);
     for (int i = 0; i < 16; ++i) ring.emplace_back(x1 - (x1 - x0) * i / 16, y1);
     for (int i = 0; i < 16; ++i) ring.emplace_back(x0, y1 - (y1 - y0) * i / 16);
-    ring.emplace_back(20.5, y0), ring.emplace_back(x1, 20.5), ring.emplace_back(40.25, 40.25);  // the diagonal through pixel centres
+    ring.emplace_back(20.5, y0);  // the diagonal through pixel centres
+    ring.emplace_back(x1, 20.5);
+    ring.emplace_back(40.25, 40.25);
     std::sort(ring.begin(), ring.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
         return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
     });
@@ -136,7 +138,8 @@ TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
                 t.x[i] = centre_x + (on_centre ? (next(19) - 9) * 256 + 128 : next(18 * 256) - 9 * 256);
                 t.y[i] = centre_y + (on_centre ? (next(19) - 9) * 256 + 128 : next(18 * 256) - 9 * 256);
             }
-            t.z[i] = float(next(1 << 20)) / 1048573.0f, t.inv_w[i] = 1;  // every mantissa bit used
+            t.z[i] = float(next(1 << 20)) / 1048573.0f;  // every mantissa bit used
+            t.inv_w[i] = 1;
         }
         const std::int64_t area = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
         if (area == 0) continue;
@@ -205,14 +208,18 @@ TEST(Rasterizer, DepthTestIsLess) {
 namespace {
 Viewport viewport(int w, int h) {
     Viewport v;
-    v.width = w, v.height = h;
+    v.width = w;
+    v.height = h;
     return v;
 }
 }  // namespace
 
 TEST(Rasterizer, ClippingAtTheNearPlaneKeepsSourceWeights) {
     Camera camera;
-    camera.position = {0, 0, 0}, camera.target = {0, 0, -1}, camera.near_plane = 1, camera.far_plane = 10;
+    camera.position = {0, 0, 0};
+    camera.target = {0, 0, -1};
+    camera.near_plane = 1;
+    camera.far_plane = 10;
     Eigen::Matrix4f m = projection_matrix(camera, 1) * view_matrix(camera);
     // One vertex behind the camera, two in front.
     Eigen::Vector3f world[3] = {{0, -1, 2}, {-1, -1, -5}, {1, -1, -5}};
@@ -311,7 +318,10 @@ TEST(Rasterizer, InterpolationIsPerspectiveCorrect) {
     // A floor receding from the camera; at each pixel, the barycentrics must
     // match the ray-plane intersection computed in world space.
     Camera camera;
-    camera.position = {0, 1, 0}, camera.target = {0, 0.5f, -3}, camera.near_plane = 0.1f, camera.far_plane = 50;
+    camera.position = {0, 1, 0};
+    camera.target = {0, 0.5f, -3};
+    camera.near_plane = 0.1f;
+    camera.far_plane = 50;
     const int w = 64, h = 48;
     Eigen::Matrix4f view = view_matrix(camera), projection = projection_matrix(camera, float(w) / h);
     Eigen::Vector3f world[3] = {{-4, 0, -1}, {4, 0, -1}, {0, 0, -20}};

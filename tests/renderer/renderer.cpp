@@ -50,8 +50,10 @@ TEST(RendererGolden, WireframeAxesAndSplitView) {
     // Split view: left half untextured, right half parallax.
     Frame split = make_frame(96, 72, {1, 1, 1});
     RenderSettings left = scene->settings, right = scene->settings;
-    left.mode = RenderMode::untextured, left.scissor_x1 = 48;
-    right.mode = RenderMode::parallax, right.scissor_x0 = 48;
+    left.mode = RenderMode::untextured;
+    left.scissor_x1 = 48;
+    right.mode = RenderMode::parallax;
+    right.scissor_x0 = 48;
     render(scene->batches, left, split);
     render(scene->batches, right, split);
     draw_divider(split, 48, {0, 0, 0});
@@ -115,7 +117,9 @@ TEST(Renderer, ATranslatedBatchIsDrawnAndLitWhereItIsPlaced) {
     Frame in_place = render_scene(*scene, settings);
     const Eigen::Vector3f t(37, -5, 112);
     for (Batch& batch : scene->batches) batch.translation = t;
-    settings.camera.position += t, settings.camera.target += t, settings.light.position += t;
+    settings.camera.position += t;
+    settings.camera.target += t;
+    settings.light.position += t;
     Frame moved = render_scene(*scene, settings);
     auto pixels_differing = [&](const Frame& frame) {
         int count = 0;
@@ -146,8 +150,10 @@ TEST(Renderer, TensOfThousandsOfSmallBatchesAreAllDrawn) {
     RenderSettings settings;
     settings.mode = RenderMode::untextured;
     settings.camera.orthographic = true;
-    settings.camera.position = {0, 0, 10}, settings.camera.target = {0, 0, 0};
-    settings.camera.left = settings.camera.bottom = -side / 2.0f, settings.camera.right = settings.camera.top = side / 2.0f;
+    settings.camera.position = {0, 0, 10};
+    settings.camera.target = {0, 0, 0};
+    settings.camera.left = settings.camera.bottom = -side / 2.0f;
+    settings.camera.right = settings.camera.top = side / 2.0f;
     Frame frame = make_frame(side * 4, side * 4, {1, 1, 1});
     render(batches, settings, frame);
     int drawn = 0;
@@ -192,7 +198,10 @@ TEST(Renderer, ARenderOverAnEarlierOneFromItsDepthIsBothInOne) {
 TEST(Renderer, ScissorLeavesOtherPixelsUntouched) {
     auto scene = test::make_render_scene();
     RenderSettings settings = scene->settings;
-    settings.scissor_x0 = 10, settings.scissor_x1 = 20, settings.scissor_y0 = 5, settings.scissor_y1 = 60;
+    settings.scissor_x0 = 10;
+    settings.scissor_x1 = 20;
+    settings.scissor_y0 = 5;
+    settings.scissor_y1 = 60;
     Frame frame = render_scene(*scene, settings);
     int covered = 0;
     for (int y = 0; y < frame.height; ++y)
@@ -212,7 +221,10 @@ TEST(Renderer, CoverageAndDepthMatchTheGeometry) {
     RenderSettings settings = scene->settings;
     settings.camera = camera_at_position({0, 1, 0}, {0, 0, 0}, 10, 30, 5);  // straight down
     settings.camera.orthographic = true;
-    settings.camera.left = -2, settings.camera.right = 2, settings.camera.bottom = -2, settings.camera.top = 2;
+    settings.camera.left = -2;
+    settings.camera.right = 2;
+    settings.camera.bottom = -2;
+    settings.camera.top = 2;
     test::RenderScene& s = *scene;
     std::vector<Batch> floor_only{s.batches[0]};
     Frame frame = make_frame(40, 40, {0, 0, 0});
@@ -238,8 +250,12 @@ RenderSettings alpha_scene_settings() {
     RenderSettings settings;
     settings.mode = RenderMode::albedo;
     settings.camera.orthographic = true;
-    settings.camera.position = {0, 0, 10}, settings.camera.target = {0, 0, 0};
-    settings.camera.left = -1, settings.camera.right = 1, settings.camera.bottom = -1, settings.camera.top = 1;
+    settings.camera.position = {0, 0, 10};
+    settings.camera.target = {0, 0, 0};
+    settings.camera.left = -1;
+    settings.camera.right = 1;
+    settings.camera.bottom = -1;
+    settings.camera.top = 1;
     return settings;
 }
 

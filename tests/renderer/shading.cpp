@@ -131,13 +131,17 @@ TEST(Shading, ColourAndNormalMapsOfDifferentSizesEachGetTheirOwnMipLevel) {
 TEST(Shading, ParallaxOffsetsAreInUvOrInMetresAsTheHeightMapStates) {
     Image8 ramp(64, 64, 4, 255);  // red along u, green along v: the colour says where the lookup landed
     for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) ramp.at(x, y)[0] = std::uint8_t(x * 4), ramp.at(x, y)[1] = std::uint8_t(y * 4);
+        for (int x = 0; x < 64; ++x) {
+            ramp.at(x, y)[0] = std::uint8_t(x * 4);
+            ramp.at(x, y)[1] = std::uint8_t(y * 4);
+        }
     MipTexture color = make_texture(ramp, ColorSpace::linear);
     MipTexture height = make_texture(Image16(4, 4, 1, 16384));  // h = 0.25 everywhere
     Fragment f;
     f.position = {0, 0, 0};
     f.normal = f.geometric_normal = {0, 0, 1};
-    f.tangent = {1, 0, 0}, f.bitangent = {0, 1, 0};
+    f.tangent = {1, 0, 0};
+    f.bitangent = {0, 1, 0};
     f.has_uv = true;
     f.uv = {0.5f, 0.5f};
     const UvGradient gradient{{0.5f, 0, 0}, {0, -0.25f, 0}};  // u = x / 2, v = -y / 4: v runs down the image, the bitangent up

@@ -164,7 +164,11 @@ TEST(Texture, SamplingInLanesEqualsSamplingEachLane) {
                         lod[j] = next() * 7.0f - 1.5f;
                         if (group % 7 == 0) lod[j] = float(int(lod[j]));  // on a level: one level read
                     }
-                    if (group == 1) u[1] = nan, v[2] = inf, lod[3] = nan;
+                    if (group == 1) {
+                        u[1] = nan;
+                        v[2] = inf;
+                        lod[3] = nan;
+                    }
                     const int count = 1 + group % lane_count;
                     Vector4Lanes from_color{}, from_normal{};
                     sample_both(color, normal, u, v, lod, count, from_color, from_normal);

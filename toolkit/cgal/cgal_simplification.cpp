@@ -58,7 +58,11 @@ std::vector<Part> parts_of(const Model& model) {
         for (const Primitive& p : node.primitives) {
             if (p.indices.empty()) continue;
             auto [it, added] = index.try_emplace(p.material, parts.size());
-            if (added) parts.push_back({}), parts.back().material = p.material, welded.emplace_back();
+            if (added) {
+                parts.push_back({});
+                parts.back().material = p.material;
+                welded.emplace_back();
+            }
             Part& part = parts[it->second];
             part.uvs = part.uvs || !p.uvs.empty();
             part.tangents = part.tangents || !p.tangents.empty();

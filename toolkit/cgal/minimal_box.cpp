@@ -137,11 +137,16 @@ Eigen::Matrix3d plane_frame(const std::vector<Eigen::Vector3d>& relative) {
         const Eigen::Vector2d d = edge.normalized(), e(-d.y(), d.x());
         double lo_d = std::numeric_limits<double>::infinity(), hi_d = -lo_d, lo_e = lo_d, hi_e = -lo_d;
         for (const Eigen::Vector2d& p : polygon) {
-            lo_d = std::min(lo_d, p.dot(d)), hi_d = std::max(hi_d, p.dot(d));
-            lo_e = std::min(lo_e, p.dot(e)), hi_e = std::max(hi_e, p.dot(e));
+            lo_d = std::min(lo_d, p.dot(d));
+            hi_d = std::max(hi_d, p.dot(d));
+            lo_e = std::min(lo_e, p.dot(e));
+            hi_e = std::max(hi_e, p.dot(e));
         }
         const double area = (hi_d - lo_d) * (hi_e - lo_e);
-        if (area < best_area) best_area = area, best = d;
+        if (area < best_area) {
+            best_area = area;
+            best = d;
+        }
     }
     const Eigen::Vector3d axis = best.x() * u + best.y() * v;
     Eigen::Matrix3d frame;

@@ -38,7 +38,10 @@ struct ChainCost {
         if (lod.current_level < 1) return;
         levels.push_back(lod.cost);
         if (finest_textured < 0 && !lod.atlas.pages.empty())
-            finest_textured = int(levels.size()) - 1, finest_textured_level = lod.current_level;
+            {
+                finest_textured = int(levels.size()) - 1;
+                finest_textured_level = lod.current_level;
+            }
     }
 };
 
@@ -185,6 +188,15 @@ void check_base_name(const std::string& name) {
                          std::to_string(max_output_name_bytes - 32) + " its files' names leave");
 }
 
+// --timings: the chain's seconds per step.
+void print_timings(const LodTimes& t) {
+    KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
+                    number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
+                    number_entry("time_mesh", t.mesh), number_entry("time_preview", t.preview),
+                    number_entry("time_write", t.write)};
+    std::fputs(format_key_values(times).c_str(), stdout);
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
@@ -226,14 +238,7 @@ int run_build(const Arguments& a) {
         write_levels(a, chain, name, first, last, cost);
     }
     if (all_levels) std::fputs(format_key_values(chain_report(name, cost)).c_str(), stdout);
-    if (a.has("timings")) {
-        LodTimes t = chain.times();
-        KeyValues times{number_entry("time_boxes", t.boxes), number_entry("time_levels", t.levels),
-                        number_entry("time_bake", t.bake), number_entry("time_pack", t.pack),
-                        number_entry("time_mesh", t.mesh), number_entry("time_preview", t.preview),
-                        number_entry("time_write", t.write)};
-        std::fputs(format_key_values(times).c_str(), stdout);
-    }
+    if (a.has("timings")) print_timings(chain.times());
     return 0;
 }
 

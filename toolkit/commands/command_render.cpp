@@ -1,4 +1,5 @@
 #include "base/atomic_write.h"
+#include "base/distinct_files.h"
 #include "base/key_values.h"
 #include "renderer/exr_io.h"
 #include "renderer/overlays.h"

@@ -29,7 +29,8 @@ std::optional<ViewerEvent> translate(const SDL_Event& event) {
     }
     if (event.type == SDL_MOUSEMOTION && (event.motion.state & SDL_BUTTON_LMASK)) {
         e.kind = ViewerEvent::Kind::drag;
-        e.dx = float(event.motion.xrel), e.dy = float(event.motion.yrel);
+        e.dx = float(event.motion.xrel);
+        e.dy = float(event.motion.yrel);
         return e;
     }
     if (event.type == SDL_MOUSEWHEEL) {
@@ -49,7 +50,8 @@ SDL_Event to_sdl(const ViewerEvent& e) {
     } else if (e.kind == ViewerEvent::Kind::drag) {
         event.type = SDL_MOUSEMOTION;
         event.motion.state = SDL_BUTTON_LMASK;
-        event.motion.xrel = int(e.dx), event.motion.yrel = int(e.dy);
+        event.motion.xrel = int(e.dx);
+        event.motion.yrel = int(e.dy);
     } else {
         event.type = SDL_MOUSEWHEEL;
         event.wheel.y = int(e.dy);
@@ -128,7 +130,9 @@ struct Window {
         if (texture) sdl().SDL_DestroyTexture(texture);
         if (renderer) sdl().SDL_DestroyRenderer(renderer);
         if (window) sdl().SDL_DestroyWindow(window);
-        texture = nullptr, renderer = nullptr, window = nullptr;
+        texture = nullptr;
+        renderer = nullptr;
+        window = nullptr;
         sdl().SDL_Quit();
     }
 };
@@ -197,11 +201,13 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
             save_parameters(params_out, p);
             state.message = "saved " + params_out;
         });
-        state.save_parameters = false, redraw = true;
+        state.save_parameters = false;
+        redraw = true;
     }
     if (state.load_parameters) {
         shown([&] { load_session_parameters(state, params_out); });
-        state.load_parameters = false, redraw = true;
+        state.load_parameters = false;
+        redraw = true;
     }
     if (state.export_lod) {
         if (state.lod && state.chain) {
@@ -215,7 +221,8 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
         } else {
             state.message = "nothing to export at level 0";
         }
-        state.export_lod = false, redraw = true;
+        state.export_lod = false;
+        redraw = true;
     }
     return redraw;
 }

@@ -33,7 +33,8 @@ ViewerState make_viewer_state(const Model& model, const LodParameters& parameter
     s.model = &model;
     s.parameters = parameters;
     s.settings = settings;
-    s.width = width, s.height = height;
+    s.width = width;
+    s.height = height;
     s.background = background;
     s.original_drawable = make_drawable_model(model);
     return s;
@@ -67,7 +68,8 @@ bool cycle_lod_parameter(ViewerState& s, const std::string& message) {
 
 bool move(KeyPress& p, const Eigen::Vector3f& direction) {
     Eigen::Vector3f step = direction * (std::max(p.distance, 1e-6f) * 0.05f);
-    p.camera.position += step, p.camera.target += step;
+    p.camera.position += step;
+    p.camera.target += step;
     return true;
 }
 

@@ -95,8 +95,11 @@ PackedDrawable pack_drawable(const Model& model, const TextureCache* shared, boo
     for (const auto& mesh : drawable.meshes) {
         packed.meshes.push_back({mesh->positions.size(), mesh->normals.size(), mesh->uvs.size(), mesh->tangents.size(),
                                  mesh->indices.size()});
-        append(raw, mesh->positions), append(raw, mesh->normals), append(raw, mesh->uvs);
-        append(raw, mesh->tangents), append(raw, mesh->indices);
+        append(raw, mesh->positions);
+        append(raw, mesh->normals);
+        append(raw, mesh->uvs);
+        append(raw, mesh->tangents);
+        append(raw, mesh->indices);
         packed.unpacked_size += mesh_size(packed.meshes.back());
     }
     packed.shared = none;
@@ -111,7 +114,9 @@ PackedDrawable pack_drawable(const Model& model, const TextureCache* shared, boo
         if (texture.image16.empty()) {
             append(raw, texture.image.pixels);
         } else {
-            own.width = texture.image16.width, own.height = texture.image16.height, own.channels = 0;
+            own.width = texture.image16.width;
+            own.height = texture.image16.height;
+            own.channels = 0;
             append(raw, texture.image16.pixels);
         }
         packed.unpacked_size += mip_chain_size(own);
@@ -129,8 +134,10 @@ std::unique_ptr<DrawableModel> unpack_drawable(const PackedDrawable& packed) {
     std::size_t offset = 0;
     for (const PackedDrawable::MeshSizes& sizes : packed.meshes) {
         auto mesh = std::make_unique<Mesh>();
-        take(raw, offset, sizes.positions, mesh->positions), take(raw, offset, sizes.normals, mesh->normals);
-        take(raw, offset, sizes.uvs, mesh->uvs), take(raw, offset, sizes.tangents, mesh->tangents);
+        take(raw, offset, sizes.positions, mesh->positions);
+        take(raw, offset, sizes.normals, mesh->normals);
+        take(raw, offset, sizes.uvs, mesh->uvs);
+        take(raw, offset, sizes.tangents, mesh->tangents);
         take(raw, offset, sizes.indices, mesh->indices);
         drawable.meshes.push_back(std::move(mesh));
     }

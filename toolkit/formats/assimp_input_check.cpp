@@ -142,13 +142,51 @@ struct StepGraph {
     std::vector<std::vector<std::uint32_t>> references, children;
 };
 
+// The number at bytes[at] (0 where there is none); `at` moves past it.
+std::uint64_t number_at(std::string_view bytes, std::size_t& at) {
+    std::uint64_t value = 0;
+    auto [end, error] = std::from_chars(bytes.data() + at, bytes.data() + bytes.size(), value);
+    at = std::size_t(end - bytes.data());
+    return error == std::errc() ? value : std::uint64_t(0);
+}
+
+// Calls reference(id, attribute) for each #id among an instance's attributes, which start at
+// bytes[i] ('(') and end at its ';' (strings skipped; a comma at the top level starts the next
+// attribute). Returns where the instance ends.
+template <typename Reference>
+std::size_t each_reference(std::string_view bytes, std::size_t i, Reference&& reference) {
+    int depth = 0, attribute = 0;
+    for (; i < bytes.size() && bytes[i] != ';'; ++i) {
+        char c = bytes[i];
+        if (c == '\'') {  // a string; '' is a quote inside it
+            for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
+                if (bytes[i] == '\'') ++i;
+        } else if (c == '(') {
+            ++depth;
+        } else if (c == ')') {
+            --depth;
+        } else if (c == ',' && depth == 1) {
+            ++attribute;
+        } else if (c == '#') {
+            std::size_t at = i + 1;
+            reference(number_at(bytes, at), attribute);
+            i = at - 1;
+        }
+    }
+    return i;
+}
+
 // Parses `#N = TYPE(attributes);` instances, strings and comments skipped.
 StepGraph read_step_graph(std::string_view bytes) {
     StepGraph graph;
     std::unordered_map<std::uint64_t, std::uint32_t> index;
     auto node = [&](std::uint64_t id) {
         auto [it, added] = index.emplace(id, std::uint32_t(graph.ids.size()));
-        if (added) graph.ids.push_back(id), graph.references.emplace_back(), graph.children.emplace_back();
+        if (added) {
+            graph.ids.push_back(id);
+            graph.references.emplace_back();
+            graph.children.emplace_back();
+        }
         return it->second;
     };
     struct Relationship { const char* type; int relating, related; };  // attribute positions (IFC2x3 and IFC4)
@@ -157,17 +195,11 @@ StepGraph read_step_graph(std::string_view bytes) {
                                                  {"IFCRELVOIDSELEMENT", 4, 5}, {"IFCRELFILLSELEMENT", 4, 5}};
     std::size_t i = bytes.find("DATA;");
     if (i == std::string_view::npos) return graph;
-    auto number_at = [&](std::size_t& at) {
-        std::uint64_t value = 0;
-        auto [end, error] = std::from_chars(bytes.data() + at, bytes.data() + bytes.size(), value);
-        at = std::size_t(end - bytes.data());
-        return error == std::errc() ? value : std::uint64_t(0);
-    };
     while (i < bytes.size()) {
         std::size_t hash = bytes.find('#', i);
         if (hash == std::string_view::npos) break;
         i = hash + 1;
-        std::uint32_t instance = node(number_at(i));
+        std::uint32_t instance = node(number_at(bytes, i));
         while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '=')) ++i;
         std::size_t type_end = bytes.find('(', i);
         if (type_end == std::string_view::npos) break;
@@ -176,27 +208,12 @@ StepGraph read_step_graph(std::string_view bytes) {
         for (const Relationship& r : relationships)
             if (type == r.type) relationship = &r;
         std::vector<std::uint32_t> relating, related;
-        int depth = 0, attribute = 0;
-        for (i = type_end; i < bytes.size() && bytes[i] != ';'; ++i) {
-            char c = bytes[i];
-            if (c == '\'') {  // a string; '' is a quote inside it
-                for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
-                    if (bytes[i] == '\'') ++i;
-            } else if (c == '(') {
-                ++depth;
-            } else if (c == ')') {
-                --depth;
-            } else if (c == ',' && depth == 1) {
-                ++attribute;
-            } else if (c == '#') {
-                std::size_t at = i + 1;
-                std::uint32_t target = node(number_at(at));
-                i = at - 1;
-                graph.references[instance].push_back(target);
-                if (relationship && attribute == relationship->relating) relating.push_back(target);
-                if (relationship && attribute == relationship->related) related.push_back(target);
-            }
-        }
+        i = each_reference(bytes, type_end, [&](std::uint64_t id, int attribute) {
+            std::uint32_t target = node(id);
+            graph.references[instance].push_back(target);
+            if (relationship && attribute == relationship->relating) relating.push_back(target);
+            if (relationship && attribute == relationship->related) related.push_back(target);
+        });
         for (std::uint32_t parent : relating)
             graph.children[parent].insert(graph.children[parent].end(), related.begin(), related.end());
     }

@@ -102,7 +102,10 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
             for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
                 const aiTexel& t = embedded->pcData[i];
                 std::uint8_t* p = &texture.image.pixels[i * 4];
-                p[0] = t.r, p[1] = t.g, p[2] = t.b, p[3] = t.a;
+                p[0] = t.r;
+                p[1] = t.g;
+                p[2] = t.b;
+                p[3] = t.a;
             }
         }
     } else {

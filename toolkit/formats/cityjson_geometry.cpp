@@ -363,7 +363,10 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
     }
     for (const auto& triangle : triangles.triangles)
         for (std::uint32_t corner : triangle) primitive.indices.push_back(index_of[corner]);
-    if (!triangles.triangles.empty()) ++primitive.polygon_count, ++s.polygons;
+    if (!triangles.triangles.empty()) {
+        ++primitive.polygon_count;
+        ++s.polygons;
+    }
 }
 
 // Down the boundaries to the surfaces (a polygon: an array of rings), the
@@ -460,8 +463,11 @@ CityGeometryReader::~CityGeometryReader() = default;
 
 void CityGeometryReader::start_part(const CityPlace& at, const json& document, const std::vector<Eigen::Vector3d>& vertices) {
     CityReadState& s = *state_;
-    s.document = &document, s.vertices = &vertices;
-    s.uvs.clear(), s.texture_of.clear(), s.material_of.clear();
+    s.document = &document;
+    s.vertices = &vertices;
+    s.uvs.clear();
+    s.texture_of.clear();
+    s.material_of.clear();
     if (auto a = document.find("appearance"); a != document.end() && !a->is_object()) at.fail("'appearance' is not an object");
     if (const json* uvs = s.appearance("vertices-texture")) {
         if (!uvs->is_array()) at.fail("appearance: 'vertices-texture' is not an array");

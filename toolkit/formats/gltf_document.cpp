@@ -281,7 +281,8 @@ int add_material(Writer& w, const Material& material) {
 
 // Each material as its primitives draw it (material_use); drawn both ways, the one without textures follows.
 void add_materials(Writer& w, const Model& model, const MaterialUse& use) {
-    w.materials.clear(), w.untextured_materials.clear();
+    w.materials.clear();
+    w.untextured_materials.clear();
     for (std::size_t m = 0; m < model.materials.size(); ++m) {
         Material untextured = model.materials[m];
         for (const auto& slot : texture_slots(untextured)) *slot.index = -1;
@@ -331,7 +332,10 @@ int written_mesh(const Writer& w, const Node& node, std::uint64_t hash, const st
 void add_nodes(Writer& w, const Model& model) {
     // tinygltf's types copy (not move) when a vector grows: reserve everything up front.
     std::size_t meshes = 0, primitives = 0;
-    for (const Node& node : model.nodes) meshes += node.has_geometry(), primitives += node.primitives.size();
+    for (const Node& node : model.nodes) {
+        meshes += node.has_geometry();
+        primitives += node.primitives.size();
+    }
     w.gltf.nodes.reserve(w.gltf.nodes.size() + model.nodes.size());
     w.gltf.meshes.reserve(w.gltf.meshes.size() + meshes);
     w.gltf.accessors.reserve(w.gltf.accessors.size() + primitives * 5);

@@ -233,12 +233,18 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
         image->image.resize(decoded.pixels.size() * 2);
         for (std::size_t i = 0; i < decoded.pixels.size(); ++i)
             image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff), image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
-        image->width = decoded.width, image->height = decoded.height, image->component = 1, image->bits = 16;
+        image->width = decoded.width;
+        image->height = decoded.height;
+        image->component = 1;
+        image->bits = 16;
         image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
     } else {
         Image8 decoded = decode_image(encoded, name);
         image->image = std::move(decoded.pixels);
-        image->width = decoded.width, image->height = decoded.height, image->component = 4, image->bits = 8;
+        image->width = decoded.width;
+        image->height = decoded.height;
+        image->component = 4;
+        image->bits = 8;
         image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     }
     return true;

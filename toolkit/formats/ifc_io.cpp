@@ -45,7 +45,10 @@ template <typename T>
 std::vector<T> values_at(const Answer& answer, const json& range, std::size_t per_item, const std::string& path) {
     std::size_t offset = 0, count = 0, bytes = 0;
     if (range.is_array() && range.size() == 2 && range[0].is_number_unsigned() && range[1].is_number_unsigned())
-        offset = range[0].get<std::size_t>(), count = range[1].get<std::size_t>();
+        {
+            offset = range[0].get<std::size_t>();
+            count = range[1].get<std::size_t>();
+        }
     if (!checked_multiply(count, per_item * sizeof(T), bytes) || !range_fits(offset, bytes, answer.bytes.size()))
         throw_input_error(path, "", "web-ifc's answer points outside its bytes");
     std::vector<T> out(count * per_item);

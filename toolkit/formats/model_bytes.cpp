@@ -64,6 +64,58 @@ auto& filled(O& optional) {
     return *optional;
 }
 
+// A node's fields, its primitives' with them.
+template <typename Stream, typename N>
+void walk_node(Stream& s, N& node) {
+    s.text(node.name);
+    s.text(node.rule);
+    s.text(node.instance_of);
+    s.text(node.source_id);
+    s.value(node.parent);
+    s.values(node.children);
+    bool scoped = node.scope.has_value();
+    s.value(scoped);
+    if (scoped) {
+        auto& scope = filled(node.scope);
+        s.value(scope.center);
+        s.value(scope.axes);
+        s.value(scope.half_extents);
+    }
+    std::uint64_t count = node.primitives.size();
+    s.value(count);
+    resize_to(node.primitives, count);
+    for (auto& p : node.primitives) {
+        s.values(p.positions);
+        s.values(p.normals);
+        s.values(p.uvs);
+        s.values(p.tangents);
+        s.values(p.indices);
+        s.value(p.polygon_count);
+        s.value(p.material);
+    }
+}
+
+template <typename Stream, typename Mat>
+void walk_material(Stream& s, Mat& m) {
+    s.text(m.name);
+    s.value(m.base_color);
+    s.value(m.base_color_texture);
+    s.value(m.normal_texture);
+    s.value(m.height_texture);
+    s.value(m.height_depth);
+    s.value(m.specular_color);
+    s.value(m.shininess);
+    s.value(m.specular_glossiness);
+    s.value(m.specular_texture);
+    s.value(m.glossiness);
+    bool extension = m.specular_extension.has_value();
+    s.value(extension);
+    if (extension) s.value(filled(m.specular_extension));
+    s.value(m.double_sided);
+    s.value(m.alpha_mode);
+    s.value(m.alpha_cutoff);
+}
+
 // The walk over a model's fields, for a Writer (const model) or a Reader.
 template <typename Stream, typename M>
 void walk(Stream& s, M& model) {
@@ -73,48 +125,31 @@ void walk(Stream& s, M& model) {
     std::uint64_t count = model.lod_params.size();
     s.value(count);
     resize_to(model.lod_params, count);
-    for (auto& [key, value] : model.lod_params) s.text(key), s.text(value);
+    for (auto& [key, value] : model.lod_params) {
+        s.text(key);
+        s.text(value);
+    }
     count = model.nodes.size();
     s.value(count);
     resize_to(model.nodes, count);
-    for (auto& node : model.nodes) {
-        s.text(node.name), s.text(node.rule), s.text(node.instance_of), s.text(node.source_id);
-        s.value(node.parent);
-        s.values(node.children);
-        bool scoped = node.scope.has_value();
-        s.value(scoped);
-        if (scoped) {
-            auto& scope = filled(node.scope);
-            s.value(scope.center), s.value(scope.axes), s.value(scope.half_extents);
-        }
-        count = node.primitives.size();
-        s.value(count);
-        resize_to(node.primitives, count);
-        for (auto& p : node.primitives) {
-            s.values(p.positions), s.values(p.normals), s.values(p.uvs), s.values(p.tangents), s.values(p.indices);
-            s.value(p.polygon_count), s.value(p.material);
-        }
-    }
+    for (auto& node : model.nodes) walk_node(s, node);
     count = model.materials.size();
     s.value(count);
     resize_to(model.materials, count);
-    for (auto& m : model.materials) {
-        s.text(m.name);
-        s.value(m.base_color), s.value(m.base_color_texture), s.value(m.normal_texture), s.value(m.height_texture);
-        s.value(m.height_depth), s.value(m.specular_color), s.value(m.shininess), s.value(m.specular_glossiness);
-        s.value(m.specular_texture), s.value(m.glossiness);
-        bool extension = m.specular_extension.has_value();
-        s.value(extension);
-        if (extension) s.value(filled(m.specular_extension));
-        s.value(m.double_sided), s.value(m.alpha_mode), s.value(m.alpha_cutoff);
-    }
+    for (auto& m : model.materials) walk_material(s, m);
     count = model.textures.size();
     s.value(count);
     resize_to(model.textures, count);
     for (auto& t : model.textures) {
         s.text(t.name);
-        s.value(t.image.width), s.value(t.image.height), s.value(t.image.channels), s.values(t.image.pixels);
-        s.value(t.image16.width), s.value(t.image16.height), s.value(t.image16.channels), s.values(t.image16.pixels);
+        s.value(t.image.width);
+        s.value(t.image.height);
+        s.value(t.image.channels);
+        s.values(t.image.pixels);
+        s.value(t.image16.width);
+        s.value(t.image16.height);
+        s.value(t.image16.channels);
+        s.values(t.image16.pixels);
         s.value(t.wrap);
     }
 }

@@ -60,6 +60,15 @@ Eigen::Vector2f swatch_center(const PackedFace& face, const Packing& packing, co
     return {float(texel.x() + swatch_side / 2) / float(to.page.x()), float(texel.y() + swatch_side / 2) / float(to.page.y())};
 }
 
+// The swatch drawing `color`, added if new; none when the swatches are full (the face keeps its texels).
+std::optional<int> swatch_of(Swatches& swatches, const std::array<std::uint8_t, 4>& color, std::size_t max_swatches) {
+    if (auto known = swatches.index.find(color); known != swatches.index.end()) return known->second;
+    if (swatches.colors.size() >= max_swatches) return std::nullopt;
+    swatches.index.emplace(color, int(swatches.colors.size()));
+    swatches.colors.push_back(color);
+    return int(swatches.colors.size()) - 1;
+}
+
 }  // namespace
 
 void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
@@ -105,18 +114,11 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
             if (region.empty()) continue;
             packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
             packing.face_index[{node, f}] = packing.faces.size();
-            if (auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt) {
-                Swatches& swatches = packing.swatches;
-                auto known = swatches.index.find(*color);
-                if (known == swatches.index.end() && swatches.colors.size() < max_swatches) {
-                    known = swatches.index.emplace(*color, int(swatches.colors.size())).first;
-                    swatches.colors.push_back(*color);
-                }
-                if (known != swatches.index.end()) {  // else the swatches are full: it keeps its texels
-                    packing.faces.push_back({node, f, region, -1, known->second, texels});
-                    ++packing.flat_faces;
-                    continue;
-                }
+            const auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt;
+            if (const auto swatch = color ? swatch_of(packing.swatches, *color, max_swatches) : std::nullopt) {
+                packing.faces.push_back({node, f, region, -1, *swatch, texels});
+                ++packing.flat_faces;
+                continue;
             }
             packing.faces.push_back({node, f, region, int(sizes.size()), -1, texels});
             sizes.emplace_back(region.width, region.height);

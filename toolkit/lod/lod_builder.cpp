@@ -319,7 +319,8 @@ Lod shrink_to_budget(LodSession& session, Lod lod, int threads) {
                 if (!cheapest) throw_input_error(session.input.model->source, "", budget_problem(c, budget, spent));
                 return std::move(*cheapest);  // over its budget, as its statistics say
             }
-            set_level_within(session, c, -1), coarsest = true;
+            set_level_within(session, c, -1);
+            coarsest = true;
         }
         ceiling = std::min(ceiling, estimated_bytes(session, level));
         lod = build_cut(session, c, level_cut(session, c), threads);
@@ -356,9 +357,15 @@ Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
             too_much = ask;
             continue;
         }
-        asked = ask, estimate = estimated_bytes(session, level), spent = spent_bytes(grown);
+        asked = ask;
+        estimate = estimated_bytes(session, level);
+        spent = spent_bytes(grown);
         if (estimated_error(session, level) < kept_error)
-            lod = std::move(grown), kept = level_choice(session, level), kept_error = estimated_error(session, level);
+            {
+                lod = std::move(grown);
+                kept = level_choice(session, level);
+                kept_error = estimated_error(session, level);
+            }
     }
     set_level_choice(session, level, kept);
     return lod;

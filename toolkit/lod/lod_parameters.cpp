@@ -15,7 +15,10 @@ namespace {
 
 ParameterDeclaration named(const char* key, const char* option, const char* value_name, std::string help) {
     ParameterDeclaration d;
-    d.key = key, d.option = option, d.value_name = value_name, d.help = std::move(help);
+    d.key = key;
+    d.option = option;
+    d.value_name = value_name;
+    d.help = std::move(help);
     return d;
 }
 
@@ -24,7 +27,8 @@ template <typename Number>
 ParameterDeclaration number_parameter(const char* key, const char* option, const char* value_name, const char* help,
                                       Number LodParameters::*field, NumberRange range, bool power_of_two = false) {
     ParameterDeclaration d = named(key, option, value_name, help);
-    d.range = range, d.power_of_two = power_of_two;
+    d.range = range;
+    d.power_of_two = power_of_two;
     d.format = [field](const LodParameters& p) {
         if constexpr (std::is_integral_v<Number>) return std::to_string(p.*field);
         else return format_number(p.*field);
@@ -240,7 +244,8 @@ const ParameterDeclaration* find_lod_parameter(const std::string& key) {
 }
 
 void set_manual(LodParameters& p) {
-    p.keep_small_subtrees = false, p.keep_cheaper_subtrees = false;
+    p.keep_small_subtrees = false;
+    p.keep_cheaper_subtrees = false;
     p.min_texture_size = 256;
     p.flat_faces = 0;
     p.level_distances.rule = LevelDistances::Rule::same;

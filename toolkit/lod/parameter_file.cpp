@@ -44,6 +44,26 @@ struct Parser {
     }
 };
 
+using ViewSetter = std::function<void(const Parser&, const std::string&)>;
+
+// The keys of the view a parameter file may state; the LoD parameters are declared in lod_parameters.cpp.
+std::map<std::string, ViewSetter> view_keys(Camera& camera, Light& light) {
+    namespace r = parameter_range;
+    using P = const Parser&;
+    using V = const std::string&;
+    return {
+        {"camera_position", [&](P q, V v) { camera.position = q.vector(v); }},
+        {"camera_target", [&](P q, V v) { camera.target = q.vector(v); }},
+        {"camera_up", [&](P q, V v) { camera.up = q.vector(v); }},
+        {"camera_fovy", [&](P q, V v) { camera.fovy_degrees = q.number(v, r::fovy); }},
+        {"light_position", [&](P q, V v) { light.position = q.vector(v); }},
+        {"light_ambient", [&](P q, V v) { light.ambient = q.number(v, light_intensity_range); }},
+        {"light_diffuse", [&](P q, V v) { light.diffuse = q.number(v, light_intensity_range); }},
+        {"light_specular", [&](P q, V v) { light.specular = q.number(v, light_intensity_range); }},
+        {"light_shininess", [&](P q, V v) { light.shininess = q.number(v, shininess_range); }},
+    };
+}
+
 }  // namespace
 
 KeyValues parameter_entries(const LodParameters& p) {
@@ -76,24 +96,8 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
     LodParameters p;
     Camera camera;
     Light light;
-    bool has_camera = false, has_light = false;
-    namespace r = parameter_range;
-    using Setter = std::function<void(const Parser&, const std::string&)>;
-    auto camera_key = [&](auto apply) -> Setter { return [&, apply](const Parser& q, const std::string& v) { apply(q, v); has_camera = true; }; };
-    auto light_key = [&](auto apply) -> Setter { return [&, apply](const Parser& q, const std::string& v) { apply(q, v); has_light = true; }; };
-    // The view's keys; the LoD parameters are declared in lod_parameters.cpp.
-    const std::map<std::string, Setter> setters = {
-        {"model", [&](const Parser&, const std::string& v) { p.model = v; }},
-        {"camera_position", camera_key([&](const Parser& q, const std::string& v) { camera.position = q.vector(v); })},
-        {"camera_target", camera_key([&](const Parser& q, const std::string& v) { camera.target = q.vector(v); })},
-        {"camera_up", camera_key([&](const Parser& q, const std::string& v) { camera.up = q.vector(v); })},
-        {"camera_fovy", camera_key([&](const Parser& q, const std::string& v) { camera.fovy_degrees = q.number(v, r::fovy); })},
-        {"light_position", light_key([&](const Parser& q, const std::string& v) { light.position = q.vector(v); })},
-        {"light_ambient", light_key([&](const Parser& q, const std::string& v) { light.ambient = q.number(v, light_intensity_range); })},
-        {"light_diffuse", light_key([&](const Parser& q, const std::string& v) { light.diffuse = q.number(v, light_intensity_range); })},
-        {"light_specular", light_key([&](const Parser& q, const std::string& v) { light.specular = q.number(v, light_intensity_range); })},
-        {"light_shininess", light_key([&](const Parser& q, const std::string& v) { light.shininess = q.number(v, shininess_range); })},
-    };
+    bool has_camera = false, has_light = false;  // a view given in part takes the rest from the defaults
+    const std::map<std::string, ViewSetter> setters = view_keys(camera, light);
     for (const KeyValueLine& line : parse_key_value_lines(text, file)) {
         Parser parser{file, line.line, line.key};
         if (line.value.empty()) parser.fail("missing value");
@@ -101,9 +105,14 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
             if (std::string problem = declared->parse(line.value, p); !problem.empty()) parser.fail(problem);
             continue;
         }
+        if (line.key == "model") {
+            p.model = line.value;
+            continue;
+        }
         auto setter = setters.find(line.key);
         if (setter == setters.end()) parser.fail("unknown key");
         setter->second(parser, line.value);
+        (line.key.starts_with("camera_") ? has_camera : has_light) = true;
     }
     if (has_camera) p.camera = camera;
     if (has_light) p.light = light;

@@ -26,9 +26,12 @@ SurfaceViews surface_views(const Model& model, const OrientedBox& frame, int max
             camera.target = frame.center;
             camera.position = frame.center + sign * frame.axes.col(axis).normalized() * (half[axis] + margin);
             camera.up = frame.axes.col(v).normalized();
-            camera.left = -half[u] - pixel, camera.right = half[u] + pixel;
-            camera.bottom = -half[v] - pixel, camera.top = half[v] + pixel;
-            camera.near_plane = 0, camera.far_plane = 2 * (half[axis] + margin);
+            camera.left = -half[u] - pixel;
+            camera.right = half[u] + pixel;
+            camera.bottom = -half[v] - pixel;
+            camera.top = half[v] + pixel;
+            camera.near_plane = 0;
+            camera.far_plane = 2 * (half[axis] + margin);
             const int width = std::max(1, int(std::ceil((camera.right - camera.left) / pixel)));
             const int height = std::max(1, int(std::ceil((camera.top - camera.bottom) / pixel)));
             Frame rendered = make_frame(width, height, {0, 0, 0});

@@ -186,8 +186,10 @@ Kernels flip_kernels(double ppd) {
     if (!(ppd > 0) || !std::isfinite(ppd)) throw std::invalid_argument("flip: pixels per degree must be positive");
     Kernels kernels;
     for (int c = 0; c < 3; ++c) kernels.csf[c] = csf_kernels(csf[c], ppd);
-    kernels.edge_x = feature_kernel(ppd, false, true), kernels.edge_y = feature_kernel(ppd, false, false);
-    kernels.point_x = feature_kernel(ppd, true, true), kernels.point_y = feature_kernel(ppd, true, false);
+    kernels.edge_x = feature_kernel(ppd, false, true);
+    kernels.edge_y = feature_kernel(ppd, false, false);
+    kernels.point_x = feature_kernel(ppd, true, true);
+    kernels.point_y = feature_kernel(ppd, true, false);
     return kernels;
 }
 
@@ -255,12 +257,18 @@ std::vector<std::pair<int, int>> columns_to_compare(const Image8& a, const Image
     for (int y = 0; y < height; ++y) {
         auto& [begin, end] = differing[std::size_t(y)];
         for (int x = 0; x < width; ++x)
-            if (!std::equal(a.at(x, y), a.at(x, y) + 3, b.at(x, y))) begin = std::min(begin, x), end = x + 1;
+            if (!std::equal(a.at(x, y), a.at(x, y) + 3, b.at(x, y))) {
+                begin = std::min(begin, x);
+                end = x + 1;
+            }
     }
     for (int y = 0; y < height; ++y) {
         int begin = width, end = 0;
         for (int z = std::max(0, y - reach); z <= std::min(height - 1, y + reach); ++z)
-            begin = std::min(begin, differing[std::size_t(z)].first), end = std::max(end, differing[std::size_t(z)].second);
+            {
+                begin = std::min(begin, differing[std::size_t(z)].first);
+                end = std::max(end, differing[std::size_t(z)].second);
+            }
         if (begin < end) out[std::size_t(y)] = {std::max(0, begin - reach), std::min(width, end + reach)};
     }
     return out;
@@ -350,7 +358,10 @@ double covered_mean(const Plane& error, const Coverage& reference, const Coverag
     double sum = 0;
     std::size_t covered = 0;
     for (std::size_t i = 0; i < reference.covered.size(); ++i)
-        if (reference.covered[i] || test.covered[i]) sum += error.pixels[i], ++covered;
+        if (reference.covered[i] || test.covered[i]) {
+            sum += error.pixels[i];
+            ++covered;
+        }
     return covered ? sum / double(covered) : 0;
 }
 

@@ -37,7 +37,10 @@ __attribute__((target_clones("avx2", "default"))) void weighted_sum(double* __re
             Vector4 r0, r1, r2, r3;
             std::memcpy(&r0, row, sizeof r0), std::memcpy(&r1, row + 4, sizeof r1);
             std::memcpy(&r2, row + 8, sizeof r2), std::memcpy(&r3, row + 12, sizeof r3);
-            s0 += weight * r0, s1 += weight * r1, s2 += weight * r2, s3 += weight * r3;
+            s0 += weight * r0;
+            s1 += weight * r1;
+            s2 += weight * r2;
+            s3 += weight * r3;
         }
         std::memcpy(out + x, &s0, sizeof s0), std::memcpy(out + x + 4, &s1, sizeof s1);
         std::memcpy(out + x + 8, &s2, sizeof s2), std::memcpy(out + x + 12, &s3, sizeof s3);

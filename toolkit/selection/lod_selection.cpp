@@ -135,7 +135,10 @@ Strategy scale_detail(const Strategy& strategy, double detail) {
     if (auto* s = std::get_if<DistanceBands>(&out)) scale(s->distances, detail);
     if (auto* s = std::get_if<PixelCount>(&out)) scale(s->pixels, 1 / (detail * detail));
     if (auto* s = std::get_if<ScreenRatio>(&out)) scale(s->ratios, 1 / (detail * detail));
-    if (auto* s = std::get_if<BoxDiagonal>(&out)) s->min_pixels /= detail, s->max_pixels /= detail;
+    if (auto* s = std::get_if<BoxDiagonal>(&out)) {
+        s->min_pixels /= detail;
+        s->max_pixels /= detail;
+    }
     if (auto* s = std::get_if<TexelExact>(&out)) s->detail *= detail;
     if (auto* s = std::get_if<MeasuredSwitch>(&out)) s->detail *= detail;
     return out;

@@ -50,6 +50,24 @@ const char* interpolation_text(DiagonalInterpolation interpolation) {
     return "linear";
 }
 
+// diagonal[:MIN,MAX[,INTERPOLATION]], its arguments split at the commas.
+BoxDiagonal parse_diagonal(const std::vector<std::string>& parts, const std::string& where) {
+    BoxDiagonal diagonal;
+    if (parts.empty()) return diagonal;
+    if (parts.size() < 2 || parts.size() > 3)
+        throw_input_error(where, "diagonal", "expected diagonal:MIN,MAX[,linear|square|square-root]");
+    diagonal.min_pixels = parse_number(parts[0], where, "diagonal");
+    diagonal.max_pixels = parse_number(parts[1], where, "diagonal");
+    if (parts.size() == 3) {
+        const std::string& mode = parts[2];
+        if (mode == "linear") diagonal.interpolation = DiagonalInterpolation::linear;
+        else if (mode == "square") diagonal.interpolation = DiagonalInterpolation::square;
+        else if (mode == "square-root") diagonal.interpolation = DiagonalInterpolation::square_root;
+        else throw_input_error(where, "diagonal", "unknown interpolation '" + mode + "' (linear, square, square-root)");
+    }
+    return diagonal;
+}
+
 }  // namespace
 
 Strategy parse_strategy(const std::string& text, const std::string& where) {
@@ -74,21 +92,7 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
     } else if (name == "ratio") {
         strategy = ScreenRatio{thresholds("ratio:0.2,0.05,0.01")};
     } else if (name == "diagonal") {
-        BoxDiagonal diagonal;
-        if (has_arguments) {
-            if (parts.size() < 2 || parts.size() > 3)
-                throw_input_error(where, name, "expected diagonal:MIN,MAX[,linear|square|square-root]");
-            diagonal.min_pixels = parse_number(parts[0], where, name);
-            diagonal.max_pixels = parse_number(parts[1], where, name);
-            if (parts.size() == 3) {
-                const std::string& mode = parts[2];
-                if (mode == "linear") diagonal.interpolation = DiagonalInterpolation::linear;
-                else if (mode == "square") diagonal.interpolation = DiagonalInterpolation::square;
-                else if (mode == "square-root") diagonal.interpolation = DiagonalInterpolation::square_root;
-                else throw_input_error(where, name, "unknown interpolation '" + mode + "' (linear, square, square-root)");
-            }
-        }
-        strategy = diagonal;
+        strategy = parse_diagonal(parts, where);
     } else if (name == "texel") {
         TexelExact texel;
         if (has_arguments) texel.error_budget = one_number("ERROR_BUDGET");

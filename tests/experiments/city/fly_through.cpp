@@ -27,7 +27,8 @@ FlyThroughOptions tiny_frames() {
     FlyThroughOptions options;
     set_manual(options.levels);  // every sub-tree boxed: each level has pages
     options.levels.min_texture_size = 64;
-    options.width = 64, options.height = 48;
+    options.width = 64;
+    options.height = 48;
     options.error_every = 2;
     options.threads = 1;
     return options;

@@ -22,8 +22,10 @@ Frame albedo_view(const Model& model, const Eigen::Vector3f& direction, const Ei
     camera.position = center + direction * (4 * half);
     camera.target = center;
     camera.up = up;
-    camera.left = camera.bottom = -half, camera.right = camera.top = half;
-    camera.near_plane = half, camera.far_plane = 8 * half;
+    camera.left = camera.bottom = -half;
+    camera.right = camera.top = half;
+    camera.near_plane = half;
+    camera.far_plane = 8 * half;
     Frame frame = make_frame(64, 64, {0, 0, 0});
     render(drawable->drawable.batches, settings, frame);
     return frame;
@@ -62,7 +64,8 @@ TEST(Impostor, EachCellIsTheModelSeenFromItsDirection) {
         double difference = 0;
         for (std::size_t p = 0; p < a.color.size(); ++p) {
             bool x = a.color[p].w() > 0, y = b.color[p].w() > 0;
-            both += x && y, either += x || y;
+            both += x && y;
+            either += x || y;
             if (x && y) difference += (a.color[p] - b.color[p]).head<3>().cwiseAbs().sum() / 3;
         }
         ASSERT_GT(both, 200u);

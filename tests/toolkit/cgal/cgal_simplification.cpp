@@ -49,7 +49,8 @@ TEST(CgalSimplification, IsDeterministicAndSharesEqualVertices) {
         for (std::size_t p = 0; p < a.nodes[n].primitives.size(); ++p) {
             EXPECT_EQ(a.nodes[n].primitives[p].positions, b.nodes[n].primitives[p].positions);
             EXPECT_EQ(a.nodes[n].primitives[p].indices, b.nodes[n].primitives[p].indices);
-            vertices += a.nodes[n].primitives[p].positions.size(), corners += a.nodes[n].primitives[p].indices.size();
+            vertices += a.nodes[n].primitives[p].positions.size();
+            corners += a.nodes[n].primitives[p].indices.size();
         }
     EXPECT_LT(vertices, corners);  // coplanar neighbours share their corners
 }

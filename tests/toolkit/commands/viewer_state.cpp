@@ -38,11 +38,14 @@ TEST(ViewerState, KeysCycleModesAndToggleAids) {
     EXPECT_EQ(s.settings.mode, RenderMode::normal);
     EXPECT_TRUE(apply_event(s, key("m")));
     EXPECT_EQ(s.settings.mode, RenderMode::parallax);
-    apply_event(s, key("m")), apply_event(s, key("m"));  // pom, then albedo: every mode render --mode has
+    apply_event(s, key("m"));  // pom,
+    apply_event(s, key("m"));  // then albedo: every mode render --mode has
     EXPECT_EQ(s.settings.mode, RenderMode::albedo);
     apply_event(s, key("m"));
     EXPECT_EQ(s.settings.mode, RenderMode::untextured);
-    apply_event(s, key("f")), apply_event(s, key("x")), apply_event(s, key("v"));
+    apply_event(s, key("f"));
+    apply_event(s, key("x"));
+    apply_event(s, key("v"));
     EXPECT_TRUE(s.settings.wireframe && s.axes && s.split_view);
     EXPECT_FALSE(apply_event(s, key("f12")));
     EXPECT_TRUE(s.screenshot);
@@ -56,13 +59,16 @@ TEST(ViewerState, OrbitKeepsTheDistanceAndTheWheelChangesIt) {
     Camera& c = f.state.settings.camera;
     float distance = (c.position - c.target).norm();
     ViewerEvent drag;
-    drag.kind = ViewerEvent::Kind::drag, drag.dx = 30, drag.dy = -12;
+    drag.kind = ViewerEvent::Kind::drag;
+    drag.dx = 30;
+    drag.dy = -12;
     Eigen::Vector3f before = c.position;
     apply_event(f.state, drag);
     EXPECT_NEAR((c.position - c.target).norm(), distance, distance * 1e-5f);
     EXPECT_GT((c.position - before).norm(), 0.1f);
     ViewerEvent wheel;
-    wheel.kind = ViewerEvent::Kind::wheel, wheel.dy = 1;
+    wheel.kind = ViewerEvent::Kind::wheel;
+    wheel.dy = 1;
     apply_event(f.state, wheel);
     EXPECT_NEAR((c.position - c.target).norm(), distance * 0.9f, distance * 1e-4f);
     Eigen::Vector3f target = c.target;
@@ -76,7 +82,8 @@ TEST(ViewerState, LevelKeysRebuildTheLodWithAutoUpdate) {
     ViewerState& s = f.state;
     Frame original = render_view(s, 2);
     EXPECT_FALSE(s.lod);
-    apply_event(s, key("+")), apply_event(s, key("+"));
+    apply_event(s, key("+"));
+    apply_event(s, key("+"));
     EXPECT_TRUE(s.needs_update);
     Frame lod = render_view(s, 2);
     ASSERT_TRUE(s.lod);
@@ -111,7 +118,8 @@ TEST(ViewerState, LightOptionsAndTheManualsGetSetDistance) {
     EXPECT_FLOAT_EQ(s.parameters.distance, distance);
     EXPECT_TRUE(s.needs_update);
     ViewerEvent wheel;
-    wheel.kind = ViewerEvent::Kind::wheel, wheel.dy = 3;
+    wheel.kind = ViewerEvent::Kind::wheel;
+    wheel.dy = 3;
     apply_event(s, wheel);
     apply_event(s, key("n"));  // Set Distance: back to the sizing distance
     EXPECT_NEAR((c.position - c.target).norm(), distance, distance * 1e-5f);

@@ -237,7 +237,8 @@ TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
     const int brick = model.nodes[1].primitives[0].material;
     ASSERT_TRUE(samples_textures(model.materials[std::size_t(brick)]));
     Primitive bare = model.nodes[1].primitives[0];
-    bare.uvs.clear(), bare.tangents.clear();
+    bare.uvs.clear();
+    bare.tangents.clear();
     model.nodes[1].primitives.push_back(bare);
     save_model(model, (folder / "both.glb").string());
     tinygltf::Model gltf;

@@ -106,7 +106,9 @@ std::map<std::string, Part> parts(const Model& model) {
                 const Eigen::Vector3f &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]], &c = p.positions[p.indices[i + 2]];
                 Part& part = out[global_id(model.nodes[std::size_t(owner)])];
                 part.area += (b - a).cross(c - a).norm() / 2;
-                part.bounds.add(a), part.bounds.add(b), part.bounds.add(c);
+                part.bounds.add(a);
+                part.bounds.add(b);
+                part.bounds.add(c);
             }
     }
     return out;
@@ -136,7 +138,8 @@ TEST(IfcIo, WebIfcAndAssimpReadTheSameParts) {
         EXPECT_LT((other.bounds.min - part.bounds.min - shift).norm(), 1e-3f) << id << " (model shift " << shift.transpose() << ")";
         EXPECT_LT((other.bounds.max - part.bounds.max - shift).norm(), 1e-3f) << id;
         same_area += std::abs(other.area - part.area) <= 0.01 * part.area;
-        area += other.area, their_area += part.area;
+        area += other.area;
+        their_area += part.area;
     }
     EXPECT_GE(same_area, theirs.size() * 8 / 10);
     EXPECT_NEAR(area, their_area, 0.05 * their_area);

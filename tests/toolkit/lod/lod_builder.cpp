@@ -203,7 +203,10 @@ Model recessed_facades() {
     model.materials = {frame, wall};
     Texture ramp{"ramp.png", Image8(16, 16, 4, 255), {}};
     for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 16; ++x) ramp.image.at(x, y)[0] = std::uint8_t(x * 17), ramp.image.at(x, y)[1] = std::uint8_t(y * 17);
+        for (int x = 0; x < 16; ++x) {
+            ramp.image.at(x, y)[0] = std::uint8_t(x * 17);
+            ramp.image.at(x, y)[1] = std::uint8_t(y * 17);
+        }
     model.textures.push_back(ramp);
     for (float x : {0.0f, 3.0f}) {
         const float z = x == 0 ? 0.5f : 0.15f, l = x + 0.5f, r = x + 1.5f;  // the opening: [l, r] x [0.5, 1.5]
@@ -231,7 +234,10 @@ double mean_difference(const Image8& a, const Image8& b, const std::vector<bool>
     double sum = 0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i)
-        if (where[i / 3]) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i])), ++count;
+        if (where[i / 3]) {
+            sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+            ++count;
+        }
     return sum / double(std::max<std::size_t>(count, 1));
 }
 
@@ -253,7 +259,8 @@ TEST(LodBuilder, ParallaxOnPagesShowsTheRecessesBehindTheFaces) {
     auto render_model = [](const Model& m, RenderMode mode) {
         RenderSettings settings;
         settings.mode = mode;
-        settings.camera.position = {5.5f, 1.8f, 3.5f}, settings.camera.target = {2.5f, 1, 0.5f};
+        settings.camera.position = {5.5f, 1.8f, 3.5f};
+        settings.camera.target = {2.5f, 1, 0.5f};
         settings.light.position = {2.5f, 10, 10};
         Frame frame = make_frame(320, 200, {1, 1, 1});
         render(make_drawable_model(m, nullptr, 2)->drawable.batches, settings, frame);
@@ -363,7 +370,10 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
     test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session, 200, 150, 2), "lod_fzk_glass_level2");
     int glass = 0;
     for (Material& material : model.materials)
-        if (material.alpha_mode == AlphaMode::blend) material.alpha_mode = AlphaMode::opaque, ++glass;
+        if (material.alpha_mode == AlphaMode::blend) {
+            material.alpha_mode = AlphaMode::opaque;
+            ++glass;
+        }
     EXPECT_GT(glass, 0);
     auto opaque_session = start_lod(model, p, 2);
     EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels, original.pixels);

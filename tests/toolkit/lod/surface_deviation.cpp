@@ -31,7 +31,8 @@ Model flattened_wall() {
 // The wall's axis-aligned box (its minimal box would lie along the step's diagonal).
 OrientedBox wall_frame() {
     OrientedBox frame;
-    frame.center = {2, 1, 0.5f}, frame.half_extents = {2, 1, 0.5f};
+    frame.center = {2, 1, 0.5f};
+    frame.half_extents = {2, 1, 0.5f};
     return frame;
 }
 
@@ -50,7 +51,11 @@ TEST(SurfaceDeviation, CountsOnlyWhatBothDraw) {
     const Model original = stepped_wall();
     Model wall_only = stepped_wall();
     Primitive& p = wall_only.nodes[1].primitives[0];
-    p.positions.resize(4), p.normals.resize(4), p.uvs.resize(4), p.indices.resize(6), p.polygon_count = 1;
+    p.positions.resize(4);
+    p.normals.resize(4);
+    p.uvs.resize(4);
+    p.indices.resize(6);
+    p.polygon_count = 1;
     const OrientedBox frame = wall_frame();
     EXPECT_EQ(surface_deviation(surface_views(original, frame, 64), surface_views(wall_only, frame, 64)), 0.0);
 }
@@ -62,6 +67,7 @@ TEST(SurfaceDeviation, MeasuresAlongTheFramesAxes) {
     for (Model* model : {&original, &level})
         for (Eigen::Vector3f& v : model->nodes[1].primitives[0].positions) v = turn * v;
     OrientedBox frame = wall_frame();
-    frame.center = turn * frame.center, frame.axes = turn * frame.axes;
+    frame.center = turn * frame.center;
+    frame.axes = turn * frame.axes;
     EXPECT_NEAR(surface_deviation(surface_views(original, frame, 64), surface_views(level, frame, 64)), 1.0, 1e-4);
 }

@@ -35,7 +35,9 @@ Model textured_quad(std::uint8_t alpha) {
     test::add_quad(p, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});  // positions, normals, uvs
     p.material = 0;
     Material material;
-    material.base_color_texture = 0, material.normal_texture = 1, material.height_texture = 2;
+    material.base_color_texture = 0;
+    material.normal_texture = 1;
+    material.height_texture = 2;
     model.materials = {material};
     Texture color{"c.png", Image8(8, 8, 4, 255), {}};
     color.image.pixels[3] = alpha;

@@ -144,15 +144,19 @@ TEST(Model, DrawsTheSameWithTheSamePrimitivesMaterialsAndTexels) {
     a.textures = {Texture{"a_L1_color_0.png", Image8(2, 2, 3), {}, Wrap::clamp}};
     a.materials[0].base_color_texture = 0;
     Model b = a;
-    b.nodes[0].name = "other", b.textures[0].name = "a_L2_color_0.png";
+    b.nodes[0].name = "other";
+    b.textures[0].name = "a_L2_color_0.png";
     add_node(b, 0, "empty");
     EXPECT_TRUE(draws_the_same(a, b));
     b.nodes[1].primitives[0].positions[2].z() = 1e-6f;
     EXPECT_FALSE(draws_the_same(a, b));
-    b = a, b.textures[0].image.pixels[3] = 1;
+    b = a;
+    b.textures[0].image.pixels[3] = 1;
     EXPECT_FALSE(draws_the_same(a, b));
-    b = a, b.materials[0].base_color.x() = 0.5f;
+    b = a;
+    b.materials[0].base_color.x() = 0.5f;
     EXPECT_FALSE(draws_the_same(a, b));
-    b = a, b.nodes[0].primitives = {triangle()};  // one triangle more, on the root
+    b = a;  // one triangle more, on the root
+    b.nodes[0].primitives = {triangle()};
     EXPECT_FALSE(draws_the_same(a, b));
 }

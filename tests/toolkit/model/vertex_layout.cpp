@@ -53,7 +53,8 @@ TEST(VertexLayout, SixteenBitIndicesUpTo65535Vertices) {
 
 TEST(VertexLayout, MeshBytesHandComputed) {
     Material mapped;
-    mapped.base_color_texture = 0, mapped.normal_texture = 1;
+    mapped.base_color_texture = 0;
+    mapped.normal_texture = 1;
     Model model = one_primitive(4, mapped);
     EXPECT_EQ(primitive_mesh_bytes(model.nodes[0].primitives[0], model), 4u * (12 + 12 + 8 + 16) + 3 * 2);
     model = one_primitive(70000, {});

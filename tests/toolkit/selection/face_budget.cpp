@@ -11,7 +11,7 @@ SelectionObject object_at(float x, std::vector<std::size_t> faces) {
     SelectionObject object;
     object.center = {x, 0, 0};
     object.radius = 1;
-    for (std::size_t f : faces) object.levels.push_back(SelectionLevel{f, std::nullopt, std::nullopt});
+    for (std::size_t f : faces) object.levels.push_back(SelectionLevel{f, std::nullopt, std::nullopt, std::nullopt});
     return object;
 }
 
@@ -19,7 +19,8 @@ SelectionView camera_at_origin() {
     SelectionView view;
     view.camera.position = {0, 0, 0};
     view.camera.target = {1, 0, 0};
-    view.width = 640, view.height = 480;
+    view.width = 640;
+    view.height = 480;
     return view;
 }
 

@@ -20,7 +20,8 @@ SelectionView perspective(const Eigen::Vector3f& position, const Eigen::Vector3f
     view.camera.position = position;
     view.camera.target = target;
     view.camera.fovy_degrees = fovy;
-    view.width = width, view.height = height;
+    view.width = width;
+    view.height = height;
     return view;
 }
 
@@ -38,7 +39,9 @@ SelectionObject sphere(float radius, int levels) {
 
 TextureSizing sizing(float distance, float fovy = 45, float resolution = 1080) {
     TextureSizing s;
-    s.distance = distance, s.fovy_degrees = fovy, s.resolution = resolution;
+    s.distance = distance;
+    s.fovy_degrees = fovy;
+    s.resolution = resolution;
     return s;
 }
 
@@ -111,7 +114,10 @@ TEST(LodSelection, OrthographicPixelCountIsTheDiscInWindowPixels) {
     SelectionObject object = sphere(2, 3);
     SelectionView view = on_axis(50, 45, 1600, 1000);
     view.camera.orthographic = true;
-    view.camera.left = -8, view.camera.right = 8, view.camera.bottom = -5, view.camera.top = 5;  // 100 px per unit
+    view.camera.left = -8;  // 100 px per unit
+    view.camera.right = 8;
+    view.camera.bottom = -5;
+    view.camera.top = 5;
     EXPECT_NEAR(sphere_pixel_count(object, view), M_PI * 200 * 200, 1e-6);
     EXPECT_NEAR(strategy_value(ScreenRatio{}, object, view), M_PI * 40000 / 1.6e6, 1e-12);
     // The distance does not matter to an orthographic camera.
@@ -257,8 +263,10 @@ TEST(LodSelection, NoStrategyPicksAFinerLevelAsTheCameraMovesAway) {
             ASSERT_GE(choice.level, previous) << d;
             int selected = select_level(selector, strategy, object, view);
             ASSERT_GE(selected, previous_selected) << d;
-            previous = choice.level, previous_selected = selected;
-            lowest = std::min(lowest, choice.level), highest = std::max(highest, choice.level);
+            previous = choice.level;
+            previous_selected = selected;
+            lowest = std::min(lowest, choice.level);
+            highest = std::max(highest, choice.level);
         }
         EXPECT_EQ(lowest, 0);
         EXPECT_EQ(highest, 4);

@@ -50,7 +50,10 @@ GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional
     auto change = [&](int n) {
         double gain = errors[std::size_t(n)], cost = own_bytes[std::size_t(n)] - box_bytes[std::size_t(n)];
         for (int child : model.nodes[std::size_t(n)].children)
-            if (boxes[std::size_t(child)]) gain -= errors[std::size_t(child)], cost += box_bytes[std::size_t(child)];
+            if (boxes[std::size_t(child)]) {
+                gain -= errors[std::size_t(child)];
+                cost += box_bytes[std::size_t(child)];
+            }
         return std::pair{gain, cost};
     };
     // Best first: openings that save bytes, then the largest gain per byte; ties to the lower index.

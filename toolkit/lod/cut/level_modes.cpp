@@ -100,7 +100,10 @@ LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_level
     std::vector<int> boxed;
     std::vector<double> v;
     for (std::size_t i = 0; i < boxes.size(); ++i)
-        if (boxes[i]) boxed.push_back(int(i)), v.push_back(box_value(mode, *boxes[i]));
+        if (boxes[i]) {
+            boxed.push_back(int(i));
+            v.push_back(box_value(mode, *boxes[i]));
+        }
     std::vector<double> w = interpolated(v, interpolation);
     double lo = 0, hi = 0;
     if (interpolation == Interpolation::rank) {

@@ -45,8 +45,14 @@ int sampled_face(const std::array<OrientedBoxFace, 6>& faces, const std::array<c
         const float mismatch = depth_mismatch(faces[std::size_t(f)], face_bake, centroid);
         const float texel = 2 * faces[std::size_t(f)].half_width / float(face_bake.color.width);
         const float tolerance = std::max(3 * texel, 0.2f * faces[std::size_t(f)].half_depth);
-        if (mismatch <= tolerance && facing > best_facing) matching = f, best_facing = facing;
-        if (nearest < 0 || mismatch < least_mismatch) nearest = f, least_mismatch = mismatch;
+        if (mismatch <= tolerance && facing > best_facing) {
+            matching = f;
+            best_facing = facing;
+        }
+        if (nearest < 0 || mismatch < least_mismatch) {
+            nearest = f;
+            least_mismatch = mismatch;
+        }
     }
     return matching >= 0 ? matching : nearest;
 }

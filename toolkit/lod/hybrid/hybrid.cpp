@@ -3,6 +3,7 @@
 #include "base/parallel.h"
 #include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/hybrid/baked_proxy.h"
+#include "toolkit/lod/hybrid/hybrid_measuring.h"
 #include "toolkit/lod/hybrid/hybrid_order.h"
 #include "toolkit/lod/hybrid/proxy_drawables.h"
 #include "toolkit/model/framing.h"
@@ -57,14 +58,6 @@ constexpr std::array<double, 4> baked_shares = {1, 0.25, 1.0 / 16, 1.0 / 64};
 constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
 constexpr double coarser_box_most_bytes = 0.75;
 
-// Where a sub-tree is measured: its bounding sphere seen orthographically from
-// the measuring corners, `side` pixels of `pixel` metres a side.
-struct MeasuringView {
-    Framing sphere;
-    float pixel = 1;
-    int side = 1;
-};
-
 MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
     MeasuringView view;
     view.sphere = framing_of(bounds);
@@ -73,13 +66,6 @@ MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& setting
     view.side = std::clamp(int(std::ceil(diameter / view.pixel)), 1, settings.max_side);
     return view;
 }
-
-// Measured from the 4 corners of a cube that make a regular tetrahedron (bit k
-// of a corner: + along axis k): every direction within 71 degrees of one, at
-// half the time of all 8 corners for the same choices in the sweeps
-// (docs/cost.md: The hybrid level mode).
-constexpr std::array<int, 4> measuring_corners = {0, 3, 5, 6};
-constexpr int measuring_directions = int(measuring_corners.size());
 
 // A sub-tree simplified to one of simplified_shares, and the error sums it
 // was measured with, per measuring view.
@@ -121,88 +107,6 @@ std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model)
 }
 
 namespace {
-
-// Each view rendered at twice the side and averaged over 2 x 2 pixels: without
-// it, detail near the pixel's size aliases differently in the sub-tree and in
-// a texture baked from it, and the error measures the aliasing.
-constexpr int supersampling = 2;
-
-void downsample(Frame& frame) {
-    const int w = frame.width / supersampling, h = frame.height / supersampling;
-    std::vector<Eigen::Vector4f> color(std::size_t(w) * std::size_t(h), Eigen::Vector4f::Zero());
-    for (int y = 0; y < frame.height; ++y)
-        for (int x = 0; x < frame.width; ++x)
-            color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
-                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / float(supersampling * supersampling);
-    frame.width = w, frame.height = h, frame.color = std::move(color);
-    frame.depth.clear(), frame.normal.clear();
-}
-
-// The measuring renders of `batches`, from every direction. Over `underlay`
-// (full-size renders of what every candidate is drawn among) when given, from
-// its depth: the picture of the underlay's batches and these in one render.
-std::vector<Frame> render_views(const std::vector<Batch>& batches, const MeasuringView& view, RenderMode mode,
-                                const std::vector<Frame>* underlay = nullptr, bool downsampled = true) {
-    std::vector<Frame> frames;
-    const float r = view.sphere.radius, half = view.pixel * float(view.side) / 2;
-    for (int k = 0; k < measuring_directions; ++k) {
-        const int corner = measuring_corners[std::size_t(k)];
-        const Eigen::Vector3f direction =
-            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
-        RenderSettings settings;
-        settings.mode = mode;
-        settings.threads = 1;  // nodes are measured in parallel
-        settings.depth_from_frame = underlay != nullptr;
-        Camera& camera = settings.camera;
-        camera.orthographic = true;
-        camera.position = view.sphere.center + direction * (2 * r);
-        camera.target = view.sphere.center;
-        camera.left = camera.bottom = -half, camera.right = camera.top = half;
-        camera.near_plane = r * 0.5f, camera.far_plane = r * 3.5f;
-        settings.light = light_for_camera(camera);
-        frames.push_back(underlay ? (*underlay)[std::size_t(k)]
-                                  : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
-        render(batches, settings, frames.back());
-        if (downsampled) downsample(frames.back());
-    }
-    return frames;
-}
-
-// A measuring pixel as hybrid_pixel_error compares it: its coverage and its
-// colour in sRGB bytes, converted once per render rather than per comparison.
-struct ComparedPixel {
-    float coverage = 0;
-    std::array<int, 3> srgb{};
-};
-
-ComparedPixel compared_pixel(const Eigen::Vector4f& linear) {
-    return {std::clamp(linear.w(), 0.0f, 1.0f), {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
-}
-
-double compared_pixel_error(const ComparedPixel& a, const ComparedPixel& b) {
-    double colour = 0;
-    for (int c = 0; c < 3; ++c) colour += std::abs(a.srgb[std::size_t(c)] - b.srgb[std::size_t(c)]);
-    return double(std::abs(a.coverage - b.coverage)) + double(std::min(a.coverage, b.coverage)) * colour / (3 * 255.0);
-}
-
-// Every direction's pixels, as compared.
-std::vector<std::vector<ComparedPixel>> compared_views(const std::vector<Frame>& frames) {
-    std::vector<std::vector<ComparedPixel>> views;
-    for (const Frame& frame : frames) {
-        views.emplace_back();
-        views.back().reserve(frame.color.size());
-        for (const Eigen::Vector4f& c : frame.color) views.back().push_back(compared_pixel(c));
-    }
-    return views;
-}
-
-// The measuring pixels' errors summed over every direction.
-double pixel_error_sum(const std::vector<std::vector<ComparedPixel>>& original, const std::vector<std::vector<ComparedPixel>>& proxy) {
-    double sum = 0;
-    for (std::size_t v = 0; v < original.size(); ++v)
-        for (std::size_t i = 0; i < original[v].size(); ++i) sum += compared_pixel_error(original[v][i], proxy[v][i]);
-    return sum;
-}
 
 // Pixels of the sizing view that differ: the measuring pixels' errors, each
 // weighing (measuring pixel / sizing pixel)^2, mean over the directions.
@@ -301,6 +205,28 @@ std::vector<const Primitive*> sibling_primitives(const Model& model, int n, cons
 // Baked proxies are offered where asked for and the levels are textured (they draw their box's pages).
 bool baked_wanted(const HybridSettings& settings) { return settings.baked_proxies && settings.mode != RenderMode::untextured; }
 
+// What a node's candidates are drawn among: the rest of the model near it, in its materials' base
+// colours, untextured: it only hides and is hidden, the same in every render. Its opaque part is
+// rendered once per direction (`underlay`) and each candidate over it from its depth (renderer.h:
+// depth_from_frame), its blended part with each candidate: the pictures of one render of the
+// context and the candidate, at a fraction of the cost.
+struct MeasuringContext {
+    Drawable drawable;           // owns the meshes `blended` points into
+    std::vector<Batch> blended;
+    std::vector<Frame> underlay;
+};
+
+MeasuringContext measuring_context(const Model& model, int n, const MeasuringView& view, RenderMode mode) {
+    std::vector<Material> plain = model.materials;
+    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
+    MeasuringContext context{make_drawable(plain, DecodedTextures{}, sibling_primitives(model, n, view)), {}, {}};
+    std::vector<Batch> opaque;
+    for (const Batch& batch : context.drawable.batches)
+        (batch.surface.alpha_mode == AlphaMode::blend ? context.blended : opaque).push_back(batch);
+    context.underlay = render_views(opaque, view, mode, nullptr, false);
+    return context;
+}
+
 // The error sums of node n's box at each of `box_texels` and of its
 // simplified sub-trees in `view`, rendered among their siblings, but those
 // `measurement` holds for this view.
@@ -308,32 +234,23 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
                         const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles, const Drawable& subtree,
                         const MeasuringView& view, const HybridSettings& settings, NodeMeasurement& measurement) {
     if (measurement.pixel != view.pixel || measurement.side != view.side) {
-        measurement.box_sums.clear(), measurement.baked_sums.clear(), measurement.simplified_sums.clear();
+        measurement.box_sums.clear();
+        measurement.baked_sums.clear();
+        measurement.simplified_sums.clear();
         measurement.simplified_measured = false;
-        measurement.pixel = view.pixel, measurement.side = view.side;
+        measurement.pixel = view.pixel;
+        measurement.side = view.side;
     }
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
         if (!measurement.box_sums.count(texels.size) || (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
             missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
-    const std::vector<const Primitive*> others = sibling_primitives(model, n, view);
-    // Drawn in its materials' base colours, untextured: it only hides and is
-    // hidden, the same in every render. Its opaque part is rendered once per
-    // direction and each candidate over it from its depth (renderer.h:
-    // depth_from_frame), its blended part with each candidate: the pictures of
-    // one render of the context and the candidate, at a fraction of the cost.
-    std::vector<Material> plain = model.materials;
-    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
-    const Drawable context = make_drawable(plain, DecodedTextures{}, others);
-    std::vector<Batch> opaque_context, blended_context;
-    for (const Batch& batch : context.batches)
-        (batch.surface.alpha_mode == AlphaMode::blend ? blended_context : opaque_context).push_back(batch);
-    const std::vector<Frame> underlay = render_views(opaque_context, view, settings.mode, nullptr, false);
+    const MeasuringContext context = measuring_context(model, n, view, settings.mode);
     auto among_context = [&](const Drawable& d) {
-        std::vector<Batch> batches = blended_context;
+        std::vector<Batch> batches = context.blended;
         batches.insert(batches.end(), d.batches.begin(), d.batches.end());
-        return compared_views(render_views(batches, view, settings.mode, &underlay));
+        return compared_views(render_views(batches, view, settings.mode, &context.underlay));
     };
     const auto original = among_context(subtree);
     const std::vector<SimplifiedSubtree>& simplified_list = simplified_subtrees(model, n, subtree_triangles, measurement);
@@ -450,10 +367,6 @@ std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridSte
 
 }  // namespace
 
-double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b) {
-    return compared_pixel_error(compared_pixel(a), compared_pixel(b));
-}
-
 HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
                        const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings) {
     HybridPlan plan;
@@ -486,7 +399,9 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
 }
 
 void order_hybrid_plan(const Model& model, HybridPlan& plan) {
-    plan.steps.clear(), plan.bytes.clear(), plan.error.clear();
+    plan.steps.clear();
+    plan.bytes.clear();
+    plan.error.clear();
     order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes, plan.error);
 }
 

@@ -59,11 +59,6 @@ struct HybridSettings {
     bool baked_proxies = false;  // also each sub-tree's baked proxies (textured modes; baked_proxy.h)
 };
 
-// The error of one pixel between two renders of the same view, in [0, 2]:
-// the coverage that differs, plus, where both cover, the mean absolute sRGB
-// difference of the colours, weighed by the coverage they share.
-double hybrid_pixel_error(const Eigen::Vector4f& a, const Eigen::Vector4f& b);
-
 // Measures every proxy and plans. `boxes` as node_boxes gives them; `textures`
 // the model's, decoded (unused when the mode is untextured).
 HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,

@@ -114,7 +114,10 @@ private:
             move.cost += proxies_[std::size_t(n)][std::size_t(proxy)].bytes;
         } else {
             move.cost += own_bytes_[std::size_t(n)];
-            for (int child : model_.nodes[std::size_t(n)].children) move.gain -= drawn_error(child), move.cost += drawn_bytes(child);
+            for (int child : model_.nodes[std::size_t(n)].children) {
+                move.gain -= drawn_error(child);
+                move.cost += drawn_bytes(child);
+            }
         }
         move.cost += drawn_.change(drawn_textures(n), added_textures(n, proxy));
         return move;

@@ -146,7 +146,10 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
         parallel_for(groups.size(), options.threads, [&](std::size_t g) {
             if (done[g] || (round > 0 && budget[g] == achieved[g])) return;
             Primitive mesh = simplify_mesh(welded[g], budget[g], options);
-            if (round == 0 || mesh.triangle_count() > achieved[g]) groups[g] = std::move(mesh), achieved[g] = groups[g].triangle_count();
+            if (round == 0 || mesh.triangle_count() > achieved[g]) {
+                groups[g] = std::move(mesh);
+                achieved[g] = groups[g].triangle_count();
+            }
             else stuck[g] = true;
         });
         std::size_t sum = std::accumulate(achieved.begin(), achieved.end(), std::size_t(0));

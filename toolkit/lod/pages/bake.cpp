@@ -67,6 +67,24 @@ void dilate_colors(Image8& color) {
     }
 }
 
+namespace {
+
+// The smallest rectangle holding every covered texel (alpha > 0); empty where none is.
+TexelRect covered_rect(const Image8& color) {
+    int x0 = color.width, y0 = color.height, x1 = 0, y1 = 0;
+    for (int y = 0; y < color.height; ++y)
+        for (int x = 0; x < color.width; ++x)
+            if (color.at(x, y)[3]) {
+                x0 = std::min(x0, x);
+                y0 = std::min(y0, y);
+                x1 = std::max(x1, x + 1);
+                y1 = std::max(y1, y + 1);
+            }
+    return x1 > x0 ? TexelRect{x0, y0, x1 - x0, y1 - y0} : TexelRect{};
+}
+
+}  // namespace
+
 BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads) {
     // Near and far lie a hair outside the box so geometry flush with a face is kept.
     float depth = 2 * face.half_depth;
@@ -80,8 +98,10 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
     camera.position = face.center + face.normal * back_off;
     camera.target = face.center;
     camera.up = face.bitangent;
-    camera.left = -face.half_width, camera.right = face.half_width;
-    camera.bottom = -face.half_height, camera.top = face.half_height;
+    camera.left = -face.half_width;
+    camera.right = face.half_width;
+    camera.bottom = -face.half_height;
+    camera.top = face.half_height;
     camera.near_plane = back_off - margin;
     camera.far_plane = back_off + depth + margin;
     Frame frame = make_frame(texels.x(), texels.y(), {0, 0, 0});
@@ -99,7 +119,9 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
         // colour composited over black: divide by coverage to get the albedo.
         float coverage = frame.color[i].w();
         if (coverage < 0.5f) {
-            normal[0] = 128, normal[1] = 128, normal[2] = 255;  // (0, 0, 1)
+            normal[0] = 128;  // (0, 0, 1)
+            normal[1] = 128;
+            normal[2] = 255;
             continue;
         }
         for (int c = 0; c < 3; ++c) baked.color.pixels[i * 4 + c] = linear_to_srgb(frame.color[i][c] / coverage);
@@ -113,11 +135,7 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
         baked.height.pixels[i] = std::uint16_t(std::lround(std::clamp(height, 0.0f, 1.0f) * 65535));
     }
     dilate_colors(baked.color);
-    int x0 = texels.x(), y0 = texels.y(), x1 = 0, y1 = 0;
-    for (int y = 0; y < texels.y(); ++y)
-        for (int x = 0; x < texels.x(); ++x)
-            if (baked.color.at(x, y)[3]) x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x + 1), y1 = std::max(y1, y + 1);
-    if (x1 > x0) baked.covered = {x0, y0, x1 - x0, y1 - y0};
+    baked.covered = covered_rect(baked.color);
     return baked;
 }
 

@@ -48,7 +48,8 @@ int baked_page_material(Model& out, int page, std::map<int, int>& made) {
     if (added) {
         Material material = out.materials[std::size_t(page)];
         material.name += "_proxy";
-        material.height_texture = -1, material.height_depth = 0;
+        material.height_texture = -1;
+        material.height_depth = 0;
         material.alpha_mode = AlphaMode::opaque;
         out.materials.push_back(material);
     }

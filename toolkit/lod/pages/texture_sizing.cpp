@@ -9,7 +9,10 @@ namespace boxlod {
 double half_fovy_tangent(float fovy_degrees) {
     thread_local float last_fovy = std::numeric_limits<float>::quiet_NaN();
     thread_local double tangent = 0;
-    if (!(fovy_degrees == last_fovy)) tangent = std::tan(double(fovy_degrees) * M_PI / 360), last_fovy = fovy_degrees;
+    if (!(fovy_degrees == last_fovy)) {
+        tangent = std::tan(double(fovy_degrees) * M_PI / 360);
+        last_fovy = fovy_degrees;
+    }
     return tangent;
 }
 

@@ -16,7 +16,9 @@ namespace {
 
 LodParameters small_chain_parameters() {
     LodParameters p;
-    p.resolution = 64, p.min_texture_size = 16, p.max_texture_size = 64;
+    p.resolution = 64;
+    p.min_texture_size = 16;
+    p.max_texture_size = 64;
     return p;
 }
 
@@ -172,9 +174,13 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
             EXPECT_GT(switched.switch_distances[k], switched.switch_distances[k - 1]);
             EXPECT_LT(combined_cost({&switched.levels[k].lod.cost}).bytes(), combined_cost({&switched.levels[k - 1].lod.cost}).bytes());
             for (std::size_t d = 0; d < switched.distances.size(); ++d)
-                if (switched.distances[d] >= switched.switch_distances[k]) EXPECT_LE(switched.errors[k][d], threshold);
+                if (switched.distances[d] >= switched.switch_distances[k]) {
+                    EXPECT_LE(switched.errors[k][d], threshold);
+                }
         }
-        if (threshold > 0.1) EXPECT_GE(switched.levels.size(), 2u);  // a lenient threshold reaches boxes
+        if (threshold > 0.1) {
+            EXPECT_GE(switched.levels.size(), 2u);  // a lenient threshold reaches boxes
+        }
     }
     const SwitchedChain sized = switched_levels(chain, 0, 100);
     EXPECT_TRUE(sized.errors.empty());

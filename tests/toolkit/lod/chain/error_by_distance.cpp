@@ -16,7 +16,8 @@ constexpr double never = std::numeric_limits<double>::infinity();
 
 TextureSizing screen(float resolution) {
     TextureSizing s;
-    s.fovy_degrees = 45, s.resolution = resolution;
+    s.fovy_degrees = 45;
+    s.resolution = resolution;
     return s;
 }
 

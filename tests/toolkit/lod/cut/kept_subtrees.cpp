@@ -92,8 +92,10 @@ TEST(KeptSubtrees, CheaperSubtreesCostFewerBytesThanTheirBox) {
     // (2,418) a box of side 10 (4,360).
     Model deep = tree(30, 0, 0);
     deep.nodes[1].primitives = {deep.nodes[2].primitives[0]};
-    deep.nodes[1].primitives[0].positions.resize(3), deep.nodes[1].primitives[0].normals.resize(3);
-    deep.nodes[1].primitives[0].indices.resize(3), deep.nodes[1].primitives[0].polygon_count = 1;
+    deep.nodes[1].primitives[0].positions.resize(3);
+    deep.nodes[1].primitives[0].normals.resize(3);
+    deep.nodes[1].primitives[0].indices.resize(3);
+    deep.nodes[1].primitives[0].polygon_count = 1;
     std::vector<std::optional<OrientedBox>> deep_boxes{std::nullopt, cube(10), cube(1), std::nullopt, std::nullopt};
     ASSERT_EQ(box_bytes_estimate(cube(1), sizing, true), 1624u);
     EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true), (std::vector<bool>{false, true, true, true, false}));

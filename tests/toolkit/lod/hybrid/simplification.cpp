@@ -112,7 +112,8 @@ TEST(Simplification, TargetAtOrAboveTheOriginalKeepsEveryFace) {
 
 TEST(Simplification, IsDeterministicForAnyThreadCount) {
     SimplifyOptions one, two;
-    one.threads = 1, two.threads = 2;
+    one.threads = 1;
+    two.threads = 2;
     auto target = mesh_counts(fzk_haus()).triangles / 10;
     Model a = simplify_model(fzk_haus(), target, one), b = simplify_model(fzk_haus(), target, two),
           c = simplify_model(fzk_haus(), target, two);

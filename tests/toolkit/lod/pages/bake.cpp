@@ -102,7 +102,10 @@ TEST(Bake, GlassIsCoveredOnlyWhereAtLeastHalfOpaqueAndRecordsItsAlbedo) {
 TEST(Bake, DilationFillsUncoveredTexelsFromTheNearestCovered) {
     Image8 color(5, 3, 4, 0);
     std::uint8_t* covered = color.at(0, 1);
-    covered[0] = 200, covered[1] = 100, covered[2] = 50, covered[3] = 255;
+    covered[0] = 200;
+    covered[1] = 100;
+    covered[2] = 50;
+    covered[3] = 255;
     dilate_colors(color);
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 5; ++x) {

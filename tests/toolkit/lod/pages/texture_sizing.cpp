@@ -9,7 +9,11 @@ using namespace boxlod;
 namespace {
 TextureSizing sizing(float fovy, float distance, float resolution, int max_size = 4096) {
     TextureSizing s;
-    s.fovy_degrees = fovy, s.distance = distance, s.resolution = resolution, s.max_texture_size = max_size, s.gutter = 2;
+    s.fovy_degrees = fovy;
+    s.distance = distance;
+    s.resolution = resolution;
+    s.max_texture_size = max_size;
+    s.gutter = 2;
     return s;
 }
 }  // namespace

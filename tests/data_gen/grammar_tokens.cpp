@@ -1,0 +1,39 @@
+#include "data_gen/grammar_tokens.h"
+
+#include "base/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace boxlod;
+
+TEST(GrammarTokens, CutsTextIntoWordsWithTheirPlaces) {
+    const std::vector<Token> tokens = tokenize("Lot --> s(1.5, .5) # a comment\n  wall.x \"red\" // another\n-->", "g");
+    std::vector<std::string> texts;
+    for (const Token& t : tokens) texts.push_back(t.text);
+    EXPECT_EQ(texts, (std::vector<std::string>{"Lot", "-->", "s", "(", "1.5", ",", ".5", ")", "wall.x", "red", "-->", ""}));
+    EXPECT_EQ(tokens[4].kind, Token::Kind::number);
+    EXPECT_EQ(tokens[6].number, 0.5);
+    EXPECT_EQ(tokens[9].kind, Token::Kind::text);
+    EXPECT_EQ(tokens[8].place.line, 2);
+    EXPECT_EQ(tokens[8].place.column, 3);
+    EXPECT_EQ(tokens[10].place.line, 3);
+    EXPECT_EQ(tokens.back().kind, Token::Kind::end);
+    EXPECT_EQ(describe(tokens[9]), "\"red\"");
+    EXPECT_EQ(describe(tokens.back()), "the end of the file");
+}
+
+TEST(GrammarTokens, RefusesWhatNoTokenStartsWithAtItsPlace) {
+    auto message = [](const std::string& text) {
+        try {
+            tokenize(text, "g.grammar");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message("a\n  \"open").find("g.grammar:2:3"), std::string::npos) << message("a\n  \"open");
+    EXPECT_NE(message("a\n  \"open").find("unterminated string"), std::string::npos);
+    EXPECT_NE(message("a $").find("unexpected character '$'"), std::string::npos);
+}
