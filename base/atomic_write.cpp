@@ -1,25 +1,25 @@
 #include "base/atomic_write.h"
 
-#include "base/input_error.h"
 #include "base/folder_removal.h"
+#include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/utf8.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <set>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 namespace boxlod {
@@ -157,7 +157,9 @@ bool stale(long owner, const fs::path& path, const PartialOutputs& outputs, std:
     if (owner == ::getpid()) {
         std::error_code error;
         const fs::path entry = fs::absolute(path, error).lexically_normal();
-        auto ours = [&](const std::string& live) { return fs::absolute(live, error).lexically_normal() == entry; };
+        auto ours = [&](const std::string& live) {
+            return fs::absolute(live, error).lexically_normal() == entry;
+        };
         return std::none_of(outputs.temporaries.begin(), outputs.temporaries.end(), ours) &&
                std::none_of(outputs.staging_folders.begin(), outputs.staging_folders.end(), ours);
     }
@@ -173,7 +175,8 @@ void complete_commit(const fs::path& journal, long owner) {
     const std::string suffix = temporary_suffix + std::to_string(owner);
     std::vector<std::string> names;
     std::error_code error;
-    if (fs::is_regular_file(fs::symlink_status(journal, error)) && fs::file_size(journal, error) <= max_journal_bytes && !error) {
+    if (fs::is_regular_file(fs::symlink_status(journal, error)) &&
+        fs::file_size(journal, error) <= max_journal_bytes && !error) {
         std::ifstream in(journal);
         for (std::string name; std::getline(in, name);) {
             const bool ours = name.size() > suffix.size() && name.find('/') == std::string::npos &&
@@ -201,12 +204,14 @@ void remove_stale_temporaries(const fs::path& directory) {
     std::map<long, bool> verdicts;
     std::vector<std::pair<fs::path, long>> journals;
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error))
-        if (const long owner = temporary_owner(it->path().filename().string(), journal_suffix); stale(owner, it->path(), outputs, verdicts))
+        if (const long owner = temporary_owner(it->path().filename().string(), journal_suffix);
+            stale(owner, it->path(), outputs, verdicts))
             journals.emplace_back(it->path(), owner);
     for (const auto& [journal, owner] : journals) complete_commit(journal, owner);
     for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
         std::error_code ignored;
-        if (stale(temporary_owner(it->path().filename().string(), temporary_suffix), it->path(), outputs, verdicts))
+        if (stale(temporary_owner(it->path().filename().string(), temporary_suffix), it->path(), outputs,
+                  verdicts))
             fs::remove(it->path(), ignored);  // a file only
     }
 }
@@ -250,8 +255,9 @@ void write_journals(PartialOutputs& outputs, std::vector<std::string>& journals)
 
 // The folders a group's writes made (absolute), deepest first, each only if left empty.
 void remove_empty_folders(std::vector<fs::path> folders) {
-    std::sort(folders.begin(), folders.end(),
-              [](const fs::path& a, const fs::path& b) { return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end()); });
+    std::sort(folders.begin(), folders.end(), [](const fs::path& a, const fs::path& b) {
+        return std::distance(a.begin(), a.end()) > std::distance(b.begin(), b.end());
+    });
     for (const fs::path& folder : folders) ::rmdir(folder.c_str());
 }
 
@@ -269,13 +275,17 @@ void remove_stale_staging_folders(const fs::path& folder) {
     std::map<long, bool> verdicts;
     const std::string name = folder.filename().string();
     std::vector<fs::path> stale_folders;  // listed first: renaming them changes the folder being listed
-    for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end; it.increment(error)) {
+    for (fs::directory_iterator it(folder.parent_path(), error), end; !error && it != end;
+         it.increment(error)) {
         const std::string entry = it->path().filename().string();
-        const bool of_this = is_trash_of(entry, name, staging_suffix) || entry.rfind(name + staging_suffix, 0) == 0 ||
+        const bool of_this = is_trash_of(entry, name, staging_suffix) ||
+                             entry.rfind(name + staging_suffix, 0) == 0 ||
                              entry.rfind(name + ".old" + staging_suffix, 0) == 0;
-        if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts)) stale_folders.push_back(it->path());
+        if (of_this && stale(temporary_owner(entry, staging_suffix), it->path(), outputs, verdicts))
+            stale_folders.push_back(it->path());
     }
-    for (const fs::path& stale_folder : stale_folders) remove_in_background(stale_folder, free_trash_name(folder, staging_suffix));
+    for (const fs::path& stale_folder : stale_folders)
+        remove_in_background(stale_folder, free_trash_name(folder, staging_suffix));
 }
 
 std::string quoted(const fs::path& path) { return std::string("'").append(path.string()).append("'"); }
@@ -295,8 +305,8 @@ void write_atomically(const std::string& path, const std::function<void(const st
     const fs::path folder = fs::path(path).parent_path();  // made here, as check_output_file allows
     std::error_code folder_error;
     std::vector<fs::path> missing;  // the folders this write makes
-    for (fs::path p = fs::absolute(folder, folder_error).lexically_normal(); !fs::exists(p, folder_error) && p != p.parent_path();
-         p = p.parent_path())
+    for (fs::path p = fs::absolute(folder, folder_error).lexically_normal();
+         !fs::exists(p, folder_error) && p != p.parent_path(); p = p.parent_path())
         missing.push_back(p);
     if (!folder.empty()) fs::create_directories(folder, folder_error);
     if (folder_error) throw_input_error(path, "", "cannot make its folder: " + folder_error.message());
@@ -304,7 +314,8 @@ void write_atomically(const std::string& path, const std::function<void(const st
     Temporary temporary;
     {
         std::lock_guard lock(outputs.mutex);
-        if (outputs.open_groups > 0) outputs.made_folders.insert(outputs.made_folders.end(), missing.begin(), missing.end());
+        if (outputs.open_groups > 0)
+            outputs.made_folders.insert(outputs.made_folders.end(), missing.begin(), missing.end());
         temporary = new_temporary(path, outputs);
     }
     try {
@@ -317,7 +328,8 @@ void write_atomically(const std::string& path, const std::function<void(const st
                                         [&](const PendingRename& p) { return p.path == path; });
             if (earlier == outputs.pending.end()) {
                 outputs.pending.push_back({temporary, path});
-            } else if (earlier->temporary.name != temporary.name) {  // the same name: rewritten in place already
+            } else if (earlier->temporary.name !=
+                       temporary.name) {  // the same name: rewritten in place already
                 discard(earlier->temporary, outputs);
                 earlier->temporary = temporary;
             }
@@ -341,9 +353,10 @@ void check_folder_or_ancestor(const fs::path& wanted, const std::string& path) {
     fs::path existing = absolute;
     while (!fs::exists(existing, error) && existing.has_relative_path()) existing = existing.parent_path();
     if (!fs::is_directory(existing, error))
-        throw_input_error(path, "", existing != absolute          ? quoted(existing) + " is not a folder"
-                                    : wanted == fs::path(path) ? "exists and is not a folder"
-                                                               : quoted(wanted) + " is not a folder");
+        throw_input_error(path, "",
+                          existing != absolute       ? quoted(existing) + " is not a folder"
+                          : wanted == fs::path(path) ? "exists and is not a folder"
+                                                     : quoted(wanted) + " is not a folder");
     check_writable_directory(existing, path);
     // What a killed run left goes only from the folder the outputs go to, never from one above it.
     if (existing == absolute) remove_stale_temporaries(existing);
@@ -356,10 +369,12 @@ void check_output_file(const std::string& path) {
     if (path.empty()) throw_input_error("''", "", "an empty file name where an output file was expected");
     if (fs::is_directory(path, error)) throw_input_error(path, "", "is a directory, not a file to write");
     if (const std::size_t bytes = fs::path(path).filename().string().size(); bytes > max_output_name_bytes)
-        throw_input_error(path, "", "a file name of " + std::to_string(bytes) + " bytes, more than the " +
-                                        std::to_string(max_output_name_bytes) + " an output may have");
+        throw_input_error(path, "",
+                          "a file name of " + std::to_string(bytes) + " bytes, more than the " +
+                              std::to_string(max_output_name_bytes) + " an output may have");
     // Names go into glTF's URIs and tileset.json, which JSON holds as UTF-8.
-    if (!is_utf8(fs::path(path).filename().string())) throw_input_error(path, "", "the file's name is not UTF-8 text");
+    if (!is_utf8(fs::path(path).filename().string()))
+        throw_input_error(path, "", "the file's name is not UTF-8 text");
     fs::path directory = fs::path(path).parent_path();
     check_folder_or_ancestor(directory.empty() ? fs::path(".") : directory, path);
 }
@@ -427,7 +442,8 @@ OutputGroup::~OutputGroup() {
     PartialOutputs& outputs = partial_outputs();
     std::lock_guard lock(outputs.mutex);
     if (!committed_) {
-        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i) discard(outputs.pending[i].temporary, outputs);
+        for (std::size_t i = first_pending_; i < outputs.pending.size(); ++i)
+            discard(outputs.pending[i].temporary, outputs);
         outputs.pending.resize(std::min(first_pending_, outputs.pending.size()));
         for (const std::string& file : outputs.group_files) {  // a commit that failed half way
             std::error_code ignored;
@@ -455,7 +471,8 @@ bool replaceable(const fs::path& folder, const std::function<bool(const std::str
         if (fs::equivalent(p, folder, error)) return false;
         if (p == p.parent_path()) break;
     }
-    struct stat own {}, parent {};
+    struct stat own {
+    }, parent{};
     if (::stat(folder.c_str(), &own) != 0 || ::stat(folder.parent_path().c_str(), &parent) != 0 ||
         own.st_dev != parent.st_dev)
         return false;
@@ -495,7 +512,8 @@ void OutputFolder::commit() {
         return;
     }
     PartialOutputs& outputs = partial_outputs();
-    std::lock_guard lock(outputs.mutex);  // no interruption between the swap and forgetting the staging folder
+    std::lock_guard lock(
+        outputs.mutex);  // no interruption between the swap and forgetting the staging folder
     std::error_code error;
     if (!fs::exists(folder_, error)) {
         fs::rename(path_, folder_, error);
@@ -552,10 +570,12 @@ void remove_partial_outputs_on_interrupt() {
         for (const std::string& file : outputs.temporaries) ::unlink(file.c_str());
         for (const std::string& file : outputs.group_files) ::unlink(file.c_str());
         remove_empty_folders(outputs.made_folders);
-        // Within a second: what is left of a staging folder then goes with the next run (remove_stale_staging_folders).
+        // Within a second: what is left of a staging folder then goes with the next run
+        // (remove_stale_staging_folders).
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(1);
         bool left = false;
-        for (const std::string& folder : outputs.staging_folders) left = !remove_until(folder, deadline) || left;
+        for (const std::string& folder : outputs.staging_folders)
+            left = !remove_until(folder, deadline) || left;
         std::fprintf(stderr, "boxlod: interrupted (signal %d); partial outputs removed%s\n", signal,
                      left ? " (a staging folder's rest goes with the next run that writes there)" : "");
         std::_Exit(128 + signal);

@@ -1,7 +1,7 @@
 // Files appear whole or not at all: write an unnamed file in the target's
 // folder (Linux O_TMPFILE) and link it into place, or where the file system
-// has none, a temporary name beside the target, then rename (docs/design.md: Files). Files that belong together (one LoD
-// level) appear together or not at all, even when the run is interrupted.
+// has none, a temporary name beside the target, then rename (docs/design.md: Files). Files that belong
+// together (one LoD level) appear together or not at all, even when the run is interrupted.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -28,13 +28,15 @@ void write_text_atomically(const std::string& path, const std::string& text);
 // InputError "path: what" unless a file can be created there. Where the
 // folder exists, both also complete the commits a killed run of boxlod left
 // half done in it, then remove its temporaries; no folder above is touched.
-void check_output_file(const std::string& path);       // its folder exists and takes new files; path is no folder; its name fits
+void check_output_file(
+    const std::string& path);  // its folder exists and takes new files; path is no folder; its name fits
 // The longest file name an output may have: the file system's 255 bytes less its temporary's suffix.
 constexpr std::size_t max_output_name_bytes = 255 - 24;
 // ... and its name ends in one of `extensions` (".png"; case aside): a file
 // named .exr that holds PNG bytes misleads every reader after it.
 void check_output_file(const std::string& path, std::initializer_list<std::string_view> extensions);
-void check_output_directory(const std::string& path);  // a folder that takes new files, or one that can be made
+void check_output_directory(
+    const std::string& path);  // a folder that takes new files, or one that can be made
 
 // Files that appear together or not at all: inside a group, atomic writes
 // leave their temporaries, and the outermost group's commit() renames them all
@@ -74,8 +76,8 @@ private:
 class OutputFolder {
 public:
     OutputFolder(const std::string& folder, const std::function<bool(const std::string& name)>& ours);
-    ~OutputFolder();                             // without commit(): the staging folder is removed
-    const std::string& path() const { return path_; }  // where to write the files
+    ~OutputFolder();                                    // without commit(): the staging folder is removed
+    const std::string& path() const { return path_; }   // where to write the files
     bool replaces() const { return path_ != folder_; }  // written aside and swapped in
     void commit();  // throws InputError naming the folder if it cannot be put in place
     OutputFolder(const OutputFolder&) = delete;

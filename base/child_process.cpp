@@ -12,9 +12,9 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -58,9 +58,11 @@ void limit_address_space(std::size_t extra) {
                             const std::string& file) {
     // The parent's interrupt handlers clean up the parent's files: not the child's business. A fault
     // kills the child by its signal, which the parent names (also under a sanitizer's handlers).
-    for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+    for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+        std::signal(signal, SIG_DFL);
     // The parent's freed heap would come back to the child page by page as copies
-    // (copy-on-write pages of the parent's heap count against the child); given back, it comes back as fresh pages.
+    // (copy-on-write pages of the parent's heap count against the child); given back, it comes back as fresh
+    // pages.
     ::malloc_trim(0);
     limit_address_space(limits.extra_address_space);
     char tag = answer_bytes;
@@ -72,8 +74,8 @@ void limit_address_space(std::size_t extra) {
         payload = error.what();
     } catch (const std::bad_alloc&) {
         tag = answer_input_error;
-        payload = file + ": reading it would take more than " + std::to_string(limits.extra_address_space >> 20) +
-                  " MiB (counts in the file too large?)";
+        payload = file + ": reading it would take more than " +
+                  std::to_string(limits.extra_address_space >> 20) + " MiB (counts in the file too large?)";
     } catch (const std::exception& error) {
         tag = answer_other_error;
         payload = error.what();
@@ -93,7 +95,8 @@ void limit_address_space(std::size_t extra) {
 std::pair<std::string, bool> read_answer(int fd, std::chrono::steady_clock::time_point deadline) {
     std::string answer;
     for (char buffer[65536];;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
         pollfd poll_fd{fd, POLLIN, 0};
         const int ready = ::poll(&poll_fd, 1, int(std::max<long long>(left.count(), 0)));
         if (ready < 0 && errno == EINTR) continue;
@@ -107,8 +110,8 @@ std::pair<std::string, bool> read_answer(int fd, std::chrono::steady_clock::time
 
 }  // namespace
 
-std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits, const std::string& file,
-                         const std::string& reader) {
+std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits,
+                         const std::string& file, const std::string& reader) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
     const pid_t pid = ::fork();
@@ -122,8 +125,9 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
         run_child(fds[1], work, limits, file);
     }
     ::close(fds[1]);
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limits.seconds));
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                               std::chrono::duration<double>(limits.seconds));
     auto [answer, timed_out] = read_answer(fds[0], deadline);
     ::close(fds[0]);
     const std::size_t header = 1 + sizeof(std::uint64_t);
@@ -131,17 +135,24 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
     if (answer.size() >= header) std::memcpy(&size, answer.data() + 1, sizeof size);
     if (!timed_out && answer.size() >= header && answer.size() - header == size) {
         // A whole answer: the child only exits now; reap it without waiting for its memory to go.
-        std::thread([pid] { while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {} }).detach();
+        std::thread([pid] {
+            while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+            }
+        }).detach();
     } else {
         if (timed_out) ::kill(pid, SIGKILL);
         int status = 0;
         while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
         if (timed_out)
-            throw_input_error(file, "", reader + " took longer than " + format_number(limits.seconds) + " s; stopped");
+            throw_input_error(file, "",
+                              reader + " took longer than " + format_number(limits.seconds) + " s; stopped");
         if (WIFSIGNALED(status))
-            throw_input_error(file, "", reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
-        throw_input_error(file, "", reader + " ended without an answer (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+            throw_input_error(file, "",
+                              reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
+        throw_input_error(
+            file, "",
+            reader + " ended without an answer (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
     }
     const char tag = answer[0];
     answer.erase(0, header);
@@ -153,10 +164,11 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
 namespace {
 
 // In the child of run_in_child: the program with its pipes, and what it wrote on descriptor 3.
-std::string run_program(const std::vector<std::string>& command, const std::string& input, const std::string& file,
-                        const std::string& reader) {
+std::string run_program(const std::vector<std::string>& command, const std::string& input,
+                        const std::string& file, const std::string& reader) {
     int to_program[2], from_program[2];
-    if (::pipe(to_program) != 0 || ::pipe(from_program) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    if (::pipe(to_program) != 0 || ::pipe(from_program) != 0)
+        throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
@@ -194,14 +206,16 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
     }
     if (WIFEXITED(status) && WEXITSTATUS(status) == 127 && output.empty())
         throw_input_error(file, "", reader + " needs '" + command[0] + "', which is not installed");
-    if (WIFSIGNALED(status)) throw_input_error(file, "", reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
+    if (WIFSIGNALED(status))
+        throw_input_error(file, "", reader + " crashed on this file (" + ::strsignal(WTERMSIG(status)) + ")");
     return output;
 }
 
 }  // namespace
 
 std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
-                                 const ChildLimits& limits, const std::string& file, const std::string& reader) {
+                                 const ChildLimits& limits, const std::string& file,
+                                 const std::string& reader) {
     return run_in_child([&] { return run_program(command, input, file, reader); }, limits, file, reader);
 }
 

@@ -20,8 +20,8 @@ struct ChildLimits {
 // abort, a limit reached or a timeout throws InputError "file: READER
 // crashed (signal) ..." and the like; any other exception a runtime_error
 // with its message (an internal error, as it would be in this process).
-std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits, const std::string& file,
-                         const std::string& reader);
+std::string run_in_child(const std::function<std::string()>& work, const ChildLimits& limits,
+                         const std::string& file, const std::string& reader);
 
 // A reader that is another program (node running web-ifc): `command` (looked
 // up in PATH) run inside run_in_child with `input` on its standard input,
@@ -29,6 +29,7 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
 // it wrote to file descriptor 3. It dies with its parent. A program that is
 // not installed is an InputError naming it.
 std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
-                                 const ChildLimits& limits, const std::string& file, const std::string& reader);
+                                 const ChildLimits& limits, const std::string& file,
+                                 const std::string& reader);
 
 }  // namespace boxlod

@@ -21,7 +21,8 @@ std::string Arguments::text(const std::string& name, const std::string& fallback
 
 std::vector<Option> with_options(std::vector<Option> options, const std::vector<Option>& more) {
     for (const Option& o : more)
-        if (std::none_of(options.begin(), options.end(), [&](const Option& have) { return have.name == o.name; }))
+        if (std::none_of(options.begin(), options.end(),
+                         [&](const Option& have) { return have.name == o.name; }))
             options.push_back(o);
     return options;
 }
@@ -30,11 +31,15 @@ namespace {
 
 // The option's value as given or declared, or nullptr where the reader's fallback holds.
 template <typename Fallback>
-const std::string* value_or_default(const Arguments& a, const std::string& name, const std::optional<Fallback>& fallback) {
-    if (!a.ranges.count(name)) throw std::logic_error("option --" + name + " is read as a number but declares no range");
+const std::string* value_or_default(const Arguments& a, const std::string& name,
+                                    const std::optional<Fallback>& fallback) {
+    if (!a.ranges.count(name))
+        throw std::logic_error("option --" + name + " is read as a number but declares no range");
     const bool declared = a.defaults.count(name) != 0;
     if (declared == fallback.has_value())
-        throw std::logic_error("option --" + name + (declared ? " declares a default and is read with another" : " has no default"));
+        throw std::logic_error(
+            "option --" + name +
+            (declared ? " declares a default and is read with another" : " has no default"));
     if (auto it = a.values.find(name); it != a.values.end()) return &it->second;
     return declared ? &a.defaults.at(name) : nullptr;
 }
@@ -53,8 +58,10 @@ Arguments declared_arguments(const Command& command) {
         if (o.range) arguments.ranges[o.name] = *o.range;
         if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
         double number = 0;
-        if (o.range && !o.default_value.empty() && (!read_number(o.default_value, number) || !o.range->contains(number)))
-            throw std::logic_error("option --" + o.name + ": default " + o.default_value + " outside its range");
+        if (o.range && !o.default_value.empty() &&
+            (!read_number(o.default_value, number) || !o.range->contains(number)))
+            throw std::logic_error("option --" + o.name + ": default " + o.default_value +
+                                   " outside its range");
     }
     return arguments;
 }
@@ -74,7 +81,8 @@ int Arguments::integer(const std::string& name, std::optional<int> fallback) con
     const std::string* text = value_or_default(*this, name, fallback);
     if (!text) return *fallback;
     int value = 0;
-    if (!read_number(*text, value)) throw InputError("--" + name + ": expected an integer, got '" + *text + "'");
+    if (!read_number(*text, value))
+        throw InputError("--" + name + ": expected an integer, got '" + *text + "'");
     return value;
 }
 
@@ -88,7 +96,8 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
             return arguments;
         }
         bool long_form = word.size() > 2 && word.compare(0, 2, "--") == 0;
-        bool short_form = word.size() == 2 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+        bool short_form =
+            word.size() == 2 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
         if (long_form || short_form) {
             std::string name = long_form ? word.substr(2) : word, value;
             if (short_form)
@@ -103,9 +112,12 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
             const Option* option = nullptr;
             for (const Option& o : command.options)
                 if (o.name == name) option = &o;
-            if (!option) throw InputError(prefix + "unknown option " + (short_form ? name : "--" + name) + " (see --help)");
+            if (!option)
+                throw InputError(prefix + "unknown option " + (short_form ? name : "--" + name) +
+                                 " (see --help)");
             if (!option->value_name.empty() && !inline_value) {
-                if (i + 1 >= words.size()) throw InputError(prefix + "--" + name + " needs a value " + option->value_name);
+                if (i + 1 >= words.size())
+                    throw InputError(prefix + "--" + name + " needs a value " + option->value_name);
                 value = words[++i];
             } else if (option->value_name.empty() && inline_value) {
                 throw InputError(prefix + "--" + name + " takes no value");
@@ -113,7 +125,8 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
             if (option->range) {
                 double number = 0;
                 if (!read_number(value, number) || !option->range->contains(number))
-                    throw InputError(prefix + "--" + name + ": " + out_of_range_message(*option->range, value));
+                    throw InputError(prefix + "--" + name + ": " +
+                                     out_of_range_message(*option->range, value));
             }
             arguments.values[name] = value;
         } else {
@@ -122,8 +135,9 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
     }
     std::size_t n = arguments.positionals.size();
     if (n < command.min_positionals || n > command.max_positionals)
-        throw InputError(prefix + "expected " + (command.arguments.empty() ? "no arguments" : command.arguments) +
-                         ", got " + std::to_string(n) + " argument(s) (see --help)");
+        throw InputError(prefix + "expected " +
+                         (command.arguments.empty() ? "no arguments" : command.arguments) + ", got " +
+                         std::to_string(n) + " argument(s) (see --help)");
     return arguments;
 }
 
@@ -143,12 +157,16 @@ std::string help_with_range(const Option& o) {
 }  // namespace
 
 std::string help_text(const Command& command) {
-    std::string out = "usage: boxlod " + command.name + (command.arguments.empty() ? "" : " " + command.arguments) +
-                      " [options]\n\n" + command.summary + "\n\noptions:\n";
+    std::string out = "usage: boxlod " + command.name +
+                      (command.arguments.empty() ? "" : " " + command.arguments) + " [options]\n\n" +
+                      command.summary + "\n\noptions:\n";
     for (const Option& o : command.options) {
-        std::string left = std::string(o.short_name ? std::string("  -") + o.short_name + ", " : "  ") + "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
-        if (left.size() < 28) left.resize(28, ' ');
-        else left += "\n" + std::string(28, ' ');
+        std::string left = std::string(o.short_name ? std::string("  -") + o.short_name + ", " : "  ") +
+                           "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+        if (left.size() < 28)
+            left.resize(28, ' ');
+        else
+            left += "\n" + std::string(28, ' ');
         out += left + help_with_range(o) + "\n";
     }
     out += std::string("  --help") + std::string(20, ' ') + "show this help\n";

@@ -17,7 +17,8 @@ struct Option {
     std::string name;        // without the leading "--"
     std::string value_name;  // empty: a flag without value
     std::string help;
-    std::optional<NumberRange> range = std::nullopt;  // a numeric option's accepted values, checked while parsing
+    std::optional<NumberRange> range =
+        std::nullopt;  // a numeric option's accepted values, checked while parsing
     // Its value when not given ("": none, or one the help describes), declared
     // here only: --help shows it, and Arguments reads it.
     std::string default_value = "";
@@ -38,8 +39,8 @@ struct Command {
 
 struct Arguments {
     std::vector<std::string> positionals;
-    std::map<std::string, std::string> values;  // flags map to ""
-    std::map<std::string, NumberRange> ranges;  // of every numeric option declared
+    std::map<std::string, std::string> values;    // flags map to ""
+    std::map<std::string, NumberRange> ranges;    // of every numeric option declared
     std::map<std::string, std::string> defaults;  // of every option declared with a default value
 
     // An option not given reads as its declared default, else as `fallback`;
@@ -53,7 +54,8 @@ struct Arguments {
 };
 
 // Throws InputError ("boxlod NAME: ...") on an unknown option, a missing value,
-// a number outside its option's range or a wrong number of positional arguments. `--help` is returned as a flag.
+// a number outside its option's range or a wrong number of positional arguments. `--help` is returned as a
+// flag.
 Arguments parse_arguments(const Command& command, const std::vector<std::string>& words);
 std::string help_text(const Command& command);
 

@@ -11,16 +11,18 @@ namespace boxlod {
 namespace {
 
 void print_overview(const std::vector<Subcommand>& subcommands) {
-    std::printf("usage: boxlod COMMAND [arguments] [options]\n\n"
-                "Textured-box level of detail for hierarchical (procedural) architecture.\n\ncommands:\n");
+    std::printf(
+        "usage: boxlod COMMAND [arguments] [options]\n\n"
+        "Textured-box level of detail for hierarchical (procedural) architecture.\n\ncommands:\n");
     for (const auto& s : subcommands) {  // the first sentence of each summary
         const std::string& summary = s.command.summary;
         std::size_t sentence = summary.find(". "), line = summary.find('\n');
         std::string first = sentence < line ? summary.substr(0, sentence + 1) : summary.substr(0, line);
         std::printf("  %-10s %s\n", s.command.name.c_str(), first.c_str());
     }
-    std::printf("\n'boxlod COMMAND --help' describes a command's options.\n"
-                "Exit status: 0 success, 2 bad input or usage, 1 internal failure.\n");
+    std::printf(
+        "\n'boxlod COMMAND --help' describes a command's options.\n"
+        "Exit status: 0 success, 2 bad input or usage, 1 internal failure.\n");
 }
 
 }  // namespace
@@ -36,7 +38,8 @@ int run_subcommands(const std::vector<Subcommand>& subcommands, int argc, char**
             if (s.command.name != words[0]) continue;
             Command command = s.command;  // with the options every command takes
             command.options = with_options(command.options, {max_memory_option()});
-            Arguments arguments = parse_arguments(command, std::vector<std::string>(words.begin() + 1, words.end()));
+            Arguments arguments =
+                parse_arguments(command, std::vector<std::string>(words.begin() + 1, words.end()));
             if (arguments.has("help")) {
                 std::fputs(help_text(command).c_str(), stdout);
                 return 0;

@@ -12,7 +12,8 @@ namespace boxlod {
 Option json_option();
 
 // --threads N in thread_count_range (0: all cores): "WHAT (default: DEFAULT)".
-Option threads_option(const std::string& what = "threads to use", const std::string& default_text = "all cores");
+Option threads_option(const std::string& what = "threads to use",
+                      const std::string& default_text = "all cores");
 // The --threads given, else `absent` (0: all cores).
 int threads_from(const Arguments& arguments, int absent = 0);
 

@@ -65,14 +65,20 @@ std::string csv_text_problem(const std::string& text) {
         const auto byte = static_cast<unsigned char>(text[i]);
         if (byte < 0x20 || byte == 0x7f) return "a control character (byte " + std::to_string(byte) + ")";
         // A lead byte and its continuation bytes (RFC 3629: C0, C1 and F5-FF never occur).
-        const int length = byte < 0x80 ? 1 : byte >= 0xc2 && byte <= 0xdf ? 2 : byte >= 0xe0 && byte <= 0xef ? 3
-                                       : byte >= 0xf0 && byte <= 0xf4 ? 4 : 0;
+        const int length = byte < 0x80                    ? 1
+                           : byte >= 0xc2 && byte <= 0xdf ? 2
+                           : byte >= 0xe0 && byte <= 0xef ? 3
+                           : byte >= 0xf0 && byte <= 0xf4 ? 4
+                                                          : 0;
         if (length == 0 || i + std::size_t(length) > text.size()) return "bytes that are not UTF-8";
         for (int k = 1; k < length; ++k)
-            if ((static_cast<unsigned char>(text[i + std::size_t(k)]) & 0xc0) != 0x80) return "bytes that are not UTF-8";
-        // The second byte's range where the lead allows less: no overlong form, nothing past U+10FFFF; C1 controls.
+            if ((static_cast<unsigned char>(text[i + std::size_t(k)]) & 0xc0) != 0x80)
+                return "bytes that are not UTF-8";
+        // The second byte's range where the lead allows less: no overlong form, nothing past U+10FFFF; C1
+        // controls.
         const auto second = length > 1 ? static_cast<unsigned char>(text[i + 1]) : 0;
-        if ((byte == 0xe0 && second < 0xa0) || (byte == 0xf0 && second < 0x90) || (byte == 0xf4 && second > 0x8f))
+        if ((byte == 0xe0 && second < 0xa0) || (byte == 0xf0 && second < 0x90) ||
+            (byte == 0xf4 && second > 0x8f))
             return "bytes that are not UTF-8";
         if (byte == 0xc2 && second < 0xa0) return "a control character (U+0080 to U+009F)";
         i += std::size_t(length);
@@ -85,25 +91,32 @@ namespace {
 // "" when `field` is of `kind`, else what is wrong.
 std::string field_problem(const std::string& field, CsvValue kind) {
     if (field.size() > max_csv_field_bytes)
-        return "a field of " + std::to_string(field.size()) + " bytes (at most " + std::to_string(max_csv_field_bytes) + ")";
+        return "a field of " + std::to_string(field.size()) + " bytes (at most " +
+               std::to_string(max_csv_field_bytes) + ")";
     double value = 0;
     switch (kind) {
-        case CsvValue::text: return csv_text_problem(field);
-        case CsvValue::count: return is_count(field) ? "" : "'" + field + "' is not a count (a whole number >= 0)";
-        case CsvValue::optional_number:
-            if (field.empty()) return "";
-            [[fallthrough]];
-        case CsvValue::number:
-            return as_number(field, value) && std::isfinite(value) && value >= 0 ? "" : "'" + field + "' is not a finite number >= 0";
-        case CsvValue::metric:
-            return as_number(field, value) && !std::isnan(value) && value != -INFINITY ? "" : "'" + field + "' is not a metric value";
+    case CsvValue::text: return csv_text_problem(field);
+    case CsvValue::count:
+        return is_count(field) ? "" : "'" + field + "' is not a count (a whole number >= 0)";
+    case CsvValue::optional_number:
+        if (field.empty()) return "";
+        [[fallthrough]];
+    case CsvValue::number:
+        return as_number(field, value) && std::isfinite(value) && value >= 0
+                   ? ""
+                   : "'" + field + "' is not a finite number >= 0";
+    case CsvValue::metric:
+        return as_number(field, value) && !std::isnan(value) && value != -INFINITY
+                   ? ""
+                   : "'" + field + "' is not a metric value";
     }
     return "";
 }
 
 }  // namespace
 
-std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file, const std::vector<CsvColumn>& columns) {
+std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file,
+                                      const std::vector<CsvColumn>& columns) {
     std::vector<std::string> names;
     for (const CsvColumn& column : columns) names.push_back(column.name);
     const std::string header = csv_row(names);
@@ -116,15 +129,20 @@ std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& 
         start = end + 1;
         const std::string place = "line " + std::to_string(number);
         if (number == 1) {
-            if (line != header) throw_input_error(file, "", "its columns are not " + header + " (a table of another run or kind)");
+            if (line != header)
+                throw_input_error(file, "",
+                                  "its columns are not " + header + " (a table of another run or kind)");
             continue;
         }
         if (line.empty()) continue;
         if (line.size() > columns.size() * (max_csv_field_bytes + 3))
-            throw_input_error(file, place, "a line of " + std::to_string(line.size()) + " bytes, longer than any row");
+            throw_input_error(file, place,
+                              "a line of " + std::to_string(line.size()) + " bytes, longer than any row");
         std::vector<std::string> fields = csv_fields(line);
         if (fields.size() != columns.size())
-            throw_input_error(file, place, std::to_string(fields.size()) + " fields, not " + std::to_string(columns.size()));
+            throw_input_error(
+                file, place,
+                std::to_string(fields.size()) + " fields, not " + std::to_string(columns.size()));
         for (std::size_t k = 0; k < fields.size(); ++k)
             if (std::string problem = field_problem(fields[k], columns[k].value); !problem.empty())
                 throw_input_error(file, place + ": " + columns[k].name, problem);

@@ -38,6 +38,7 @@ constexpr std::size_t max_csv_field_bytes = 4096;
 // theirs; an empty text has none). Throws InputError "file: line N: COLUMN:
 // what" for a row with another field count, a field too long or not of its
 // column's kind, and "file: ..." for a header that differs.
-std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file, const std::vector<CsvColumn>& columns);
+std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& file,
+                                      const std::vector<CsvColumn>& columns);
 
 }  // namespace boxlod

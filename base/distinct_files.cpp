@@ -23,7 +23,8 @@ void check_distinct_files(const std::vector<std::pair<std::string, std::string>>
         if (path.empty()) continue;
         const fs::path file = same_file(path);
         for (const auto& [earlier, earlier_file] : seen)
-            if (earlier_file == file) throw_input_error(path, "", option + " names the same file as " + earlier);
+            if (earlier_file == file)
+                throw_input_error(path, "", option + " names the same file as " + earlier);
         seen.emplace_back(option, file);
     }
 }

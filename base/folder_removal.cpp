@@ -1,10 +1,10 @@
 #include "base/folder_removal.h"
 
-#include <csignal>
 #include <fcntl.h>
 #include <spawn.h>
-#include <string>
 #include <unistd.h>
+#include <csignal>
+#include <string>
 
 namespace boxlod {
 
@@ -15,7 +15,8 @@ bool remove_until(const fs::path& folder, std::chrono::steady_clock::time_point 
     for (fs::recursive_directory_iterator it(folder, error), end; it != end; it.increment(error)) {
         if (error || std::chrono::steady_clock::now() > deadline) return false;
         std::error_code status_error;
-        if (!fs::is_directory(it->symlink_status(status_error)) && !status_error) ::unlink(it->path().c_str());
+        if (!fs::is_directory(it->symlink_status(status_error)) && !status_error)
+            ::unlink(it->path().c_str());
     }
     if (error) return false;  // not listed: what remains, if anything, is left for later
     fs::remove_all(folder, error);
@@ -25,8 +26,8 @@ bool remove_until(const fs::path& folder, std::chrono::steady_clock::time_point 
 fs::path free_trash_name(const fs::path& folder, const std::string& suffix) {
     std::error_code error;
     for (long k = 0;; ++k)
-        if (fs::path trash = folder.parent_path() / (folder.filename().string() + ".trash" + std::to_string(k) + suffix +
-                                                     std::to_string(::getpid()));
+        if (fs::path trash = folder.parent_path() / (folder.filename().string() + ".trash" +
+                                                     std::to_string(k) + suffix + std::to_string(::getpid()));
             !fs::exists(fs::symlink_status(trash, error)))
             return trash;
 }
@@ -35,7 +36,8 @@ bool is_trash_of(const std::string& entry, const std::string& name, const std::s
     const std::string prefix = name + ".trash";
     if (entry.rfind(prefix, 0) != 0) return false;
     const std::size_t digits = entry.find_first_not_of("0123456789", prefix.size());
-    return digits > prefix.size() && digits != std::string::npos && entry.compare(digits, suffix.size(), suffix) == 0;
+    return digits > prefix.size() && digits != std::string::npos &&
+           entry.compare(digits, suffix.size(), suffix) == 0;
 }
 
 void remove_in_background(const fs::path& folder, const fs::path& trash) {
@@ -55,7 +57,8 @@ void remove_in_background(const fs::path& folder, const fs::path& trash) {
     posix_spawnattr_setsigmask(&attributes, &none);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSID);
     posix_spawn_file_actions_init(&files);
-    for (int fd : {0, 1, 2}) posix_spawn_file_actions_addopen(&files, fd, "/dev/null", fd == 0 ? O_RDONLY : O_WRONLY, 0);
+    for (int fd : {0, 1, 2})
+        posix_spawn_file_actions_addopen(&files, fd, "/dev/null", fd == 0 ? O_RDONLY : O_WRONLY, 0);
     pid_t child = 0;
     if (posix_spawn(&child, rm, &files, &attributes, argv, environ) != 0) fs::remove_all(trash, error);
     posix_spawn_file_actions_destroy(&files);

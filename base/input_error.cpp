@@ -27,6 +27,8 @@ std::string out_of_range_message(const NumberRange& range, const std::string& te
     return "expected a number in " + range_text(range) + ", got '" + text + "'";
 }
 
-std::string nesting_message() { return "nested more than " + std::to_string(max_nesting_depth) + " levels deep"; }
+std::string nesting_message() {
+    return "nested more than " + std::to_string(max_nesting_depth) + " levels deep";
+}
 
 }  // namespace boxlod

@@ -18,15 +18,18 @@ std::size_t check_input_file(const std::string& path, const std::string& kind) {
     fs::file_status status = fs::status(path, error);
     if (status.type() == fs::file_type::not_found) throw_input_error(path, "", "no such file");
     if (error) throw_input_error(path, "", "cannot open " + kind + ": " + error.message());
-    if (status.type() == fs::file_type::directory) throw_input_error(path, "", "is a directory, not a " + kind);
-    if (status.type() != fs::file_type::regular) throw_input_error(path, "", "is not a regular file (a " + kind + " was expected)");
+    if (status.type() == fs::file_type::directory)
+        throw_input_error(path, "", "is a directory, not a " + kind);
+    if (status.type() != fs::file_type::regular)
+        throw_input_error(path, "", "is not a regular file (a " + kind + " was expected)");
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw_input_error(path, "", "cannot open " + kind + ": " + std::strerror(errno));
     std::uintmax_t size = fs::file_size(path, error);
     if (error) throw_input_error(path, "", "cannot read " + kind + ": " + error.message());
     if (size > max_input_file_bytes)
-        throw_input_error(path, "", "is " + std::to_string(size >> 20) + " MiB, more than the " +
-                                        std::to_string(max_input_file_bytes >> 20) + " MiB a " + kind + " may have");
+        throw_input_error(path, "",
+                          "is " + std::to_string(size >> 20) + " MiB, more than the " +
+                              std::to_string(max_input_file_bytes >> 20) + " MiB a " + kind + " may have");
     return std::size_t(size);
 }
 

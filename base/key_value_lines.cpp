@@ -36,15 +36,18 @@ std::vector<KeyValueLine> parse_key_value_lines(const std::string& text, const s
             if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
                 char byte[8];
                 std::snprintf(byte, sizeof byte, "0x%02x", unsigned(c));
-                throw_input_error(file, "line " + std::to_string(number), std::string("not text (byte ") + byte + ")");
+                throw_input_error(file, "line " + std::to_string(number),
+                                  std::string("not text (byte ") + byte + ")");
             }
         std::string content = trim(raw.substr(0, comment_start(raw)));
         if (content.empty()) continue;
         std::size_t equals = content.find('=');
-        if (equals == std::string::npos) throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");
+        if (equals == std::string::npos)
+            throw_input_error(file, "line " + std::to_string(number), "expected 'key = value'");
         std::string key = trim(content.substr(0, equals));
         if (auto [first, added] = first_line.emplace(key, number); !added)
-            throw_input_error(file, "line " + std::to_string(number) + ": " + key, "given twice (first on line " + std::to_string(first->second) + ")");
+            throw_input_error(file, "line " + std::to_string(number) + ": " + key,
+                              "given twice (first on line " + std::to_string(first->second) + ")");
         lines.push_back({number, key, trim(content.substr(equals + 1))});
     }
     return lines;

@@ -8,7 +8,7 @@
 namespace boxlod {
 
 struct KeyValueLine {
-    int line = 0;  // 1-based, for messages
+    int line = 0;            // 1-based, for messages
     std::string key, value;  // trimmed; value may be empty
 };
 

@@ -56,7 +56,8 @@ std::string json_string(const std::string& s) {
             char escaped[8];
             std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
             out += escaped;
-        } else out += char(c);
+        } else
+            out += char(c);
     }
     return out + "\"";
 }
@@ -66,18 +67,20 @@ std::string format_json(const KeyValues& entries) {
     std::string out = "{";
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const KeyValue& e = entries[i];
-        out += (i ? ",\n  " : "\n  ") + json_string(e.key) + ": " + (e.number ? e.value : json_string(e.value));
+        out +=
+            (i ? ",\n  " : "\n  ") + json_string(e.key) + ": " + (e.number ? e.value : json_string(e.value));
     }
     return out + "\n}\n";
 }
 
 std::vector<std::string> comma_list(std::string_view text) {
     std::vector<std::string> items;
-    for (std::size_t begin = 0;; ) {
+    for (std::size_t begin = 0;;) {
         const std::size_t end = std::min(text.find(',', begin), text.size());
         std::string_view item = text.substr(begin, end - begin);
         const std::size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
-        items.emplace_back(first == std::string_view::npos ? std::string_view() : item.substr(first, last - first + 1));
+        items.emplace_back(first == std::string_view::npos ? std::string_view()
+                                                           : item.substr(first, last - first + 1));
         if (end == text.size()) return items;
         begin = end + 1;
     }

@@ -19,7 +19,8 @@ std::string format_number(float value);  // shortest text for the float
 KeyValue number_entry(std::string key, double value);
 KeyValue float_entry(std::string key, float value);
 KeyValue text_entry(std::string key, std::string value);
-KeyValue numbers_entry(std::string key, const std::vector<double>& values);  // "v1,v2,...", each read back exactly
+KeyValue numbers_entry(std::string key,
+                       const std::vector<double>& values);  // "v1,v2,...", each read back exactly
 
 // The value of the first entry named `key`, "" when there is none.
 std::string value_of(const KeyValues& entries, const std::string& key);

@@ -29,9 +29,10 @@ double cgroup_limit() {
 }  // namespace
 
 Option max_memory_option() {
-    return {"max-memory", "GB",
-            "refuse a request estimated to need more memory than this (default: half of this machine's memory)",
-            max_memory_range};
+    return {
+        "max-memory", "GB",
+        "refuse a request estimated to need more memory than this (default: half of this machine's memory)",
+        max_memory_range};
 }
 
 double default_memory_budget() {
@@ -52,8 +53,10 @@ void set_memory_budget(double bytes) { budget.store(bytes); }
 
 std::string memory_text(double bytes) {
     char text[32];
-    if (bytes >= 1e9) std::snprintf(text, sizeof text, "%.3g GB", bytes / 1e9);
-    else std::snprintf(text, sizeof text, "%.3g MB", bytes / 1e6);
+    if (bytes >= 1e9)
+        std::snprintf(text, sizeof text, "%.3g GB", bytes / 1e9);
+    else
+        std::snprintf(text, sizeof text, "%.3g MB", bytes / 1e6);
     return text;
 }
 

@@ -7,7 +7,9 @@ namespace boxlod {
 
 using Clock = std::chrono::steady_clock;
 
-inline double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+inline double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 // Adds the seconds from its making to the end of its scope to `total`:
 //   { const ScopedTimer timer(times.bake); bake(...); }

@@ -1,8 +1,8 @@
 #include "data_gen/city.h"
 
 #include "base/input_error.h"
-#include "data_gen/grammar_parser.h"
 #include "base/random.h"
+#include "data_gen/grammar_parser.h"
 #include "data_gen/samples.h"
 #include "toolkit/model/model_subtree.h"
 
@@ -24,8 +24,8 @@ const char* const street_grammar =
 namespace {
 
 // The street pieces and blocks are flat lots: derived where they lie.
-void derive_ground(const CityPlan& plan, const Grammar& streets, const std::string& start, const ScopeBox& lot,
-                   Model& model, int parent, MaterialCache& materials) {
+void derive_ground(const CityPlan& plan, const Grammar& streets, const std::string& start,
+                   const ScopeBox& lot, Model& model, int parent, MaterialCache& materials) {
     derive(streets, start, lot, plan.options.seed, model, parent, materials, plan.options.limits);
 }
 
@@ -64,7 +64,8 @@ CityPlan plan_city(const CityOptions& options) {
     const int columns = int(std::ceil(std::sqrt(double(options.buildings))));
     const int rows = (options.buildings + columns - 1) / columns;
     const float street = options.street_width;
-    plan.size = {columns * plan.cell.x() + (columns + 1) * street, rows * plan.cell.y() + (rows + 1) * street};
+    plan.size = {columns * plan.cell.x() + (columns + 1) * street,
+                 rows * plan.cell.y() + (rows + 1) * street};
     const Eigen::Vector3f corner(-plan.size.x() / 2, 0, -plan.size.y() / 2);
 
     // Shared designs draw from streams of their own, apart from the lots'.
@@ -81,11 +82,12 @@ CityPlan plan_city(const CityOptions& options) {
             lot.design = plan.designs.size();
             plan.designs.push_back(draw_design(plan, random, variation));
         } else {
-            lot.design = std::min(std::size_t(options.designs) - 1, std::size_t(random.uniform() * options.designs));
+            lot.design =
+                std::min(std::size_t(options.designs) - 1, std::size_t(random.uniform() * options.designs));
         }
         lot.name = options.kinds[plan.designs[lot.design].kind] + "_" + std::to_string(i);
-        lot.center = corner + Eigen::Vector3f(street + column * (plan.cell.x() + street) + plan.cell.x() / 2, 0,
-                                              street + row * (plan.cell.y() + street) + plan.cell.y() / 2);
+        lot.center = corner + Eigen::Vector3f(street + column * (plan.cell.x() + street) + plan.cell.x() / 2,
+                                              0, street + row * (plan.cell.y() + street) + plan.cell.y() / 2);
         plan.lots.push_back(std::move(lot));
     }
     return plan;
@@ -114,22 +116,24 @@ Model make_streets(const CityPlan& plan, MaterialCache& materials) {
     // Streets along x run the whole width; those along z fill the gaps between them.
     for (int r = 0; r <= rows; ++r) {
         const Eigen::Vector3f middle = street_along_x(plan, r);
-        derive_ground(plan, streets, "", ground_lot(plan.size.x(), street, middle), model, street_node, materials);
+        derive_ground(plan, streets, "", ground_lot(plan.size.x(), street, middle), model, street_node,
+                      materials);
     }
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c <= columns; ++c)
             add_street(c * (cell.x() + street), street + r * (cell.y() + street), street, cell.y());
     for (const CityLot& lot : plan.lots)
-        derive_ground(plan, streets, "Block", ground_lot(cell.x(), cell.y(), lot.center), model, street_node, materials);
+        derive_ground(plan, streets, "Block", ground_lot(cell.x(), cell.y(), lot.center), model, street_node,
+                      materials);
     return model;
 }
 
 // A design's building derived under `parent` on its lot centred at `center`.
-int derive_design(const CityPlan& plan, std::size_t design, const Eigen::Vector3f& center, Model& model, int parent,
-                  MaterialCache& materials, const std::string& name) {
+int derive_design(const CityPlan& plan, std::size_t design, const Eigen::Vector3f& center, Model& model,
+                  int parent, MaterialCache& materials, const std::string& name) {
     const BuildingDesign& d = plan.designs.at(design);
-    int building = derive(plan.kinds[d.kind], "", ground_lot(d.lot.x(), d.lot.y(), center), d.seed, model, parent,
-                          materials, plan.options.limits);
+    int building = derive(plan.kinds[d.kind], "", ground_lot(d.lot.x(), d.lot.y(), center), d.seed, model,
+                          parent, materials, plan.options.limits);
     model.nodes[building].name = name;
     return building;
 }
@@ -175,7 +179,8 @@ Model generate_city(const CityOptions& options) {
     CityPlan plan = plan_city(options);
     MaterialCache materials;  // one for the whole model: each material and texture once
     Model model = make_streets(plan, materials);
-    for (const CityLot& lot : plan.lots) derive_design(plan, lot.design, lot.center, model, 0, materials, lot.name);
+    for (const CityLot& lot : plan.lots)
+        derive_design(plan, lot.design, lot.center, model, 0, materials, lot.name);
     return model;
 }
 

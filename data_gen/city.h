@@ -14,12 +14,12 @@ namespace boxlod {
 struct CityOptions {
     int buildings = 9;
     std::uint64_t seed = 0;
-    float street_width = 10;                                        // metres
+    float street_width = 10;                                            // metres
     std::vector<std::string> kinds = {"house", "office", "classical"};  // sample grammars to draw from
     // Distinct building designs the lots draw from (as a city repeats its
     // catalogue of houses); 0: every lot a design of its own.
     int designs = 0;
-    DerivationLimits limits;                                        // per building
+    DerivationLimits limits;  // per building
 };
 constexpr NumberRange city_buildings_range{1, 10000};
 constexpr NumberRange city_designs_range{0, 10000};

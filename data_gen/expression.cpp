@@ -11,8 +11,9 @@ struct Function {
     const char* name;
     int arity;
 };
-constexpr Function functions[] = {{"rand", 2}, {"min", 2},  {"max", 2}, {"floor", 1}, {"ceil", 1}, {"round", 1},
-                                  {"abs", 1},  {"sqrt", 1}, {"sin", 1}, {"cos", 1},   {"tan", 1}};
+constexpr Function functions[] = {{"rand", 2}, {"min", 2},   {"max", 2}, {"floor", 1},
+                                  {"ceil", 1}, {"round", 1}, {"abs", 1}, {"sqrt", 1},
+                                  {"sin", 1},  {"cos", 1},   {"tan", 1}};
 
 double degrees(double value) { return value * std::numbers::pi / 180; }
 
@@ -45,10 +46,10 @@ double binary(const std::string& op, double a, double b) {
     return a != b;  // "!="
 }
 
-double evaluate_unchecked(const Expression& e, const VariableLookup& lookup, Pcg32& random, const std::string& file) {
+double evaluate_unchecked(const Expression& e, const VariableLookup& lookup, Pcg32& random,
+                          const std::string& file) {
     switch (e.kind) {
-    case Expression::Kind::number:
-        return e.value;
+    case Expression::Kind::number: return e.value;
     case Expression::Kind::variable: {
         double value = 0;
         if (!lookup(e.name, value)) throw_grammar_error(file, e.place, "unknown variable '" + e.name + "'");
@@ -67,7 +68,8 @@ double evaluate_unchecked(const Expression& e, const VariableLookup& lookup, Pcg
     }
     case Expression::Kind::call: {
         std::vector<double> arguments;
-        for (const Expression& operand : e.operands) arguments.push_back(evaluate_unchecked(operand, lookup, random, file));
+        for (const Expression& operand : e.operands)
+            arguments.push_back(evaluate_unchecked(operand, lookup, random, file));
         return call(e, arguments, random);
     }
     }
@@ -76,9 +78,11 @@ double evaluate_unchecked(const Expression& e, const VariableLookup& lookup, Pcg
 
 }  // namespace
 
-double evaluate(const Expression& expression, const VariableLookup& lookup, Pcg32& random, const std::string& file) {
+double evaluate(const Expression& expression, const VariableLookup& lookup, Pcg32& random,
+                const std::string& file) {
     double value = evaluate_unchecked(expression, lookup, random, file);
-    if (!std::isfinite(value)) throw_grammar_error(file, expression.place, "the expression's value is not a finite number");
+    if (!std::isfinite(value))
+        throw_grammar_error(file, expression.place, "the expression's value is not a finite number");
     return value;
 }
 

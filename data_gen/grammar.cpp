@@ -6,11 +6,16 @@ namespace boxlod {
 namespace {
 
 constexpr EnumEntry<FaceSelector> face_selector_table[] = {
-    {FaceSelector::front, "front", "the front face"},   {FaceSelector::back, "back", "the back face"},
-    {FaceSelector::left, "left", "the left face"},      {FaceSelector::right, "right", "the right face"},
-    {FaceSelector::top, "top", "the top face"},         {FaceSelector::bottom, "bottom", "the bottom face"},
-    {FaceSelector::side, "side", "left and right"},     {FaceSelector::vertical, "vertical", "all but top and bottom"},
-    {FaceSelector::horizontal, "horizontal", "top and bottom"}, {FaceSelector::all, "all", "every face"},
+    {FaceSelector::front, "front", "the front face"},
+    {FaceSelector::back, "back", "the back face"},
+    {FaceSelector::left, "left", "the left face"},
+    {FaceSelector::right, "right", "the right face"},
+    {FaceSelector::top, "top", "the top face"},
+    {FaceSelector::bottom, "bottom", "the bottom face"},
+    {FaceSelector::side, "side", "left and right"},
+    {FaceSelector::vertical, "vertical", "all but top and bottom"},
+    {FaceSelector::horizontal, "horizontal", "top and bottom"},
+    {FaceSelector::all, "all", "every face"},
 };
 
 constexpr EnumEntry<Operation::Kind> operation_kind_table[] = {
@@ -44,7 +49,8 @@ bool selects(FaceSelector selector, const std::string& face) {
 }
 
 std::string grammar_message(const std::string& file, SourcePlace place, const std::string& what) {
-    std::string message = file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column) + ": " + what;
+    std::string message =
+        file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column) + ": " + what;
     for (char& c : message)
         if (c == '\n' || c == '\r') c = ' ';
     return message;

@@ -111,8 +111,8 @@ struct Attribute {
 };
 
 struct Grammar {
-    std::string file;  // names the grammar in every message
-    std::string directory;  // where asset paths are resolved ("" = working directory)
+    std::string file;                   // names the grammar in every message
+    std::string directory;              // where asset paths are resolved ("" = working directory)
     std::vector<Attribute> attributes;  // evaluated in order, each may use the earlier ones
     std::vector<Rule> rules;            // rules[0] is the default start symbol
     std::map<std::string, std::size_t> rule_index;

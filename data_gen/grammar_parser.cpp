@@ -16,11 +16,14 @@ namespace {
 
 const std::set<std::string> keywords = {"attr", "case", "else", "NIL"};
 
-bool reserved(const std::string& name) { return keywords.count(name) || enum_from_name(operation_kinds(), name); }
+bool reserved(const std::string& name) {
+    return keywords.count(name) || enum_from_name(operation_kinds(), name);
+}
 
 class Parser {
 public:
-    Parser(std::vector<Token> tokens, std::string file) : tokens_(std::move(tokens)), file_(std::move(file)) {}
+    Parser(std::vector<Token> tokens, std::string file)
+        : tokens_(std::move(tokens)), file_(std::move(file)) {}
 
     Grammar parse() {
         Grammar grammar;
@@ -31,7 +34,9 @@ public:
             } else if (peek().kind == Token::Kind::identifier && starts_rule(position_)) {
                 Rule rule = parse_rule();
                 if (grammar.rule_index.count(rule.symbol))
-                    throw_grammar_error(file_, rule.place, "a second rule for '" + rule.symbol + "' (one rule per symbol; use alternatives)");
+                    throw_grammar_error(
+                        file_, rule.place,
+                        "a second rule for '" + rule.symbol + "' (one rule per symbol; use alternatives)");
                 grammar.rule_index[rule.symbol] = grammar.rules.size();
                 grammar.rules.push_back(std::move(rule));
             } else {
@@ -57,10 +62,14 @@ private:
         if (++depth_ > max_nesting_depth) throw_grammar_error(file_, peek().place, nesting_message());
     }
 
-    const Token& peek(std::size_t ahead = 0) const { return tokens_[std::min(position_ + ahead, tokens_.size() - 1)]; }
+    const Token& peek(std::size_t ahead = 0) const {
+        return tokens_[std::min(position_ + ahead, tokens_.size() - 1)];
+    }
     const Token& take() { return tokens_[std::min(position_++, tokens_.size() - 1)]; }
     bool is(const char* text) const { return peek().kind == Token::Kind::punctuation && peek().text == text; }
-    bool is_identifier(const char* text) const { return peek().kind == Token::Kind::identifier && peek().text == text; }
+    bool is_identifier(const char* text) const {
+        return peek().kind == Token::Kind::identifier && peek().text == text;
+    }
     [[noreturn]] void fail(const std::string& expected) const {
         throw_grammar_error(file_, peek().place, "expected " + expected + ", found " + describe(peek()));
     }
@@ -85,7 +94,9 @@ private:
             int depth = 0;
             for (; tokens_[next].kind != Token::Kind::end; ++next) {
                 if (tokens_[next].text == "(" && tokens_[next].kind == Token::Kind::punctuation) ++depth;
-                if (tokens_[next].text == ")" && tokens_[next].kind == Token::Kind::punctuation && --depth == 0) break;
+                if (tokens_[next].text == ")" && tokens_[next].kind == Token::Kind::punctuation &&
+                    --depth == 0)
+                    break;
             }
             if (tokens_[next].kind == Token::Kind::end) return false;
             ++next;
@@ -108,7 +119,8 @@ private:
         rule.place = peek().place;
         rule.symbol = take().text;
         if (reserved(rule.symbol))
-            throw_grammar_error(file_, rule.place, "'" + rule.symbol + "' is a reserved word, not a symbol name");
+            throw_grammar_error(file_, rule.place,
+                                "'" + rule.symbol + "' is a reserved word, not a symbol name");
         if (is("(")) {
             take();
             while (!is(")")) {
@@ -163,7 +175,8 @@ private:
         for (;;) {
             const Token& token = peek();
             if (token.kind == Token::Kind::end || is("|") || is("}") || is("]")) break;
-            if (token.kind == Token::Kind::identifier && (token.text == "attr" || starts_rule(position_))) break;
+            if (token.kind == Token::Kind::identifier && (token.text == "attr" || starts_rule(position_)))
+                break;
             sequence.push_back(parse_operation());
         }
         return sequence;
@@ -187,7 +200,8 @@ private:
             op.kind = Operation::Kind::nil;
             return op;
         }
-        if (keywords.count(name)) throw_grammar_error(file_, op.place, "'" + name + "' cannot start an operation");
+        if (keywords.count(name))
+            throw_grammar_error(file_, op.place, "'" + name + "' cannot start an operation");
         const std::optional<Operation::Kind> kind = enum_from_name(operation_kinds(), name);
         if (!kind) {
             op.kind = Operation::Kind::symbol;
@@ -244,8 +258,10 @@ private:
         op.name = expect_identifier(material ? "a material name" : "a texture name");
         bool known = material ? is_material_name(op.name) : (is_texture_name(op.name) || op.name == "none");
         if (!known)
-            throw_grammar_error(file_, at, std::string("unknown ") + (material ? "material" : "texture") + " '" + op.name +
-                                               "' (known: " + (material ? material_names() : texture_names() + ", none") + ")");
+            throw_grammar_error(
+                file_, at,
+                std::string("unknown ") + (material ? "material" : "texture") + " '" + op.name +
+                    "' (known: " + (material ? material_names() : texture_names() + ", none") + ")");
         expect(")");
     }
 
@@ -259,8 +275,9 @@ private:
         } else {
             op.name = expect_identifier("a primitive (" + builtin_primitive_names() + ") or a \"file\"");
             if (!is_builtin_primitive(op.name))
-                throw_grammar_error(file_, at, "unknown primitive '" + op.name + "' (known: " + builtin_primitive_names() +
-                                                   "; put asset files in quotes)");
+                throw_grammar_error(file_, at,
+                                    "unknown primitive '" + op.name + "' (known: " +
+                                        builtin_primitive_names() + "; put asset files in quotes)");
         }
         if (is(",")) {
             take();
@@ -275,7 +292,8 @@ private:
         SourcePlace at = peek().place;
         op.name = take().text;
         op.name_is_text = true;
-        if (op.name.size() != 7 || op.name[0] != '#' || op.name.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
+        if (op.name.size() != 7 || op.name[0] != '#' ||
+            op.name.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
             throw_grammar_error(file_, at, "expected a colour \"#rrggbb\"");
         expect(")");
     }
@@ -295,8 +313,10 @@ private:
         op.arguments = parse_arguments(relative);
         std::size_t wanted = op.kind == Operation::Kind::extrude ? 1 : 3;
         if (op.arguments.size() != wanted)
-            throw_grammar_error(file_, op.place, name + " takes " + std::to_string(wanted) + " argument" +
-                                                     (wanted == 1 ? "" : "s") + ", got " + std::to_string(op.arguments.size()));
+            throw_grammar_error(file_, op.place,
+                                name + " takes " + std::to_string(wanted) + " argument" +
+                                    (wanted == 1 ? "" : "s") + ", got " +
+                                    std::to_string(op.arguments.size()));
     }
 
     // '(' [size {',' size}] ')'; sizes may be 'relative when `relative` is set.
@@ -325,7 +345,8 @@ private:
             entry.place = peek().place;
             if (is("{")) {
                 if (!allow_repeat) fail("a size (repeat groups do not nest)");
-                if (has_repeat) throw_grammar_error(file_, entry.place, "only one repeat group '{ ... }*' per split");
+                if (has_repeat)
+                    throw_grammar_error(file_, entry.place, "only one repeat group '{ ... }*' per split");
                 has_repeat = true;
                 take();
                 entry.repeated = parse_split_entries(false);
@@ -355,11 +376,13 @@ private:
         for (;;) {
             SplitEntry entry;
             entry.place = peek().place;
-            const std::string selector = expect_identifier("a face selector (" + enum_names(face_selectors()) + ")");
+            const std::string selector =
+                expect_identifier("a face selector (" + enum_names(face_selectors()) + ")");
             entry.selector = enum_from_name(face_selectors(), selector);
             if (!entry.selector)
-                throw_grammar_error(file_, entry.place,
-                                    "unknown face selector '" + selector + "' (known: " + enum_names(face_selectors()) + ")");
+                throw_grammar_error(
+                    file_, entry.place,
+                    "unknown face selector '" + selector + "' (known: " + enum_names(face_selectors()) + ")");
             expect(":");
             entry.successor = parse_sequence();
             entries.push_back(std::move(entry));
@@ -380,7 +403,8 @@ private:
         for (int links = 0;; ++links) {
             const Token& token = peek();
             bool matches = false;
-            for (const std::string& op : levels[level]) matches = matches || (token.kind == Token::Kind::punctuation && token.text == op);
+            for (const std::string& op : levels[level])
+                matches = matches || (token.kind == Token::Kind::punctuation && token.text == op);
             // "30% :" starts the next alternative, so % before ':' is not an operator.
             if (!matches || (token.text == "%" && peek(1).text == ":")) {
                 depth_ -= links;
@@ -458,8 +482,9 @@ struct Checker {
             int arity = function_arity(e.name);
             if (arity < 0) throw_grammar_error(grammar.file, e.place, "unknown function '" + e.name + "'");
             if (arity != int(e.operands.size()))
-                throw_grammar_error(grammar.file, e.place, e.name + " takes " + std::to_string(arity) + " argument(s), got " +
-                                                               std::to_string(e.operands.size()));
+                throw_grammar_error(grammar.file, e.place,
+                                    e.name + " takes " + std::to_string(arity) + " argument(s), got " +
+                                        std::to_string(e.operands.size()));
         }
         for (const Expression& operand : e.operands) expression(operand, parameters);
     }
@@ -471,10 +496,13 @@ struct Checker {
             sequence(op.body, parameters);
             if (op.kind != Operation::Kind::symbol) continue;
             const Rule* rule = grammar.find(op.name);
-            if (!rule) throw_grammar_error(grammar.file, op.place, "unknown symbol '" + op.name + "' (no rule '" + op.name + " --> ...')");
+            if (!rule)
+                throw_grammar_error(grammar.file, op.place,
+                                    "unknown symbol '" + op.name + "' (no rule '" + op.name + " --> ...')");
             if (rule->parameters.size() != op.arguments.size())
-                throw_grammar_error(grammar.file, op.place, op.name + " takes " + std::to_string(rule->parameters.size()) +
-                                                                " argument(s), got " + std::to_string(op.arguments.size()));
+                throw_grammar_error(grammar.file, op.place,
+                                    op.name + " takes " + std::to_string(rule->parameters.size()) +
+                                        " argument(s), got " + std::to_string(op.arguments.size()));
         }
     }
 
@@ -500,16 +528,20 @@ void check(const Grammar& grammar) {
             bool last = a + 1 == rule.alternatives.size();
             if (alternative.kind == Alternative::Kind::otherwise && !last)
                 throw_grammar_error(grammar.file, alternative.place, "'else' must be the last alternative");
-            if (a > 0 && alternative.kind != Alternative::Kind::otherwise && alternative.kind != rule.alternatives[0].kind)
-                throw_grammar_error(grammar.file, alternative.place, "do not mix 'N%' and 'case' alternatives in one rule");
+            if (a > 0 && alternative.kind != Alternative::Kind::otherwise &&
+                alternative.kind != rule.alternatives[0].kind)
+                throw_grammar_error(grammar.file, alternative.place,
+                                    "do not mix 'N%' and 'case' alternatives in one rule");
             if (alternative.kind == Alternative::Kind::probability && alternative.percent < 0)
                 throw_grammar_error(grammar.file, alternative.place, "a probability cannot be negative");
             if (alternative.kind == Alternative::Kind::probability) total_percent += alternative.percent;
-            if (alternative.kind == Alternative::Kind::condition) checker.expression(alternative.condition, rule.parameters);
+            if (alternative.kind == Alternative::Kind::condition)
+                checker.expression(alternative.condition, rule.parameters);
             checker.sequence(alternative.body, rule.parameters);
         }
         if (total_percent > 100 + 1e-9)
-            throw_grammar_error(grammar.file, rule.place, "the probabilities of '" + rule.symbol + "' add up to more than 100%");
+            throw_grammar_error(grammar.file, rule.place,
+                                "the probabilities of '" + rule.symbol + "' add up to more than 100%");
     }
 }
 
@@ -523,7 +555,8 @@ Grammar parse_grammar(const std::string& text, const std::string& file, const st
 }
 
 Grammar read_grammar(const std::string& path) {
-    return parse_grammar(read_input_file(path, "grammar file"), path, std::filesystem::path(path).parent_path().string());
+    return parse_grammar(read_input_file(path, "grammar file"), path,
+                         std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace boxlod

@@ -8,8 +8,9 @@ namespace boxlod {
 namespace {
 
 // Longest punctuation first, so "-->" is not read as "-" "-" ">".
-const char* const punctuation[] = {"-->", "<=", ">=", "==", "!=", "&&", "||", "(", ")", "{", "}", "[", "]", "|",
-                                   ":",   ",",  "*",  "'",  "~",  "%",  "+",  "-", "/", "<", ">", "=", "!"};
+const char* const punctuation[] = {"-->", "<=", ">=", "==", "!=", "&&", "||", "(", ")",
+                                   "{",   "}",  "[",  "]",  "|",  ":",  ",",  "*", "'",
+                                   "~",   "%",  "+",  "-",  "/",  "<",  ">",  "=", "!"};
 
 bool is(int (*test)(int), char c) { return test(static_cast<unsigned char>(c)) != 0; }
 
@@ -21,7 +22,8 @@ std::pair<Token, std::size_t> read_token(const std::string& text, std::size_t i,
     const char c = text[i];
     if (is(std::isalpha, c) || c == '_') {
         std::size_t end = i;
-        while (end < text.size() && (is(std::isalnum, text[end]) || text[end] == '_' || text[end] == '.')) ++end;
+        while (end < text.size() && (is(std::isalnum, text[end]) || text[end] == '_' || text[end] == '.'))
+            ++end;
         token.kind = Token::Kind::identifier;
         token.text = text.substr(i, end - i);
         return {token, end - i};
@@ -58,8 +60,10 @@ std::vector<Token> tokenize(const std::string& text, const std::string& file) {
     SourcePlace place{1, 1};
     auto advance = [&](std::size_t n) {
         for (std::size_t k = 0; k < n && i < text.size(); ++k, ++i) {
-            if (text[i] == '\n') place = {place.line + 1, 1};
-            else ++place.column;
+            if (text[i] == '\n')
+                place = {place.line + 1, 1};
+            else
+                ++place.column;
         }
     };
     while (i < text.size()) {

@@ -1,9 +1,9 @@
 #include "data_gen/interpreter.h"
 
 #include "base/input_error.h"
+#include "base/random.h"
 #include "data_gen/expression.h"
 #include "data_gen/primitives.h"
-#include "base/random.h"
 #include "data_gen/split.h"
 #include "toolkit/formats/model_io.h"
 
@@ -50,7 +50,8 @@ bool find_attribute(const Attributes& attributes, const std::string& name, doubl
 
 class Interpreter {
 public:
-    Interpreter(const Grammar& grammar, std::uint64_t seed, Model& model, MaterialCache& materials, const DerivationLimits& limits)
+    Interpreter(const Grammar& grammar, std::uint64_t seed, Model& model, MaterialCache& materials,
+                const DerivationLimits& limits)
         : grammar_(grammar), seed_(seed), model_(model), materials_(materials), limits_(limits) {
         attributes_ = evaluate_attributes(grammar, seed);
     }
@@ -58,24 +59,30 @@ public:
     static Attributes evaluate_attributes(const Grammar& grammar, std::uint64_t seed) {
         Attributes values;
         Pcg32 random(seed, 0);  // stream 0: the attributes; nodes use hashed identities
-        VariableLookup lookup = [&](const std::string& name, double& value) { return find_attribute(values, name, value); };
+        VariableLookup lookup = [&](const std::string& name, double& value) {
+            return find_attribute(values, name, value);
+        };
         for (const Attribute& attribute : grammar.attributes)
             values.emplace_back(attribute.name, evaluate(attribute.value, lookup, random, grammar.file));
         return values;
     }
 
-    int apply(const Rule& rule, std::vector<double> arguments, const Shape& shape, int parent, std::uint64_t identity,
-              int depth, SourcePlace called_from) {
+    int apply(const Rule& rule, std::vector<double> arguments, const Shape& shape, int parent,
+              std::uint64_t identity, int depth, SourcePlace called_from) {
         if (depth > limits_.max_depth)
-            throw_grammar_error(grammar_.file, called_from, "rule '" + rule.symbol + "' nested deeper than " +
-                                                                std::to_string(limits_.max_depth) + " levels (recursion that never ends?)");
+            throw_grammar_error(grammar_.file, called_from,
+                                "rule '" + rule.symbol + "' nested deeper than " +
+                                    std::to_string(limits_.max_depth) +
+                                    " levels (recursion that never ends?)");
         if (++nodes_made_ > limits_.max_nodes)
-            throw_grammar_error(grammar_.file, called_from, "the derivation makes more than " + std::to_string(limits_.max_nodes) +
-                                                                " nodes (recursion that never ends?)");
+            throw_grammar_error(grammar_.file, called_from,
+                                "the derivation makes more than " + std::to_string(limits_.max_nodes) +
+                                    " nodes (recursion that never ends?)");
         int node = add_node(model_, parent, rule.symbol);
         model_.nodes[node].rule = rule.symbol;
         model_.nodes[node].scope = to_scope(shape.scope);
-        Application application{node, &rule, std::move(arguments), shape.scope, identity, Pcg32(seed_, identity), depth};
+        Application application{
+            node, &rule, std::move(arguments), shape.scope, identity, Pcg32(seed_, identity), depth};
         Shape current = shape;
         if (const Alternative* chosen = choose(application, current)) run(chosen->body, current, application);
         return node;
@@ -91,7 +98,9 @@ private:
     std::map<std::string, std::vector<Primitive>> assets_;
     std::size_t nodes_made_ = 0;
 
-    [[noreturn]] void fail(SourcePlace place, const std::string& what) const { throw_grammar_error(grammar_.file, place, what); }
+    [[noreturn]] void fail(SourcePlace place, const std::string& what) const {
+        throw_grammar_error(grammar_.file, place, what);
+    }
 
     double value(const Expression& expression, const Shape& shape, Application& application) {
         VariableLookup lookup = [&](const std::string& name, double& out) {
@@ -109,7 +118,8 @@ private:
     const Alternative* choose(Application& application, const Shape& shape) {
         const std::vector<Alternative>& alternatives = application.rule->alternatives;
         if (alternatives[0].kind == Alternative::Kind::always) return &alternatives[0];
-        double draw = alternatives[0].kind == Alternative::Kind::probability ? application.random.uniform() * 100 : 0;
+        double draw =
+            alternatives[0].kind == Alternative::Kind::probability ? application.random.uniform() * 100 : 0;
         double cumulative = 0;
         for (const Alternative& alternative : alternatives) {
             if (alternative.kind == Alternative::Kind::otherwise) return &alternative;
@@ -133,7 +143,8 @@ private:
             case Operation::Kind::split: split(op, shape, application); break;
             case Operation::Kind::component: component(op, shape, application); break;
             case Operation::Kind::translate:
-                for (int a = 0; a < 3; ++a) shape.scope.origin += shape.scope.axes.col(a) * float(amount(op, a, shape, application));
+                for (int a = 0; a < 3; ++a)
+                    shape.scope.origin += shape.scope.axes.col(a) * float(amount(op, a, shape, application));
                 break;
             case Operation::Kind::rotate: rotate(op, shape, application); break;
             case Operation::Kind::scale: {
@@ -162,17 +173,18 @@ private:
             }
             }
             if (!in_world(shape.scope))
-                fail(op.place, "the scope leaves the world: a coordinate or size beyond " + std::to_string(long(max_world_extent)) +
-                                   " m, or not a number");
+                fail(op.place, "the scope leaves the world: a coordinate or size beyond " +
+                                   std::to_string(long(max_world_extent)) + " m, or not a number");
         }
         return true;
     }
 
     static bool in_world(const ScopeBox& scope) {
-        auto bounded = [](const auto& v) { return v.allFinite() && v.cwiseAbs().maxCoeff() <= max_world_extent; };
+        auto bounded = [](const auto& v) {
+            return v.allFinite() && v.cwiseAbs().maxCoeff() <= max_world_extent;
+        };
         return bounded(scope.origin) && bounded(scope.size) && scope.axes.allFinite();
     }
-
 
     // Argument `a` of t() or s(): metres, or 'relative to the scope's size.
     double amount(const Operation& op, int a, const Shape& shape, Application& application) {
@@ -183,9 +195,11 @@ private:
     void call(const Operation& op, const Shape& shape, Application& application) {
         const Rule* rule = grammar_.find(op.name);
         std::vector<double> arguments;
-        for (const Size& argument : op.arguments) arguments.push_back(value(argument.value, shape, application));
+        for (const Size& argument : op.arguments)
+            arguments.push_back(value(argument.value, shape, application));
         std::uint64_t identity = hash_combine(application.identity, application.children++);
-        apply(*rule, std::move(arguments), shape, application.node, identity, application.depth + 1, op.place);
+        apply(*rule, std::move(arguments), shape, application.node, identity, application.depth + 1,
+              op.place);
     }
 
     void extrude(const Operation& op, Shape& shape, Application& application) {
@@ -197,7 +211,9 @@ private:
         } else {
             for (int candidate : {1, 2, 0})  // a lot is flat in y, a facade in z
                 if (axis < 0 && shape.scope.size[candidate] <= 1e-6f) axis = candidate;
-            if (axis < 0) fail(op.place, "extrude() needs a flat scope; name the axis for a solid one, e.g. extrude(y, 3)");
+            if (axis < 0)
+                fail(op.place,
+                     "extrude() needs a flat scope; name the axis for a solid one, e.g. extrude(y, 3)");
         }
         shape.scope.size[axis] = float(height);
     }
@@ -220,8 +236,9 @@ private:
         SplitLayout layout = layout_split(slots, extent, limits_.max_nodes);
         if (!layout.fits) {
             char text[160];
-            std::snprintf(text, sizeof text, "split(%s) in rule '%s' needs %.4g m but the scope is %.4g m along %s", op.name.c_str(),
-                          application.rule->symbol.c_str(), layout.needed, extent, op.name.c_str());
+            std::snprintf(
+                text, sizeof text, "split(%s) in rule '%s' needs %.4g m but the scope is %.4g m along %s",
+                op.name.c_str(), application.rule->symbol.c_str(), layout.needed, extent, op.name.c_str());
             fail(op.place, text);
         }
         for (const SplitPiece& piece : layout.pieces) {
@@ -266,7 +283,8 @@ private:
             return {hex(1), hex(3), hex(5)};
         }
         Eigen::Vector3f c;
-        for (int k = 0; k < 3; ++k) c[k] = std::clamp(float(value(op.arguments[k].value, shape, application)), 0.0f, 1.0f);
+        for (int k = 0; k < 3; ++k)
+            c[k] = std::clamp(float(value(op.arguments[k].value, shape, application)), 0.0f, 1.0f);
         return c;
     }
 
@@ -275,14 +293,17 @@ private:
         if (op.name_is_text) {
             primitives = fitted_asset(op, shape.scope.size);
         } else {
-            int segments = op.arguments.empty() ? 12 : int(std::lround(value(op.arguments[0].value, shape, application)));
+            int segments = op.arguments.empty()
+                               ? 12
+                               : int(std::lround(value(op.arguments[0].value, shape, application)));
             if (segments < 3 || segments > 256) fail(op.place, "a cylinder needs 3 to 256 segments");
             primitives.push_back(builtin_primitive(op.name, shape.scope.size, segments));
         }
         for (Primitive& primitive : primitives) {
             if (primitive.indices.empty()) continue;
             place_in_world(primitive, shape.scope);
-            if (!op.name_is_text) planar_texture_coordinates(primitive, materials_.tile_metres(shape.appearance));
+            if (!op.name_is_text)
+                planar_texture_coordinates(primitive, materials_.tile_metres(shape.appearance));
             primitive.material = materials_.index(model_, shape.appearance);
             model_.nodes[application.node].primitives.push_back(std::move(primitive));
         }
@@ -309,13 +330,15 @@ private:
         for (const Primitive& primitive : found->second)
             for (const Eigen::Vector3f& p : primitive.positions) bounds.add(p);
         Eigen::Vector3f extent = bounds.size(), stretch;
-        for (int a = 0; a < 3; ++a) stretch[a] = extent[a] > 1e-9f && size[a] > 1e-6f ? size[a] / extent[a] : 1.0f;
+        for (int a = 0; a < 3; ++a)
+            stretch[a] = extent[a] > 1e-9f && size[a] > 1e-6f ? size[a] / extent[a] : 1.0f;
         std::vector<Primitive> fitted = found->second;
         for (Primitive& primitive : fitted) {
             for (Eigen::Vector3f& p : primitive.positions) p = (p - bounds.min).cwiseProduct(stretch);
             // Normals take the inverse scale, tangents the scale itself.
             for (Eigen::Vector3f& n : primitive.normals) n = n.cwiseQuotient(stretch).normalized();
-            for (Eigen::Vector4f& t : primitive.tangents) t.head<3>() = t.head<3>().cwiseProduct(stretch).normalized();
+            for (Eigen::Vector4f& t : primitive.tangents)
+                t.head<3>() = t.head<3>().cwiseProduct(stretch).normalized();
         }
         return fitted;
     }
@@ -323,12 +346,13 @@ private:
 
 }  // namespace
 
-int derive(const Grammar& grammar, const std::string& start, const ScopeBox& lot, std::uint64_t seed, Model& model, int parent,
-           MaterialCache& materials, const DerivationLimits& limits) {
+int derive(const Grammar& grammar, const std::string& start, const ScopeBox& lot, std::uint64_t seed,
+           Model& model, int parent, MaterialCache& materials, const DerivationLimits& limits) {
     const Rule* rule = start.empty() ? &grammar.rules[0] : grammar.find(start);
     if (!rule) throw_input_error(grammar.file, "", "unknown start symbol '" + start + "'");
     if (!rule->parameters.empty())
-        throw_grammar_error(grammar.file, rule->place, "the start rule '" + rule->symbol + "' cannot take parameters");
+        throw_grammar_error(grammar.file, rule->place,
+                            "the start rule '" + rule->symbol + "' cannot take parameters");
     Interpreter interpreter(grammar, seed, model, materials, limits);
     Shape shape{lot, Appearance{}};
     return interpreter.apply(*rule, {}, shape, parent, 1, 0, rule->place);
@@ -353,11 +377,14 @@ ScopeBox ground_lot(float width, float depth, const Eigen::Vector3f& center) {
 Model generate_building(const Grammar& grammar, const BuildingOptions& options) {
     Eigen::Vector2f lot = options.lot.value_or(default_lot(grammar, options.seed));
     if (!(lot.array() > 0).all() || !(lot.array() <= max_world_extent).all())
-        throw_input_error(grammar.file, "", "the lot's width and depth must be in (0, " + std::to_string(long(max_world_extent)) + "] m");
+        throw_input_error(
+            grammar.file, "",
+            "the lot's width and depth must be in (0, " + std::to_string(long(max_world_extent)) + "] m");
     Model model;
     model.source = grammar.file;
     MaterialCache materials;
-    derive(grammar, options.start, ground_lot(lot.x(), lot.y()), options.seed, model, -1, materials, options.limits);
+    derive(grammar, options.start, ground_lot(lot.x(), lot.y()), options.seed, model, -1, materials,
+           options.limits);
     return model;
 }
 

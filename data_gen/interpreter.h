@@ -30,8 +30,8 @@ struct DerivationLimits {
 // derivation tree under `parent` (-1: as the model's root). Random choices
 // come from streams keyed by `seed` and each node's place in the tree.
 // Returns the new subtree's root node.
-int derive(const Grammar& grammar, const std::string& start, const ScopeBox& lot, std::uint64_t seed, Model& model,
-           int parent, MaterialCache& materials, const DerivationLimits& limits = {});
+int derive(const Grammar& grammar, const std::string& start, const ScopeBox& lot, std::uint64_t seed,
+           Model& model, int parent, MaterialCache& materials, const DerivationLimits& limits = {});
 
 // The lot a grammar asks for with `attr lot_width = ...` and
 // `attr lot_depth = ...`; 20 x 20 m when it does not say.
@@ -41,7 +41,7 @@ Eigen::Vector2f default_lot(const Grammar& grammar, std::uint64_t seed);
 ScopeBox ground_lot(float width, float depth, const Eigen::Vector3f& center = Eigen::Vector3f::Zero());
 
 struct BuildingOptions {
-    std::string start;                  // "" = the grammar's first rule
+    std::string start;                   // "" = the grammar's first rule
     std::optional<Eigen::Vector2f> lot;  // width x depth; default: default_lot()
     std::uint64_t seed = 0;
     DerivationLimits limits;

@@ -17,11 +17,11 @@ struct BuiltinMaterial {
 };
 
 const BuiltinMaterial builtins[] = {
-    {"default", 200, 200, 200, "", 0.2f, 32},         {"plaster", 255, 255, 255, "plaster", 0.1f, 16},
-    {"brick", 255, 255, 255, "brick", 0.1f, 16},       {"roof_tiles", 255, 255, 255, "roof_tiles", 0.2f, 24},
-    {"glass", 255, 255, 255, "glass", 0.9f, 96},       {"wood", 255, 255, 255, "wood", 0.15f, 24},
-    {"stone", 255, 255, 255, "stone", 0.15f, 24},      {"concrete", 180, 180, 175, "plaster", 0.1f, 16},
-    {"metal", 95, 100, 108, "", 0.7f, 64},             {"asphalt", 70, 70, 74, "stone", 0.05f, 8},
+    {"default", 200, 200, 200, "", 0.2f, 32},     {"plaster", 255, 255, 255, "plaster", 0.1f, 16},
+    {"brick", 255, 255, 255, "brick", 0.1f, 16},  {"roof_tiles", 255, 255, 255, "roof_tiles", 0.2f, 24},
+    {"glass", 255, 255, 255, "glass", 0.9f, 96},  {"wood", 255, 255, 255, "wood", 0.15f, 24},
+    {"stone", 255, 255, 255, "stone", 0.15f, 24}, {"concrete", 180, 180, 175, "plaster", 0.1f, 16},
+    {"metal", 95, 100, 108, "", 0.7f, 64},        {"asphalt", 70, 70, 74, "stone", 0.05f, 8},
     {"grass", 86, 125, 62, "", 0.05f, 8},
 };
 
@@ -41,8 +41,8 @@ std::string key_of(const Appearance& appearance) {
     if (appearance.color) {
         char hex[8];
         const Eigen::Vector3f& c = *appearance.color;
-        std::snprintf(hex, sizeof hex, "%02x%02x%02x", int(std::lround(c.x() * 255)), int(std::lround(c.y() * 255)),
-                      int(std::lround(c.z() * 255)));
+        std::snprintf(hex, sizeof hex, "%02x%02x%02x", int(std::lround(c.x() * 255)),
+                      int(std::lround(c.y() * 255)), int(std::lround(c.z() * 255)));
         key += std::string("_") + hex;
     }
     if (!appearance.texture.empty()) key += "_" + appearance.texture;
@@ -69,8 +69,11 @@ int MaterialCache::index(Model& model, const Appearance& appearance) {
     const BuiltinMaterial& base = builtin(appearance.material);
     Material material;
     material.name = key;
-    Eigen::Vector3f srgb = appearance.color.value_or(Eigen::Vector3f(base.red, base.green, base.blue) / 255.0f);
-    for (int c = 0; c < 3; ++c) material.base_color[c] = srgb_to_linear(std::uint8_t(std::lround(std::clamp(srgb[c], 0.0f, 1.0f) * 255)));
+    Eigen::Vector3f srgb =
+        appearance.color.value_or(Eigen::Vector3f(base.red, base.green, base.blue) / 255.0f);
+    for (int c = 0; c < 3; ++c)
+        material.base_color[c] =
+            srgb_to_linear(std::uint8_t(std::lround(std::clamp(srgb[c], 0.0f, 1.0f) * 255)));
     material.specular_color = Eigen::Vector3f::Constant(base.specular);
     material.shininess = base.shininess;
     if (std::string texture = texture_of(appearance); !texture.empty()) {

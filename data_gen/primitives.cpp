@@ -65,7 +65,9 @@ void add_hip(Primitive& primitive, const Vector3f& s) {
     // then turned a quarter around y when the scope is deeper than wide.
     bool turned = s.z() > s.x();
     float w = turned ? s.z() : s.x(), d = turned ? s.x() : s.z(), h = s.y(), r = d / 2;
-    auto place = [&](float x, float y, float z) { return turned ? Vector3f(z, y, w - x) : Vector3f(x, y, z); };
+    auto place = [&](float x, float y, float z) {
+        return turned ? Vector3f(z, y, w - x) : Vector3f(x, y, z);
+    };
     Vector3f a = place(0, 0, 0), b = place(w, 0, 0), c = place(w, 0, d), e = place(0, 0, d);
     Vector3f ridge_left = place(r, h, d / 2), ridge_right = place(w - r, h, d / 2);
     add_polygon(primitive, {e, c, ridge_right, ridge_left});
@@ -85,7 +87,8 @@ bool is_builtin_primitive(const std::string& name) {
 
 std::string builtin_primitive_names() { return "box, quad, cylinder, gable, hip"; }
 
-void add_polygon(Primitive& primitive, const std::vector<Vector3f>& points, const std::vector<Vector3f>& vertex_normals) {
+void add_polygon(Primitive& primitive, const std::vector<Vector3f>& points,
+                 const std::vector<Vector3f>& vertex_normals) {
     // Drop repeated corners (a hip roof on a square has no ridge).
     std::vector<Vector3f> corners;
     std::vector<Vector3f> corner_normals;
@@ -101,7 +104,8 @@ void add_polygon(Primitive& primitive, const std::vector<Vector3f>& points, cons
     if (corners.size() < 3) return;
     // Newell's method: the area-weighted normal of a planar polygon.
     Vector3f area = Vector3f::Zero();
-    for (std::size_t i = 0; i < corners.size(); ++i) area += corners[i].cross(corners[(i + 1) % corners.size()]);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        area += corners[i].cross(corners[(i + 1) % corners.size()]);
     if (area.norm() < 1e-9f) return;
     Vector3f normal = area.normalized();
     Vector3f tangent = (corners[1] - corners[0]).normalized();
@@ -122,9 +126,11 @@ void add_polygon(Primitive& primitive, const std::vector<Vector3f>& points, cons
 Primitive builtin_primitive(const std::string& name, const Vector3f& size, int segments) {
     Primitive primitive;
     if (name == "box") {
-        for (const ScopeFace& face : scope_faces(size)) add_rectangle(primitive, face.origin, face.u * face.width, face.v * face.height);
+        for (const ScopeFace& face : scope_faces(size))
+            add_rectangle(primitive, face.origin, face.u * face.width, face.v * face.height);
     } else if (name == "quad") {
-        add_rectangle(primitive, Vector3f(0, 0, size.z()), Vector3f(size.x(), 0, 0), Vector3f(0, size.y(), 0));
+        add_rectangle(primitive, Vector3f(0, 0, size.z()), Vector3f(size.x(), 0, 0),
+                      Vector3f(0, size.y(), 0));
     } else if (name == "cylinder") {
         add_cylinder(primitive, size, std::max(3, segments));
     } else if (name == "gable") {
@@ -146,7 +152,9 @@ void planar_texture_coordinates(Primitive& primitive, float tile_metres) {
     for (std::size_t i = 0; i < primitive.positions.size(); ++i) {
         Vector3f tangent = primitive.tangents[i].head<3>();
         Vector3f bitangent = primitive.normals[i].cross(tangent);
-        primitive.uvs[i] = Eigen::Vector2f(primitive.positions[i].dot(tangent), -primitive.positions[i].dot(bitangent)) / tile_metres;
+        primitive.uvs[i] =
+            Eigen::Vector2f(primitive.positions[i].dot(tangent), -primitive.positions[i].dot(bitangent)) /
+            tile_metres;
     }
 }
 

@@ -7,7 +7,8 @@ namespace boxlod {
 
 std::string sample_names() {
     std::string names;
-    for (const SampleGrammar& sample : sample_grammars()) names += (names.empty() ? "" : ", ") + std::string(sample.name);
+    for (const SampleGrammar& sample : sample_grammars())
+        names += (names.empty() ? "" : ", ") + std::string(sample.name);
     return names;
 }
 

@@ -29,11 +29,13 @@ SplitLayout layout_split(const std::vector<SplitSlot>& slots, double extent, std
         double room = extent - outside_fixed - outside_floating;
         double count = group_floating > 0 ? std::max(1.0, std::round(room / group_length))
                                           : std::floor(room / group_length + 1e-6);
-        std::size_t group_slots = std::count_if(slots.begin(), slots.end(), [](const SplitSlot& s) { return s.repeated; });
+        std::size_t group_slots =
+            std::count_if(slots.begin(), slots.end(), [](const SplitSlot& s) { return s.repeated; });
         count = std::clamp(count, 0.0, double(max_pieces / std::max<std::size_t>(1, group_slots)));
         repetitions = std::size_t(count);
         // The group's absolute parts must fit beside the others.
-        while (repetitions > 0 && outside_fixed + repetitions * group_fixed > extent + tolerance) --repetitions;
+        while (repetitions > 0 && outside_fixed + repetitions * group_fixed > extent + tolerance)
+            --repetitions;
     }
 
     std::vector<std::size_t> order;

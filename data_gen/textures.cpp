@@ -28,7 +28,9 @@ double value_noise(std::uint64_t seed, double u, double v, int cells) {
     double fx = x - x0, fy = y - y0;
     fx = fx * fx * (3 - 2 * fx);
     fy = fy * fy * (3 - 2 * fy);
-    auto at = [&](int i, int j) { return lattice(seed, ((i % cells) + cells) % cells, ((j % cells) + cells) % cells); };
+    auto at = [&](int i, int j) {
+        return lattice(seed, ((i % cells) + cells) % cells, ((j % cells) + cells) % cells);
+    };
     double top = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * fx;
     double bottom = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * fx;
     return top + (bottom - top) * fy;
@@ -66,7 +68,9 @@ Bond running_bond(double px, double py, int size, int block_width, int block_hei
     return {row, column, joint};
 }
 
-Eigen::Vector3d vary(const Eigen::Vector3d& color, double amount, double random) { return color * (1 + amount * (random * 2 - 1)); }
+Eigen::Vector3d vary(const Eigen::Vector3d& color, double amount, double random) {
+    return color * (1 + amount * (random * 2 - 1));
+}
 
 Sample brick(double px, double py, int size) {
     Bond bond = running_bond(px, py, size, size / 4, size / 16);
@@ -94,7 +98,8 @@ Sample roof_tiles(double px, double py, int size) {
     double grain = fractal_noise(31, u, v, 16);
     // Each tile is a rounded ridge, thickest at its lower edge where it overlaps the next row.
     double height = (0.35 + 0.45 * down) * (0.6 + 0.4 * std::sin(across * std::numbers::pi));
-    Eigen::Vector3d color = vary({168, 74, 44}, 0.15, lattice(32, column, row)) * (0.7 + 0.3 * height / 0.8 + 0.1 * grain);
+    Eigen::Vector3d color =
+        vary({168, 74, 44}, 0.15, lattice(32, column, row)) * (0.7 + 0.3 * height / 0.8 + 0.1 * grain);
     return {color, height};
 }
 
@@ -102,7 +107,8 @@ Sample glass(double px, double py, int size) {
     double u = px / size, v = py / size;
     // A soft diagonal reflection band over a sky-to-ground gradient.
     double band = std::exp(-std::pow((u + v - 0.9) * 4, 2));
-    Eigen::Vector3d color = Eigen::Vector3d(70, 92, 112) * (1.15 - 0.35 * v) + Eigen::Vector3d(60, 60, 55) * band;
+    Eigen::Vector3d color =
+        Eigen::Vector3d(70, 92, 112) * (1.15 - 0.35 * v) + Eigen::Vector3d(60, 60, 55) * band;
     return {color + Eigen::Vector3d::Constant(6 * fractal_noise(41, u, v, 8)), 0.5};
 }
 
@@ -122,7 +128,8 @@ Sample stone(double px, double py, int size) {
     double u = px / size, v = py / size;
     double grain = fractal_noise(61, u, v, 16);
     if (bond.joint_distance < 1.5) return {Eigen::Vector3d(140, 136, 128) * (0.9 + 0.2 * grain), 0.15};
-    Eigen::Vector3d color = vary({188, 182, 170}, 0.1, lattice(62, bond.column, bond.row)) * (0.85 + 0.25 * grain);
+    Eigen::Vector3d color =
+        vary({188, 182, 170}, 0.1, lattice(62, bond.column, bond.row)) * (0.85 + 0.25 * grain);
     return {color, 0.75 + 0.15 * std::min(1.0, bond.joint_distance / 4) + 0.1 * grain};
 }
 
@@ -133,8 +140,9 @@ struct Recipe {
     double bumpiness;  // how strongly height turns into the normal map
 };
 
-const Recipe recipes[] = {{"brick", brick, 1.0f, 3.0},   {"plaster", plaster, 2.0f, 1.5}, {"roof_tiles", roof_tiles, 1.0f, 3.0},
-                          {"glass", glass, 1.5f, 0.2},   {"wood", wood, 1.0f, 2.0},       {"stone", stone, 2.0f, 3.0}};
+const Recipe recipes[] = {
+    {"brick", brick, 1.0f, 3.0}, {"plaster", plaster, 2.0f, 1.5}, {"roof_tiles", roof_tiles, 1.0f, 3.0},
+    {"glass", glass, 1.5f, 0.2}, {"wood", wood, 1.0f, 2.0},       {"stone", stone, 2.0f, 3.0}};
 
 std::uint8_t to_byte(double value) { return std::uint8_t(std::clamp(std::lround(value), 0L, 255L)); }
 
@@ -178,7 +186,8 @@ ProceduralTexture make_procedural_texture(const std::string& name, int size) {
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             double dx = (h(x + 1, y) - h(x - 1, y)) / 2, dy = (h(x, y + 1) - h(x, y - 1)) / 2;
-            Eigen::Vector3d n = Eigen::Vector3d(-dx * recipe->bumpiness, dy * recipe->bumpiness, 1).normalized();
+            Eigen::Vector3d n =
+                Eigen::Vector3d(-dx * recipe->bumpiness, dy * recipe->bumpiness, 1).normalized();
             std::uint8_t* pixel = texture.normal.at(x, y);
             for (int c = 0; c < 3; ++c) pixel[c] = to_byte((n[c] * 0.5 + 0.5) * 255);
         }
@@ -193,7 +202,8 @@ ProceduralTexture procedural_texture(const std::string& name, int size) {
     static std::map<std::pair<std::string, int>, ProceduralTexture> made;
     std::lock_guard lock(mutex);
     auto found = made.find({name, size});
-    if (found == made.end()) found = made.emplace(std::pair{name, size}, make_procedural_texture(name, size)).first;
+    if (found == made.end())
+        found = made.emplace(std::pair{name, size}, make_procedural_texture(name, size)).first;
     return found->second;
 }
 

@@ -10,8 +10,8 @@
 namespace boxlod {
 
 struct ProceduralTexture {
-    Image8 color;   // RGBA8, sRGB
-    Image8 normal;  // RGBA8, linear
+    Image8 color;           // RGBA8, sRGB
+    Image8 normal;          // RGBA8, linear
     float tile_metres = 1;  // the size of one tile on a surface
 };
 

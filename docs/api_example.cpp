@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
         const boxlod::Shot drawn = boxlod::render_model(level.model, model, view);
         const boxlod::Comparison difference = boxlod::compare_renders(original, drawn);
         std::printf("level 1: %s bytes, FLIP over covered pixels %.3f, silhouette IoU %.3f\n",
-                    boxlod::value_of(level.statistics, "bytes_lod").c_str(), difference.flip_covered, difference.iou);
+                    boxlod::value_of(level.statistics, "bytes_lod").c_str(), difference.flip_covered,
+                    difference.iou);
         return 0;
     } catch (const boxlod::InputError& error) {
         std::fprintf(stderr, "api_example: %s\n", error.what());

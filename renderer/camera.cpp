@@ -7,11 +7,14 @@
 namespace boxlod {
 
 std::string camera_problem(const Camera& camera) {
-    if (!camera.position.allFinite() || !camera.target.allFinite() || !camera.up.allFinite()) return "the camera is not finite";
+    if (!camera.position.allFinite() || !camera.target.allFinite() || !camera.up.allFinite())
+        return "the camera is not finite";
     Eigen::Vector3f forward = camera.target - camera.position;
-    if (!(forward.norm() > 1e-6f * std::max(1.0f, camera.position.norm()))) return "the camera's position equals its target";
+    if (!(forward.norm() > 1e-6f * std::max(1.0f, camera.position.norm())))
+        return "the camera's position equals its target";
     if (!(camera.up.norm() > 0)) return "the camera's up direction is zero";
-    if (!(forward.normalized().cross(camera.up.normalized()).norm() > 1e-4f)) return "the camera's up direction is along its view";
+    if (!(forward.normalized().cross(camera.up.normalized()).norm() > 1e-4f))
+        return "the camera's up direction is along its view";
     if (!camera.orthographic && !(camera.fovy_degrees > 0 && camera.fovy_degrees < 180))
         return "the camera's field of view must be in (0, 180) degrees";
     return "";
@@ -104,7 +107,8 @@ Camera camera_at_position(const Eigen::Vector3f& direction, const Eigen::Vector3
     camera.position = center + d * distance;
     camera.target = center;
     camera.fovy_degrees = fovy_degrees;
-    if (d.x() == 0 && d.z() == 0) camera.up = d.y() > 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
+    if (d.x() == 0 && d.z() == 0)
+        camera.up = d.y() > 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
     fit_depth_range(camera, distance, scene_radius);
     return camera;
 }

@@ -13,7 +13,7 @@ struct Camera {
     Eigen::Vector3f target{0, 0, 0};
     Eigen::Vector3f up{0, 1, 0};
     bool orthographic = false;
-    float fovy_degrees = 45;                             // perspective: vertical field of view
+    float fovy_degrees = 45;                           // perspective: vertical field of view
     float left = -1, right = 1, bottom = -1, top = 1;  // orthographic: window in view space
     float near_plane = 0.1f, far_plane = 100;
 };

@@ -44,8 +44,10 @@ void write_exr(const std::string& path, const Frame& frame, const Camera& camera
         Imf::FrameBuffer buffer;
         std::size_t pixel = sizeof(half) * 4, row = pixel * frame.width;
         for (int c = 0; c < 4; ++c)
-            buffer.insert(names[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(rgba.data() + c), pixel, row));
-        buffer.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float), sizeof(float) * frame.width));
+            buffer.insert(names[c],
+                          Imf::Slice(Imf::HALF, reinterpret_cast<char*>(rgba.data() + c), pixel, row));
+        buffer.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(z.data()), sizeof(float),
+                                      sizeof(float) * frame.width));
         file.setFrameBuffer(buffer);
         file.writePixels(frame.height);
     });

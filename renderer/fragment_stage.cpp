@@ -18,7 +18,8 @@ namespace {
 // triangle. Out of line, from the mesh: only metric parallax needs it, and
 // inlined its registers would cost every other triangle's setup.
 [[gnu::noinline]] bool uv_gradient_of(const Mesh& mesh, const std::uint32_t* v, UvGradient& gradient) {
-    const Eigen::Vector3f e1 = mesh.positions[v[1]] - mesh.positions[v[0]], e2 = mesh.positions[v[2]] - mesh.positions[v[0]];
+    const Eigen::Vector3f e1 = mesh.positions[v[1]] - mesh.positions[v[0]],
+                          e2 = mesh.positions[v[2]] - mesh.positions[v[0]];
     const Eigen::Vector2f d1 = mesh.uvs[v[1]] - mesh.uvs[v[0]], d2 = mesh.uvs[v[2]] - mesh.uvs[v[0]];
     float a = e1.dot(e1), b = e1.dot(e2), d = e2.dot(e2), det = a * d - b * b;
     if (!(det > 0)) return false;
@@ -36,7 +37,8 @@ void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
     const Mesh& mesh = *s.batch->mesh;
     s.v = &mesh.indices[std::size_t(s.screen->triangle) * 3];
     s.barycentrics = barycentric_setup(*s.screen, *weights);
-    const Eigen::Vector3f &p0 = mesh.positions[s.v[0]], &p1 = mesh.positions[s.v[1]], &p2 = mesh.positions[s.v[2]];
+    const Eigen::Vector3f &p0 = mesh.positions[s.v[0]], &p1 = mesh.positions[s.v[1]],
+                          &p2 = mesh.positions[s.v[2]];
     const Eigen::Vector3f e1 = p1 - p0, e2 = p2 - p0;
     s.geometric_normal = e1.cross(e2);
     float length = s.geometric_normal.norm();
@@ -54,7 +56,8 @@ void set_up_triangle(const Context& c, std::uint32_t id, TriangleSetup& s) {
         }
     }
     const Surface& surface = s.batch->surface;
-    if (surface.height && surface.height_depth > 0) s.has_uv_gradient = uv_gradient_of(mesh, s.v, s.uv_gradient);
+    if (surface.height && surface.height_depth > 0)
+        s.has_uv_gradient = uv_gradient_of(mesh, s.v, s.uv_gradient);
 }
 
 namespace {
@@ -172,8 +175,10 @@ template <bool reads_uv>
         const std::vector<ClippedWeights>* weights;
         const ScreenTriangle& screen = triangle_of(c, ids[j], weights);
         const auto* bytes = reinterpret_cast<const char*>(&screen);
-        from.corners_x[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, x)));
-        from.corners_y[j] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, y)));
+        from.corners_x[j] =
+            _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, x)));
+        from.corners_y[j] =
+            _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + offsetof(ScreenTriangle, y)));
         from.inv_w[j] = _mm_loadu_ps(reinterpret_cast<const float*>(bytes + offsetof(ScreenTriangle, inv_w)));
         t.clipped[j] = screen.clipped >= 0 ? &(*weights)[std::size_t(screen.clipped)] : nullptr;
         const Batch& batch = c.batches[screen.batch];
@@ -201,8 +206,10 @@ template <bool reads_uv>
             const Surface& surface = batch.surface;
             t.uv_gradient_of_lane[j] = nullptr;
             if (!with_uv || !surface.height || !(surface.height_depth > 0)) continue;
-            if (j > 0 && ids[j] == ids[j - 1]) t.uv_gradient_of_lane[j] = t.uv_gradient_of_lane[j - 1];
-            else if (uv_gradient_of(mesh, v, t.uv_gradient[j])) t.uv_gradient_of_lane[j] = &t.uv_gradient[j];
+            if (j > 0 && ids[j] == ids[j - 1])
+                t.uv_gradient_of_lane[j] = t.uv_gradient_of_lane[j - 1];
+            else if (uv_gradient_of(mesh, v, t.uv_gradient[j]))
+                t.uv_gradient_of_lane[j] = &t.uv_gradient[j];
         }
     }
 }
@@ -212,7 +219,8 @@ template <bool reads_uv>
 [[gnu::always_inline]] inline void read_position_lanes(const LaneSources& from, TriangleLanes& t) {
     FloatLanes lanes[4];
     const double scale = 1.0 / (1 << subpixel_bits);
-    for (const auto& [corners, out] : {std::pair{from.corners_x, t.screen_x}, std::pair{from.corners_y, t.screen_y}}) {
+    for (const auto& [corners, out] :
+         {std::pair{from.corners_x, t.screen_x}, std::pair{from.corners_y, t.screen_y}}) {
         transpose(_mm_castsi128_ps(corners[0]), _mm_castsi128_ps(corners[1]), _mm_castsi128_ps(corners[2]),
                   _mm_castsi128_ps(corners[3]), lanes);
         for (int k = 0; k < 3; ++k) out[k] = to_doubles(IntLanes(lanes[k])) * scale;
@@ -231,7 +239,8 @@ template <bool reads_uv>
     t.edge2 = t.position[2] - t.position[0];
     const Vector3Lanes across = cross(t.edge1, t.edge2);
     const FloatLanes length = square_root(dot(across, across));
-    t.geometric_normal = select(length > 0, across / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+    t.geometric_normal =
+        select(length > 0, across / length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
 }
 
 // The uvs and mesh tangents in lanes, and the tangent frame from the uv
@@ -244,11 +253,13 @@ template <bool reads_uv>
         t.u[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(2, 0, 2, 0));
         t.v[k] = _mm_shuffle_ps(low, high, _MM_SHUFFLE(3, 1, 3, 1));
         transpose(_mm_loadu_ps(from.tangents[k][0]->data()), _mm_loadu_ps(from.tangents[k][1]->data()),
-                  _mm_loadu_ps(from.tangents[k][2]->data()), _mm_loadu_ps(from.tangents[k][3]->data()), lanes);
+                  _mm_loadu_ps(from.tangents[k][2]->data()), _mm_loadu_ps(from.tangents[k][3]->data()),
+                  lanes);
         t.tangent[k] = {lanes[0], lanes[1], lanes[2]};
         t.tangent_w[k] = lanes[3];
     }
-    const FloatLanes d1u = t.u[1] - t.u[0], d1v = t.v[1] - t.v[0], d2u = t.u[2] - t.u[0], d2v = t.v[2] - t.v[0];
+    const FloatLanes d1u = t.u[1] - t.u[0], d1v = t.v[1] - t.v[0], d2u = t.u[2] - t.u[0],
+                     d2v = t.v[2] - t.v[0];
     const FloatLanes det = d1u * d2v - d2u * d1v;
     t.has_uv_frame = det != 0;
     t.uv_tangent = (t.edge1 * d2v - t.edge2 * d1v) / det;
@@ -257,7 +268,8 @@ template <bool reads_uv>
 
 // What make_fragment_lanes reads of the triangles `ids`, in lanes.
 template <bool reads_uv>
-[[gnu::always_inline]] inline void gather_triangles(const Context& c, const std::uint32_t ids[lane_count], TrianglesOf<reads_uv>& t) {
+[[gnu::always_inline]] inline void gather_triangles(const Context& c, const std::uint32_t ids[lane_count],
+                                                    TrianglesOf<reads_uv>& t) {
     LaneSources from;
     find_lane_sources<reads_uv>(c, ids, t, from);
     read_position_lanes(from, t);
@@ -269,8 +281,9 @@ template <bool reads_uv>
 // barycentrics as screen_barycentrics computes them, then the perspective
 // correction of source_barycentrics, in doubles; clipped lanes mapped to their
 // source triangle.
-[[gnu::always_inline]] inline void source_barycentric_lanes(const TriangleLanes& t, const DoubleLanes& px, const DoubleLanes& py,
-                                                            int count, FloatLanes b[3]) {
+[[gnu::always_inline]] inline void source_barycentric_lanes(const TriangleLanes& t, const DoubleLanes& px,
+                                                            const DoubleLanes& py, int count,
+                                                            FloatLanes b[3]) {
     const DoubleLanes *sx = t.screen_x, *sy = t.screen_y, *w = t.inv_w;
     const DoubleLanes l0 = ((sx[2] - sx[1]) * (py - sy[1]) - (sy[2] - sy[1]) * (px - sx[1])) / t.area;
     const DoubleLanes l1 = ((sx[0] - sx[2]) * (py - sy[2]) - (sy[0] - sy[2]) * (px - sx[2])) / t.area;
@@ -292,8 +305,9 @@ template <bool reads_uv>
 
 // Uvs, their change one pixel right and down, and the tangent frame, as
 // make_fragment makes them, for the pixels at (px, py) of barycentrics b.
-[[gnu::always_inline]] inline void add_uv_lanes(const TexturedTriangleLanes& t, const DoubleLanes& px, const DoubleLanes& py,
-                                                const FloatLanes b[3], int count, FragmentLanes& f) {
+[[gnu::always_inline]] inline void add_uv_lanes(const TexturedTriangleLanes& t, const DoubleLanes& px,
+                                                const DoubleLanes& py, const FloatLanes b[3], int count,
+                                                FragmentLanes& f) {
     f.has_uv = t.has_uv;
     std::copy(t.uv_gradient_of_lane, t.uv_gradient_of_lane + lane_count, f.uv_gradient);
     auto interpolate = [&](const FloatLanes* values, const FloatLanes* weights) {
@@ -319,18 +333,21 @@ template <bool reads_uv>
     tangent = tangent / square_root(tangent_squared);
     const Vector3Lanes across = cross(f.normal, tangent);
     // The bitangent points up the image, against dp/dv (glTF: uv origin at the top left).
-    const FloatLanes handedness = select(t.has_tangents, select(mesh_w < 0, broadcast(-1.0f), broadcast(1.0f)),
-                                         select(dot(across, t.uv_bitangent) > 0, broadcast(-1.0f), broadcast(1.0f)));
+    const FloatLanes handedness =
+        select(t.has_tangents, select(mesh_w < 0, broadcast(-1.0f), broadcast(1.0f)),
+               select(dot(across, t.uv_bitangent) > 0, broadcast(-1.0f), broadcast(1.0f)));
     const IntLanes framed = t.has_uv & (t.has_tangents | t.has_uv_frame) & (tangent_squared > 0);
     f.tangent = select(framed, tangent, Vector3Lanes{broadcast(1.0f), broadcast(0.0f), broadcast(0.0f)});
-    f.bitangent = select(framed, across * handedness, Vector3Lanes{broadcast(0.0f), broadcast(1.0f), broadcast(0.0f)});
+    f.bitangent =
+        select(framed, across * handedness, Vector3Lanes{broadcast(0.0f), broadcast(1.0f), broadcast(0.0f)});
 }
 
 // make_fragment for lane_count visible pixels at x, row y, of the triangles
 // `t` (each pixel of its own triangle), with the same operations in lanes
 // (renderer/lanes.h).
 template <bool reads_uv>
-[[gnu::always_inline]] inline FragmentLanes make_fragment_lanes(const TrianglesOf<reads_uv>& t, IntLanes x, int y, int count) {
+[[gnu::always_inline]] inline FragmentLanes make_fragment_lanes(const TrianglesOf<reads_uv>& t, IntLanes x,
+                                                                int y, int count) {
     FragmentLanes f;
     f.count = count;
     std::copy(t.surface, t.surface + lane_count, f.surface);
@@ -355,13 +372,15 @@ template <bool reads_uv>
 // ones gather them each time into a local: in the benchmark's frame of a
 // million small triangles, keeping them for reuse made it slower
 // (docs/performance.md: Lanes).
-FragmentLanes make_textured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], bool other_triangles,
-                                           TexturedTriangleLanes& t, IntLanes x, int y, int count) {
+FragmentLanes make_textured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count],
+                                           bool other_triangles, TexturedTriangleLanes& t, IntLanes x, int y,
+                                           int count) {
     if (other_triangles) gather_triangles<true>(c, ids, t);
     return make_fragment_lanes<true>(t, x, y, count);
 }
 
-FragmentLanes make_untextured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count], IntLanes x, int y, int count) {
+FragmentLanes make_untextured_fragment_lanes(const Context& c, const std::uint32_t ids[lane_count],
+                                             IntLanes x, int y, int count) {
     TriangleLanes t;
     gather_triangles<false>(c, ids, t);
     return make_fragment_lanes<false>(t, x, y, count);
@@ -448,7 +467,8 @@ void shade_in_lanes(const Context& c, const TileTarget& t, ShadedTile& out) {
                 other_triangles = other_triangles || lanes[j] != triangles.ids[j];
             }
             ShadedLanes shaded;
-            c.shader.shade_lanes(reads_uv ? make_textured_fragment_lanes(c, lanes, other_triangles, triangles, IntLanes(xs), y, count)
+            c.shader.shade_lanes(reads_uv ? make_textured_fragment_lanes(c, lanes, other_triangles, triangles,
+                                                                         IntLanes(xs), y, count)
                                           : make_untextured_fragment_lanes(c, lanes, IntLanes(xs), y, count),
                                  shaded);
             other_triangles = false;
@@ -482,8 +502,10 @@ void shade_in_lanes(const Context& c, const TileTarget& t, ShadedTile& out) {
 }  // namespace
 
 void shade_tile(const Context& c, const TileTarget& tile, ShadedTile& out) {
-    if (c.shader.takes_lanes()) shade_in_lanes(c, tile, out);
-    else shade_each_pixel(c, tile, out);
+    if (c.shader.takes_lanes())
+        shade_in_lanes(c, tile, out);
+    else
+        shade_each_pixel(c, tile, out);
 }
 
 }  // namespace boxlod::pipeline

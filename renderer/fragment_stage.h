@@ -27,8 +27,8 @@ struct TileRange {
 struct Chunk {
     std::vector<ScreenTriangle> triangles;
     std::vector<ClippedWeights> weights;
-    std::vector<std::uint32_t> bin_start;  // per tile, into bin_items; size tiles + 1
-    std::vector<std::uint32_t> bin_items;  // triangle indices within this chunk, in submission order
+    std::vector<std::uint32_t> bin_start;    // per tile, into bin_items; size tiles + 1
+    std::vector<std::uint32_t> bin_items;    // triangle indices within this chunk, in submission order
     std::vector<TileRange> tiles_of;         // scratch while binning: the tiles of each triangle
     std::vector<std::uint32_t> tile_counts;  // and the triangles of each tile
 };
@@ -43,7 +43,8 @@ struct Context {
     bool translated = false;  // some batch has a translation: else fragments skip it
 };
 
-inline const ScreenTriangle& triangle_of(const Context& c, std::uint32_t id, const std::vector<ClippedWeights>*& weights) {
+inline const ScreenTriangle& triangle_of(const Context& c, std::uint32_t id,
+                                         const std::vector<ClippedWeights>*& weights) {
     const Chunk& chunk = c.chunks[id >> chunk_index_bits];
     weights = &chunk.weights;
     return chunk.triangles[id & ((1u << chunk_index_bits) - 1)];

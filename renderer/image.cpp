@@ -10,10 +10,10 @@
 #include <zlib.h>
 
 #include <algorithm>
-#include <bit>
-#include <cstdlib>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -23,7 +23,8 @@
 namespace boxlod {
 namespace {
 std::uint32_t big_endian_u32(const std::uint8_t* p) {
-    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | std::uint32_t(p[3]);
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 |
+           std::uint32_t(p[3]);
 }
 
 // A PNG's chunks, each (length, type, data, CRC-32 of type and data) up to
@@ -34,15 +35,18 @@ void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& 
     static constexpr std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     if (encoded.size() < 8 || !std::equal(signature, signature + 8, encoded.begin())) return;
     for (std::size_t at = 8;;) {
-        if (!range_fits(at, 12, encoded.size())) throw_input_error(name, "byte " + std::to_string(at), "PNG ends without its IEND chunk");
+        if (!range_fits(at, 12, encoded.size()))
+            throw_input_error(name, "byte " + std::to_string(at), "PNG ends without its IEND chunk");
         const std::size_t length = big_endian_u32(&encoded[at]);
         if (!range_fits(at + 8, length + 4, encoded.size()))
             throw_input_error(name, "byte " + std::to_string(at), "PNG chunk runs past the end of the file");
         const std::uint8_t* type = &encoded[at + 4];
         const std::string type_name(reinterpret_cast<const char*>(type), 4);
 #ifndef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION  // renderer/CMakeLists.txt
-        if (std::uint32_t(crc32(crc32(0, nullptr, 0), type, uInt(length + 4))) != big_endian_u32(&encoded[at + 8 + length]))
-            throw_input_error(name, "byte " + std::to_string(at), "PNG chunk " + type_name + " fails its checksum (a damaged file)");
+        if (std::uint32_t(crc32(crc32(0, nullptr, 0), type, uInt(length + 4))) !=
+            big_endian_u32(&encoded[at + 8 + length]))
+            throw_input_error(name, "byte " + std::to_string(at),
+                              "PNG chunk " + type_name + " fails its checksum (a damaged file)");
 #endif
         if (type_name == "IEND") return;
         at += 12 + length;
@@ -52,18 +56,21 @@ void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& 
 // stb's reason, or a general one where it gives none (as for some formats it knows only by name).
 std::string decode_failure() {
     const char* reason = stbi_failure_reason();
-    return std::string("cannot decode image: ") + (reason && *reason ? reason : "not an image format boxlod reads");
+    return std::string("cannot decode image: ") +
+           (reason && *reason ? reason : "not an image format boxlod reads");
 }
 
 // The header read before decoding: no allocation for a size the file only claims.
 ImageSize header_size(std::span<const std::uint8_t> encoded, const std::string& name) {
     int width = 0, height = 0, channels = 0;
-    if (encoded.size() > std::size_t(std::numeric_limits<int>::max())) throw_input_error(name, "", "image file too large");
+    if (encoded.size() > std::size_t(std::numeric_limits<int>::max()))
+        throw_input_error(name, "", "image file too large");
     if (!stbi_info_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels))
         throw_input_error(name, "", decode_failure());
     if (width > max_image_side || height > max_image_side)
-        throw_input_error(name, "", "image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels, more than " +
-                                        std::to_string(max_image_side) + " per side");
+        throw_input_error(name, "",
+                          "image is " + std::to_string(width) + "x" + std::to_string(height) +
+                              " pixels, more than " + std::to_string(max_image_side) + " per side");
     check_png_chunks(encoded, name);
     return {width, height};
 }
@@ -71,22 +78,24 @@ ImageSize header_size(std::span<const std::uint8_t> encoded, const std::string& 
 void check_image_header(std::span<const std::uint8_t> encoded, const std::string& name) {
     const ImageSize size = header_size(encoded, name);
     // Decoding is bounded by the size the header declares: RGBA8, and stb's copy of it.
-    check_memory(name + ": decoding its " + std::to_string(size.width) + "x" + std::to_string(size.height) + " pixels",
-                 8.0 * double(size.width) * double(size.height));
+    check_memory(
+        name + ": decoding its " + std::to_string(size.width) + "x" + std::to_string(size.height) + " pixels",
+        8.0 * double(size.width) * double(size.height));
 }
 }  // namespace
 
 bool is_grey16(std::span<const std::uint8_t> encoded) {
-    int width = 0, height = 0, channels = 0, size = int(std::min<std::size_t>(encoded.size(), std::numeric_limits<int>::max()));
-    return stbi_is_16_bit_from_memory(encoded.data(), size) && stbi_info_from_memory(encoded.data(), size, &width, &height, &channels) &&
-           channels == 1;
+    int width = 0, height = 0, channels = 0,
+        size = int(std::min<std::size_t>(encoded.size(), std::numeric_limits<int>::max()));
+    return stbi_is_16_bit_from_memory(encoded.data(), size) &&
+           stbi_info_from_memory(encoded.data(), size, &width, &height, &channels) && channels == 1;
 }
 
 Image8 decode_image(std::span<const std::uint8_t> encoded, const std::string& name) {
     check_image_header(encoded, name);
     int width = 0, height = 0, channels_in_file = 0;
-    stbi_uc* data = stbi_load_from_memory(encoded.data(), int(encoded.size()), &width, &height,
-                                          &channels_in_file, 4);
+    stbi_uc* data =
+        stbi_load_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels_in_file, 4);
     if (!data) throw_input_error(name, "", decode_failure());
     Image8 image(width, height, 4);
     std::copy(data, data + image.pixels.size(), image.pixels.begin());
@@ -111,10 +120,11 @@ namespace {
 // level 5 (png_benchmark; docs/performance.md: Writing PNGs).
 constexpr int png_compression_level = 2;
 
-std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size, int width, int height, int bit_depth,
-                                           int channels) {
+std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size, int width, int height,
+                                           int bit_depth, int channels) {
     static constexpr std::uint8_t color_types[] = {SPNG_COLOR_TYPE_GRAYSCALE, SPNG_COLOR_TYPE_GRAYSCALE_ALPHA,
-                                                   SPNG_COLOR_TYPE_TRUECOLOR, SPNG_COLOR_TYPE_TRUECOLOR_ALPHA};
+                                                   SPNG_COLOR_TYPE_TRUECOLOR,
+                                                   SPNG_COLOR_TYPE_TRUECOLOR_ALPHA};
     if (channels < 1 || channels > 4) throw std::logic_error("encode_png: 1 to 4 channels");
     std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> context(spng_ctx_new(SPNG_CTX_ENCODER), spng_ctx_free);
     if (!context) throw std::bad_alloc();
@@ -133,7 +143,8 @@ std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size,
     std::size_t length = 0;
     void* png = error ? nullptr : spng_get_png_buffer(c, &length, &error);
     if (!png) throw std::runtime_error(std::string("PNG encoding failed: ") + spng_strerror(error));
-    std::vector<std::uint8_t> bytes(static_cast<std::uint8_t*>(png), static_cast<std::uint8_t*>(png) + length);
+    std::vector<std::uint8_t> bytes(static_cast<std::uint8_t*>(png),
+                                    static_cast<std::uint8_t*>(png) + length);
     std::free(png);
     return bytes;
 }
@@ -141,25 +152,33 @@ std::vector<std::uint8_t> encode_with_spng(const void* pixels, std::size_t size,
 }  // namespace
 
 std::vector<std::uint8_t> encode_png(const Image8& image) {
-    return encode_with_spng(image.pixels.data(), image.pixels.size(), image.width, image.height, 8, image.channels);
+    return encode_with_spng(image.pixels.data(), image.pixels.size(), image.width, image.height, 8,
+                            image.channels);
 }
 
-void write_png(const std::string& path, const Image8& image) { write_file_atomically(path, encode_png(image)); }
+void write_png(const std::string& path, const Image8& image) {
+    write_file_atomically(path, encode_png(image));
+}
 
 std::vector<std::uint8_t> encode_png16(const Image16& image) {
     if (image.channels == 1)
-        return encode_with_spng(image.pixels.data(), image.pixels.size() * 2, image.width, image.height, 16, 1);
+        return encode_with_spng(image.pixels.data(), image.pixels.size() * 2, image.width, image.height, 16,
+                                1);
     Image16 grey(image.width, image.height, 1);  // the first channel
-    for (std::size_t i = 0; i < grey.pixels.size(); ++i) grey.pixels[i] = image.pixels[i * std::size_t(image.channels)];
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i)
+        grey.pixels[i] = image.pixels[i * std::size_t(image.channels)];
     return encode_with_spng(grey.pixels.data(), grey.pixels.size() * 2, grey.width, grey.height, 16, 1);
 }
 
-void write_png16(const std::string& path, const Image16& image) { write_file_atomically(path, encode_png16(image)); }
+void write_png16(const std::string& path, const Image16& image) {
+    write_file_atomically(path, encode_png16(image));
+}
 
 Image16 decode_image16(std::span<const std::uint8_t> encoded, const std::string& name) {
     check_image_header(encoded, name);
     int width = 0, height = 0, channels = 0;
-    stbi_us* data = stbi_load_16_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels, 1);
+    stbi_us* data =
+        stbi_load_16_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels, 1);
     if (!data) throw_input_error(name, "", decode_failure());
     Image16 image(width, height, 1);
     std::copy(data, data + image.pixels.size(), image.pixels.begin());
@@ -203,7 +222,8 @@ std::uint8_t linear_to_srgb(float value) {
         std::array<std::uint8_t, buckets> start{};
         for (std::uint32_t b = 0; b < buckets; ++b) {
             float lowest = std::bit_cast<float>(b << 16);
-            start[b] = std::uint8_t(std::upper_bound(midpoints.begin(), midpoints.end(), lowest) - midpoints.begin());
+            start[b] = std::uint8_t(std::upper_bound(midpoints.begin(), midpoints.end(), lowest) -
+                                    midpoints.begin());
         }
         return start;
     }();

@@ -1,11 +1,11 @@
 // Images: plain pixel arrays, PNG in (stb) and out (libspng), sRGB <-> linear.
 #pragma once
-#include "base/input_error.h"
 #include <array>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
+#include "base/input_error.h"
 
 namespace boxlod {
 
@@ -16,7 +16,8 @@ struct Image {
     std::vector<T> pixels;
 
     Image() = default;
-    Image(int w, int h, int c, T fill = T{}) : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c, fill) {}
+    Image(int w, int h, int c, T fill = T{})
+        : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c, fill) {}
     T* at(int x, int y) { return &pixels[(std::size_t(y) * width + x) * channels]; }
     const T* at(int x, int y) const { return &pixels[(std::size_t(y) * width + x) * channels]; }
     bool empty() const { return pixels.empty(); }

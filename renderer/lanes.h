@@ -3,10 +3,10 @@
 // the same order (Eigen's included), so a lane's result has the scalar
 // result's bits and renders do not change (docs/performance.md: Lanes).
 #pragma once
+#include <immintrin.h>
 #include <Eigen/Core>
 #include <cstdint>
 #include <cstring>
-#include <immintrin.h>
 
 namespace boxlod {
 
@@ -32,9 +32,12 @@ inline __m128 load_two(const float* p) {
 }
 // In registers (see DoubleLanes).
 inline FloatLanes from_scalars(float a, float b, float c, float d) {
-    return _mm_movelh_ps(_mm_unpacklo_ps(_mm_set_ss(a), _mm_set_ss(b)), _mm_unpacklo_ps(_mm_set_ss(c), _mm_set_ss(d)));
+    return _mm_movelh_ps(_mm_unpacklo_ps(_mm_set_ss(a), _mm_set_ss(b)),
+                         _mm_unpacklo_ps(_mm_set_ss(c), _mm_set_ss(d)));
 }
-inline Vector3Lanes broadcast(const Eigen::Vector3f& v) { return {broadcast(v.x()), broadcast(v.y()), broadcast(v.z())}; }
+inline Vector3Lanes broadcast(const Eigen::Vector3f& v) {
+    return {broadcast(v.x()), broadcast(v.y()), broadcast(v.z())};
+}
 inline Eigen::Vector3f lane(const Vector3Lanes& v, int j) { return {v.x[j], v.y[j], v.z[j]}; }
 inline void set_lane(Vector3Lanes& v, int j, const Eigen::Vector3f& value) {
     v.x[j] = value.x();
@@ -49,8 +52,12 @@ inline Vector3Lanes select(IntLanes mask, const Vector3Lanes& a, const Vector3La
 // std::max(0.0f, v): v where 0 < v, else 0 (NaN too).
 inline FloatLanes max_zero(FloatLanes v) { return 0 < v ? v : FloatLanes{}; }
 
-inline Vector3Lanes operator+(const Vector3Lanes& a, const Vector3Lanes& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vector3Lanes operator-(const Vector3Lanes& a, const Vector3Lanes& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vector3Lanes operator+(const Vector3Lanes& a, const Vector3Lanes& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline Vector3Lanes operator-(const Vector3Lanes& a, const Vector3Lanes& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 inline Vector3Lanes operator-(const Vector3Lanes& a) { return {-a.x, -a.y, -a.z}; }
 inline Vector3Lanes operator*(const Vector3Lanes& a, FloatLanes s) { return {a.x * s, a.y * s, a.z * s}; }
 inline Vector3Lanes operator/(const Vector3Lanes& a, FloatLanes s) { return {a.x / s, a.y / s, a.z / s}; }
@@ -67,22 +74,34 @@ inline DoubleLanes to_doubles(IntLanes v) {
 }
 inline DoubleLanes to_doubles(FloatLanes v) { return {_mm_cvtps_pd(v), _mm_cvtps_pd(_mm_movehl_ps(v, v))}; }
 inline DoubleLanes square_root(const DoubleLanes& v) { return {_mm_sqrt_pd(v.low), _mm_sqrt_pd(v.high)}; }
-inline FloatLanes to_floats(const DoubleLanes& v) { return _mm_movelh_ps(_mm_cvtpd_ps(v.low), _mm_cvtpd_ps(v.high)); }
-inline DoubleLanes operator+(const DoubleLanes& a, const DoubleLanes& b) { return {a.low + b.low, a.high + b.high}; }
-inline DoubleLanes operator-(const DoubleLanes& a, const DoubleLanes& b) { return {a.low - b.low, a.high - b.high}; }
-inline DoubleLanes operator*(const DoubleLanes& a, const DoubleLanes& b) { return {a.low * b.low, a.high * b.high}; }
-inline DoubleLanes operator/(const DoubleLanes& a, const DoubleLanes& b) { return {a.low / b.low, a.high / b.high}; }
+inline FloatLanes to_floats(const DoubleLanes& v) {
+    return _mm_movelh_ps(_mm_cvtpd_ps(v.low), _mm_cvtpd_ps(v.high));
+}
+inline DoubleLanes operator+(const DoubleLanes& a, const DoubleLanes& b) {
+    return {a.low + b.low, a.high + b.high};
+}
+inline DoubleLanes operator-(const DoubleLanes& a, const DoubleLanes& b) {
+    return {a.low - b.low, a.high - b.high};
+}
+inline DoubleLanes operator*(const DoubleLanes& a, const DoubleLanes& b) {
+    return {a.low * b.low, a.high * b.high};
+}
+inline DoubleLanes operator/(const DoubleLanes& a, const DoubleLanes& b) {
+    return {a.low / b.low, a.high / b.high};
+}
 inline DoubleLanes operator+(const DoubleLanes& a, double b) { return a + broadcast(b); }
 inline DoubleLanes operator-(double a, const DoubleLanes& b) { return broadcast(a) - b; }
 inline DoubleLanes operator*(const DoubleLanes& a, double b) { return a * broadcast(b); }
 inline IntLanes not_zero(const DoubleLanes& v) {
     const __m128d zero = _mm_setzero_pd();
-    return IntLanes(_mm_shuffle_ps(_mm_castpd_ps(_mm_cmpneq_pd(v.low, zero)), _mm_castpd_ps(_mm_cmpneq_pd(v.high, zero)),
-                                   _MM_SHUFFLE(2, 0, 2, 0)));
+    return IntLanes(_mm_shuffle_ps(_mm_castpd_ps(_mm_cmpneq_pd(v.low, zero)),
+                                   _mm_castpd_ps(_mm_cmpneq_pd(v.high, zero)), _MM_SHUFFLE(2, 0, 2, 0)));
 }
 
 // Eigen sums three terms as x + (y + z): its reductions split in halves.
-inline FloatLanes dot(const Vector3Lanes& a, const Vector3Lanes& b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
+inline FloatLanes dot(const Vector3Lanes& a, const Vector3Lanes& b) {
+    return a.x * b.x + (a.y * b.y + a.z * b.z);
+}
 // Eigen's cross() of 3-vectors.
 inline Vector3Lanes cross(const Vector3Lanes& a, const Vector3Lanes& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};

@@ -7,7 +7,8 @@ namespace boxlod {
 
 void draw_line(Frame& frame, const Camera& camera, const Eigen::Vector3f& a, const Eigen::Vector3f& b,
                const Eigen::Vector3f& color, int width) {
-    Eigen::Matrix4f view_projection = projection_matrix(camera, float(frame.width) / float(frame.height)) * view_matrix(camera);
+    Eigen::Matrix4f view_projection =
+        projection_matrix(camera, float(frame.width) / float(frame.height)) * view_matrix(camera);
     Eigen::Vector4f p = view_projection * a.homogeneous(), q = view_projection * b.homogeneous();
     // Clip the segment at the near plane (z >= -w).
     float dp = p.z() + p.w(), dq = q.z() + q.w();
@@ -15,7 +16,8 @@ void draw_line(Frame& frame, const Camera& camera, const Eigen::Vector3f& a, con
     if (dp < 0) p = p + (q - p) * (dp / (dp - dq));
     if (dq < 0) q = q + (p - q) * (dq / (dq - dp));
     auto window = [&](const Eigen::Vector4f& c) {
-        return Eigen::Vector2f((c.x() / c.w() + 1) * 0.5f * float(frame.width), (1 - c.y() / c.w()) * 0.5f * float(frame.height));
+        return Eigen::Vector2f((c.x() / c.w() + 1) * 0.5f * float(frame.width),
+                               (1 - c.y() / c.w()) * 0.5f * float(frame.height));
     };
     Eigen::Vector2f s = window(p), e = window(q);
     float length = (e - s).norm();
@@ -28,14 +30,16 @@ void draw_line(Frame& frame, const Camera& camera, const Eigen::Vector3f& a, con
             for (int dx = -(width - 1) / 2; dx <= width / 2; ++dx) {
                 int x = cx + dx, y = cy + dy;
                 if (x < 0 || y < 0 || x >= frame.width || y >= frame.height) continue;
-                frame.color[std::size_t(y) * frame.width + x] = Eigen::Vector4f(color.x(), color.y(), color.z(), 1);
+                frame.color[std::size_t(y) * frame.width + x] =
+                    Eigen::Vector4f(color.x(), color.y(), color.z(), 1);
             }
     }
 }
 
 void draw_axes(Frame& frame, const Camera& camera, const Eigen::Vector3f& origin, float length) {
     for (int axis = 0; axis < 3; ++axis)
-        draw_line(frame, camera, origin, origin + Eigen::Vector3f::Unit(axis) * length, Eigen::Vector3f::Unit(axis), 2);
+        draw_line(frame, camera, origin, origin + Eigen::Vector3f::Unit(axis) * length,
+                  Eigen::Vector3f::Unit(axis), 2);
 }
 
 void draw_divider(Frame& frame, int x, const Eigen::Vector3f& color) {

@@ -21,12 +21,12 @@ struct ClipVertex {
 
 float plane_distance(const Eigen::Vector4f& v, int plane) {
     switch (plane) {
-        case 0: return v.z() + v.w();  // near
-        case 1: return v.w() - v.z();  // far
-        case 2: return v.x() + guard_band * v.w();
-        case 3: return guard_band * v.w() - v.x();
-        case 4: return v.y() + guard_band * v.w();
-        default: return guard_band * v.w() - v.y();
+    case 0: return v.z() + v.w();  // near
+    case 1: return v.w() - v.z();  // far
+    case 2: return v.x() + guard_band * v.w();
+    case 3: return guard_band * v.w() - v.x();
+    case 4: return v.y() + guard_band * v.w();
+    default: return guard_band * v.w() - v.y();
     }
 }
 
@@ -46,7 +46,8 @@ int clip_polygon(const ClipVertex* in, int count, int plane, ClipVertex* out) {
     return n;
 }
 
-std::int64_t edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t px, std::int64_t py) {
+std::int64_t edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t px,
+                  std::int64_t py) {
     return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
 }
 
@@ -66,19 +67,23 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 }
 
 // Whether [low, high] (subpixels) holds the centre of a pixel in [first, end).
-[[gnu::always_inline]] inline bool holds_pixel_centre(std::int64_t low, std::int64_t high, int first, int end) {
+[[gnu::always_inline]] inline bool holds_pixel_centre(std::int64_t low, std::int64_t high, int first,
+                                                      int end) {
     const std::int64_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
     const std::int64_t k0 = std::max<std::int64_t>((low - half + one - 1) >> subpixel_bits, first);  // ceil
-    const std::int64_t k1 = std::min<std::int64_t>((high - half) >> subpixel_bits, std::int64_t(end) - 1);  // floor
+    const std::int64_t k1 =
+        std::min<std::int64_t>((high - half) >> subpixel_bits, std::int64_t(end) - 1);  // floor
     return k0 <= k1;
 }
 
 // Appends the triangle of three snapped corners unless it has no area, faces
 // the culled way, or its bounding box holds no pixel centre the viewport
 // writes (it would cover none: most triangles of a far, detailed scene).
-[[gnu::always_inline]] inline bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b, const ProjectedVertex& c,
-                                                   std::uint32_t batch, std::uint32_t triangle, Culling culling,
-                                                   const Viewport& viewport, std::vector<ScreenTriangle>& out) {
+[[gnu::always_inline]] inline bool append_triangle(const ProjectedVertex& a, const ProjectedVertex& b,
+                                                   const ProjectedVertex& c, std::uint32_t batch,
+                                                   std::uint32_t triangle, Culling culling,
+                                                   const Viewport& viewport,
+                                                   std::vector<ScreenTriangle>& out) {
     std::int64_t area = edge(a.x, a.y, b.x, b.y, c.x, c.y);  // doubled_area of the triangle to be
     if (area == 0) return false;
     if (!holds_pixel_centre(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), viewport.scissor_x0,
@@ -94,13 +99,12 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     // from the narrow stores that built it).
     ScreenTriangle& t = out.emplace_back();
     const ProjectedVertex* corner[3] = {&a, &b, &c};
-    for (int i = 0; i < 3; ++i)
-        {
-            t.x[i] = corner[i]->x;
-            t.y[i] = corner[i]->y;
-            t.z[i] = corner[i]->z;
-            t.inv_w[i] = corner[i]->inv_w;
-        }
+    for (int i = 0; i < 3; ++i) {
+        t.x[i] = corner[i]->x;
+        t.y[i] = corner[i]->y;
+        t.z[i] = corner[i]->z;
+        t.inv_w[i] = corner[i]->inv_w;
+    }
     t.batch = batch;
     t.triangle = triangle;
     return true;
@@ -109,7 +113,8 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 // The few triangles that cross a plane of the view volume.
 [[gnu::noinline]] void clip_and_append(const Eigen::Vector4f clip[3], int outside_any, std::uint32_t batch,
                                        std::uint32_t triangle, Culling culling, const Viewport& viewport,
-                                       std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+                                       std::vector<ScreenTriangle>& out,
+                                       std::vector<ClippedWeights>& weights) {
     ClipVertex buffers[2][max_polygon];
     ClipVertex* polygon = buffers[0];
     int count = 3;
@@ -124,7 +129,8 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
     ProjectedVertex snapped[max_polygon];
     for (int i = 0; i < count; ++i) snap(polygon[i].position, viewport, snapped[i]);
     for (int k = 1; k + 1 < count; ++k) {  // a fan over the clipped polygon
-        if (!append_triangle(snapped[0], snapped[k], snapped[k + 1], batch, triangle, culling, viewport, out)) continue;
+        if (!append_triangle(snapped[0], snapped[k], snapped[k + 1], batch, triangle, culling, viewport, out))
+            continue;
         out.back().clipped = std::int32_t(weights.size());
         weights.push_back({{polygon[0].weights, polygon[k].weights, polygon[k + 1].weights}});
     }
@@ -133,9 +139,10 @@ void snap(const Eigen::Vector4f& p, const Viewport& viewport, ProjectedVertex& v
 // One triangle of setup_triangles, inlined into its loop; `clip_of` gives
 // the corners' clip-space positions when the triangle must be clipped.
 template <typename ClipOf>
-[[gnu::always_inline]] inline void set_up(const ProjectedVertex* corner[3], const ClipOf& clip_of, std::uint32_t batch,
-                                          std::uint32_t triangle, Culling culling, const Viewport& viewport,
-                                          std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+[[gnu::always_inline]] inline void set_up(const ProjectedVertex* corner[3], const ClipOf& clip_of,
+                                          std::uint32_t batch, std::uint32_t triangle, Culling culling,
+                                          const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                                          std::vector<ClippedWeights>& weights) {
     const int outside_all = corner[0]->outcode & corner[1]->outcode & corner[2]->outcode;
     const int outside_any = corner[0]->outcode | corner[1]->outcode | corner[2]->outcode;
     if (outside_all) return;
@@ -159,8 +166,9 @@ ProjectedVertex project_vertex(const Eigen::Vector4f& clip, const Viewport& view
     return v;
 }
 
-void setup_triangles(const ProjectedMesh& mesh, std::size_t begin, std::size_t end, std::uint32_t batch, Culling culling,
-                     const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
+void setup_triangles(const ProjectedMesh& mesh, std::size_t begin, std::size_t end, std::uint32_t batch,
+                     Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                     std::vector<ClippedWeights>& weights) {
     // Locals: stores to `out` cannot make the compiler reload them.
     const std::uint32_t* const indices = mesh.indices;
     const ProjectedVertex* const vertices = mesh.vertices;
@@ -174,9 +182,11 @@ void setup_triangles(const ProjectedMesh& mesh, std::size_t begin, std::size_t e
     }
 }
 
-void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle, Culling culling,
-                    const Viewport& viewport, std::vector<ScreenTriangle>& out, std::vector<ClippedWeights>& weights) {
-    const ProjectedVertex projected[3] = {project_vertex(clip[0], viewport), project_vertex(clip[1], viewport),
+void setup_triangle(const Eigen::Vector4f clip[3], std::uint32_t batch, std::uint32_t triangle,
+                    Culling culling, const Viewport& viewport, std::vector<ScreenTriangle>& out,
+                    std::vector<ClippedWeights>& weights) {
+    const ProjectedVertex projected[3] = {project_vertex(clip[0], viewport),
+                                          project_vertex(clip[1], viewport),
                                           project_vertex(clip[2], viewport)};
     const ProjectedVertex* corners[3] = {&projected[0], &projected[1], &projected[2]};
     auto clip_of = [&](Eigen::Vector4f out_clip[3]) { std::copy(clip, clip + 3, out_clip); };
@@ -225,8 +235,8 @@ Eigen::Vector3f source_barycentrics(const BarycentricSetup& s, double px, double
     return source_of_clipped(*s.clipped, b);
 }
 
-Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights, double px,
-                                    double py) {
+Eigen::Vector3f source_barycentrics(const ScreenTriangle& t, const std::vector<ClippedWeights>& weights,
+                                    double px, double py) {
     return source_barycentrics(barycentric_setup(t, weights), px, py);
 }
 
@@ -245,7 +255,8 @@ struct PixelBox {
     const std::int64_t min_x = std::min({t.x[0], t.x[1], t.x[2]}), max_x = std::max({t.x[0], t.x[1], t.x[2]});
     const std::int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]}), max_y = std::max({t.y[0], t.y[1], t.y[2]});
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
-    const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits), own_x1 = int((max_x - half) >> subpixel_bits);
+    const int own_x0 = int((min_x - half + one - 1) >> subpixel_bits),
+              own_x1 = int((max_x - half) >> subpixel_bits);
     b.width = max_x - min_x;
     b.height = max_y - min_y;
     b.x0 = std::max(own_x0, tile.x0);
@@ -261,12 +272,12 @@ struct PixelBox {
 // to positive area; a pixel is inside when every E_k - bias_k >= 0, bias 0 on
 // top and left edges and 1 elsewhere (the top-left fill rule).
 struct EdgeSetup {
-    int x0, y0, x1, y1;       // the pixels to walk, inclusive
-    bool cut_by_tile;         // as in PixelBox
-    std::int64_t row[3];      // E_k - bias_k at the centre of (x0, y0)
+    int x0, y0, x1, y1;   // the pixels to walk, inclusive
+    bool cut_by_tile;     // as in PixelBox
+    std::int64_t row[3];  // E_k - bias_k at the centre of (x0, y0)
     std::int64_t step_x[3], step_y[3], bias[3];
-    std::int64_t area;        // doubled, positive
-    double z[3], inv_area;    // corner depths and 1 / area
+    std::int64_t area;      // doubled, positive
+    double z[3], inv_area;  // corner depths and 1 / area
 };
 
 // Depth from the exact edge values E_k (bias added back), w_k as doubles:
@@ -278,7 +289,8 @@ T depth_from(const double z[3], double inv_area, const T& w0, const T& w1, const
 }
 
 double depth_of(const EdgeSetup& s, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-    return depth_from(s.z, s.inv_area, double(e0 + s.bias[0]), double(e1 + s.bias[1]), double(e2 + s.bias[2]));
+    return depth_from(s.z, s.inv_area, double(e0 + s.bias[0]), double(e1 + s.bias[1]),
+                      double(e2 + s.bias[2]));
 }
 
 void floor_divide(std::int64_t a, std::int64_t b, std::int64_t& quotient, std::int64_t& remainder) {
@@ -328,7 +340,8 @@ IntLanes shuffled(IntLanes v) {
 }
 
 template <typename OnPixel>
-void walk_small_triangle(const ScreenTriangle& t, const PixelBox& box, const TileTarget& tile, OnPixel& on_pixel) {
+void walk_small_triangle(const ScreenTriangle& t, const PixelBox& box, const TileTarget& tile,
+                         OnPixel& on_pixel) {
     static_assert(offsetof(ScreenTriangle, y) == offsetof(ScreenTriangle, x) + 12 &&
                   offsetof(ScreenTriangle, z) == offsetof(ScreenTriangle, y) + 12);
     // Corners in lanes 0-2 (lane 3 reads the next field; the shuffles below drop it).
@@ -336,10 +349,12 @@ void walk_small_triangle(const ScreenTriangle& t, const PixelBox& box, const Til
     IntLanes Y = IntLanes(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.y)));
     std::int64_t area = doubled_area(t);
     const bool swapped = area < 0;  // oriented to positive area as in edge_setup
-    constexpr int swap_1_2 = _MM_SHUFFLE(3, 1, 2, 0), from = _MM_SHUFFLE(0, 0, 2, 1), to = _MM_SHUFFLE(0, 1, 0, 2);
+    constexpr int swap_1_2 = _MM_SHUFFLE(3, 1, 2, 0), from = _MM_SHUFFLE(0, 0, 2, 1),
+                  to = _MM_SHUFFLE(0, 1, 0, 2);
     if (swapped) X = shuffled<swap_1_2>(X), Y = shuffled<swap_1_2>(Y), area = -area;
     // Lane k: edge k, from corner k + 1 to corner k + 2 (lane 3: corner 0 to itself).
-    const IntLanes ax = shuffled<from>(X), ay = shuffled<from>(Y), dx = shuffled<to>(X) - ax, dy = shuffled<to>(Y) - ay;
+    const IntLanes ax = shuffled<from>(X), ay = shuffled<from>(Y), dx = shuffled<to>(X) - ax,
+                   dy = shuffled<to>(Y) - ay;
     const IntLanes bias = ((dy < 0) | ((dy == 0) & (dx > 0))) + 1;  // 0 on top and left edges
     const std::int32_t half = 1 << (subpixel_bits - 1), one = 1 << subpixel_bits;
     const IntLanes px = IntLanes{} + (box.x0 * one + half), py = IntLanes{} + (box.y0 * one + half);
@@ -431,14 +446,14 @@ bool exact_in_doubles(const EdgeSetup& s) {
 // time: E_0 and E_1 in doubles, E_2 = doubled area - E_0 - E_1 (the three sum
 // to it), every one an integer below 2^50 (exact_in_doubles), so exact.
 template <typename OnPixel>
-void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_t* firsts, const std::int32_t* lasts,
-                        const TileTarget& tile, OnPixel& on_pixel) {
+void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_t* firsts,
+                        const std::int32_t* lasts, const TileTarget& tile, OnPixel& on_pixel) {
     double row0 = double(s.row[0] + s.bias[0] + (top - s.y0) * s.step_y[0]);
     double row1 = double(s.row[1] + s.bias[1] + (top - s.y0) * s.step_y[1]);
     const double step_x0 = double(s.step_x[0]), step_x1 = double(s.step_x[1]), area = double(s.area);
     // Lane j of a group starts at E + j step_x; a group on adds 4 step_x.
     const DoubleLanes offset0{_mm_setr_pd(0, step_x0), _mm_setr_pd(2 * step_x0, 3 * step_x0)},
-                      offset1{_mm_setr_pd(0, step_x1), _mm_setr_pd(2 * step_x1, 3 * step_x1)};
+        offset1{_mm_setr_pd(0, step_x1), _mm_setr_pd(2 * step_x1, 3 * step_x1)};
     const DoubleLanes group0 = broadcast(4 * step_x0), group1 = broadcast(4 * step_x1);
     for (int n = 0; n < rows; ++n, row0 += double(s.step_y[0]), row1 += double(s.step_y[1])) {
         const int first = firsts[n], last = lasts[n], y = top + n;
@@ -446,15 +461,18 @@ void walk_runs_in_lanes(const EdgeSetup& s, int top, int rows, const std::int32_
         float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride + (first - tile.x0);
         std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride + (first - tile.x0);
         const double offset = first - s.x0;
-        DoubleLanes e0 = broadcast(row0 + offset * step_x0) + offset0, e1 = broadcast(row1 + offset * step_x1) + offset1;
+        DoubleLanes e0 = broadcast(row0 + offset * step_x0) + offset0,
+                    e1 = broadcast(row1 + offset * step_x1) + offset1;
         for (int x = first; x <= last; x += 4, depth += 4, ids += 4) {
             const DoubleLanes e2 = area - e0 - e1;
             const FloatLanes z = to_floats(depth_from(s.z, s.inv_area, e0, e1, e2));
             const int count = std::min(last - x + 1, 4);
             // A row's last group may reach past the tile's row: then only its pixels are read.
             const FloatLanes old = x + 3 < tile.x1 ? _mm_loadu_ps(depth)
-                                                  : from_scalars(depth[0], count > 1 ? depth[1] : 0, count > 2 ? depth[2] : 0, 0);
-            for (int passed = _mm_movemask_ps(_mm_cmplt_ps(z, old)) & ((1 << count) - 1); passed; passed &= passed - 1) {
+                                                   : from_scalars(depth[0], count > 1 ? depth[1] : 0,
+                                                                  count > 2 ? depth[2] : 0, 0);
+            for (int passed = _mm_movemask_ps(_mm_cmplt_ps(z, old)) & ((1 << count) - 1); passed;
+                 passed &= passed - 1) {
                 const int j = __builtin_ctz(unsigned(passed));
                 on_pixel(x + j, y, z[j], depth[j], ids[j]);
             }
@@ -473,7 +491,8 @@ void walk_runs(const EdgeSetup& s, int top, int rows, const std::int32_t* firsts
         float* depth = tile.depth + std::size_t(y - tile.y0) * tile.stride;
         std::uint32_t* ids = tile.id + std::size_t(y - tile.y0) * tile.stride;
         std::int64_t e[3];
-        for (int k = 0; k < 3; ++k) e[k] = s.row[k] + (y - s.y0) * s.step_y[k] + (firsts[n] - s.x0) * s.step_x[k];
+        for (int k = 0; k < 3; ++k)
+            e[k] = s.row[k] + (y - s.y0) * s.step_y[k] + (firsts[n] - s.x0) * s.step_x[k];
         for (int x = firsts[n]; x <= lasts[n]; ++x) {
             const float z = float(depth_of(s, e[0], e[1], e[2]));
             const int i = x - tile.x0;
@@ -506,8 +525,10 @@ void walk_solved_runs(const EdgeSetup& s, const RunBound* left_bounds, const Run
             for (RunBound& bound : left) bound.next_row();
             for (RunBound& bound : right) bound.next_row();
         }
-        if (in_lanes) walk_runs_in_lanes(s, top, rows, firsts, lasts, tile, on_pixel);
-        else walk_runs(s, top, rows, firsts, lasts, tile, on_pixel);
+        if (in_lanes)
+            walk_runs_in_lanes(s, top, rows, firsts, lasts, tile, on_pixel);
+        else
+            walk_runs(s, top, rows, firsts, lasts, tile, on_pixel);
     }
 }
 
@@ -517,7 +538,8 @@ template <typename OnPixel>
 void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on_pixel) {
     PixelBox box;
     if (!pixel_box(t, tile, box)) return;
-    if (box.width < small_triangle && box.height < small_triangle) return walk_small_triangle(t, box, tile, on_pixel);
+    if (box.width < small_triangle && box.height < small_triangle)
+        return walk_small_triangle(t, box, tile, on_pixel);
     EdgeSetup s;
     edge_setup(t, box, s);
     if (s.x1 - s.x0 < 7) return walk_each_centre(s, tile, on_pixel);
@@ -552,12 +574,14 @@ void walk_triangle(const ScreenTriangle& t, const TileTarget& tile, OnPixel&& on
 
 }  // namespace
 
-void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile, const FragmentTest* keep) {
+void rasterize_triangle(const ScreenTriangle& t, std::uint32_t id, const TileTarget& tile,
+                        const FragmentTest* keep) {
     // Two walks: without a test, no call in the loop makes the compiler keep its lanes in memory.
-    if (!keep) return walk_triangle(t, tile, [id](int, int, float depth, float& depth_slot, std::uint32_t& id_slot) {
-        depth_slot = depth;
-        id_slot = id;
-    });
+    if (!keep)
+        return walk_triangle(t, tile, [id](int, int, float depth, float& depth_slot, std::uint32_t& id_slot) {
+            depth_slot = depth;
+            id_slot = id;
+        });
     walk_triangle(t, tile, [&](int x, int y, float depth, float& depth_slot, std::uint32_t& id_slot) {
         if (!(*keep)(t, x, y)) return;
         depth_slot = depth;

@@ -8,21 +8,23 @@
 #include "renderer/fragment_stage.h"
 #include "renderer/shading.h"
 
+#include <immintrin.h>
 #include <algorithm>
-#include <stdexcept>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <immintrin.h>
 #include <limits>
+#include <stdexcept>
 
 namespace boxlod {
 
 Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
-    constexpr double frame_bytes_per_pixel = sizeof(Eigen::Vector4f) + sizeof(float) + sizeof(Eigen::Vector3f);
+    constexpr double frame_bytes_per_pixel =
+        sizeof(Eigen::Vector4f) + sizeof(float) + sizeof(Eigen::Vector3f);
     const double bytes = frame_bytes_per_pixel * double(width) * double(height);
     // The message only when refused: small frames are made by the thousand (hybrid.h).
-    if (bytes > memory_budget()) check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame", bytes);
+    if (bytes > memory_budget())
+        check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame", bytes);
     Frame frame;
     frame.width = width;
     frame.height = height;
@@ -97,8 +99,8 @@ void fill_bins(Chunk& chunk, const Tiling& tiling) {
 // coverage a + (1 - a) a_dst. Intersecting or cyclic glass is as good as that
 // order, as in engines that sort transparent draws.
 template <typename Shade>
-void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, const TileTarget& opaque, Frame& frame,
-                       const Shade& shade) {
+void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, const TileTarget& opaque,
+                       Frame& frame, const Shade& shade) {
     auto mean_depth = [&](std::uint32_t id) {
         const std::vector<ClippedWeights>* weights;
         const ScreenTriangle& t = triangle_of(c, id, weights);
@@ -132,8 +134,8 @@ void composite_blended(const Context& c, std::vector<std::uint32_t>& blended, co
 // far larger than the caches, an ordinary store first reads the line it
 // writes, and streamed stores made one at a time while shading held the
 // buffers that texture reads wait for (docs/performance.md: Streaming stores).
-void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eigen::Vector3f* normal, bool streaming,
-                Frame& frame) {
+void write_tile(const TileTarget& tile, const Eigen::Vector3f* color, const Eigen::Vector3f* normal,
+                bool streaming, Frame& frame) {
     auto stream = [](float* to, float value) {
         std::int32_t bits;
         std::memcpy(&bits, &value, sizeof bits);
@@ -185,7 +187,8 @@ bool has_triangles(const Context& c, int tile) {
 // The visibility buffer: depths from infinity (or the frame's, when asked),
 // then the opaque and masked triangles in submission order. Returns the
 // blended triangles, which are composited after shading.
-std::vector<std::uint32_t> find_visible(const Context& c, int tile, const TileTarget& target, const Frame& frame) {
+std::vector<std::uint32_t> find_visible(const Context& c, int tile, const TileTarget& target,
+                                        const Frame& frame) {
     std::fill(target.depth, target.depth + tile_size * tile_size, std::numeric_limits<float>::infinity());
     if (c.settings.depth_from_frame)
         for (int y = target.y0; y < target.y1; ++y)
@@ -205,8 +208,11 @@ std::vector<std::uint32_t> find_visible(const Context& c, int tile, const TileTa
                 blended.push_back(id);
                 continue;
             }
-            bool textured_mask = surface.alpha_mode == AlphaMode::mask && surface.color && !batch.mesh->uvs.empty();
-            if (surface.alpha_mode == AlphaMode::mask && !textured_mask && surface.base_color.w() < surface.alpha_cutoff) continue;
+            bool textured_mask =
+                surface.alpha_mode == AlphaMode::mask && surface.color && !batch.mesh->uvs.empty();
+            if (surface.alpha_mode == AlphaMode::mask && !textured_mask &&
+                surface.base_color.w() < surface.alpha_cutoff)
+                continue;
             if (!textured_mask) {
                 rasterize_triangle(t, id, target, nullptr);
                 continue;
@@ -239,8 +245,9 @@ void render_tile(const Context& c, const Tiling& tiling, int tile, Frame& frame,
     write_tile(target, shaded.color, shaded.normal, blended.empty(), frame);
     if (!blended.empty()) {
         const bool reads_uv = c.shader.reads_uv();
-        composite_blended(c, blended, target, frame,
-                          [&](const TriangleSetup& setup, int x, int y) { return shade_pixel(c, setup, x, y, reads_uv); });
+        composite_blended(c, blended, target, frame, [&](const TriangleSetup& setup, int x, int y) {
+            return shade_pixel(c, setup, x, y, reads_uv);
+        });
     }
 }
 
@@ -281,9 +288,10 @@ void batch_to_clip(const std::vector<Batch>& batches, const Eigen::Matrix4f& vie
 
 // Vertex stage: clip-space positions, outcodes and snapped window positions,
 // in parallel over vertex ranges. Returns the triangle ranges of each chunk.
-std::vector<ChunkRanges> project_vertices(const std::vector<Batch>& batches, const std::vector<Eigen::Matrix4f>& to_clip,
-                                    const Viewport& viewport, int threads,
-                                    std::vector<std::vector<ProjectedVertex>>& projected) {
+std::vector<ChunkRanges> project_vertices(const std::vector<Batch>& batches,
+                                          const std::vector<Eigen::Matrix4f>& to_clip,
+                                          const Viewport& viewport, int threads,
+                                          std::vector<std::vector<ProjectedVertex>>& projected) {
     projected.resize(std::max(projected.size(), batches.size()));
     std::vector<Range> vertex_ranges;
     std::vector<ChunkRanges> chunk_ranges;
@@ -318,9 +326,9 @@ std::vector<ChunkRanges> project_vertices(const std::vector<Batch>& batches, con
 // Set-up and binning, in parallel over chunks of triangles, each in blocks
 // binned while their screen triangles are still in cache.
 void bin_triangles(const std::vector<Batch>& batches, const std::vector<ChunkRanges>& chunk_ranges,
-                   const std::vector<std::vector<ProjectedVertex>>& projected, const std::vector<Eigen::Matrix4f>& to_clip,
-                   const RenderSettings& settings, const Viewport& viewport, const Tiling& tiling, int threads,
-                   std::vector<Chunk>& chunks) {
+                   const std::vector<std::vector<ProjectedVertex>>& projected,
+                   const std::vector<Eigen::Matrix4f>& to_clip, const RenderSettings& settings,
+                   const Viewport& viewport, const Tiling& tiling, int threads, std::vector<Chunk>& chunks) {
     if (chunks.size() < chunk_ranges.size()) chunks.resize(chunk_ranges.size());
     for (std::size_t c = 0; c < chunk_ranges.size(); ++c) {
         chunks[c].triangles.clear();
@@ -331,13 +339,14 @@ void bin_triangles(const std::vector<Batch>& batches, const std::vector<ChunkRan
         chunk.tile_counts.assign(std::size_t(tiling.count()), 0);
         for (const Range& range : chunk_ranges[r]) {
             const Mesh& mesh = *batches[range.batch].mesh;
-            const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(), mesh.positions.data(),
-                                               &to_clip[range.batch]};
+            const ProjectedMesh projected_mesh{mesh.indices.data(), projected[range.batch].data(),
+                                               mesh.positions.data(), &to_clip[range.batch]};
             constexpr std::size_t block = 1024;
             for (std::size_t begin = range.begin; begin < range.end; begin += block) {
                 const std::size_t first = chunk.triangles.size();
-                setup_triangles(projected_mesh, begin, std::min(range.end, begin + block), std::uint32_t(range.batch),
-                                settings.culling, viewport, chunk.triangles, chunk.weights);
+                setup_triangles(projected_mesh, begin, std::min(range.end, begin + block),
+                                std::uint32_t(range.batch), settings.culling, viewport, chunk.triangles,
+                                chunk.weights);
                 count_tiles(chunk, first, tiling, viewport);
             }
         }
@@ -359,7 +368,8 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     const Viewport viewport = viewport_of(frame, settings);
     const int threads = thread_count(settings.threads);
     const Eigen::Matrix4f view_projection =
-        projection_matrix(settings.camera, float(frame.width) / float(frame.height)) * view_matrix(settings.camera);
+        projection_matrix(settings.camera, float(frame.width) / float(frame.height)) *
+        view_matrix(settings.camera);
     // Scratch kept per calling thread: a frame of a million triangles needs
     // ~100 MB, and fresh allocations every frame cost more in page faults than
     // the rasterization itself (docs/performance.md: Rasterizer vs Mesa llvmpipe).
@@ -367,15 +377,20 @@ void render(const std::vector<Batch>& batches, const RenderSettings& settings, F
     thread_local std::vector<Chunk> chunks;
     thread_local std::vector<Eigen::Matrix4f> to_clip;
     batch_to_clip(batches, view_projection, to_clip);
-    const std::vector<ChunkRanges> chunk_ranges = project_vertices(batches, to_clip, viewport, threads, projected);
-    const Tiling tiling{(frame.width + tile_size - 1) / tile_size, (frame.height + tile_size - 1) / tile_size};
+    const std::vector<ChunkRanges> chunk_ranges =
+        project_vertices(batches, to_clip, viewport, threads, projected);
+    const Tiling tiling{(frame.width + tile_size - 1) / tile_size,
+                        (frame.height + tile_size - 1) / tile_size};
     bin_triangles(batches, chunk_ranges, projected, to_clip, settings, viewport, tiling, threads, chunks);
 
     // Tiles: each owned by one thread; triangles replayed in submission order.
-    std::unique_ptr<Shader> mode_shader = settings.shader ? nullptr : make_shader(settings, shading_eye(settings.camera));
-    const bool translated = std::any_of(batches.begin(), batches.end(), [](const Batch& b) { return !b.translation.isZero(0); });
-    Context context{batches, settings, chunks, chunk_ranges.size(), settings.shader ? *settings.shader : *mode_shader,
-                    translated};
+    std::unique_ptr<Shader> mode_shader =
+        settings.shader ? nullptr : make_shader(settings, shading_eye(settings.camera));
+    const bool translated =
+        std::any_of(batches.begin(), batches.end(), [](const Batch& b) { return !b.translation.isZero(0); });
+    Context context{
+        batches,   settings, chunks, chunk_ranges.size(), settings.shader ? *settings.shader : *mode_shader,
+        translated};
     parallel_for(std::size_t(tiling.count()), threads,
                  [&](std::size_t tile) { render_tile(context, tiling, int(tile), frame, viewport); });
 }

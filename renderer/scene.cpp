@@ -24,7 +24,9 @@ std::span<const EnumEntry<AlphaMode>> alpha_modes() { return alpha_mode_table; }
 
 std::span<const EnumEntry<RenderMode>> render_modes() { return render_mode_table; }
 
-bool parse_render_mode(const std::string& name, RenderMode& mode) { return parse_enum(render_modes(), name, mode); }
+bool parse_render_mode(const std::string& name, RenderMode& mode) {
+    return parse_enum(render_modes(), name, mode);
+}
 
 const char* render_mode_name(RenderMode mode) { return enum_name(render_modes(), mode); }
 
@@ -45,7 +47,8 @@ Light light_for_camera(const Camera& camera) {
     Eigen::Vector3f right = eye.cross(camera.up);
     if (right.squaredNorm() == 0) right = Eigen::Vector3f::UnitX();
     Light light;
-    light.position = camera.position + right.normalized() * (distance * 0.5f) + camera.up.normalized() * distance;
+    light.position =
+        camera.position + right.normalized() * (distance * 0.5f) + camera.up.normalized() * distance;
     return light;
 }
 

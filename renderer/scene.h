@@ -54,9 +54,9 @@ constexpr NumberRange alpha_cutoff_range{0, 1};
 
 struct Surface {
     Eigen::Vector4f base_color{1, 1, 1, 1};  // linear
-    const MipTexture* color = nullptr;          // sRGB-decoded albedo, alpha
-    const MipTexture* normal = nullptr;         // tangent-space normal map
-    const MipTexture* height = nullptr;         // 1 = surface, 0 = deepest
+    const MipTexture* color = nullptr;       // sRGB-decoded albedo, alpha
+    const MipTexture* normal = nullptr;      // tangent-space normal map
+    const MipTexture* height = nullptr;      // 1 = surface, 0 = deepest
     // Metres from height 1 to height 0 (baked LoD pages); 0: unstated, and
     // parallax offsets are the manual's, in the texture's own uv (docs/design.md: Rendering).
     float height_depth = 0;

@@ -37,7 +37,8 @@ Eigen::Vector4f sample_surface(const MipTexture& texture, MipLevels& levels, con
 
 // The unit vector to the eye; two-sided lighting turns the fragment's frame
 // towards it, and `turned` says whether it did (the surface is seen from behind).
-[[gnu::always_inline]] inline Eigen::Vector3f face_the_viewer(const Eigen::Vector3f& eye, Fragment& f, bool& turned) {
+[[gnu::always_inline]] inline Eigen::Vector3f face_the_viewer(const Eigen::Vector3f& eye, Fragment& f,
+                                                              bool& turned) {
     Eigen::Vector3f view = (eye - f.position);
     float view_length = view.norm();
     view = view_length > 0 ? Eigen::Vector3f(view / view_length) : Eigen::Vector3f(0, 0, 1);
@@ -51,29 +52,35 @@ Eigen::Vector4f sample_surface(const MipTexture& texture, MipLevels& levels, con
 }
 
 // Blinn-Phong with the manual's light (ambient + diffuse x albedo, specular x the material's).
-[[gnu::always_inline]] inline Eigen::Vector3f blinn_phong(const Light& light, const Surface& s, const Fragment& f, const Eigen::Vector3f& view,
-                            const Eigen::Vector4f& albedo, const Eigen::Vector3f& normal) {
+[[gnu::always_inline]] inline Eigen::Vector3f blinn_phong(const Light& light, const Surface& s,
+                                                          const Fragment& f, const Eigen::Vector3f& view,
+                                                          const Eigen::Vector4f& albedo,
+                                                          const Eigen::Vector3f& normal) {
     Eigen::Vector3f to_light = (light.position - f.position).normalized();
     Eigen::Vector3f halfway = (to_light + view).normalized();
     float diffuse = std::max(0.0f, normal.dot(to_light));
     float shininess = light.shininess > 0 ? light.shininess : s.shininess;
     float specular = diffuse > 0 ? std::pow(std::max(0.0f, normal.dot(halfway)), shininess) : 0;
-    return albedo.head<3>() * (light.ambient + light.diffuse * diffuse) + s.specular * (light.specular * specular);
+    return albedo.head<3>() * (light.ambient + light.diffuse * diffuse) +
+           s.specular * (light.specular * specular);
 }
 
 // face_the_viewer in lanes: the view vector; `turned` marks the lanes seen from behind.
 Vector3Lanes face_the_viewer(const Eigen::Vector3f& eye, const FragmentLanes& f, IntLanes& turned) {
     Vector3Lanes view = broadcast(eye) - f.position;
     FloatLanes view_length = square_root(dot(view, view));
-    view = select(view_length > 0, view / view_length, Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
+    view = select(view_length > 0, view / view_length,
+                  Vector3Lanes{broadcast(0.0f), broadcast(0.0f), broadcast(1.0f)});
     turned = dot(f.geometric_normal, view) < 0;
     return view;
 }
 
 // blinn_phong in lanes, each lane with its surface's specular colour and
 // shininess; glibc's powf stays per lane, for its bits.
-[[gnu::always_inline]] inline Vector3Lanes blinn_phong(const Light& light, const FragmentLanes& f, const Vector3Lanes& view, const Vector3Lanes& albedo,
-                         const Vector3Lanes& specular_color, const Vector3Lanes& normal) {
+[[gnu::always_inline]] inline Vector3Lanes blinn_phong(const Light& light, const FragmentLanes& f,
+                                                       const Vector3Lanes& view, const Vector3Lanes& albedo,
+                                                       const Vector3Lanes& specular_color,
+                                                       const Vector3Lanes& normal) {
     Vector3Lanes to_light = normalized(broadcast(light.position) - f.position);
     Vector3Lanes halfway = normalized(to_light + view);
     FloatLanes diffuse = max_zero(dot(normal, to_light)), specular_base = max_zero(dot(normal, halfway));
@@ -83,7 +90,8 @@ Vector3Lanes face_the_viewer(const Eigen::Vector3f& eye, const FragmentLanes& f,
         if (diffuse[j] > 0) specular[j] = std::pow(specular_base[j], shininess);
     }
     FloatLanes lit = broadcast(light.ambient) + broadcast(light.diffuse) * diffuse;
-    FloatLanes highlight = broadcast(light.specular) * from_scalars(specular[0], specular[1], specular[2], specular[3]);
+    FloatLanes highlight =
+        broadcast(light.specular) * from_scalars(specular[0], specular[1], specular[2], specular[3]);
     return {albedo.x * lit + specular_color.x * highlight, albedo.y * lit + specular_color.y * highlight,
             albedo.z * lit + specular_color.z * highlight};
 }
@@ -93,7 +101,8 @@ bool one_surface(const FragmentLanes& f) {
 }
 
 // Each lane's surface's base colour (rgb, alpha) and specular colour.
-void materials(const FragmentLanes& f, Vector3Lanes& base_color, FloatLanes& base_alpha, Vector3Lanes& specular_color) {
+void materials(const FragmentLanes& f, Vector3Lanes& base_color, FloatLanes& base_alpha,
+               Vector3Lanes& specular_color) {
     if (one_surface(f)) {
         const Surface& s = *f.surface[0];
         base_color = broadcast(Eigen::Vector3f(s.base_color.head<3>()));
@@ -156,7 +165,8 @@ public:
                 continue;
             }
             const Surface& s = *f.surface[j];
-            if ((displaces_ && s.height) || bool(s.color) != bool(s.normal) || (s.color && !same_layout(*s.color, *s.normal)))
+            if ((displaces_ && s.height) || bool(s.color) != bool(s.normal) ||
+                (s.color && !same_layout(*s.color, *s.normal)))
                 return Shader::shade_lanes(f, shaded);
             mapped[j] = s.color ? -1 : 0;
         }
@@ -168,12 +178,14 @@ public:
         shaded.normal = surface_normal;
         if (_mm_movemask_ps(__m128(mapped)) != 0) {
             // Lanes without maps read texels of 1 (albedo x 1 is albedo) and keep their normal.
-            Vector4Lanes color_texel{broadcast(1.0f), broadcast(1.0f), broadcast(1.0f), broadcast(1.0f)}, normal_texel{};
+            Vector4Lanes color_texel{broadcast(1.0f), broadcast(1.0f), broadcast(1.0f), broadcast(1.0f)},
+                normal_texel{};
             sample_maps(f, mapped, color_texel, normal_texel);
             albedo = {albedo.x * color_texel.x, albedo.y * color_texel.y, albedo.z * color_texel.z};
             shaded.alpha = shaded.alpha * color_texel.w;
             const Vector3Lanes bitangent = select(turned, -f.bitangent, f.bitangent);
-            const Vector3Lanes normal = f.tangent * (normal_texel.x * 2 - 1) + bitangent * (normal_texel.y * 2 - 1) +
+            const Vector3Lanes normal = f.tangent * (normal_texel.x * 2 - 1) +
+                                        bitangent * (normal_texel.y * 2 - 1) +
                                         surface_normal * (normal_texel.z * 2 - 1);
             const FloatLanes squared = dot(normal, normal);
             shaded.normal = select(mapped & (squared > 0), normal / square_root(squared), surface_normal);
@@ -191,11 +203,15 @@ public:
             // its front; from behind (inside a box, through cut-out texels) no offset fits.
             const bool displace = s.height && !(turned && s.height_depth > 0);
             Eigen::Vector2f uv = displace ? displaced_uv(s, f, levels, view) : f.uv;
-            Eigen::Vector4f color_texel = Eigen::Vector4f::Ones(), normal_texel = Eigen::Vector4f::Zero();  // set where read
+            Eigen::Vector4f color_texel = Eigen::Vector4f::Ones(),
+                            normal_texel = Eigen::Vector4f::Zero();  // set where read
             if (s.color && s.normal)
-                std::tie(color_texel, normal_texel) = sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);
-            else if (s.color) color_texel = sample_surface(*s.color, levels, uv);
-            else if (s.normal) normal_texel = sample_surface(*s.normal, levels, uv);
+                std::tie(color_texel, normal_texel) =
+                    sample_both(*s.color, levels.of(*s.color), *s.normal, levels.of(*s.normal), uv);
+            else if (s.color)
+                color_texel = sample_surface(*s.color, levels, uv);
+            else if (s.normal)
+                normal_texel = sample_surface(*s.normal, levels, uv);
             if (s.color) albedo = albedo.cwiseProduct(color_texel);
             if (s.normal) {
                 const Eigen::Vector4f& texel = normal_texel;
@@ -210,7 +226,8 @@ public:
 
 private:
     // The colour and normal texels of the `mapped` lanes (shade()'s sample_both).
-    static void sample_maps(const FragmentLanes& f, IntLanes mapped, Vector4Lanes& color_texel, Vector4Lanes& normal_texel) {
+    static void sample_maps(const FragmentLanes& f, IntLanes mapped, Vector4Lanes& color_texel,
+                            Vector4Lanes& normal_texel) {
         const Surface& s = *f.surface[0];
         if (one_surface(f) && _mm_movemask_ps(__m128(mapped)) == (1 << f.count) - 1) {
             const FloatLanes lod = mip_level(*s.color, f.du_dx, f.dv_dx, f.du_dy, f.dv_dy, f.count);
@@ -220,8 +237,10 @@ private:
         for (int j = 0; j < f.count; ++j) {
             if (!mapped[j]) continue;
             const Surface& lane_surface = *f.surface[j];
-            const float lod = mip_level(*lane_surface.color, {f.du_dx[j], f.dv_dx[j]}, {f.du_dy[j], f.dv_dy[j]});
-            const auto [color, normal] = sample_both(*lane_surface.color, lod, *lane_surface.normal, lod, {f.u[j], f.v[j]});
+            const float lod =
+                mip_level(*lane_surface.color, {f.du_dx[j], f.dv_dx[j]}, {f.du_dy[j], f.dv_dy[j]});
+            const auto [color, normal] =
+                sample_both(*lane_surface.color, lod, *lane_surface.normal, lod, {f.u[j], f.v[j]});
             color_texel.x[j] = color.x();
             color_texel.y[j] = color.y();
             color_texel.z[j] = color.z();
@@ -234,7 +253,8 @@ private:
 
 protected:
     // Where the maps are sampled: the fragment's uv, or displaced by s's height map.
-    virtual Eigen::Vector2f displaced_uv(const Surface&, const Fragment& f, MipLevels&, const Eigen::Vector3f&) const {
+    virtual Eigen::Vector2f displaced_uv(const Surface&, const Fragment& f, MipLevels&,
+                                         const Eigen::Vector3f&) const {
         return f.uv;
     }
     // The view vector in the tangent frame, and the uv offset of the point one
@@ -246,9 +266,14 @@ protected:
     static Eigen::Vector3f tangent_view(const Surface& s, const Fragment& f, const Eigen::Vector3f& view,
                                         Eigen::Vector2f& uv_per_depth) {
         Eigen::Vector3f v(view.dot(f.tangent), view.dot(f.bitangent), view.dot(f.normal));
-        if (s.height_depth <= 0) uv_per_depth = Eigen::Vector2f(v.x(), -v.y());
-        else if (!f.uv_gradient) uv_per_depth = Eigen::Vector2f::Zero();  // no uv gradient (degenerate uvs): no offset
-        else uv_per_depth = Eigen::Vector2f(f.uv_gradient->du_dposition.dot(view), f.uv_gradient->dv_dposition.dot(view)) * s.height_depth;
+        if (s.height_depth <= 0)
+            uv_per_depth = Eigen::Vector2f(v.x(), -v.y());
+        else if (!f.uv_gradient)
+            uv_per_depth = Eigen::Vector2f::Zero();  // no uv gradient (degenerate uvs): no offset
+        else
+            uv_per_depth = Eigen::Vector2f(f.uv_gradient->du_dposition.dot(view),
+                                           f.uv_gradient->dv_dposition.dot(view)) *
+                           s.height_depth;
         return v;
     }
 
@@ -349,8 +374,10 @@ std::unique_ptr<Shader> make_shader(const RenderSettings& settings, const Eigen:
     case RenderMode::untextured: return std::make_unique<UntexturedShader>(settings.light, eye);
     case RenderMode::normal: return std::make_unique<MappedShader>(settings.light, eye, true);
     case RenderMode::parallax:
-        return std::make_unique<ParallaxShader>(settings.light, eye, settings.parallax_scale, settings.parallax_bias);
-    case RenderMode::pom: return std::make_unique<OcclusionShader>(settings.light, eye, settings.parallax_scale);
+        return std::make_unique<ParallaxShader>(settings.light, eye, settings.parallax_scale,
+                                                settings.parallax_bias);
+    case RenderMode::pom:
+        return std::make_unique<OcclusionShader>(settings.light, eye, settings.parallax_scale);
     case RenderMode::albedo: return std::make_unique<MappedShader>(settings.light, eye, false);
     }
     throw std::logic_error("make_shader: unknown render mode");

@@ -28,10 +28,10 @@ Eigen::Vector4f decode_as(const MipTexture::Level& level, std::size_t i) {
 
 Eigen::Vector4f decode(const MipTexture::Level& level, TexelFormat format, std::size_t i) {
     switch (format) {
-        case TexelFormat::srgb8: return decode_as<TexelFormat::srgb8>(level, i);
-        case TexelFormat::unorm8: return decode_as<TexelFormat::unorm8>(level, i);
-        case TexelFormat::unorm16: return decode_as<TexelFormat::unorm16>(level, i);
-        case TexelFormat::float32: break;
+    case TexelFormat::srgb8: return decode_as<TexelFormat::srgb8>(level, i);
+    case TexelFormat::unorm8: return decode_as<TexelFormat::unorm8>(level, i);
+    case TexelFormat::unorm16: return decode_as<TexelFormat::unorm16>(level, i);
+    case TexelFormat::float32: break;
     }
     return decode_as<TexelFormat::float32>(level, i);
 }
@@ -57,9 +57,12 @@ MipTexture::Level make_level(TexelFormat format, int width, int height) {
     level.width = width;
     level.height = height;
     std::size_t n = std::size_t(width) * height;
-    if (format == TexelFormat::unorm16) level.r16.resize(n);
-    else if (format == TexelFormat::float32) level.r32.resize(n);
-    else level.rgba8.resize(n * 4);
+    if (format == TexelFormat::unorm16)
+        level.r16.resize(n);
+    else if (format == TexelFormat::float32)
+        level.r32.resize(n);
+    else
+        level.rgba8.resize(n * 4);
     return level;
 }
 
@@ -67,12 +70,15 @@ MipTexture::Level make_level(TexelFormat format, int width, int height) {
 void build_mips(MipTexture& texture) {
     while (texture.levels.back().width > 1 || texture.levels.back().height > 1) {
         const MipTexture::Level& fine = texture.levels.back();
-        MipTexture::Level coarse = make_level(texture.format, std::max(1, fine.width / 2), std::max(1, fine.height / 2));
+        MipTexture::Level coarse =
+            make_level(texture.format, std::max(1, fine.width / 2), std::max(1, fine.height / 2));
         for (int y = 0; y < coarse.height; ++y)
             for (int x = 0; x < coarse.width; ++x) {
                 int x0 = std::min(2 * x, fine.width - 1), x1 = std::min(2 * x + 1, fine.width - 1);
                 int y0 = std::min(2 * y, fine.height - 1), y1 = std::min(2 * y + 1, fine.height - 1);
-                auto at = [&](int i, int j) { return decode(fine, texture.format, std::size_t(j) * fine.width + i); };
+                auto at = [&](int i, int j) {
+                    return decode(fine, texture.format, std::size_t(j) * fine.width + i);
+                };
                 encode(coarse, texture.format, std::size_t(y) * coarse.width + x,
                        (at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1)) * 0.25f);
             }
@@ -120,12 +126,14 @@ Footprint footprint(const MipTexture::Level& level, Wrap wrap, Eigen::Vector2f u
     f.single = false;
     f.s = x - fx;
     f.t = y - fy;
-    if (i >= 0 && j >= 0 && i + 1 < level.width && j + 1 < level.height) {  // inside: no wrapping (most samples)
+    if (i >= 0 && j >= 0 && i + 1 < level.width &&
+        j + 1 < level.height) {  // inside: no wrapping (most samples)
         f.k00 = std::size_t(j) * level.width + i;
         f.k10 = f.k00 + 1;
         f.k01 = f.k00 + std::size_t(level.width);
         f.k11 = f.k01 + 1;
-    } else {  // each coordinate wrapped once, its neighbour from it (a tiled texture's every sample lands here)
+    } else {  // each coordinate wrapped once, its neighbour from it (a tiled texture's every sample lands
+              // here)
         const int i0 = wrap_index(i, level.width, wrap), j0 = wrap_index(j, level.height, wrap);
         const int i1 = wrap_next(i0, i + 1, level.width, wrap), j1 = wrap_next(j0, j + 1, level.height, wrap);
         const std::size_t row0 = std::size_t(j0) * level.width, row1 = std::size_t(j1) * level.width;
@@ -148,10 +156,10 @@ Eigen::Vector4f fetch_as(const MipTexture::Level& level, const Footprint& f) {
 Eigen::Vector4f fetch(const MipTexture& texture, int index, const Footprint& f) {
     const MipTexture::Level& level = texture.levels[std::size_t(index)];
     switch (texture.format) {
-        case TexelFormat::srgb8: return fetch_as<TexelFormat::srgb8>(level, f);
-        case TexelFormat::unorm8: return fetch_as<TexelFormat::unorm8>(level, f);
-        case TexelFormat::unorm16: return fetch_as<TexelFormat::unorm16>(level, f);
-        case TexelFormat::float32: break;
+    case TexelFormat::srgb8: return fetch_as<TexelFormat::srgb8>(level, f);
+    case TexelFormat::unorm8: return fetch_as<TexelFormat::unorm8>(level, f);
+    case TexelFormat::unorm16: return fetch_as<TexelFormat::unorm16>(level, f);
+    case TexelFormat::float32: break;
     }
     return fetch_as<TexelFormat::float32>(level, f);
 }
@@ -187,7 +195,8 @@ SamplePlan plan_sample(const MipTexture& texture, Eigen::Vector2f uv, float lod)
     }
     plan_levels(texture, lod, plan);
     plan.at[0] = footprint(texture.levels[std::size_t(plan.level[0])], texture.wrap, uv, false);
-    if (plan.count == 2) plan.at[1] = footprint(texture.levels[std::size_t(plan.level[1])], texture.wrap, uv, false);
+    if (plan.count == 2)
+        plan.at[1] = footprint(texture.levels[std::size_t(plan.level[1])], texture.wrap, uv, false);
     return plan;
 }
 
@@ -202,7 +211,8 @@ FloatLanes floor_lanes(FloatLanes x) {
 // coordinates, their floors, weights and wrapped texels. Lanes at non-finite
 // coordinates or repeating a level whose size is not a power of two go
 // through footprint().
-void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLanes lod, int count, SamplePlan* plans) {
+void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLanes lod, int count,
+                  SamplePlan* plans) {
     if (texture.filter != Filter::trilinear) {
         for (int j = 0; j < count; ++j) plans[j] = plan_sample(texture, {u[j], v[j]}, lod[j]);
         return;
@@ -217,7 +227,7 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
         }
         FloatLanes x = u * __builtin_convertvector(width, FloatLanes) - 0.5f;
         FloatLanes y = v * __builtin_convertvector(height, FloatLanes) - 0.5f;
-        const IntLanes finite = (x - x == 0) & (y - y == 0);  // inf - inf and NaN - NaN are NaN
+        const IntLanes finite = (x - x == 0) & (y - y == 0);               // inf - inf and NaN - NaN are NaN
         x = _mm_min_ps(_mm_max_ps(x, broadcast(-1e7f)), broadcast(1e7f));  // std::clamp for finite x
         y = _mm_min_ps(_mm_max_ps(y, broadcast(-1e7f)), broadcast(1e7f));
         const FloatLanes fx = floor_lanes(x), fy = floor_lanes(y);
@@ -226,7 +236,9 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
         // wrap_index and wrap_next in lanes; repeat where the level's size is a power of two.
         const IntLanes last_x = width - 1, last_y = height - 1, zero{};
         IntLanes i0, i1, j0, j1, in_lanes = finite;
-        auto clamp = [&](IntLanes value, IntLanes last) { return value < 0 ? zero : (last < value ? last : value); };
+        auto clamp = [&](IntLanes value, IntLanes last) {
+            return value < 0 ? zero : (last < value ? last : value);
+        };
         if (texture.wrap == Wrap::clamp) {
             i0 = clamp(i, last_x);
             i1 = clamp(i + 1, last_x);
@@ -244,13 +256,15 @@ void plan_samples(const MipTexture& texture, FloatLanes u, FloatLanes v, FloatLa
             if (slot == 1 && plan.count == 1) continue;
             Footprint& f = plan.at[slot];
             if (!in_lanes[j]) {
-                f = footprint(texture.levels[std::size_t(plan.level[slot])], texture.wrap, {u[j], v[j]}, false);
+                f = footprint(texture.levels[std::size_t(plan.level[slot])], texture.wrap, {u[j], v[j]},
+                              false);
                 continue;
             }
             f.single = false;
             f.s = s[j];
             f.t = t[j];
-            const std::size_t row0 = std::size_t(j0[j]) * std::size_t(width[j]), row1 = std::size_t(j1[j]) * std::size_t(width[j]);
+            const std::size_t row0 = std::size_t(j0[j]) * std::size_t(width[j]),
+                              row1 = std::size_t(j1[j]) * std::size_t(width[j]);
             f.k00 = row0 + std::size_t(i0[j]);
             f.k10 = row0 + std::size_t(i1[j]);
             f.k01 = row1 + std::size_t(i0[j]);
@@ -265,7 +279,6 @@ Eigen::Vector4f sample_planned(const MipTexture& texture, const SamplePlan& plan
     Eigen::Vector4f b = fetch(texture, plan.level[1], plan.at[1]);
     return a * (1 - plan.blend) + b * plan.blend;
 }
-
 
 // Height maps: the first channel of the image, stored as it is.
 template <typename T>
@@ -295,8 +308,7 @@ MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap) {
         if (image.channels <= 2) {
             q[0] = q[1] = q[2] = p[0];
             q[3] = image.channels == 2 ? p[1] : 255;
-        }
-        else {
+        } else {
             q[0] = p[0];
             q[1] = p[1];
             q[2] = p[2];
@@ -316,8 +328,6 @@ MipTexture make_texture(const ImageF& image, Wrap wrap) {
     return single_channel_texture(image, TexelFormat::float32, wrap, &MipTexture::Level::r32);
 }
 
-
-
 Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y) {
     const MipTexture::Level& l = texture.levels[level];
     return decode(l, texture.format, std::size_t(y) * l.width + x);
@@ -327,8 +337,8 @@ Eigen::Vector4f sample(const MipTexture& texture, Eigen::Vector2f uv, float lod)
     return sample_planned(texture, plan_sample(texture, uv, lod));
 }
 
-std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b, float lod_b,
-                                                        Eigen::Vector2f uv) {
+std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b,
+                                                        float lod_b, Eigen::Vector2f uv) {
     const SamplePlan plan = plan_sample(a, uv, lod_a);
     if (lod_a == lod_b && same_layout(a, b)) return {sample_planned(a, plan), sample_planned(b, plan)};
     return {sample_planned(a, plan), sample(b, uv, lod_b)};
@@ -340,8 +350,8 @@ bool same_layout(const MipTexture& a, const MipTexture& b) {
            a.levels[0].width == b.levels[0].width && a.levels[0].height == b.levels[0].height;
 }
 
-void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod, int count,
-                 Vector4Lanes& from_a, Vector4Lanes& from_b) {
+void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod,
+                 int count, Vector4Lanes& from_a, Vector4Lanes& from_b) {
     SamplePlan plans[lane_count];
     plan_samples(a, u, v, lod, count, plans);
     for (int j = 0; j < count; ++j) {
@@ -361,9 +371,10 @@ void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLa
 // glibc's hypotf rounds the exact double sum of squares' square root to float
 // (checked against it on 2e8 finite pairs, bit patterns and small values);
 // a non-finite lane takes hypotf itself.
-FloatLanes mip_level(const MipTexture& texture, FloatLanes du_dx, FloatLanes dv_dx, FloatLanes du_dy, FloatLanes dv_dy,
-                     int count) {
-    const FloatLanes w = broadcast(float(texture.levels[0].width)), h = broadcast(float(texture.levels[0].height));
+FloatLanes mip_level(const MipTexture& texture, FloatLanes du_dx, FloatLanes dv_dx, FloatLanes du_dy,
+                     FloatLanes dv_dy, int count) {
+    const FloatLanes w = broadcast(float(texture.levels[0].width)),
+                     h = broadcast(float(texture.levels[0].height));
     auto hypot = [&](FloatLanes a, FloatLanes b) {
         const DoubleLanes da = to_doubles(a), db = to_doubles(b);
         FloatLanes length = to_floats(square_root(da * da + db * db));

@@ -35,8 +35,8 @@ struct MipTexture {
 };
 
 MipTexture make_texture(const Image8& image, ColorSpace space, Wrap wrap = Wrap::repeat);  // 1..4 channels
-MipTexture make_texture(const Image16& image, Wrap wrap = Wrap::clamp);                    // first channel -> R
-MipTexture make_texture(const ImageF& image, Wrap wrap = Wrap::clamp);                     // first channel -> R
+MipTexture make_texture(const Image16& image, Wrap wrap = Wrap::clamp);  // first channel -> R
+MipTexture make_texture(const ImageF& image, Wrap wrap = Wrap::clamp);   // first channel -> R
 
 // One texel of one level, decoded to linear (R, G, B, A); unorm16 and float32 give (h, 0, 0, 1).
 Eigen::Vector4f texel(const MipTexture& texture, int level, int x, int y);
@@ -47,21 +47,21 @@ Eigen::Vector4f sample(const MipTexture& texture, Eigen::Vector2f uv, float lod 
 // sample(a, uv, lod_a) and sample(b, uv, lod_b); where both have one size, wrap
 // and filter and the lods are equal (a face's colour and normal maps), the
 // texels and weights are found once for both.
-std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b, float lod_b,
-                                                        Eigen::Vector2f uv);
+std::pair<Eigen::Vector4f, Eigen::Vector4f> sample_both(const MipTexture& a, float lod_a, const MipTexture& b,
+                                                        float lod_b, Eigen::Vector2f uv);
 
 // Mip level for the screen-space derivatives of uv (OpenGL 4.6, 8.14.1).
 float mip_level(const MipTexture& texture, const Eigen::Vector2f& duv_dx, const Eigen::Vector2f& duv_dy);
 
 // The same, in lanes (renderer/lanes.h), with mip_level's bits in each of
 // the first `count` lanes.
-FloatLanes mip_level(const MipTexture& texture, FloatLanes du_dx, FloatLanes dv_dx, FloatLanes du_dy, FloatLanes dv_dy,
-                     int count);
+FloatLanes mip_level(const MipTexture& texture, FloatLanes du_dx, FloatLanes dv_dx, FloatLanes du_dy,
+                     FloatLanes dv_dy, int count);
 // Whether two textures have one size, wrap and filter: then they read the same texels.
 bool same_layout(const MipTexture& a, const MipTexture& b);
 // sample_both(a, lod, b, lod, uv) for two textures of one layout, in lanes,
 // at the first `count` lanes' uvs and mip levels.
-void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod, int count,
-                 Vector4Lanes& from_a, Vector4Lanes& from_b);
+void sample_both(const MipTexture& a, const MipTexture& b, FloatLanes u, FloatLanes v, FloatLanes lod,
+                 int count, Vector4Lanes& from_a, Vector4Lanes& from_b);
 
 }  // namespace boxlod

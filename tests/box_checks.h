@@ -9,7 +9,8 @@
 namespace boxlod::test {
 
 inline bool encloses(const OrientedBox& box, const Eigen::Vector3f& p, double tolerance = 1e-5) {
-    Eigen::Vector3d local = box.axes.cast<double>().transpose() * (p.cast<double>() - box.center.cast<double>());
+    Eigen::Vector3d local =
+        box.axes.cast<double>().transpose() * (p.cast<double>() - box.center.cast<double>());
     return (local.cwiseAbs().array() <= box.half_extents.cast<double>().array() + tolerance).all();
 }
 

@@ -14,11 +14,14 @@ inline void expect_golden(const Image8& image, const std::string& name) {
         write_png(path.string(), image);
         return;
     }
-    ASSERT_TRUE(std::filesystem::exists(path)) << "missing golden " << path << " (BOXLOD_UPDATE_GOLDEN=1 makes it)";
+    ASSERT_TRUE(std::filesystem::exists(path))
+        << "missing golden " << path << " (BOXLOD_UPDATE_GOLDEN=1 makes it)";
     Image8 stored = read_image(path.string());  // RGBA
     Image8 rendered = decode_image(encode_png(image), name);
-    bool same = stored.width == rendered.width && stored.height == rendered.height && stored.pixels == rendered.pixels;
-    EXPECT_TRUE(same) << "render differs from " << path << "; the new image is at " << path.string() << ".new.png";
+    bool same = stored.width == rendered.width && stored.height == rendered.height &&
+                stored.pixels == rendered.pixels;
+    EXPECT_TRUE(same) << "render differs from " << path << "; the new image is at " << path.string()
+                      << ".new.png";
     if (!same) write_png(path.string() + ".new.png", image);
 }
 

@@ -5,7 +5,8 @@
 
 namespace boxlod::test {
 
-inline void add_quad(Primitive& p, Eigen::Vector3f a, Eigen::Vector3f b, Eigen::Vector3f c, Eigen::Vector3f d) {
+inline void add_quad(Primitive& p, Eigen::Vector3f a, Eigen::Vector3f b, Eigen::Vector3f c,
+                     Eigen::Vector3f d) {
     auto base = std::uint32_t(p.positions.size());
     Eigen::Vector3f n = (b - a).cross(d - a).normalized();
     for (const auto& v : {a, b, c, d}) {

@@ -48,7 +48,8 @@ inline Image8 box_blur(const Image8& in, int radius) {
                 int sum = 0, count = 0;
                 for (int dy = -radius; dy <= radius; ++dy)
                     for (int dx = -radius; dx <= radius; ++dx, ++count)
-                        sum += in.at(std::clamp(x + dx, 0, in.width - 1), std::clamp(y + dy, 0, in.height - 1))[c];
+                        sum += in.at(std::clamp(x + dx, 0, in.width - 1),
+                                     std::clamp(y + dy, 0, in.height - 1))[c];
                 out.at(x, y)[c] = std::uint8_t((sum + count / 2) / count);
             }
     return out;

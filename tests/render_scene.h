@@ -52,7 +52,8 @@ inline std::unique_ptr<RenderScene> make_render_scene() {
     for (int axis = 0; axis < 3; ++axis)
         for (float side : {-1.0f, 1.0f}) {
             Eigen::Vector3f n = Eigen::Vector3f::Unit(axis) * side;
-            Eigen::Vector3f u = Eigen::Vector3f::Unit((axis + 1) % 3), v = Eigen::Vector3f::Unit((axis + 2) % 3);
+            Eigen::Vector3f u = Eigen::Vector3f::Unit((axis + 1) % 3),
+                            v = Eigen::Vector3f::Unit((axis + 2) % 3);
             if (side < 0) std::swap(u, v);
             auto base = std::uint32_t(box.positions.size());
             Eigen::Vector3f centre(0, 0.5f, 0);

@@ -35,10 +35,11 @@ void write_model(const Model& model, const std::string& path);
 
 // A level of detail of a model.
 struct Level {
-    int level = 0;      // 0: the original as a level
-    Model model;        // is_lod; its parameters (Model::lod_params) build it again
+    int level = 0;         // 0: the original as a level
+    Model model;           // is_lod; its parameters (Model::lod_params) build it again
     KeyValues statistics;  // docs/design.md: Statistics (bytes_lod, triangles_lod, ...)
-    double switch_distance = 0;  // a chain's: the camera distance in metres from which it is drawn (level 0: 0)
+    double switch_distance =
+        0;  // a chain's: the camera distance in metres from which it is drawn (level 0: 0)
 };
 
 // Level `level` (0 .. obtained levels) as `build --level` makes it: sized
@@ -51,14 +52,15 @@ Level build_level(const Model& model, const LodParameters& parameters, int level
 // (at most the 10 finest): each switches in at the nearest distance beyond
 // which its FLIP over covered pixels stays within `switch_error` (0: where
 // its texels meet the screen's pixels), each cheaper than the one before.
-std::vector<Level> build_chain(const Model& model, const LodParameters& parameters, double switch_error = 0.05,
-                               int threads = 0);
+std::vector<Level> build_chain(const Model& model, const LodParameters& parameters,
+                               double switch_error = 0.05, int threads = 0);
 
 // One level per byte budget of parameters.budgets (fractions of the
 // original's bytes, or sizes), for level modes error-greedy and hybrid, as
 // `build --budgets B1,...,BN --all-levels` writes levels 1..N: a level that
 // draws what the one before draws is left out, as there.
-std::vector<Level> build_levels_by_budget(const Model& model, const LodParameters& parameters, int threads = 0);
+std::vector<Level> build_levels_by_budget(const Model& model, const LodParameters& parameters,
+                                          int threads = 0);
 
 // A camera around a model: from `direction` (from the centre of its bounding
 // box towards the camera, e.g. (1, 1, 1)), `distance` times the distance at

@@ -16,13 +16,15 @@ inline Mesh height_field(int cells) {
         for (int i = 0; i <= cells; ++i) {
             float x = float(i) / float(cells) * 2 - 1, z = float(j) / float(cells) * 2 - 1;
             float y = 0.05f * std::sin(x * 12) * std::cos(z * 9);
-            Eigen::Vector3f n(-0.05f * 12 * std::cos(x * 12) * std::cos(z * 9), 1, 0.05f * 9 * std::sin(x * 12) * std::sin(z * 9));
+            Eigen::Vector3f n(-0.05f * 12 * std::cos(x * 12) * std::cos(z * 9), 1,
+                              0.05f * 9 * std::sin(x * 12) * std::sin(z * 9));
             mesh.positions.emplace_back(x * 1.6f, y, z);
             mesh.normals.push_back(n.normalized());
         }
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
-            std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells) + 1, d = c + 1;
+            std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells) + 1,
+                          d = c + 1;
             mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
         }
     return mesh;

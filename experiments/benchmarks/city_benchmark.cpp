@@ -56,8 +56,9 @@ void bm_city_levels(benchmark::State& state) {
         lods = levels.designs.size();
     }
     // kIsRate | kInvert: seconds over the count, here per building in ms.
-    state.counters["ms per building"] = benchmark::Counter(
-        double(state.iterations()) * double(city.lots.size()) * 1e-3, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ms per building"] =
+        benchmark::Counter(double(state.iterations()) * double(city.lots.size()) * 1e-3,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["LoDs built"] = double(lods);
     state.counters["packed MB"] = double(packed) * 1e-6;
     state.counters["unpacked MB"] = double(unpacked) * 1e-6;
@@ -65,8 +66,15 @@ void bm_city_levels(benchmark::State& state) {
 }
 // A sweep of buildings: unique at 25 (unpack_levels' city), 100 and 1,000, then
 // 1,000 and 10,000 lots drawing from 100 designs (10,000 unique: docs/city.md, Scale).
-BENCHMARK(bm_city_levels)->Args({city_buildings, 0})->Args({100, 0})->Args({1000, 0})->Args({1000, 100})->Args({10000, 100})
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(bm_city_levels)
+    ->Args({city_buildings, 0})
+    ->Args({100, 0})
+    ->Args({1000, 0})
+    ->Args({1000, 100})
+    ->Args({10000, 100})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 void bm_unpack_levels(benchmark::State& state) {
     const CityLevels& levels = city_levels();
@@ -107,9 +115,10 @@ void bm_select_frame(benchmark::State& state) {
     std::vector<int> chosen(objects.size());
     std::size_t frame = 0;
     for (auto _ : state) {
-        SelectionView view{pose_camera(path[frame++ % path.size()], levels.bounds, options.fovy), options.width,
-                           options.height};
-        for (std::size_t b = 0; b < objects.size(); ++b) chosen[b] = select_level(selectors[b], options.strategy, objects[b], view);
+        SelectionView view{pose_camera(path[frame++ % path.size()], levels.bounds, options.fovy),
+                           options.width, options.height};
+        for (std::size_t b = 0; b < objects.size(); ++b)
+            chosen[b] = select_level(selectors[b], options.strategy, objects[b], view);
         benchmark::DoNotOptimize(chosen.data());
     }
     state.counters["buildings"] = double(objects.size());

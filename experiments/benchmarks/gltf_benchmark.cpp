@@ -52,11 +52,16 @@ fs::path folder() {
 void extras_as_values(tinygltf::Model& document) {
     std::string json = R"({"asset":{"version":"2.0"},"nodes":[)";
     for (std::size_t k = 0; k < document.nodes.size(); ++k)
-        json += (k ? ",{" : "{") + (document.nodes[k].extras_json_string.empty() ? "" : "\"extras\":" + document.nodes[k].extras_json_string) + "}";
+        json += (k ? ",{" : "{") +
+                (document.nodes[k].extras_json_string.empty()
+                     ? ""
+                     : "\"extras\":" + document.nodes[k].extras_json_string) +
+                "}";
     json += "]}";
     tinygltf::Model read;
     std::string error, warning;
-    if (!tinygltf::TinyGLTF().LoadASCIIFromString(&read, &error, &warning, json.c_str(), unsigned(json.size()), ""))
+    if (!tinygltf::TinyGLTF().LoadASCIIFromString(&read, &error, &warning, json.c_str(),
+                                                  unsigned(json.size()), ""))
         throw std::runtime_error(error);
     for (std::size_t k = 0; k < document.nodes.size(); ++k) {
         if (document.nodes[k].extras_json_string.empty()) continue;
@@ -111,5 +116,11 @@ void BM_WriteManualLevel(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_WriteManualLevel)->ArgName("writer")->Arg(1)->Arg(2)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_WriteManualLevel)
+    ->ArgName("writer")
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_MAIN();

@@ -38,7 +38,8 @@ void BM_ImportFzkHaus(benchmark::State& state) {
         benchmark::DoNotOptimize(triangles);
     }
     state.counters["triangles"] = double(triangles);
-    state.SetBytesProcessed(std::int64_t(state.iterations()) * std::int64_t(std::filesystem::file_size(*File)));
+    state.SetBytesProcessed(std::int64_t(state.iterations()) *
+                            std::int64_t(std::filesystem::file_size(*File)));
 }
 
 // What isolation adds besides the fork: the scene to bytes and back.
@@ -49,9 +50,19 @@ Model through_bytes(const std::string& path) {
 
 }  // namespace
 
-BENCHMARK(BM_ImportFzkHaus<through_bytes>)->Name("import_fzk_haus/bytes_round_trip")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ImportFzkHaus<import_with_assimp_in_process>)->Name("import_fzk_haus/in_process")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ImportFzkHaus<import_with_assimp>)->Name("import_fzk_haus/isolated")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ImportFzkHaus<import_ifc_with_web_ifc>)->Name("import_fzk_haus/web_ifc")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ImportFzkHaus<import_ifc_with_web_ifc, &fzk_ifc4>)->Name("import_fzk_haus_ifc4/web_ifc")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImportFzkHaus<through_bytes>)
+    ->Name("import_fzk_haus/bytes_round_trip")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImportFzkHaus<import_with_assimp_in_process>)
+    ->Name("import_fzk_haus/in_process")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImportFzkHaus<import_with_assimp>)
+    ->Name("import_fzk_haus/isolated")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImportFzkHaus<import_ifc_with_web_ifc>)
+    ->Name("import_fzk_haus/web_ifc")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImportFzkHaus<import_ifc_with_web_ifc, &fzk_ifc4>)
+    ->Name("import_fzk_haus_ifc4/web_ifc")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -133,7 +133,8 @@ GLuint link(const char* fragment_source, const RenderSettings& settings, int wid
     glUniform1i(glGetUniformLocation(program, "color_map"), 0);
     glUniform1i(glGetUniformLocation(program, "normal_map"), 1);
     const Camera& camera = settings.camera;
-    Eigen::Matrix4f view_projection = projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
+    Eigen::Matrix4f view_projection =
+        projection_matrix(camera, float(width) / float(height)) * view_matrix(camera);
     glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform3fv(glGetUniformLocation(program, "eye"), 1, camera.position.data());
     glUniform3fv(glGetUniformLocation(program, "light_position"), 1, settings.light.position.data());
@@ -150,8 +151,8 @@ GLuint upload(const MipTexture& texture) {
     glBindTexture(GL_TEXTURE_2D, name);
     GLint internal = texture.format == TexelFormat::srgb8 ? GL_SRGB8_ALPHA8 : GL_RGBA8;
     for (std::size_t l = 0; l < texture.levels.size(); ++l)
-        glTexImage2D(GL_TEXTURE_2D, GLint(l), internal, texture.levels[l].width, texture.levels[l].height, 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, texture.levels[l].rgba8.data());
+        glTexImage2D(GL_TEXTURE_2D, GLint(l), internal, texture.levels[l].width, texture.levels[l].height, 0,
+                     GL_RGBA, GL_UNSIGNED_BYTE, texture.levels[l].rgba8.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(texture.levels.size()) - 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -172,8 +173,8 @@ GLuint array_buffer(const std::vector<T>& values) {
 
 }  // namespace
 
-std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& batches, const RenderSettings& settings,
-                                                   int width, int height) {
+std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& batches,
+                                                   const RenderSettings& settings, int width, int height) {
     auto peer = std::unique_ptr<LlvmpipePeer>(new LlvmpipePeer);
     peer->state_ = std::make_unique<State>();
     State& s = *peer->state_;
@@ -183,7 +184,8 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& bat
     if (!OSMesaMakeCurrent(s.context, s.pixels.data(), GL_UNSIGNED_BYTE, width, height)) return nullptr;
 
     const bool textured = settings.mode != RenderMode::untextured;
-    const std::string mapped = fragment_shader, cutout = "#version 120\n#define CUTOUT\n" + mapped.substr(mapped.find('\n') + 1);
+    const std::string mapped = fragment_shader,
+                      cutout = "#version 120\n#define CUTOUT\n" + mapped.substr(mapped.find('\n') + 1);
     const char* sources[3] = {untextured_fragment_shader, mapped.c_str(), cutout.c_str()};
     for (int p = 0; p < 3; ++p) s.programs[p] = link(sources[p], settings, width, height);
     for (const Batch& batch : batches) {
@@ -198,10 +200,13 @@ std::unique_ptr<LlvmpipePeer> LlvmpipePeer::create(const std::vector<Batch>& bat
         if (draw.tangents) draw.buffers[3] = array_buffer(mesh.tangents);
         glGenBuffers(1, &draw.buffers[4]);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, draw.buffers[4]);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(), GL_STATIC_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(),
+                     GL_STATIC_DRAW);
         draw.index_count = GLsizei(mesh.indices.size());
-        for (auto [texture, name] : {std::pair{batch.surface.color, &draw.color}, std::pair{batch.surface.normal, &draw.normal}}) {
-            if (!draw.uvs || !texture || texture->levels.empty() || texture->levels[0].rgba8.empty()) continue;
+        for (auto [texture, name] :
+             {std::pair{batch.surface.color, &draw.color}, std::pair{batch.surface.normal, &draw.normal}}) {
+            if (!draw.uvs || !texture || texture->levels.empty() || texture->levels[0].rgba8.empty())
+                continue;
             auto [at, added] = s.textures.try_emplace(texture, 0);
             if (added) at->second = upload(*texture);
             *name = at->second;
@@ -261,7 +266,8 @@ void LlvmpipePeer::draw() {
 
 double LlvmpipePeer::covered_fraction() const {
     std::size_t covered = 0, n = state_->pixels.size() / 4;
-    for (std::size_t i = 0; i < n; ++i) covered += (state_->pixels[i * 4] | state_->pixels[i * 4 + 1] | state_->pixels[i * 4 + 2]) != 0;
+    for (std::size_t i = 0; i < n; ++i)
+        covered += (state_->pixels[i * 4] | state_->pixels[i * 4 + 1] | state_->pixels[i * 4 + 2]) != 0;
     return double(covered) / double(n);
 }
 

@@ -13,10 +13,10 @@ class LlvmpipePeer {
 public:
     // nullptr if no OSMesa context can be made. llvmpipe takes its thread count
     // from LP_NUM_THREADS when the first context is created.
-    static std::unique_ptr<LlvmpipePeer> create(const std::vector<Batch>& batches, const RenderSettings& settings,
-                                                int width, int height);
+    static std::unique_ptr<LlvmpipePeer> create(const std::vector<Batch>& batches,
+                                                const RenderSettings& settings, int width, int height);
     ~LlvmpipePeer();
-    void draw();  // one frame, finished (glFinish)
+    void draw();                      // one frame, finished (glFinish)
     double covered_fraction() const;  // of the last frame: pixels not left black
 
     // The rasterizer threads llvmpipe started in this process (Mesa names

@@ -4,12 +4,12 @@
 //   build/experiments/metrics_benchmark [--benchmark_filter=...]
 // The second argument of every case is the thread count. bm_sweep_rows
 // draws a sweep's rows one at a time or side by side (experiments/sweep/sweep.cpp: draw_rows).
+#include "toolkit/drawing/drawable.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/image_metrics.h"
 #include "toolkit/metrics/silhouette.h"
-#include "toolkit/drawing/drawable.h"
 #include "toolkit/model/framing.h"
-#include "toolkit/formats/model_io.h"
 
 #include "base/parallel.h"
 
@@ -33,14 +33,16 @@ const DrawableModel& house() {
 RenderSettings house_view(double distance_scale, int threads, const Eigen::Vector3f& direction = {1, 1, 1}) {
     const Framing framing = framing_of(house().drawable.bounds);
     RenderSettings settings;
-    settings.camera = framed_camera(framing, direction, float(framing_distance(framing, 45) * distance_scale), 45);
+    settings.camera =
+        framed_camera(framing, direction, float(framing_distance(framing, 45) * distance_scale), 45);
     settings.light = light_for_camera(settings.camera);
     settings.light.shininess = 0;  // the material's
     settings.threads = threads;
     return settings;
 }
 
-Image8 render_house(int width, int height, double distance_scale, int threads, const Eigen::Vector3f& direction = {1, 1, 1}) {
+Image8 render_house(int width, int height, double distance_scale, int threads,
+                    const Eigen::Vector3f& direction = {1, 1, 1}) {
     Frame frame = make_frame(width, height, {1, 1, 1});
     render(house().drawable.batches, house_view(distance_scale, threads, direction), frame);
     return frame_to_srgb8(frame);
@@ -50,7 +52,8 @@ Image8 render_house(int width, int height, double distance_scale, int threads, c
 const std::pair<Image8, Image8>& image_pair(int width, int height) {
     static std::map<std::pair<int, int>, std::pair<Image8, Image8>> cache;
     auto key = std::pair{width, height};
-    if (!cache.count(key)) cache[key] = {render_house(width, height, 1.0, 0), render_house(width, height, 1.05, 0)};
+    if (!cache.count(key))
+        cache[key] = {render_house(width, height, 1.0, 0), render_house(width, height, 1.05, 0)};
     return cache[key];
 }
 
@@ -128,7 +131,8 @@ void bm_sweep_rows(benchmark::State& state) {
             for (std::size_t r = 0; r < directions.size(); ++r) row(r, 2);
         benchmark::DoNotOptimize(means.data());
     }
-    state.counters["rows/s"] = benchmark::Counter(double(directions.size()), benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["rows/s"] =
+        benchmark::Counter(double(directions.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void sizes_and_threads(benchmark::internal::Benchmark* b) {

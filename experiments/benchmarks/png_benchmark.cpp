@@ -15,8 +15,8 @@
 #include <cstdlib>
 
 // stb_image_write's PNG writer and settings; libstb exports them, its header keeps them private.
-extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int stride, int width, int height, int channels,
-                                                int* length);
+extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int stride, int width,
+                                                int height, int channels, int* length);
 extern "C" int stbi_write_png_compression_level;
 extern "C" int stbi_write_force_png_filter;
 
@@ -25,8 +25,8 @@ using namespace boxlod;
 namespace {
 
 struct Pages {
-    std::vector<const Image8*> images8;     // colour and normal pages
-    std::vector<const Image16*> images16;   // height pages
+    std::vector<const Image8*> images8;    // colour and normal pages
+    std::vector<const Image16*> images16;  // height pages
     std::unique_ptr<Lod> lod;
 };
 
@@ -53,7 +53,8 @@ const Pages& manual_pages() {
 
 void count(::benchmark::State& state, std::size_t raw, std::size_t encoded) {
     state.counters["MB"] = double(encoded) * 1e-6;
-    state.counters["raw MB/s"] = ::benchmark::Counter(double(raw) * 1e-6, ::benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["raw MB/s"] =
+        ::benchmark::Counter(double(raw) * 1e-6, ::benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // A benchmark of nothing would read as a speed-up: no pages is an error.
@@ -94,8 +95,8 @@ void stb_png(::benchmark::State& state) {
         raw = encoded = 0;
         for (const Image8* image : pages.images8) {
             int length = 0;
-            unsigned char* png = stbi_write_png_to_mem(image->pixels.data(), image->width * image->channels, image->width,
-                                                       image->height, image->channels, &length);
+            unsigned char* png = stbi_write_png_to_mem(image->pixels.data(), image->width * image->channels,
+                                                       image->width, image->height, image->channels, &length);
             std::free(png);
             raw += image->pixels.size();
             encoded += std::size_t(length);

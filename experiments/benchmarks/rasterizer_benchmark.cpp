@@ -9,8 +9,8 @@
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/model/framing.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/model/framing.h"
 
 #include <benchmark/benchmark.h>
 
@@ -46,20 +46,24 @@ RealModel make_real_model(const Model& model) {
     RealModel m{make_drawable_model(model), {}};
     Framing framing = framing_of(m.drawable->drawable.bounds);
     m.settings.mode = RenderMode::normal;
-    m.settings.camera = framed_camera(framing, Eigen::Vector3f(1, 1, 1).normalized(), framing_distance(framing, 45), 45);
+    m.settings.camera =
+        framed_camera(framing, Eigen::Vector3f(1, 1, 1).normalized(), framing_distance(framing, 45), 45);
     m.settings.light = light_for_camera(m.settings.camera);
     return m;
 }
 
 const RealModel& real_model(int index) {
-    static const RealModel fzk_haus = make_real_model(load_model("/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"));
-    static const RealModel manual = make_real_model(generate_building(sample_grammar("manual"), BuildingOptions{}));
+    static const RealModel fzk_haus =
+        make_real_model(load_model("/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"));
+    static const RealModel manual =
+        make_real_model(generate_building(sample_grammar("manual"), BuildingOptions{}));
     return index == 0 ? fzk_haus : manual;
 }
 
 const char* model_names[2] = {"fzk_haus", "manual"};
 
-void draw_with_boxlod(::benchmark::State& state, const std::vector<Batch>& batches, RenderSettings settings, int threads) {
+void draw_with_boxlod(::benchmark::State& state, const std::vector<Batch>& batches, RenderSettings settings,
+                      int threads) {
     settings.threads = threads;
     Frame frame = make_frame(bench::frame_width, bench::frame_height, {0, 0, 0});
     for (auto _ : state) {
@@ -84,11 +88,18 @@ void boxlod_model(::benchmark::State& state) {
     state.SetLabel(model_names[state.range(0)]);
     draw_with_boxlod(state, m.drawable->drawable.batches, m.settings, int(state.range(1)));
 }
-BENCHMARK(boxlod_model)->Args({0, 1})->Args({0, 2})->Args({1, 1})->Args({1, 2})
-    ->Unit(::benchmark::kMillisecond)->UseRealTime()->MinTime(2);
+BENCHMARK(boxlod_model)
+    ->Args({0, 1})
+    ->Args({0, 2})
+    ->Args({1, 1})
+    ->Args({1, 2})
+    ->Unit(::benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2);
 
 #ifdef BOXLOD_HAVE_OSMESA
-void draw_with_llvmpipe(::benchmark::State& state, const std::vector<Batch>& batches, const RenderSettings& settings) {
+void draw_with_llvmpipe(::benchmark::State& state, const std::vector<Batch>& batches,
+                        const RenderSettings& settings) {
     auto peer = bench::LlvmpipePeer::create(batches, settings, bench::frame_width, bench::frame_height);
     if (!peer) {
         state.SkipWithError("OSMesa/llvmpipe context could not be created");
@@ -96,10 +107,11 @@ void draw_with_llvmpipe(::benchmark::State& state, const std::vector<Batch>& bat
     }
     // llvmpipe takes LP_NUM_THREADS once per process: a case run with another
     // count would compare boxlod with a peer of other threads.
-    const int threads = bench::LlvmpipePeer::rasterizer_threads(), wanted = std::atoi(std::getenv("LP_NUM_THREADS"));
+    const int threads = bench::LlvmpipePeer::rasterizer_threads(),
+              wanted = std::atoi(std::getenv("LP_NUM_THREADS"));
     if (threads != wanted) {
-        state.SkipWithError(("llvmpipe runs " + std::to_string(threads) + " rasterizer threads, not LP_NUM_THREADS=" +
-                             std::to_string(wanted))
+        state.SkipWithError(("llvmpipe runs " + std::to_string(threads) +
+                             " rasterizer threads, not LP_NUM_THREADS=" + std::to_string(wanted))
                                 .c_str());
         return;
     }

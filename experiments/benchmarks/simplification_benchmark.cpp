@@ -62,7 +62,8 @@ const Mesh& manual_mesh() {
                 std::size_t base = points.size();
                 for (const auto& v : p.positions) points.emplace_back(v.x(), v.y(), v.z());
                 for (std::size_t i = 0; i < p.indices.size(); i += 3)
-                    triangles.push_back({base + p.indices[i], base + p.indices[i + 1], base + p.indices[i + 2]});
+                    triangles.push_back(
+                        {base + p.indices[i], base + p.indices[i + 1], base + p.indices[i + 2]});
             }
         PMP::repair_polygon_soup(points, triangles);
         PMP::orient_polygon_soup(points, triangles);
@@ -78,7 +79,9 @@ struct FaceCountStop {
     const Mesh* mesh;
     std::size_t target;
     template <typename Profile>
-    bool operator()(const double&, const Profile&, std::size_t, std::size_t) const { return mesh->number_of_faces() <= target; }
+    bool operator()(const double&, const Profile&, std::size_t, std::size_t) const {
+        return mesh->number_of_faces() <= target;
+    }
 };
 
 template <typename Collapse>
@@ -99,21 +102,25 @@ void bm_meshoptimizer(benchmark::State& state) {
     options.threads = 1;
     options.clustering_fallback = state.range(1) != 0;
     std::size_t faces = 0;
-    for (auto _ : state) faces = mesh_counts(simplify_model(manual_sample(), target_of(state), options)).faces;
+    for (auto _ : state)
+        faces = mesh_counts(simplify_model(manual_sample(), target_of(state), options)).faces;
     set_counters(state, faces);
 }
 
 void bm_cgal_garland_heckbert(benchmark::State& state) {
     run_cgal(state, [](Mesh& mesh, const FaceCountStop& stop) {
         SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(mesh);
-        SMS::edge_collapse(mesh, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+        SMS::edge_collapse(
+            mesh, stop,
+            CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
     });
 }
 
 void bm_cgal_lindstrom_turk(benchmark::State& state) {
     run_cgal(state, [](Mesh& mesh, const FaceCountStop& stop) {
         SMS::edge_collapse(mesh, stop,
-                           CGAL::parameters::get_cost(SMS::LindstromTurk_cost<Mesh>()).get_placement(SMS::LindstromTurk_placement<Mesh>()));
+                           CGAL::parameters::get_cost(SMS::LindstromTurk_cost<Mesh>())
+                               .get_placement(SMS::LindstromTurk_placement<Mesh>()));
     });
 }
 

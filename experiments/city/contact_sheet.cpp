@@ -42,7 +42,8 @@ Image8 contact_sheet(const std::vector<Image8>& tiles, const std::vector<std::st
             for (int x = 0; x < w; ++x) {
                 const std::uint8_t* p = tile.at(x, y);
                 std::uint8_t* q = sheet.at(x0 + x, y0 + y);
-                for (int k = 0; k < 3; ++k) q[k] = y < strip && i < labels.size() ? std::uint8_t(p[k] / 4) : p[k];
+                for (int k = 0; k < 3; ++k)
+                    q[k] = y < strip && i < labels.size() ? std::uint8_t(p[k] / 4) : p[k];
             }
         if (i < labels.size()) draw_text(sheet, x0 + 2, y0 + 2, labels[i], white);
     }

@@ -6,24 +6,24 @@
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "experiments/city/contact_sheet.h"
+#include "toolkit/drawing/resident_drawables.h"
+#include "toolkit/formats/model_bytes.h"
+#include "toolkit/lod/chain/chain.h"
+#include "toolkit/lod/pages/boxes.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/image_metrics.h"
 #include "toolkit/metrics/metric_registry.h"
-#include "toolkit/formats/model_bytes.h"
-#include "toolkit/lod/pages/boxes.h"
-#include "toolkit/selection/face_budget.h"
-#include "toolkit/lod/chain/chain.h"
 #include "toolkit/model/framing.h"
-#include "toolkit/drawing/resident_drawables.h"
 #include "toolkit/model/statistics.h"
+#include "toolkit/selection/face_budget.h"
 #include "toolkit/selection/strategy_text.h"
 
 #include <algorithm>
-#include <regex>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <regex>
 #include <stdexcept>
 
 namespace boxlod {
@@ -63,9 +63,11 @@ Image8 render_batches(const std::vector<Batch>& batches, const Camera& camera, c
 
 // 1 - SSIM of a level against the original seen from +X+Y+Z at the level's
 // sizing distance, lit by that camera's light: the same wherever the design stands.
-MeasuredError measure_level_error(const Drawable& level, const Drawable& original, const SelectionObject& object,
-                                  double distance, const FlyThroughOptions& options) {
-    Camera camera = camera_at_position({1, 1, 1}, object.center, float(distance), options.fovy, object.radius);
+MeasuredError measure_level_error(const Drawable& level, const Drawable& original,
+                                  const SelectionObject& object, double distance,
+                                  const FlyThroughOptions& options) {
+    Camera camera =
+        camera_at_position({1, 1, 1}, object.center, float(distance), options.fovy, object.radius);
     Light light = light_for_camera(camera);
     Image8 a = render_batches(original.batches, camera, light, options.width, options.height, 1);
     Image8 b = render_batches(level.batches, camera, light, options.width, options.height, 1);
@@ -109,7 +111,8 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));
     }
-    if (const auto* measured = std::get_if<MeasuredSwitch>(&options.strategy))  // where the chain measured each level within the error
+    if (const auto* measured = std::get_if<MeasuredSwitch>(
+            &options.strategy))  // where the chain measured each level within the error
         set_switch_distances(chain, measured->error, levels);
     if (boxes[0]) {
         built.object = selection_object(*boxes[0], std::move(levels));
@@ -165,7 +168,8 @@ std::vector<std::size_t> lods_to_build(const CityPlan& city, bool share, int thr
         if (added) designs.push_back(shown[i]);
         lod_of_shown.push_back(entry->second);
     }
-    for (const CityLot& lot : city.lots) lod_of_lot.push_back(lod_of_shown[std::size_t(index_of_design[lot.design])]);
+    for (const CityLot& lot : city.lots)
+        lod_of_lot.push_back(lod_of_shown[std::size_t(index_of_design[lot.design])]);
     return designs;
 }
 
@@ -213,7 +217,8 @@ CityLevels build_city_levels(const CityPlan& city, const FlyThroughOptions& opti
     out.bounds = model_bounds(streets);
 
     std::vector<std::size_t> lod_of_lot;
-    const std::vector<std::size_t> designs = lods_to_build(city, options.share_designs, options.threads, lod_of_lot);
+    const std::vector<std::size_t> designs =
+        lods_to_build(city, options.share_designs, options.threads, lod_of_lot);
     out.designs.resize(designs.size());
     parallel_for(designs.size(), options.threads, [&](std::size_t i) {
         auto design_start = Clock::now();
@@ -251,7 +256,8 @@ Camera pose_camera(const CameraPose& pose, const Bounds& city, float fovy_degree
     camera.target = pose.target;
     camera.fovy_degrees = fovy_degrees;
     Eigen::Vector3f look = (pose.target - pose.eye).normalized();
-    if (std::abs(look.y()) > 0.999f) camera.up = look.y() < 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
+    if (std::abs(look.y()) > 0.999f)
+        camera.up = look.y() < 0 ? Eigen::Vector3f(0, 0, -1) : Eigen::Vector3f(0, 0, 1);
     const Framing framing = framing_of(city);
     fit_depth_range(camera, (pose.eye - framing.center).norm(), framing.radius);
     return camera;
@@ -264,8 +270,8 @@ const PackedDrawable& level_drawn(const CityLevels& city, std::size_t building, 
 }
 
 // The buildings a camera sees at `levels` (a building outside the view would draw no pixel).
-std::vector<std::size_t> buildings_in_view(const CityLevels& city, const std::vector<int>& levels, const Camera& camera,
-                                           float aspect) {
+std::vector<std::size_t> buildings_in_view(const CityLevels& city, const std::vector<int>& levels,
+                                           const Camera& camera, float aspect) {
     std::vector<std::size_t> shown;
     for (std::size_t b = 0; b < city.buildings.size(); ++b) {
         const PackedDrawable& level = level_drawn(city, b, levels[b]);
@@ -302,18 +308,21 @@ Image8 render_full_detail(const CityLevels& city, const Camera& camera, const Li
     // Draws the opaque and masked batches; keeps the blended ones for the end.
     auto draw_opaque = [&](const std::vector<Batch>& batches) {
         std::vector<Batch> opaque;
-        for (const Batch& batch : batches) (batch.surface.alpha_mode == AlphaMode::blend ? blended : opaque).push_back(batch);
+        for (const Batch& batch : batches)
+            (batch.surface.alpha_mode == AlphaMode::blend ? blended : opaque).push_back(batch);
         render(opaque, settings, frame);
     };
     draw_opaque(city.streets.batches);
     for (std::size_t first = 0; first < shown.size();) {
         std::size_t end = first, bytes = 0;
-        while (end < shown.size() && (end == first || bytes + level_drawn(city, shown[end], 0).unpacked_size <=
-                                                          options.full_detail_group_bytes))
+        while (end < shown.size() &&
+               (end == first ||
+                bytes + level_drawn(city, shown[end], 0).unpacked_size <= options.full_detail_group_bytes))
             bytes += level_drawn(city, shown[end++], 0).unpacked_size;
         std::vector<std::unique_ptr<DrawableModel>> group(end - first);
-        parallel_for(group.size(), options.threads,
-                     [&](std::size_t i) { group[i] = unpack_drawable(level_drawn(city, shown[first + i], 0)); });
+        parallel_for(group.size(), options.threads, [&](std::size_t i) {
+            group[i] = unpack_drawable(level_drawn(city, shown[first + i], 0));
+        });
         std::vector<Batch> batches;
         for (std::size_t i = 0; i < group.size(); ++i)
             append_moved(group[i]->drawable, city.buildings[shown[first + i]].translation, batches);
@@ -330,8 +339,9 @@ Image8 render_full_detail(const CityLevels& city, const Camera& camera, const Li
 
 // Every building's level for the view (and the face budget), each building's
 // choice its own: chunks of them in parallel.
-std::vector<int> select_levels(const CityLevels& city, std::vector<Selector>& selectors, const Strategy& strategy,
-                               const SelectionView& view, const FlyThroughOptions& options) {
+std::vector<int> select_levels(const CityLevels& city, std::vector<Selector>& selectors,
+                               const Strategy& strategy, const SelectionView& view,
+                               const FlyThroughOptions& options) {
     const std::size_t n = city.buildings.size();
     std::vector<int> levels(n);
     constexpr std::size_t chunk = 1024;
@@ -347,15 +357,16 @@ std::vector<int> select_levels(const CityLevels& city, std::vector<Selector>& se
     });
     if (options.face_budget) {
         std::vector<double> importance;
-        for (const SelectionObject& object : city.objects) importance.push_back(selection_importance(strategy, object, view));
+        for (const SelectionObject& object : city.objects)
+            importance.push_back(selection_importance(strategy, object, view));
         fit_face_budget(city.objects, importance, *options.face_budget, levels, city.street_faces);
     }
     return levels;
 }
 
 // A frame's errors against the same view at full detail.
-ImageErrors full_detail_errors(const CityLevels& city, const Camera& camera, const Light& light, const Image8& image,
-                               const FlyThroughOptions& options) {
+ImageErrors full_detail_errors(const CityLevels& city, const Camera& camera, const Light& light,
+                               const Image8& image, const FlyThroughOptions& options) {
     Image8 full = render_full_detail(city, camera, light, options);
     MetricPair pair{full, image};
     pair.pixels_per_degree = options.pixels_per_degree;
@@ -391,7 +402,8 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     };
     for (std::size_t k = 0; k < path.size(); ++k) {
         FrameRecord record;
-        const SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width, options.height};
+        const SelectionView view{pose_camera(path[k], city.bounds, options.fovy), options.width,
+                                 options.height};
         {
             const ScopedTimer timer(record.select_seconds);
             record.levels = select_levels(city, selectors, strategy, view, options);
@@ -401,7 +413,8 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
         Image8 image;
         {
             const ScopedTimer timer(record.render_seconds);
-            image = render_batches(batches, view.camera, light, options.width, options.height, options.threads);
+            image =
+                render_batches(batches, view.camera, light, options.width, options.height, options.threads);
         }
         if (options.error_every > 0 && k % std::size_t(options.error_every) == 0) {
             const ScopedTimer timer(record.error_seconds);
@@ -413,9 +426,11 @@ std::vector<FrameRecord> fly_through(const CityLevels& city, const std::vector<C
     return records;
 }
 
-std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy) {
-    std::vector<std::string> header = {"frame", "strategy", "detail", "faces", "triangles", "draw_calls", "mesh_bytes",
-                                       "texture_bytes", "texture_bytes_gpu", "bytes", "buildings"};
+std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city,
+                       const Strategy& strategy) {
+    std::vector<std::string> header = {
+        "frame",         "strategy",          "detail", "faces",    "triangles", "draw_calls", "mesh_bytes",
+        "texture_bytes", "texture_bytes_gpu", "bytes",  "buildings"};
     for (int c = 0; c <= city.max_level; ++c) header.push_back("level_" + std::to_string(c));
     for (const char* column : {"levels_changed", "psnr", "ssim", "flip"}) header.push_back(column);
     std::string text = csv_row(header) + "\n";
@@ -425,14 +440,21 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
             const FrameRecord& f = run.frames[k];
             std::vector<std::size_t> histogram(std::size_t(city.max_level) + 1, 0);
             for (int level : f.levels) ++histogram[std::size_t(level)];
-            std::vector<std::string> fields = {std::to_string(k), name, format_number(run.detail),
-                                               std::to_string(f.faces), std::to_string(f.triangles),
-                                               std::to_string(f.cost.draw_calls), std::to_string(f.cost.mesh_bytes),
-                                               std::to_string(f.cost.texture_bytes), std::to_string(f.cost.texture_bytes_gpu),
-                                               std::to_string(f.cost.bytes()), std::to_string(f.levels.size())};
+            std::vector<std::string> fields = {std::to_string(k),
+                                               name,
+                                               format_number(run.detail),
+                                               std::to_string(f.faces),
+                                               std::to_string(f.triangles),
+                                               std::to_string(f.cost.draw_calls),
+                                               std::to_string(f.cost.mesh_bytes),
+                                               std::to_string(f.cost.texture_bytes),
+                                               std::to_string(f.cost.texture_bytes_gpu),
+                                               std::to_string(f.cost.bytes()),
+                                               std::to_string(f.levels.size())};
             for (std::size_t count : histogram) fields.push_back(std::to_string(count));
             fields.push_back(std::to_string(f.levels_changed));
-            for (double value : {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
+            for (double value :
+                 {f.error ? f.error->psnr : 0, f.error ? f.error->ssim : 0, f.error ? f.error->flip : 0})
                 fields.push_back(f.error ? format_number(value) : "");
             text += csv_row(fields) + "\n";
         }
@@ -440,13 +462,15 @@ std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels&
 }
 
 std::string timings_csv(const std::vector<FlyThroughRun>& runs) {
-    std::string text = "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes\n";
+    std::string text =
+        "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes\n";
     for (const FlyThroughRun& run : runs)
         for (std::size_t k = 0; k < run.frames.size(); ++k) {
             const FrameRecord& f = run.frames[k];
             text += csv_row({std::to_string(k), format_number(run.detail), format_number(f.select_seconds),
                              format_number(f.unpack_seconds), format_number(f.render_seconds),
-                             std::to_string(f.levels_unpacked), std::to_string(f.resident_bytes)}) + "\n";
+                             std::to_string(f.levels_unpacked), std::to_string(f.resident_bytes)}) +
+                    "\n";
         }
     return text;
 }
@@ -486,7 +510,8 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
     }
     if (!frames.empty()) report.faces_mean = faces / double(frames.size());
     if (report.sampled_frames) {
-        report.psnr_mean = finite_psnr ? psnr_sum / double(finite_psnr) : std::numeric_limits<double>::infinity();
+        report.psnr_mean =
+            finite_psnr ? psnr_sum / double(finite_psnr) : std::numeric_limits<double>::infinity();
         report.ssim_mean = ssim_sum / double(report.sampled_frames);
         report.flip_mean = flip_sum / double(report.sampled_frames);
     }
@@ -496,17 +521,19 @@ FlyThroughReport summarize(const std::vector<FrameRecord>& frames, const CityLev
 }  // namespace
 
 bool is_fly_through_file(const std::string& name) {
-    static const std::regex file(R"((frames|timings)\.csv|(detail_[0-9.e+-]+/?)?(frames|frames/frame_\d+\.png|contact_sheet\.png)?)");
+    static const std::regex file(
+        R"((frames|timings)\.csv|(detail_[0-9.e+-]+/?)?(frames|frames/frame_\d+\.png|contact_sheet\.png)?)");
     return !name.empty() && std::regex_match(name, file);
 }
 
 double fly_through_memory(const CityPlan& city, const FlyThroughOptions& options) {
-    const std::size_t lods = options.share_designs ? std::min(city.designs.size(), city.lots.size()) : city.lots.size();
+    const std::size_t lods =
+        options.share_designs ? std::min(city.designs.size(), city.lots.size()) : city.lots.size();
     // Per distinct building its packed levels and per lot its placement, as the
     // measured peaks give them (docs/city.md: Scale); a compared frame's
     // originals a group at a time, with its render.
-    return 0.3e6 * double(lods) + 0.1e6 * double(city.lots.size()) + 1.5 * double(options.full_detail_group_bytes) +
-           render_memory(options.width, options.height) +
+    return 0.3e6 * double(lods) + 0.1e6 * double(city.lots.size()) +
+           1.5 * double(options.full_detail_group_bytes) + render_memory(options.width, options.height) +
            (options.error_every > 0 ? metrics_memory(options.width, options.height) : 0);
 }
 
@@ -516,7 +543,8 @@ bool needs_measured_errors(const Strategy& strategy) {
 }
 
 std::vector<FlyThroughReport> run_fly_through(const CityLevels& levels, const std::vector<CameraPose>& path,
-                                              const FlyThroughOptions& options, const std::vector<double>& details,
+                                              const FlyThroughOptions& options,
+                                              const std::vector<double>& details,
                                               const std::string& output_folder, std::FILE* progress) {
     if (details.empty()) throw std::invalid_argument("run_fly_through: no detail to run");
 
@@ -541,11 +569,12 @@ std::vector<FlyThroughReport> run_fly_through(const CityLevels& levels, const st
             write_png((frames_folder / name).string(), image);
             if (std::find(sheet_frames.begin(), sheet_frames.end(), std::size_t(k)) != sheet_frames.end()) {
                 thumbnails.push_back(shrink(image, int(thumbnail_factor(image.width))));
-                labels.push_back("frame " + std::to_string(k) + ": " + std::to_string(record.faces) + " faces");
+                labels.push_back("frame " + std::to_string(k) + ": " + std::to_string(record.faces) +
+                                 " faces");
             }
             if (progress && std::size_t(k) + 1 >= next_progress) {
-                std::fprintf(progress, "boxlod city: detail %s: frame %d/%zu: %zu faces\n", format_number(detail).c_str(),
-                             k + 1, count, record.faces);
+                std::fprintf(progress, "boxlod city: detail %s: frame %d/%zu: %zu faces\n",
+                             format_number(detail).c_str(), k + 1, count, record.faces);
                 std::fflush(progress);
                 next_progress = std::size_t(k) + 1 + std::max<std::size_t>(1, count / 10);
             }

@@ -9,12 +9,12 @@
 #pragma once
 #include "data_gen/city.h"
 #include "experiments/city/camera_path.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/lod/cut/level_modes.h"
-#include "toolkit/selection/lod_selection.h"
 #include "toolkit/drawing/packed_drawable.h"
+#include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/parameter_file.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/selection/lod_selection.h"
 
 #include <cstdio>
 #include <functional>
@@ -27,12 +27,12 @@ namespace boxlod {
 
 struct FlyThroughOptions {
     Strategy strategy = TexelExact{};
-    double detail = 1;  // the strategy's level-of-detail bias (scale_detail)
+    double detail = 1;                       // the strategy's level-of-detail bias (scale_detail)
     double hysteresis = 0.1;                 // Selector margin h
     std::optional<std::size_t> face_budget;  // faces drawn per frame, streets included
     int width = 320, height = 240;
     float fovy = 45;
-    int error_every = 10;  // compare frames 0, K, 2K, ... with full detail; 0: never
+    int error_every = 10;           // compare frames 0, K, 2K, ... with full detail; 0: never
     double pixels_per_degree = 67;  // FLIP's observer
     // The levels: every building's LoD parameters (level mode, wanted levels,
     // kept sub-trees, ...; by default the chain that pays its way), level c
@@ -111,7 +111,8 @@ struct FrameRecord {
     ModelCost cost;  // streets and every building at its level; a texture shared by content counted once
     std::size_t levels_changed = 0;    // buildings whose level differs from the previous frame's
     std::optional<ImageErrors> error;  // on sampled frames
-    std::size_t levels_unpacked = 0, resident_bytes = 0;  // levels unpacked for the frame; unpacked bytes after it
+    std::size_t levels_unpacked = 0,
+                resident_bytes = 0;  // levels unpacked for the frame; unpacked bytes after it
     // select: every building's level (and the face budget); unpack: the levels not resident
     double select_seconds = 0, unpack_seconds = 0, render_seconds = 0, error_seconds = 0;
 };
@@ -132,7 +133,8 @@ struct FlyThroughRun {
 // levels_changed,psnr,ssim,flip`, one row per frame of each run, runs in order; the
 // strategy is format_strategy's text (quoted: it has commas); the errors are empty on
 // frames not sampled. Deterministic.
-std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city, const Strategy& strategy);
+std::string frames_csv(const std::vector<FlyThroughRun>& runs, const CityLevels& city,
+                       const Strategy& strategy);
 // timings.csv: `frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes`.
 std::string timings_csv(const std::vector<FlyThroughRun>& runs);
 
@@ -144,7 +146,8 @@ struct FlyThroughReport {
     std::size_t faces_min = 0, faces_max = 0;
     std::vector<std::size_t> level_totals;  // building-frames at each level 0..K
     std::size_t levels_changed = 0;         // over all frames
-    double psnr_mean = 0, ssim_mean = 0, flip_mean = 0;  // over the sampled frames (psnr: finite ones; inf if none)
+    double psnr_mean = 0, ssim_mean = 0,
+           flip_mean = 0;  // over the sampled frames (psnr: finite ones; inf if none)
     std::size_t levels_unpacked = 0, resident_peak_bytes = 0;
     std::size_t packed_bytes = 0, unpacked_bytes = 0;  // CityLevels'
     double build_seconds = 0, select_seconds = 0, unpack_seconds = 0, render_seconds = 0, error_seconds = 0,
@@ -173,7 +176,9 @@ bool needs_measured_errors(const Strategy& strategy);
 // OUTDIR/detail_<K>/contact_sheet.png. frames.csv and timings.csv hold every run.
 // Every file is written atomically. One report per detail.
 std::vector<FlyThroughReport> run_fly_through(const CityLevels& levels, const std::vector<CameraPose>& path,
-                                              const FlyThroughOptions& options, const std::vector<double>& details,
-                                              const std::string& output_folder, std::FILE* progress = nullptr);
+                                              const FlyThroughOptions& options,
+                                              const std::vector<double>& details,
+                                              const std::string& output_folder,
+                                              std::FILE* progress = nullptr);
 
 }  // namespace boxlod

@@ -1,22 +1,22 @@
-#include "base/common_options.h"
 #include "base/atomic_write.h"
+#include "base/common_options.h"
 #include "base/key_values.h"
 #include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "data_gen/city.h"
-#include "experiments/city/camera_path.h"
 #include "data_gen/commands/commands.h"
-#include "experiments/commands/commands.h"
-#include "toolkit/metrics/flip.h"
+#include "experiments/city/camera_path.h"
 #include "experiments/city/fly_through.h"
-#include "toolkit/commands/lod_options.h"
+#include "experiments/commands/commands.h"
 #include "toolkit/boxlod.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/lod/parameter_file.h"
+#include "toolkit/metrics/flip.h"
 #include "toolkit/selection/strategy_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -24,8 +24,8 @@ namespace boxlod {
 namespace {
 
 // The LoD parameters a city takes from the command line (the sizing ones are set per level).
-const std::vector<std::string> city_lod_parameters{"city_lod", "level_mode", "wanted_levels", "keep_small_subtrees",
-                                                   "keep_cheaper_subtrees"};
+const std::vector<std::string> city_lod_parameters{"city_lod", "level_mode", "wanted_levels",
+                                                   "keep_small_subtrees", "keep_cheaper_subtrees"};
 
 const std::string prefix = "boxlod city: ";
 
@@ -62,13 +62,15 @@ std::vector<double> details_option(const Arguments& arguments) {
     constexpr std::size_t most_details = 64;
     std::vector<double> details;
     const std::vector<std::string> items = comma_list(arguments.text("detail", "1"));
-    require(items.size() <= most_details, "--detail takes at most 64 values, got " + std::to_string(items.size()));
+    require(items.size() <= most_details,
+            "--detail takes at most 64 values, got " + std::to_string(items.size()));
     for (const std::string& item : items) {
         char* end = nullptr;
         double detail = std::strtod(item.c_str(), &end);
         require(!item.empty() && end == item.c_str() + item.size() && detail_range.contains(detail) &&
                     std::find(details.begin(), details.end(), detail) == details.end(),
-                "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" + arguments.text("detail") + "'");
+                "--detail takes distinct numbers in [0.001, 1000] separated by commas, got '" +
+                    arguments.text("detail") + "'");
         details.push_back(detail);
     }
     require(!details.empty(), "--detail takes distinct positive numbers separated by commas");
@@ -97,7 +99,8 @@ KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroug
         report.push_back(number_entry(key + "faces_min", double(r.faces_min)));
         report.push_back(number_entry(key + "faces_max", double(r.faces_max)));
         for (std::size_t c = 0; c < r.level_totals.size(); ++c)
-            report.push_back(number_entry(key + "level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
+            report.push_back(
+                number_entry(key + "level_" + std::to_string(c) + "_total", double(r.level_totals[c])));
         report.push_back(number_entry(key + "levels_changed", double(r.levels_changed)));
         report.push_back(number_entry(key + "sampled_frames", double(r.sampled_frames)));
         if (r.sampled_frames) {
@@ -106,12 +109,14 @@ KeyValues city_report(const std::vector<FlyThroughReport>& runs, const FlyThroug
             report.push_back(number_entry(key + "flip_mean", r.flip_mean));
         }
         report.push_back(number_entry(key + "select_seconds", r.select_seconds));
-        report.push_back(number_entry(key + "select_ms_per_frame", r.frames ? 1000 * r.select_seconds / double(r.frames) : 0));
+        report.push_back(number_entry(key + "select_ms_per_frame",
+                                      r.frames ? 1000 * r.select_seconds / double(r.frames) : 0));
         report.push_back(number_entry(key + "levels_unpacked", double(r.levels_unpacked)));
         report.push_back(number_entry(key + "unpack_seconds", r.unpack_seconds));
         report.push_back(number_entry(key + "resident_peak_bytes", double(r.resident_peak_bytes)));
         report.push_back(number_entry(key + "render_seconds", r.render_seconds));
-        report.push_back(number_entry(key + "render_ms_per_frame", r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
+        report.push_back(number_entry(key + "render_ms_per_frame",
+                                      r.frames ? 1000 * r.render_seconds / double(r.frames) : 0));
         report.push_back(number_entry(key + "error_seconds", r.error_seconds));
         report.push_back(number_entry(key + "seconds", r.total_seconds));
     }
@@ -146,11 +151,13 @@ int run_city(const Arguments& arguments) {
     check_memory("boxlod city: a fly-through of " + std::to_string(plan.lots.size()) + " buildings",
                  fly_through_memory(plan, options));
     CityLevels levels = build_city_levels(plan, options, needs_measured_errors(options.strategy), stderr);
-    std::vector<CameraPose> path =
-        built_in ? city_path(path_name, plan, levels.bounds, options.fovy, frames) : sample_keyframes(keys, frames);
+    std::vector<CameraPose> path = built_in ? city_path(path_name, plan, levels.bounds, options.fovy, frames)
+                                            : sample_keyframes(keys, frames);
     const std::string& output = arguments.text("output");
-    OutputFolder folder(output, is_fly_through_file);  // the old fly-through's files until the new ones are complete
-    std::vector<FlyThroughReport> runs = run_fly_through(levels, path, options, details, folder.path(), stderr);
+    OutputFolder folder(output,
+                        is_fly_through_file);  // the old fly-through's files until the new ones are complete
+    std::vector<FlyThroughReport> runs =
+        run_fly_through(levels, path, options, details, folder.path(), stderr);
     folder.commit();
     KeyValues report = city_report(runs, options, output, path_name);
     print_report(report, arguments);
@@ -160,52 +167,71 @@ int run_city(const Arguments& arguments) {
 // The city's own options, the LoD parameters a city uses, then those it shares with other commands.
 std::vector<Option> city_options() {
     std::vector<Option> options = {
-        {"output", "OUTDIR", "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)", {}, "", 'o'},
-        {"buildings", "N", "buildings in the city", city_buildings_range, std::to_string(CityOptions{}.buildings)},
+        {"output",
+         "OUTDIR",
+         "folder for frames/, contact_sheet.png, frames.csv, timings.csv (required)",
+         {},
+         "",
+         'o'},
+        {"buildings", "N", "buildings in the city", city_buildings_range,
+         std::to_string(CityOptions{}.buildings)},
         designs_option(),
         {"seed", "S", "the city's seed", seed_range, std::to_string(CityOptions{}.seed)},
-        {"strategy", "S", "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
-                          "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] | measured[:ERROR] "
-                          "(each level from where its chain measured it within ERROR of the original, 0.05, as build --chain "
-                          "switches)", std::nullopt, format_strategy(FlyThroughOptions{}.strategy)},
-        {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines", std::nullopt, "orbit"},
+        {"strategy", "S",
+         "distance:D1,D2,... | pixels:P1,P2,... | ratio:R1,R2,... | "
+         "diagonal[:MIN,MAX[,linear|square|square-root]] | texel[:ERROR_BUDGET] | measured[:ERROR] (each "
+         "level from where its chain measured it within ERROR of the original, 0.05, as build --chain "
+         "switches)",
+         std::nullopt, format_strategy(FlyThroughOptions{}.strategy)},
+        {"path", "PATH", "orbit, street, or a keyframe file of 'time x y z tx ty tz' lines", std::nullopt,
+         "orbit"},
         {"frames", "F", "frames along the path", NumberRange{1, 100000}, "60"},
-        {"width", "W", "frame width in pixels", NumberRange{16, 8192}, std::to_string(FlyThroughOptions{}.width)},
+        {"width", "W", "frame width in pixels", NumberRange{16, 8192},
+         std::to_string(FlyThroughOptions{}.width)},
         {"height", "H", "frame height in pixels, also the texture sizing resolution", NumberRange{16, 8192},
          std::to_string(FlyThroughOptions{}.height)},
-        {"fovy", "DEGREES", "vertical field of view", parameter_range::fovy, format_number(FlyThroughOptions{}.fovy)},
+        {"fovy", "DEGREES", "vertical field of view", parameter_range::fovy,
+         format_number(FlyThroughOptions{}.fovy)},
         {"hysteresis", "H", "relative margin before a level changes back", NumberRange{0, 10},
          format_number(FlyThroughOptions{}.hysteresis)},
-        {"detail", "K[,K...]", "level-of-detail bias: levels picked as if every building were 1/K as far "
-                                "(K > 1 finer, < 1 coarser; default 1); several: one run each over the same "
-                                "levels (at most 64), images under OUTDIR/detail_K/"},
-        {"budget", "FACES", "most faces drawn per frame, streets included: least important buildings coarsened first", NumberRange{1, 1e9}},
+        {"detail", "K[,K...]",
+         "level-of-detail bias: levels picked as if every building were 1/K as far (K > 1 finer, < 1 "
+         "coarser; default 1); several: one run each over the same levels (at most 64), images under "
+         "OUTDIR/detail_K/"},
+        {"budget", "FACES",
+         "most faces drawn per frame, streets included: least important buildings coarsened first",
+         NumberRange{1, 1e9}},
         {"error-every", "K", "compare frames 0, K, 2K, ... with full detail (0: never)", NumberRange{0, 1e6},
          std::to_string(FlyThroughOptions{}.error_every)},
-        {"ppd", "P", "FLIP's pixels per degree", pixels_per_degree_range, format_number(FlyThroughOptions{}.pixels_per_degree)},
+        {"ppd", "P", "FLIP's pixels per degree", pixels_per_degree_range,
+         format_number(FlyThroughOptions{}.pixels_per_degree)},
     };
     options = with_options(options, lod_options(city_lod_parameters));
-    return with_options(options, {
-        {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1)", NumberRange{1e-2, 1e6},
-         format_number(FlyThroughOptions{}.base_distance)},
-        {"memory", "MB", "unpacked levels kept between frames, in MiB; levels are kept packed (deflated) and a frame's own "
-                         "levels are always unpacked", NumberRange{0, 1 << 20}, std::to_string(FlyThroughOptions{}.memory_budget >> 20)},
-        threads_option(),
-        json_option(),
-    });
+    return with_options(
+        options, {
+                     {"base-distance", "D", "level 1 is baked for D metres, level c for D x 2^(c-1)",
+                      NumberRange{1e-2, 1e6}, format_number(FlyThroughOptions{}.base_distance)},
+                     {"memory", "MB",
+                      "unpacked levels kept between frames, in MiB; levels are kept packed (deflated) and a "
+                      "frame's own levels are always unpacked",
+                      NumberRange{0, 1 << 20}, std::to_string(FlyThroughOptions{}.memory_budget >> 20)},
+                     threads_option(),
+                     json_option(),
+                 });
 }
 
 }  // namespace
 
 Subcommand city_subcommand() {
     return {{"city", "[CITY]",
-             "Fly through a city with run-time LoD selection: a generated one, or CITY, a model whose root's children "
-             "are its buildings (a CityJSON district's Buildings, a glTF city), without streets. Every building gets its own LoD, built once "
-             "(level c baked for --base-distance x 2^(c-1)); per frame the strategy picks each building's level "
-             "(with hysteresis, optionally under a face budget). Writes OUTDIR/frames/frame_NNNN.png, "
-             "OUTDIR/contact_sheet.png, OUTDIR/frames.csv (faces, level histogram, levels changed, PSNR/SSIM/FLIP "
-             "against full detail on sampled frames; identical for any thread count) and OUTDIR/timings.csv. With "
-             "several --detail values, one pass each over the same levels (images under OUTDIR/detail_K/).",
+             "Fly through a city with run-time LoD selection: a generated one, or CITY, a model whose root's "
+             "children are its buildings (a CityJSON district's Buildings, a glTF city), without streets. "
+             "Every building gets its own LoD, built once (level c baked for --base-distance x 2^(c-1)); per "
+             "frame the strategy picks each building's level (with hysteresis, optionally under a face "
+             "budget). Writes OUTDIR/frames/frame_NNNN.png, OUTDIR/contact_sheet.png, OUTDIR/frames.csv "
+             "(faces, level histogram, levels changed, PSNR/SSIM/FLIP against full detail on sampled frames; "
+             "identical for any thread count) and OUTDIR/timings.csv. With several --detail values, one pass "
+             "each over the same levels (images under OUTDIR/detail_K/).",
              city_options(), 0, 1},
             run_city};
 }

@@ -1,13 +1,13 @@
 // `boxlod simplify`: the classic baseline, quadric edge-collapse simplification.
-#include "base/common_options.h"
 #include "base/atomic_write.h"
+#include "base/common_options.h"
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "experiments/commands/commands.h"
-#include "toolkit/commands/commands.h"
-#include "toolkit/model/material_merge.h"
-#include "toolkit/lod/hybrid/simplification.h"
 #include "toolkit/boxlod.h"
+#include "toolkit/commands/commands.h"
+#include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/model/material_merge.h"
 #include "toolkit/model/statistics.h"
 
 #include <cstdio>
@@ -31,8 +31,8 @@ int run_simplify(const Arguments& arguments) {
     double seconds = seconds_since(start);
     // The model was fine; the request is what cannot be met (it said the input was empty).
     if (mesh_counts(simplified).triangles == 0)
-        throw InputError("--faces " + std::to_string(faces) + ": simplifying " + arguments.positionals[0] + " to " +
-                         std::to_string(faces) + " face(s) keeps no triangle; ask for more");
+        throw InputError("--faces " + std::to_string(faces) + ": simplifying " + arguments.positionals[0] +
+                         " to " + std::to_string(faces) + " face(s) keeps no triangle; ask for more");
     if (!arguments.has("keep-materials")) merge_materials(simplified);
     write_model(simplified, arguments.text("output"));
 
@@ -50,18 +50,21 @@ int run_simplify(const Arguments& arguments) {
 }  // namespace
 
 Subcommand simplify_subcommand() {
-    return {{"simplify", "MODEL",
-             "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
-             "baseline LoD. Textures and the materials still drawn are kept (equal ones merged), geometry is merged into "
-             "one node per material.",
-             {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
-              {"output", "FILE", "output file, .gltf or .glb (required)", {}, "", 'o'},
-              {"lock-border", "", "never move vertices on open mesh borders"},
-              threads_option("threads, one material at a time"),
-              keep_materials_option(),
-              json_option()},
-             1, 1},
-            run_simplify};
+    return {
+        {"simplify",
+         "MODEL",
+         "Simplify a model by quadric edge collapse (meshoptimizer) to at most N triangles: the classic "
+         "baseline LoD. Textures and the materials still drawn are kept (equal ones merged), geometry is "
+         "merged into one node per material.",
+         {{"faces", "N", "the number of faces (triangles) to keep (required)", NumberRange{1, 2147483647}},
+          {"output", "FILE", "output file, .gltf or .glb (required)", {}, "", 'o'},
+          {"lock-border", "", "never move vertices on open mesh borders"},
+          threads_option("threads, one material at a time"),
+          keep_materials_option(),
+          json_option()},
+         1,
+         1},
+        run_simplify};
 }
 
 }  // namespace boxlod

@@ -1,5 +1,5 @@
-#include "base/common_options.h"
 #include "base/atomic_write.h"
+#include "base/common_options.h"
 #include "base/input_error.h"
 #include "base/key_values.h"
 #include "base/parallel.h"
@@ -20,8 +20,10 @@ std::vector<std::string> shard_folders(const std::string& parent) {
     for (const auto& entry : std::filesystem::directory_iterator(parent, error)) {
         const std::filesystem::path results = entry.path() / "results.csv";
         std::error_code ignored;
-        if (std::filesystem::is_regular_file(results, ignored)) folders.push_back(entry.path().string());
-        else if (std::filesystem::exists(results, ignored))  // a shard whose rows cannot be read is no shard to skip
+        if (std::filesystem::is_regular_file(results, ignored))
+            folders.push_back(entry.path().string());
+        else if (std::filesystem::exists(results,
+                                         ignored))  // a shard whose rows cannot be read is no shard to skip
             throw_input_error(results.string(), "", "is not a file: the shard's rows cannot be merged");
     }
     if (error) throw_input_error(parent, "", "cannot read the shards' folder: " + error.message());
@@ -36,8 +38,10 @@ int run_sweep_command(const Arguments& arguments) {
     int threads = threads_from(arguments, -1);  // -1: the config's
     SweepConfig config = load_sweep_config(arguments.positionals[0]);
     const std::string& output = arguments.text("output");
-    if (arguments.has("shard") && arguments.has("merge")) throw InputError("boxlod sweep: --shard and --merge exclude each other");
-    if (arguments.has("shard")) config = shard_config(config, parse_sweep_shard(config, arguments.text("shard")));
+    if (arguments.has("shard") && arguments.has("merge"))
+        throw InputError("boxlod sweep: --shard and --merge exclude each other");
+    if (arguments.has("shard"))
+        config = shard_config(config, parse_sweep_shard(config, arguments.text("shard")));
     std::vector<std::string> shards;
     if (arguments.has("merge")) shards = shard_folders(arguments.text("merge"));
     SweepReport r = merge_sweep(config, shards, output, threads, stderr);
@@ -63,18 +67,25 @@ int run_sweep_command(const Arguments& arguments) {
 Subcommand sweep_subcommand() {
     std::string keys;
     for (const std::string& key : sweep_config_keys()) keys += (keys.empty() ? "" : ", ") + key;
-    return {{"sweep", "CONFIG",
-             "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x render mode "
-             "of CONFIG (key = value lines: " + keys + "), each LoD compared with the original. Writes OUTDIR/results.csv (identical for any thread count), "
-             "OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in results.csv are skipped.",
+    return {{"sweep",
+             "CONFIG",
+             "Run a sweep: every model x level mode x box kind x interpolation x level x view x distance x "
+             "render mode of CONFIG (key = value lines: " +
+                 keys +
+                 "), each LoD compared with the original. Writes OUTDIR/results.csv (identical for any "
+                 "thread count), OUTDIR/timings.csv and, if asked, OUTDIR/images/; rows already in "
+                 "results.csv are skipped.",
              {{"output", "OUTDIR", "folder for results.csv, timings.csv and images/ (required)", {}, "", 'o'},
               threads_option("threads to use, 0 = all cores", "the config's threads"),
-              {"shard", "M:MODE", "only model M (from 1) with level mode MODE, and the baselines if MODE is the config's first: "
-                                  "a part of the sweep that runs on its own (docs/sweeps.md: Shards)"},
-              {"merge", "SHARDS", "start from the rows of the shards' output folders under SHARDS; OUTDIR/results.csv "
-                                  "gets the bytes of the whole sweep's"},
+              {"shard", "M:MODE",
+               "only model M (from 1) with level mode MODE, and the baselines if MODE is the config's first: "
+               "a part of the sweep that runs on its own (docs/sweeps.md: Shards)"},
+              {"merge", "SHARDS",
+               "start from the rows of the shards' output folders under SHARDS; OUTDIR/results.csv gets the "
+               "bytes of the whole sweep's"},
               json_option()},
-             1, 1},
+             1,
+             1},
             run_sweep_command};
 }
 

@@ -11,7 +11,8 @@ namespace boxlod {
 std::vector<std::string> coarser_file_lods(const std::string& city_lod, const std::string& path) {
     std::string file = path;
     std::error_code error;
-    if (const std::size_t hash = path.rfind('#'); hash != std::string::npos && !std::filesystem::exists(path, error))
+    if (const std::size_t hash = path.rfind('#');
+        hash != std::string::npos && !std::filesystem::exists(path, error))
         file = path.substr(0, hash);
     const std::string extension = lowercase_extension(file);
     if (path.empty() || (extension != ".json" && extension != ".jsonl")) return {};

@@ -14,8 +14,8 @@
 namespace boxlod {
 
 struct ImpostorAtlas {
-    int directions_per_side = 0;  // K
-    int cell = 0;                 // texels per cell side
+    int directions_per_side = 0;          // K
+    int cell = 0;                         // texels per cell side
     std::vector<OrientedBoxFace> frames;  // per cell, row-major; normal = the direction towards the viewer
     Image8 color, normal;                 // K x cell texels square
 };

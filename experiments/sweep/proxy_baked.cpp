@@ -30,8 +30,8 @@ std::vector<ProxyBakedVariant> proxy_baked_variants(int threads) {
     return variants;
 }
 
-Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles, double budget, int level,
-                      int threads) {
+Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles,
+                      double budget, int level, int threads) {
     const Model& model = *session.input.model;
     std::optional<Lod> drawn;  // the last level built that draws a triangle
     const std::function<Lod(std::size_t)> make = [&](std::size_t target) {
@@ -41,9 +41,11 @@ Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std
         return lod;
     };
     if (budget < 0) return make(triangles);
-    Lod within = finest_within<Lod>(mesh_counts(model).triangles, budget, make,
-                                    [](const Lod& lod) { return double(combined_cost({&lod.cost}).bytes()); });
-    // A budget only nothing fits: the cheapest level that draws, over it as its bytes say (as the sweep's levels do).
+    Lod within = finest_within<Lod>(mesh_counts(model).triangles, budget, make, [](const Lod& lod) {
+        return double(combined_cost({&lod.cost}).bytes());
+    });
+    // A budget only nothing fits: the cheapest level that draws, over it as its bytes say (as the sweep's
+    // levels do).
     return mesh_counts(within.model).triangles > 0 || !drawn ? within : std::move(*drawn);
 }
 

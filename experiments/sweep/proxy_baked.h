@@ -5,8 +5,8 @@
 // far level that Simplygon and Unreal's HLOD ship, as a user would make it
 // with Debian's meshoptimizer instead of boxlod's levels.
 #pragma once
-#include "toolkit/lod/lod_builder.h"
 #include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include <cstddef>
 #include <string>
@@ -19,9 +19,9 @@ namespace boxlod {
 LodParameters proxy_baked_parameters(const LodParameters& sweep, float distance);
 
 struct ProxyBakedVariant {
-    std::string name;  // results.csv's baseline_variant
+    std::string name;          // results.csv's baseline_variant
     SimplifyOptions simplify;  // geometry_only
-    int texel_scale = 1;  // its box's texels as at this many times the sizing distance
+    int texel_scale = 1;       // its box's texels as at this many times the sizing distance
 };
 // Edge collapse (then clustering), the same with open borders locked, and
 // clustering alone, each at texel scales 1, 4 and 16: 9 variants.
@@ -31,7 +31,7 @@ std::vector<ProxyBakedVariant> proxy_baked_variants(int threads);
 // as finely as keeps the level's bytes (every texture) within it (where only
 // a level drawing nothing would, the cheapest that draws); baked for
 // the session's distance. Its parameters and statistics name it level `level`.
-Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles, double budget, int level,
-                      int threads);
+Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles,
+                      double budget, int level, int threads);
 
 }  // namespace boxlod

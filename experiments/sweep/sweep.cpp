@@ -3,34 +3,34 @@
 #include "experiments/sweep/sweep_group.h"
 
 #include "base/csv.h"
-#include "base/memory_budget.h"
-#include "base/parallel.h"
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
+#include "base/parallel.h"
 #include "base/timing.h"
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/metrics/flip.h"
-#include "toolkit/metrics/heatmap.h"
 #include "experiments/sweep/file_lods.h"
 #include "experiments/sweep/impostor.h"
 #include "experiments/sweep/proxy_baked.h"
-#include "toolkit/metrics/image_metrics.h"
-#include "toolkit/metrics/metric_registry.h"
-#include "toolkit/metrics/silhouette.h"
+#include "experiments/sweep/single_box.h"
 #include "experiments/sweep/sweep_shots.h"
 #include "experiments/sweep/sweep_tables.h"
 #include "experiments/sweep/within_budget.h"
-#include "toolkit/lod/cut/level_values.h"
-#include "toolkit/lod/cut/level_budgets.h"
-#include "toolkit/lod/hybrid/simplification.h"
-#include "experiments/sweep/single_box.h"
 #include "toolkit/cgal/cgal_simplification.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/model/framing.h"
-#include "toolkit/lod/chain/chain.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/chain/chain.h"
+#include "toolkit/lod/cut/level_budgets.h"
+#include "toolkit/lod/cut/level_values.h"
+#include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/heatmap.h"
+#include "toolkit/metrics/image_metrics.h"
+#include "toolkit/metrics/metric_registry.h"
+#include "toolkit/metrics/silhouette.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/model/framing.h"
 #include "toolkit/model/statistics.h"
 
 #include <algorithm>
@@ -56,9 +56,10 @@ Model load_sweep_model(const SweepModel& model) {
 
 std::vector<std::string> result_columns(const SweepConfig& config) {
     std::vector<std::string> columns = sweep_key_columns();
-    for (const char* c : {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages", "largest_page",
-                          "nodes_with_box", "depth_error", "measured_error", "draw_calls", "mesh_bytes", "texture_bytes", "texture_bytes_gpu", "bytes",
-                          "covered_pixels", "baseline_variant"})
+    for (const char* c :
+         {"obtained_levels", "faces", "triangles", "vertices", "batches", "texels", "face_texels", "pages",
+          "largest_page", "nodes_with_box", "depth_error", "measured_error", "draw_calls", "mesh_bytes",
+          "texture_bytes", "texture_bytes_gpu", "bytes", "covered_pixels", "baseline_variant"})
         columns.push_back(c);
     for (Metric metric : config.metrics) columns.push_back(enum_name(metrics(), metric));
     return columns;
@@ -80,7 +81,8 @@ struct ModelPlan {
     std::size_t groups = 0;
 };
 
-ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::string& model_path, int threads) {
+ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::string& model_path,
+                     int threads) {
     ModelPlan plan;
     for (BoxKind kind : config.box_kinds) plan.boxes[kind] = node_boxes(model, kind, threads);
     for (LevelMode mode : config.level_modes)
@@ -91,7 +93,8 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
                 const int obtained = obtained_levels(model, mode, asked_levels(asked));
                 SweepVariant variant{mode, kind, interpolation, obtained, {}};
                 for (int level = 0; level <= obtained; ++level)
-                    if (config.levels.empty() || std::binary_search(config.levels.begin(), config.levels.end(), level))
+                    if (config.levels.empty() ||
+                        std::binary_search(config.levels.begin(), config.levels.end(), level))
                         variant.levels.push_back(level);
                 plan.groups += variant.levels.size();
                 plan.variants.push_back(std::move(variant));
@@ -99,10 +102,12 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
     // The baselines follow the first variant: a simplified mesh per level, one single box at its top.
     const std::vector<int>& levels = plan.variants.front().levels;
     for (Baseline baseline : config.baselines)
-        plan.groups += baseline == Baseline::file_lods ? coarser_file_lods(config.lod.city_lod, model_path).size()
+        plan.groups += baseline == Baseline::file_lods
+                           ? coarser_file_lods(config.lod.city_lod, model_path).size()
                        : baseline == Baseline::single_box || baseline == Baseline::impostor ? 1
-                       : baseline == Baseline::proxy_baked ? levels.size() - std::size_t(std::count(levels.begin(), levels.end(), 0))
-                                                           : levels.size();
+                       : baseline == Baseline::proxy_baked
+                           ? levels.size() - std::size_t(std::count(levels.begin(), levels.end(), 0))
+                           : levels.size();
     return plan;
 }
 
@@ -110,12 +115,14 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
 // baked boxes; untextured boxes are not baked. Slot = 2 x sizing distance +
 // (untextured ? 1 : 0); one session per slot and sizing level, shared by the
 // levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
-void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan, const SweepVariant& variant) {
+void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan,
+                 const SweepVariant& variant) {
     const SweepConfig& config = run.config;
     // With SizingRule::nearest (and per_level) every distance draws the LoD baked for the smallest one.
     auto sizing_index = [&](std::size_t d) -> std::size_t {
         if (config.sizing == SizingRule::each_distance) return d;
-        return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) - config.distances.begin());
+        return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) -
+                           config.distances.begin());
     };
     std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
     auto slot = [&](RenderMode mode, std::size_t, std::size_t d) {
@@ -123,8 +130,9 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
     };
     for (int level : variant.levels) {
         const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
-        std::string group = csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
-                                     interpolation_name(variant.interpolation), std::to_string(level)});
+        std::string group =
+            csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
+                     interpolation_name(variant.interpolation), std::to_string(level)});
         run_group(run, out, report, group, slot, [&](int s, int) {
             std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
             if (!session) {
@@ -132,16 +140,18 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
                 p.level_mode = variant.mode;
                 p.box_kind = variant.box;
                 p.interpolation = variant.interpolation;
-                p.distance = float(doubled_distance(config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy),
-                                                    sizing_level));
+                p.distance = float(doubled_distance(
+                    config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy),
+                    sizing_level));
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
-                if (!orders_by_bytes(p.level_mode)) p.budgets.clear();  // the other modes make wanted_levels levels
+                if (!orders_by_bytes(p.level_mode))
+                    p.budgets.clear();  // the other modes make wanted_levels levels
                 session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
                 session->input.budgets_strict = false;  // a row over its budget says so in its bytes
             }
             Lod lod = build_lod(*session, level, run.threads);
             SweepCandidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
-                                    variant.obtained_levels, &lod.cost);
+                                         variant.obtained_levels, &lod.cost);
             c.face_texels = lod.face_texels;
             c.depth_error = format_number(lod.depth_error);
             if (variant.mode == LevelMode::hybrid) c.measured_error = format_number(lod.measured_error);
@@ -151,23 +161,29 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
 }
 
 // Plan, then execute, model by model, into the results table (after the shards' rows, if any).
-SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress,
-                       const std::vector<std::string>& shard_folders = {}) {
+SweepReport sweep_into(const SweepConfig& config, const std::string& output_folder, int threads,
+                       std::FILE* progress, const std::vector<std::string>& shard_folders = {}) {
     auto sweep_start = Clock::now();
     if (threads < 0) threads = config.threads;
     // A row holds its view's reference shot and the one it measures, both compared.
-    check_memory("boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) + " pixels",
-                 2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
-    const double most_rows = most_sweep_rows(config);  // refused before a model is read, an enormous one ran until killed
-    check_memory("boxlod sweep: the tables of up to " + format_number(most_rows) + " rows", most_rows * sweep_row_memory);
+    check_memory(
+        "boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) +
+            " pixels",
+        2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
+    const double most_rows =
+        most_sweep_rows(config);  // refused before a model is read, an enormous one ran until killed
+    check_memory("boxlod sweep: the tables of up to " + format_number(most_rows) + " rows",
+                 most_rows * sweep_row_memory);
     SweepReport report;
     SweepOutput out = open_output(config, output_folder, result_columns(config), timing_columns());
     merge_shards(out, shard_folders);
     for (std::size_t m = 0; m < config.models.size(); ++m) {
         Model model = load_sweep_model(config.models[m]);
-        ModelPlan plan = timed(report.boxes_seconds, [&] { return plan_model(config, model, config.models[m].path, threads); });
+        ModelPlan plan = timed(report.boxes_seconds,
+                               [&] { return plan_model(config, model, config.models[m].path, threads); });
         if (progress && m == 0)  // once a model is read: a sweep refused for it says so in one line
-            std::fprintf(progress, "boxlod sweep: up to %s rows; each model's lines give its ETA\n", format_number(most_rows).c_str());
+            std::fprintf(progress, "boxlod sweep: up to %s rows; each model's lines give its ETA\n",
+                         format_number(most_rows).c_str());
         ModelRun run{config, config.models[m], model, model_framing(model)};
         run.index = m;
         run.rows = plan.groups * rows_per_group(config);
@@ -184,7 +200,8 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
 
 }  // namespace
 
-SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads, std::FILE* progress) {
+SweepReport run_sweep(const SweepConfig& config, const std::string& output_folder, int threads,
+                      std::FILE* progress) {
     return merge_sweep(config, {}, output_folder, threads, progress);
 }
 

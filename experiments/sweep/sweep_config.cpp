@@ -3,14 +3,14 @@
 #include "base/csv.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
-#include "base/key_values.h"
 #include "base/key_value_lines.h"
+#include "base/key_values.h"
 #include "base/parallel.h"
 #include "data_gen/samples.h"
-#include "toolkit/formats/model_io.h"
-#include "toolkit/metrics/flip.h"
 #include "experiments/sweep/impostor.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
+#include "toolkit/metrics/flip.h"
 
 #include <algorithm>
 #include <charconv>
@@ -27,23 +27,24 @@ constexpr EnumEntry<Baseline> baseline_table[] = {
     {Baseline::simplification, "simplification",
      "the original simplified to each level's triangles (boxlod simplify: edge collapse, then clustering)"},
     {Baseline::simplification_best, "simplification-best",
-     "of meshoptimizer's variants (collapse, lock-border, sloppy), the one with the lowest image error at each level's "
-     "triangles; results.csv names it in baseline_variant"},
+     "of meshoptimizer's variants (collapse, lock-border, sloppy), the one with the lowest image error at "
+     "each level's triangles; results.csv names it in baseline_variant"},
     {Baseline::cgal, "cgal",
      "CGAL's Garland-Heckbert edge collapse on each material welded by position, to each level's triangles "
      "(the budget split by surface area; it stops where the mesh allows no more)"},
     {Baseline::single_box, "single-box", "the whole model as one untextured box in its mean colour"},
     {Baseline::impostor, "impostor",
-     "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing distance, "
-     "one quad facing the direction nearest the camera"},
+     "an octahedral impostor: K x K captured directions (impostor_directions), texel = pixel at the sizing "
+     "distance, one quad facing the direction nearest the camera"},
     {Baseline::proxy_baked, "proxy-baked",
-     "the whole model's geometry simplified as one mesh and drawn with its root box's baked faces (the far level of "
-     "Simplygon and Unreal's HLOD), at each level but 0: of meshoptimizer's variants and texel scales 1, 4 and 16 the one "
-     "with the lowest image error at the level's triangles or byte budget, baked for its sizing distance; results.csv "
-     "names it in baseline_variant"},
+     "the whole model's geometry simplified as one mesh and drawn with its root box's baked faces (the far "
+     "level of Simplygon and Unreal's HLOD), at each level but 0: of meshoptimizer's variants and texel "
+     "scales 1, 4 and 16 the one with the lowest image error at the level's triangles or byte budget, baked "
+     "for its sizing distance; results.csv names it in baseline_variant"},
     {Baseline::file_lods, "file-lods",
-     "a CityJSON model's own coarser LoDs (3DBAG's 1.3 and 1.2 below 2.2), read from the same file: the official "
-     "ladder; level k is the k-th below the one read, results.csv's baseline_variant names it (no rows for other formats)"},
+     "a CityJSON model's own coarser LoDs (3DBAG's 1.3 and 1.2 below 2.2), read from the same file: the "
+     "official ladder; level k is the k-th below the one read, results.csv's baseline_variant names it (no "
+     "rows for other formats)"},
 };
 
 }  // namespace
@@ -82,7 +83,7 @@ std::string sweep_settings(const SweepConfig& config) {
 namespace {
 
 constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
-constexpr NumberRange distance_multiple_range{0.01, 1000};  // of the framing distance
+constexpr NumberRange distance_multiple_range{0.01, 1000};         // of the framing distance
 
 struct Line {
     const std::string& file;
@@ -94,7 +95,8 @@ struct Line {
     std::vector<std::string> items() const {
         if (line.value.find_first_not_of(" \t") == std::string::npos) fail("expected a comma-separated list");
         std::vector<std::string> out = comma_list(line.value);
-        if (std::find(out.begin(), out.end(), "") != out.end()) fail("empty item in the list '" + line.value + "'");
+        if (std::find(out.begin(), out.end(), "") != out.end())
+            fail("empty item in the list '" + line.value + "'");
         return out;
     }
     template <typename T>
@@ -112,7 +114,9 @@ struct Line {
         return v;
     }
     template <typename T>
-    T number_in(const NumberRange& range) const { return number_in<T>(range, line.value); }
+    T number_in(const NumberRange& range) const {
+        return number_in<T>(range, line.value);
+    }
     // The value, one name of the enum's table.
     template <typename T>
     T word(std::span<const EnumEntry<T>> table) const {
@@ -127,7 +131,8 @@ struct Line {
         std::vector<T> out;
         for (const std::string& word : items()) {
             T value{};
-            if (!parse_enum(table, word, value)) fail("unknown value '" + word + "' (" + enum_names(table) + ")");
+            if (!parse_enum(table, word, value))
+                fail("unknown value '" + word + "' (" + enum_names(table) + ")");
             if (std::find(out.begin(), out.end(), value) == out.end()) out.push_back(value);
         }
         return out;
@@ -137,7 +142,8 @@ struct Line {
 SweepModel model_entry(const Line& line, const std::string& item, const std::filesystem::path& folder) {
     SweepModel model{item, "", ""};
     // The item names the model's rows in results.csv, which a resume reads back as text.
-    if (const std::string problem = csv_text_problem(item); !problem.empty()) line.fail("'" + item + "': " + problem);
+    if (const std::string problem = csv_text_problem(item); !problem.empty())
+        line.fail("'" + item + "': " + problem);
     if (item.starts_with("sample:")) {
         model.sample = item.substr(7);
         if (model.sample.empty()) line.fail("'sample:' needs a sample name, e.g. sample:house");
@@ -152,7 +158,8 @@ SweepModel model_entry(const Line& line, const std::string& item, const std::fil
 }
 
 // An item of `models`; FILE#* is each object of a city file, as FILE#OBJECT (toolkit/formats/model_io.h).
-void add_models(SweepConfig& c, const Line& line, const std::string& item, const std::filesystem::path& folder) {
+void add_models(SweepConfig& c, const Line& line, const std::string& item,
+                const std::filesystem::path& folder) {
     if (!item.ends_with("#*")) {
         c.models.push_back(model_entry(line, item, folder));
         return;
@@ -173,59 +180,77 @@ struct SweepKey {
 const std::vector<SweepKey>& sweep_keys() {
     using Folder = const std::filesystem::path&;
     static const std::vector<SweepKey> keys = {
-        {"models", [](SweepConfig& c, const Line& l, Folder folder) {
+        {"models",
+         [](SweepConfig& c, const Line& l, Folder folder) {
              for (const std::string& item : l.items()) add_models(c, l, item, folder);
          }},
-        {"level_modes", [](SweepConfig& c, const Line& l, Folder) { c.level_modes = l.words(level_modes()); }},
+        {"level_modes",
+         [](SweepConfig& c, const Line& l, Folder) { c.level_modes = l.words(level_modes()); }},
         {"box_kinds", [](SweepConfig& c, const Line& l, Folder) { c.box_kinds = l.words(box_kinds()); }},
-        {"interpolations", [](SweepConfig& c, const Line& l, Folder) { c.interpolations = l.words(interpolations()); }},
-        {"levels", [](SweepConfig& c, const Line& l, Folder) {
+        {"interpolations",
+         [](SweepConfig& c, const Line& l, Folder) { c.interpolations = l.words(interpolations()); }},
+        {"levels",
+         [](SweepConfig& c, const Line& l, Folder) {
              c.levels.clear();
              if (l.line.value == "all") return;
              std::set<int> levels;
-             for (const std::string& item : l.items()) levels.insert(l.number_in<int>(parameter_range::current_level, item));
+             for (const std::string& item : l.items())
+                 levels.insert(l.number_in<int>(parameter_range::current_level, item));
              c.levels.assign(levels.begin(), levels.end());
          }},
-        {"views", [](SweepConfig& c, const Line& l, Folder) {
+        {"views",
+         [](SweepConfig& c, const Line& l, Folder) {
              c.views.clear();
              std::vector<std::string> items = l.line.value == "all" ? camera_position_names() : l.items();
              for (const std::string& view : items) {
-                 if (view == "all" && items.size() > 1) l.fail("'all' stands alone: it names every camera position");
-                 if (!camera_direction(view)) l.fail("unknown camera position '" + view + "' (e.g. +X, -Y, +X+Y+Z, or all)");
-                 if (std::find(c.views.begin(), c.views.end(), view) == c.views.end()) c.views.push_back(view);
+                 if (view == "all" && items.size() > 1)
+                     l.fail("'all' stands alone: it names every camera position");
+                 if (!camera_direction(view))
+                     l.fail("unknown camera position '" + view + "' (e.g. +X, -Y, +X+Y+Z, or all)");
+                 if (std::find(c.views.begin(), c.views.end(), view) == c.views.end())
+                     c.views.push_back(view);
              }
          }},
-        {"distances", [](SweepConfig& c, const Line& l, Folder) {
+        {"distances",
+         [](SweepConfig& c, const Line& l, Folder) {
              c.distances.clear();
              for (const std::string& item : l.items()) {
                  float d = l.number_in<float>(distance_multiple_range, item);
-                 if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end()) c.distances.push_back(d);
+                 if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end())
+                     c.distances.push_back(d);
              }
          }},
-        {"render_modes", [](SweepConfig& c, const Line& l, Folder) { c.render_modes = l.words(render_modes()); }},
-        {"width", [](SweepConfig& c, const Line& l, Folder) { c.width = l.number_in<int>(sweep_image_side_range); }},
-        {"height", [](SweepConfig& c, const Line& l, Folder) { c.height = l.number_in<int>(sweep_image_side_range); }},
+        {"render_modes",
+         [](SweepConfig& c, const Line& l, Folder) { c.render_modes = l.words(render_modes()); }},
+        {"width",
+         [](SweepConfig& c, const Line& l, Folder) { c.width = l.number_in<int>(sweep_image_side_range); }},
+        {"height",
+         [](SweepConfig& c, const Line& l, Folder) { c.height = l.number_in<int>(sweep_image_side_range); }},
         {"metrics", [](SweepConfig& c, const Line& l, Folder) { c.metrics = l.words(metrics()); }},
-        {"ppd", [](SweepConfig& c, const Line& l, Folder) {
-             c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range);
-         }},
+        {"ppd", [](SweepConfig& c, const Line& l,
+                   Folder) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},
         {"sizing", [](SweepConfig& c, const Line& l, Folder) { c.sizing = l.word(sizing_rules()); }},
         // The manual's program (set_manual, one sizing distance); the keys after it change single settings.
-        {"manual", [](SweepConfig& c, const Line& l, Folder) {
-             if (l.line.value != "true" && l.line.value != "false") l.fail("expected true or false, got '" + l.line.value + "'");
+        {"manual",
+         [](SweepConfig& c, const Line& l, Folder) {
+             if (l.line.value != "true" && l.line.value != "false")
+                 l.fail("expected true or false, got '" + l.line.value + "'");
              if (l.line.value == "true") {
                  set_manual(c.lod);
                  c.sizing = SizingRule::nearest;
              }
          }},
-        {"impostor_directions", [](SweepConfig& c, const Line& l, Folder) {
+        {"impostor_directions",
+         [](SweepConfig& c, const Line& l, Folder) {
              c.impostor_directions = l.number_in<int>(NumberRange{2, double(max_impostor_directions)});
          }},
-        {"baselines", [](SweepConfig& c, const Line& l, Folder) {
+        {"baselines",
+         [](SweepConfig& c, const Line& l, Folder) {
              c.baselines = l.line.value == "none" ? std::vector<Baseline>{} : l.words(baselines());
          }},
         {"keep_images", [](SweepConfig& c, const Line& l, Folder) { c.keep_images = l.word(kept_images()); }},
-        {"threads", [](SweepConfig& c, const Line& l, Folder) { c.threads = l.number_in<int>(thread_count_range); }},
+        {"threads",
+         [](SweepConfig& c, const Line& l, Folder) { c.threads = l.number_in<int>(thread_count_range); }},
     };
     return keys;
 }
@@ -248,8 +273,9 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
         if (kv.value.empty()) line.fail("missing value");
         if (const ParameterDeclaration* declared = find_lod_parameter(kv.key)) {
             if (!declared->sweep_key)
-                line.fail("the sweep varies this itself (level_modes, box_kinds, interpolations, levels, distances, "
-                          "render_modes)");
+                line.fail(
+                    "the sweep varies this itself (level_modes, box_kinds, interpolations, levels, "
+                    "distances, render_modes)");
             if (std::string problem = declared->parse(kv.value, c.lod); !problem.empty()) line.fail(problem);
             continue;
         }
@@ -264,11 +290,15 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
 }
 
 double most_sweep_rows(const SweepConfig& config) {
-    const double levels = config.levels.empty()
-                              ? double(std::max<std::size_t>(std::size_t(config.lod.wanted_levels), config.lod.budgets.size()) + 1)
-                              : double(config.levels.size());
-    const double variants = double(config.level_modes.size() * config.box_kinds.size() * config.interpolations.size());
-    const double groups = double(config.models.size()) * (variants + double(config.baselines.size())) * levels;
+    const double levels =
+        config.levels.empty()
+            ? double(std::max<std::size_t>(std::size_t(config.lod.wanted_levels), config.lod.budgets.size()) +
+                     1)
+            : double(config.levels.size());
+    const double variants =
+        double(config.level_modes.size() * config.box_kinds.size() * config.interpolations.size());
+    const double groups =
+        double(config.models.size()) * (variants + double(config.baselines.size())) * levels;
     return groups * double(config.views.size() * config.distances.size() * config.render_modes.size());
 }
 

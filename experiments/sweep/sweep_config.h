@@ -4,11 +4,11 @@
 // size, metrics, which images to keep, and any LoD parameter the sweep does
 // not vary (toolkit/lod/lod_parameters.h). Paths are relative to the file.
 #pragma once
-#include "toolkit/metrics/metric_registry.h"
 #include "renderer/renderer.h"
-#include "toolkit/lod/pages/boxes.h"
 #include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/lod_parameters.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/metrics/metric_registry.h"
 
 #include <string>
 #include <vector>
@@ -28,13 +28,21 @@ std::span<const EnumEntry<KeptImages>> kept_images();
 enum class SizingRule { nearest, each_distance, per_level };
 
 // The baselines a sweep compares the LoDs with (docs/sweeps.md).
-enum class Baseline { simplification, simplification_best, cgal, single_box, impostor, proxy_baked, file_lods };
+enum class Baseline {
+    simplification,
+    simplification_best,
+    cgal,
+    single_box,
+    impostor,
+    proxy_baked,
+    file_lods
+};
 std::span<const EnumEntry<Baseline>> baselines();  // names and help
 std::span<const EnumEntry<SizingRule>> sizing_rules();
 
 struct SweepModel {
-    std::string name;  // as written in the config: the CSV's `model` column
-    std::string path;  // resolved against the config's folder; empty for a sample
+    std::string name;    // as written in the config: the CSV's `model` column
+    std::string path;    // resolved against the config's folder; empty for a sample
     std::string sample;  // `sample:NAME`: a built-in grammar generated in memory
 };
 
@@ -43,7 +51,7 @@ struct SweepConfig {
     std::vector<LevelMode> level_modes{LevelMode::top_down};
     std::vector<BoxKind> box_kinds{BoxKind::expanded};
     std::vector<Interpolation> interpolations{Interpolation::linear};
-    std::vector<int> levels;  // empty: all, 0 .. obtained levels
+    std::vector<int> levels;                   // empty: all, 0 .. obtained levels
     std::vector<std::string> views{"+X+Y+Z"};  // camera position names
     std::vector<float> distances{1};           // multiples of the model's framing distance
     std::vector<RenderMode> render_modes{RenderMode::normal};
@@ -59,8 +67,8 @@ struct SweepConfig {
         return p;
     }();
     SizingRule sizing = SizingRule::per_level;  // `manual = true`: nearest, the manual's one distance
-    std::vector<Baseline> baselines;  // none by default; they run in the table's order
-    int impostor_directions = 8;      // K: the impostor baseline's K x K captured directions
+    std::vector<Baseline> baselines;            // none by default; they run in the table's order
+    int impostor_directions = 8;                // K: the impostor baseline's K x K captured directions
     KeptImages keep_images = KeptImages::none;
     int threads = 0;  // 0 = all cores
 };

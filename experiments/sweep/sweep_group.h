@@ -27,20 +27,23 @@ namespace boxlod {
 // What one group of rows draws: an LoD level or a baseline mesh.
 struct SweepCandidate {
     Model model;
-    Atlas atlas;  // pages = 0 for untextured boxes and the baselines
+    Atlas atlas;                    // pages = 0 for untextured boxes and the baselines
     std::uint64_t face_texels = 0;  // the baked faces' own texels, without the atlas's gutters and free space
     std::size_t nodes_with_box = 0;
-    std::string depth_error;  // an LoD's proxy error (LodDerived::depth_errors summed over its boxes); empty for baselines
-    std::string measured_error;  // a hybrid level's measured proxy error (Lod::measured_error); empty for the others
+    std::string depth_error;  // an LoD's proxy error (LodDerived::depth_errors summed over its boxes); empty
+                              // for baselines
+    std::string
+        measured_error;  // a hybrid level's measured proxy error (Lod::measured_error); empty for the others
     int obtained_levels = 0;
-    CostParts cost;  // each row states the cost of the maps its render mode draws
+    CostParts cost;                           // each row states the cost of the maps its render mode draws
     std::unique_ptr<DrawableModel> drawable;  // made by run_group unless `make` made it
-    double seconds = 0;  // building it and making it drawable
-    std::string variant;  // a baseline's variant (results.csv baseline_variant)
+    double seconds = 0;                       // building it and making it drawable
+    std::string variant;                      // a baseline's variant (results.csv baseline_variant)
 };
 
 // `cost`: the model's, when its builder has it already (an LoD); else computed here.
-SweepCandidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels, const CostParts* cost = nullptr);
+SweepCandidate candidate(Model model, Atlas atlas, std::size_t nodes_with_box, int obtained_levels,
+                         const CostParts* cost = nullptr);
 
 // A level mode x box kind x interpolation of the plan, with the levels the sweep draws.
 struct SweepVariant {
@@ -78,7 +81,6 @@ std::size_t rows_per_group(const SweepConfig& config);
 // those within `budget` bytes (every texture) where there are any.
 void run_group(ModelRun& run, SweepOutput& out, SweepReport& report, const std::string& group,
                const std::function<int(RenderMode, std::size_t, std::size_t)>& slot,
-               const std::function<SweepCandidate(int, int)>& make,
-               int alternatives = 1, double budget = -1);
+               const std::function<SweepCandidate(int, int)>& make, int alternatives = 1, double budget = -1);
 
 }  // namespace boxlod

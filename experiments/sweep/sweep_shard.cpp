@@ -26,16 +26,21 @@ SweepConfig shard_config(const SweepConfig& config, const SweepShard& shard) {
 
 SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text) {
     const std::size_t colon = text.find(':');
-    auto fail = [&](const std::string& what) { throw InputError("boxlod sweep: --shard '" + text + "': " + what); };
-    if (colon == std::string::npos) fail("expected M:MODE, the model's position from 1 and a level mode of the config");
+    auto fail = [&](const std::string& what) {
+        throw InputError("boxlod sweep: --shard '" + text + "': " + what);
+    };
+    if (colon == std::string::npos)
+        fail("expected M:MODE, the model's position from 1 and a level mode of the config");
     const std::string position = text.substr(0, colon), mode_name = text.substr(colon + 1);
     const NumberRange models{1, double(config.models.size())};
     char* end = nullptr;
     const double m = std::strtod(position.c_str(), &end);
-    if (position.empty() || *end || !models.contains(m) || m != std::floor(m)) fail(out_of_range_message(models, position));
+    if (position.empty() || *end || !models.contains(m) || m != std::floor(m))
+        fail(out_of_range_message(models, position));
     SweepShard shard{std::size_t(m) - 1, LevelMode::top_down};
     if (!parse_level_mode(mode_name, shard.level_mode) ||
-        std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) == config.level_modes.end())
+        std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) ==
+            config.level_modes.end())
         fail("'" + mode_name + "' is not one of the config's level modes");
     return shard;
 }

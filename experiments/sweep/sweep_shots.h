@@ -3,9 +3,9 @@
 // metrics of a pair (docs/sweeps.md). One thread each in a sweep: rows are
 // drawn side by side.
 #pragma once
-#include "toolkit/metrics/shot.h"
 #include "experiments/sweep/sweep_config.h"
 #include "renderer/renderer.h"
+#include "toolkit/metrics/shot.h"
 #include "toolkit/model/framing.h"
 
 #include <optional>
@@ -30,6 +30,7 @@ struct Metrics {
 double choice_error(const std::vector<Metric>& metrics, const std::vector<double>& values);
 
 // The config's metrics of `test` against `reference` (its prepared FLIP half when it has one).
-Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap, int threads);
+Metrics compare_shots(const SweepConfig& config, const Shot& reference, const Shot& test, bool want_heatmap,
+                      int threads);
 
 }  // namespace boxlod

@@ -25,12 +25,19 @@ namespace fs = std::filesystem;
 // folder's tables are read back (a resumed sweep, --merge): metric columns
 // hold metrics, the others are counts unless listed.
 CsvValue column_value(const std::string& column) {
-    static const std::map<std::string, CsvValue> listed = {
-        {"model", CsvValue::text},           {"level_mode", CsvValue::text},       {"box_kind", CsvValue::text},
-        {"interpolation", CsvValue::text},   {"view", CsvValue::text},             {"render_mode", CsvValue::text},
-        {"baseline_variant", CsvValue::text}, {"distance", CsvValue::number},      {"depth_error", CsvValue::optional_number},
-        {"measured_error", CsvValue::optional_number}, {"build_seconds", CsvValue::number},
-        {"render_seconds", CsvValue::number}, {"metric_seconds", CsvValue::number}};
+    static const std::map<std::string, CsvValue> listed = {{"model", CsvValue::text},
+                                                           {"level_mode", CsvValue::text},
+                                                           {"box_kind", CsvValue::text},
+                                                           {"interpolation", CsvValue::text},
+                                                           {"view", CsvValue::text},
+                                                           {"render_mode", CsvValue::text},
+                                                           {"baseline_variant", CsvValue::text},
+                                                           {"distance", CsvValue::number},
+                                                           {"depth_error", CsvValue::optional_number},
+                                                           {"measured_error", CsvValue::optional_number},
+                                                           {"build_seconds", CsvValue::number},
+                                                           {"render_seconds", CsvValue::number},
+                                                           {"metric_seconds", CsvValue::number}};
     if (auto found = listed.find(column); found != listed.end()) return found->second;
     Metric metric;
     return parse_enum(metrics(), column, metric) ? CsvValue::metric : CsvValue::count;
@@ -71,7 +78,8 @@ void write_table(const KeyedTable& table, const std::vector<std::string>& order)
 // File names: the key's words joined by '_', anything but [A-Za-z0-9+-.] replaced.
 std::string file_name(std::string name) {
     for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.' && c != '_') c = '_';
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.' && c != '_')
+            c = '_';
     return name + ".png";
 }
 
@@ -89,18 +97,22 @@ std::string this_build() {
 // settings.txt: what the folder's rows were made with (sweep_settings) and by
 // which build. A re-run with other settings or another build would skip rows
 // that no longer answer it. Written with the tables (write_tables).
-void check_settings(const fs::path& path, const std::string& settings, const std::string& advice = "use another output folder") {
-    if (!fs::exists(path)) return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
-    const std::vector<KeyValueLine> was = parse_key_value_lines(read_input_file(path.string(), "sweep settings"), path.string()),
+void check_settings(const fs::path& path, const std::string& settings,
+                    const std::string& advice = "use another output folder") {
+    if (!fs::exists(path))
+        return;  // a new folder (or one from before settings.txt: its rows are taken as they are)
+    const std::vector<KeyValueLine> was = parse_key_value_lines(
+                                        read_input_file(path.string(), "sweep settings"), path.string()),
                                     is = parse_key_value_lines(settings, "this sweep");
     auto text = [](const std::vector<KeyValueLine>& lines, std::size_t k) {
-        return k < lines.size() ? "'" + lines[k].key + " = " + lines[k].value + "'" : std::string("nothing more");
+        return k < lines.size() ? "'" + lines[k].key + " = " + lines[k].value + "'"
+                                : std::string("nothing more");
     };
     for (std::size_t k = 0; k < std::max(was.size(), is.size()); ++k)
         if (k >= was.size() || k >= is.size() || was[k].key != is[k].key || was[k].value != is[k].value)
             throw_input_error(path.string(), k < was.size() ? "line " + std::to_string(was[k].line) : "",
-                              "the rows here were made with " + text(was, k) + ", this sweep runs with " + text(is, k) +
-                                  "; " + advice);
+                              "the rows here were made with " + text(was, k) + ", this sweep runs with " +
+                                  text(is, k) + "; " + advice);
 }
 
 // A shard's rows into the merged table: a row two shards both hold must be the
@@ -118,17 +130,21 @@ void merge_rows(KeyedTable& into, const KeyedTable& shard) {
 
 const std::vector<std::string>& sweep_key_columns() {
     static const std::vector<std::string> columns = {"model", "level_mode", "box_kind", "interpolation",
-                                                     "level", "view", "distance", "render_mode"};
+                                                     "level", "view",       "distance", "render_mode"};
     return columns;
 }
 
 SweepOutput open_output(const SweepConfig& config, const std::string& output_folder,
-                        const std::vector<std::string>& result_columns, const std::vector<std::string>& timing_columns) {
+                        const std::vector<std::string>& result_columns,
+                        const std::vector<std::string>& timing_columns) {
     fs::create_directories(output_folder);
     SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns),
                     open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns),
-                    fs::path(output_folder) / "settings.txt", sweep_settings(config) + "boxlod_build = " + this_build() + "\n", {},
-                    fs::path(output_folder) / "images", config.keep_images != KeptImages::none};
+                    fs::path(output_folder) / "settings.txt",
+                    sweep_settings(config) + "boxlod_build = " + this_build() + "\n",
+                    {},
+                    fs::path(output_folder) / "images",
+                    config.keep_images != KeptImages::none};
     check_settings(out.settings_path, out.settings);
     if (out.keep_images) fs::create_directories(out.images);
     return out;
@@ -148,10 +164,12 @@ void write_tables(const SweepOutput& out) {
 void merge_shards(SweepOutput& out, const std::vector<std::string>& shard_folders) {
     for (const std::string& folder : shard_folders) {
         const fs::path results = fs::path(folder) / "results.csv";
-        if (!fs::is_regular_file(results)) throw_input_error(results.string(), "", "no such shard results file");
+        if (!fs::is_regular_file(results))
+            throw_input_error(results.string(), "", "no such shard results file");
         // A shard of another sweep (settings or build) would merge rows that do not answer this one.
         const fs::path settings = fs::path(folder) / "settings.txt";
-        if (fs::exists(settings) && !fs::is_regular_file(settings)) throw_input_error(settings.string(), "", "is not a file");
+        if (fs::exists(settings) && !fs::is_regular_file(settings))
+            throw_input_error(settings.string(), "", "is not a file");
         check_settings(settings, out.settings, "merge only shards of this sweep");
         merge_rows(out.results, open_table(results.string(), out.results.columns));
         KeyedTable timings = open_table((fs::path(folder) / "timings.csv").string(), out.timings.columns);

@@ -38,7 +38,8 @@ const std::vector<std::string>& sweep_key_columns();
 // The folder's tables as far as they exist. Throws InputError for rows that do
 // not read back, or a settings.txt from other settings or another build.
 SweepOutput open_output(const SweepConfig& config, const std::string& output_folder,
-                        const std::vector<std::string>& result_columns, const std::vector<std::string>& timing_columns);
+                        const std::vector<std::string>& result_columns,
+                        const std::vector<std::string>& timing_columns);
 // A kept image, named after its row key.
 void save_image(const SweepOutput& out, const std::string& name, const Image8& image);
 // settings.txt, results.csv and timings.csv, each written atomically.

@@ -17,7 +17,8 @@ Level finest_within(std::size_t first_target, double budget, const std::function
     for (int round = 0; round < 16; ++round) {
         const double bytes = bytes_of(level);
         if (bytes <= budget || target == 1) break;
-        target = std::max<std::size_t>(1, std::min(target - 1, std::size_t(double(target) * budget / bytes * 0.98)));
+        target = std::max<std::size_t>(
+            1, std::min(target - 1, std::size_t(double(target) * budget / bytes * 0.98)));
         level = make(target);
     }
     return level;

@@ -5,14 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
-#include <csignal>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 using namespace boxlod;
@@ -28,18 +28,24 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
     fs::path folder = test::scratch_folder("atomic_write_paths");
     test::write_text(folder / "file", "x");
     EXPECT_EQ(output_problem(check_output_file, (folder / "a.png").string()), "");
-    EXPECT_EQ(output_problem(check_output_file, folder.string()), folder.string() + ": is a directory, not a file to write");
-    EXPECT_EQ(output_problem(check_output_file, (folder / "file" / "a.png").string()),
-              (folder / "file" / "a.png").string() + ": '" + (folder / "file").string() + "' is not a folder");
-    EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()), "");  // made when written
+    EXPECT_EQ(output_problem(check_output_file, folder.string()),
+              folder.string() + ": is a directory, not a file to write");
+    EXPECT_EQ(
+        output_problem(check_output_file, (folder / "file" / "a.png").string()),
+        (folder / "file" / "a.png").string() + ": '" + (folder / "file").string() + "' is not a folder");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "none" / "a.png").string()),
+              "");                              // made when written
     EXPECT_FALSE(fs::exists(folder / "none"));  // checked, not made
-    EXPECT_EQ(output_problem(check_output_file, "/proc/a.png").rfind("/proc/a.png: cannot write here: ", 0), 0u);
+    EXPECT_EQ(output_problem(check_output_file, "/proc/a.png").rfind("/proc/a.png: cannot write here: ", 0),
+              0u);
     // A name goes into glTF's URIs, which JSON holds as UTF-8; a folder's does not.
-    EXPECT_EQ(output_problem(check_output_file, (folder / "caf\xe9.gltf").string()), (folder / "caf\xe9.gltf").string() + ": the file's name is not UTF-8 text");
+    EXPECT_EQ(output_problem(check_output_file, (folder / "caf\xe9.gltf").string()),
+              (folder / "caf\xe9.gltf").string() + ": the file's name is not UTF-8 text");
     EXPECT_EQ(output_problem(check_output_file, (folder / "caf\xc3\xa9.gltf").string()), "");
     EXPECT_EQ(output_problem(check_output_directory, (folder / "new" / "deeper").string()), "");
     EXPECT_FALSE(fs::exists(folder / "new"));  // checked, not made
-    EXPECT_EQ(output_problem(check_output_directory, (folder / "file").string()), (folder / "file").string() + ": exists and is not a folder");
+    EXPECT_EQ(output_problem(check_output_directory, (folder / "file").string()),
+              (folder / "file").string() + ": exists and is not a folder");
     EXPECT_EQ(output_problem(check_output_directory, (folder / "file" / "sub").string()),
               (folder / "file" / "sub").string() + ": '" + (folder / "file").string() + "' is not a folder");
 }
@@ -50,9 +56,11 @@ TEST(AtomicWrite, OutputPathsAreCheckedBeforeAnyWork) {
 TEST(AtomicWrite, AFolderInTheWayIsNamedAsTheCause) {
     fs::path folder = test::scratch_folder("atomic_write_folder_in_the_way");
     fs::create_directories(folder / "level.gltf" / "inside");
-    const std::string problem = test::input_error_of([&] { write_text_atomically((folder / "level.gltf").string(), "x"); });
+    const std::string problem =
+        test::input_error_of([&] { write_text_atomically((folder / "level.gltf").string(), "x"); });
     EXPECT_EQ(problem, (folder / "level.gltf").string() + ": cannot write: Is a directory");
-    EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);  // no temporary left
+    EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()),
+              1);  // no temporary left
 }
 
 TEST(AtomicWrite, AnOutputIsNamedForTheFormatItHolds) {
@@ -62,7 +70,8 @@ TEST(AtomicWrite, AnOutputIsNamedForTheFormatItHolds) {
     };
     EXPECT_EQ(problem("a.glb"), "");
     EXPECT_EQ(problem("a.GLTF"), "");  // case aside
-    EXPECT_EQ(problem("a.obj"), (folder / "a.obj").string() + ": this output is written as .gltf or .glb: name the file so");
+    EXPECT_EQ(problem("a.obj"),
+              (folder / "a.obj").string() + ": this output is written as .gltf or .glb: name the file so");
     EXPECT_NE(problem("glb"), "");  // no extension at all
     EXPECT_EQ(test::input_error_of([&] { check_output_file(folder.string(), {".png"}); }),
               folder.string() + ": is a directory, not a file to write");  // the path is checked first
@@ -73,20 +82,23 @@ TEST(AtomicWrite, AFileInAFolderThatDoesNotExistYetMakesItsFolder) {
     write_text_atomically((folder / "new" / "deeper" / "a.txt").string(), "made");
     EXPECT_EQ(test::read_text(folder / "new" / "deeper" / "a.txt"), "made");
     test::write_text(folder / "file", "x");
-    EXPECT_EQ(test::input_error_of([&] { write_text_atomically((folder / "file" / "a.txt").string(), "no"); })
-                  .rfind((folder / "file" / "a.txt").string() + ": cannot make its folder: ", 0),
+    EXPECT_EQ(test::input_error_of([&] {
+                  write_text_atomically((folder / "file" / "a.txt").string(), "no");
+              }).rfind((folder / "file" / "a.txt").string() + ": cannot make its folder: ", 0),
               0u);
 }
 
 TEST(AtomicWrite, ChecksRemoveTemporariesOfRunsThatNoLongerExist) {
     fs::path folder = test::scratch_folder("atomic_write_stale");
     test::write_text(folder / "a.png.boxlod-tmp999999999", "killed run");  // no process has this id
-    test::write_text(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid())), "a run with this run's id, before it");
+    test::write_text(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid())),
+                     "a run with this run's id, before it");
     test::write_text(folder / "c.tmpfile", "not ours");
     test::write_text(folder / "report.tmp999999999", "a user's, named like a temporary of other programs");
     check_output_file((folder / "a.png").string());
     EXPECT_FALSE(fs::exists(folder / "a.png.boxlod-tmp999999999"));
-    EXPECT_FALSE(fs::exists(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid()))));  // not one this run writes
+    EXPECT_FALSE(
+        fs::exists(folder / ("b.png.boxlod-tmp" + std::to_string(::getpid()))));  // not one this run writes
     EXPECT_TRUE(fs::exists(folder / "c.tmpfile"));
     EXPECT_TRUE(fs::exists(folder / "report.tmp999999999"));
 }
@@ -102,7 +114,9 @@ TEST(AtomicWrite, NothingAboveTheOutputFolderIsTouched) {
     test::write_text(parent / "userdir.boxlod-staging999999999" / "data", "precious");
     check_output_directory((parent / "out").string());
     check_output_file((parent / "new" / "a.png").string());
-    { OutputFolder folder((parent / "tiles").string(), [](const std::string&) { return true; }); }
+    {
+        OutputFolder folder((parent / "tiles").string(), [](const std::string&) { return true; });
+    }
     EXPECT_TRUE(fs::exists(parent / "notes.txt.boxlod-tmp999999999"));
     EXPECT_FALSE(fs::exists(parent / "notes.txt"));
     EXPECT_TRUE(fs::exists(parent / ".boxlod-commit999999999"));
@@ -129,20 +143,24 @@ TEST(AtomicWrite, AGroupsFilesWaitAsTemporariesUntilTheCommitRenamesThemAll) {
         group.commit();
     }
     EXPECT_EQ(test::read_text(folder / "a.png"), "second");
-    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_EQ(entry.path().filename().string().find(".boxlod-tmp"), std::string::npos);
+    for (const auto& entry : fs::directory_iterator(folder))
+        EXPECT_EQ(entry.path().filename().string().find(".boxlod-tmp"), std::string::npos);
 }
 
 TEST(AtomicWrite, ManyFilesInAGroupWaitAsNamedTemporariesBeyondTheOpenFileBudget) {
     fs::path folder = test::scratch_folder("atomic_write_many");
     {
         OutputGroup group;
-        for (int i = 0; i < 300; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), std::to_string(i));
+        for (int i = 0; i < 300; ++i)
+            write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), std::to_string(i));
         std::size_t named = 0;
-        for (const auto& entry : fs::directory_iterator(folder)) named += entry.path().string().find(".boxlod-tmp") != std::string::npos;
-        EXPECT_EQ(named, 300u - 256u);  // the first 256 unnamed, the rest named
+        for (const auto& entry : fs::directory_iterator(folder))
+            named += entry.path().string().find(".boxlod-tmp") != std::string::npos;
+        EXPECT_EQ(named, 300u - 256u);                       // the first 256 unnamed, the rest named
         check_output_file((folder / "other.txt").string());  // this run's own temporaries are not leftovers
         std::size_t still = 0;
-        for (const auto& entry : fs::directory_iterator(folder)) still += entry.path().string().find(".boxlod-tmp") != std::string::npos;
+        for (const auto& entry : fs::directory_iterator(folder))
+            still += entry.path().string().find(".boxlod-tmp") != std::string::npos;
         EXPECT_EQ(still, named);
         group.commit();
     }
@@ -203,7 +221,7 @@ TEST(AtomicWrite, AGroupLeftWithoutCommitRemovesTheFilesItMadeButNotThoseItRepla
 TEST(AtomicWrite, TheNextRunCompletesACommitThatAKillCutShort) {
     fs::path folder = test::scratch_folder("atomic_write_journal");
     const std::string dead = ".boxlod-tmp999999999";  // no process has this id
-    test::write_text(folder / "a.png", "new");  // renamed before the kill
+    test::write_text(folder / "a.png", "new");        // renamed before the kill
     test::write_text(folder / ("b.gltf" + dead), "new");
     test::write_text(folder / "b.gltf", "old");
     test::write_text(folder / ("c.png" + dead), "being written");
@@ -212,7 +230,9 @@ TEST(AtomicWrite, TheNextRunCompletesACommitThatAKillCutShort) {
     EXPECT_EQ(test::read_text(folder / "a.png"), "new");
     EXPECT_EQ(test::read_text(folder / "b.gltf"), "new");
     EXPECT_FALSE(fs::exists(folder / "c.png"));
-    for (const auto& entry : fs::directory_iterator(folder)) EXPECT_TRUE(entry.path().filename() == "a.png" || entry.path().filename() == "b.gltf") << entry.path();
+    for (const auto& entry : fs::directory_iterator(folder))
+        EXPECT_TRUE(entry.path().filename() == "a.png" || entry.path().filename() == "b.gltf")
+            << entry.path();
 }
 
 // The journal is read back as input: one that lists anything but the dead
@@ -222,7 +242,8 @@ TEST(AtomicWrite, AJournalListingOtherFilesRollsBack) {
     const std::string dead = ".boxlod-tmp999999999";
     test::write_text(folder / "b.gltf", "old");
     test::write_text(folder / ("b.gltf" + dead), "new");
-    for (const std::string& line : {"../b.gltf" + dead, std::string("b.gltf.boxlod-tmp12"), std::string("b.gltf")}) {
+    for (const std::string& line :
+         {"../b.gltf" + dead, std::string("b.gltf.boxlod-tmp12"), std::string("b.gltf")}) {
         test::write_text(folder / ("b.gltf" + dead), "new");
         test::write_text(folder / ".boxlod-commit999999999", "b.gltf" + dead + "\n" + line + "\n");
         check_output_file((folder / "other.png").string());
@@ -250,7 +271,8 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
     using Clock = std::chrono::steady_clock;
     auto write_set = [&](const std::string& content) {
         OutputGroup group;
-        for (int i = 0; i < files; ++i) write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), content);
+        for (int i = 0; i < files; ++i)
+            write_text_atomically((folder / (std::to_string(i) + ".txt")).string(), content);
         group.commit();
     };
     // Whether the journal lists the files (it is empty while they take their names).
@@ -259,7 +281,8 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         return fs::file_size(journal, error) > 0 && !error;
     };
     // Runs a child writing the new set; kills it `delay` seconds after the start,
-    // or after its journal lists the files; returns when that happened and when it ended (seconds from the start).
+    // or after its journal lists the files; returns when that happened and when it ended (seconds from the
+    // start).
     auto run_new_set = [&](std::optional<double> delay, bool after_journal) {
         const auto start = Clock::now();
         const pid_t child = ::fork();
@@ -271,7 +294,8 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
         double journal_at = -1;
         if (after_journal)
-            while (::waitpid(child, nullptr, WNOHANG) == 0 && !listing(journal) && seconds() < 30) ::usleep(50);
+            while (::waitpid(child, nullptr, WNOHANG) == 0 && !listing(journal) && seconds() < 30)
+                ::usleep(50);
         if (after_journal) journal_at = seconds();
         if (delay) {
             ::usleep(useconds_t(*delay * 1e6));
@@ -281,7 +305,8 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         return std::pair{journal_at, seconds()};
     };
     write_set("old");
-    const auto [journal_at, end_at] = run_new_set(std::nullopt, true);  // unhurried: when the renames start and end
+    const auto [journal_at, end_at] =
+        run_new_set(std::nullopt, true);  // unhurried: when the renames start and end
     int outcomes[2] = {0, 0};
     for (int k = 0; k < kills; ++k) {
         write_set("old");
@@ -300,8 +325,9 @@ TEST(AtomicWrite, ASetKilledAtAnyMomentIsOldOrNewAfterTheNextRun) {
         EXPECT_EQ(entries, std::size_t(files));
         ++outcomes[first == "new"];
     }
-    EXPECT_GT(outcomes[0], 0);          // killed at once: the old set
-    EXPECT_GE(outcomes[1], kills / 2);  // after the journal listed the files: the next run completed the new set
+    EXPECT_GT(outcomes[0], 0);  // killed at once: the old set
+    EXPECT_GE(outcomes[1],
+              kills / 2);  // after the journal listed the files: the next run completed the new set
     fs::remove_all(folder);
 }
 
@@ -310,7 +336,8 @@ bool tileset_file(const std::string& name) { return name == "tileset.json" || na
 
 std::vector<std::string> names_in(const fs::path& folder) {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(folder))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -380,7 +407,8 @@ TEST(OutputFolder, AFolderHoldingOtherFilesIsWrittenInPlaceAndKeepsThem) {
 TEST(OutputFolder, StagingFoldersOfKilledRunsGoAtTheNextRun) {
     fs::path parent = test::scratch_folder("output_folder_stale");
     const std::string live = "other.boxlod-staging" + std::to_string(::getpid());
-    for (const std::string& name : {std::string("tiles.boxlod-staging999999999"), live, std::string("data.tmp999999999")}) {
+    for (const std::string& name :
+         {std::string("tiles.boxlod-staging999999999"), live, std::string("data.tmp999999999")}) {
         fs::create_directories(parent / name);
         test::write_text(parent / name / "tile_1", "content");
     }

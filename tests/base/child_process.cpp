@@ -24,26 +24,44 @@ std::string message_of(const std::function<std::string()>& work, ChildLimits lim
 
 TEST(ChildProcess, TheChildsBytesComeBackAndItsChangesStayInIt) {
     const std::string bytes("scene\0with\0zeros", 16);
-    EXPECT_EQ(run_in_child([&] { touched_by_the_child = 1; return bytes; }, {}, "f.ifc", "the reader"), bytes);
+    EXPECT_EQ(run_in_child(
+                  [&] {
+                      touched_by_the_child = 1;
+                      return bytes;
+                  },
+                  {}, "f.ifc", "the reader"),
+              bytes);
     EXPECT_EQ(touched_by_the_child, 0);
     const std::string large(5'000'000, 'x');  // more than a pipe holds at once
     EXPECT_EQ(run_in_child([&] { return large; }, {}, "f.ifc", "the reader"), large);
 }
 
 TEST(ChildProcess, AnInputErrorComesBackAsItWasAndOtherErrorsAsInternal) {
-    EXPECT_EQ(message_of([]() -> std::string { throw_input_error("f.ifc", "line 3", "bad entity"); }), "f.ifc: line 3: bad entity");
-    EXPECT_THROW(run_in_child([]() -> std::string { throw std::logic_error("a bug"); }, {}, "f.ifc", "the reader"),
-                 std::runtime_error);
+    EXPECT_EQ(message_of([]() -> std::string { throw_input_error("f.ifc", "line 3", "bad entity"); }),
+              "f.ifc: line 3: bad entity");
+    EXPECT_THROW(
+        run_in_child([]() -> std::string { throw std::logic_error("a bug"); }, {}, "f.ifc", "the reader"),
+        std::runtime_error);
 }
 
 // What the child cannot survive becomes one line naming the file and the reader.
 TEST(ChildProcess, ACrashAnAbortOrATimeoutIsOneLineNamingFileAndReader) {
-    EXPECT_EQ(message_of([]() -> std::string { std::raise(SIGSEGV); return ""; }),
+    EXPECT_EQ(message_of([]() -> std::string {
+                  std::raise(SIGSEGV);
+                  return "";
+              }),
               "f.ifc: the reader crashed on this file (Segmentation fault)");
-    EXPECT_EQ(message_of([]() -> std::string { std::abort(); }), "f.ifc: the reader crashed on this file (Aborted)");
-    EXPECT_EQ(message_of([]() -> std::string { ::_exit(3); }), "f.ifc: the reader ended without an answer (exit status 3)");
+    EXPECT_EQ(message_of([]() -> std::string { std::abort(); }),
+              "f.ifc: the reader crashed on this file (Aborted)");
+    EXPECT_EQ(message_of([]() -> std::string { ::_exit(3); }),
+              "f.ifc: the reader ended without an answer (exit status 3)");
     const auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(message_of([]() -> std::string { std::this_thread::sleep_for(std::chrono::seconds(30)); return ""; }, {0, 0.2}),
+    EXPECT_EQ(message_of(
+                  []() -> std::string {
+                      std::this_thread::sleep_for(std::chrono::seconds(30));
+                      return "";
+                  },
+                  {0, 0.2}),
               "f.ifc: the reader took longer than 0.2 s; stopped");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 }

@@ -11,13 +11,16 @@ using namespace boxlod;
 
 namespace {
 Command render_like() {
-    return {"render", "MODEL", "Render.",
+    return {"render",
+            "MODEL",
+            "Render.",
             {{"output", "FILE", "output", {}, "", 'o'},
              {"width", "W", "width", NumberRange{1, 16384}},
              {"height", "H", "height", NumberRange{1, 16384}},
              {"name", "N", "a name"},
              {"axes", "", "axes"}},
-            1, 1};
+            1,
+            1};
 }
 
 std::string message_of(const std::vector<std::string>& words) {
@@ -46,8 +49,10 @@ TEST(CommandLine, RejectsWhatItDoesNotKnow) {
 }
 
 TEST(CommandLine, NumbersOutsideTheirDeclaredRangeAreRefusedWhileParsing) {
-    EXPECT_EQ(message_of({"m", "--width", "100000"}), "boxlod render: --width: expected a number in [1, 16384], got '100000'");
-    EXPECT_EQ(message_of({"m", "--height=0"}), "boxlod render: --height: expected a number in [1, 16384], got '0'");
+    EXPECT_EQ(message_of({"m", "--width", "100000"}),
+              "boxlod render: --width: expected a number in [1, 16384], got '100000'");
+    EXPECT_EQ(message_of({"m", "--height=0"}),
+              "boxlod render: --height: expected a number in [1, 16384], got '0'");
     EXPECT_NE(message_of({"m", "--width", "1e39"}), "");
     EXPECT_NE(message_of({"m", "--width", "nan"}), "");
     EXPECT_NE(message_of({"m", "--width", "inf"}), "");
@@ -63,7 +68,8 @@ TEST(CommandLine, ReadingANumberFromAnOptionWithoutARangeIsAProgrammingError) {
 
 TEST(CommandLine, HelpListsEveryOption) {
     std::string help = help_text(render_like());
-    for (const char* text : {"usage: boxlod render MODEL", "-o, --output FILE", "--width W", "--axes", "--help"})
+    for (const char* text :
+         {"usage: boxlod render MODEL", "-o, --output FILE", "--width W", "--axes", "--help"})
         EXPECT_NE(help.find(text), std::string::npos) << text;
 }
 

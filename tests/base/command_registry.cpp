@@ -13,8 +13,10 @@ int ran = 0;
 std::vector<Subcommand> commands() {
     return {{{"echo", "", "Echo. Second sentence.", {{"times", "N", "how often", NumberRange{1, 3}}}, 0, 0},
              [](const Arguments& a) { return ran = a.integer("times", 1), 0; }},
-            {{"bad", "", "Bad input.", {}, 0, 0}, [](const Arguments&) -> int { throw InputError("x.txt: line 2: wrong"); }},
-            {{"broken", "", "A bug.", {}, 0, 0}, [](const Arguments&) -> int { throw std::logic_error("oops"); }}};
+            {{"bad", "", "Bad input.", {}, 0, 0},
+             [](const Arguments&) -> int { throw InputError("x.txt: line 2: wrong"); }},
+            {{"broken", "", "A bug.", {}, 0, 0},
+             [](const Arguments&) -> int { throw std::logic_error("oops"); }}};
 }
 int run(std::vector<const char*> words) {
     words.insert(words.begin(), "boxlod");

@@ -14,7 +14,8 @@ namespace {
 fs::path folder_of_files(const std::string& name, int files) {
     const fs::path folder = test::scratch_folder(name) / "frames";
     fs::create_directories(folder / "inner");
-    for (int k = 0; k < files; ++k) test::write_text(folder / (k % 2 ? "inner" : ".") / ("frame_" + std::to_string(k)), "x");
+    for (int k = 0; k < files; ++k)
+        test::write_text(folder / (k % 2 ? "inner" : ".") / ("frame_" + std::to_string(k)), "x");
     return folder;
 }
 

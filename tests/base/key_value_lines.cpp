@@ -15,7 +15,8 @@ std::string refusal(const std::string& text) {
 }  // namespace
 
 TEST(KeyValueLines, KeysValuesCommentsAndLineNumbers) {
-    const auto lines = parse_key_value_lines("# a comment\nwidth = 16  # sixteen\n\n\tmode=normal\r\nempty =\n", "p.txt");
+    const auto lines =
+        parse_key_value_lines("# a comment\nwidth = 16  # sixteen\n\n\tmode=normal\r\nempty =\n", "p.txt");
     ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[0].line, 2);
     EXPECT_EQ(lines[0].key, "width");

@@ -11,7 +11,8 @@ TEST(KeyValues, NumbersPrintShortAndReadBackExactly) {
     EXPECT_EQ(format_number(-0.0), "0");
     EXPECT_EQ(format_number(0.1), "0.1");
     EXPECT_EQ(format_number(0.1f), "0.1");
-    for (double v : {1.0 / 3.0, 1e-300, 123456789.123456789, -2.5e17}) EXPECT_EQ(std::strtod(format_number(v).c_str(), nullptr), v);
+    for (double v : {1.0 / 3.0, 1e-300, 123456789.123456789, -2.5e17})
+        EXPECT_EQ(std::strtod(format_number(v).c_str(), nullptr), v);
 }
 
 TEST(KeyValues, ValueOfFindsTheFirstEntry) {
@@ -29,7 +30,8 @@ TEST(KeyValues, LinesAndJson) {
 
 TEST(KeyValues, ACommaListKeepsEveryItemEvenEmptyOnes) {
     EXPECT_EQ(comma_list("0.5, 0.25,0.1"), (std::vector<std::string>{"0.5", "0.25", "0.1"}));
-    EXPECT_EQ(comma_list("10,20,"), (std::vector<std::string>{"10", "20", ""}));  // a trailing comma is an empty item
+    EXPECT_EQ(comma_list("10,20,"),
+              (std::vector<std::string>{"10", "20", ""}));  // a trailing comma is an empty item
     EXPECT_EQ(comma_list(",a"), (std::vector<std::string>{"", "a"}));
     EXPECT_EQ(comma_list("a,, b"), (std::vector<std::string>{"a", "", "b"}));
     EXPECT_EQ(comma_list(""), (std::vector<std::string>{""}));

@@ -36,7 +36,9 @@ TEST(MemoryBudget, RefusesARequestOverItWithOneLineSayingWhatItNeeds) {
         check_memory("a 16384 x 16384 frame", 8.59e9);
         FAIL() << "not refused";
     } catch (const InputError& error) {
-        EXPECT_STREQ(error.what(), "a 16384 x 16384 frame would need 8.59 GB, more than the memory budget of 2 GB (--max-memory)");
+        EXPECT_STREQ(
+            error.what(),
+            "a 16384 x 16384 frame would need 8.59 GB, more than the memory budget of 2 GB (--max-memory)");
     }
     EXPECT_EQ(memory_text(5.36e8), "536 MB");
 }

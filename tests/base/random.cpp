@@ -9,7 +9,8 @@ namespace boxlod {
 // The reference output of O'Neill's pcg32-demo for pcg32_srandom(42, 54).
 TEST(Pcg32, MatchesTheReferenceImplementation) {
     Pcg32 random(42, 54);
-    for (std::uint32_t expected : {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu})
+    for (std::uint32_t expected :
+         {0xa15c02b7u, 0x7b47f409u, 0xba1d3330u, 0x83d2f293u, 0xbfa4784bu, 0xcbed606eu})
         EXPECT_EQ(random.next_uint(), expected);
 }
 

@@ -38,7 +38,8 @@ TEST(City, StreetsAndOneTreePerBuilding) {
         auto [s_lo, s_hi] = footprint(ground);
         for (int building : buildings) {
             auto [b_lo, b_hi] = footprint(city.nodes[building]);
-            bool apart = (b_hi.array() <= s_lo.array() + 1e-3f).any() || (s_hi.array() <= b_lo.array() + 1e-3f).any();
+            bool apart =
+                (b_hi.array() <= s_lo.array() + 1e-3f).any() || (s_hi.array() <= b_lo.array() + 1e-3f).any();
             EXPECT_TRUE(apart) << city.nodes[building].name << " overlaps a street";
         }
     }
@@ -109,12 +110,14 @@ TEST(City, LotsDrawFromTheDesignsAndShowThemInPlace) {
         EXPECT_EQ(placed.name, lot.name);
         Model design = design_model(plan, lot.design, lot.name);
         ASSERT_EQ(design.nodes[0].scope.has_value(), placed.scope.has_value());
-        EXPECT_LT((design.nodes[0].scope->center + lot.center - placed.scope->center).norm(), 1e-3f) << lot.name;
+        EXPECT_LT((design.nodes[0].scope->center + lot.center - placed.scope->center).norm(), 1e-3f)
+            << lot.name;
         EXPECT_EQ(design.nodes[0].scope->half_extents, placed.scope->half_extents);
     }
     options.buildings = 5;
     CityPlan smaller = plan_city(options);
-    for (std::size_t i = 0; i < smaller.lots.size(); ++i) EXPECT_EQ(smaller.lots[i].design, plan.lots[i].design);
+    for (std::size_t i = 0; i < smaller.lots.size(); ++i)
+        EXPECT_EQ(smaller.lots[i].design, plan.lots[i].design);
     options.designs = 0;
     EXPECT_EQ(plan_city(options).designs.size(), 5u);  // each lot its own
 }

@@ -60,7 +60,8 @@ TEST(Expression, NonFiniteResultIsAnError) {
         value_of("1 / (x - 3)");
         FAIL() << "expected an InputError";
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), "test.grammar:2:16: the expression's value is not a finite number");
+        EXPECT_EQ(std::string(error.what()),
+                  "test.grammar:2:16: the expression's value is not a finite number");
     }
 }
 

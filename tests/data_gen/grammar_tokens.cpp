@@ -9,10 +9,12 @@
 using namespace boxlod;
 
 TEST(GrammarTokens, CutsTextIntoWordsWithTheirPlaces) {
-    const std::vector<Token> tokens = tokenize("Lot --> s(1.5, .5) # a comment\n  wall.x \"red\" // another\n-->", "g");
+    const std::vector<Token> tokens =
+        tokenize("Lot --> s(1.5, .5) # a comment\n  wall.x \"red\" // another\n-->", "g");
     std::vector<std::string> texts;
     for (const Token& t : tokens) texts.push_back(t.text);
-    EXPECT_EQ(texts, (std::vector<std::string>{"Lot", "-->", "s", "(", "1.5", ",", ".5", ")", "wall.x", "red", "-->", ""}));
+    EXPECT_EQ(texts, (std::vector<std::string>{"Lot", "-->", "s", "(", "1.5", ",", ".5", ")", "wall.x", "red",
+                                               "-->", ""}));
     EXPECT_EQ(tokens[4].kind, Token::Kind::number);
     EXPECT_EQ(tokens[6].number, 0.5);
     EXPECT_EQ(tokens[9].kind, Token::Kind::text);

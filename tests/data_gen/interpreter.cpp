@@ -10,8 +10,8 @@ namespace boxlod {
 
 namespace {
 
-Model build(const std::string& text, float width, float depth, std::uint64_t seed = 0, const std::string& start = "",
-            DerivationLimits limits = {}) {
+Model build(const std::string& text, float width, float depth, std::uint64_t seed = 0,
+            const std::string& start = "", DerivationLimits limits = {}) {
     Grammar grammar = parse_grammar(text, "g.grammar");
     BuildingOptions options;
     options.start = start;
@@ -21,7 +21,8 @@ Model build(const std::string& text, float width, float depth, std::uint64_t see
     return generate_building(grammar, options);
 }
 
-std::string build_error(const std::string& text, float width = 4, float depth = 2, DerivationLimits limits = {}) {
+std::string build_error(const std::string& text, float width = 4, float depth = 2,
+                        DerivationLimits limits = {}) {
     try {
         build(text, width, depth, 0, "", limits);
     } catch (const InputError& error) {
@@ -56,7 +57,8 @@ Bounds node_bounds(const Node& node) {
 }  // namespace
 
 TEST(Interpreter, ExtrudeAndSplitMakeTheDerivationTree) {
-    Model model = build("Lot --> extrude(3) Mass\nMass --> split(x) { 1 : A | ~1 : B }\nA --> i(box)\nB -->\n", 4, 2);
+    Model model =
+        build("Lot --> extrude(3) Mass\nMass --> split(x) { 1 : A | ~1 : B }\nA --> i(box)\nB -->\n", 4, 2);
     ASSERT_EQ(rules(model), (std::vector<std::string>{"Lot", "Mass", "A", "B"}));
     EXPECT_EQ(model.nodes[0].parent, -1);
     EXPECT_EQ(model.nodes[1].parent, 0);
@@ -83,7 +85,8 @@ TEST(Interpreter, ExtrudeAndSplitMakeTheDerivationTree) {
 }
 
 TEST(Interpreter, ComponentSplitGivesFaceScopes) {
-    Model model = build("M --> extrude(2) comp(f) { front : F | side : S | top : T }\nF --> i(quad)\nS -->\nT -->\n", 4, 2);
+    Model model = build(
+        "M --> extrude(2) comp(f) { front : F | side : S | top : T }\nF --> i(quad)\nS -->\nT -->\n", 4, 2);
     ASSERT_EQ(rules(model), (std::vector<std::string>{"M", "F", "S", "S", "T"}));
     expect_scope(model.nodes[1], {0, 1, 1}, {2, 1, 0});
     Eigen::Matrix3f right;
@@ -104,7 +107,9 @@ TEST(Interpreter, ComponentSplitGivesFaceScopes) {
 }
 
 TEST(Interpreter, ScopeOperationsPushAndCenter) {
-    Model model = build("A --> extrude(2) [ s(1, 1, 1) center(xz) B ] t('0.5, 0, 1) C r(0, 90, 0) D\nB -->\nC -->\nD -->\n", 4, 2);
+    Model model = build(
+        "A --> extrude(2) [ s(1, 1, 1) center(xz) B ] t('0.5, 0, 1) C r(0, 90, 0) D\nB -->\nC -->\nD -->\n",
+        4, 2);
     ASSERT_EQ(rules(model), (std::vector<std::string>{"A", "B", "C", "D"}));
     expect_scope(model.nodes[1], {0, 0.5f, 0}, {0.5f, 0.5f, 0.5f});
     expect_scope(model.nodes[2], {2, 1, 1}, {2, 1, 1});  // the push restored the scope before t()
@@ -122,7 +127,9 @@ TEST(Interpreter, ParametersConditionsAndRecursion) {
 }
 
 TEST(Interpreter, PartsStickOutOfTheirScope) {
-    Model model = build("W --> extrude(1) Sill\nSill --> t(-0.1, 0, 0) s(scope.sx + 0.2, 0.1, scope.sz + 0.3) i(box)\n", 2, 1);
+    Model model =
+        build("W --> extrude(1) Sill\nSill --> t(-0.1, 0, 0) s(scope.sx + 0.2, 0.1, scope.sz + 0.3) i(box)\n",
+              2, 1);
     const Node& sill = model.nodes[1];
     expect_scope(sill, {0, 0.5f, 0}, {1, 0.5f, 0.5f});
     Bounds bounds = node_bounds(sill);
@@ -147,7 +154,10 @@ TEST(Interpreter, ProbabilitiesBelowAHundredMayChooseNothing) {
 }
 
 TEST(Interpreter, MaterialsColoursAndTextures) {
-    Model model = build("A --> extrude(1) material(brick) i(box) [ color(\"#ff0000\") i(box) ] texture(none) i(box) material(metal) i(quad)\n", 1, 1);
+    Model model = build(
+        "A --> extrude(1) material(brick) i(box) [ color(\"#ff0000\") i(box) ] texture(none) i(box) "
+        "material(metal) i(quad)\n",
+        1, 1);
     ASSERT_EQ(model.materials.size(), 4u);
     EXPECT_EQ(model.materials[0].name, "brick");
     EXPECT_EQ(model.materials[1].name, "brick_ff0000");
@@ -165,7 +175,9 @@ TEST(Interpreter, MaterialsColoursAndTextures) {
 }
 
 TEST(Interpreter, NeighbouringPiecesContinueTheTexture) {
-    Model model = build("A --> extrude(2) comp(f) { front : split(x) { 1 : Q | 1 : Q } }\nQ --> material(brick) i(quad)\n", 2, 2);
+    Model model = build(
+        "A --> extrude(2) comp(f) { front : split(x) { 1 : Q | 1 : Q } }\nQ --> material(brick) i(quad)\n", 2,
+        2);
     const Primitive& left = model.nodes[1].primitives[0];
     const Primitive& right = model.nodes[2].primitives[0];
     for (std::size_t i = 0; i < left.positions.size(); ++i)
@@ -177,7 +189,8 @@ TEST(Interpreter, NeighbouringPiecesContinueTheTexture) {
 
 TEST(Interpreter, InsertsMeshAssetsFittedToTheScope) {
     auto folder = test::scratch_folder("interpreter_asset");
-    test::write_text(folder / "wedge.obj", "v 0 0 0\nv 2 0 0\nv 0 5 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
+    test::write_text(folder / "wedge.obj",
+                     "v 0 0 0\nv 2 0 0\nv 0 5 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n");
     test::write_text(folder / "a.grammar", "A --> extrude(3) i(\"wedge.obj\")\n");
     BuildingOptions options;
     options.lot = Eigen::Vector2f(4, 2);
@@ -197,11 +210,15 @@ TEST(Interpreter, DefaultLotComesFromTheGrammar) {
 }
 
 TEST(Interpreter, ScopesBeyondTheWorldAreRefusedWhereTheyAreMade) {
-    EXPECT_EQ(build_error("Lot --> extrude(1e39)\n"),
-              "g.grammar:1:9: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
-    EXPECT_EQ(build_error("Lot --> extrude(2) t(0, 2e6, 0)\n"),
-              "g.grammar:1:20: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
-    EXPECT_EQ(build_error("Lot --> extrude(1)\n", 2e6f, 1).find("the lot's width and depth must be in (0, 1000000] m"), 11u);
+    EXPECT_EQ(
+        build_error("Lot --> extrude(1e39)\n"),
+        "g.grammar:1:9: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
+    EXPECT_EQ(
+        build_error("Lot --> extrude(2) t(0, 2e6, 0)\n"),
+        "g.grammar:1:20: the scope leaves the world: a coordinate or size beyond 1000000 m, or not a number");
+    EXPECT_EQ(build_error("Lot --> extrude(1)\n", 2e6f, 1)
+                  .find("the lot's width and depth must be in (0, 1000000] m"),
+              11u);
 }
 
 TEST(Interpreter, StartSymbol) {
@@ -210,17 +227,21 @@ TEST(Interpreter, StartSymbol) {
 }
 
 TEST(Interpreter, Errors) {
-    EXPECT_EQ(build_error("A --> B\nB --> A\n"), "g.grammar:1:7: rule 'B' nested deeper than 100 levels (recursion that never ends?)");
+    EXPECT_EQ(build_error("A --> B\nB --> A\n"),
+              "g.grammar:1:7: rule 'B' nested deeper than 100 levels (recursion that never ends?)");
     EXPECT_EQ(build_error("A --> split(x) { { 0.01 : B }* }\nB -->\n", 100, 1, {100, 1000}),
               "g.grammar:1:27: the derivation makes more than 1000 nodes (recursion that never ends?)");
     EXPECT_EQ(build_error("A --> split(x) { 3 : B | 3 : B }\nB -->\n", 5),
               "g.grammar:1:7: split(x) in rule 'A' needs 6 m but the scope is 5 m along x");
-    EXPECT_EQ(build_error("A --> extrude(1) i(\"nope.obj\")\n").substr(0, 46), "g.grammar:1:18: cannot load asset 'nope.obj': ");
-    EXPECT_EQ(build_error("A --> extrude(1) extrude(2)\n"),
-              "g.grammar:1:18: extrude() needs a flat scope; name the axis for a solid one, e.g. extrude(y, 3)");
+    EXPECT_EQ(build_error("A --> extrude(1) i(\"nope.obj\")\n").substr(0, 46),
+              "g.grammar:1:18: cannot load asset 'nope.obj': ");
+    EXPECT_EQ(
+        build_error("A --> extrude(1) extrude(2)\n"),
+        "g.grammar:1:18: extrude() needs a flat scope; name the axis for a solid one, e.g. extrude(y, 3)");
     EXPECT_EQ(build_error("A --> extrude(-1)\n"), "g.grammar:1:7: extrude() needs a height of at least 0");
     EXPECT_EQ(build_error("A --> s(-1, 1, 1)\n"), "g.grammar:1:7: s() cannot make a negative size");
-    EXPECT_EQ(build_error("A --> extrude(1) i(cylinder, 2)\n"), "g.grammar:1:18: a cylinder needs 3 to 256 segments");
+    EXPECT_EQ(build_error("A --> extrude(1) i(cylinder, 2)\n"),
+              "g.grammar:1:18: a cylinder needs 3 to 256 segments");
     EXPECT_THROW(build("A --> NIL\n", 1, 1, 0, "Z"), InputError);
     EXPECT_THROW(build("A --> NIL\n", 0, 1), InputError);
 }

@@ -1,7 +1,7 @@
 #include "data_gen/primitives.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace boxlod {
 
@@ -31,14 +31,16 @@ TEST(ScopeFaces, OutwardFramesCoveringTheScope) {
     Eigen::Vector3f size(4, 3, 2);
     auto faces = scope_faces(size);
     const char* names[] = {"front", "right", "back", "left", "top", "bottom"};
-    Eigen::Vector3f normals[] = {Eigen::Vector3f::UnitZ(), Eigen::Vector3f::UnitX(), -Eigen::Vector3f::UnitZ(),
-                                 -Eigen::Vector3f::UnitX(), Eigen::Vector3f::UnitY(), -Eigen::Vector3f::UnitY()};
+    Eigen::Vector3f normals[] = {Eigen::Vector3f::UnitZ(),  Eigen::Vector3f::UnitX(),
+                                 -Eigen::Vector3f::UnitZ(), -Eigen::Vector3f::UnitX(),
+                                 Eigen::Vector3f::UnitY(),  -Eigen::Vector3f::UnitY()};
     float area = 0;
     for (int i = 0; i < 6; ++i) {
         EXPECT_STREQ(faces[i].name, names[i]);
         EXPECT_EQ(faces[i].u.cross(faces[i].v), normals[i]) << names[i];
         area += faces[i].width * faces[i].height;
-        Eigen::Vector3f center = faces[i].origin + (faces[i].u * faces[i].width + faces[i].v * faces[i].height) / 2;
+        Eigen::Vector3f center =
+            faces[i].origin + (faces[i].u * faces[i].width + faces[i].v * faces[i].height) / 2;
         EXPECT_LT((center - (size / 2 + normals[i].cwiseProduct(size) / 2)).norm(), 1e-6f) << names[i];
     }
     EXPECT_FLOAT_EQ(area, 2 * (4 * 3 + 4 * 2 + 3 * 2));
@@ -49,7 +51,11 @@ TEST(BuiltinPrimitive, PolygonCountsAndWinding) {
     struct Case {
         const char* name;
         std::size_t polygons, vertices, triangles;
-    } cases[] = {{"box", 6, 24, 12}, {"quad", 1, 4, 2}, {"cylinder", 14, 72, 44}, {"gable", 5, 18, 8}, {"hip", 5, 18, 8}};
+    } cases[] = {{"box", 6, 24, 12},
+                 {"quad", 1, 4, 2},
+                 {"cylinder", 14, 72, 44},
+                 {"gable", 5, 18, 8},
+                 {"hip", 5, 18, 8}};
     for (const Case& c : cases) {
         Primitive primitive = builtin_primitive(c.name, size, 12);
         EXPECT_EQ(primitive.polygon_count, c.polygons) << c.name;
@@ -100,7 +106,8 @@ TEST(PlaceInWorld, MovesAndTurns) {
     scope.origin = Eigen::Vector3f(10, 0, 0);
     scope.axes << 0, 0, 1, 0, 1, 0, -1, 0, 0;  // x -> -z, z -> x
     place_in_world(primitive, scope);
-    for (const Eigen::Vector3f& n : primitive.normals) EXPECT_LT((n - Eigen::Vector3f::UnitX()).norm(), 1e-6f);
+    for (const Eigen::Vector3f& n : primitive.normals)
+        EXPECT_LT((n - Eigen::Vector3f::UnitX()).norm(), 1e-6f);
     EXPECT_LT((primitive.positions[1] - Eigen::Vector3f(10, 0, -2)).norm(), 1e-6f);
 }
 

@@ -13,7 +13,9 @@ namespace boxlod {
 
 namespace {
 
-std::string statistic(const KeyValues& statistics, const std::string& key) { return value_of(statistics, key); }
+std::string statistic(const KeyValues& statistics, const std::string& key) {
+    return value_of(statistics, key);
+}
 
 struct Pinned {
     const char* sample;
@@ -38,7 +40,8 @@ TEST(Samples, UnknownSampleListsTheKnownOnes) {
         sample_grammar("castle");
         FAIL();
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), "unknown sample grammar 'castle' (samples: classical, house, manual, office)");
+        EXPECT_EQ(std::string(error.what()),
+                  "unknown sample grammar 'castle' (samples: classical, house, manual, office)");
     }
 }
 
@@ -68,7 +71,8 @@ TEST(Samples, StatisticsArePinned) {
 TEST(Samples, SeedChangesTheBuilding) {
     BuildingOptions options;
     options.seed = 3;
-    Model zero = generate_building(sample_grammar("office"), {}), three = generate_building(sample_grammar("office"), options);
+    Model zero = generate_building(sample_grammar("office"), {}),
+          three = generate_building(sample_grammar("office"), options);
     EXPECT_NE(zero.nodes.size(), three.nodes.size());  // the number of floors is drawn
 }
 
@@ -111,7 +115,8 @@ TEST(SamplesGolden, EachSampleRendered) {
         const Bounds& bounds = drawable->drawable.bounds;
         float radius = bounds.size().norm() / 2;
         RenderSettings settings;
-        settings.camera = camera_at_position({1, 1, 1}, bounds.center(), framing_distance(radius, 45), 45, radius);
+        settings.camera =
+            camera_at_position({1, 1, 1}, bounds.center(), framing_distance(radius, 45), 45, radius);
         settings.light = light_for_camera(settings.camera);
         Frame frame = make_frame(160, 120, {1, 1, 1});
         render(drawable->drawable.batches, settings, frame);

@@ -17,7 +17,8 @@ std::vector<double> sizes(const SplitLayout& layout) {
 }  // namespace
 
 TEST(LayoutSplit, AbsoluteRelativeAndFloating) {
-    SplitLayout layout = layout_split({{K::absolute, 2}, {K::relative, 0.25}, {K::floating, 1}, {K::floating, 3}}, 10, 100);
+    SplitLayout layout =
+        layout_split({{K::absolute, 2}, {K::relative, 0.25}, {K::floating, 1}, {K::floating, 3}}, 10, 100);
     ASSERT_TRUE(layout.fits);
     EXPECT_EQ(sizes(layout), (std::vector<double>{2, 2.5, 1.375, 4.125}));
     EXPECT_DOUBLE_EQ(layout.pieces[2].offset, 4.5);
@@ -44,7 +45,8 @@ TEST(LayoutSplit, RepeatWithFloatingRoundsAndStretches) {
 
 TEST(LayoutSplit, RepeatWithAbsoluteFloors) {
     // 1 m border each side, then as many 2.5 m pieces as fit into 8 m: 3, the rest empty.
-    SplitLayout layout = layout_split({{K::absolute, 1}, {K::absolute, 2.5, true}, {K::absolute, 1}}, 10, 100);
+    SplitLayout layout =
+        layout_split({{K::absolute, 1}, {K::absolute, 2.5, true}, {K::absolute, 1}}, 10, 100);
     EXPECT_EQ(sizes(layout), (std::vector<double>{1, 2.5, 2.5, 2.5, 1}));
     EXPECT_EQ(layout.pieces[4].slot, 2u);
 }
@@ -59,7 +61,8 @@ TEST(LayoutSplit, RepeatGroupOfSeveralSlots) {
 
 TEST(LayoutSplit, RepeatDropsToFitTheFixedParts) {
     // round(7 / 4.5) = 2, but the group's absolute 4 m cannot repeat twice beside 3 m in 10 m.
-    SplitLayout layout = layout_split({{K::absolute, 3}, {K::absolute, 4, true}, {K::floating, 0.5, true}}, 10, 100);
+    SplitLayout layout =
+        layout_split({{K::absolute, 3}, {K::absolute, 4, true}, {K::floating, 0.5, true}}, 10, 100);
     ASSERT_TRUE(layout.fits);
     ASSERT_EQ(layout.pieces.size(), 3u);
     EXPECT_DOUBLE_EQ(layout.pieces[2].size, 3);

@@ -7,6 +7,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size == 0) return 0;
     static const char* const extensions[] = {".ply", ".off", ".ifc"};
     std::string extension = extensions[data[0] % 3];
-    return boxlod::fuzz::expect_only_input_errors(
-        [&] { boxlod::check_assimp_input(boxlod::fuzz::text(data + 1, size - 1), extension, "fuzz" + extension); });
+    return boxlod::fuzz::expect_only_input_errors([&] {
+        boxlod::check_assimp_input(boxlod::fuzz::text(data + 1, size - 1), extension, "fuzz" + extension);
+    });
 }

@@ -8,6 +8,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool sequence = bytes.find("\n{") != std::string::npos;
     // Texture files resolve inside a folder that does not exist: each is missing.
     return boxlod::fuzz::expect_only_input_errors([&] {
-        boxlod::import_cityjson_bytes(bytes, sequence ? "/nonexistent/fuzz.city.jsonl" : "/nonexistent/fuzz.city.json");
+        boxlod::import_cityjson_bytes(
+            bytes, sequence ? "/nonexistent/fuzz.city.jsonl" : "/nonexistent/fuzz.city.json");
     });
 }

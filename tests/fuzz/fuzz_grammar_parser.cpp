@@ -6,7 +6,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     return boxlod::fuzz::expect_only_input_errors([&] {
-        boxlod::Grammar grammar = boxlod::parse_grammar(boxlod::fuzz::text(data, size), "fuzz.grammar", "/nonexistent");
+        boxlod::Grammar grammar =
+            boxlod::parse_grammar(boxlod::fuzz::text(data, size), "fuzz.grammar", "/nonexistent");
         boxlod::BuildingOptions options;
         options.limits.max_depth = 20;
         options.limits.max_nodes = 2000;

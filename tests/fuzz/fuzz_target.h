@@ -12,7 +12,9 @@
 
 namespace boxlod::fuzz {
 
-inline std::string text(const std::uint8_t* data, std::size_t size) { return {reinterpret_cast<const char*>(data), size}; }
+inline std::string text(const std::uint8_t* data, std::size_t size) {
+    return {reinterpret_cast<const char*>(data), size};
+}
 
 // Runs read(); swallows only InputError.
 template <typename Read>

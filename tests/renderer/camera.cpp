@@ -2,8 +2,8 @@
 
 #include "renderer/renderer.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <set>
@@ -103,13 +103,17 @@ TEST(Camera, ASphereOutsideTheViewDrawsNothing) {
     for (const Camera& c : {camera, orthographic})
         for (int i = 0; i < 200; ++i) {
             // Centres on a spiral sweeping across the edges of the view.
-            const float angle = float(i) * 0.7f, reach = 2 + float(i % 40) * 0.35f, depth = -1 - float(i % 17) * 3.5f;
-            const Eigen::Vector3f center(reach * std::cos(angle) * -depth * 0.3f, reach * std::sin(angle) * -depth * 0.2f, depth);
+            const float angle = float(i) * 0.7f, reach = 2 + float(i % 40) * 0.35f,
+                        depth = -1 - float(i % 17) * 3.5f;
+            const Eigen::Vector3f center(reach * std::cos(angle) * -depth * 0.3f,
+                                         reach * std::sin(angle) * -depth * 0.2f, depth);
             const float radius = 0.3f + float(i % 5) * 0.4f, half = radius / std::sqrt(3.0f);
             Mesh cube;
             for (int k = 0; k < 8; ++k)
-                cube.positions.push_back(center + half * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
-            cube.indices = {0, 1, 3, 0, 3, 2, 4, 7, 5, 4, 6, 7, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+                cube.positions.push_back(
+                    center + half * Eigen::Vector3f(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+            cube.indices = {0, 1, 3, 0, 3, 2, 4, 7, 5, 4, 6, 7, 0, 4, 5, 0, 5, 1,
+                            2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
             RenderSettings settings;
             settings.camera = c;
             settings.mode = RenderMode::untextured;

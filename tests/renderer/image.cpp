@@ -53,7 +53,8 @@ TEST(Image, APngChunkThatFailsItsChecksumIsRefused) {
         decode_image(damaged, "damaged.png");
         FAIL() << "no error";
     } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("damaged.png: byte 33: PNG chunk IDAT fails its checksum"), std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("damaged.png: byte 33: PNG chunk IDAT fails its checksum"),
+                  std::string::npos)
             << error.what();
     }
     std::vector<std::uint8_t> cut(png.begin(), png.end() - 12);  // no IEND
@@ -62,8 +63,9 @@ TEST(Image, APngChunkThatFailsItsChecksumIsRefused) {
 
 TEST(Image, ASizeBeyondTheLimitIsRefusedBeforeDecoding) {
     // A valid PNG header claiming 100000 x 1 pixels, with no pixel data.
-    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
-                                     0, 1, 0x86, 0xa0, 0, 0, 0, 1, 8, 2, 0, 0, 0, 0, 0, 0, 0};
+    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0,    0, 0,
+                                     13,   'I', 'H', 'D', 'R',  0,    1,    0x86, 0xa0, 0, 0,
+                                     0,    1,   8,   2,   0,    0,    0,    0,    0,    0, 0};
     try {
         decode_image(png, "wide.png");
         FAIL() << "no error";
@@ -78,7 +80,7 @@ TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {
     EXPECT_EQ(linear_to_srgb(-1.0f), 0);
     EXPECT_EQ(linear_to_srgb(2.0f), 255);
     EXPECT_NEAR(srgb_to_linear(128), 0.21586, 1e-5);  // IEC 61966-2-1
-    EXPECT_EQ(linear_to_srgb(0.5f), 188);              // 0.5 linear = 187.5 encoded, rounds to 188
+    EXPECT_EQ(linear_to_srgb(0.5f), 188);             // 0.5 linear = 187.5 encoded, rounds to 188
 }
 
 TEST(Image, SrgbEncodeRoundsToNearestForEveryFloatItTries) {
@@ -87,7 +89,8 @@ TEST(Image, SrgbEncodeRoundsToNearestForEveryFloatItTries) {
     std::vector<float> midpoints;
     auto encoded = [](double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055; };
     for (int i = 0; i < 255; ++i) {
-        double mid = (encoded(srgb_to_linear(std::uint8_t(i))) + encoded(srgb_to_linear(std::uint8_t(i + 1)))) / 2;
+        double mid =
+            (encoded(srgb_to_linear(std::uint8_t(i))) + encoded(srgb_to_linear(std::uint8_t(i + 1)))) / 2;
         midpoints.push_back(float(mid <= 0.04045 ? mid / 12.92 : std::pow((mid + 0.055) / 1.055, 2.4)));
     }
     auto reference = [&](float v) {
@@ -95,12 +98,14 @@ TEST(Image, SrgbEncodeRoundsToNearestForEveryFloatItTries) {
         return int(std::upper_bound(midpoints.begin(), midpoints.end(), v) - midpoints.begin());
     };
     int mismatches = 0;
-    for (std::uint32_t bits = 1; bits < 0x3f800000u + 64; bits += 61) {  // every 61st float up to just above 1
+    for (std::uint32_t bits = 1; bits < 0x3f800000u + 64;
+         bits += 61) {  // every 61st float up to just above 1
         float v = std::bit_cast<float>(bits);
         mismatches += linear_to_srgb(v) != reference(v);
     }
     for (float m : midpoints)  // each midpoint and its neighbours, where the code changes
-        for (float v : {std::nextafter(m, 0.0f), m, std::nextafter(m, 2.0f)}) mismatches += linear_to_srgb(v) != reference(v);
+        for (float v : {std::nextafter(m, 0.0f), m, std::nextafter(m, 2.0f)})
+            mismatches += linear_to_srgb(v) != reference(v);
     EXPECT_EQ(mismatches, 0);
     EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::quiet_NaN()), 0);
     EXPECT_EQ(linear_to_srgb(std::numeric_limits<float>::infinity()), 255);

@@ -2,9 +2,9 @@
 
 #include "renderer/camera.h"
 
+#include <gtest/gtest.h>
 #include <Eigen/Geometry>
 #include "base/random.h"
-#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
@@ -40,7 +40,8 @@ std::vector<int> coverage_counts(const std::vector<ScreenTriangle>& triangles) {
         ++counts[y * size + x];
         return true;
     };
-    for (std::size_t i = 0; i < triangles.size(); ++i) rasterize_triangle(triangles[i], std::uint32_t(i), tile, &count);
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+        rasterize_triangle(triangles[i], std::uint32_t(i), tile, &count);
     return counts;
 }
 
@@ -60,7 +61,8 @@ TEST(Rasterizer, FanOverRectangleTouchesEveryPixelExactlyOnce) {
     ring.emplace_back(x1, 20.5);
     ring.emplace_back(40.25, 40.25);
     std::sort(ring.begin(), ring.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-        return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
+        return std::atan2(a.y() - centre.y(), a.x() - centre.x()) <
+               std::atan2(b.y() - centre.y(), b.x() - centre.x());
     });
     std::vector<ScreenTriangle> fan;
     for (std::size_t i = 0; i < ring.size(); ++i)
@@ -78,15 +80,18 @@ TEST(Rasterizer, FanOverRectangleTouchesEveryPixelExactlyOnce) {
 
 TEST(Rasterizer, TopLeftRuleOwnsTopAndLeftEdgesOnly) {
     // A square with its edges exactly on pixel centres 2.5 .. 6.5.
-    auto a = Eigen::Vector2d(2.5, 2.5), b = Eigen::Vector2d(6.5, 2.5), c = Eigen::Vector2d(6.5, 6.5), d = Eigen::Vector2d(2.5, 6.5);
+    auto a = Eigen::Vector2d(2.5, 2.5), b = Eigen::Vector2d(6.5, 2.5), c = Eigen::Vector2d(6.5, 6.5),
+         d = Eigen::Vector2d(2.5, 6.5);
     for (bool clockwise : {false, true}) {
-        std::vector<ScreenTriangle> square = clockwise
-            ? std::vector<ScreenTriangle>{screen_triangle(a, b, c, 0.5f), screen_triangle(a, c, d, 0.4f)}
-            : std::vector<ScreenTriangle>{screen_triangle(a, c, b, 0.5f), screen_triangle(a, d, c, 0.4f)};
+        std::vector<ScreenTriangle> square =
+            clockwise
+                ? std::vector<ScreenTriangle>{screen_triangle(a, b, c, 0.5f), screen_triangle(a, c, d, 0.4f)}
+                : std::vector<ScreenTriangle>{screen_triangle(a, c, b, 0.5f), screen_triangle(a, d, c, 0.4f)};
         std::vector<int> counts = coverage_counts(square);
         for (int y = 0; y < 10; ++y)
             for (int x = 0; x < 10; ++x)
-                EXPECT_EQ(counts[y * size + x], (x >= 2 && x < 6 && y >= 2 && y < 6) ? 1 : 0) << x << "," << y;
+                EXPECT_EQ(counts[y * size + x], (x >= 2 && x < 6 && y >= 2 && y < 6) ? 1 : 0)
+                    << x << "," << y;
     }
 }
 
@@ -95,8 +100,9 @@ TEST(Rasterizer, GridOfTrianglesOnPixelCentresLeavesNoGapsOrOverlaps) {
     float z = 1;
     for (int j = 0; j < 6; ++j)
         for (int i = 0; i < 6; ++i) {
-            Eigen::Vector2d p(4.5 + i * 6.5, 3.5 + j * 7), q = p + Eigen::Vector2d(6.5, 0), r = p + Eigen::Vector2d(6.5, 7),
-                            s = p + Eigen::Vector2d(0, 7);
+            Eigen::Vector2d p(4.5 + i * 6.5, 3.5 + j * 7), q = p + Eigen::Vector2d(6.5, 0),
+                                                           r = p + Eigen::Vector2d(6.5, 7),
+                                                           s = p + Eigen::Vector2d(0, 7);
             grid.push_back(screen_triangle(p, q, r, z -= 0.001f));
             grid.push_back(screen_triangle(p, r, s, z -= 0.001f));
         }
@@ -141,7 +147,8 @@ TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
             t.z[i] = float(next(1 << 20)) / 1048573.0f;  // every mantissa bit used
             t.inv_w[i] = 1;
         }
-        const std::int64_t area = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
+        const std::int64_t area = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) -
+                                  std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
         if (area == 0) continue;
         std::vector<int> counts = coverage_counts({t});
         std::vector<float> depth(size * size, std::numeric_limits<float>::infinity());
@@ -154,18 +161,24 @@ TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
             for (int tile_x = 0; tile_x < size; tile_x += tile_size) {
                 std::vector<float> tile_depth(tile_size * tile_size, std::numeric_limits<float>::infinity());
                 std::vector<std::uint32_t> tile_ids(tile_size * tile_size, no_triangle);
-                rasterize_triangle(t, 0, {tile_x, tile_y, tile_x + tile_size, tile_y + tile_size, tile_size, tile_depth.data(), tile_ids.data()},
+                rasterize_triangle(t, 0,
+                                   {tile_x, tile_y, tile_x + tile_size, tile_y + tile_size, tile_size,
+                                    tile_depth.data(), tile_ids.data()},
                                    nullptr);
                 for (int y = 0; y < tile_size; ++y)
                     for (int x = 0; x < tile_size; ++x) {
-                        const std::size_t in_tile = std::size_t(y * tile_size + x), in_frame = std::size_t((tile_y + y) * size + tile_x + x);
-                        ASSERT_EQ(tile_ids[in_tile], ids[in_frame]) << "triangle " << n << ", pixel " << tile_x + x << "," << tile_y + y;
-                        ASSERT_EQ(std::bit_cast<std::uint32_t>(tile_depth[in_tile]), std::bit_cast<std::uint32_t>(depth[in_frame]))
+                        const std::size_t in_tile = std::size_t(y * tile_size + x),
+                                          in_frame = std::size_t((tile_y + y) * size + tile_x + x);
+                        ASSERT_EQ(tile_ids[in_tile], ids[in_frame])
+                            << "triangle " << n << ", pixel " << tile_x + x << "," << tile_y + y;
+                        ASSERT_EQ(std::bit_cast<std::uint32_t>(tile_depth[in_tile]),
+                                  std::bit_cast<std::uint32_t>(depth[in_frame]))
                             << "triangle " << n << ", pixel " << tile_x + x << "," << tile_y + y;
                     }
             }
         const int sign = area > 0 ? 1 : -1;
-        const int order[3] = {0, sign > 0 ? 1 : 2, sign > 0 ? 2 : 1};  // the walk's corners, oriented to positive area
+        const int order[3] = {0, sign > 0 ? 1 : 2,
+                              sign > 0 ? 2 : 1};  // the walk's corners, oriented to positive area
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
                 const std::int64_t px = x * 256 + 128, py = y * 256 + 128;
@@ -174,18 +187,21 @@ TEST(Rasterizer, EveryWalkCoversThePixelsAndDepthsOfTheEdgeFunctions) {
                 for (int k = 0; k < 3; ++k) {
                     const int a = (k + 1) % 3, b = (k + 2) % 3;
                     // Oriented to positive area; inside is E >= 0 on top and left edges, E > 0 elsewhere.
-                    const std::int64_t dx = sign * std::int64_t(t.x[b] - t.x[a]), dy = sign * std::int64_t(t.y[b] - t.y[a]);
+                    const std::int64_t dx = sign * std::int64_t(t.x[b] - t.x[a]),
+                                       dy = sign * std::int64_t(t.y[b] - t.y[a]);
                     const std::int64_t e = dx * (py - t.y[a]) - dy * (px - t.x[a]);
                     const bool top_left = dy < 0 || (dy == 0 && dx > 0);
                     inside = inside && (top_left ? e >= 0 : e > 0);
                     weight[k] = e;
                 }
-                ASSERT_EQ(counts[std::size_t(y * size + x)], inside ? 1 : 0) << "triangle " << n << ", pixel " << x << "," << y;
+                ASSERT_EQ(counts[std::size_t(y * size + x)], inside ? 1 : 0)
+                    << "triangle " << n << ", pixel " << x << "," << y;
                 if (!inside) continue;
                 double z = 0;
                 for (int k : order) z += double(weight[k]) * double(t.z[k]);
                 const float expected = float(z * (1.0 / double(area * sign)));
-                ASSERT_EQ(std::bit_cast<std::uint32_t>(depth[std::size_t(y * size + x)]), std::bit_cast<std::uint32_t>(expected))
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(depth[std::size_t(y * size + x)]),
+                          std::bit_cast<std::uint32_t>(expected))
                     << "triangle " << n << ", pixel " << x << "," << y;
             }
     }
@@ -256,7 +272,8 @@ TEST(Rasterizer, HugeTriangleIsClippedToTheGuardBandAndCoversTheScreenOnce) {
     std::vector<ClippedWeights> weights;
     setup_triangle(clip, 0, 0, Culling::none, viewport(size, size), out, weights);
     ASSERT_GT(out.size(), 1u);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i].z[0] = out[i].z[1] = out[i].z[2] = 1.0f - float(i) * 0.01f;
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i].z[0] = out[i].z[1] = out[i].z[2] = 1.0f - float(i) * 0.01f;
     std::vector<int> counts = coverage_counts(out);
     for (int c : counts) ASSERT_EQ(c, 1);
 }
@@ -280,8 +297,8 @@ TEST(Rasterizer, SettingUpAMeshRangeIsSettingUpEachTriangleInOrder) {
     // Triangles 1..4 of a mesh: in view, back-facing, crossing the far plane,
     // without area; triangle 0 lies outside the range.
     // Clip space is the positions moved back and squeezed along z (w stays 1).
-    const std::vector<Eigen::Vector3f> positions = {{-0.5f, -0.5f, 1}, {0.5f, -0.5f, 1}, {0, 0.5f, 1},
-                                                    {0.2f, 0.1f, 5}, {0, 0, 2}};
+    const std::vector<Eigen::Vector3f> positions = {
+        {-0.5f, -0.5f, 1}, {0.5f, -0.5f, 1}, {0, 0.5f, 1}, {0.2f, 0.1f, 5}, {0, 0, 2}};
     Eigen::Matrix4f to_clip = Eigen::Matrix4f::Identity();
     to_clip(2, 2) = 0.5f, to_clip(2, 3) = -0.5f;
     const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 1, 2, 0, 2, 1, 0, 1, 3, 0, 0, 4};
@@ -298,7 +315,8 @@ TEST(Rasterizer, SettingUpAMeshRangeIsSettingUpEachTriangleInOrder) {
     const ProjectedMesh mesh{indices.data(), projected.data(), positions.data(), &to_clip};
     setup_triangles(mesh, 1, 5, 3, Culling::back, view, range, range_weights);
     for (std::uint32_t t = 1; t < 5; ++t) {
-        const Eigen::Vector4f corners[3] = {clip[indices[t * 3]], clip[indices[t * 3 + 1]], clip[indices[t * 3 + 2]]};
+        const Eigen::Vector4f corners[3] = {clip[indices[t * 3]], clip[indices[t * 3 + 1]],
+                                            clip[indices[t * 3 + 2]]};
         setup_triangle(corners, 3, t, Culling::back, view, each, each_weights);
     }
     ASSERT_EQ(range.size(), each.size());

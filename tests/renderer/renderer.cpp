@@ -7,8 +7,8 @@
 #include "renderer/overlays.h"
 #include "renderer/shading.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cstdlib>
 #include <cstring>
@@ -22,7 +22,8 @@ namespace {
 
 void expect_golden(const Image8& image, const std::string& name) { test::expect_golden(image, name); }
 
-Frame render_scene(const test::RenderScene& scene, const RenderSettings& settings, int width = 96, int height = 72) {
+Frame render_scene(const test::RenderScene& scene, const RenderSettings& settings, int width = 96,
+                   int height = 72) {
     Frame frame = make_frame(width, height, {1, 1, 1});
     render(scene.batches, settings, frame);
     return frame;
@@ -32,10 +33,12 @@ Frame render_scene(const test::RenderScene& scene, const RenderSettings& setting
 
 TEST(RendererGolden, EachRenderMode) {
     auto scene = test::make_render_scene();
-    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
+    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom,
+                            RenderMode::albedo}) {
         RenderSettings settings = scene->settings;
         settings.mode = mode;
-        expect_golden(frame_to_srgb8(render_scene(*scene, settings)), std::string("renderer_") + render_mode_name(mode));
+        expect_golden(frame_to_srgb8(render_scene(*scene, settings)),
+                      std::string("renderer_") + render_mode_name(mode));
     }
 }
 
@@ -63,13 +66,15 @@ TEST(RendererGolden, WireframeAxesAndSplitView) {
 TEST(Renderer, ModesDifferFromEachOther) {
     auto scene = test::make_render_scene();
     std::vector<std::vector<std::uint8_t>> images;
-    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
+    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom,
+                            RenderMode::albedo}) {
         RenderSettings settings = scene->settings;
         settings.mode = mode;
         images.push_back(frame_to_srgb8(render_scene(*scene, settings)).pixels);
     }
     for (std::size_t i = 0; i < images.size(); ++i)
-        for (std::size_t j = i + 1; j < images.size(); ++j) EXPECT_NE(images[i], images[j]) << i << " vs " << j;
+        for (std::size_t j = i + 1; j < images.size(); ++j)
+            EXPECT_NE(images[i], images[j]) << i << " vs " << j;
 }
 
 // maps_drawn says which maps each mode's picture reads (what a mode's cost
@@ -81,7 +86,8 @@ TEST(Renderer, EachModesPictureReadsTheMapsItsCostCounts) {
         settings.mode = mode.value;
         const std::vector<std::uint8_t> all = frame_to_srgb8(render_scene(*scene, settings)).pixels;
         const MapsDrawn drawn = maps_drawn(mode.value);
-        for (auto [map, read] : {std::pair{&Surface::color, drawn.color}, {&Surface::normal, drawn.normal},
+        for (auto [map, read] : {std::pair{&Surface::color, drawn.color},
+                                 {&Surface::normal, drawn.normal},
                                  {&Surface::height, drawn.height}}) {
             std::vector<Batch> without = scene->batches;
             without[0].surface.*map = nullptr;  // the floor's
@@ -131,7 +137,8 @@ TEST(Renderer, ATranslatedBatchIsDrawnAndLitWhereItIsPlaced) {
     settings.light.position -= t;  // the light left behind: the lighting must change
     EXPECT_GT(pixels_differing(render_scene(*scene, settings)), int(in_place.color.size() / 4));
     for (Batch& batch : scene->batches) batch.translation = Eigen::Vector3f::Zero();
-    EXPECT_GT(pixels_differing(render_scene(*scene, settings)), int(in_place.color.size() / 4));  // not drawn in view
+    EXPECT_GT(pixels_differing(render_scene(*scene, settings)),
+              int(in_place.color.size() / 4));  // not drawn in view
 }
 
 // A city draws tens of thousands of small batches: they share chunks of
@@ -158,7 +165,8 @@ TEST(Renderer, TensOfThousandsOfSmallBatchesAreAllDrawn) {
     render(batches, settings, frame);
     int drawn = 0;
     for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) drawn += frame.color[std::size_t((4 * y + 2) * frame.width + 4 * x + 2)].w() > 0;
+        for (int x = 0; x < side; ++x)
+            drawn += frame.color[std::size_t((4 * y + 2) * frame.width + 4 * x + 2)].w() > 0;
     EXPECT_EQ(drawn, side * side);
 }
 
@@ -237,7 +245,8 @@ TEST(Renderer, CoverageAndDepthMatchTheGeometry) {
 
 namespace {
 
-// A quad filling the orthographic window of `alpha_scene_settings`, at height z (nearer the camera for larger z).
+// A quad filling the orthographic window of `alpha_scene_settings`, at height z (nearer the camera for larger
+// z).
 Mesh window_quad(float z) {
     Mesh quad;
     quad.positions = {{-2, -2, z}, {2, -2, z}, {2, 2, z}, {-2, 2, z}};
@@ -279,8 +288,9 @@ Eigen::Vector4f centre_pixel(const std::vector<Batch>& batches, int threads = 0)
 
 TEST(RendererAlpha, BlendIsSourceOverTheOpaqueSurfaceBehind) {
     Mesh wall = window_quad(0), glass = window_quad(1);
-    std::vector<Batch> batches{{&glass, flat_surface({0, 0, 1, 0.25f}, AlphaMode::blend)},  // submitted first, drawn last
-                               {&wall, flat_surface({1, 0, 0, 1}, AlphaMode::opaque)}};
+    std::vector<Batch> batches{
+        {&glass, flat_surface({0, 0, 1, 0.25f}, AlphaMode::blend)},  // submitted first, drawn last
+        {&wall, flat_surface({1, 0, 0, 1}, AlphaMode::opaque)}};
     EXPECT_EQ(centre_pixel(batches), Eigen::Vector4f(0.75f, 0, 0.25f, 1));
     // Over the green background alone: alpha is the coverage.
     std::vector<Batch> glass_only{batches[0]};
@@ -293,12 +303,14 @@ TEST(RendererAlpha, BlendIsSourceOverTheOpaqueSurfaceBehind) {
 
 TEST(RendererAlpha, BlendedTrianglesCompositeBackToFrontWhateverTheirOrder) {
     Mesh far = window_quad(0), near = window_quad(1);
-    Batch red{&far, flat_surface({1, 0, 0, 0.5f}, AlphaMode::blend)}, blue{&near, flat_surface({0, 0, 1, 0.5f}, AlphaMode::blend)};
+    Batch red{&far, flat_surface({1, 0, 0, 0.5f}, AlphaMode::blend)},
+        blue{&near, flat_surface({0, 0, 1, 0.5f}, AlphaMode::blend)};
     // Blue over (red over green): 0.5 blue + 0.25 red + 0.25 green; coverage 0.75.
     Eigen::Vector4f expected(0.25f, 0.25f, 0.5f, 0.75f);
     EXPECT_EQ(centre_pixel({red, blue}), expected);
     EXPECT_EQ(centre_pixel({blue, red}), expected);
-    for (int threads : {1, 2, 3}) EXPECT_EQ(centre_pixel({blue, red}, threads), expected) << threads << " threads";
+    for (int threads : {1, 2, 3})
+        EXPECT_EQ(centre_pixel({blue, red}, threads), expected) << threads << " threads";
 }
 
 TEST(RendererAlpha, MaskDropsFragmentsBelowTheCutoffAndOpaqueIgnoresAlpha) {
@@ -356,12 +368,14 @@ public:
 // triangle's uv gradient in world space, exactly where the height map states
 // its depth (a metric parallax offset maps through it), and none elsewhere.
 TEST(Renderer, FragmentsCarryTheUvGradientWhereTheHeightMapStatesItsDepth) {
-    const Eigen::Matrix3f tilt = Eigen::AngleAxisf(0.5f, Eigen::Vector3f(1, 2, 0).normalized()).toRotationMatrix();
+    const Eigen::Matrix3f tilt =
+        Eigen::AngleAxisf(0.5f, Eigen::Vector3f(1, 2, 0).normalized()).toRotationMatrix();
     // uv = M (x, y) in the quad's plane before the tilt: u = 0.25 x + 0.1 y, v = -0.5 y.
     Eigen::Matrix<float, 2, 3> m;
     m << 0.25f, 0.1f, 0, 0, -0.5f, 0;
     Mesh quad;
-    for (const Eigen::Vector3f& corner : {Eigen::Vector3f(-1, -1, 0), Eigen::Vector3f(1, -1, 0), Eigen::Vector3f(1, 1, 0), Eigen::Vector3f(-1, 1, 0)}) {
+    for (const Eigen::Vector3f& corner : {Eigen::Vector3f(-1, -1, 0), Eigen::Vector3f(1, -1, 0),
+                                          Eigen::Vector3f(1, 1, 0), Eigen::Vector3f(-1, 1, 0)}) {
         quad.positions.push_back(tilt * corner);
         quad.uvs.push_back(m * corner);
     }
@@ -382,7 +396,9 @@ TEST(Renderer, FragmentsCarryTheUvGradientWhereTheHeightMapStatesItsDepth) {
         for (std::size_t i = 0; i < frame.color.size(); ++i) {
             if (frame.color[i].w() == 0) continue;
             ++covered;
-            EXPECT_NEAR((frame.color[i].head<3>() - (depth > 0 ? du : Eigen::Vector3f::Zero())).norm(), 0, 1e-5) << i;
+            EXPECT_NEAR((frame.color[i].head<3>() - (depth > 0 ? du : Eigen::Vector3f::Zero())).norm(), 0,
+                        1e-5)
+                << i;
             EXPECT_NEAR((frame.normal[i] - (depth > 0 ? dv : Eigen::Vector3f::Zero())).norm(), 0, 1e-5) << i;
         }
         EXPECT_GT(covered, 200);
@@ -396,7 +412,8 @@ namespace {
 // shade_lanes (each lane through shade()).
 class OnePixelAtATime : public Shader {
 public:
-    OnePixelAtATime(const Shader& inner, bool scalar_fragments) : inner_(inner), scalar_fragments_(scalar_fragments) {}
+    OnePixelAtATime(const Shader& inner, bool scalar_fragments)
+        : inner_(inner), scalar_fragments_(scalar_fragments) {}
     bool reads_uv() const override { return inner_.reads_uv(); }
     bool takes_lanes() const override { return !scalar_fragments_; }
     ShadedPixel shade(const Surface& s, Fragment& f) const override { return inner_.shade(s, f); }
@@ -417,13 +434,20 @@ Mesh wavy_grid(int cells, bool with_normals, bool with_uvs = false, bool with_ta
             float x = float(i) / float(cells) * 3 - 1.5f, z = float(j) / float(cells) * 3 - 1.5f;
             mesh.positions.emplace_back(x, 0.1f + 0.05f * std::sin(x * 9) * std::cos(z * 7), z);
             if (with_normals)
-                mesh.normals.push_back((i + j) % 7 == 0 ? Eigen::Vector3f::Zero() : Eigen::Vector3f(std::sin(x * 5), 2, std::cos(z * 3)).normalized());
-            if (with_uvs) mesh.uvs.emplace_back(i % 5 == 0 ? 0.0f : x * 1.7f + z * 0.3f, (i + j) % 5 == 0 ? 0.0f : z * 2.1f);
-            if (with_tangents) mesh.tangents.emplace_back(std::cos(z * 4), 0.3f * x, std::sin(z * 4), i % 3 == 0 ? -1.0f : 1.0f);
+                mesh.normals.push_back(
+                    (i + j) % 7 == 0 ? Eigen::Vector3f::Zero()
+                                     : Eigen::Vector3f(std::sin(x * 5), 2, std::cos(z * 3)).normalized());
+            if (with_uvs)
+                mesh.uvs.emplace_back(i % 5 == 0 ? 0.0f : x * 1.7f + z * 0.3f,
+                                      (i + j) % 5 == 0 ? 0.0f : z * 2.1f);
+            if (with_tangents)
+                mesh.tangents.emplace_back(std::cos(z * 4), 0.3f * x, std::sin(z * 4),
+                                           i % 3 == 0 ? -1.0f : 1.0f);
         }
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
-            std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells) + 1, d = c + 1;
+            std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells) + 1,
+                          d = c + 1;
             mesh.indices.insert(mesh.indices.end(), {a, c, b, b, c, d});
         }
     return mesh;
@@ -447,7 +471,8 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
     auto scene = test::make_render_scene();
     Mesh with_normals = wavy_grid(23, true), without_normals = wavy_grid(17, false);
     Mesh with_tangents = wavy_grid(19, true, true, true), with_uvs = wavy_grid(13, false, true);
-    for (Eigen::Vector3f& p : with_normals.positions) p.y() += 0.05f;  // a little apart, interleaved with the floor
+    for (Eigen::Vector3f& p : with_normals.positions)
+        p.y() += 0.05f;  // a little apart, interleaved with the floor
     for (Eigen::Vector3f& p : with_tangents.positions) p.y() += 0.02f;
     for (Eigen::Vector3f& p : with_uvs.positions) p.y() -= 0.03f;
     std::vector<Batch> batches = scene->batches;
@@ -463,24 +488,27 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
     batches.back().translation = {0.05f, 0, -0.04f};  // drawn elsewhere: lit where it is drawn
 
     RenderSettings settings = scene->settings;
-    std::vector<Camera> cameras{settings.camera, camera_at_position({1, 0.4f, 0.2f}, {0, 0.2f, 0}, 1.2f, 70, 3)};
-    cameras[1].near_plane = 0.5f;                      // cuts the floor and the grids: clipped triangles
+    std::vector<Camera> cameras{settings.camera,
+                                camera_at_position({1, 0.4f, 0.2f}, {0, 0.2f, 0}, 1.2f, 70, 3)};
+    cameras[1].near_plane = 0.5f;  // cuts the floor and the grids: clipped triangles
     cameras.push_back(cameras[0]);
-    cameras[2].position = {0.1f, 0.55f, -0.05f};     // inside the box: every face seen from behind
+    cameras[2].position = {0.1f, 0.55f, -0.05f};  // inside the box: every face seen from behind
     cameras.push_back(cameras[0]);
     cameras[3].orthographic = true;
     int drawn = 0;
     for (const auto& mode : render_modes())
         for (std::size_t k = 0; k < cameras.size(); ++k)
             for (bool wireframe : {false, true}) {
-                if (wireframe && mode.value != RenderMode::untextured && mode.value != RenderMode::normal) continue;
+                if (wireframe && mode.value != RenderMode::untextured && mode.value != RenderMode::normal)
+                    continue;
                 settings.mode = mode.value;
                 settings.camera = cameras[k];
                 settings.wireframe = wireframe;
                 settings.shader = nullptr;
                 Frame lanes = make_frame(131, 97, {1, 1, 1});
                 render(batches, settings, lanes);
-                Eigen::Vector3f eye = settings.camera.position;  // an orthographic eye as the pipeline places it
+                Eigen::Vector3f eye =
+                    settings.camera.position;  // an orthographic eye as the pipeline places it
                 if (settings.camera.orthographic) eye -= (settings.camera.target - eye).normalized() * 1e6f;
                 std::unique_ptr<Shader> shader = make_shader(settings, eye);
                 for (bool scalar_fragments : {true, false}) {
@@ -488,8 +516,9 @@ TEST(Renderer, LanesGiveTheBitsOfOnePixelAtATime) {
                     settings.shader = &one;
                     Frame reference = make_frame(131, 97, {1, 1, 1});
                     render(batches, settings, reference);
-                    EXPECT_TRUE(same_bits(lanes, reference)) << mode.name << ", camera " << k << (wireframe ? ", wireframe" : "")
-                                                             << (scalar_fragments ? ", scalar fragments" : ", lane fragments");
+                    EXPECT_TRUE(same_bits(lanes, reference))
+                        << mode.name << ", camera " << k << (wireframe ? ", wireframe" : "")
+                        << (scalar_fragments ? ", scalar fragments" : ", lane fragments");
                 }
                 for (const Eigen::Vector4f& c : lanes.color) drawn += c.w() > 0;
             }

@@ -76,7 +76,8 @@ TEST(Shading, AlbedoIsUnlitAndTheOtherModesAreLit) {
             EXPECT_EQ(pixel.color, surface.base_color.head<3>());
         } else {
             // Light straight above: ambient + diffuse = 1 times albedo, plus the specular highlight.
-            Eigen::Vector3f expected = surface.base_color.head<3>() + surface.specular * settings.light.specular;
+            Eigen::Vector3f expected =
+                surface.base_color.head<3>() + surface.specular * settings.light.specular;
             EXPECT_NEAR((pixel.color - expected).norm(), 0, 1e-5) << mode.name;
         }
     }
@@ -97,7 +98,8 @@ TEST(Shading, TwoSidedLightingTurnsTheFragmentTowardsTheEye) {
 TEST(Shading, ColourAndNormalMapsOfDifferentSizesEachGetTheirOwnMipLevel) {
     auto patterned = [](int side, int seed) {
         Image8 image(side, side, 4);
-        for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint8_t((i * 37 + seed) * 91 % 256);
+        for (std::size_t i = 0; i < image.pixels.size(); ++i)
+            image.pixels[i] = std::uint8_t((i * 37 + seed) * 91 % 256);
         return image;
     };
     MipTexture color = make_texture(patterned(8, 1), ColorSpace::srgb);
@@ -120,7 +122,8 @@ TEST(Shading, ColourAndNormalMapsOfDifferentSizesEachGetTheirOwnMipLevel) {
     ShadedPixel pixel = make_shader(settings, {0, 0, 5})->shade(surface, fragment);
     EXPECT_EQ(pixel.color, sample(color, f.uv, 1).head<3>());
     Eigen::Vector4f texel = sample(normal_map, f.uv, 0);
-    Eigen::Vector3f expected = Eigen::Vector3f(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1).normalized();
+    Eigen::Vector3f expected =
+        Eigen::Vector3f(texel.x() * 2 - 1, texel.y() * 2 - 1, texel.z() * 2 - 1).normalized();
     EXPECT_EQ(pixel.normal, expected);
     EXPECT_NE(sample(normal_map, f.uv, 1), texel);  // so the normal map's level matters
 }
@@ -144,7 +147,8 @@ TEST(Shading, ParallaxOffsetsAreInUvOrInMetresAsTheHeightMapStates) {
     f.bitangent = {0, 1, 0};
     f.has_uv = true;
     f.uv = {0.5f, 0.5f};
-    const UvGradient gradient{{0.5f, 0, 0}, {0, -0.25f, 0}};  // u = x / 2, v = -y / 4: v runs down the image, the bitangent up
+    const UvGradient gradient{
+        {0.5f, 0, 0}, {0, -0.25f, 0}};  // u = x / 2, v = -y / 4: v runs down the image, the bitangent up
     f.uv_gradient = &gradient;
     const Eigen::Vector3f eye(3, 2, 6);
     const Eigen::Vector3f view = eye.normalized();
@@ -169,22 +173,28 @@ TEST(Shading, ParallaxOffsetsAreInUvOrInMetresAsTheHeightMapStates) {
         Eigen::Vector2f expected_uv;
     } cases[] = {
         {RenderMode::parallax, 0, f.uv + in_uv * (h * settings.parallax_scale + settings.parallax_bias)},
-        {RenderMode::parallax, depth, f.uv + per_metre * ((h - 1) * depth)},      // offset limiting: no 1 / cos
-        {RenderMode::pom, depth, f.uv + per_metre * ((h - 1) * depth / view.z())},  // the ray meets h at depth 0.75
+        {RenderMode::parallax, depth, f.uv + per_metre * ((h - 1) * depth)},  // offset limiting: no 1 / cos
+        {RenderMode::pom, depth,
+         f.uv + per_metre * ((h - 1) * depth / view.z())},  // the ray meets h at depth 0.75
     };
     const float tolerance = 2e-4f;  // the colour of a uv a rounding step away
     for (const Case& c : cases) {
-        Eigen::Vector3f displaced = shade_at(c.mode, c.depth, nullptr), expected = shade_at(RenderMode::normal, 0, &c.expected_uv);
-        EXPECT_NEAR((displaced - expected).norm(), 0, tolerance) << render_mode_name(c.mode) << " depth " << c.depth;
+        Eigen::Vector3f displaced = shade_at(c.mode, c.depth, nullptr),
+                        expected = shade_at(RenderMode::normal, 0, &c.expected_uv);
+        EXPECT_NEAR((displaced - expected).norm(), 0, tolerance)
+            << render_mode_name(c.mode) << " depth " << c.depth;
         Eigen::Vector3f undisplaced = shade_at(RenderMode::normal, 0, &f.uv);
-        EXPECT_GT((displaced - undisplaced).norm(), 10 * tolerance) << render_mode_name(c.mode) << " depth " << c.depth;
+        EXPECT_GT((displaced - undisplaced).norm(), 10 * tolerance)
+            << render_mode_name(c.mode) << " depth " << c.depth;
     }
     // Seen from behind (inside a box, through a cut-out), a metric height map
     // offsets nothing; one in uv units keeps the manual's offset.
     f.geometric_normal = f.normal = {0, 0, -1};
     f.bitangent = {0, -1, 0};
     for (RenderMode mode : {RenderMode::parallax, RenderMode::pom}) {
-        EXPECT_EQ(shade_at(mode, depth, nullptr), shade_at(RenderMode::normal, 0, &f.uv)) << render_mode_name(mode);
-        EXPECT_NE(shade_at(mode, 0, nullptr), shade_at(RenderMode::normal, 0, &f.uv)) << render_mode_name(mode);
+        EXPECT_EQ(shade_at(mode, depth, nullptr), shade_at(RenderMode::normal, 0, &f.uv))
+            << render_mode_name(mode);
+        EXPECT_NE(shade_at(mode, 0, nullptr), shade_at(RenderMode::normal, 0, &f.uv))
+            << render_mode_name(mode);
     }
 }

@@ -1,7 +1,7 @@
 #include "renderer/texture.h"
 
-#include "base/random.h"
 #include <gtest/gtest.h>
+#include "base/random.h"
 
 #include <bit>
 #include <cstdint>
@@ -26,7 +26,8 @@ TEST(Texture, TexelCentresReturnTexelsExactly) {
     t.filter = Filter::bilinear;
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 4; ++x)
-            EXPECT_FLOAT_EQ(sample(t, {(x + 0.5f) / 4, (y + 0.5f) / 2}).x(), red(std::uint8_t((y * 4 + x) * 40)));
+            EXPECT_FLOAT_EQ(sample(t, {(x + 0.5f) / 4, (y + 0.5f) / 2}).x(),
+                            red(std::uint8_t((y * 4 + x) * 40)));
 }
 
 TEST(Texture, BilinearBlendsNeighbours) {
@@ -73,7 +74,8 @@ TEST(Texture, MipLevelFollowsTexelsPerPixel) {
 TEST(Texture, SrgbTexturesDecodeToLinear) {
     Image8 image(1, 1, 4, 128);
     EXPECT_FLOAT_EQ(texel(make_texture(image, ColorSpace::srgb), 0, 0, 0).x(), srgb_to_linear(128));
-    EXPECT_FLOAT_EQ(texel(make_texture(image, ColorSpace::srgb), 0, 0, 0).w(), 128 / 255.0f);  // alpha stays linear
+    EXPECT_FLOAT_EQ(texel(make_texture(image, ColorSpace::srgb), 0, 0, 0).w(),
+                    128 / 255.0f);  // alpha stays linear
     Image16 height(1, 1, 1, 65535);
     EXPECT_FLOAT_EQ(texel(make_texture(height), 0, 0, 0).x(), 1.0f);
     ImageF depth(2, 1, 1, 0.25f);
@@ -173,14 +175,21 @@ TEST(Texture, SamplingInLanesEqualsSamplingEachLane) {
                     Vector4Lanes from_color{}, from_normal{};
                     sample_both(color, normal, u, v, lod, count, from_color, from_normal);
                     for (int j = 0; j < count; ++j) {
-                        const auto [expected_color, expected_normal] = sample_both(color, lod[j], normal, lod[j], {u[j], v[j]});
-                        const FloatLanes* lanes_color[4] = {&from_color.x, &from_color.y, &from_color.z, &from_color.w};
-                        const FloatLanes* lanes_normal[4] = {&from_normal.x, &from_normal.y, &from_normal.z, &from_normal.w};
+                        const auto [expected_color, expected_normal] =
+                            sample_both(color, lod[j], normal, lod[j], {u[j], v[j]});
+                        const FloatLanes* lanes_color[4] = {&from_color.x, &from_color.y, &from_color.z,
+                                                            &from_color.w};
+                        const FloatLanes* lanes_normal[4] = {&from_normal.x, &from_normal.y, &from_normal.z,
+                                                             &from_normal.w};
                         for (int c = 0; c < 4; ++c) {
-                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_color[c])[j]), std::bit_cast<std::uint32_t>(expected_color[c]))
-                                << width << "x" << height << ", group " << group << ", lane " << j << ", channel " << c;
-                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_normal[c])[j]), std::bit_cast<std::uint32_t>(expected_normal[c]))
-                                << width << "x" << height << ", group " << group << ", lane " << j << ", channel " << c;
+                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_color[c])[j]),
+                                      std::bit_cast<std::uint32_t>(expected_color[c]))
+                                << width << "x" << height << ", group " << group << ", lane " << j
+                                << ", channel " << c;
+                            ASSERT_EQ(std::bit_cast<std::uint32_t>((*lanes_normal[c])[j]),
+                                      std::bit_cast<std::uint32_t>(expected_normal[c]))
+                                << width << "x" << height << ", group " << group << ", lane " << j
+                                << ", channel " << c;
                         }
                         ++compared;
                     }

@@ -79,7 +79,8 @@ OrientedBox fit_box(const Eigen::Matrix3d& axes, std::span<const Eigen::Vector3f
         double extent = 0;
         for (const Eigen::Vector3f& p : points) extent = std::max(extent, std::abs(project(p, c, k)));
         half[k] = float(extent);
-        if (double(half[k]) < extent) half[k] = std::nextafter(half[k], std::numeric_limits<float>::infinity());
+        if (double(half[k]) < extent)
+            half[k] = std::nextafter(half[k], std::numeric_limits<float>::infinity());
     }
     OrientedBox box;
     for (int r = 0; r < 3; ++r) {

@@ -37,7 +37,9 @@ struct FaceCountStop {
     const Mesh* mesh;
     std::size_t target;
     template <typename Profile>
-    bool operator()(const double&, const Profile&, std::size_t, std::size_t) const { return mesh->number_of_faces() <= target; }
+    bool operator()(const double&, const Profile&, std::size_t, std::size_t) const {
+        return mesh->number_of_faces() <= target;
+    }
 };
 
 struct Part {
@@ -79,7 +81,8 @@ std::vector<Part> parts_of(const Model& model) {
                 point_of[v] = at->second;
             }
             for (std::size_t i = 0; i + 2 < p.indices.size(); i += 3) {
-                part.triangles.push_back({point_of[p.indices[i]], point_of[p.indices[i + 1]], point_of[p.indices[i + 2]]});
+                part.triangles.push_back(
+                    {point_of[p.indices[i]], point_of[p.indices[i + 1]], point_of[p.indices[i + 2]]});
                 const Eigen::Vector3f &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]],
                                       &c = p.positions[p.indices[i + 2]];
                 part.area += 0.5 * double((b - a).cross(c - a).norm());
@@ -95,7 +98,8 @@ Primitive simplify_part(Part part, std::size_t target) {
     Mesh mesh;
     PMP::polygon_soup_to_polygon_mesh(part.points, part.triangles, mesh);
     // Each vertex's attributes, by its position before collapsing moves it.
-    auto [carried, added] = mesh.add_property_map<Mesh::Vertex_index, Attributes>("v:attributes", Attributes{});
+    auto [carried, added] =
+        mesh.add_property_map<Mesh::Vertex_index, Attributes>("v:attributes", Attributes{});
     for (Mesh::Vertex_index v : mesh.vertices()) {
         const Point& p = mesh.point(v);
         auto found = part.attributes.find({float(p.x()), float(p.y()), float(p.z())});
@@ -103,16 +107,19 @@ Primitive simplify_part(Part part, std::size_t target) {
     }
     if (mesh.number_of_faces() > target) {
         SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(mesh);
-        SMS::edge_collapse(mesh, FaceCountStop{&mesh, target},
-                           CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+        SMS::edge_collapse(
+            mesh, FaceCountStop{&mesh, target},
+            CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
     }
     Primitive out;
     out.material = part.material;
     // Vertices equal in every attribute are shared, as an exporter would write them.
     std::map<std::array<float, 12>, std::uint32_t> shared;
-    auto add_vertex = [&](const Eigen::Vector3f& position, const Eigen::Vector3f& normal, const Attributes& a) {
-        std::array<float, 12> key = {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z(),
-                                     a.uv.x(), a.uv.y(), a.tangent.x(), a.tangent.y(), a.tangent.z(), a.tangent.w()};
+    auto add_vertex = [&](const Eigen::Vector3f& position, const Eigen::Vector3f& normal,
+                          const Attributes& a) {
+        std::array<float, 12> key = {position.x(),  position.y(),  position.z(),  normal.x(),
+                                     normal.y(),    normal.z(),    a.uv.x(),      a.uv.y(),
+                                     a.tangent.x(), a.tangent.y(), a.tangent.z(), a.tangent.w()};
         auto [at, added] = shared.try_emplace(key, std::uint32_t(out.positions.size()));
         if (added) {
             out.positions.push_back(position);
@@ -135,7 +142,8 @@ Primitive simplify_part(Part part, std::size_t target) {
         Eigen::Vector3f normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
         if (k != 3 || !(normal.squaredNorm() > 0)) continue;  // degenerate after collapsing
         normal.normalize();
-        for (int c = 0; c < 3; ++c) add_vertex(corners[std::size_t(c)], normal, carried[vertices[std::size_t(c)]]);
+        for (int c = 0; c < 3; ++c)
+            add_vertex(corners[std::size_t(c)], normal, carried[vertices[std::size_t(c)]]);
     }
     out.polygon_count = out.triangle_count();
     return out;
@@ -144,7 +152,8 @@ Primitive simplify_part(Part part, std::size_t target) {
 }  // namespace
 
 Model cgal_simplify(const Model& model, std::size_t target_faces) {
-    if (model.is_lod) throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
+    if (model.is_lod)
+        throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
     if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
     std::vector<Part> parts = parts_of(model);
     if (parts.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
@@ -163,7 +172,8 @@ Model cgal_simplify(const Model& model, std::size_t target_faces) {
         Primitive mesh = simplify_part(std::move(part), target);
         if (mesh.indices.empty()) continue;
         int material = mesh.material;
-        int n = add_node(result, 0, material >= 0 ? model.materials[std::size_t(material)].name : "default material");
+        int n = add_node(result, 0,
+                         material >= 0 ? model.materials[std::size_t(material)].name : "default material");
         result.nodes[std::size_t(n)].primitives.push_back(std::move(mesh));
     }
     return result;

@@ -47,9 +47,11 @@ Shape classify(const std::vector<Point>& points) {
     if (points.size() < 2) return Shape::point;
     const Point& a = points[0];
     const Point& b = points[1];
-    auto c = std::find_if(points.begin(), points.end(), [&](const Point& p) { return !CGAL::collinear(a, b, p); });
+    auto c =
+        std::find_if(points.begin(), points.end(), [&](const Point& p) { return !CGAL::collinear(a, b, p); });
     if (c == points.end()) return Shape::line;
-    auto d = std::find_if(points.begin(), points.end(), [&](const Point& p) { return !CGAL::coplanar(a, b, *c, p); });
+    auto d = std::find_if(points.begin(), points.end(),
+                          [&](const Point& p) { return !CGAL::coplanar(a, b, *c, p); });
     return d == points.end() ? Shape::plane : Shape::solid;
 }
 
@@ -160,7 +162,8 @@ Eigen::Matrix3d plane_frame(const std::vector<Eigen::Vector3d>& relative) {
 Eigen::Matrix3d solid_frame(const std::vector<Point>& points, std::uint64_t seed) {
     Kernel::Aff_transformation_3 rotation;
     const auto seed32 = static_cast<unsigned int>(seed ^ (seed >> 32));
-    CGAL::oriented_bounding_box(points, rotation, CGAL::parameters::use_convex_hull(true).random_seed(seed32));
+    CGAL::oriented_bounding_box(points, rotation,
+                                CGAL::parameters::use_convex_hull(true).random_seed(seed32));
     Eigen::Matrix3d rows;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) rows(r, c) = CGAL::to_double(rotation.m(r, c));
@@ -197,10 +200,10 @@ Eigen::Matrix3d minimal_box_axes(const HullShape& shape, std::uint64_t seed) {
     // The differences are exact, so the exact predicates classify as on the original points.
     const std::vector<Point> points = to_points(shape.relative);
     switch (classify(points)) {
-        case Shape::point: return Eigen::Matrix3d::Identity();
-        case Shape::line: return line_frame(shape.relative);
-        case Shape::plane: return plane_frame(shape.relative);
-        case Shape::solid: break;
+    case Shape::point: return Eigen::Matrix3d::Identity();
+    case Shape::line: return line_frame(shape.relative);
+    case Shape::plane: return plane_frame(shape.relative);
+    case Shape::solid: break;
     }
     return shape.flat ? plane_frame(shape.relative) : solid_frame(points, seed);
 }

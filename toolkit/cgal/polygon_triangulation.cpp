@@ -24,15 +24,19 @@ struct FaceInfo {
     int nesting = -1;  // rings crossed from outside; odd: inside the polygon
 };
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using FaceBase =
+    CGAL::Constrained_triangulation_face_base_2<Kernel,
+                                                CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
 using DataStructure = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // Exact predicates: rings that cross are split where they meet (at an approximate point).
-using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Kernel, DataStructure, CGAL::Exact_predicates_tag>;
+using Triangulation =
+    CGAL::Constrained_Delaunay_triangulation_2<Kernel, DataStructure, CGAL::Exact_predicates_tag>;
 using Face = Triangulation::Face_handle;
 
 // Flood fill from `start` over unconstrained edges, setting `nesting`; the
 // constrained edges met lead to the next level.
-void fill_domain(Triangulation& triangulation, Face start, int nesting, std::deque<Triangulation::Edge>& border) {
+void fill_domain(Triangulation& triangulation, Face start, int nesting,
+                 std::deque<Triangulation::Edge>& border) {
     std::deque<Face> queue{start};
     while (!queue.empty()) {
         Face face = queue.front();
@@ -88,7 +92,8 @@ PolygonTriangles triangulate_polygon(const std::vector<std::vector<Eigen::Vector
         for (const Eigen::Vector3d& p : ring) {
             const Eigen::Vector3d d = p - anchor;
             auto vertex = triangulation.insert(Kernel::Point_2(d.dot(u), d.dot(v)));
-            if (vertex->info().index == no_index) vertex->info().index = index;  // a repeated point keeps its first index
+            if (vertex->info().index == no_index)
+                vertex->info().index = index;  // a repeated point keeps its first index
             ++index;
             vertices.push_back(vertex);
         }

@@ -1,8 +1,8 @@
 #include "toolkit/commands/commands.h"
 
 #include "base/common_options.h"
-#include "toolkit/commands/lod_options.h"
 #include "toolkit/boxlod.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/model/statistics.h"
 
 #include <cstdio>
@@ -18,9 +18,14 @@ static int run_info(const Arguments& arguments) {
 }
 
 Subcommand info_subcommand() {
-    return {{"info", "MODEL", "Read a model (glTF, CityJSON, FBX, OBJ, DAE, PLY, OFF, 3DS, IFC, ...) and print its statistics.",
-             {json_option(), city_lod_option()}, 1, 1},
-            run_info};
+    return {
+        {"info",
+         "MODEL",
+         "Read a model (glTF, CityJSON, FBX, OBJ, DAE, PLY, OFF, 3DS, IFC, ...) and print its statistics.",
+         {json_option(), city_lod_option()},
+         1,
+         1},
+        run_info};
 }
 
 }  // namespace boxlod

@@ -3,11 +3,11 @@
 #include "base/key_values.h"
 #include "renderer/exr_io.h"
 #include "renderer/overlays.h"
+#include "toolkit/boxlod.h"
 #include "toolkit/commands/commands.h"
+#include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/render_options.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/commands/lod_options.h"
-#include "toolkit/boxlod.h"
 
 #include <cstdio>
 
@@ -18,9 +18,11 @@ static int run_render(const Arguments& arguments) {
     check_output_file(arguments.text("output"), {".png"});
     if (arguments.has("coverage")) check_output_file(arguments.text("coverage"), {".png"});
     if (arguments.has("exr")) check_output_file(arguments.text("exr"), {".exr"});
-    check_distinct_files({{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
-                         {{"--output", arguments.text("output")}, {"--coverage", arguments.text("coverage", "")},
-                          {"--exr", arguments.text("exr", "")}});
+    check_distinct_files(
+        {{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
+        {{"--output", arguments.text("output")},
+         {"--coverage", arguments.text("coverage", "")},
+         {"--exr", arguments.text("exr", "")}});
     Model model = read_model(arguments.positionals[0], city_lod_from(arguments), arguments.integer("level"));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;
@@ -69,11 +71,13 @@ Subcommand render_subcommand() {
         {"coverage", "FILE", "also write the coverage mask as a PNG"},
         {"axes", "", "draw the coordinate cross (X red, Y green, Z blue) at the model's corner"},
         {"split-view", "MODEL", "left half this model, right half MODEL (the manual's split view)"},
-        {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does", NumberRange{0, 63}, "0"},
+        {"level", "K", "of an LoD chain (build --chain): draw level K, as an MSFT_lod client does",
+         NumberRange{0, 63}, "0"},
     };
     options.push_back(city_lod_option());
     for (const Option& o : render_options()) options.push_back(o);
-    return {{"render", "MODEL", "Render a model with the deterministic CPU renderer.", options, 1, 1}, run_render};
+    return {{"render", "MODEL", "Render a model with the deterministic CPU renderer.", options, 1, 1},
+            run_render};
 }
 
 }  // namespace boxlod

@@ -1,18 +1,18 @@
-#include "base/common_options.h"
 #include "base/atomic_write.h"
+#include "base/common_options.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
-#include "toolkit/lod/pages/boxes.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
-#include "toolkit/lod/hybrid/draw_calls.h"
 #include "toolkit/formats/gltf_io.h"
-#include "toolkit/lod/chain/chain.h"
 #include "toolkit/formats/model_io.h"
-#include "toolkit/model/model_subtree.h"
-#include "toolkit/lod/surface_deviation.h"
 #include "toolkit/formats/tileset.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/chain/switch_measures.h"
+#include "toolkit/lod/hybrid/draw_calls.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/lod/surface_deviation.h"
+#include "toolkit/model/model_subtree.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -29,8 +29,8 @@ constexpr NumberRange latitude_range{-90, 90}, longitude_range{-180, 180}, heigh
 // with a geometric error from the level's switch distance and measured
 // deviation that makes clients switch where a chain does at the latest
 // (level_geometric_error).
-TileObject build_object(const Model& model, int index, const LodParameters& parameters, double switch_error, bool keep_hierarchy,
-                        const std::string& folder) {
+TileObject build_object(const Model& model, int index, const LodParameters& parameters, double switch_error,
+                        bool keep_hierarchy, const std::string& folder) {
     Chain chain(model, parameters, 1);
     // The bounding volume encloses the geometry whatever box kind the levels use.
     TileObject object{model.nodes[0].name, *node_boxes(model, BoxKind::expanded, 1)[0], {}};
@@ -45,8 +45,8 @@ TileObject build_object(const Model& model, int index, const LodParameters& para
         TileLevel level{name + ".glb", 0, 0};
         if (k > 0) {
             level.surface_deviation = surface_deviation(original, surface_views(built.lod.model, object.box));
-            level.geometric_error =
-                level_geometric_error(switched.switch_distances[k], built.session->derived.sizing, level.surface_deviation);
+            level.geometric_error = level_geometric_error(
+                switched.switch_distances[k], built.session->derived.sizing, level.surface_deviation);
         }
         export_gltf(keep_hierarchy ? built.lod.model : merge_draw_calls(std::move(built.lod.model), name),
                     (std::filesystem::path(folder) / level.content).string(), 1);
@@ -64,13 +64,15 @@ bool is_tileset_file(const std::string& name) {
 int run_tiles(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
-    if (a.has("level")) throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
+    if (a.has("level"))
+        throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
     const Geodetic origin{a.number("latitude"), a.number("longitude"), a.number("height")};
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
-    const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(), city.origin.y());  // y up to the file's z up
+    const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(),
+                                        city.origin.y());  // y up to the file's z up
     city.origin = Eigen::Vector3d::Zero();
     const std::vector<int> nodes = object_nodes(city);
     start_lod(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
@@ -81,9 +83,11 @@ int run_tiles(const Arguments& a) {
     OutputGroup files;  // every glb and the tileset naming them, or none
     std::vector<TileObject> objects(nodes.size());
     parallel_for(nodes.size(), threads_from(a), [&](std::size_t k) {
-        objects[k] = build_object(object_model(city, nodes[k]), int(k), parameters, error, a.has("keep-hierarchy"), output.path());
+        objects[k] = build_object(object_model(city, nodes[k]), int(k), parameters, error,
+                                  a.has("keep-hierarchy"), output.path());
     });
-    write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(), tileset_json(objects, origin, source_origin));
+    write_text_atomically((std::filesystem::path(output.path()) / "tileset.json").string(),
+                          tileset_json(objects, origin, source_origin));
     files.commit();
     output.commit();
     const std::string tileset = (folder / "tileset.json").string();
@@ -96,24 +100,29 @@ int run_tiles(const Arguments& a) {
 }  // namespace
 
 Subcommand tiles_subcommand() {
-    Subcommand tiles{{"tiles", "MODEL|PARAMS.txt",
-                      "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and streets) "
-                      "and the root's own geometry (the whole model where all of it is on the root) "
-                      "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down to the "
-                      "original; glb content, boxes from boxlod's boxes, geometric errors in metres that make clients "
-                      "switch levels where a chain does (16 pixels at the level's switch distance, --switch-error); "
-                      "OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
+    Subcommand tiles{{"tiles",
+                      "MODEL|PARAMS.txt",
+                      "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and "
+                      "streets) and the root's own geometry (the whole model where all of it is on the root) "
+                      "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down "
+                      "to the original; glb content, boxes from boxlod's boxes, geometric errors in metres "
+                      "that make clients switch levels where a chain does (16 pixels at the level's switch "
+                      "distance, --switch-error); OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
                       {
                           {"output", "OUTDIR", "folder for the tileset (required)", {}, "", 'o'},
-                          {"latitude", "DEG", "where the model's origin lies on the WGS84 ellipsoid (by default KIT, Karlsruhe)",
+                          {"latitude", "DEG",
+                           "where the model's origin lies on the WGS84 ellipsoid (by default KIT, Karlsruhe)",
                            latitude_range, format_number(Geodetic{}.latitude_degrees)},
-                          {"longitude", "DEG", "its longitude", longitude_range, format_number(Geodetic{}.longitude_degrees)},
-                          {"height", "M", "its height above the ellipsoid", height_range, format_number(Geodetic{}.height)},
+                          {"longitude", "DEG", "its longitude", longitude_range,
+                           format_number(Geodetic{}.longitude_degrees)},
+                          {"height", "M", "its height above the ellipsoid", height_range,
+                           format_number(Geodetic{}.height)},
                           keep_hierarchy_option(),
                           switch_error_option(),
                           threads_option(),
                       },
-                      1, 1},
+                      1,
+                      1},
                      run_tiles};
     std::vector<Option> lod = lod_options();
     tiles.command.options.insert(tiles.command.options.begin() + 1, lod.begin(), lod.end());

@@ -8,8 +8,8 @@
 #include "toolkit/commands/render_options.h"
 #include "toolkit/commands/sdl_library.h"
 #include "toolkit/commands/viewer_state.h"
-#include "toolkit/lod/lod_export.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/lod_export.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -106,10 +106,14 @@ struct Window {
     SDL_Texture* texture = nullptr;
 
     Window(const std::string& title, int width, int height) {
-        if (sdl().SDL_Init(SDL_INIT_VIDEO) != 0) throw std::runtime_error(std::string("cannot open a window: ") + sdl().SDL_GetError());
-        window = sdl().SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height, 0);
+        if (sdl().SDL_Init(SDL_INIT_VIDEO) != 0)
+            throw std::runtime_error(std::string("cannot open a window: ") + sdl().SDL_GetError());
+        window = sdl().SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+                                        width, height, 0);
         renderer = window ? sdl().SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-        texture = renderer ? sdl().SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, width, height) : nullptr;
+        texture = renderer ? sdl().SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24,
+                                                     SDL_TEXTUREACCESS_STREAMING, width, height)
+                           : nullptr;
         if (!texture) {
             std::string error = sdl().SDL_GetError();
             close();
@@ -144,13 +148,17 @@ ViewerState start_state(const Arguments& a, const Model& model, LodParameters pa
     View view = view_from_arguments(a, model_bounds(model));
     if (parameters.camera) view.settings.camera = *parameters.camera;
     if (parameters.light) view.settings.light = *parameters.light;
-    if (a.has("mode")) parameters.render_mode = view.settings.mode;
-    else view.settings.mode = parameters.render_mode;
-    ViewerState state = make_viewer_state(model, parameters, view.settings, view.width, view.height, view.background);
+    if (a.has("mode"))
+        parameters.render_mode = view.settings.mode;
+    else
+        view.settings.mode = parameters.render_mode;
+    ViewerState state =
+        make_viewer_state(model, parameters, view.settings, view.width, view.height, view.background);
     state.light_follows_camera = !(parameters.light || a.has("light"));
     std::vector<std::string> positions = camera_position_names();
     for (std::size_t i = 0; i < positions.size(); ++i)  // C continues from the start position
-        if (camera_direction(positions[i]) == camera_direction(a.text("camera"))) state.camera_position = int(i);
+        if (camera_direction(positions[i]) == camera_direction(a.text("camera")))
+            state.camera_position = int(i);
     return state;
 }
 
@@ -173,7 +181,8 @@ void load_session_parameters(ViewerState& state, const std::string& path) {
 // loaded, the LoD exported. A file that cannot be written or read is shown in
 // the window and on stderr, and counted in `failures`, not the end of the
 // session. Returns true when the frame must be redrawn.
-bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, int threads, int& screenshots, int& failures) {
+bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, int threads, int& screenshots,
+                    int& failures) {
     auto shown = [&](auto action) {
         try {
             action();
@@ -215,7 +224,8 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
                                std::to_string(state.parameters.current_level);
             std::string folder = a.text("export-dir");
             shown([&] {
-                export_lod(*state.lod, state.chain->parameters(), folder, name, frame_to_srgb8(frame), threads);
+                export_lod(*state.lod, state.chain->parameters(), folder, name, frame_to_srgb8(frame),
+                           threads);
                 state.message = "exported " + folder + "/" + name + ".gltf";
             });
         } else {
@@ -237,10 +247,13 @@ int run_view(const Arguments& a) {
     if (parameters.current_level > 0 && !model.is_lod) {  // a level asked for exists, or no window opens (73)
         state.chain = std::make_unique<Chain>(model, state.parameters, state.settings.threads);
         if (parameters.current_level > state.chain->obtained_levels())
-            throw_input_error(parameters.model, "", "--level " + std::to_string(parameters.current_level) + " is past the levels obtained, 0.." +
-                                                        std::to_string(state.chain->obtained_levels()));
+            throw_input_error(parameters.model, "",
+                              "--level " + std::to_string(parameters.current_level) +
+                                  " is past the levels obtained, 0.." +
+                                  std::to_string(state.chain->obtained_levels()));
     }
-    std::vector<ViewerEvent> replay = a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+    std::vector<ViewerEvent> replay =
+        a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
 
     Window window("boxlod view " + a.positionals[0], state.width, state.height);
     for (const ViewerEvent& e : replay) {
@@ -268,7 +281,9 @@ int run_view(const Arguments& a) {
         }
         redraw = serve_requests(state, frame, a, threads, screenshots, failures) || redraw;
     }
-    return replaying && failures > 0 ? 2 : 0;  // a script whose action failed is bad input; a person saw the message
+    return replaying && failures > 0
+               ? 2
+               : 0;  // a script whose action failed is bad input; a person saw the message
 }
 
 }  // namespace
@@ -277,13 +292,15 @@ Subcommand view_subcommand() {
     std::vector<Option> options = {
         {"replay", "EVENTS", "replay an event file (lines 'key m', 'drag DX DY', 'wheel N'), then stop"},
         {"screenshot", "FILE", "write the final frame (without the text overlay) as PNG"},
-        {"params-out", "FILE", "where F5 saves and F9 loads parameters", std::nullopt, "boxlod-view.params.txt"},
+        {"params-out", "FILE", "where F5 saves and F9 loads parameters", std::nullopt,
+         "boxlod-view.params.txt"},
         {"export-dir", "DIR", "where F6 exports the current LoD", std::nullopt, "boxlod-view-export"},
     };
     // The camera's distance and fovy are the render options' (and size the LoD's textures too).
     options = with_options(with_options(options, render_options()), lod_options());
     return {{"view", "MODEL|PARAMS.txt",
-             "Interactive viewer: fly around a model and its LoD, switch modes and levels, compare.\n" + viewer_key_help(),
+             "Interactive viewer: fly around a model and its LoD, switch modes and levels, compare.\n" +
+                 viewer_key_help(),
              options, 1, 1},
             run_view};
 }

@@ -25,8 +25,8 @@ inline Option keep_materials_option() {
 // level is one node per material (toolkit/lod/hybrid/draw_calls.h) unless told not to.
 inline Option keep_hierarchy_option() {
     return {"keep-hierarchy", "",
-            "keep one node per kept part and box in each level, with its scope and rule in extras, instead of one node per "
-            "material (draw call)"};
+            "keep one node per kept part and box in each level, with its scope and rule in extras, instead "
+            "of one node per material (draw call)"};
 }
 
 // For the commands that write chains for engines (build --chain, tiles): the
@@ -34,21 +34,22 @@ inline Option keep_hierarchy_option() {
 constexpr double default_switch_error = 0.05;
 inline Option switch_error_option() {
     return {"switch-error", "E",
-            "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over the pixels "
-            "either covers, stays within E (measured from four views in half octaves out to where the model spans 4 "
-            "pixels); 0: at its sizing distance, where its texels meet the screen's pixels",
+            "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over "
+            "the pixels either covers, stays within E (measured from four views in half octaves out to where "
+            "the model spans 4 pixels); 0: at its sizing distance, where its texels meet the screen's pixels",
             NumberRange{0, switch_error_range.max}, format_number(default_switch_error)};
 }
 inline double switch_error(const Arguments& arguments) {
     const double error = arguments.number("switch-error");
     if (error > 0 && error < switch_error_range.min)
-        throw InputError("--switch-error: " + format_number(error) + " is neither 0 nor in " + range_text(switch_error_range));
+        throw InputError("--switch-error: " + format_number(error) + " is neither 0 nor in " +
+                         range_text(switch_error_range));
     return error;
 }
 
 inline std::vector<Subcommand> toolkit_commands() {
-    return {info_subcommand(),   convert_subcommand(), render_subcommand(), levels_subcommand(),
-            build_subcommand(),  tiles_subcommand(),   view_subcommand()};
+    return {info_subcommand(),  convert_subcommand(), render_subcommand(), levels_subcommand(),
+            build_subcommand(), tiles_subcommand(),   view_subcommand()};
 }
 
 }  // namespace boxlod

@@ -14,7 +14,8 @@ namespace {
 Option option_of(const ParameterDeclaration& d) { return {d.option, d.value_name, d.help_text(), d.range}; }
 
 bool among(const ParameterDeclaration& d, const std::vector<std::string>& keys) {
-    return std::find_if(keys.begin(), keys.end(), [&](const std::string& key) { return d.key == key; }) != keys.end();
+    return std::find_if(keys.begin(), keys.end(), [&](const std::string& key) { return d.key == key; }) !=
+           keys.end();
 }
 
 bool is_parameter_file(const std::string& path) { return std::filesystem::path(path).extension() == ".txt"; }
@@ -22,11 +23,11 @@ bool is_parameter_file(const std::string& path) { return std::filesystem::path(p
 }  // namespace
 
 std::vector<Option> lod_options() {
-    std::vector<Option> options{
-        {"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
-        {"manual", "",
-         "the manual's program instead of the chain that pays its way: every level at one sizing distance, every "
-         "sub-tree boxed, pages of at least 256 texels, no flat faces (other options change single parameters)"}};
+    std::vector<Option> options{{"params", "FILE", "load only the parameters from FILE (the model is MODEL)"},
+                                {"manual", "",
+                                 "the manual's program instead of the chain that pays its way: every level "
+                                 "at one sizing distance, every sub-tree boxed, pages of at least 256 "
+                                 "texels, no flat faces (other options change single parameters)"}};
     for (const ParameterDeclaration& d : lod_parameter_declarations()) options.push_back(option_of(d));
     return options;
 }
@@ -42,8 +43,10 @@ void apply_lod_options(const Arguments& a, LodParameters& p, const std::vector<s
     for (const ParameterDeclaration& d : lod_parameter_declarations()) {
         if (!a.has(d.option) || (keys.size() > 0 && !among(d, keys))) continue;
         // A flag sets the opposite of the default (--keep-small-subtrees, --no-crop).
-        std::string value = d.is_flag() ? (d.format(LodParameters{}) == "true" ? "false" : "true") : a.text(d.option);
-        if (std::string problem = d.parse(value, p); !problem.empty()) throw InputError("--" + d.option + ": " + problem);
+        std::string value =
+            d.is_flag() ? (d.format(LodParameters{}) == "true" ? "false" : "true") : a.text(d.option);
+        if (std::string problem = d.parse(value, p); !problem.empty())
+            throw InputError("--" + d.option + ": " + problem);
     }
 }
 
@@ -54,7 +57,8 @@ LodParameters lod_parameters_from(const Arguments& a) {
     const std::string& input = a.positionals[0];
     if (is_parameter_file(input)) {
         if (a.has("params"))
-            throw InputError("--params: " + input + " is a parameter file already (--params takes the parameters for a model)");
+            throw InputError("--params: " + input +
+                             " is a parameter file already (--params takes the parameters for a model)");
         p = load_parameters(input);
         if (p.model.empty()) throw_input_error(input, "", "the parameter file names no model (key 'model')");
     } else {

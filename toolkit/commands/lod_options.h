@@ -17,7 +17,8 @@ std::vector<Option> lod_options();  // --params and every LoD parameter
 std::vector<Option> lod_options(const std::vector<std::string>& keys);
 // Sets every declared LoD parameter whose option is given (of those with these
 // keys; empty: all); throws InputError.
-void apply_lod_options(const Arguments& arguments, LodParameters& parameters, const std::vector<std::string>& keys = {});
+void apply_lod_options(const Arguments& arguments, LodParameters& parameters,
+                       const std::vector<std::string>& keys = {});
 LodParameters lod_parameters_from(const Arguments& arguments);
 
 // The model the parameters name, read as they say (a CityJSON model's LoD).

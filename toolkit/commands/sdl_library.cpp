@@ -14,7 +14,8 @@ const char* const library_name = "libSDL2-2.0.so.0";
 
 SdlLibrary load() {
     void* library = ::dlopen(library_name, RTLD_NOW | RTLD_LOCAL);  // kept open for the process
-    if (!library) throw std::runtime_error(std::string("cannot load SDL2 for the viewer's window: ") + ::dlerror());
+    if (!library)
+        throw std::runtime_error(std::string("cannot load SDL2 for the viewer's window: ") + ::dlerror());
     SdlLibrary functions;
     auto find = [&](auto& function, const char* name) {
         function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(::dlsym(library, name));

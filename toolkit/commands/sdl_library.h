@@ -8,11 +8,14 @@
 
 namespace boxlod {
 
-#define BOXLOD_SDL_FUNCTIONS(X)                                                                                    \
-    X(SDL_Init) X(SDL_Quit) X(SDL_GetError) X(SDL_CreateWindow) X(SDL_DestroyWindow) X(SDL_CreateRenderer)         \
-    X(SDL_DestroyRenderer) X(SDL_CreateTexture) X(SDL_DestroyTexture) X(SDL_UpdateTexture) X(SDL_RenderCopy)        \
-    X(SDL_RenderPresent) X(SDL_PushEvent) X(SDL_PollEvent) X(SDL_WaitEventTimeout) X(SDL_GetKeyName)               \
-    X(SDL_GetKeyFromName)
+// One table, its names in rows (not one per line, as clang-format would have it).
+// clang-format off
+#define BOXLOD_SDL_FUNCTIONS(X)                                                                    \
+    X(SDL_Init) X(SDL_Quit) X(SDL_GetError) X(SDL_CreateWindow) X(SDL_DestroyWindow)                \
+    X(SDL_CreateRenderer) X(SDL_DestroyRenderer) X(SDL_CreateTexture) X(SDL_DestroyTexture)         \
+    X(SDL_UpdateTexture) X(SDL_RenderCopy) X(SDL_RenderPresent) X(SDL_PushEvent) X(SDL_PollEvent)   \
+    X(SDL_WaitEventTimeout) X(SDL_GetKeyName) X(SDL_GetKeyFromName)
+// clang-format on
 
 struct SdlLibrary {
 #define BOXLOD_SDL_MEMBER(name) decltype(&::name) name = nullptr;

@@ -8,17 +8,22 @@
 
 namespace boxlod {
 
-extern const std::string_view chain_three_page, chain_babylon_page;  // clients/*.html (cmake/embed_text.cmake)
+extern const std::string_view chain_three_page,
+    chain_babylon_page;  // clients/*.html (cmake/embed_text.cmake)
 
 namespace {
 
 std::string html_attribute(const std::string& text) {
     std::string out;
     for (char c : text) {
-        if (c == '&') out += "&amp;";
-        else if (c == '"') out += "&quot;";
-        else if (c == '<') out += "&lt;";
-        else out += c;
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '"')
+            out += "&quot;";
+        else if (c == '<')
+            out += "&lt;";
+        else
+            out += c;
     }
     return out;
 }
@@ -38,8 +43,10 @@ std::vector<std::string> write_viewer_pages(const std::string& chain_path) {
     const std::filesystem::path chain(chain_path);
     const std::string file = chain.filename().string();
     std::vector<std::string> written;
-    for (auto [client, page] : {std::pair{"three", chain_three_page}, std::pair{"babylon", chain_babylon_page}}) {
-        const std::string path = (chain.parent_path() / (chain.stem().string() + "." + client + ".html")).string();
+    for (auto [client, page] :
+         {std::pair{"three", chain_three_page}, std::pair{"babylon", chain_babylon_page}}) {
+        const std::string path =
+            (chain.parent_path() / (chain.stem().string() + "." + client + ".html")).string();
         write_text_atomically(path, page_for(page, file));
         written.push_back(path);
     }

@@ -14,8 +14,8 @@ namespace boxlod {
 
 struct ViewerEvent {
     enum class Kind { key, drag, wheel } kind = Kind::key;
-    std::string key;        // SDL key name, lower case: "m", "w", "+", "f12", ...
-    float dx = 0, dy = 0;   // drag: pixels moved with the left button held; wheel: dy steps
+    std::string key;       // SDL key name, lower case: "m", "w", "+", "f12", ...
+    float dx = 0, dy = 0;  // drag: pixels moved with the left button held; wheel: dy steps
 };
 
 struct ViewerState {
@@ -27,14 +27,16 @@ struct ViewerState {
     bool axes = false, split_view = false, show_statistics = true, show_texture = false;
     int texture_page = 0;
     float texture_scale = 1;
-    bool light_follows_camera = true;  // the default light, as `boxlod render` places it; off once a light is set
+    bool light_follows_camera =
+        true;                  // the default light, as `boxlod render` places it; off once a light is set
     bool auto_update = true;   // the manual's Auto-Update: rebuild whenever a parameter changes
     bool needs_update = true;  // parameters changed since the LoD was built
     bool update_now = false;   // the manual's Update: rebuild even without auto-update
     int camera_position = 0;   // index into camera_position_names(), for the cycling key
     std::string message;       // the last action, for the overlay
     // Requests for the front end.
-    bool screenshot = false, save_parameters = false, load_parameters = false, export_lod = false, quit = false;
+    bool screenshot = false, save_parameters = false, load_parameters = false, export_lod = false,
+         quit = false;
 
     // The LoD currently shown (null at level 0 or for an LoD file) and what is drawn.
     std::unique_ptr<Chain> chain;  // level c as build --all-levels makes it (chain.h)
@@ -43,8 +45,9 @@ struct ViewerState {
 };
 
 // A state showing `model` with `settings` (the same defaults as `boxlod render`).
-ViewerState make_viewer_state(const Model& model, const LodParameters& parameters, const RenderSettings& settings,
-                              int width, int height, const Eigen::Vector3f& background);
+ViewerState make_viewer_state(const Model& model, const LodParameters& parameters,
+                              const RenderSettings& settings, int width, int height,
+                              const Eigen::Vector3f& background);
 
 // Keys as viewer_key_help() lists them. Returns true when the picture changes.
 bool apply_event(ViewerState& state, const ViewerEvent& event);

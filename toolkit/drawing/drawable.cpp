@@ -11,7 +11,8 @@
 namespace boxlod {
 
 MipTexture decode_texture(const Texture& texture, ColorSpace space) {
-    return texture.image16.empty() ? make_texture(texture.image, space, texture.wrap) : make_texture(texture.image16, texture.wrap);
+    return texture.image16.empty() ? make_texture(texture.image, space, texture.wrap)
+                                   : make_texture(texture.image16, texture.wrap);
 }
 
 namespace {
@@ -72,12 +73,14 @@ DecodedTextures decode_textures(const Model& model, TextureCache* cache, int thr
     DecodedTextures decoded;
     decoded.color.resize(model.textures.size());
     decoded.linear.resize(model.textures.size());
-    const std::vector<std::pair<int, ColorSpace>> wanted = textures_read(model.materials);  // decoded in parallel
+    const std::vector<std::pair<int, ColorSpace>> wanted =
+        textures_read(model.materials);  // decoded in parallel
     parallel_for(wanted.size(), threads, [&](std::size_t i) {
         auto [index, space] = wanted[i];
         const Texture& texture = model.textures[std::size_t(index)];
         (space == ColorSpace::srgb ? decoded.color : decoded.linear)[std::size_t(index)] =
-            cache ? cache->decode(texture, space) : std::make_shared<const MipTexture>(decode_texture(texture, space));
+            cache ? cache->decode(texture, space)
+                  : std::make_shared<const MipTexture>(decode_texture(texture, space));
     });
     return decoded;
 }
@@ -123,7 +126,8 @@ Drawable make_drawable(const Model& model, const DecodedTextures& textures, int 
     while (!stack.empty()) {
         const Node& node = model.nodes[stack.back()];
         stack.pop_back();
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back(*child);
         for (const Primitive& p : node.primitives) primitives.push_back(&p);
     }
     return make_drawable(model.materials, textures, primitives);

@@ -25,8 +25,9 @@ public:
     TextureCache();
     ~TextureCache();
     std::shared_ptr<const MipTexture> decode(const Texture& texture, ColorSpace space);
-    std::shared_ptr<const MipTexture> find(const Texture& texture, ColorSpace space) const;  // null if not decoded yet
-    std::size_t size() const;  // distinct decoded textures
+    std::shared_ptr<const MipTexture> find(const Texture& texture,
+                                           ColorSpace space) const;  // null if not decoded yet
+    std::size_t size() const;                                        // distinct decoded textures
 
 private:
     struct Entries;
@@ -64,6 +65,7 @@ struct DrawableModel {
     DecodedTextures textures;
     Drawable drawable;
 };
-std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache = nullptr, int threads = 1);
+std::unique_ptr<DrawableModel> make_drawable_model(const Model& model, TextureCache* cache = nullptr,
+                                                   int threads = 1);
 
 }  // namespace boxlod

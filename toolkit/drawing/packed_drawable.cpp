@@ -9,7 +9,8 @@
 namespace boxlod {
 namespace {
 
-// Level 1: the fastest; baked pages, flat regions of colour and normals, still deflate well (docs/city.md: Scale).
+// Level 1: the fastest; baked pages, flat regions of colour and normals, still deflate well (docs/city.md:
+// Scale).
 constexpr int compression_level = 1;
 
 // Plain arrays (indices, texels) and Eigen vectors, as their scalars in memory order.
@@ -27,7 +28,8 @@ void append(std::vector<std::uint8_t>& raw, const std::vector<T>& values) {
 }
 
 template <typename T>
-void take(const std::vector<std::uint8_t>& raw, std::size_t& offset, std::size_t count, std::vector<T>& values) {
+void take(const std::vector<std::uint8_t>& raw, std::size_t& offset, std::size_t count,
+          std::vector<T>& values) {
     values.resize(count);
     if constexpr (std::is_arithmetic_v<T>) {
         std::memcpy(values.data(), raw.data() + offset, count * sizeof(T));
@@ -41,7 +43,8 @@ void take(const std::vector<std::uint8_t>& raw, std::size_t& offset, std::size_t
 }
 
 std::size_t mesh_size(const PackedDrawable::MeshSizes& m) {
-    return (3 * m.positions + 3 * m.normals + 2 * m.uvs + 4 * m.tangents) * sizeof(float) + m.indices * sizeof(std::uint32_t);
+    return (3 * m.positions + 3 * m.normals + 2 * m.uvs + 4 * m.tangents) * sizeof(float) +
+           m.indices * sizeof(std::uint32_t);
 }
 
 // Bytes of a texture's mip chain as make_texture keeps it: RGBA8, or 16 bits a texel.
@@ -57,7 +60,8 @@ std::vector<std::uint8_t> deflate(const std::vector<std::uint8_t>& raw) {
     libdeflate_compressor* compressor = libdeflate_alloc_compressor(compression_level);
     if (!compressor) throw std::bad_alloc();
     std::vector<std::uint8_t> out(libdeflate_deflate_compress_bound(compressor, raw.size()));
-    std::size_t size = libdeflate_deflate_compress(compressor, raw.data(), raw.size(), out.data(), out.size());
+    std::size_t size =
+        libdeflate_deflate_compress(compressor, raw.data(), raw.size(), out.data(), out.size());
     libdeflate_free_compressor(compressor);
     if (size == 0) throw std::runtime_error("pack_drawable: deflate failed");
     out.resize(size);
@@ -70,10 +74,11 @@ std::vector<std::uint8_t> inflate(const PackedDrawable& packed) {
     libdeflate_decompressor* decompressor = libdeflate_alloc_decompressor();
     if (!decompressor) throw std::bad_alloc();
     std::size_t size = 0;
-    libdeflate_result result = libdeflate_deflate_decompress(decompressor, packed.bytes.data(), packed.bytes.size(),
-                                                             raw.data(), raw.size(), &size);
+    libdeflate_result result = libdeflate_deflate_decompress(
+        decompressor, packed.bytes.data(), packed.bytes.size(), raw.data(), raw.size(), &size);
     libdeflate_free_decompressor(decompressor);
-    if (result != LIBDEFLATE_SUCCESS || size != raw.size()) throw std::runtime_error("unpack_drawable: inflate failed");
+    if (result != LIBDEFLATE_SUCCESS || size != raw.size())
+        throw std::runtime_error("unpack_drawable: inflate failed");
     return raw;
 }
 
@@ -93,8 +98,8 @@ PackedDrawable pack_drawable(const Model& model, const TextureCache* shared, boo
 
     std::vector<std::uint8_t> raw;
     for (const auto& mesh : drawable.meshes) {
-        packed.meshes.push_back({mesh->positions.size(), mesh->normals.size(), mesh->uvs.size(), mesh->tangents.size(),
-                                 mesh->indices.size()});
+        packed.meshes.push_back({mesh->positions.size(), mesh->normals.size(), mesh->uvs.size(),
+                                 mesh->tangents.size(), mesh->indices.size()});
         append(raw, mesh->positions);
         append(raw, mesh->normals);
         append(raw, mesh->uvs);
@@ -106,11 +111,12 @@ PackedDrawable pack_drawable(const Model& model, const TextureCache* shared, boo
     for (auto [index, space] : textures_read(packed.materials)) {
         const Texture& texture = model.textures[std::size_t(index)];
         if (auto found = shared ? shared->find(texture, space) : nullptr) {
-            (space == ColorSpace::srgb ? packed.shared.color : packed.shared.linear)[std::size_t(index)] = found;
+            (space == ColorSpace::srgb ? packed.shared.color : packed.shared.linear)[std::size_t(index)] =
+                found;
             continue;
         }
-        PackedDrawable::OwnTexture own{index, space, texture.image.width, texture.image.height, texture.image.channels,
-                                       texture.wrap};
+        PackedDrawable::OwnTexture own{
+            index, space, texture.image.width, texture.image.height, texture.image.channels, texture.wrap};
         if (texture.image16.empty()) {
             append(raw, texture.image.pixels);
         } else {
@@ -170,8 +176,10 @@ std::unique_ptr<DrawableModel> unpack_drawable(const PackedDrawable& packed) {
 
 std::size_t packed_size(const PackedDrawable& packed) {
     return packed.bytes.capacity() + packed.meshes.size() * sizeof(PackedDrawable::MeshSizes) +
-           packed.own.size() * sizeof(PackedDrawable::OwnTexture) + packed.materials.size() * sizeof(Material) +
-           (packed.shared.color.size() + packed.shared.linear.size()) * sizeof(std::shared_ptr<const MipTexture>);
+           packed.own.size() * sizeof(PackedDrawable::OwnTexture) +
+           packed.materials.size() * sizeof(Material) +
+           (packed.shared.color.size() + packed.shared.linear.size()) *
+               sizeof(std::shared_ptr<const MipTexture>);
 }
 
 }  // namespace boxlod

@@ -7,7 +7,8 @@
 
 namespace boxlod {
 
-std::vector<const Drawable*> ResidentDrawables::acquire(const std::vector<const PackedDrawable*>& wanted, int threads) {
+std::vector<const Drawable*> ResidentDrawables::acquire(const std::vector<const PackedDrawable*>& wanted,
+                                                        int threads) {
     std::vector<const PackedDrawable*> missing;
     for (const PackedDrawable* packed : wanted) {
         auto [entry, added] = entries_.try_emplace(packed);
@@ -17,7 +18,8 @@ std::vector<const Drawable*> ResidentDrawables::acquire(const std::vector<const 
     {
         const ScopedTimer timer(counts_.unpack_seconds);
         std::vector<std::unique_ptr<DrawableModel>> unpacked(missing.size());
-        parallel_for(missing.size(), threads, [&](std::size_t i) { unpacked[i] = unpack_drawable(*missing[i]); });
+        parallel_for(missing.size(), threads,
+                     [&](std::size_t i) { unpacked[i] = unpack_drawable(*missing[i]); });
         for (std::size_t i = 0; i < missing.size(); ++i) {
             entries_[missing[i]].model = std::move(unpacked[i]);
             counts_.resident_bytes += missing[i]->unpacked_size;

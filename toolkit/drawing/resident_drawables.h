@@ -20,7 +20,7 @@ public:
     std::vector<const Drawable*> acquire(const std::vector<const PackedDrawable*>& wanted, int threads);
 
     struct Counts {
-        std::size_t unpacked = 0, evicted = 0;  // over all calls
+        std::size_t unpacked = 0, evicted = 0;           // over all calls
         std::size_t resident_bytes = 0, peak_bytes = 0;  // PackedDrawable::unpacked_size summed
         double unpack_seconds = 0;
     };

@@ -11,23 +11,27 @@
 namespace boxlod {
 namespace {
 
-[[noreturn]] void refuse_count(const std::string& file, const std::string& place, std::size_t count, std::size_t bytes) {
-    throw_input_error(file, place, "claims " + std::to_string(count) + " entries, more than the file's " + std::to_string(bytes) +
-                                       " bytes can hold");
+[[noreturn]] void refuse_count(const std::string& file, const std::string& place, std::size_t count,
+                               std::size_t bytes) {
+    throw_input_error(file, place,
+                      "claims " + std::to_string(count) + " entries, more than the file's " +
+                          std::to_string(bytes) + " bytes can hold");
 }
 
 // `count` entries of at least `entry_bytes` each within `available` bytes, without overflow.
 void check_fits(std::size_t count, std::size_t entry_bytes, std::size_t& available, const std::string& file,
                 const std::string& place) {
     std::size_t needed = 0;
-    if (!checked_multiply(count, entry_bytes, needed) || needed > available) refuse_count(file, place, count, available);
+    if (!checked_multiply(count, entry_bytes, needed) || needed > available)
+        refuse_count(file, place, count, available);
     available -= needed;
 }
 
 std::size_t parse_count(const std::string& word, const std::string& file, const std::string& place) {
     std::size_t value = 0;
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error != std::errc() || end != word.data() + word.size()) throw_input_error(file, place, "expected a count, got '" + word + "'");
+    if (error != std::errc() || end != word.data() + word.size())
+        throw_input_error(file, place, "expected a count, got '" + word + "'");
     return value;
 }
 
@@ -40,7 +44,11 @@ void check_ply(std::string_view bytes, const std::string& file) {
     std::istringstream header{std::string(bytes.substr(0, header_end))};
     std::size_t body = bytes.size() - std::min(bytes.size(), header_end + 11);
     bool ascii = true;
-    struct Element { std::string name; std::size_t count = 0, entry_bytes = 0; int line = 0; };
+    struct Element {
+        std::string name;
+        std::size_t count = 0, entry_bytes = 0;
+        int line = 0;
+    };
     std::vector<Element> elements;
     auto type_bytes = [](const std::string& type) -> std::size_t {
         if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
@@ -60,8 +68,8 @@ void check_ply(std::string_view bytes, const std::string& file) {
             elements.back().entry_bytes += ascii ? 2 : a == "list" ? type_bytes(b) : type_bytes(a);
     }
     for (const Element& element : elements)
-        check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body,
-                   file, "line " + std::to_string(element.line) + ": element '" + element.name + "'");
+        check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body, file,
+                   "line " + std::to_string(element.line) + ": element '" + element.name + "'");
 }
 
 // OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
@@ -79,7 +87,8 @@ void check_off(std::string_view bytes, const std::string& file) {
         }
         return false;
     };
-    if (!next_line() || line.find("OFF") == std::string::npos || line.find("BINARY") != std::string::npos) return;
+    if (!next_line() || line.find("OFF") == std::string::npos || line.find("BINARY") != std::string::npos)
+        return;
     // The counts follow "OFF" on its line or on the next.
     std::istringstream header(line.substr(line.find("OFF") + 3));
     std::string vertices_text, faces_text;
@@ -90,7 +99,8 @@ void check_off(std::string_view bytes, const std::string& file) {
     }
     if (!(header >> faces_text)) return;
     const std::string place = "line " + std::to_string(number);
-    std::size_t vertices = parse_count(vertices_text, file, place), faces = parse_count(faces_text, file, place);
+    std::size_t vertices = parse_count(vertices_text, file, place),
+                faces = parse_count(faces_text, file, place);
     std::size_t available = bytes.size();
     check_fits(vertices, 6, available, file, place + ": vertex count");
     check_fits(faces, 2, available, file, place + ": face count");
@@ -103,8 +113,9 @@ void check_off(std::string_view bytes, const std::string& file) {
         face >> corners;
         for (std::size_t k = 0; k < corners && face >> index; ++k)
             if (index < 0 || std::size_t(index) >= vertices)
-                throw_input_error(file, "line " + std::to_string(number), "vertex index " + std::to_string(index) + " out of range (" +
-                                                                          std::to_string(vertices) + " vertices)");
+                throw_input_error(file, "line " + std::to_string(number),
+                                  "vertex index " + std::to_string(index) + " out of range (" +
+                                      std::to_string(vertices) + " vertices)");
     }
 }
 
@@ -126,7 +137,8 @@ void check_xml_depth(std::string_view bytes, const std::string& file) {
         }
         std::size_t end = i + 1;
         for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
-            if (bytes[end] == '"' || bytes[end] == '\'') quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
+            if (bytes[end] == '"' || bytes[end] == '\'')
+                quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
         if (end >= bytes.size()) return;
         bool opens = next != '!' && next != '?' && bytes[end - 1] != '/';
         if (opens && ++depth > max_nesting_depth)
@@ -159,7 +171,9 @@ std::size_t each_reference(std::string_view bytes, std::size_t i, Reference&& re
     for (; i < bytes.size() && bytes[i] != ';'; ++i) {
         char c = bytes[i];
         if (c == '\'') {  // a string; '' is a quote inside it
-            for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
+            for (++i;
+                 i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\''));
+                 ++i)
                 if (bytes[i] == '\'') ++i;
         } else if (c == '(') {
             ++depth;
@@ -189,10 +203,15 @@ StepGraph read_step_graph(std::string_view bytes) {
         }
         return it->second;
     };
-    struct Relationship { const char* type; int relating, related; };  // attribute positions (IFC2x3 and IFC4)
-    static const Relationship relationships[] = {{"IFCRELAGGREGATES", 4, 5}, {"IFCRELNESTS", 4, 5},
+    struct Relationship {
+        const char* type;
+        int relating, related;
+    };  // attribute positions (IFC2x3 and IFC4)
+    static const Relationship relationships[] = {{"IFCRELAGGREGATES", 4, 5},
+                                                 {"IFCRELNESTS", 4, 5},
                                                  {"IFCRELCONTAINEDINSPATIALSTRUCTURE", 5, 4},
-                                                 {"IFCRELVOIDSELEMENT", 4, 5}, {"IFCRELFILLSELEMENT", 4, 5}};
+                                                 {"IFCRELVOIDSELEMENT", 4, 5},
+                                                 {"IFCRELFILLSELEMENT", 4, 5}};
     std::size_t i = bytes.find("DATA;");
     if (i == std::string_view::npos) return graph;
     while (i < bytes.size()) {
@@ -227,7 +246,10 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
     enum State : std::uint8_t { unseen, open, done };
     std::vector<State> state(edges.size(), unseen);
     std::vector<int> height(edges.size(), 0);
-    struct Frame { std::uint32_t node; std::size_t next; };
+    struct Frame {
+        std::uint32_t node;
+        std::size_t next;
+    };
     for (std::uint32_t root = 0; root < edges.size(); ++root) {
         if (state[root] != unseen) continue;
         std::vector<Frame> stack{{root, 0}};
@@ -236,7 +258,8 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
             Frame& frame = stack.back();
             if (frame.next < edges[frame.node].size()) {
                 std::uint32_t child = edges[frame.node][frame.next++];
-                std::string place = std::to_string(graph.ids[child]).insert(0, 1, '#');  // not "#" + ...: GCC 12's false -Wrestrict
+                std::string place = std::to_string(graph.ids[child])
+                                        .insert(0, 1, '#');  // not "#" + ...: GCC 12's false -Wrestrict
                 if (state[child] == open) throw_input_error(file, place, what + " form a cycle");
                 if (state[child] == unseen) {
                     if (stack.size() >= std::size_t(max_nesting_depth))
@@ -249,7 +272,8 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
             int h = 0;
             for (std::uint32_t child : edges[frame.node]) h = std::max(h, height[child] + 1);
             if (h > max_nesting_depth)
-                throw_input_error(file, "#" + std::to_string(graph.ids[frame.node]), what + " " + nesting_message());
+                throw_input_error(file, "#" + std::to_string(graph.ids[frame.node]),
+                                  what + " " + nesting_message());
             height[frame.node] = h;
             state[frame.node] = done;
             stack.pop_back();
@@ -260,7 +284,8 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
 void check_step(std::string_view bytes, const std::string& file) {
     std::size_t end = bytes.find_last_not_of(" \t\r\n");
     constexpr std::string_view trailer = "END-ISO-10303-21;";
-    if (end == std::string_view::npos || end + 1 < trailer.size() || bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
+    if (end == std::string_view::npos || end + 1 < trailer.size() ||
+        bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
         throw_input_error(file, "", "does not end with 'END-ISO-10303-21;' (truncated file?)");
     StepGraph graph = read_step_graph(bytes);
     check_acyclic_and_shallow(graph, graph.references, "references", file);

@@ -7,10 +7,10 @@
 #include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/model_bytes.h"
 
-#include <Eigen/LU>
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <Eigen/LU>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -37,14 +37,17 @@ Primitive convert_mesh(const aiMesh& mesh, const Eigen::Matrix4d& world) {
     bool mirrored = linear.determinant() < 0;
     for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
         const aiVector3D& p = mesh.mVertices[i];
-        out.positions.push_back((linear * Eigen::Vector3d(p.x, p.y, p.z) + world.topRightCorner<3, 1>()).cast<float>());
+        out.positions.push_back(
+            (linear * Eigen::Vector3d(p.x, p.y, p.z) + world.topRightCorner<3, 1>()).cast<float>());
         if (mesh.mNormals) {
             const aiVector3D& n = mesh.mNormals[i];
             Eigen::Vector3d normal = normal_matrix * Eigen::Vector3d(n.x, n.y, n.z);
             // Some exporters leave zero normals; keep them valid rather than NaN.
-            out.normals.push_back(normal.norm() > 0 ? normal.normalized().cast<float>() : Eigen::Vector3f(0, 0, 1));
+            out.normals.push_back(normal.norm() > 0 ? normal.normalized().cast<float>()
+                                                    : Eigen::Vector3f(0, 0, 1));
         }
-        if (mesh.mTextureCoords[0]) out.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
+        if (mesh.mTextureCoords[0])
+            out.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
     }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         const aiFace& face = mesh.mFaces[f];
@@ -93,10 +96,12 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
     if (material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
     std::string file = name.C_Str();
     Texture texture;
-    texture.name = utf8_or_latin1(fs::path(file).filename().string());  // the name; the file is read by its bytes
+    texture.name =
+        utf8_or_latin1(fs::path(file).filename().string());  // the name; the file is read by its bytes
     if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
         if (embedded->mHeight == 0) {
-            texture.image = decode_image({reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
+            texture.image = decode_image(
+                {reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
         } else {
             texture.image = Image8(int(embedded->mWidth), int(embedded->mHeight), 4);
             for (std::size_t i = 0; i < std::size_t(embedded->mWidth) * embedded->mHeight; ++i) {
@@ -118,19 +123,24 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
 // assimp allocates whatever a header claims: while it reads, the address
 // space may grow by this much only, so a claim of 10^9 vertices in a 170-byte
 // file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine.
-std::size_t address_space_allowance(std::size_t file_bytes) { return (std::size_t(2) << 30) + 256 * file_bytes; }
+std::size_t address_space_allowance(std::size_t file_bytes) {
+    return (std::size_t(2) << 30) + 256 * file_bytes;
+}
 
 // An assimp material as boxlod's: colours, opacity (blended below 1), Phong
 // specular terms as glTF's specular-glossiness, and its textures.
-Material convert_material(Model& model, const aiScene& scene, const aiMaterial& in, const fs::path& directory) {
+Material convert_material(Model& model, const aiScene& scene, const aiMaterial& in,
+                          const fs::path& directory) {
     Material material;
     material.name = utf8_or_latin1(in.GetName().C_Str());
     aiColor4D color;
-    if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
+    if (in.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+        in.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
         material.base_color = {color.r, color.g, color.b, color.a};
     float opacity;
     if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
-    if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
+    if (material.base_color[3] < 1)
+        material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
     // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
     aiColor3D specular;
     if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
@@ -154,7 +164,11 @@ Material convert_material(Model& model, const aiScene& scene, const aiMaterial& 
 // nodes use names them as instances of it.
 void add_nodes(Model& model, const aiScene& scene) {
     std::vector<int> mesh_users(scene.mNumMeshes, 0);
-    struct Visit { const aiNode* node; int parent; Eigen::Matrix4d parent_world; };
+    struct Visit {
+        const aiNode* node;
+        int parent;
+        Eigen::Matrix4d parent_world;
+    };
     std::vector<Visit> stack{{scene.mRootNode, -1, Eigen::Matrix4d::Identity()}};
     std::vector<std::pair<int, unsigned>> node_meshes;  // (boxlod node, assimp mesh)
     while (!stack.empty()) {
@@ -169,7 +183,8 @@ void add_nodes(Model& model, const aiScene& scene) {
             Primitive primitive = convert_mesh(*scene.mMeshes[mesh], world);
             if (!primitive.indices.empty()) model.nodes[index].primitives.push_back(std::move(primitive));
         }
-        for (unsigned c = visit.node->mNumChildren; c-- > 0;) stack.push_back({visit.node->mChildren[c], index, world});
+        for (unsigned c = visit.node->mNumChildren; c-- > 0;)
+            stack.push_back({visit.node->mChildren[c], index, world});
     }
     for (auto [node, mesh] : node_meshes)
         if (mesh_users[mesh] > 1) {
@@ -182,10 +197,11 @@ void add_nodes(Model& model, const aiScene& scene) {
 
 Model import_with_assimp(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "model file");
-    // A minute, and a second more per megabyte: many times what assimp takes (docs/performance.md: Reading IFC).
+    // A minute, and a second more per megabyte: many times what assimp takes (docs/performance.md: Reading
+    // IFC).
     const ChildLimits limits{address_space_allowance(file_bytes), 60 + double(file_bytes) / 1e6};
-    return model_from_bytes(
-        run_in_child([&] { return model_bytes(import_with_assimp_in_process(path)); }, limits, path, "assimp's importer"));
+    return model_from_bytes(run_in_child([&] { return model_bytes(import_with_assimp_in_process(path)); },
+                                         limits, path, "assimp's importer"));
 }
 
 Model import_with_assimp_in_process(const std::string& path) {
@@ -201,8 +217,9 @@ Model import_with_assimp_in_process(const std::string& path) {
     if (!scene || !scene->mRootNode) {
         std::string reason = importer.GetErrorString();
         if (reason.find("bad_alloc") != std::string::npos)
-            reason = "it would need more than " + std::to_string(address_space_allowance(bytes.size()) >> 20) +
-                     " MiB for a " + std::to_string(bytes.size()) + "-byte file (counts in the file too large?)";
+            reason = "it would need more than " +
+                     std::to_string(address_space_allowance(bytes.size()) >> 20) + " MiB for a " +
+                     std::to_string(bytes.size()) + "-byte file (counts in the file too large?)";
         else if (reason.starts_with("std::"))  // a bare C++ exception from deep in a reader
             reason = "malformed " + extension.substr(1) + " file (" + reason + ")";
         throw_input_error(path, "", reason.empty() ? "cannot read model" : "cannot read model: " + reason);

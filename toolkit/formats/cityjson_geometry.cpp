@@ -51,10 +51,14 @@ struct SemanticColour {
     Eigen::Vector3f colour;
 };
 const SemanticColour semantic_colours[] = {
-    {"RoofSurface", {0.50f, 0.12f, 0.08f}},       {"WallSurface", {0.75f, 0.72f, 0.65f}},
-    {"GroundSurface", {0.20f, 0.20f, 0.20f}},     {"ClosureSurface", {0.60f, 0.60f, 0.60f}},
-    {"OuterCeilingSurface", {0.55f, 0.55f, 0.55f}}, {"OuterFloorSurface", {0.45f, 0.45f, 0.45f}},
-    {"Window", {0.15f, 0.25f, 0.40f}},            {"Door", {0.30f, 0.17f, 0.08f}},
+    {"RoofSurface", {0.50f, 0.12f, 0.08f}},
+    {"WallSurface", {0.75f, 0.72f, 0.65f}},
+    {"GroundSurface", {0.20f, 0.20f, 0.20f}},
+    {"ClosureSurface", {0.60f, 0.60f, 0.60f}},
+    {"OuterCeilingSurface", {0.55f, 0.55f, 0.55f}},
+    {"OuterFloorSurface", {0.45f, 0.45f, 0.45f}},
+    {"Window", {0.15f, 0.25f, 0.40f}},
+    {"Door", {0.30f, 0.17f, 0.08f}},
 };
 const Eigen::Vector3f unnamed_colour{0.65f, 0.65f, 0.65f};
 
@@ -70,27 +74,31 @@ bool same_lod(const std::string& a, const std::string& b) {
 
 // A value of the semantics, material or texture tree one level down: an
 // array's entry i, a single value for all, or nothing.
-const json* entry(const CityPlace& at, const json* values, std::size_t i, std::size_t count, const char* name) {
+const json* entry(const CityPlace& at, const json* values, std::size_t i, std::size_t count,
+                  const char* name) {
     if (!values || values->is_null()) return nullptr;
     if (!values->is_array()) return values;
     if (values->size() != count)
-        at.fail(std::string(name) + " has " + std::to_string(values->size()) + " entries where boundaries has " +
-                std::to_string(count));
+        at.fail(std::string(name) + " has " + std::to_string(values->size()) +
+                " entries where boundaries has " + std::to_string(count));
     return &(*values)[i];
 }
 
 std::size_t index_in(const CityPlace& at, const json& value, std::size_t count, const std::string& what) {
-    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 || std::uint64_t(value.get<std::int64_t>()) >= count)
+    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+        std::uint64_t(value.get<std::int64_t>()) >= count)
         at.fail(what + " " + value.dump() + " is outside 0.." + std::to_string(std::int64_t(count) - 1));
     return std::size_t(value.get<std::int64_t>());
 }
 
 // The theme a geometry's material or texture object is read in: the file's
 // default theme where the object has it, else its first theme by name.
-const json* theme_values(const CityPlace& at, const json& geometry, const char* key, const std::string& default_theme) {
+const json* theme_values(const CityPlace& at, const json& geometry, const char* key,
+                         const std::string& default_theme) {
     auto themes = geometry.find(key);
     if (themes == geometry.end()) return nullptr;
-    if (!themes->is_object() || themes->empty()) at.fail(std::string("'") + key + "' is not an object of themes");
+    if (!themes->is_object() || themes->empty())
+        at.fail(std::string("'") + key + "' is not an object of themes");
     const json& theme = themes->contains(default_theme) ? themes->at(default_theme) : themes->begin().value();
     if (!theme.is_object()) at.fail(std::string("'") + key + "' theme is not an object");
     if (theme.contains("values")) return &theme.at("values");
@@ -114,12 +122,15 @@ Eigen::Vector3f colour_of(const CityPlace& at, const json& value, const char* na
 Material convert_material(const CityPlace& at, const json& in, std::size_t index) {
     if (!in.is_object()) at.fail("not an object");
     Material material;
-    material.name = in.contains("name") && in["name"].is_string() ? in["name"].get<std::string>() : "material " + std::to_string(index);
-    material.base_color.head<3>() = in.contains("diffuseColor") ? colour_of(at, in["diffuseColor"], "diffuseColor")
-                                                                 : Eigen::Vector3f(0.8f, 0.8f, 0.8f);  // X3D's default
+    material.name = in.contains("name") && in["name"].is_string() ? in["name"].get<std::string>()
+                                                                  : "material " + std::to_string(index);
+    material.base_color.head<3>() = in.contains("diffuseColor")
+                                        ? colour_of(at, in["diffuseColor"], "diffuseColor")
+                                        : Eigen::Vector3f(0.8f, 0.8f, 0.8f);  // X3D's default
     if (in.contains("transparency")) {
         const json& t = in["transparency"];
-        if (!t.is_number() || !(t.get<double>() >= 0 && t.get<double>() <= 1)) at.fail("transparency is not in [0, 1]");
+        if (!t.is_number() || !(t.get<double>() >= 0 && t.get<double>() <= 1))
+            at.fail("transparency is not in [0, 1]");
         material.base_color[3] = 1 - t.get<float>();
         if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;
     }
@@ -131,7 +142,6 @@ Material convert_material(const CityPlace& at, const json& in, std::size_t index
         material.shininess = std::clamp(in["shininess"].get<float>(), 0.0f, 1.0f) * 128 + 1;
     return material;
 }
-
 
 }  // namespace
 
@@ -146,7 +156,8 @@ struct CityReadState {
     const std::vector<Eigen::Vector3d>* vertices = nullptr;
     std::vector<Eigen::Vector2f> uvs;
     std::map<std::size_t, int> texture_of;  // appearance texture -> model texture (-1: missing)
-    std::map<std::tuple<int, int, std::string>, int> material_of;  // (material, texture, semantic type) -> model material
+    std::map<std::tuple<int, int, std::string>, int>
+        material_of;  // (material, texture, semantic type) -> model material
     std::string material_theme, texture_theme;
     // Over all documents:
     std::set<std::string> missing_textures, lods;
@@ -166,7 +177,8 @@ namespace {
 int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
     if (auto known = s.texture_of.find(t); known != s.texture_of.end()) return known->second;
     const json* textures = s.appearance("textures");
-    if (!textures || !textures->is_array()) at.fail("texture " + std::to_string(t) + " but the appearance has no 'textures'");
+    if (!textures || !textures->is_array())
+        at.fail("texture " + std::to_string(t) + " but the appearance has no 'textures'");
     const json& texture = (*textures)[index_in(at, json(t), textures->size(), "texture index")];
     if (!texture.is_object() || !texture.contains("image") || !texture["image"].is_string())
         at.fail("appearance: texture " + std::to_string(t) + " has no 'image'");
@@ -174,12 +186,17 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
     const fs::path path = fs::path(s.file).parent_path() / image;
     std::error_code error;
     int index = -1;
-    if (image.find("://") != std::string::npos || fs::path(image).is_absolute() || !fs::is_regular_file(path, error)) {
+    if (image.find("://") != std::string::npos || fs::path(image).is_absolute() ||
+        !fs::is_regular_file(path, error)) {
         s.missing_textures.insert(image);
     } else {
         Texture out{fs::path(image).filename().string(), read_image(path.string())};
-        const std::string wrap = texture.contains("wrapMode") && texture["wrapMode"].is_string() ? texture["wrapMode"].get<std::string>() : "none";
-        out.wrap = wrap == "wrap" || wrap == "mirror" ? Wrap::repeat : Wrap::clamp;  // CityGML's "none" and "border": no repeat
+        const std::string wrap = texture.contains("wrapMode") && texture["wrapMode"].is_string()
+                                     ? texture["wrapMode"].get<std::string>()
+                                     : "none";
+        out.wrap = wrap == "wrap" || wrap == "mirror"
+                       ? Wrap::repeat
+                       : Wrap::clamp;  // CityGML's "none" and "border": no repeat
         s.model.textures.push_back(std::move(out));
         index = int(s.model.textures.size()) - 1;
     }
@@ -189,13 +206,14 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
 
 // The model material for a surface: its appearance material and texture, or
 // its semantic type's colour.
-int material_index(const CityPlace& at, CityReadState& s, int material, int texture, const std::string& type) {
+int material_index(const CityPlace& at, CityReadState& s, int material, int texture,
+                   const std::string& type) {
     const auto key = std::make_tuple(material, texture, material < 0 && texture < 0 ? type : std::string());
     if (auto known = s.material_of.find(key); known != s.material_of.end()) return known->second;
     Material out;
     if (material >= 0) {
-        out = convert_material(at.in("appearance: material " + std::to_string(material)), (*s.appearance("materials"))[std::size_t(material)],
-                               std::size_t(material));
+        out = convert_material(at.in("appearance: material " + std::to_string(material)),
+                               (*s.appearance("materials"))[std::size_t(material)], std::size_t(material));
     } else if (texture < 0) {
         out.name = type.empty() ? "surface" : type;
         out.base_color.head<3>() = semantic_colour(type);
@@ -216,7 +234,8 @@ struct SurfaceNodes {
     std::map<std::size_t, int> node_of;
 };
 
-int surface_node(const CityPlace& at, CityReadState& s, SurfaceNodes& nodes, std::size_t surface, std::size_t depth = 0) {
+int surface_node(const CityPlace& at, CityReadState& s, SurfaceNodes& nodes, std::size_t surface,
+                 std::size_t depth = 0) {
     if (auto known = nodes.node_of.find(surface); known != nodes.node_of.end()) return known->second;
     if (depth > nodes.surfaces->size() || depth > std::size_t(max_nesting_depth))
         at.fail("semantics: the parents of surface " + std::to_string(surface) + " form a cycle");
@@ -225,7 +244,9 @@ int surface_node(const CityPlace& at, CityReadState& s, SurfaceNodes& nodes, std
         at.fail("semantics: surface " + std::to_string(surface) + " has no type");
     int parent = nodes.object_node;
     if (entry.contains("parent"))
-        parent = surface_node(at, s, nodes, index_in(at, entry["parent"], nodes.surfaces->size(), "semantics: parent"), depth + 1);
+        parent = surface_node(at, s, nodes,
+                              index_in(at, entry["parent"], nodes.surfaces->size(), "semantics: parent"),
+                              depth + 1);
     const std::string type = entry["type"].get<std::string>();
     const int node = add_node(s.model, parent, type + " " + std::to_string(surface));
     s.model.nodes[std::size_t(node)].rule = type;
@@ -245,7 +266,8 @@ struct GeometryEmission {
     CityReadState& s;
     const std::vector<Eigen::Vector3d>& vertices;
     SurfaceNodes nodes;
-    std::map<std::tuple<int, int, std::size_t, int>, std::uint32_t> vertex_of;  // (node, material, vertex, uv)
+    std::map<std::tuple<int, int, std::size_t, int>, std::uint32_t>
+        vertex_of;  // (node, material, vertex, uv)
 
     Primitive& primitive(int node, int material) {
         auto& primitives = s.model.nodes[std::size_t(node)].primitives;
@@ -280,13 +302,18 @@ std::vector<std::size_t> ring_indices(const CityPlace& at, const json& ring, std
 }
 
 // The uv indices of one ring from its texture value [t, uv, ...]; -1: untextured.
-int ring_texture(const CityPlace& at, const CityReadState& s, const json* value, std::size_t ring_size, std::vector<int>& uvs) {
-    if (!value || value->is_null() || !value->is_array() || value->empty() || (*value)[0].is_null()) return -1;
+int ring_texture(const CityPlace& at, const CityReadState& s, const json* value, std::size_t ring_size,
+                 std::vector<int>& uvs) {
+    if (!value || value->is_null() || !value->is_array() || value->empty() || (*value)[0].is_null())
+        return -1;
     if (value->size() != ring_size + 1)
-        at.fail("texture values: a ring of " + std::to_string(ring_size) + " vertices has " + std::to_string(value->size() - 1) + " uv indices");
+        at.fail("texture values: a ring of " + std::to_string(ring_size) + " vertices has " +
+                std::to_string(value->size() - 1) + " uv indices");
     const json* textures = s.appearance("textures");
-    const int texture = int(index_in(at, (*value)[0], textures && textures->is_array() ? textures->size() : 0, "texture index"));
-    for (std::size_t i = 1; i < value->size(); ++i) uvs.push_back(int(index_in(at, (*value)[i], s.uvs.size(), "uv index")));
+    const int texture = int(
+        index_in(at, (*value)[0], textures && textures->is_array() ? textures->size() : 0, "texture index"));
+    for (std::size_t i = 1; i < value->size(); ++i)
+        uvs.push_back(int(index_in(at, (*value)[i], s.uvs.size(), "uv index")));
     return texture;
 }
 
@@ -298,8 +325,8 @@ struct SurfaceRings {
     int texture = -1;
 };
 
-SurfaceRings read_rings(const CityPlace& at, const CityReadState& s, const json& polygon, const json* texture_values,
-                        std::size_t vertex_count) {
+SurfaceRings read_rings(const CityPlace& at, const CityReadState& s, const json& polygon,
+                        const json* texture_values, std::size_t vertex_count) {
     if (!polygon.is_array() || polygon.empty()) at.fail("a surface is not an array of rings");
     SurfaceRings out;
     std::size_t corners = 0;
@@ -315,27 +342,32 @@ SurfaceRings read_rings(const CityPlace& at, const CityReadState& s, const json&
     return out;
 }
 
-void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon, const SurfaceValues& values) {
+void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
+                  const SurfaceValues& values) {
     CityReadState& s = g.s;
     const auto [rings, uvs, texture] = read_rings(at, s, polygon, values.texture, g.vertices.size());
     int node = g.nodes.object_node;
     std::string type;
     if (values.semantic && !values.semantic->is_null()) {
         if (!g.nodes.surfaces) at.fail("semantics: values without surfaces");
-        const std::size_t surface = index_in(at, *values.semantic, g.nodes.surfaces->size(), "semantics: surface index");
+        const std::size_t surface =
+            index_in(at, *values.semantic, g.nodes.surfaces->size(), "semantics: surface index");
         node = surface_node(at, s, g.nodes, surface);
         type = s.model.nodes[std::size_t(node)].rule;
     }
     int material = -1;
     if (values.material && !values.material->is_null()) {
         const json* materials = s.appearance("materials");
-        material = int(index_in(at, *values.material, materials && materials->is_array() ? materials->size() : 0, "material index"));
+        material =
+            int(index_in(at, *values.material, materials && materials->is_array() ? materials->size() : 0,
+                         "material index"));
     }
     const int model_texture = texture >= 0 ? texture_index(at, s, std::size_t(texture)) : -1;
     // A surface that names no semantic type is coloured as the type its facing
     // suggests, so that a LoD without semantics (3DBAG's 1.2 and 1.3) is
     // drawn in the same colours as one with them.
-    const int model_material = material_index(at, s, material, model_texture, type.empty() ? facing_type(g.vertices, rings[0]) : type);
+    const int model_material = material_index(at, s, material, model_texture,
+                                              type.empty() ? facing_type(g.vertices, rings[0]) : type);
     Primitive& primitive = g.primitive(node, model_material);
     std::vector<std::vector<Eigen::Vector3d>> points;
     for (const auto& ring : rings) {
@@ -349,7 +381,8 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
         for (std::size_t v : ring) {
             const int uv = model_texture >= 0 ? uvs[k] : -1;
             ++k;
-            auto [it, added] = g.vertex_of.try_emplace({node, model_material, v, uv}, std::uint32_t(primitive.positions.size()));
+            auto [it, added] = g.vertex_of.try_emplace({node, model_material, v, uv},
+                                                       std::uint32_t(primitive.positions.size()));
             if (added) {
                 primitive.positions.push_back(g.local(g.vertices[v]));
                 if (uv >= 0) primitive.uvs.push_back(s.uvs[std::size_t(uv)]);
@@ -371,7 +404,8 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
 
 // Down the boundaries to the surfaces (a polygon: an array of rings), the
 // semantics, material and texture values alongside.
-void walk(const CityPlace& at, GeometryEmission& g, const json& boundaries, int depth, const SurfaceValues& values) {
+void walk(const CityPlace& at, GeometryEmission& g, const json& boundaries, int depth,
+          const SurfaceValues& values) {
     if (depth == 0) return emit_polygon(at, g, boundaries, values);
     if (!boundaries.is_array()) at.fail("boundaries are not nested as the geometry's type says");
     for (std::size_t i = 0; i < boundaries.size(); ++i) {
@@ -403,12 +437,14 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         at.fail("a GeometryInstance but the file has no geometry-templates");
     const json& list = templates->at("templates");
     const json& points = templates->at("vertices-templates");
-    if (!geometry.contains("template") || !list.is_array() || !points.is_array()) at.fail("a GeometryInstance without a template");
+    if (!geometry.contains("template") || !list.is_array() || !points.is_array())
+        at.fail("a GeometryInstance without a template");
     const json& shape = list[index_in(at, geometry["template"], list.size(), "template")];
     auto boundaries = geometry.find("boundaries");
     if (boundaries == geometry.end() || !boundaries->is_array() || boundaries->size() != 1)
         at.fail("a GeometryInstance's boundaries hold its one reference point");
-    const Eigen::Vector3d reference = (*s.vertices)[index_in(at, (*boundaries)[0], s.vertices->size(), "vertex index")];
+    const Eigen::Vector3d reference =
+        (*s.vertices)[index_in(at, (*boundaries)[0], s.vertices->size(), "vertex index")];
     auto matrix_value = geometry.find("transformationMatrix");
     if (matrix_value == geometry.end() || !matrix_value->is_array() || matrix_value->size() != 16)
         at.fail("'transformationMatrix' is not 16 numbers");
@@ -422,7 +458,8 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
     for (const json& p : points) {
         if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
             at.fail("vertices-templates: not three numbers");
-        const Eigen::Vector4d moved = matrix * Eigen::Vector4d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>(), 1);
+        const Eigen::Vector4d moved =
+            matrix * Eigen::Vector4d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>(), 1);
         placed.push_back(moved.head<3>() + reference);
         if (!(placed.back().array().abs() <= max_city_coordinate).all())
             at.fail("a placed template vertex lies beyond " + format_number(max_city_coordinate));
@@ -432,7 +469,8 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
 
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
                    const std::vector<Eigen::Vector3d>& vertices, bool in_template) {
-    if (!geometry.is_object() || !geometry.contains("type") || !geometry["type"].is_string()) at.fail("a geometry without a type");
+    if (!geometry.is_object() || !geometry.contains("type") || !geometry["type"].is_string())
+        at.fail("a geometry without a type");
     const std::string type = geometry["type"].get<std::string>();
     if (type == "GeometryInstance") {
         if (in_template) at.fail("a template that is itself a GeometryInstance");
@@ -445,7 +483,8 @@ void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, 
     g.nodes.object_node = object_node;
     SurfaceValues values;
     if (auto semantics = geometry.find("semantics"); semantics != geometry.end()) {
-        if (!semantics->is_object() || !semantics->contains("surfaces") || !(*semantics)["surfaces"].is_array())
+        if (!semantics->is_object() || !semantics->contains("surfaces") ||
+            !(*semantics)["surfaces"].is_array())
             at.fail("semantics without an array of surfaces");
         g.nodes.surfaces = &(*semantics)["surfaces"];
         if (semantics->contains("values")) values.semantic = &(*semantics)["values"];
@@ -461,14 +500,16 @@ CityGeometryReader::CityGeometryReader(Model& model, const std::string& file, co
     : state_(std::make_unique<CityReadState>(model, file, origin)) {}
 CityGeometryReader::~CityGeometryReader() = default;
 
-void CityGeometryReader::start_part(const CityPlace& at, const json& document, const std::vector<Eigen::Vector3d>& vertices) {
+void CityGeometryReader::start_part(const CityPlace& at, const json& document,
+                                    const std::vector<Eigen::Vector3d>& vertices) {
     CityReadState& s = *state_;
     s.document = &document;
     s.vertices = &vertices;
     s.uvs.clear();
     s.texture_of.clear();
     s.material_of.clear();
-    if (auto a = document.find("appearance"); a != document.end() && !a->is_object()) at.fail("'appearance' is not an object");
+    if (auto a = document.find("appearance"); a != document.end() && !a->is_object())
+        at.fail("'appearance' is not an object");
     if (const json* uvs = s.appearance("vertices-texture")) {
         if (!uvs->is_array()) at.fail("appearance: 'vertices-texture' is not an array");
         for (std::size_t i = 0; i < uvs->size(); ++i) {
@@ -476,22 +517,25 @@ void CityGeometryReader::start_part(const CityPlace& at, const json& document, c
             if (!uv.is_array() || uv.size() != 2 || !uv[0].is_number() || !uv[1].is_number() ||
                 !std::isfinite(uv[0].get<double>()) || !std::isfinite(uv[1].get<double>()))
                 at.fail("appearance: vertices-texture " + std::to_string(i) + " is not two numbers");
-            s.uvs.emplace_back(uv[0].get<float>(), 1 - uv[1].get<float>());  // CityGML's origin is bottom left, glTF's top left
+            s.uvs.emplace_back(uv[0].get<float>(),
+                               1 - uv[1].get<float>());  // CityGML's origin is bottom left, glTF's top left
         }
     }
     const json* material_theme = s.appearance("default-theme-material");
     const json* texture_theme = s.appearance("default-theme-texture");
-    s.material_theme = material_theme && material_theme->is_string() ? material_theme->get<std::string>() : "";
+    s.material_theme =
+        material_theme && material_theme->is_string() ? material_theme->get<std::string>() : "";
     s.texture_theme = texture_theme && texture_theme->is_string() ? texture_theme->get<std::string>() : "";
 }
 
-int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, const json& object, int parent_node,
-                                   const std::string& lod) {
+int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, const json& object,
+                                   int parent_node, const std::string& lod) {
     CityReadState& s = *state_;
     const CityPlace here = at.in("CityObjects '" + id + "'");
     const int node = add_node(s.model, parent_node, id);
     s.model.nodes[std::size_t(node)].source_id = id;
-    if (object.contains("type") && object["type"].is_string()) s.model.nodes[std::size_t(node)].rule = object["type"].get<std::string>();
+    if (object.contains("type") && object["type"].is_string())
+        s.model.nodes[std::size_t(node)].rule = object["type"].get<std::string>();
     auto geometries = object.find("geometry");
     if (geometries == object.end()) return node;
     if (!geometries->is_array()) here.fail("'geometry' is not an array");
@@ -516,19 +560,24 @@ void CityGeometryReader::finish(const std::string& lod) const {
     std::string lods;
     for (const std::string& l : s.lods) lods += (lods.empty() ? "" : ", ") + l;
     if (s.polygons == 0)
-        throw_input_error(s.file, "", lod.empty() ? "no surface to draw" : "no surface of LoD " + lod + " (the file has LoD " + lods + ")");
+        throw_input_error(s.file, "",
+                          lod.empty() ? "no surface to draw"
+                                      : "no surface of LoD " + lod + " (the file has LoD " + lods + ")");
     if (s.without_lod > 0)
         std::fprintf(stderr, "boxlod: warning: %s\n",
-                     input_message(s.file, "", std::to_string(s.without_lod) + " objects have no geometry of LoD " + lod +
-                                                   " (the file has LoD " + lods + "): drawn without them")
+                     input_message(s.file, "",
+                                   std::to_string(s.without_lod) + " objects have no geometry of LoD " + lod +
+                                       " (the file has LoD " + lods + "): drawn without them")
                          .c_str());
     if (!s.missing_textures.empty()) {
         std::string names;
         for (const std::string& name : s.missing_textures) names += (names.empty() ? "" : ", ") + name;
-        std::fprintf(stderr, "boxlod: warning: %s\n",
-                     input_message(s.file, "", std::to_string(s.missing_textures.size()) +
-                                                   " texture files are missing (" + names + "): their surfaces are drawn in their material colour")
-                         .c_str());
+        std::fprintf(
+            stderr, "boxlod: warning: %s\n",
+            input_message(s.file, "",
+                          std::to_string(s.missing_textures.size()) + " texture files are missing (" + names +
+                              "): their surfaces are drawn in their material colour")
+                .c_str());
     }
 }
 

@@ -38,10 +38,11 @@ double city_lod_number(const std::string& lod);
 // document's vertices (in the file's coordinates) and appearance, then
 // add_object for each object, parents first; finish says what was left out.
 class CityGeometryReader {
-  public:
+public:
     CityGeometryReader(Model& model, const std::string& file, const Eigen::Vector3d& origin);
     ~CityGeometryReader();
-    void start_part(const CityPlace& at, const nlohmann::json& document, const std::vector<Eigen::Vector3d>& vertices);
+    void start_part(const CityPlace& at, const nlohmann::json& document,
+                    const std::vector<Eigen::Vector3d>& vertices);
     // The object's node under `parent_node`, with its geometry of `lod`
     // ("": its finest) and a child node per semantic surface.
     int add_object(const CityPlace& at, const std::string& id, const nlohmann::json& object, int parent_node,
@@ -50,7 +51,7 @@ class CityGeometryReader {
     // prints one warning line for objects without the LoD and one for missing textures.
     void finish(const std::string& lod) const;
 
-  private:
+private:
     std::unique_ptr<CityReadState> state_;
 };
 

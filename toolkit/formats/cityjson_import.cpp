@@ -26,7 +26,7 @@ using json = nlohmann::json;
 // vertices and appearance, the first line's transform).
 struct Part {
     json document;
-    std::string line;  // "line N: " in a CityJSONSeq, else ""
+    std::string line;                       // "line N: " in a CityJSONSeq, else ""
     std::vector<Eigen::Vector3d> vertices;  // transformed: the file's coordinates
 };
 
@@ -35,7 +35,8 @@ struct Transform {
 };
 
 // A member's value with one line for each way it can be missing or wrong.
-const json& member(const CityPlace& at, const json& object, const char* name, json::value_t type, const char* what) {
+const json& member(const CityPlace& at, const json& object, const char* name, json::value_t type,
+                   const char* what) {
     auto it = object.find(name);
     if (it == object.end()) at.fail(std::string("missing member '") + name + "'");
     if (it->type() != type && !(type == json::value_t::number_float && it->is_number()))
@@ -50,7 +51,8 @@ Eigen::Vector3d read_triple(const CityPlace& at, const json& value, const char* 
         if (!value[i].is_number()) at.fail(std::string("'") + name + "' is not three numbers");
         out[i] = value[i].get<double>();
         if (!std::isfinite(out[i]) || (positive && !(out[i] > 0)))
-            at.fail(std::string("'") + name + "' holds " + value[i].dump() + (positive ? ": scales are positive" : ""));
+            at.fail(std::string("'") + name + "' holds " + value[i].dump() +
+                    (positive ? ": scales are positive" : ""));
     }
     return out;
 }
@@ -63,7 +65,8 @@ Transform read_transform(const CityPlace& at, const json& root) {
     const json& transform = member(at, root, "transform", json::value_t::object, "an object");
     const CityPlace in{at.file, at.place + "transform: "};
     return {read_triple(in, member(in, transform, "scale", json::value_t::array, "an array"), "scale", true),
-            read_triple(in, member(in, transform, "translate", json::value_t::array, "an array"), "translate", false)};
+            read_triple(in, member(in, transform, "translate", json::value_t::array, "an array"), "translate",
+                        false)};
 }
 
 void read_vertices(const CityPlace& at, Part& part, const Transform& transform) {
@@ -74,7 +77,8 @@ void read_vertices(const CityPlace& at, Part& part, const Transform& transform) 
         const Eigen::Vector3d stored = read_triple(in, vertices[i], "vertex", false);
         part.vertices.push_back(stored.cwiseProduct(transform.scale) + transform.translate);
         if (!(part.vertices.back().array().abs() <= max_city_coordinate).all())
-            in.fail("coordinates beyond " + format_number(max_city_coordinate) + " (the Earth is 1.3e7 m across)");
+            in.fail("coordinates beyond " + format_number(max_city_coordinate) +
+                    " (the Earth is 1.3e7 m across)");
     }
 }
 
@@ -84,14 +88,16 @@ void check_version(const CityPlace& at, const json& root, const char* type) {
     if (std::string(type) != "CityJSON") return;
     const json& version = member(at, root, "version", json::value_t::string, "a string");
     if (version != "1.1" && version != "2.0")
-        at.fail("version " + version.dump() + ": boxlod reads CityJSON 1.1 and 2.0 (cjio upgrades older files)");
+        at.fail("version " + version.dump() +
+                ": boxlod reads CityJSON 1.1 and 2.0 (cjio upgrades older files)");
 }
 
 json parse_json(const CityPlace& at, std::string_view text) {
     check_json_depth(text, at.file);
     try {
         return json::parse(text);
-    } catch (const json::exception& error) {  // a syntax error, or a number beyond a double (out_of_range.406)
+    } catch (
+        const json::exception& error) {  // a syntax error, or a number beyond a double (out_of_range.406)
         std::string what = error.what();
         what = what.substr(what.find(']') + 2);  // drop "[json.exception.parse_error.101] "
         at.fail("not valid JSON: " + what);
@@ -162,7 +168,8 @@ std::map<std::string, std::string> parents_of(const CityPlace& at, const json& o
                 if (!other.is_string() || !objects.contains(other.get<std::string>()))
                     in.fail(std::string(key) + ": " + other.dump() + " is not a CityObject of the file");
                 if (std::string(key) == "parents" && !parent.count(id)) parent[id] = other.get<std::string>();
-                if (std::string(key) == "children" && !parent.count(other.get<std::string>())) parent[other.get<std::string>()] = id;
+                if (std::string(key) == "children" && !parent.count(other.get<std::string>()))
+                    parent[other.get<std::string>()] = id;
             }
         }
     }
@@ -233,11 +240,14 @@ std::vector<std::string> cityjson_lods(const std::string& path) {
             auto geometries = object.is_object() ? object.find("geometry") : object.end();
             if (geometries == object.end() || !geometries->is_array()) continue;
             for (const json& geometry : *geometries)
-                if (geometry.is_object() && !city_geometry_lod(geometry).empty()) lods.insert(city_geometry_lod(geometry));
+                if (geometry.is_object() && !city_geometry_lod(geometry).empty())
+                    lods.insert(city_geometry_lod(geometry));
         }
     }
     std::vector<std::string> out(lods.begin(), lods.end());
-    std::stable_sort(out.begin(), out.end(), [](const std::string& a, const std::string& b) { return city_lod_number(a) > city_lod_number(b); });
+    std::stable_sort(out.begin(), out.end(), [](const std::string& a, const std::string& b) {
+        return city_lod_number(a) > city_lod_number(b);
+    });
     return out;
 }
 

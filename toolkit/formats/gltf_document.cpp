@@ -52,12 +52,13 @@ struct Writer {
     // Babylon.js disposes a level's meshes, and their instances, when the next
     // level replaces it: a level's nodes use glTF meshes of its own, copies
     // that share the accessors of a mesh an earlier level wrote.
-    std::map<int, int> level_copies;  // a mesh of an earlier level -> this level's copy
+    std::map<int, int> level_copies;                        // a mesh of an earlier level -> this level's copy
     std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
     std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
-    std::set<std::string> image_files;        // .gltf: the PNG names taken
+    std::set<std::string> image_files;                      // .gltf: the PNG names taken
 
-    Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}}, vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
+    Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}},
+        vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
         vec4{TINYGLTF_TARGET_ARRAY_BUFFER, 16, true, {}, {}},
         indices{TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0, true, {}, {}}, blobs{0, 0, false, {}, {}};
 
@@ -74,8 +75,10 @@ struct Writer {
     }
 
     // Appends bytes at a multiple of `alignment` (glTF: an accessor's offset is a
-    // multiple of its component size; 4 keeps floats aligned); returns (view, offset of the bytes within that view).
-    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size, std::size_t alignment = 4) {
+    // multiple of its component size; 4 keeps floats aligned); returns (view, offset of the bytes within that
+    // view).
+    std::pair<int, std::size_t> append(Stream& stream, const void* bytes, std::size_t size,
+                                       std::size_t alignment = 4) {
         while (stream.bytes.size() % alignment) stream.bytes.push_back(0);
         std::size_t offset = stream.bytes.size();
         const auto* p = static_cast<const unsigned char*>(bytes);
@@ -85,10 +88,13 @@ struct Writer {
         return {view, offset};
     }
 
-    int add_image(const std::vector<std::uint8_t>& png) { return append(blobs, png.data(), png.size()).first; }
+    int add_image(const std::vector<std::uint8_t>& png) {
+        return append(blobs, png.data(), png.size()).first;
+    }
 
     // An accessor of `count` values at `place` (view, offset), the last in the list.
-    tinygltf::Accessor& new_accessor(std::pair<int, std::size_t> place, int component_type, std::size_t count, int type) {
+    tinygltf::Accessor& new_accessor(std::pair<int, std::size_t> place, int component_type, std::size_t count,
+                                     int type) {
         tinygltf::Accessor& accessor = gltf.accessors.emplace_back();
         accessor.bufferView = place.first;
         accessor.byteOffset = place.second;
@@ -101,11 +107,15 @@ struct Writer {
     template <typename Vector>
     int add_accessor(const std::vector<Vector>& values, int type, bool bounds) {
         Stream& stream = sizeof(Vector) == 12 ? vec3 : sizeof(Vector) == 8 ? vec2 : vec4;
-        tinygltf::Accessor& accessor = new_accessor(append(stream, values.data(), values.size() * sizeof(Vector)),
-                                                    TINYGLTF_COMPONENT_TYPE_FLOAT, values.size(), type);
+        tinygltf::Accessor& accessor =
+            new_accessor(append(stream, values.data(), values.size() * sizeof(Vector)),
+                         TINYGLTF_COMPONENT_TYPE_FLOAT, values.size(), type);
         if (bounds && !values.empty()) {
             Vector lo = values[0], hi = values[0];
-            for (const Vector& v : values) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
+            for (const Vector& v : values) {
+                lo = lo.cwiseMin(v);
+                hi = hi.cwiseMax(v);
+            }
             for (int c = 0; c < lo.size(); ++c) {
                 accessor.minValues.push_back(json_number(lo[c]));
                 accessor.maxValues.push_back(json_number(hi[c]));
@@ -116,12 +126,12 @@ struct Writer {
 
     int add_indices(const std::vector<std::uint32_t>& values, int index_bytes) {
         if (index_bytes == 4) {
-            new_accessor(append(indices, values.data(), values.size() * 4), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                         values.size(), TINYGLTF_TYPE_SCALAR);
+            new_accessor(append(indices, values.data(), values.size() * 4),
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, values.size(), TINYGLTF_TYPE_SCALAR);
         } else {
             const std::vector<std::uint16_t> narrow(values.begin(), values.end());
-            new_accessor(append(indices, narrow.data(), narrow.size() * 2, 2), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                         narrow.size(), TINYGLTF_TYPE_SCALAR);
+            new_accessor(append(indices, narrow.data(), narrow.size() * 2, 2),
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, narrow.size(), TINYGLTF_TYPE_SCALAR);
         }
         return int(gltf.accessors.size()) - 1;
     }
@@ -162,7 +172,8 @@ struct Writer {
 // 2.0, 3.9.2; the validator's MESH_PRIMITIVE_TOO_FEW_TEXCOORDS): its material
 // is written without textures.
 bool drawn_untextured(const Model& model, const Primitive& primitive) {
-    return primitive.material >= 0 && primitive.uvs.empty() && samples_textures(model.materials[std::size_t(primitive.material)]);
+    return primitive.material >= 0 && primitive.uvs.empty() &&
+           samples_textures(model.materials[std::size_t(primitive.material)]);
 }
 
 // Which way each material is drawn: with its textures (or by nothing: as it
@@ -172,24 +183,29 @@ struct MaterialUse {
 };
 
 MaterialUse material_use(const Model& model) {
-    MaterialUse use{std::vector<bool>(model.materials.size(), false), std::vector<bool>(model.materials.size(), false)};
+    MaterialUse use{std::vector<bool>(model.materials.size(), false),
+                    std::vector<bool>(model.materials.size(), false)};
     for (const Node& node : model.nodes)
         for (const Primitive& primitive : node.primitives)
             if (primitive.material >= 0)
-                (drawn_untextured(model, primitive) ? use.untextured : use.textured)[std::size_t(primitive.material)] = true;
-    for (std::size_t m = 0; m < model.materials.size(); ++m) use.textured[m] = use.textured[m] || !use.untextured[m];
+                (drawn_untextured(model, primitive) ? use.untextured
+                                                    : use.textured)[std::size_t(primitive.material)] = true;
+    for (std::size_t m = 0; m < model.materials.size(); ++m)
+        use.textured[m] = use.textured[m] || !use.untextured[m];
     return use;
 }
 
 // The textures a material drawn with them samples, as PNG images: in the
 // .glb's buffer, or as files beside a .gltf (named after the texture where
 // that makes a plain .png name).
-void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs::path& target, bool binary, int threads) {
+void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs::path& target, bool binary,
+                int threads) {
     std::vector<bool> sampled(model.textures.size(), false);
     for (std::size_t m = 0; m < model.materials.size(); ++m)
         for (const auto& slot : texture_slots(model.materials[m]))
             if (use.textured[m] && slot.index >= 0) sampled[std::size_t(slot.index)] = true;
-    // A texture equal to one already written (a chain's levels share the original's) is referred to, not stored again.
+    // A texture equal to one already written (a chain's levels share the original's) is referred to, not
+    // stored again.
     w.textures.assign(model.textures.size(), -1);
     std::vector<std::size_t> fresh;
     for (std::size_t i = 0; i < model.textures.size(); ++i) {
@@ -197,7 +213,7 @@ void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs:
         int next = int(w.gltf.textures.size() + fresh.size());
         // (Digests only for chains: a single model's textures are distinct, and hashing pages costs.)
         auto [at, added] = w.share ? w.texture_of.try_emplace(texture_digest(model.textures[i]), next)
-                                            : std::pair{w.texture_of.end(), true};
+                                   : std::pair{w.texture_of.end(), true};
         w.textures[i] = added ? next : at->second;
         if (added) fresh.push_back(i);
     }
@@ -246,7 +262,8 @@ tinygltf::Material gltf_material(Writer& w, const Material& material) {
     tinygltf::Material out;
     out.name = material.name;
     out.pbrMetallicRoughness.baseColorFactor.clear();
-    for (int c = 0; c < 4; ++c) out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
+    for (int c = 0; c < 4; ++c)
+        out.pbrMetallicRoughness.baseColorFactor.push_back(json_number(material.base_color[c]));
     auto texture = [&](int index) { return index < 0 ? -1 : w.textures[std::size_t(index)]; };
     out.pbrMetallicRoughness.baseColorTexture.index = texture(material.base_color_texture);
     out.pbrMetallicRoughness.metallicFactor = 0;
@@ -258,22 +275,25 @@ tinygltf::Material gltf_material(Writer& w, const Material& material) {
     out.extras = material_extras(material, texture(material.height_texture));
     auto add_extension = [&](const char* name, tinygltf::Value value) {
         out.extensions[name] = std::move(value);
-        if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), name) == w.gltf.extensionsUsed.end())
+        if (std::find(w.gltf.extensionsUsed.begin(), w.gltf.extensionsUsed.end(), name) ==
+            w.gltf.extensionsUsed.end())
             w.gltf.extensionsUsed.push_back(name);
     };
     if (material.specular_glossiness)
-        add_extension(specular_glossiness_name, specular_glossiness_extension(material, texture(material.base_color_texture),
-                                                                              texture(material.specular_texture)));
+        add_extension(specular_glossiness_name,
+                      specular_glossiness_extension(material, texture(material.base_color_texture),
+                                                    texture(material.specular_texture)));
     if (const auto& specular = material.specular_extension)
-        add_extension(specular_extension_name,
-                      specular_extension_value(*specular, texture(specular->texture), texture(specular->color_texture)));
+        add_extension(specular_extension_name, specular_extension_value(*specular, texture(specular->texture),
+                                                                        texture(specular->color_texture)));
     return out;
 }
 
 // Its glTF index: an equal material's where the levels share them.
 int add_material(Writer& w, const Material& material) {
     const tinygltf::Material out = gltf_material(w, material);
-    const auto equal = w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
+    const auto equal =
+        w.share ? std::find(w.gltf.materials.begin(), w.gltf.materials.end(), out) : w.gltf.materials.end();
     if (equal != w.gltf.materials.end()) return int(equal - w.gltf.materials.begin());
     w.gltf.materials.push_back(out);
     return int(w.gltf.materials.size()) - 1;
@@ -287,20 +307,23 @@ void add_materials(Writer& w, const Model& model, const MaterialUse& use) {
         Material untextured = model.materials[m];
         for (const auto& slot : texture_slots(untextured)) *slot.index = -1;
         w.materials.push_back(add_material(w, use.textured[m] ? model.materials[m] : untextured));
-        w.untextured_materials.push_back(use.textured[m] && use.untextured[m] ? add_material(w, untextured) : w.materials.back());
+        w.untextured_materials.push_back(use.textured[m] && use.untextured[m] ? add_material(w, untextured)
+                                                                              : w.materials.back());
     }
 }
 
 int material_of(const Writer& w, const Model& model, const Primitive& primitive) {
     if (primitive.material < 0) return -1;
-    return (drawn_untextured(model, primitive) ? w.untextured_materials : w.materials)[std::size_t(primitive.material)];
+    return (drawn_untextured(model, primitive) ? w.untextured_materials
+                                               : w.materials)[std::size_t(primitive.material)];
 }
 
 // FNV-1a over a node's positions and indices: finds candidates for sharing.
 std::uint64_t geometry_hash(const Node& node) {
     std::uint64_t h = 14695981039346656037ull;
     auto mix = [&](const void* data, std::size_t bytes) {
-        for (std::size_t i = 0; i < bytes; ++i) h = (h ^ static_cast<const std::uint8_t*>(data)[i]) * 1099511628211ull;
+        for (std::size_t i = 0; i < bytes; ++i)
+            h = (h ^ static_cast<const std::uint8_t*>(data)[i]) * 1099511628211ull;
     };
     for (const Primitive& p : node.primitives) {
         mix(p.positions.data(), p.positions.size() * sizeof(p.positions[0]));
@@ -313,8 +336,8 @@ bool same_primitives(const Node& a, const Node& b) {
     if (a.primitives.size() != b.primitives.size()) return false;
     for (std::size_t i = 0; i < a.primitives.size(); ++i) {
         const Primitive &x = a.primitives[i], &y = b.primitives[i];
-        if (x.positions != y.positions || x.normals != y.normals || x.uvs != y.uvs || x.tangents != y.tangents ||
-            x.indices != y.indices || x.polygon_count != y.polygon_count)
+        if (x.positions != y.positions || x.normals != y.normals || x.uvs != y.uvs ||
+            x.tangents != y.tangents || x.indices != y.indices || x.polygon_count != y.polygon_count)
             return false;
     }
     return true;
@@ -324,7 +347,8 @@ bool same_primitives(const Node& a, const Node& b) {
 int written_mesh(const Writer& w, const Node& node, std::uint64_t hash, const std::vector<int>& materials) {
     auto [begin, end] = w.meshes.equal_range(hash);
     for (auto it = begin; it != end; ++it)
-        if (it->second.materials == materials && same_primitives(*it->second.node, node)) return it->second.mesh;
+        if (it->second.materials == materials && same_primitives(*it->second.node, node))
+            return it->second.mesh;
     return -1;
 }
 
@@ -346,10 +370,12 @@ void add_nodes(Writer& w, const Model& model) {
         out.extras_json_string = node_extras_json(node);
         // A node with no member at all (an unnamed, empty OBJ group) is named
         // by its index: glTF readers differ on empty objects, and tinygltf wrote null.
-        if (out.name.empty() && out.children.empty() && !node.has_geometry() && out.extras_json_string.empty())
+        if (out.name.empty() && out.children.empty() && !node.has_geometry() &&
+            out.extras_json_string.empty())
             out.name = "node " + std::to_string(w.gltf.nodes.size());
         std::vector<int> materials;
-        for (const Primitive& primitive : node.primitives) materials.push_back(material_of(w, model, primitive));
+        for (const Primitive& primitive : node.primitives)
+            materials.push_back(material_of(w, model, primitive));
         const std::uint64_t hash = w.share && node.has_geometry() ? geometry_hash(node) : 0;
         const int shared = w.share && node.has_geometry() ? written_mesh(w, node, hash, materials) : -1;
         if (shared >= 0) {
@@ -363,9 +389,12 @@ void add_nodes(Writer& w, const Model& model) {
                 p.mode = TINYGLTF_MODE_TRIANGLES;
                 p.material = materials[mesh.primitives.size()];
                 p.attributes["POSITION"] = w.add_accessor(primitive.positions, TINYGLTF_TYPE_VEC3, true);
-                if (layout.normals) p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
-                if (layout.uvs) p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
-                if (layout.tangents) p.attributes["TANGENT"] = w.add_accessor(primitive.tangents, TINYGLTF_TYPE_VEC4, false);
+                if (layout.normals)
+                    p.attributes["NORMAL"] = w.add_accessor(primitive.normals, TINYGLTF_TYPE_VEC3, false);
+                if (layout.uvs)
+                    p.attributes["TEXCOORD_0"] = w.add_accessor(primitive.uvs, TINYGLTF_TYPE_VEC2, false);
+                if (layout.tangents)
+                    p.attributes["TANGENT"] = w.add_accessor(primitive.tangents, TINYGLTF_TYPE_VEC4, false);
                 p.indices = w.add_indices(primitive.indices, layout.index_bytes);
                 p.extras = primitive_extras(primitive);
                 mesh.primitives.push_back(p);
@@ -389,7 +418,8 @@ void add_nodes(Writer& w, const Model& model) {
 void sequence_levels(Writer& w) {
     const std::size_t levels = w.level_meshes_begin.size();
     auto meshes_of = [&](std::size_t k) {
-        return std::pair{std::size_t(w.level_meshes_begin[k]), k + 1 < levels ? std::size_t(w.level_meshes_begin[k + 1]) : w.gltf.meshes.size()};
+        return std::pair{std::size_t(w.level_meshes_begin[k]),
+                         k + 1 < levels ? std::size_t(w.level_meshes_begin[k + 1]) : w.gltf.meshes.size()};
     };
     std::map<int, std::set<std::size_t>> levels_of;  // an index accessor -> the levels drawing it
     for (std::size_t k = 0; k < levels; ++k)
@@ -399,12 +429,16 @@ void sequence_levels(Writer& w) {
         tinygltf::Primitive* smallest = nullptr;
         for (std::size_t m = meshes_of(k).first; m < meshes_of(k).second; ++m)
             for (tinygltf::Primitive& p : w.gltf.meshes[m].primitives)
-                if (!smallest || w.gltf.accessors[std::size_t(p.indices)].count < w.gltf.accessors[std::size_t(smallest->indices)].count)
+                if (!smallest || w.gltf.accessors[std::size_t(p.indices)].count <
+                                     w.gltf.accessors[std::size_t(smallest->indices)].count)
                     smallest = &p;
         if (!smallest) continue;
         tinygltf::Accessor accessor = w.gltf.accessors[std::size_t(smallest->indices)];
-        const std::size_t bytes = accessor.count * std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)));
-        const auto begin = w.indices.bytes.begin() + std::ptrdiff_t(accessor.byteOffset);  // the indices' view starts the stream
+        const std::size_t bytes =
+            accessor.count *
+            std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType)));
+        const auto begin = w.indices.bytes.begin() +
+                           std::ptrdiff_t(accessor.byteOffset);  // the indices' view starts the stream
         w.level_buffers.emplace_back(begin, begin + std::ptrdiff_t(bytes));
         tinygltf::BufferView view;
         view.buffer = int(w.level_buffers.size());
@@ -428,8 +462,8 @@ void sequence_levels(Writer& w) {
 // extension, coarsest last, with switch hints in extras.MSFT_screencoverage
 // (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod) and extras.boxlod.switch_distances.
 // A model with an origin (a city file's) hangs under a node that moves it there.
-void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches, const Node& finest_root,
-               const Eigen::Vector3d& origin) {
+void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches,
+               const Node& finest_root, const Eigen::Vector3d& origin) {
     tinygltf::Scene scene;
     scene.nodes = {roots[0]};
     if (!origin.isZero()) {

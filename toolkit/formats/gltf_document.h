@@ -2,8 +2,8 @@
 // (toolkit/formats/gltf_io.h says what it holds), as tinygltf's structs;
 // toolkit/formats/gltf_json.h turns it into a file's text.
 #pragma once
-#include "toolkit/model/model.h"
 #include "toolkit/model/lod_switch.h"
+#include "toolkit/model/model.h"
 
 #include <tiny_gltf.h>
 

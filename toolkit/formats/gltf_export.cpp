@@ -10,9 +10,13 @@
 
 namespace boxlod {
 
-void export_gltf(const Model& model, const std::string& path, int threads) { export_gltf_lods({&model}, {}, path, threads); }
+void export_gltf(const Model& model, const std::string& path, int threads) {
+    export_gltf_lods({&model}, {}, path, threads);
+}
 
-std::string gltf_binary(const Model& model, int threads) { return glb_bytes(gltf_document({&model}, {}, "model.glb", true, threads)); }
+std::string gltf_binary(const Model& model, int threads) {
+    return glb_bytes(gltf_document({&model}, {}, "model.glb", true, threads));
+}
 
 void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector<LodSwitch>& switches,
                       const std::string& path, int threads) {

@@ -33,10 +33,12 @@ tinygltf::Value number_array(const float* values, int n) {
 }
 
 template <int N>
-Eigen::Matrix<float, N, 1> read_numbers(const tinygltf::Value& v, const ExtrasPlace& at, const std::string& field) {
+Eigen::Matrix<float, N, 1> read_numbers(const tinygltf::Value& v, const ExtrasPlace& at,
+                                        const std::string& field) {
     Eigen::Matrix<float, N, 1> out;
     if (!v.IsArray() || int(v.ArrayLen()) != N)
-        throw_input_error(at.file, at.place + " " + field, "expected an array of " + std::to_string(N) + " numbers");
+        throw_input_error(at.file, at.place + " " + field,
+                          "expected an array of " + std::to_string(N) + " numbers");
     for (int i = 0; i < N; ++i) {
         if (!v.Get(i).IsNumber()) throw_input_error(at.file, at.place + " " + field, "expected a number");
         out[i] = float(v.Get(i).GetNumberAsDouble());
@@ -68,7 +70,8 @@ Scope read_scope(const tinygltf::Value& v, const ExtrasPlace& at) {
 double json_number(float value) {
     if (value == 0) return 0;  // -0 too, as format_number writes it
     char digits[32];
-    const char* end = std::to_chars(digits, digits + sizeof digits, value).ptr;  // the float's shortest digits
+    const char* end =
+        std::to_chars(digits, digits + sizeof digits, value).ptr;  // the float's shortest digits
     double number = 0;
     std::from_chars(digits, end, number);
     return number;
@@ -77,7 +80,8 @@ double json_number(float value) {
 tinygltf::Value asset_extras(const Model& model) {
     if (!model.is_lod) return {};
     tinygltf::Value::Object params;
-    for (const auto& [key, value] : model.lod_params) params[key] = tinygltf::Value(utf8_or_latin1(value));  // a path may be neither
+    for (const auto& [key, value] : model.lod_params)
+        params[key] = tinygltf::Value(utf8_or_latin1(value));  // a path may be neither
     return boxlod_object({{"lod", tinygltf::Value(true)}, {"params", tinygltf::Value(std::move(params))}});
 }
 
@@ -86,12 +90,15 @@ tinygltf::Value material_extras(const Material& material, int height_image) {
                                    {"shininess", tinygltf::Value(json_number(material.shininess))}};
     // glTF has no height-map slot; the image index travels in extras.
     if (height_image >= 0) extras["height_texture"] = tinygltf::Value(height_image);
-    if (height_image >= 0 && material.height_depth > 0) extras["height_depth"] = tinygltf::Value(json_number(material.height_depth));
+    if (height_image >= 0 && material.height_depth > 0)
+        extras["height_depth"] = tinygltf::Value(json_number(material.height_depth));
     return boxlod_object(std::move(extras));
 }
 
 std::string node_extras_json(const Node& node, const std::vector<LodSwitch>& switches) {
-    if (node.rule.empty() && node.instance_of.empty() && node.source_id.empty() && !node.scope && switches.empty()) return "";
+    if (node.rule.empty() && node.instance_of.empty() && node.source_id.empty() && !node.scope &&
+        switches.empty())
+        return "";
     JsonText j;
     auto numbers = [&](const char* name, const float* values) {
         if (name) j.key(name);
@@ -103,7 +110,8 @@ std::string node_extras_json(const Node& node, const std::vector<LodSwitch>& swi
         j.key(name);
         j.begin_array();
         for (const LodSwitch& s : switches) j.number(json_number(float(s.*field)));
-        if (field == &LodSwitch::screen_coverage) j.number(0);  // the coarsest level is drawn however small: culling is the engine's call
+        if (field == &LodSwitch::screen_coverage)
+            j.number(0);  // the coarsest level is drawn however small: culling is the engine's call
         j.end_array();
     };
     j.begin_object();
@@ -148,8 +156,9 @@ tinygltf::Value origin_node_extras() { return boxlod_object({{"origin", tinygltf
 
 bool is_origin_node(const tinygltf::Node& node) {
     const tinygltf::Value* fields = boxlod_fields(node.extras);
-    return fields && fields->Has("origin") && fields->Get("origin").IsBool() && fields->Get("origin").Get<bool>() &&
-           node.translation.size() == 3 && node.rotation.empty() && node.scale.empty() && node.matrix.empty() && node.mesh < 0;
+    return fields && fields->Has("origin") && fields->Get("origin").IsBool() &&
+           fields->Get("origin").Get<bool>() && node.translation.size() == 3 && node.rotation.empty() &&
+           node.scale.empty() && node.matrix.empty() && node.mesh < 0;
 }
 
 void read_asset_extras(const tinygltf::Value& extras, Model& model) {
@@ -159,34 +168,42 @@ void read_asset_extras(const tinygltf::Value& extras, Model& model) {
     if (fields->Has("params") && fields->Get("params").IsObject()) {
         const tinygltf::Value& params = fields->Get("params");
         for (const std::string& key : params.Keys())
-            model.lod_params.emplace_back(key, params.Get(key).IsString() ? params.Get(key).Get<std::string>() : "");
+            model.lod_params.emplace_back(
+                key, params.Get(key).IsString() ? params.Get(key).Get<std::string>() : "");
     }
 }
 
-void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at, Material& material) {
+void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at,
+                          Material& material) {
     const tinygltf::Value* fields = boxlod_fields(extras);
     if (!fields) return;
-    if (fields->Has("specular")) material.specular_color = read_numbers<3>(fields->Get("specular"), at, "specular");
+    if (fields->Has("specular"))
+        material.specular_color = read_numbers<3>(fields->Get("specular"), at, "specular");
     if (fields->Has("shininess")) material.shininess = float(fields->Get("shininess").GetNumberAsDouble());
     if (fields->Has("height_texture") && fields->Get("height_texture").IsNumber()) {
         int texture = int(fields->Get("height_texture").GetNumberAsDouble());
-        if (texture < 0 || texture >= image_count) throw_input_error(at.file, at.place, "height_texture out of range");
+        if (texture < 0 || texture >= image_count)
+            throw_input_error(at.file, at.place, "height_texture out of range");
         material.height_texture = texture;
     }
     if (fields->Has("height_depth")) {
-        if (!fields->Get("height_depth").IsNumber()) throw_input_error(at.file, at.place, "height_depth must be a number");
-        material.height_depth = float(fields->Get("height_depth").GetNumberAsDouble());  // range: validate_model
+        if (!fields->Get("height_depth").IsNumber())
+            throw_input_error(at.file, at.place, "height_depth must be a number");
+        material.height_depth =
+            float(fields->Get("height_depth").GetNumberAsDouble());  // range: validate_model
     }
 }
 
 void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node& node) {
     const tinygltf::Value* fields = boxlod_fields(extras);
     if (!fields) return;
-    if (fields->Has("rule") && fields->Get("rule").IsString()) node.rule = fields->Get("rule").Get<std::string>();
+    if (fields->Has("rule") && fields->Get("rule").IsString())
+        node.rule = fields->Get("rule").Get<std::string>();
     if (fields->Has("scope")) node.scope = read_scope(fields->Get("scope"), at);
     if (fields->Has("instance_of") && fields->Get("instance_of").IsString())
         node.instance_of = fields->Get("instance_of").Get<std::string>();
-    if (fields->Has("source_id") && fields->Get("source_id").IsString()) node.source_id = fields->Get("source_id").Get<std::string>();
+    if (fields->Has("source_id") && fields->Get("source_id").IsString())
+        node.source_id = fields->Get("source_id").Get<std::string>();
 }
 
 void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Primitive& primitive) {
@@ -194,8 +211,10 @@ void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at,
     if (!fields || !fields->Has("polygons")) return;
     const tinygltf::Value& polygons = fields->Get("polygons");
     // Each polygon is at least one triangle.
-    if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 && polygons.GetNumberAsDouble() <= double(primitive.triangle_count())))
-        throw_input_error(at.file, at.place, "extras.boxlod.polygons must be a count of at most the primitive's triangles");
+    if (!polygons.IsNumber() || !(polygons.GetNumberAsDouble() >= 0 &&
+                                  polygons.GetNumberAsDouble() <= double(primitive.triangle_count())))
+        throw_input_error(at.file, at.place,
+                          "extras.boxlod.polygons must be a count of at most the primitive's triangles");
     primitive.polygon_count = std::size_t(polygons.GetNumberAsDouble());
 }
 
@@ -211,7 +230,9 @@ float shininess_of_glossiness(float glossiness) {
 
 namespace {
 
-tinygltf::Value texture_info(int index) { return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}}); }
+tinygltf::Value texture_info(int index) {
+    return tinygltf::Value(tinygltf::Value::Object{{"index", tinygltf::Value(index)}});
+}
 
 // A material extension's object, read field by field; `here` names it in errors.
 struct ExtensionReader {
@@ -221,12 +242,14 @@ struct ExtensionReader {
 
     // N numbers in [min, max], or `defaults` when the field is absent.
     template <int N>
-    Eigen::Matrix<float, N, 1> factors(const char* field, const Eigen::Matrix<float, N, 1>& defaults, NumberRange range) const {
+    Eigen::Matrix<float, N, 1> factors(const char* field, const Eigen::Matrix<float, N, 1>& defaults,
+                                       NumberRange range) const {
         if (!extension.Has(field)) return defaults;
         auto values = read_numbers<N>(extension.Get(field), here, field);
         if (!((values.array() >= range.min).all() && (values.array() <= range.max).all()))
-            throw_input_error(here.file, here.place + " " + field,
-                              "expected numbers in [" + format_number(range.min) + ", " + format_number(range.max) + "]");
+            throw_input_error(
+                here.file, here.place + " " + field,
+                "expected numbers in [" + format_number(range.min) + ", " + format_number(range.max) + "]");
         return values;
     }
     float factor(const char* field, float fallback) const {
@@ -243,7 +266,8 @@ struct ExtensionReader {
         if (!info.IsObject() || !info.Get("index").IsNumber())
             throw_input_error(here.file, here.place + " " + field, "expected a textureInfo with an index");
         const double index = info.Get("index").GetNumberAsDouble();
-        if (!(index >= 0 && index <= 1e9)) throw_input_error(here.file, here.place + " " + field, "texture index out of range");
+        if (!(index >= 0 && index <= 1e9))
+            throw_input_error(here.file, here.place + " " + field, "texture index out of range");
         return texture_image(int(index));
     }
 };
@@ -259,11 +283,14 @@ constexpr NumberRange unit_range{0, 1};
 
 }  // namespace
 
-tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture) {
-    tinygltf::Value::Object fields{{"diffuseFactor", number_array(material.base_color.data(), 4)},
-                                   {"specularFactor", number_array(material.specular_color.data(), 3)},
-                                   {"glossinessFactor", tinygltf::Value(json_number(material.glossiness >= 0 ? material.glossiness
-                                                                                                  : glossiness_of_shininess(material.shininess)))}};
+tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture,
+                                              int specular_texture) {
+    tinygltf::Value::Object fields{
+        {"diffuseFactor", number_array(material.base_color.data(), 4)},
+        {"specularFactor", number_array(material.specular_color.data(), 3)},
+        {"glossinessFactor",
+         tinygltf::Value(json_number(
+             material.glossiness >= 0 ? material.glossiness : glossiness_of_shininess(material.shininess)))}};
     if (diffuse_texture >= 0) fields["diffuseTexture"] = texture_info(diffuse_texture);
     if (specular_texture >= 0) fields["specularGlossinessTexture"] = texture_info(specular_texture);
     return tinygltf::Value(std::move(fields));
@@ -295,7 +322,8 @@ SpecularExtension read_specular_extension(const tinygltf::Value& extension, cons
     const ExtensionReader in = extension_reader(extension, at, specular_extension_name, texture_image);
     SpecularExtension specular;
     specular.factor = in.factor("specularFactor", 1);
-    specular.color_factor = in.factors<3>("specularColorFactor", Eigen::Vector3f(1, 1, 1), specular_color_factor_range);
+    specular.color_factor =
+        in.factors<3>("specularColorFactor", Eigen::Vector3f(1, 1, 1), specular_color_factor_range);
     specular.texture = in.texture("specularTexture");
     specular.color_texture = in.texture("specularColorTexture");
     return specular;

@@ -5,8 +5,8 @@
 // returns a null Value when it has nothing to say; each reader throws
 // InputError "FILE: PLACE: what" for a field of the wrong form.
 #pragma once
-#include "toolkit/model/model.h"
 #include "toolkit/model/lod_switch.h"
+#include "toolkit/model/model.h"
 
 #include <tiny_gltf.h>
 
@@ -36,15 +36,18 @@ struct ExtrasPlace {
 };
 
 void read_asset_extras(const tinygltf::Value& extras, Model& model);
-void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at, Material& material);
+void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at,
+                          Material& material);
 void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node& node);
-void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Primitive& primitive);  // after its indices
+void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at,
+                           Primitive& primitive);  // after its indices
 
 // KHR_materials_pbrSpecularGlossiness (KhronosGroup/glTF, extensions/2.0/Archived)
 // for a material with `specular_glossiness`: diffuse = base colour, specular =
 // the Phong specular colour, glossiness from the shininess. Texture indices are glTF's (< 0: none).
 constexpr const char* specular_glossiness_name = "KHR_materials_pbrSpecularGlossiness";
-tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture, int specular_texture);
+tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture,
+                                              int specular_texture);
 // Reads that extension into `material` (every factor in [0, 1] as the extension
 // requires); `texture_image` maps a glTF texture index to boxlod's texture.
 void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,

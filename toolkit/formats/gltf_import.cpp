@@ -11,9 +11,9 @@
 #include "toolkit/formats/gltf_extras.h"
 #include "toolkit/formats/gltf_structure.h"
 
+#include <tiny_gltf.h>
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
-#include <tiny_gltf.h>
 
 #include <cstring>
 #include <filesystem>
@@ -49,7 +49,8 @@ struct Reader {
         if (accessor.bufferView < 0 || accessor.bufferView >= int(gltf.bufferViews.size()))
             fail(where, "buffer view out of range");
         const tinygltf::BufferView& buffer_view = gltf.bufferViews[accessor.bufferView];
-        if (buffer_view.buffer < 0 || buffer_view.buffer >= int(gltf.buffers.size())) fail(where, "buffer out of range");
+        if (buffer_view.buffer < 0 || buffer_view.buffer >= int(gltf.buffers.size()))
+            fail(where, "buffer out of range");
         const tinygltf::Buffer& buffer = gltf.buffers[buffer_view.buffer];
         int component_size = tinygltf::GetComponentSizeInBytes(accessor.componentType);
         int components = tinygltf::GetNumComponentsInType(accessor.type);
@@ -62,36 +63,63 @@ struct Reader {
         if (stride < element) fail(where, "byteStride is smaller than an element");
         // Every size here comes from the file: checked against overflow before it is added.
         std::size_t needed = 0;
-        if (accessor.count > 0 && (!checked_multiply(accessor.count - 1, stride, needed) || needed > SIZE_MAX - element))
+        if (accessor.count > 0 &&
+            (!checked_multiply(accessor.count - 1, stride, needed) || needed > SIZE_MAX - element))
             fail(where, "count " + std::to_string(accessor.count) + " is larger than any buffer");
         if (accessor.count > 0) needed += element;
         if (!range_fits(buffer_view.byteOffset, buffer_view.byteLength, buffer.data.size()) ||
             !range_fits(accessor.byteOffset, needed, buffer_view.byteLength))
             fail(where, "data runs past the end of its buffer (truncated file?)");
-        return {buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset, stride, accessor.count, accessor.componentType,
-                components, accessor.normalized};
+        return {buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset,
+                stride,
+                accessor.count,
+                accessor.componentType,
+                components,
+                accessor.normalized};
     }
 
     static double component(const unsigned char* p, int type, bool normalized) {
         switch (type) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : *p;
-            case TINYGLTF_COMPONENT_TYPE_BYTE: { auto v = double(std::int8_t(*p)); return normalized ? std::max(v / 127.0, -1.0) : v; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0 : v; }
-            case TINYGLTF_COMPONENT_TYPE_SHORT: { std::int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0, -1.0) : v; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
-            default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : *p;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            auto v = double(std::int8_t(*p));
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        default: return 0;
         }
     }
 
     template <int N>
     std::vector<Eigen::Matrix<double, N, 1>> vectors(int index, const std::string& place) const {
         View v = view(index, place);
-        if (v.components != N) fail(place + " accessor " + std::to_string(index), "expected " + std::to_string(N) + " components");
+        if (v.components != N)
+            fail(place + " accessor " + std::to_string(index),
+                 "expected " + std::to_string(N) + " components");
         int size = tinygltf::GetComponentSizeInBytes(v.component_type);
         std::vector<Eigen::Matrix<double, N, 1>> out(v.count);
         for (std::size_t i = 0; i < v.count; ++i)
-            for (int c = 0; c < N; ++c) out[i][c] = component(v.data + i * v.stride + c * size, v.component_type, v.normalized);
+            for (int c = 0; c < N; ++c)
+                out[i][c] = component(v.data + i * v.stride + c * size, v.component_type, v.normalized);
         return out;
     }
 
@@ -114,7 +142,8 @@ struct Reader {
 // rotation quaternion (4) and scale (3).
 Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader, const std::string& place) {
     auto sized = [&](const std::vector<double>& v, std::size_t n, const char* what) {
-        if (!v.empty() && v.size() != n) reader.fail(place, std::string(what) + " must have " + std::to_string(n) + " numbers");
+        if (!v.empty() && v.size() != n)
+            reader.fail(place, std::string(what) + " must have " + std::to_string(n) + " numbers");
         return !v.empty();
     };
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
@@ -123,7 +152,8 @@ Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader
         return m;
     }
     Eigen::Affine3d t = Eigen::Affine3d::Identity();
-    if (sized(node.translation, 3, "translation")) t.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
+    if (sized(node.translation, 3, "translation"))
+        t.translate(Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]));
     if (sized(node.rotation, 4, "rotation")) {
         Eigen::Quaterniond q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
         if (!(std::abs(q.norm() - 1) < 1e-3)) reader.fail(place, "rotation is not a unit quaternion");
@@ -138,9 +168,12 @@ std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, i
     if (mode == TINYGLTF_MODE_TRIANGLES) return in;
     std::vector<std::uint32_t> out;
     for (std::size_t i = 2; i < in.size(); ++i) {
-        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) out.insert(out.end(), {in[0], in[i - 1], in[i]});
-        else if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
-        else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+            out.insert(out.end(), {in[0], in[i - 1], in[i]});
+        else if (i % 2 == 0)
+            out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+        else
+            out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
     }
     return out;
 }
@@ -181,18 +214,24 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
         check_count(tangents.size(), "TANGENT");
         for (const auto& v : tangents) {
             Eigen::Vector3d t = (linear * v.head<3>()).normalized();
-            out.tangents.emplace_back(float(t.x()), float(t.y()), float(t.z()), float(mirrored ? -v.w() : v.w()));
+            out.tangents.emplace_back(float(t.x()), float(t.y()), float(t.z()),
+                                      float(mirrored ? -v.w() : v.w()));
         }
     }
     std::vector<std::uint32_t> indices;
-    if (in.indices >= 0) indices = reader.indices(in.indices, place);
-    else for (std::uint32_t i = 0; i < n; ++i) indices.push_back(i);
+    if (in.indices >= 0)
+        indices = reader.indices(in.indices, place);
+    else
+        for (std::uint32_t i = 0; i < n; ++i) indices.push_back(i);
     for (std::uint32_t i : indices)
-        if (i >= n) reader.fail(place, "vertex index " + std::to_string(i) + " out of range (" + std::to_string(n) + " vertices)");
+        if (i >= n)
+            reader.fail(place, "vertex index " + std::to_string(i) + " out of range (" + std::to_string(n) +
+                                   " vertices)");
     out.indices = triangle_list(indices, in.mode == -1 ? TINYGLTF_MODE_TRIANGLES : in.mode);
     if (out.indices.size() % 3 != 0) reader.fail(place, "index count is not a multiple of 3");
     if (mirrored)
-        for (std::size_t i = 0; i < out.indices.size(); i += 3) std::swap(out.indices[i + 1], out.indices[i + 2]);
+        for (std::size_t i = 0; i < out.indices.size(); i += 3)
+            std::swap(out.indices[i + 1], out.indices[i + 2]);
     out.polygon_count = out.triangle_count();
     read_primitive_extras(in.extras, {reader.file, place}, out);
     if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
@@ -204,10 +243,12 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
 int texture_image(const Reader& reader, int texture, int tex_coord, const std::string& place) {
     if (texture < 0) return -1;
     if (tex_coord != 0)
-        reader.fail(place, "a texture read with TEXCOORD_" + std::to_string(tex_coord) + " (boxlod reads TEXCOORD_0 only)");
+        reader.fail(place, "a texture read with TEXCOORD_" + std::to_string(tex_coord) +
+                               " (boxlod reads TEXCOORD_0 only)");
     if (texture >= int(reader.gltf.textures.size())) reader.fail(place, "texture index out of range");
     int source = reader.gltf.textures[texture].source;
-    if (source < 0 || source >= int(reader.gltf.images.size())) reader.fail(place, "texture has no valid image");
+    if (source < 0 || source >= int(reader.gltf.images.size()))
+        reader.fail(place, "texture has no valid image");
     return source;
 }
 
@@ -222,8 +263,8 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string*, const std::s
 // tinygltf's image callback: our decoders, so that a broken image is named by
 // its own file and a claimed size is checked before anything is allocated.
 // 16-bit grey stays 16-bit (height maps); everything else becomes RGBA8.
-bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
-                int size, void* gltf_file) {
+bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                const unsigned char* bytes, int size, void* gltf_file) {
     const std::string& file = *static_cast<const std::string*>(gltf_file);
     std::string name = image->uri.empty() ? file + ": image " + std::to_string(index)
                                           : (fs::path(file).parent_path() / image->uri).string();
@@ -232,7 +273,8 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
         Image16 decoded = decode_image16(encoded, name);
         image->image.resize(decoded.pixels.size() * 2);
         for (std::size_t i = 0; i < decoded.pixels.size(); ++i)
-            image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff), image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
+            image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff),
+                             image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
         image->width = decoded.width;
         image->height = decoded.height;
         image->component = 1;
@@ -252,8 +294,10 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
 
 // `height_map`: the image serves only as a height texture, so a 16-bit grey
 // image keeps its 16 bits; as colour or normals it becomes 8-bit grey.
-Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& reader, const std::string& place) {
-    if (in.image.empty() || in.width <= 0 || in.height <= 0) reader.fail(place, "image '" + in.uri + "' could not be loaded");
+Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& reader,
+                      const std::string& place) {
+    if (in.image.empty() || in.width <= 0 || in.height <= 0)
+        reader.fail(place, "image '" + in.uri + "' could not be loaded");
     Texture texture;
     texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
     if (in.bits == 8) {
@@ -262,14 +306,16 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
         return texture;
     }
     Image16 grey(in.width, in.height, 1);
-    for (std::size_t i = 0; i < grey.pixels.size(); ++i) grey.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
+    for (std::size_t i = 0; i < grey.pixels.size(); ++i)
+        grey.pixels[i] = std::uint16_t(in.image[i * 2] | in.image[i * 2 + 1] << 8);
     if (height_map) {
         texture.image16 = std::move(grey);
         return texture;
     }
     texture.image = Image8(in.width, in.height, 4, 255);
     for (std::size_t i = 0; i < grey.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) texture.image.pixels[i * 4 + std::size_t(c)] = std::uint8_t(grey.pixels[i] >> 8);
+        for (int c = 0; c < 3; ++c)
+            texture.image.pixels[i * 4 + std::size_t(c)] = std::uint8_t(grey.pixels[i] >> 8);
     return texture;
 }
 
@@ -277,24 +323,29 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
 tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string& path) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
-    tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file, &tinygltf::WriteWholeFile, nullptr};
+    tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file,
+                                &tinygltf::WriteWholeFile, nullptr};
     loader.SetFsCallbacks(files);
     tinygltf::Model gltf;
     std::string error, warning, directory = fs::path(path).parent_path().string();
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    bool ok = binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
-                     : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()), directory);
+    bool ok =
+        binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
+               : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()),
+                                            directory);
     if (!ok) throw_input_error(path, "", error.empty() ? "malformed glTF" : error);
     return gltf;
 }
 
 // The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
-void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place, Material& material) {
+void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place,
+                              Material& material) {
     auto texture = [&](int index) { return texture_image(reader, index, 0, place); };
     if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
         read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
     if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())
-        material.specular_extension = read_specular_extension(extension->second, {reader.file, place}, texture);
+        material.specular_extension =
+            read_specular_extension(extension->second, {reader.file, place}, texture);
 }
 
 // One texture per image; an image that is only a height map keeps 16 bits.
@@ -302,24 +353,30 @@ void read_textures(const Reader& reader, Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
     std::vector<bool> colour_or_normal(gltf.images.size(), false);
     for (std::size_t t = 0; t < gltf.textures.size(); ++t)
-        if (gltf.textures[t].sampler >= int(gltf.samplers.size())) reader.fail("texture " + std::to_string(t), "sampler index out of range");
+        if (gltf.textures[t].sampler >= int(gltf.samplers.size()))
+            reader.fail("texture " + std::to_string(t), "sampler index out of range");
     for (std::size_t m = 0; m < gltf.materials.size(); ++m) {
         const std::string place = "material " + std::to_string(m);
         const tinygltf::Material& material = gltf.materials[m];
-        for (const auto& [texture, tex_coord] : {std::pair{material.pbrMetallicRoughness.baseColorTexture.index,
-                                                           material.pbrMetallicRoughness.baseColorTexture.texCoord},
-                                                 std::pair{material.normalTexture.index, material.normalTexture.texCoord}})
-            if (int image = texture_image(reader, texture, tex_coord, place); image >= 0) colour_or_normal[std::size_t(image)] = true;
+        for (const auto& [texture, tex_coord] :
+             {std::pair{material.pbrMetallicRoughness.baseColorTexture.index,
+                        material.pbrMetallicRoughness.baseColorTexture.texCoord},
+              std::pair{material.normalTexture.index, material.normalTexture.texCoord}})
+            if (int image = texture_image(reader, texture, tex_coord, place); image >= 0)
+                colour_or_normal[std::size_t(image)] = true;
         Material extensions;  // only for the images they name, all 8-bit
         read_material_extensions(reader, gltf.materials[m], place, extensions);
         for (const auto& slot : texture_slots(std::as_const(extensions)))
             if (slot.index >= 0) colour_or_normal[std::size_t(slot.index)] = true;
     }
     for (std::size_t i = 0; i < gltf.images.size(); ++i)
-        model.textures.push_back(convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
-    for (const tinygltf::Texture& texture : gltf.textures)  // an image sampled clamped to its edge (LoD pages)
+        model.textures.push_back(
+            convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
+    for (const tinygltf::Texture& texture :
+         gltf.textures)  // an image sampled clamped to its edge (LoD pages)
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
-            texture.sampler < int(gltf.samplers.size()) && gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+            texture.sampler < int(gltf.samplers.size()) &&
+            gltf.samplers[texture.sampler].wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
             model.textures[std::size_t(texture.source)].wrap = Wrap::clamp;
 }
 
@@ -331,15 +388,19 @@ void read_materials(const Reader& reader, Model& model) {
         Material material;
         material.name = in.name;
         const auto& factor = in.pbrMetallicRoughness.baseColorFactor;
-        if (factor.size() == 4) material.base_color = Eigen::Vector4d(factor[0], factor[1], factor[2], factor[3]).cast<float>();
-        material.base_color_texture =
-            texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index, in.pbrMetallicRoughness.baseColorTexture.texCoord, place);
-        material.normal_texture = texture_image(reader, in.normalTexture.index, in.normalTexture.texCoord, place);
+        if (factor.size() == 4)
+            material.base_color = Eigen::Vector4d(factor[0], factor[1], factor[2], factor[3]).cast<float>();
+        material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index,
+                                                    in.pbrMetallicRoughness.baseColorTexture.texCoord, place);
+        material.normal_texture =
+            texture_image(reader, in.normalTexture.index, in.normalTexture.texCoord, place);
         material.double_sided = in.doubleSided;
         if (!parse_enum(alpha_modes(), in.alphaMode, material.alpha_mode))
-            reader.fail(place, "alphaMode '" + in.alphaMode + "' is not " + enum_names(alpha_modes(), ", ", " or "));
+            reader.fail(place,
+                        "alphaMode '" + in.alphaMode + "' is not " + enum_names(alpha_modes(), ", ", " or "));
         if (!alpha_cutoff_range.contains(in.alphaCutoff))
-            reader.fail(place, "alphaCutoff " + out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
+            reader.fail(place, "alphaCutoff " +
+                                   out_of_range_message(alpha_cutoff_range, std::to_string(in.alphaCutoff)));
         material.alpha_cutoff = float(in.alphaCutoff);
         read_material_extensions(reader, in, place, material);
         read_material_extras(in.extras, int(gltf.images.size()), {reader.file, place}, material);
@@ -353,7 +414,8 @@ std::vector<int> scene_roots(const Reader& reader) {
     std::vector<int> roots;
     int scene = gltf.defaultScene >= 0 ? gltf.defaultScene : (gltf.scenes.empty() ? -1 : 0);
     if (scene >= int(gltf.scenes.size())) reader.fail("", "default scene out of range");
-    if (scene >= 0) roots = gltf.scenes[scene].nodes;
+    if (scene >= 0)
+        roots = gltf.scenes[scene].nodes;
     else {
         std::vector<bool> is_child(gltf.nodes.size());
         for (const auto& node : gltf.nodes)
@@ -373,8 +435,10 @@ std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model
     const tinygltf::Node& node = reader.gltf.nodes[std::size_t(roots[0])];
     if (!is_origin_node(node)) return roots;
     model.origin = Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]);
-    if (!model.origin.allFinite()) reader.fail("node " + std::to_string(roots[0]), "origin translation is NaN or infinite");
-    if (node.children.empty()) reader.fail("node " + std::to_string(roots[0]), "origin node without children");
+    if (!model.origin.allFinite())
+        reader.fail("node " + std::to_string(roots[0]), "origin translation is NaN or infinite");
+    if (node.children.empty())
+        reader.fail("node " + std::to_string(roots[0]), "origin node without children");
     return node.children;
 }
 
@@ -386,10 +450,14 @@ std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>&
     if (roots.size() == 1 && roots[0] >= 0 && roots[0] < int(reader.gltf.nodes.size())) {
         const auto& extensions = reader.gltf.nodes[std::size_t(roots[0])].extensions;
         auto lod = extensions.find("MSFT_lod");
-        if (lod != extensions.end() && lod->second.Has("ids") && lod->second.Get("ids").IsArray()) ids = &lod->second.Get("ids");
+        if (lod != extensions.end() && lod->second.Has("ids") && lod->second.Get("ids").IsArray())
+            ids = &lod->second.Get("ids");
     }
-    if (!ids) reader.fail(place, "not an LoD chain: the scene's root has no MSFT_lod ids (build --chain writes them)");
-    if (chain_level > int(ids->ArrayLen())) reader.fail(place, "the chain has levels 0.." + std::to_string(ids->ArrayLen()));
+    if (!ids)
+        reader.fail(place,
+                    "not an LoD chain: the scene's root has no MSFT_lod ids (build --chain writes them)");
+    if (chain_level > int(ids->ArrayLen()))
+        reader.fail(place, "the chain has levels 0.." + std::to_string(ids->ArrayLen()));
     const tinygltf::Value& id = ids->Get(chain_level - 1);
     if (!id.IsInt() || id.GetNumberAsInt() < 0 || id.GetNumberAsInt() >= int(reader.gltf.nodes.size()))
         reader.fail(place, "MSFT_lod id is not a node index");
@@ -414,7 +482,11 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
         pending.insert(pending.end(), node.children.begin(), node.children.end());
     }
-    struct Visit { int gltf_node; int parent; Eigen::Matrix4d parent_world; };
+    struct Visit {
+        int gltf_node;
+        int parent;
+        Eigen::Matrix4d parent_world;
+    };
     std::vector<Visit> stack;
     if (roots.size() > 1) add_node(model, -1, fs::path(reader.file).stem().string());
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
@@ -424,8 +496,10 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         Visit visit = stack.back();
         stack.pop_back();
         std::string place = "node " + std::to_string(visit.gltf_node);
-        if (visit.gltf_node < 0 || visit.gltf_node >= int(gltf.nodes.size())) reader.fail(place, "node index out of range");
-        if (visited[visit.gltf_node]) reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
+        if (visit.gltf_node < 0 || visit.gltf_node >= int(gltf.nodes.size()))
+            reader.fail(place, "node index out of range");
+        if (visited[visit.gltf_node])
+            reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
         visited[visit.gltf_node] = true;
         const tinygltf::Node& in = gltf.nodes[visit.gltf_node];
         Eigen::Matrix4d world = visit.parent_world * local_transform(in, reader, place);
@@ -438,8 +512,11 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         if (in.mesh >= 0) {
             const tinygltf::Mesh& mesh = gltf.meshes[in.mesh];
             for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                read_primitive(reader, mesh.primitives[p], world, place + " mesh " + std::to_string(in.mesh) + " primitive " + std::to_string(p), node);
-            if (mesh_users[in.mesh] > 1) node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
+                read_primitive(reader, mesh.primitives[p], world,
+                               place + " mesh " + std::to_string(in.mesh) + " primitive " + std::to_string(p),
+                               node);
+            if (mesh_users[in.mesh] > 1)
+                node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
         }
         read_node_extras(in.extras, {reader.file, place}, node);
         for (auto child = in.children.rbegin(); child != in.children.rend(); ++child)
@@ -451,7 +528,8 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
 
 Model import_gltf(const std::string& path, int chain_level) {
     const bool binary = fs::path(path).extension() == ".glb";
-    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path, chain_level);
+    return import_gltf_bytes(read_input_file(path, binary ? "glb file" : "glTF file"), binary, path,
+                             chain_level);
 }
 
 // The steps: the structure checked (and what a loader must refuse), tinygltf's
@@ -465,7 +543,9 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_textures(reader, model);
     read_materials(reader, model);
     read_asset_extras(gltf.asset.extras, model);
-    read_nodes(reader, chain_level_roots(reader, take_origin(reader, scene_roots(reader), model), chain_level), model);
+    read_nodes(reader,
+               chain_level_roots(reader, take_origin(reader, scene_roots(reader), model), chain_level),
+               model);
     make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;

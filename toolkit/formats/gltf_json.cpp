@@ -151,7 +151,8 @@ void accessor(JsonText& j, const tinygltf::Accessor& a) {
     integer_member(j, "componentType", a.componentType);
     integer_member(j, "count", std::int64_t(a.count));
     extras(j, a.extras);
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || a.componentType == TINYGLTF_COMPONENT_TYPE_DOUBLE) {
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+        a.componentType == TINYGLTF_COMPONENT_TYPE_DOUBLE) {
         numbers(j, "max", a.maxValues);
         numbers(j, "min", a.minValues);
     } else {  // whole numbers (tinygltf #301)
@@ -161,8 +162,11 @@ void accessor(JsonText& j, const tinygltf::Accessor& a) {
     name_member(j, a.name);
     if (a.normalized) boolean_member(j, "normalized", true);
     static const char* const types[] = {"", "", "VEC2", "VEC3", "VEC4"};
-    const std::string type = a.type == TINYGLTF_TYPE_SCALAR ? "SCALAR" : a.type >= 2 && a.type <= 4 ? types[a.type] : "";
-    if (type.empty()) throw std::logic_error("glTF text: accessor type " + std::to_string(a.type) + " is not written");
+    const std::string type = a.type == TINYGLTF_TYPE_SCALAR ? "SCALAR"
+                             : a.type >= 2 && a.type <= 4   ? types[a.type]
+                                                            : "";
+    if (type.empty())
+        throw std::logic_error("glTF text: accessor type " + std::to_string(a.type) + " is not written");
     string_member(j, "type", type);
 }
 
@@ -207,8 +211,7 @@ void buffer(JsonText& j, const tinygltf::Buffer& b, const std::string* uri) {
     name_member(j, b.name);
     if (!uri) return;
     if (!uri->empty()) return string_member(j, "uri", *uri);
-    string_member(j, "uri", "data:application/octet-stream;base64," +
-                                base64(b.data));
+    string_member(j, "uri", "data:application/octet-stream;base64," + base64(b.data));
 }
 
 void image(JsonText& j, const tinygltf::Image& i) {
@@ -234,10 +237,10 @@ void texture_info(JsonText& j, std::string_view name, const Info& info, double s
 }
 
 void pbr(JsonText& j, const tinygltf::PbrMetallicRoughness& p) {
-    const bool color = !equal_numbers(p.baseColorFactor, {1, 1, 1, 1}), metallic = !double_equal(p.metallicFactor, 1),
-               roughness = !double_equal(p.roughnessFactor, 1);
-    if (!color && !metallic && !roughness && p.baseColorTexture.index < 0 && p.metallicRoughnessTexture.index < 0 &&
-        p.extensions.empty() && !written(p.extras))
+    const bool color = !equal_numbers(p.baseColorFactor, {1, 1, 1, 1}),
+               metallic = !double_equal(p.metallicFactor, 1), roughness = !double_equal(p.roughnessFactor, 1);
+    if (!color && !metallic && !roughness && p.baseColorTexture.index < 0 &&
+        p.metallicRoughnessTexture.index < 0 && p.extensions.empty() && !written(p.extras))
         return;  // all defaults: left out (tinygltf #204)
     j.key("pbrMetallicRoughness");
     j.begin_object();
@@ -252,7 +255,8 @@ void pbr(JsonText& j, const tinygltf::PbrMetallicRoughness& p) {
 }
 
 void material(JsonText& j, const tinygltf::Material& m) {
-    if (m.occlusionTexture.index >= 0) throw std::logic_error("glTF text: occlusion textures are not written");
+    if (m.occlusionTexture.index >= 0)
+        throw std::logic_error("glTF text: occlusion textures are not written");
     if (!double_equal(m.alphaCutoff, 0.5)) number_member(j, "alphaCutoff", m.alphaCutoff);
     if (m.alphaMode != "OPAQUE") string_member(j, "alphaMode", m.alphaMode);
     if (m.doubleSided) boolean_member(j, "doubleSided", true);
@@ -287,7 +291,8 @@ void mesh(JsonText& j, const tinygltf::Mesh& m) {
 }
 
 void node(JsonText& j, const tinygltf::Node& n) {
-    if (n.skin != -1 || n.camera != -1 || !n.weights.empty()) throw std::logic_error("glTF text: skins, cameras and weights are not written");
+    if (n.skin != -1 || n.camera != -1 || !n.weights.empty())
+        throw std::logic_error("glTF text: skins, cameras and weights are not written");
     numbers(j, "children", n.children);
     extensions(j, n.extensions);
     if (!n.extras_json_string.empty()) {
@@ -329,11 +334,14 @@ void texture(JsonText& j, const tinygltf::Texture& t) {
 
 // The document; buffer 0's uri is `bin_uri` (nullptr: none, a .glb's BIN chunk).
 std::string document_text(const tinygltf::Model& d, const std::string* bin_uri) {
-    if (!d.animations.empty() || !d.skins.empty() || !d.cameras.empty() || !d.lights.empty() || !d.extensionsRequired.empty())
-        throw std::logic_error("glTF text: animations, skins, cameras, lights and required extensions are not written");
+    if (!d.animations.empty() || !d.skins.empty() || !d.cameras.empty() || !d.lights.empty() ||
+        !d.extensionsRequired.empty())
+        throw std::logic_error(
+            "glTF text: animations, skins, cameras, lights and required extensions are not written");
     JsonText j;
     // About what the text takes (manual: 400 bytes a node with its scope), so it grows once or twice.
-    j.text.reserve(4096 + 400 * d.nodes.size() + 150 * d.accessors.size() + 100 * (d.meshes.size() + d.materials.size()));
+    j.text.reserve(4096 + 400 * d.nodes.size() + 150 * d.accessors.size() +
+                   100 * (d.meshes.size() + d.materials.size()));
     j.begin_object();
     array_member(j, "accessors", d.accessors, [&](const tinygltf::Accessor& a) { accessor(j, a); });
     j.key("asset");
@@ -381,7 +389,8 @@ std::string glb_bytes(const tinygltf::Model& document) {
     const std::vector<unsigned char>& bin = document.buffers.empty() ? empty : document.buffers[0].data;
     const std::size_t json_padded = (json.size() + 3) / 4 * 4, bin_padded = (bin.size() + 3) / 4 * 4;
     const std::size_t length = 12 + 8 + json_padded + (bin.empty() ? 0 : 8 + bin_padded);
-    if (length > 0xffffffffu) throw std::logic_error("glb: " + std::to_string(length) + " bytes, more than a .glb holds");
+    if (length > 0xffffffffu)
+        throw std::logic_error("glb: " + std::to_string(length) + " bytes, more than a .glb holds");
     std::string out;
     out.reserve(length);
     out += "glTF";

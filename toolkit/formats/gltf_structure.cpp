@@ -25,20 +25,25 @@ struct Glb {
 
 // glTF 2.0, 4.4: a 12-byte header, then chunks of (length, type, data).
 Glb split_glb(std::string_view bytes, const std::string& file) {
-    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF") throw_input_error(file, "", "not a glb file (no 'glTF' header)");
+    if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF")
+        throw_input_error(file, "", "not a glb file (no 'glTF' header)");
     if (little_endian_u32(bytes, 4) != 2) throw_input_error(file, "header", "glb version is not 2");
     std::size_t length = little_endian_u32(bytes, 8);
-    if (length > bytes.size()) throw_input_error(file, "header", "declares " + std::to_string(length) + " bytes, the file has " +
-                                                                      std::to_string(bytes.size()) + " (truncated file?)");
+    if (length > bytes.size())
+        throw_input_error(file, "header",
+                          "declares " + std::to_string(length) + " bytes, the file has " +
+                              std::to_string(bytes.size()) + " (truncated file?)");
     Glb glb;
     std::size_t at = 12;
     for (int chunk = 0; at + 8 <= length; ++chunk) {
         std::size_t chunk_length = little_endian_u32(bytes, at);
         std::uint32_t type = little_endian_u32(bytes, at + 4);
         if (!range_fits(at + 8, chunk_length, length))
-            throw_input_error(file, "chunk " + std::to_string(chunk), "runs past the end of the file (truncated file?)");
+            throw_input_error(file, "chunk " + std::to_string(chunk),
+                              "runs past the end of the file (truncated file?)");
         std::string_view data = bytes.substr(at + 8, chunk_length);
-        if (chunk == 0 && type != 0x4E4F534Au) throw_input_error(file, "chunk 0", "the first chunk is not JSON");
+        if (chunk == 0 && type != 0x4E4F534Au)
+            throw_input_error(file, "chunk 0", "the first chunk is not JSON");
         if (chunk == 0) glb.json = data;
         if (chunk == 1 && type == 0x004E4942u) glb.binary_chunk = chunk_length;
         at += 8 + chunk_length;
@@ -48,11 +53,12 @@ Glb split_glb(std::string_view bytes, const std::string& file) {
 }
 
 // A non-negative integer member, `fallback` when absent.
-std::size_t size_member(const nlohmann::json& object, const char* key, std::size_t fallback, const std::string& file,
-                        const std::string& place) {
+std::size_t size_member(const nlohmann::json& object, const char* key, std::size_t fallback,
+                        const std::string& file, const std::string& place) {
     auto found = object.find(key);
     if (found == object.end()) return fallback;
-    if (!found->is_number_unsigned()) throw_input_error(file, place, std::string(key) + " must be a non-negative integer");
+    if (!found->is_number_unsigned())
+        throw_input_error(file, place, std::string(key) + " must be a non-negative integer");
     return found->get<std::size_t>();
 }
 
@@ -77,23 +83,39 @@ struct MemberKind {
 
 // The members boxlod or tinygltf read.
 constexpr MemberKind member_kinds[] = {
-    {"asset", Kind::object}, {"asset.version", Kind::string}, {"scene", Kind::index},
-    {"extensionsUsed", Kind::strings}, {"extensionsRequired", Kind::strings},
+    {"asset", Kind::object},
+    {"asset.version", Kind::string},
+    {"scene", Kind::index},
+    {"extensionsUsed", Kind::strings},
+    {"extensionsRequired", Kind::strings},
     {"bufferViews[].byteStride", Kind::index},  // the others: check_gltf_structure, with their ranges
     {"nodes[].skin", Kind::index},
     {"scenes[].nodes", Kind::indices},
-    {"nodes[].children", Kind::indices}, {"nodes[].mesh", Kind::index}, {"nodes[].camera", Kind::index},
-    {"nodes[].matrix", Kind::numbers, 16}, {"nodes[].translation", Kind::numbers, 3},
-    {"nodes[].rotation", Kind::numbers, 4}, {"nodes[].scale", Kind::numbers, 3},
-    {"meshes[].primitives", Kind::array}, {"meshes[].primitives[].attributes", Kind::object},
-    {"meshes[].primitives[].indices", Kind::index}, {"meshes[].primitives[].material", Kind::index},
+    {"nodes[].children", Kind::indices},
+    {"nodes[].mesh", Kind::index},
+    {"nodes[].camera", Kind::index},
+    {"nodes[].matrix", Kind::numbers, 16},
+    {"nodes[].translation", Kind::numbers, 3},
+    {"nodes[].rotation", Kind::numbers, 4},
+    {"nodes[].scale", Kind::numbers, 3},
+    {"meshes[].primitives", Kind::array},
+    {"meshes[].primitives[].attributes", Kind::object},
+    {"meshes[].primitives[].indices", Kind::index},
+    {"meshes[].primitives[].material", Kind::index},
     {"meshes[].primitives[].mode", Kind::index},
-    {"accessors[].bufferView", Kind::index}, {"accessors[].byteOffset", Kind::index},
-    {"accessors[].componentType", Kind::index}, {"accessors[].count", Kind::index}, {"accessors[].type", Kind::string},
-    {"accessors[].normalized", Kind::boolean}, {"accessors[].min", Kind::numbers}, {"accessors[].max", Kind::numbers},
+    {"accessors[].bufferView", Kind::index},
+    {"accessors[].byteOffset", Kind::index},
+    {"accessors[].componentType", Kind::index},
+    {"accessors[].count", Kind::index},
+    {"accessors[].type", Kind::string},
+    {"accessors[].normalized", Kind::boolean},
+    {"accessors[].min", Kind::numbers},
+    {"accessors[].max", Kind::numbers},
     {"accessors[].sparse", Kind::object},
-    {"materials[].alphaMode", Kind::string}, {"materials[].alphaCutoff", Kind::number},
-    {"materials[].doubleSided", Kind::boolean}, {"materials[].emissiveFactor", Kind::numbers, 3},
+    {"materials[].alphaMode", Kind::string},
+    {"materials[].alphaCutoff", Kind::number},
+    {"materials[].doubleSided", Kind::boolean},
+    {"materials[].emissiveFactor", Kind::numbers, 3},
     {"materials[].pbrMetallicRoughness", Kind::object},
     {"materials[].pbrMetallicRoughness.baseColorFactor", Kind::numbers, 4},
     {"materials[].pbrMetallicRoughness.metallicFactor", Kind::number},
@@ -102,20 +124,34 @@ constexpr MemberKind member_kinds[] = {
     {"materials[].pbrMetallicRoughness.baseColorTexture.index", Kind::index},
     {"materials[].pbrMetallicRoughness.baseColorTexture.texCoord", Kind::index},
     {"materials[].pbrMetallicRoughness.metallicRoughnessTexture", Kind::object},
-    {"materials[].normalTexture", Kind::object}, {"materials[].normalTexture.index", Kind::index},
-    {"materials[].normalTexture.texCoord", Kind::index}, {"materials[].normalTexture.scale", Kind::number},
-    {"materials[].occlusionTexture", Kind::object}, {"materials[].emissiveTexture", Kind::object},
-    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.offset", Kind::numbers, 2},
-    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.rotation", Kind::number},
-    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.scale", Kind::numbers, 2},
-    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord", Kind::index},
+    {"materials[].normalTexture", Kind::object},
+    {"materials[].normalTexture.index", Kind::index},
+    {"materials[].normalTexture.texCoord", Kind::index},
+    {"materials[].normalTexture.scale", Kind::number},
+    {"materials[].occlusionTexture", Kind::object},
+    {"materials[].emissiveTexture", Kind::object},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.offset",
+     Kind::numbers, 2},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.rotation",
+     Kind::number},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.scale",
+     Kind::numbers, 2},
+    {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord",
+     Kind::index},
     {"materials[].extensions.KHR_materials_specular", Kind::object},  // the material extensions boxlod reads
     {"materials[].extensions.KHR_materials_pbrSpecularGlossiness", Kind::object},
-    {"textures[].source", Kind::index}, {"textures[].sampler", Kind::index},
-    {"samplers[].magFilter", Kind::index}, {"samplers[].minFilter", Kind::index},
-    {"samplers[].wrapS", Kind::index}, {"samplers[].wrapT", Kind::index},
-    {"images[].uri", Kind::string}, {"images[].mimeType", Kind::string}, {"buffers[].uri", Kind::string},
-    {"cameras[].type", Kind::string}, {"cameras[].perspective", Kind::object}, {"cameras[].orthographic", Kind::object},
+    {"textures[].source", Kind::index},
+    {"textures[].sampler", Kind::index},
+    {"samplers[].magFilter", Kind::index},
+    {"samplers[].minFilter", Kind::index},
+    {"samplers[].wrapS", Kind::index},
+    {"samplers[].wrapT", Kind::index},
+    {"images[].uri", Kind::string},
+    {"images[].mimeType", Kind::string},
+    {"buffers[].uri", Kind::string},
+    {"cameras[].type", Kind::string},
+    {"cameras[].perspective", Kind::object},
+    {"cameras[].orthographic", Kind::object},
 };
 
 const char* kind_text(Kind kind) {
@@ -143,7 +179,8 @@ bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
     case Kind::number: return value.is_number();
     case Kind::index: return value.is_number_unsigned();
     case Kind::numbers:
-        return all([](const nlohmann::json& v) { return v.is_number(); }) && (length == 0 || value.size() == length);
+        return all([](const nlohmann::json& v) { return v.is_number(); }) &&
+               (length == 0 || value.size() == length);
     case Kind::indices: return all([](const nlohmann::json& v) { return v.is_number_unsigned(); });
     case Kind::strings: return all([](const nlohmann::json& v) { return v.is_string(); });
     }
@@ -151,8 +188,8 @@ bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
 }
 
 // Checks `path` (its segments from `segment` on) below `value`, named `place` so far.
-void check_member(const nlohmann::json& value, const MemberKind& member, std::string_view path, const std::string& place,
-                  const std::string& file) {
+void check_member(const nlohmann::json& value, const MemberKind& member, std::string_view path,
+                  const std::string& place, const std::string& file) {
     const std::size_t dot = path.find('.');
     std::string_view segment = path.substr(0, dot);
     const bool each = segment.ends_with("[]");
@@ -163,8 +200,9 @@ void check_member(const nlohmann::json& value, const MemberKind& member, std::st
     const std::string here = place.empty() ? std::string(segment) : place + "." + std::string(segment);
     if (dot == std::string_view::npos) {
         if (!has_kind(*found, member.kind, member.length))
-            throw_input_error(file, here, std::string("must be ") + kind_text(member.kind) +
-                                              (member.length ? " of length " + std::to_string(member.length) : ""));
+            throw_input_error(file, here,
+                              std::string("must be ") + kind_text(member.kind) +
+                                  (member.length ? " of length " + std::to_string(member.length) : ""));
         return;
     }
     if (!each) return check_member(*found, member, path.substr(dot + 1), here, file);
@@ -179,14 +217,22 @@ void check_member(const nlohmann::json& value, const MemberKind& member, std::st
 // with messages that name neither.
 void check_version_and_required_extensions(const nlohmann::json& root, const std::string& file) {
     if (const auto asset = root.find("asset"); asset != root.end() && asset->is_object())
-        if (const auto version = asset->find("version");  // 1.0's is a string or a number; another kind is the schema's finding
-            version != asset->end() && (version->is_number() || (version->is_string() && !version->get<std::string>().starts_with("2."))))
-            throw_input_error(file, "asset.version", (version->is_string() ? "'" + version->get<std::string>() + "'" : version->dump()) +
-                                                         " is not glTF 2 (boxlod reads glTF 2.0)");
+        if (const auto version = asset->find(
+                "version");  // 1.0's is a string or a number; another kind is the schema's finding
+            version != asset->end() &&
+            (version->is_number() ||
+             (version->is_string() && !version->get<std::string>().starts_with("2."))))
+            throw_input_error(
+                file, "asset.version",
+                (version->is_string() ? "'" + version->get<std::string>() + "'" : version->dump()) +
+                    " is not glTF 2 (boxlod reads glTF 2.0)");
     if (const auto required = root.find("extensionsRequired"); required != root.end() && required->is_array())
         for (const nlohmann::json& name : *required)
-            if (name.is_string() && name != "MSFT_lod" && name != specular_glossiness_name && name != specular_extension_name)
-                throw_input_error(file, "extensionsRequired", "'" + name.get<std::string>() + "' is required, and boxlod does not read it");
+            if (name.is_string() && name != "MSFT_lod" && name != specular_glossiness_name &&
+                name != specular_extension_name)
+                throw_input_error(
+                    file, "extensionsRequired",
+                    "'" + name.get<std::string>() + "' is required, and boxlod does not read it");
 }
 
 // A buffer's or image's uri names a file relative to the glTF file, or is a
@@ -197,8 +243,10 @@ void check_relative_uri(const nlohmann::json& item, const std::string& file, con
     if (uri == item.end() || !uri->is_string()) return;
     const std::string& text = uri->get_ref<const std::string&>();
     if (text.starts_with("/") || text.starts_with("file:"))
-        throw_input_error(file, place, "uri '" + text + "' is absolute: glTF's URIs are relative to the file or data: URIs (glTF 2.0, 2.8), "
-                                       "so a model names nothing by where it was made");
+        throw_input_error(file, place,
+                          "uri '" + text +
+                              "' is absolute: glTF's URIs are relative to the file or data: URIs (glTF 2.0, "
+                              "2.8), so a model names nothing by where it was made");
 }
 
 // Every `extensions` member, wherever it is, is an object (glTF 2.0, 3.12:
@@ -208,11 +256,13 @@ void check_extensions(const nlohmann::json& value, const std::string& place, con
     if (value.is_object()) {
         for (const auto& [key, member] : value.items()) {
             const std::string here = place.empty() ? key : place + "." + key;
-            if (key == "extensions" && !member.is_object()) throw_input_error(file, here, "must be an object");
+            if (key == "extensions" && !member.is_object())
+                throw_input_error(file, here, "must be an object");
             if (key != "extras") check_extensions(member, here, file);
         }
     } else if (value.is_array()) {
-        for (std::size_t i = 0; i < value.size(); ++i) check_extensions(value[i], place + "[" + std::to_string(i) + "]", file);
+        for (std::size_t i = 0; i < value.size(); ++i)
+            check_extensions(value[i], place + "[" + std::to_string(i) + "]", file);
     }
 }
 
@@ -239,8 +289,9 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
         if (!buffers[b].is_object()) throw_input_error(file, place, "must be an object");
         std::size_t length = size_member(buffers[b], "byteLength", 0, file, place);
         if (binary && b == 0 && !buffers[b].contains("uri") && length > glb.binary_chunk)
-            throw_input_error(file, place, "byteLength " + std::to_string(length) + " exceeds the " +
-                                               std::to_string(glb.binary_chunk) + "-byte BIN chunk (truncated file?)");
+            throw_input_error(file, place,
+                              "byteLength " + std::to_string(length) + " exceeds the " +
+                                  std::to_string(glb.binary_chunk) + "-byte BIN chunk (truncated file?)");
         buffer_bytes.push_back(length);
         check_relative_uri(buffers[b], file, place);
     }
@@ -253,15 +304,17 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
         std::size_t offset = size_member(views[v], "byteOffset", 0, file, place);
         std::size_t length = size_member(views[v], "byteLength", 0, file, place);
         if (!range_fits(offset, length, buffer_bytes[buffer]))
-            throw_input_error(file, place, "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(length) +
-                                               " runs past buffer " + std::to_string(buffer) + "'s " +
-                                               std::to_string(buffer_bytes[buffer]) + " bytes");
+            throw_input_error(file, place,
+                              "byteOffset " + std::to_string(offset) + " + byteLength " +
+                                  std::to_string(length) + " runs past buffer " + std::to_string(buffer) +
+                                  "'s " + std::to_string(buffer_bytes[buffer]) + " bytes");
     }
     const nlohmann::json& images = array_member(root, "images", file);
     for (std::size_t i = 0; i < images.size(); ++i) {
         std::string place = "image " + std::to_string(i);
         if (!images[i].is_object()) throw_input_error(file, place, "must be an object");
-        if (images[i].contains("bufferView") && size_member(images[i], "bufferView", 0, file, place) >= views.size())
+        if (images[i].contains("bufferView") &&
+            size_member(images[i], "bufferView", 0, file, place) >= views.size())
             throw_input_error(file, place, "bufferView index out of range");
         check_relative_uri(images[i], file, place);
     }
@@ -273,17 +326,19 @@ void check_json_depth(std::string_view json, const std::string& file) {
     for (std::size_t i = 0; i < json.size(); ++i) {
         char c = json[i];
         if (in_string) {
-            if (c == '\\') ++i;
-            else if (c == '"') in_string = false;
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
-            if (++depth > max_nesting_depth) throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
+            if (++depth > max_nesting_depth)
+                throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
         } else if (c == ']' || c == '}') {
             --depth;
         }
     }
 }
-
 
 }  // namespace boxlod

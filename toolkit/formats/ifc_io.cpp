@@ -31,7 +31,8 @@ Answer split_answer(const std::string& answer, const std::string& path) {
     std::uint64_t length = 0;
     if (answer.size() < sizeof length) throw_input_error(path, "", "web-ifc gave no answer");
     std::memcpy(&length, answer.data(), sizeof length);
-    if (!range_fits(sizeof length, length, answer.size())) throw_input_error(path, "", "web-ifc's answer is cut short");
+    if (!range_fits(sizeof length, length, answer.size()))
+        throw_input_error(path, "", "web-ifc's answer is cut short");
     Answer out{json::parse(answer.substr(sizeof length, length), nullptr, false),
                std::string_view(answer).substr(sizeof length + length)};
     if (!out.header.is_object()) throw_input_error(path, "", "web-ifc's answer is not JSON");
@@ -42,14 +43,16 @@ Answer split_answer(const std::string& answer, const std::string& path) {
 
 // `count` values of T at the [offset, count] pair `range` of the answer's bytes.
 template <typename T>
-std::vector<T> values_at(const Answer& answer, const json& range, std::size_t per_item, const std::string& path) {
+std::vector<T> values_at(const Answer& answer, const json& range, std::size_t per_item,
+                         const std::string& path) {
     std::size_t offset = 0, count = 0, bytes = 0;
-    if (range.is_array() && range.size() == 2 && range[0].is_number_unsigned() && range[1].is_number_unsigned())
-        {
-            offset = range[0].get<std::size_t>();
-            count = range[1].get<std::size_t>();
-        }
-    if (!checked_multiply(count, per_item * sizeof(T), bytes) || !range_fits(offset, bytes, answer.bytes.size()))
+    if (range.is_array() && range.size() == 2 && range[0].is_number_unsigned() &&
+        range[1].is_number_unsigned()) {
+        offset = range[0].get<std::size_t>();
+        count = range[1].get<std::size_t>();
+    }
+    if (!checked_multiply(count, per_item * sizeof(T), bytes) ||
+        !range_fits(offset, bytes, answer.bytes.size()))
         throw_input_error(path, "", "web-ifc's answer points outside its bytes");
     std::vector<T> out(count * per_item);
     if (bytes > 0) std::memcpy(out.data(), answer.bytes.data() + offset, bytes);
@@ -62,7 +65,8 @@ void add_nodes(Model& model, const json& nodes, const std::string& path) {
     for (std::size_t n = 0; n < nodes.size(); ++n) {
         const json& node = nodes[n];
         const int parent = node.value("parent", -1);
-        if ((n == 0) != (parent < 0) || parent >= int(n)) throw_input_error(path, "", "web-ifc's tree is not a tree");
+        if ((n == 0) != (parent < 0) || parent >= int(n))
+            throw_input_error(path, "", "web-ifc's tree is not a tree");
         const std::string type = node.value("type", ""), name = utf8_or_latin1(node.value("name", ""));
         const int index = add_node(model, parent, name.empty() ? type : name);
         model.nodes[std::size_t(index)].rule = type;
@@ -72,12 +76,14 @@ void add_nodes(Model& model, const json& nodes, const std::string& path) {
 
 // One material per colour (IfcSurfaceStyleRendering as web-ifc gives it);
 // see-through ones are blended, as assimp's are.
-int material_of(Model& model, std::map<std::tuple<float, float, float, float>, int>& materials, const json& colour,
-                const std::string& path) {
+int material_of(Model& model, std::map<std::tuple<float, float, float, float>, int>& materials,
+                const json& colour, const std::string& path) {
     Eigen::Vector4f c(1, 1, 1, 1);
     if (colour.is_array() && colour.size() == 4)
-        for (int i = 0; i < 4; ++i) c[i] = colour[std::size_t(i)].is_number() ? colour[std::size_t(i)].get<float>() : -1;
-    if (!((c.array() >= 0).all() && (c.array() <= 1).all())) throw_input_error(path, "", "a colour outside [0, 1]");
+        for (int i = 0; i < 4; ++i)
+            c[i] = colour[std::size_t(i)].is_number() ? colour[std::size_t(i)].get<float>() : -1;
+    if (!((c.array() >= 0).all() && (c.array() <= 1).all()))
+        throw_input_error(path, "", "a colour outside [0, 1]");
     const auto key = std::make_tuple(c[0], c[1], c[2], c[3]);
     if (auto known = materials.find(key); known != materials.end()) return known->second;
     Material material;
@@ -93,14 +99,19 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
     std::map<std::tuple<float, float, float, float>, int> materials;
     for (const json& piece : answer.header.value("pieces", json::array())) {
         const int node = piece.value("node", -1);
-        if (node < 0 || node >= int(model.nodes.size())) throw_input_error(path, "", "web-ifc's piece names no node");
+        if (node < 0 || node >= int(model.nodes.size()))
+            throw_input_error(path, "", "web-ifc's piece names no node");
         const int material = material_of(model, materials, piece.value("color", json()), path);
-        const std::vector<float> positions = values_at<float>(answer, piece.value("positions", json()), 3, path);
+        const std::vector<float> positions =
+            values_at<float>(answer, piece.value("positions", json()), 3, path);
         const std::vector<float> normals = values_at<float>(answer, piece.value("normals", json()), 3, path);
-        const std::vector<std::uint32_t> indices = values_at<std::uint32_t>(answer, piece.value("indices", json()), 1, path);
-        if (normals.size() != positions.size() || indices.size() % 3 != 0) throw_input_error(path, "", "web-ifc's piece is malformed");
+        const std::vector<std::uint32_t> indices =
+            values_at<std::uint32_t>(answer, piece.value("indices", json()), 1, path);
+        if (normals.size() != positions.size() || indices.size() % 3 != 0)
+            throw_input_error(path, "", "web-ifc's piece is malformed");
         auto& primitives = model.nodes[std::size_t(node)].primitives;
-        auto primitive = std::find_if(primitives.begin(), primitives.end(), [&](const Primitive& p) { return p.material == material; });
+        auto primitive = std::find_if(primitives.begin(), primitives.end(),
+                                      [&](const Primitive& p) { return p.material == material; });
         if (primitive == primitives.end()) {
             primitives.push_back({});
             primitive = primitives.end() - 1;
@@ -112,7 +123,8 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
             primitive->normals.emplace_back(normals[v], normals[v + 1], normals[v + 2]);
         }
         for (std::uint32_t index : indices) {
-            if (index >= positions.size() / 3) throw_input_error(path, "", "web-ifc's piece indexes past its vertices");
+            if (index >= positions.size() / 3)
+                throw_input_error(path, "", "web-ifc's piece indexes past its vertices");
             primitive->indices.push_back(first + index);
         }
         primitive->polygon_count += indices.size() / 3;
@@ -128,7 +140,9 @@ void check_ifc_references(std::string_view bytes, const std::string& path) {
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const char c = bytes[i];
         if (c == '\'') {  // a string: '' inside it is a quote
-            for (++i; i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\'')); ++i)
+            for (++i;
+                 i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\''));
+                 ++i)
                 if (bytes[i] == '\'') ++i;
         } else if (c == '/' && i + 1 < bytes.size() && bytes[i + 1] == '*') {
             const std::size_t end = bytes.find("*/", i + 2);
@@ -136,13 +150,17 @@ void check_ifc_references(std::string_view bytes, const std::string& path) {
         } else if (c == '#') {
             std::uint64_t id = 0;
             std::size_t digits = 0;
-            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])) && digits < 18; ++digits, ++i)
+            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])) &&
+                   digits < 18;
+                 ++digits, ++i)
                 id = id * 10 + std::uint64_t(bytes[i + 1] - '0');
-            if (digits == 0) throw_input_error(path, "byte " + std::to_string(i), "'#' without an entity number");
+            if (digits == 0)
+                throw_input_error(path, "byte " + std::to_string(i), "'#' without an entity number");
             std::size_t next = i + 1;
             while (next < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[next]))) ++next;
             if (next < bytes.size() && bytes[next] == '=') {
-                if (!defined.insert(id).second) throw_input_error(path, "#" + std::to_string(id), "defined twice");
+                if (!defined.insert(id).second)
+                    throw_input_error(path, "#" + std::to_string(id), "defined twice");
                 entity = id;
             } else {
                 used.emplace_back(entity, id);
@@ -151,7 +169,8 @@ void check_ifc_references(std::string_view bytes, const std::string& path) {
     }
     for (const auto& [from, to] : used)
         if (!defined.count(to))
-            throw_input_error(path, "#" + std::to_string(from), "names #" + std::to_string(to) + ", which the file does not define");
+            throw_input_error(path, "#" + std::to_string(from),
+                              "names #" + std::to_string(to) + ", which the file does not define");
 }
 
 std::string web_ifc_module() {
@@ -160,20 +179,26 @@ std::string web_ifc_module() {
         folder = module;
     } else {
         fs::path cache;
-        if (const char* npm = std::getenv("BOXLOD_NPM_CACHE"); npm && *npm) cache = npm;
-        else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) cache = fs::path(xdg) / "boxlod" / "npm";
-        else if (const char* home = std::getenv("HOME"); home && *home) cache = fs::path(home) / ".cache" / "boxlod" / "npm";
+        if (const char* npm = std::getenv("BOXLOD_NPM_CACHE"); npm && *npm)
+            cache = npm;
+        else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+            cache = fs::path(xdg) / "boxlod" / "npm";
+        else if (const char* home = std::getenv("HOME"); home && *home)
+            cache = fs::path(home) / ".cache" / "boxlod" / "npm";
         folder = (cache / ("web-ifc-" + std::string(web_ifc_version)) / "node_modules" / "web-ifc").string();
     }
     std::error_code error;
     // Absolute: node takes a bare relative name for a package to look up.
-    return fs::is_regular_file(fs::path(folder) / "web-ifc-api-node.js", error) ? fs::absolute(folder, error).string() : "";
+    return fs::is_regular_file(fs::path(folder) / "web-ifc-api-node.js", error)
+               ? fs::absolute(folder, error).string()
+               : "";
 }
 
 std::string ifc_schema(const std::string& header) {
     const std::size_t at = header.find("FILE_SCHEMA");
     if (at == std::string::npos) return "";
-    const std::size_t open = header.find('\'', at), close = open == std::string::npos ? open : header.find('\'', open + 1);
+    const std::size_t open = header.find('\'', at),
+                      close = open == std::string::npos ? open : header.find('\'', open + 1);
     if (close == std::string::npos || close - open > 64) return "";
     std::string schema = header.substr(open + 1, close - open - 1);
     for (char& c : schema) c = char(std::toupper(static_cast<unsigned char>(c)));
@@ -184,19 +209,25 @@ Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
     check_ifc_references(read_input_file(path, "IFC file"), path);
     const std::string module = web_ifc_module();
-    if (module.empty()) throw_input_error(path, "", "reading IFC 4 needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
+    if (module.empty())
+        throw_input_error(
+            path, "",
+            "reading IFC 4 needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
     // A minute, and a second more per megabyte; no address-space limit: a
     // WebAssembly memory reserves far more than it uses (web-ifc caps its own).
     const ChildLimits limits{0, 60 + double(file_bytes) / 1e6};
-    const std::string answer = run_program_in_child({"node", "-", module, fs::absolute(path).string()}, ifc_reader_script, limits, path, "web-ifc");
+    const std::string answer = run_program_in_child({"node", "-", module, fs::absolute(path).string()},
+                                                    ifc_reader_script, limits, path, "web-ifc");
     const Answer parts = split_answer(answer, path);
     Model model;
     model.source = path;
     add_nodes(model, parts.header.value("nodes", json()), path);
     add_pieces(model, parts, path);
     const json origin = parts.header.value("origin", json::array());
-    if (origin.is_array() && origin.size() == 3 && origin[0].is_number() && origin[1].is_number() && origin[2].is_number())
-        model.origin = Eigen::Vector3d(origin[0].get<double>(), origin[1].get<double>(), origin[2].get<double>());
+    if (origin.is_array() && origin.size() == 3 && origin[0].is_number() && origin[1].is_number() &&
+        origin[2].is_number())
+        model.origin =
+            Eigen::Vector3d(origin[0].get<double>(), origin[1].get<double>(), origin[2].get<double>());
     make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;

@@ -22,7 +22,8 @@ void JsonText::begin_array() { open('[', false); }
 
 // Closes the innermost level, which must be of that kind.
 void JsonText::close(bool object) {
-    if (levels_.empty() || levels_.back().object != object) throw std::logic_error("JSON text: nothing of that kind to close");
+    if (levels_.empty() || levels_.back().object != object)
+        throw std::logic_error("JSON text: nothing of that kind to close");
     levels_.pop_back();
     text += object ? '}' : ']';
 }
@@ -35,7 +36,8 @@ void JsonText::end_array() { close(false); }
 void JsonText::element() {
     if (levels_.empty()) return;
     if (levels_.back().object) {  // after its key: the key wrote the comma
-        if (text.empty() || text.back() != ':') throw std::logic_error("JSON text: a value without a key in an object");
+        if (text.empty() || text.back() != ':')
+            throw std::logic_error("JSON text: a value without a key in an object");
         return;
     }
     if (!levels_.back().empty) text += ',';
@@ -43,9 +45,11 @@ void JsonText::element() {
 }
 
 void JsonText::key(std::string_view name) {
-    if (levels_.empty() || !levels_.back().object) throw std::logic_error("JSON text: a key outside an object");
+    if (levels_.empty() || !levels_.back().object)
+        throw std::logic_error("JSON text: a key outside an object");
     Level& level = levels_.back();
-    if (!level.empty && name <= level.last_key) throw std::logic_error("JSON text: key '" + std::string(name) + "' out of order");
+    if (!level.empty && name <= level.last_key)
+        throw std::logic_error("JSON text: key '" + std::string(name) + "' out of order");
     if (!level.empty) text += ',';
     level.empty = false;
     level.last_key = name;
@@ -118,7 +122,8 @@ void JsonText::number(double value) {
         return;
     }
     char scientific[32];
-    const char* end = std::to_chars(scientific, scientific + sizeof scientific, value, std::chars_format::scientific).ptr;
+    const char* end =
+        std::to_chars(scientific, scientific + sizeof scientific, value, std::chars_format::scientific).ptr;
     const char* e = static_cast<const char*>(std::memchr(scientific, 'e', std::size_t(end - scientific)));
     char digits[24];
     int k = 0;

@@ -22,7 +22,8 @@ public:
     void key(std::string_view name);
     void string(std::string_view value);  // UTF-8 (else std::logic_error), escaped as nlohmann escapes
     void integer(std::int64_t value);
-    // The shortest digits that read back; fixed for decimal exponents -4 < n <= 15, whole numbers with ".0"; null if not finite.
+    // The shortest digits that read back; fixed for decimal exponents -4 < n <= 15, whole numbers with ".0";
+    // null if not finite.
     void number(double value);
     void boolean(bool value);
     void null();

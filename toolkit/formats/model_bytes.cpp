@@ -46,7 +46,8 @@ struct Reader {
     void values(std::vector<T>& v) {
         std::uint64_t size = 0;
         value(size);
-        if (size > in.size() / sizeof(T)) throw std::logic_error("model_from_bytes: a count beyond the bytes");
+        if (size > in.size() / sizeof(T))
+            throw std::logic_error("model_from_bytes: a count beyond the bytes");
         v.resize(size);
         take(v.data(), size * sizeof(T));
     }

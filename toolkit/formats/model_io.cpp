@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 bool read_by_web_ifc(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string header;
-    for (std::string line; header.size() < (1 << 20) && header.find("ENDSEC") == std::string::npos && std::getline(in, line);)
+    for (std::string line;
+         header.size() < (1 << 20) && header.find("ENDSEC") == std::string::npos && std::getline(in, line);)
         header += line + '\n';  // the HEADER section: FILE_NAME may be long
     return !ifc_schema(header).starts_with("IFC2X");
 }
@@ -32,29 +33,34 @@ Model load_file(const std::string& path, const ReadOptions& options) {
     check_input_file(path, "model file");
     std::string extension = lowercase_extension(path);
     if (extension == ".gltf" || extension == ".glb") return import_gltf(path, options.chain_level);
-    if (options.chain_level > 0) throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
+    if (options.chain_level > 0)
+        throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
     if (extension == ".json" || extension == ".jsonl") return import_cityjson(path, options.city_lod);
     if (extension == ".ifc" && read_by_web_ifc(path)) return import_ifc_with_web_ifc(path);
-    static const char* assimp_formats[] = {".fbx", ".obj", ".dae", ".ply", ".off", ".3ds", ".ifc", ".stl", ".x3d",
-                                           ".blend", ".ase", ".lwo", ".ms3d", ".x", ".3mf", ".ac"};
+    static const char* assimp_formats[] = {".fbx", ".obj",   ".dae", ".ply", ".off",  ".3ds", ".ifc", ".stl",
+                                           ".x3d", ".blend", ".ase", ".lwo", ".ms3d", ".x",   ".3mf", ".ac"};
     for (const char* known : assimp_formats)
         if (extension == known) return import_with_assimp(path);
-    throw_input_error(path, "", "unknown model format '" + extension +
-                                    "' (known: .gltf .glb .json .jsonl (CityJSON) .fbx .obj .dae .ply .off .3ds .ifc .stl .x3d .blend .ase .lwo .ms3d .x .3mf .ac)");
+    throw_input_error(path, "",
+                      "unknown model format '" + extension +
+                          "' (known: .gltf .glb .json .jsonl (CityJSON) .fbx .obj .dae .ply .off .3ds .ifc "
+                          ".stl .x3d .blend .ase .lwo .ms3d .x .3mf .ac)");
 }
 
 }  // namespace
 
 std::vector<std::string> object_names(const Model& city) {
     std::vector<std::string> names;
-    for (int node : object_nodes(city)) names.push_back(node < 0 ? city.nodes[0].name : city.nodes[std::size_t(node)].name);
+    for (int node : object_nodes(city))
+        names.push_back(node < 0 ? city.nodes[0].name : city.nodes[std::size_t(node)].name);
     return names;
 }
 
 Model load_model(const std::string& path, const ReadOptions& options) {
     std::error_code error;
     const std::size_t hash = path.rfind('#');
-    if (hash == std::string::npos || fs::exists(path, error) || !fs::is_regular_file(path.substr(0, hash), error))
+    if (hash == std::string::npos || fs::exists(path, error) ||
+        !fs::is_regular_file(path.substr(0, hash), error))
         return load_file(path, options);
     const std::string file = path.substr(0, hash), object = path.substr(hash + 1);
     const Model city = load_file(file, options);
@@ -66,8 +72,9 @@ Model load_model(const std::string& path, const ReadOptions& options) {
             one.source = path;
             return one;
         }
-    throw_input_error(file, "", "no object named '" + object + "' (" + std::to_string(names.size()) + " objects: " +
-                                    (names.empty() ? std::string("none") : names.front() + ", ...") + ")");
+    throw_input_error(file, "",
+                      "no object named '" + object + "' (" + std::to_string(names.size()) + " objects: " +
+                          (names.empty() ? std::string("none") : names.front() + ", ...") + ")");
 }
 
 void save_model(const Model& model, const std::string& path) {

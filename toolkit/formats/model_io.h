@@ -11,8 +11,9 @@ namespace boxlod {
 
 // What a reader is asked for beyond the file.
 struct ReadOptions {
-    int chain_level = 0;   // > 0: that level of a glTF LoD chain (toolkit/formats/gltf_io.h)
-    std::string city_lod;  // CityJSON: the LoD read ("": each object's finest; toolkit/formats/cityjson_import.h)
+    int chain_level = 0;  // > 0: that level of a glTF LoD chain (toolkit/formats/gltf_io.h)
+    std::string
+        city_lod;  // CityJSON: the LoD read ("": each object's finest; toolkit/formats/cityjson_import.h)
 };
 
 // `path` may name one object of a city file, FILE#OBJECT (a CityJSON

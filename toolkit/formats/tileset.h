@@ -13,12 +13,13 @@
 namespace boxlod {
 
 struct Geodetic {
-    double latitude_degrees = 49.0094, longitude_degrees = 8.4120, height = 0;  // default: KIT, Karlsruhe, home of the FZK-Haus
+    double latitude_degrees = 49.0094, longitude_degrees = 8.4120,
+           height = 0;  // default: KIT, Karlsruhe, home of the FZK-Haus
 };
 
 struct TileLevel {
-    std::string content;     // the glb's URI, relative to the tileset
-    double geometric_error;  // metres (level_geometric_error; 0 for the original)
+    std::string content;           // the glb's URI, relative to the tileset
+    double geometric_error;        // metres (level_geometric_error; 0 for the original)
     double surface_deviation = 0;  // metres (surface_deviation.h), written in the tile's extras
 };
 

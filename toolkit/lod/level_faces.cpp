@@ -12,8 +12,8 @@ namespace {
 
 // The quad of a face's `region` of its `texels` (the whole face for untextured
 // boxes): TL, BL, BR, TR seen from outside; uvs into the region's atlas block.
-void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vector2i& texels, const TexelRect& region,
-                      const AtlasPlacement* at, const Eigen::Vector2i& page) {
+void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vector2i& texels,
+                      const TexelRect& region, const AtlasPlacement* at, const Eigen::Vector2i& page) {
     auto base = std::uint32_t(p.positions.size());
     const int corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) in the region
     for (const auto& c : corners) {
@@ -23,7 +23,8 @@ void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vecto
         p.positions.push_back(f.center + f.tangent * (s * f.half_width) + f.bitangent * (t * f.half_height));
         p.normals.push_back(f.normal);
         if (at) {
-            p.uvs.push_back(page_uv(*at, region, page, float(c[0] * region.width), float(c[1] * region.height)));
+            p.uvs.push_back(
+                page_uv(*at, region, page, float(c[0] * region.width), float(c[1] * region.height)));
             p.tangents.emplace_back(f.tangent.x(), f.tangent.y(), f.tangent.z(), 1.0f);
         }
     }
@@ -33,7 +34,8 @@ void append_face_quad(Primitive& p, const OrientedBoxFace& f, const Eigen::Vecto
 
 // The texels of a face of box node n, sized at its texel scale (cut.h), and n's key in the bake cache.
 Eigen::Vector2i texels_of(const OrientedBoxFace& face, const LodSession& session, const Cut& cut, int n) {
-    return face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(session.derived.sizing, texel_scale(cut, n)));
+    return face_texels(2 * face.half_width, 2 * face.half_height,
+                       coarser_sizing(session.derived.sizing, texel_scale(cut, n)));
 }
 std::pair<int, int> baked_key(const Cut& cut, int n) { return {n, texel_scale(cut, n)}; }
 
@@ -50,18 +52,21 @@ struct Landing {
     Eigen::Vector2i page;
 };
 Landing landing(const PackedFace& face, const Packing& packing, const Atlas& atlas) {
-    const AtlasPlacement& at = atlas.placements[std::size_t(face.placement < 0 ? packing.swatch_placement : face.placement)];
+    const AtlasPlacement& at =
+        atlas.placements[std::size_t(face.placement < 0 ? packing.swatch_placement : face.placement)];
     return {&at, atlas.pages[std::size_t(at.page)]};
 }
 
 // The uv of a flat face's swatch centre: bilinear reads its 2x2 middle texels, all one colour.
 Eigen::Vector2f swatch_center(const PackedFace& face, const Packing& packing, const Landing& to) {
     const Eigen::Vector2i texel = swatch_texel(packing.swatches, *to.at, face.swatch);
-    return {float(texel.x() + swatch_side / 2) / float(to.page.x()), float(texel.y() + swatch_side / 2) / float(to.page.y())};
+    return {float(texel.x() + swatch_side / 2) / float(to.page.x()),
+            float(texel.y() + swatch_side / 2) / float(to.page.y())};
 }
 
 // The swatch drawing `color`, added if new; none when the swatches are full (the face keeps its texels).
-std::optional<int> swatch_of(Swatches& swatches, const std::array<std::uint8_t, 4>& color, std::size_t max_swatches) {
+std::optional<int> swatch_of(Swatches& swatches, const std::array<std::uint8_t, 4>& color,
+                             std::size_t max_swatches) {
     if (auto known = swatches.index.find(color); known != swatches.index.end()) return known->second;
     if (swatches.colors.size() >= max_swatches) return std::nullopt;
     swatches.index.emplace(color, int(swatches.colors.size()));
@@ -72,15 +77,19 @@ std::optional<int> swatch_of(Swatches& swatches, const std::array<std::uint8_t, 
 }  // namespace
 
 void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
-    struct FaceJob { int node, face; };
+    struct FaceJob {
+        int node, face;
+    };
     std::vector<FaceJob> jobs;
     for (int node : faced_nodes(cut))
-        if (session.cache.baked.try_emplace(baked_key(cut, node)).second)  // the slots made before the parallel work
+        if (session.cache.baked.try_emplace(baked_key(cut, node))
+                .second)  // the slots made before the parallel work
             for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
     std::map<int, Drawable> subtrees;
     const LodDerived& d = session.derived;
     for (const FaceJob& job : jobs)
-        if (job.face == 0) subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
+        if (job.face == 0)
+            subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
     parallel_for(jobs.size(), threads, [&](std::size_t j) {
         const FaceJob& job = jobs[j];
         OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
@@ -94,10 +103,12 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
     Packing packing;
     for (const BakedNode& node : cut.baked_nodes) {
         const std::array<BakedFace, 6>& baked = session.cache.baked.at(baked_key(cut, node.node));
-        packing.proxy_faces[node.node] = baked_proxy_faces(*node.geometry, *session.derived.boxes[node.node], face_pointers(baked));
+        packing.proxy_faces[node.node] =
+            baked_proxy_faces(*node.geometry, *session.derived.boxes[node.node], face_pointers(baked));
     }
     std::vector<Eigen::Vector2i> sizes;
-    const int most_columns = (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
+    const int most_columns =
+        (p.max_texture_size - 3) / swatch_side;  // the swatches' block fits the largest page
     const std::size_t max_swatches = std::size_t(most_columns) * std::size_t(most_columns);
     for (int node : faced_nodes(cut)) {
         const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[node]);
@@ -105,8 +116,10 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
         for (int f = 0; f < 6; ++f) {
             if (proxy != packing.proxy_faces.end() && proxy->second[std::size_t(f)].indices.empty()) continue;
             const OrientedBoxFace& face = faces[f];
-            const float scale = float(texel_scale(cut, node));  // a coarser box reaches the largest page 1:1 nearer
-            packing.longest_face = std::max({packing.longest_face, 2 * face.half_width / scale, 2 * face.half_height / scale});
+            const float scale =
+                float(texel_scale(cut, node));  // a coarser box reaches the largest page 1:1 nearer
+            packing.longest_face =
+                std::max({packing.longest_face, 2 * face.half_width / scale, 2 * face.half_height / scale});
             if (!textured) continue;
             const Eigen::Vector2i texels = texels_of(face, session, cut, node);
             const BakedFace& baked = session.cache.baked.at(baked_key(cut, node))[f];
@@ -115,7 +128,8 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
             packing.height_depth = std::max(packing.height_depth, 2 * face.half_depth);
             packing.face_index[{node, f}] = packing.faces.size();
             const auto color = flat_faces > 0 ? flat_color(baked, region, flat_faces) : std::nullopt;
-            if (const auto swatch = color ? swatch_of(packing.swatches, *color, max_swatches) : std::nullopt) {
+            if (const auto swatch =
+                    color ? swatch_of(packing.swatches, *color, max_swatches) : std::nullopt) {
                 packing.faces.push_back({node, f, region, -1, *swatch, texels});
                 ++packing.flat_faces;
                 continue;
@@ -132,27 +146,32 @@ Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int
         packing.face_texels += std::uint64_t(swatch_side * swatch_side) * swatches.colors.size();
     }
     if (textured) {
-        packing.atlas = pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.derived.sizing.gutter, threads);
+        packing.atlas =
+            pack_atlas(sizes, p.min_texture_size, p.max_texture_size, session.derived.sizing.gutter, threads);
         packing.gutter_texels = gutter_texels(packing.atlas, sizes, session.derived.sizing.gutter);
-        if (packing.height_depth == 0) packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
+        if (packing.height_depth == 0)
+            packing.height_depth = 1;  // flat boxes only: every height is 1, any depth is right
     }
     return packing;
 }
 
-void place_packed_faces(const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas, Model& out) {
+void place_packed_faces(const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
+                        Model& out) {
     for (const PackedFace& face : packing.faces) {
         if (face.placement < 0) continue;
         const AtlasPlacement& at = atlas.placements[std::size_t(face.placement)];
-        const OrientedBoxFace box_face = oriented_box_faces(*session.derived.boxes[face.node])[std::size_t(face.face)];
+        const OrientedBoxFace box_face =
+            oriented_box_faces(*session.derived.boxes[face.node])[std::size_t(face.face)];
         const LodPage page = lod_page(at.page);
         place_face(session.cache.baked.at(baked_key(cut, face.node))[std::size_t(face.face)], face.region, at,
                    session.derived.sizing.gutter, 2 * box_face.half_depth / packing.height_depth,
-                   out.textures[std::size_t(page.color)], out.textures[std::size_t(page.normal)], out.textures[std::size_t(page.height)]);
+                   out.textures[std::size_t(page.color)], out.textures[std::size_t(page.normal)],
+                   out.textures[std::size_t(page.height)]);
     }
 }
 
-std::map<int, Primitive> box_primitives(const LodSession& session, const Cut& cut, int n, const Packing& packing,
-                                        const Atlas& atlas, bool textured) {
+std::map<int, Primitive> box_primitives(const LodSession& session, const Cut& cut, int n,
+                                        const Packing& packing, const Atlas& atlas, bool textured) {
     std::map<int, Primitive> by_page;
     std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*session.derived.boxes[n]);
     for (int f = 0; f < 6; ++f) {
@@ -168,13 +187,16 @@ std::map<int, Primitive> box_primitives(const LodSession& session, const Cut& cu
         const Landing to = landing(face, packing, atlas);
         Primitive& primitive = by_page[to.at->page];
         primitive.material = to.at->page;
-        append_face_quad(primitive, faces[f], texels_of(faces[f], session, cut, n), face.region, to.at, to.page);
-        if (face.placement < 0) std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), swatch_center(face, packing, to));
+        append_face_quad(primitive, faces[f], texels_of(faces[f], session, cut, n), face.region, to.at,
+                         to.page);
+        if (face.placement < 0)
+            std::fill(primitive.uvs.end() - 4, primitive.uvs.end(), swatch_center(face, packing, to));
     }
     return by_page;
 }
 
-std::map<int, Primitive> baked_primitives(int n, const Packing& packing, const Atlas& atlas, std::map<int, int>& made, Model& out) {
+std::map<int, Primitive> baked_primitives(int n, const Packing& packing, const Atlas& atlas,
+                                          std::map<int, int>& made, Model& out) {
     std::map<int, Primitive> by_page;
     const std::array<Primitive, 6>& triangles = packing.proxy_faces.at(n);
     for (int f = 0; f < 6; ++f) {
@@ -194,11 +216,14 @@ std::map<int, Primitive> baked_primitives(int n, const Packing& packing, const A
                 primitive.uvs.push_back(swatch_center(face, packing, to));
                 continue;
             }
-            // The face uv in texels of its region, kept inside it: the gutter holds the face's own texels beyond.
+            // The face uv in texels of its region, kept inside it: the gutter holds the face's own texels
+            // beyond.
             const Eigen::Vector2f uv = source.uvs[v];
             const TexelRect& region = face.region;
-            const float x = std::clamp(uv.x() * float(face.texels.x()) - float(region.x), 0.0f, float(region.width));
-            const float y = std::clamp(uv.y() * float(face.texels.y()) - float(region.y), 0.0f, float(region.height));
+            const float x =
+                std::clamp(uv.x() * float(face.texels.x()) - float(region.x), 0.0f, float(region.width));
+            const float y =
+                std::clamp(uv.y() * float(face.texels.y()) - float(region.y), 0.0f, float(region.height));
             primitive.uvs.push_back(page_uv(*to.at, region, to.page, x, y));
         }
         for (std::uint32_t index : source.indices) primitive.indices.push_back(base + index);

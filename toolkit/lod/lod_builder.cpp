@@ -1,15 +1,15 @@
-#include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/cut/level_values.h"
 
 #include "base/input_error.h"
 #include "base/parallel.h"
 #include "base/timing.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/lod/cut/error_greedy.h"
-#include "toolkit/model/framing.h"
 #include "toolkit/lod/cut/kept_subtrees.h"
 #include "toolkit/lod/cut/level_budgets.h"
 #include "toolkit/lod/level_faces.h"
+#include "toolkit/model/cost.h"
+#include "toolkit/model/framing.h"
 #include "toolkit/model/model_subtree.h"
 #include "toolkit/model/statistics.h"
 
@@ -39,32 +39,43 @@ void derive_levels(LodSession& session, int threads, HybridMeasurements* measure
     for (std::size_t c = 1; c <= p.budgets.size(); ++c) budgets.push_back(level_budget(session, int(c)));
     const bool textured = p.render_mode != RenderMode::untextured;
     if (p.level_mode == LevelMode::hybrid) {
-        d.hybrid = std::make_shared<const HybridPlan>(plan_hybrid(
-            model, d.textures, d.boxes, {.sizing = d.sizing, .mode = p.render_mode, .threads = threads, .measurements = measurements,
-                                  .baked_proxies = p.baked_proxies}));
-        if (budgets.empty()) budgets = geometric_budgets(d.hybrid->bytes.front(), d.hybrid->bytes.back(), levels);
+        d.hybrid = std::make_shared<const HybridPlan>(plan_hybrid(model, d.textures, d.boxes,
+                                                                  {.sizing = d.sizing,
+                                                                   .mode = p.render_mode,
+                                                                   .threads = threads,
+                                                                   .measurements = measurements,
+                                                                   .baked_proxies = p.baked_proxies}));
+        if (budgets.empty())
+            budgets = geometric_budgets(d.hybrid->bytes.front(), d.hybrid->bytes.back(), levels);
         d.levels = hybrid_levels(model, *d.hybrid, budgets, session.cache.hybrid_levels);
     } else if (p.level_mode == LevelMode::error_greedy && !budgets.empty()) {
         d.opening = std::make_shared<const GreedyOpening>(greedy_opening(model, d.boxes, d.sizing, textured));
         session.cache.opening_steps = greedy_prefixes(*d.opening, budgets);
         d.levels = {opened_levels(model, *d.opening, session.cache.opening_steps), levels};
     } else {
-        d.levels = compute_level_values(model, p.level_mode, levels, p.interpolation, d.boxes, d.sizing, textured);
+        d.levels =
+            compute_level_values(model, p.level_mode, levels, p.interpolation, d.boxes, d.sizing, textured);
     }
 }
 
 }  // namespace
 
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
-                                      const std::vector<std::optional<OrientedBox>>* boxes, HybridMeasurements* measurements) {
+                                      const std::vector<std::optional<OrientedBox>>* boxes,
+                                      HybridMeasurements* measurements) {
     if (model.is_lod)
-        throw_input_error(model.source, "", "is an LoD exported by boxlod: it can be viewed, but not simplified again");
-    if (!draws_anything(model))  // every level would be empty (teapots.DAE: a transparency of "0,200000" read as 0)
-        throw_input_error(model.source, "", "every surface is fully transparent (opacity 0): nothing to draw or bake");
+        throw_input_error(model.source, "",
+                          "is an LoD exported by boxlod: it can be viewed, but not simplified again");
+    if (!draws_anything(
+            model))  // every level would be empty (teapots.DAE: a transparency of "0,200000" read as 0)
+        throw_input_error(model.source, "",
+                          "every surface is fully transparent (opacity 0): nothing to draw or bake");
     validate_parameters(parameters, model.source);
-    if (!parameters.budgets.empty() && !orders_by_bytes(parameters.level_mode))  // a sweep drops them for the other modes
-        throw_input_error(model.source, "", std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +
-                                                " does not order its cuts by bytes; budgets are for error-greedy and hybrid");
+    if (!parameters.budgets.empty() &&
+        !orders_by_bytes(parameters.level_mode))  // a sweep drops them for the other modes
+        throw_input_error(model.source, "",
+                          std::string("--budgets: level mode ") + level_mode_name(parameters.level_mode) +
+                              " does not order its cuts by bytes; budgets are for error-greedy and hybrid");
     auto session = std::make_unique<LodSession>();
     session->input.model = &model;
     session->input.parameters = parameters;
@@ -73,9 +84,11 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     if (p.model.empty()) p.model = model.source;
     if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
     d.sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
-    d.boxes = timed(session->times.boxes, [&] { return boxes ? *boxes : node_boxes(model, p.box_kind, threads); });
+    d.boxes =
+        timed(session->times.boxes, [&] { return boxes ? *boxes : node_boxes(model, p.box_kind, threads); });
     // hybrid measures its proxies against the textured original, whatever the levels' render mode.
-    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid) d.textures = decode_textures(model);
+    if (p.render_mode != RenderMode::untextured || p.level_mode == LevelMode::hybrid)
+        d.textures = decode_textures(model);
     {
         const ScopedTimer timer(session->times.levels);
         d.depth_errors = box_depth_errors(model, d.boxes);
@@ -104,15 +117,16 @@ void add_primitives(const std::vector<Primitive>& primitives, MaterialCopier& wr
 // materials and textures), a simplified one its simplified sub-tree, a box
 // node becomes a leaf with one quad per packed face, a baked one a leaf with
 // its proxy's triangles on the pages.
-void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing, const Atlas& atlas,
-                   bool textured) {
+void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const Packing& packing,
+                   const Atlas& atlas, bool textured) {
     const Model& model = *session.input.model;
     MaterialCopier writer{model, out};
     std::vector<bool> is_box(model.nodes.size(), false), is_baked(model.nodes.size(), false);
     for (int n : cut.box_nodes) is_box[n] = true;
     for (const BakedNode& baked : cut.baked_nodes) is_baked[std::size_t(baked.node)] = true;
     std::map<int, const Proxy*> simplified;
-    for (auto [n, proxy] : cut.simplified_nodes) simplified[n] = &session.derived.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
+    for (auto [n, proxy] : cut.simplified_nodes)
+        simplified[n] = &session.derived.hybrid->proxies[std::size_t(n)][std::size_t(proxy)];
     std::map<int, int> new_index, baked_materials;
     if (textured) place_packed_faces(session, cut, packing, atlas, out);
     for (int n : cut.used_nodes) {
@@ -134,7 +148,9 @@ void add_cut_nodes(Model& out, const LodSession& session, const Cut& cut, const 
             add_primitives(node.primitives, writer, out.nodes[index]);
         for (auto& [page, primitive] : by_page) out.nodes[index].primitives.push_back(std::move(primitive));
     }
-    if (packing.swatch_placement >= 0) place_swatches(packing.swatches, atlas.placements[std::size_t(packing.swatch_placement)], session.derived.sizing.gutter, out);
+    if (packing.swatch_placement >= 0)
+        place_swatches(packing.swatches, atlas.placements[std::size_t(packing.swatch_placement)],
+                       session.derived.sizing.gutter, out);
 }
 
 // Statistics (docs/design.md: Statistics); occupancy = the faces' own texels / page texels.
@@ -144,9 +160,11 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
     std::string page_list;
     for (const Eigen::Vector2i& page : lod.atlas.pages) {
         largest_page_side = std::max({largest_page_side, page.x(), page.y()});
-        page_list += (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
+        page_list +=
+            (page_list.empty() ? "" : ", ") + std::to_string(page.x()) + "x" + std::to_string(page.y());
     }
-    const double occupancy = lod.atlas.pages.empty() ? 0 : double(lod.face_texels) / double(page_texels(lod.atlas));
+    const double occupancy =
+        lod.atlas.pages.empty() ? 0 : double(lod.face_texels) / double(page_texels(lod.atlas));
     MeshCounts lod_counts = mesh_counts(lod.model), original = mesh_counts(model);
     Eigen::Vector3f size = model_bounds(model).size();
     KeyValues statistics = {
@@ -165,7 +183,9 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("faces_original", double(original.faces)),
         number_entry("triangles_original", double(original.triangles)),
         number_entry("vertices_original", double(original.vertices)),
-        float_entry("min_distance", packing.longest_face > 0 ? min_distance(packing.longest_face, session.derived.sizing) : 0),
+        float_entry("min_distance", packing.longest_face > 0
+                                        ? min_distance(packing.longest_face, session.derived.sizing)
+                                        : 0),
         float_entry("mesh_width", size.x()),
         float_entry("mesh_height", size.y()),
         float_entry("mesh_depth", size.z()),
@@ -181,17 +201,19 @@ KeyValues lod_statistics(const LodSession& session, const Lod& lod, const Packin
         number_entry("depth_error", lod.depth_error),
         number_entry("measured_error", lod.measured_error),
     };
-    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"), cost_entries(session.derived.original_cost, "_original")})
+    for (const KeyValues& cost : {cost_entries(combined_cost({&lod.cost}), "_lod"),
+                                  cost_entries(session.derived.original_cost, "_original")})
         statistics.insert(statistics.end(), cost.begin(), cost.end());
     if (!session.input.parameters.budgets.empty() && lod.current_level >= 1)  // what it spent is bytes_lod
-        statistics.push_back(number_entry("budget_bytes", std::floor(level_budget(session, lod.current_level))));
+        statistics.push_back(
+            number_entry("budget_bytes", std::floor(level_budget(session, lod.current_level))));
     statistics.push_back(number_entry("obtained_levels", session.derived.levels.obtained_levels));
-    statistics.push_back(number_entry("current_level", lod.current_level));  // last: it closes a level's block
+    statistics.push_back(
+        number_entry("current_level", lod.current_level));  // last: it closes a level's block
     return statistics;
 }
 
 }  // namespace
-
 
 namespace {
 
@@ -211,13 +233,15 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
     }
     Packing packing = timed(session.times.pack, [&] {
         Packing plain = pack_faces(session, lod.cut, textured, 0, threads);
-        if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would lose detail for nothing
+        if (p.flat_faces > 0 && textured) {  // flat faces only where they save page texels: else they would
+                                             // lose detail for nothing
             Packing flat = pack_faces(session, lod.cut, textured, p.flat_faces, threads);
             if (page_texels(flat.atlas) < page_texels(plain.atlas)) return flat;
         }
         return plain;
     });
-    lod.atlas = std::move(packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
+    lod.atlas = std::move(
+        packing.atlas);  // packing.faces[i] lies at placements[faces[i].placement] (flat: the swatches')
     lod.face_texels = packing.face_texels;
 
     {
@@ -230,14 +254,16 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
         // A shipped asset names its model by file name: no builder's folder leaks
         // into it, and a build in any folder gives the same bytes.
         saved.model = std::filesystem::path(p.model).filename().string();
-        for (const KeyValue& entry : parameter_entries(saved)) out.lod_params.emplace_back(entry.key, entry.value);
+        for (const KeyValue& entry : parameter_entries(saved))
+            out.lod_params.emplace_back(entry.key, entry.value);
         add_pages(out, lod.atlas, packing.height_depth, textured);
         add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
     }
 
     lod.cost = cost_parts(lod.model);
     lod.statistics = lod_statistics(session, lod, packing);
-    for (BakedNode& baked : lod.cut.baked_nodes) baked.geometry = nullptr;  // the plan's or the caller's: not kept past the build
+    for (BakedNode& baked : lod.cut.baked_nodes)
+        baked.geometry = nullptr;  // the plan's or the caller's: not kept past the build
     return lod;
 }
 
@@ -261,13 +287,16 @@ std::string budget_problem(int level, double budget, double coarsest) {
            " bytes is below the coarsest cut's " + format_number(coarsest) + " bytes";
 }
 
-// Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its box).
+// Level c as the best within `estimate` bytes; below 0: the coarsest cut (the root's cheapest proxy, or its
+// box).
 void set_level_within(LodSession& session, int c, double estimate) {
     const LodDerived& d = session.derived;
     if (d.hybrid)
-        session.cache.hybrid_levels[std::size_t(c)] = hybrid_level_within(*session.input.model, *d.hybrid, estimate);
+        session.cache.hybrid_levels[std::size_t(c)] =
+            hybrid_level_within(*session.input.model, *d.hybrid, estimate);
     else
-        session.cache.opening_steps[std::size_t(c)] = estimate < 0 ? 0 : longest_prefix_within(d.opening->bytes, estimate);
+        session.cache.opening_steps[std::size_t(c)] =
+            estimate < 0 ? 0 : longest_prefix_within(d.opening->bytes, estimate);
 }
 
 // Level c's place in its mode's order (a hybrid state, error-greedy's
@@ -283,18 +312,22 @@ LevelChoice level_choice(const LodSession& session, std::size_t level) {
 }
 
 void set_level_choice(LodSession& session, std::size_t level, const LevelChoice& choice) {
-    if (session.derived.hybrid) session.cache.hybrid_levels[level] = choice.hybrid;
-    else session.cache.opening_steps[level] = choice.opening_steps;
+    if (session.derived.hybrid)
+        session.cache.hybrid_levels[level] = choice.hybrid;
+    else
+        session.cache.opening_steps[level] = choice.opening_steps;
 }
 
 double estimated_bytes(const LodSession& session, std::size_t level) {
     const LodCache& cache = session.cache;
-    return session.derived.hybrid ? cache.hybrid_levels[level].bytes : session.derived.opening->bytes[cache.opening_steps[level]];
+    return session.derived.hybrid ? cache.hybrid_levels[level].bytes
+                                  : session.derived.opening->bytes[cache.opening_steps[level]];
 }
 
 double estimated_error(const LodSession& session, std::size_t level) {
     const LodCache& cache = session.cache;
-    return session.derived.hybrid ? cache.hybrid_levels[level].error : session.derived.opening->error[cache.opening_steps[level]];
+    return session.derived.hybrid ? cache.hybrid_levels[level].error
+                                  : session.derived.opening->error[cache.opening_steps[level]];
 }
 
 // The estimates miss a level's real bytes (pages round up to powers of two,
@@ -316,7 +349,8 @@ Lod shrink_to_budget(LodSession& session, Lod lod, int threads) {
         set_level_within(session, c, std::min(ceiling * budget / spent, std::nextafter(ceiling, 0.0)));
         if (estimated_bytes(session, level) >= ceiling) {  // no cheaper estimate
             if (coarsest) {
-                if (!cheapest) throw_input_error(session.input.model->source, "", budget_problem(c, budget, spent));
+                if (!cheapest)
+                    throw_input_error(session.input.model->source, "", budget_problem(c, budget, spent));
                 return std::move(*cheapest);  // over its budget, as its statistics say
             }
             set_level_within(session, c, -1);
@@ -345,8 +379,9 @@ Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
     const auto level = std::size_t(c);
     LevelChoice kept = level_choice(session, level);
     double kept_error = estimated_error(session, level);
-    double estimate = estimated_bytes(session, level), spent = spent_bytes(lod);  // of the last level built that fit
-    double asked = budget, too_much = std::numeric_limits<double>::infinity();   // estimates asked for
+    double estimate = estimated_bytes(session, level),
+           spent = spent_bytes(lod);  // of the last level built that fit
+    double asked = budget, too_much = std::numeric_limits<double>::infinity();  // estimates asked for
     for (int build = 0; build < most_builds && spent < full * budget; ++build) {
         const double ask = std::isinf(too_much) ? estimate * budget / spent : (asked + too_much) / 2;
         if (!(ask > asked)) break;
@@ -360,12 +395,11 @@ Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
         asked = ask;
         estimate = estimated_bytes(session, level);
         spent = spent_bytes(grown);
-        if (estimated_error(session, level) < kept_error)
-            {
-                lod = std::move(grown);
-                kept = level_choice(session, level);
-                kept_error = estimated_error(session, level);
-            }
+        if (estimated_error(session, level) < kept_error) {
+            lod = std::move(grown);
+            kept = level_choice(session, level);
+            kept_error = estimated_error(session, level);
+        }
     }
     set_level_choice(session, level, kept);
     return lod;
@@ -382,16 +416,21 @@ Lod fit_to_budget(LodSession& session, Lod lod, int threads) {
 Lod build_lod(LodSession& session, int current_level, int threads) {
     const int obtained = session.derived.levels.obtained_levels;
     if (current_level < 0 || current_level > obtained)
-        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." + std::to_string(obtained) +
-                         " (the obtained number of levels)");
+        throw InputError("current level " + std::to_string(current_level) + " is outside 0.." +
+                         std::to_string(obtained) + " (the obtained number of levels)");
     Lod lod = build_cut(session, current_level, level_cut(session, current_level), threads);
-    return session.input.parameters.budgets.empty() || current_level == 0 ? lod : fit_to_budget(session, std::move(lod), threads);
+    return session.input.parameters.budgets.empty() || current_level == 0
+               ? lod
+               : fit_to_budget(session, std::move(lod), threads);
 }
 
-Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads) {
-    if (!session.derived.boxes[0]) throw_input_error(session.input.model->source, "", "has no geometry to bake a proxy from");
+Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level,
+                      int threads) {
+    if (!session.derived.boxes[0])
+        throw_input_error(session.input.model->source, "", "has no geometry to bake a proxy from");
     if (session.input.parameters.render_mode == RenderMode::untextured)
-        throw_input_error(session.input.model->source, "", "a baked proxy draws baked pages: its levels cannot be untextured");
+        throw_input_error(session.input.model->source, "",
+                          "a baked proxy draws baked pages: its levels cannot be untextured");
     Cut cut;
     cut.used_nodes = {0};
     cut.baked_nodes = {{0, -1, &geometry}};
@@ -408,7 +447,8 @@ void check_budget_reachable(LodSession& session, int level, int threads) {
     const double coarsest = spent_bytes(build_cut(session, level, level_cut(session, level), threads));
     set_level_choice(session, std::size_t(level), chosen);
     if (coarsest > level_budget(session, level))
-        throw_input_error(session.input.model->source, "", budget_problem(level, level_budget(session, level), coarsest));
+        throw_input_error(session.input.model->source, "",
+                          budget_problem(level, level_budget(session, level), coarsest));
 }
 
 }  // namespace boxlod

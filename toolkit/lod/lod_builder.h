@@ -3,16 +3,16 @@
 // atlas packing and the LoD mesh (kept original nodes + textured box quads).
 #pragma once
 #include "base/key_values.h"
-#include "toolkit/lod/pages/atlas.h"
-#include "toolkit/lod/lod_session.h"
-#include "toolkit/lod/pages/bake.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/cut/error_greedy.h"
 #include "toolkit/lod/hybrid/hybrid.h"
+#include "toolkit/lod/lod_session.h"
+#include "toolkit/lod/pages/atlas.h"
+#include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/pages/level_pages.h"
-#include "toolkit/lod/parameter_file.h"
 #include "toolkit/lod/pages/texture_sizing.h"
+#include "toolkit/lod/parameter_file.h"
+#include "toolkit/model/cost.h"
 
 #include <map>
 #include <memory>
@@ -33,10 +33,13 @@ struct Lod {
     Model model;
     Cut cut;
     Atlas atlas;  // no pages in untextured mode (no baking)
-    std::uint64_t face_texels = 0;  // the packed faces' own texels (cropped), without gutters and free page space
+    std::uint64_t face_texels =
+        0;                   // the packed faces' own texels (cropped), without gutters and free page space
     double depth_error = 0;  // the proxy error of the cut: e(n) summed over its boxes (error_greedy.h), m^3
-    double measured_error = 0;  // hybrid: its proxies' measured errors summed (hybrid_cut_error), sizing-view pixels
-    CostParts cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
+    double measured_error =
+        0;  // hybrid: its proxies' measured errors summed (hybrid_cut_error), sizing-view pixels
+    CostParts
+        cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // docs/design.md: Statistics
 };
 
@@ -49,7 +52,8 @@ Lod build_lod(LodSession& session, int current_level, int threads);
 // (docs/sweeps.md), a far level as Simplygon and Unreal's HLOD make it.
 // Its parameters and statistics name it level `level`. Throws InputError for
 // an untextured session (a baked proxy draws pages) or a model without geometry.
-Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level, int threads);
+Lod build_baked_model(LodSession& session, const std::vector<Primitive>& geometry, int texel_scale, int level,
+                      int threads);
 
 // Throws InputError when level c's byte budget lies below the real bytes of
 // the session's coarsest cut, where build_lod would fail: a command calls it

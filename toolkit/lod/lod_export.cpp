@@ -42,11 +42,12 @@ Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, 
 void name_pages(Lod& lod, const std::string& name) {
     for (int page = 0; page < int(lod.atlas.pages.size()); ++page)
         for (int texture : {lod_page(page).color, lod_page(page).normal, lod_page(page).height})
-            lod.model.textures[std::size_t(texture)].name = name + "_" + lod.model.textures[std::size_t(texture)].name;
+            lod.model.textures[std::size_t(texture)].name =
+                name + "_" + lod.model.textures[std::size_t(texture)].name;
 }
 
-void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory, const std::string& name,
-                const Image8& preview, int threads, bool binary) {
+void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory,
+                const std::string& name, const Image8& preview, int threads, bool binary) {
     namespace fs = std::filesystem;
     std::error_code error;
     // A level's files appear together or not at all: they wait as temporaries

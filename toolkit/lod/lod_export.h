@@ -19,7 +19,7 @@ void name_pages(Lod& lod, const std::string& name);
 // parameter file saves `chain_parameters` (toolkit/lod/chain/chain.h: Chain::parameters)
 // at the level's number, so that building from it makes the same level. `binary`:
 // NAME.glb with the pages inside, instead of NAME.gltf + .bin + PNGs.
-void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory, const std::string& name,
-                const Image8& preview, int threads, bool binary = false);
+void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory,
+                const std::string& name, const Image8& preview, int threads, bool binary = false);
 
 }  // namespace boxlod

@@ -5,9 +5,9 @@
 #pragma once
 #include "base/input_error.h"
 #include "renderer/renderer.h"
-#include "toolkit/lod/pages/boxes.h"
 #include "toolkit/lod/cut/level_budgets.h"
 #include "toolkit/lod/cut/level_modes.h"
+#include "toolkit/lod/pages/boxes.h"
 
 #include <functional>
 #include <optional>
@@ -26,20 +26,27 @@ struct LevelDistances {
 };
 
 struct LodParameters {
-    std::string model;  // the model file (relative paths are relative to the parameter file)
-    std::string city_lod;  // a CityJSON model's LoD read ("": each object's finest; toolkit/formats/cityjson_import.h)
+    std::string model;     // the model file (relative paths are relative to the parameter file)
+    std::string city_lod;  // a CityJSON model's LoD read ("": each object's finest;
+                           // toolkit/formats/cityjson_import.h)
     LevelMode level_mode = LevelMode::top_down;
     int wanted_levels = 8;
-    std::vector<ByteBudget> budgets;  // beyond the manual: one level per budget (level_budgets.h); empty: wanted_levels
+    std::vector<ByteBudget>
+        budgets;  // beyond the manual: one level per budget (level_budgets.h); empty: wanted_levels
     int current_level = 1;
     BoxKind box_kind = BoxKind::expanded;
     Interpolation interpolation = Interpolation::linear;
-    bool keep_small_subtrees = false;    // beyond the manual: no box for a sub-tree of <= 6 faces (kept_subtrees.h)
+    bool keep_small_subtrees =
+        false;  // beyond the manual: no box for a sub-tree of <= 6 faces (kept_subtrees.h)
     // The defaults are the chain that pays its way (docs/cost.md); set_manual gives the manual's program.
-    bool keep_cheaper_subtrees = true;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
-    bool crop_faces = true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
-    int flat_faces = 8;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
-    bool baked_proxies = false;  // beyond the manual, level mode hybrid: also baked proxies (hybrid.h, baked_proxy.h)
+    bool keep_cheaper_subtrees =
+        true;  // beyond the manual: no box costing more bytes than its sub-tree's mesh
+    bool crop_faces =
+        true;  // a baked face keeps only the rectangle of its covered texels; none covered: no quad
+    int flat_faces =
+        8;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
+    bool baked_proxies =
+        false;  // beyond the manual, level mode hybrid: also baked proxies (hybrid.h, baked_proxy.h)
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model; a chain's level 1
@@ -66,19 +73,22 @@ constexpr NumberRange distance{0, 1e12};
 constexpr double min_positive_distance = 1e-3;  // a sizing camera nearer than 1 mm sizes nothing sensible
 constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two
-constexpr NumberRange parallax{-1, 1};          // scale and bias, in texture units (docs/design.md: Rendering)
-constexpr NumberRange flat_faces{0, 64};        // texels on a face's longer side; 0: off
+constexpr NumberRange parallax{-1, 1};    // scale and bias, in texture units (docs/design.md: Rendering)
+constexpr NumberRange flat_faces{0, 64};  // texels on a face's longer side; 0: off
 }  // namespace parameter_range
 
 struct ParameterDeclaration {
-    std::string key;         // parameter files and sweep configs: "wanted_levels"
-    std::string option;      // the command line: "wanted-levels"; a yes/no parameter's option is a flag that sets the opposite of its default
-    std::string value_name;  // "N"; empty for yes/no
-    std::string help;        // without the default, which help_text() adds
+    std::string key;     // parameter files and sweep configs: "wanted_levels"
+    std::string option;  // the command line: "wanted-levels"; a yes/no parameter's option is a flag that sets
+                         // the opposite of its default
+    std::string value_name;            // "N"; empty for yes/no
+    std::string help;                  // without the default, which help_text() adds
     std::optional<NumberRange> range;  // numbers only
     bool power_of_two = false;         // numbers only
-    bool sweep_key = true;  // a sweep config sets it with `key = value`; false: the sweep varies it under a key of its own
-    bool written_at_default = true;  // false: a parameter file names it only where it differs from the default
+    bool sweep_key =
+        true;  // a sweep config sets it with `key = value`; false: the sweep varies it under a key of its own
+    bool written_at_default =
+        true;  // false: a parameter file names it only where it differs from the default
     std::function<std::string(const LodParameters&)> format;  // reads back exactly through parse
     // Reads `text` into `parameters`; returns what is wrong ("" when nothing is).
     std::function<std::string(const std::string& text, LodParameters& parameters)> parse;
@@ -109,6 +119,7 @@ void validate_parameters(const LodParameters& parameters, const std::string& whe
 
 // How a level is drawn through `camera`: in `mode`, with the parallax its
 // parameters state, lit from the camera (docs/design.md: Rendering).
-RenderSettings drawing_settings(const Camera& camera, RenderMode mode, const LodParameters& parameters, int threads);
+RenderSettings drawing_settings(const Camera& camera, RenderMode mode, const LodParameters& parameters,
+                                int threads);
 
 }  // namespace boxlod

@@ -3,11 +3,11 @@
 // time spent, apart from the builder so the steps of a level (level_faces.h)
 // read it without depending on the builder.
 #pragma once
-#include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/cut/error_greedy.h"
-#include "toolkit/lod/hybrid/hybrid.h"
 #include "toolkit/lod/cut/level_values.h"
+#include "toolkit/lod/hybrid/hybrid.h"
 #include "toolkit/lod/lod_parameters.h"
+#include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/pages/texture_sizing.h"
 #include "toolkit/model/cost.h"
 
@@ -28,7 +28,7 @@ struct LodTimes {  // seconds, for the time split in docs/performance.md
 // What the user gave: the model and its parameters.
 struct LodInput {
     const Model* model = nullptr;
-    LodParameters parameters;  // distance resolved (never 0 here), model named
+    LodParameters parameters;    // distance resolved (never 0 here), model named
     bool budgets_strict = true;  // false (sweeps): a level no cut fits draws the coarsest instead of failing
 };
 
@@ -40,8 +40,9 @@ struct LodDerived {
     LevelValues levels;
     TextureSizing sizing;
     std::vector<bool> kept;  // nodes keeping their geometry below their level (kept_subtrees.h); empty: none
-    std::shared_ptr<const HybridPlan> hybrid;      // level mode hybrid: the plan its levels are prefixes of
-    std::shared_ptr<const GreedyOpening> opening;  // error-greedy with budgets: the openings its levels are prefixes of
+    std::shared_ptr<const HybridPlan> hybrid;  // level mode hybrid: the plan its levels are prefixes of
+    std::shared_ptr<const GreedyOpening>
+        opening;  // error-greedy with budgets: the openings its levels are prefixes of
     ModelCost original_cost;
 };
 
@@ -50,7 +51,7 @@ struct LodDerived {
 // estimate until build_lod fits it to the level's real bytes.
 struct LodCache {
     std::map<std::pair<int, int>, std::array<BakedFace, 6>> baked;  // per box node and texel scale (cut.h)
-    std::vector<HybridLevel> hybrid_levels;  // hybrid: per current level c, its state
+    std::vector<HybridLevel> hybrid_levels;                         // hybrid: per current level c, its state
     std::vector<std::size_t> opening_steps;  // error-greedy with budgets: per level c, the openings drawn
 };
 

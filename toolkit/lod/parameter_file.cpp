@@ -33,7 +33,8 @@ struct Parser {
     float number(const std::string& text, const NumberRange& range = {-FLT_MAX, FLT_MAX}) const {
         float v = 0;
         auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (error != std::errc() || end != text.data() + text.size() || !range.contains(v)) fail(out_of_range_message(range, text));
+        if (error != std::errc() || end != text.data() + text.size() || !range.contains(v))
+            fail(out_of_range_message(range, text));
         return v;
     }
     Eigen::Vector3f vector(const std::string& text) const {
@@ -68,7 +69,9 @@ std::map<std::string, ViewSetter> view_keys(Camera& camera, Light& light) {
 
 KeyValues parameter_entries(const LodParameters& p) {
     KeyValues out;
-    auto line = [&](const std::string& key, const std::string& value) { out.push_back(text_entry(key, value)); };
+    auto line = [&](const std::string& key, const std::string& value) {
+        out.push_back(text_entry(key, value));
+    };
     line("model", p.model);
     for (const ParameterDeclaration& d : lod_parameter_declarations())
         if (d.written_at_default || d.format(p) != d.format(LodParameters{})) line(d.key, d.format(p));

@@ -46,7 +46,8 @@ double surface_deviation(const SurfaceViews& original, const SurfaceViews& level
     for (std::size_t view = 0; view < original.depth.size(); ++view)
         for (std::size_t i = 0; i < original.depth[view].size(); ++i) {
             const float a = original.depth[view][i], b = level.depth[view][i];
-            if (std::isfinite(a) && std::isfinite(b)) deviation = std::max(deviation, double(std::abs(a - b)));
+            if (std::isfinite(a) && std::isfinite(b))
+                deviation = std::max(deviation, double(std::abs(a - b)));
         }
     return deviation;
 }

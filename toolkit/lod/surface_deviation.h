@@ -14,7 +14,8 @@ namespace boxlod {
 
 // A model's depth seen along the six directions of a frame.
 struct SurfaceViews {
-    std::vector<std::vector<float>> depth;  // per direction (+a0, -a0, +a1, ...): metres from the camera; +inf uncovered
+    std::vector<std::vector<float>>
+        depth;  // per direction (+a0, -a0, +a1, ...): metres from the camera; +inf uncovered
 };
 
 // Masked materials (baked box faces) are drawn as their alpha test draws them.

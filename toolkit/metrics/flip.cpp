@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -23,7 +23,7 @@ using Vector3 = Eigen::Vector3d;
 // (B. Lindbloom, "RGB/XYZ Matrices", sRGB).
 const Eigen::Matrix3d& rgb_to_xyz() {
     static const Eigen::Matrix3d m = (Eigen::Matrix3d() << 0.4124564, 0.3575761, 0.1804375,  //
-                                      0.2126729, 0.7151522, 0.0721750,                     //
+                                      0.2126729, 0.7151522, 0.0721750,                       //
                                       0.0193339, 0.1191920, 0.9503041)
                                          .finished();
     return m;
@@ -66,14 +66,18 @@ double cube_root(double t) {
 // CIE 1976 L*a*b* (CIE 15:2004, 8.2.1) with exact thresholds (6/29)^3.
 Vector3 xyz_to_lab(const Vector3& xyz) {
     constexpr double delta = 6.0 / 29.0;
-    auto f = [&](double t) { return t > delta * delta * delta ? cube_root(t) : t / (3 * delta * delta) + 4.0 / 29.0; };
+    auto f = [&](double t) {
+        return t > delta * delta * delta ? cube_root(t) : t / (3 * delta * delta) + 4.0 / 29.0;
+    };
     Vector3 n = xyz.cwiseQuotient(white());
     double fx = f(n.x()), fy = f(n.y()), fz = f(n.z());
     return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
 }
 
 // Hunt effect (FLIP, colour pipeline): chroma shrinks with lightness.
-Vector3 hunt_adjust(const Vector3& lab) { return {lab.x(), 0.01 * lab.x() * lab.y(), 0.01 * lab.x() * lab.z()}; }
+Vector3 hunt_adjust(const Vector3& lab) {
+    return {lab.x(), 0.01 * lab.x() * lab.y(), 0.01 * lab.x() * lab.z()};
+}
 
 // HyAB (Abasi, Tehran, Fairchild 2020): city-block in L*, Euclidean in a*b*.
 double hyab(const Vector3& p, const Vector3& q) {
@@ -85,8 +89,8 @@ Vector3 linear_rgb_to_hunt_lab(const Vector3& rgb) { return hunt_adjust(xyz_to_l
 
 // FLIP's constants.
 constexpr double qc = 0.7, pc = 0.4, pt = 0.95;  // colour error exponent and its redistribution
-constexpr double qf = 0.5;                        // feature error exponent
-constexpr double feature_width = 0.082;           // degrees, peak to trough of the edge detector
+constexpr double qf = 0.5;                       // feature error exponent
+constexpr double feature_width = 0.082;          // degrees, peak to trough of the edge detector
 
 // The largest colour distance, between linear-RGB green and blue, raised to qc.
 double max_color_distance() {
@@ -104,8 +108,8 @@ struct Csf {
     double a1, b1, a2, b2;
 };
 constexpr std::array<Csf, 3> csf = {{
-    {1, 0.0047, 0, 1e-5},      // achromatic (Yy)
-    {1, 0.0053, 0, 1e-5},      // red-green (Cx)
+    {1, 0.0047, 0, 1e-5},       // achromatic (Yy)
+    {1, 0.0053, 0, 1e-5},       // red-green (Cx)
     {34.1, 0.04, 13.5, 0.025},  // blue-yellow (Cz)
 }};
 
@@ -183,7 +187,8 @@ struct Kernels {
 };
 
 Kernels flip_kernels(double ppd) {
-    if (!(ppd > 0) || !std::isfinite(ppd)) throw std::invalid_argument("flip: pixels per degree must be positive");
+    if (!(ppd > 0) || !std::isfinite(ppd))
+        throw std::invalid_argument("flip: pixels per degree must be positive");
     Kernels kernels;
     for (int c = 0; c < 3; ++c) kernels.csf[c] = csf_kernels(csf[c], ppd);
     kernels.edge_x = feature_kernel(ppd, false, true);
@@ -215,7 +220,8 @@ void csf_row(const Plane& channel, const std::vector<WeightedKernel>& terms, int
 
 void perceive_row(const Opponent& image, const Kernels& k, int y, int x_begin, int x_end, PerceivedRow& row) {
     const std::size_t width = std::size_t(image.channels[0].width);
-    for (auto* v : {&row.lab[0], &row.lab[1], &row.lab[2], &row.edges, &row.points, &row.gx, &row.gy}) v->resize(width);
+    for (auto* v : {&row.lab[0], &row.lab[1], &row.lab[2], &row.edges, &row.points, &row.gx, &row.gy})
+        v->resize(width);
     for (int c = 0; c < 3; ++c) csf_row(image.channels[c], k.csf[c], y, x_begin, x_end, row, row.lab[c]);
     for (int x = x_begin; x < x_end; ++x) {
         // The colour pipeline: back to linear RGB, clamped, then CIELAB with the Hunt adjustment.
@@ -226,10 +232,12 @@ void perceive_row(const Opponent& image, const Kernels& k, int y, int x_begin, i
     }
     // The feature pipeline filters Y / Yn = (Yy + 16) / 116: every detector's
     // weights sum to 0, so filtering Yy and dividing by 116 is the same.
-    auto magnitude = [&](const SeparableKernel& along_x, const SeparableKernel& along_y, std::vector<double>& out) {
+    auto magnitude = [&](const SeparableKernel& along_x, const SeparableKernel& along_y,
+                         std::vector<double>& out) {
         filter_separable_row(image.channels[0], along_x, y, x_begin, x_end, row.scratch, row.gx.data());
         filter_separable_row(image.channels[0], along_y, y, x_begin, x_end, row.scratch, row.gy.data());
-        for (int x = x_begin; x < x_end; ++x) out[x] = std::sqrt(row.gx[x] * row.gx[x] + row.gy[x] * row.gy[x]) / 116;
+        for (int x = x_begin; x < x_end; ++x)
+            out[x] = std::sqrt(row.gx[x] * row.gx[x] + row.gy[x] * row.gy[x]) / 116;
     };
     magnitude(k.edge_x, k.edge_y, row.edges);
     magnitude(k.point_x, k.point_y, row.points);
@@ -240,7 +248,8 @@ void perceive_row(const Opponent& image, const Kernels& k, int y, int x_begin, i
 int reach(const Kernels& k) {
     std::size_t taps = 0;
     for (const auto& terms : k.csf)
-        for (const WeightedKernel& t : terms) taps = std::max({taps, t.kernel.horizontal.size(), t.kernel.vertical.size()});
+        for (const WeightedKernel& t : terms)
+            taps = std::max({taps, t.kernel.horizontal.size(), t.kernel.vertical.size()});
     for (const SeparableKernel* f : {&k.edge_x, &k.edge_y, &k.point_x, &k.point_y})
         taps = std::max({taps, f->horizontal.size(), f->vertical.size()});
     return int(taps / 2);
@@ -253,7 +262,8 @@ int reach(const Kernels& k) {
 // are skipped, not computed).
 std::vector<std::pair<int, int>> columns_to_compare(const Image8& a, const Image8& b, int reach) {
     const int width = a.width, height = a.height;
-    std::vector<std::pair<int, int>> differing(std::size_t(height), {width, 0}), out(differing.size(), {0, 0});
+    std::vector<std::pair<int, int>> differing(std::size_t(height), {width, 0}),
+        out(differing.size(), {0, 0});
     for (int y = 0; y < height; ++y) {
         auto& [begin, end] = differing[std::size_t(y)];
         for (int x = 0; x < width; ++x)
@@ -264,11 +274,10 @@ std::vector<std::pair<int, int>> columns_to_compare(const Image8& a, const Image
     }
     for (int y = 0; y < height; ++y) {
         int begin = width, end = 0;
-        for (int z = std::max(0, y - reach); z <= std::min(height - 1, y + reach); ++z)
-            {
-                begin = std::min(begin, differing[std::size_t(z)].first);
-                end = std::max(end, differing[std::size_t(z)].second);
-            }
+        for (int z = std::max(0, y - reach); z <= std::min(height - 1, y + reach); ++z) {
+            begin = std::min(begin, differing[std::size_t(z)].first);
+            end = std::max(end, differing[std::size_t(z)].second);
+        }
         if (begin < end) out[std::size_t(y)] = {std::max(0, begin - reach), std::min(width, end + reach)};
     }
     return out;
@@ -302,7 +311,8 @@ FlipReference prepare_flip_reference(const Image8& reference, double ppd, int th
 
 FlipResult flip(const FlipReference& reference, const Image8& test, int threads) {
     const int width = reference.edges.width, height = reference.edges.height;
-    if (width != test.width || height != test.height) throw std::invalid_argument("flip: the images differ in size");
+    if (width != test.width || height != test.height)
+        throw std::invalid_argument("flip: the images differ in size");
     check_rgb(test);
     const Kernels kernels = flip_kernels(reference.pixels_per_degree);
     const Opponent test_opponent = to_ycxcz(test, threads);
@@ -311,14 +321,16 @@ FlipResult flip(const FlipReference& reference, const Image8& test, int threads)
     FlipResult result;
     result.error = Plane(width, height, 1);
     std::vector<double> row_sums(std::size_t(height), 0.0);
-    const std::vector<std::pair<int, int>> columns = columns_to_compare(reference.image, test, reach(kernels));
+    const std::vector<std::pair<int, int>> columns =
+        columns_to_compare(reference.image, test, reach(kernels));
     parallel_for(row_sums.size(), threads, [&](std::size_t row) {
         thread_local PerceivedRow t;
         const int y = int(row);
         const auto [x_begin, x_end] = columns[row];
         if (x_begin == x_end) return;
         perceive_row(test_opponent, kernels, y, x_begin, x_end, t);
-        const double* r_lab[3] = {reference.lab[0].at(0, y), reference.lab[1].at(0, y), reference.lab[2].at(0, y)};
+        const double* r_lab[3] = {reference.lab[0].at(0, y), reference.lab[1].at(0, y),
+                                  reference.lab[2].at(0, y)};
         const double *r_edges = reference.edges.at(0, y), *r_points = reference.points.at(0, y);
         double* error_row = result.error.at(0, y);
         double sum = 0;

@@ -17,9 +17,9 @@
 // identical images, about 0.967 for black against white.
 #pragma once
 #include "base/input_error.h"
+#include "renderer/image.h"
 #include "toolkit/metrics/separable_filter.h"
 #include "toolkit/metrics/silhouette.h"
-#include "renderer/image.h"
 
 namespace boxlod {
 

@@ -2,8 +2,8 @@
 // ramp black -> red -> yellow -> white (knots at 0, 1/3, 2/3, 1, linear in
 // 8-bit sRGB between them), so that larger errors are brighter.
 #pragma once
-#include "toolkit/metrics/separable_filter.h"
 #include "renderer/image.h"
+#include "toolkit/metrics/separable_filter.h"
 
 #include <array>
 #include <cstdint>

@@ -2,8 +2,8 @@
 // alpha and further channels are ignored): RMSE, PSNR and SSIM.
 // Both images must have the same size (std::invalid_argument otherwise).
 #pragma once
-#include "toolkit/metrics/separable_filter.h"
 #include "renderer/image.h"
+#include "toolkit/metrics/separable_filter.h"
 
 namespace boxlod {
 

@@ -15,8 +15,8 @@ constexpr EnumEntry<Metric> metric_table[] = {
     {Metric::ssim, "ssim", "mean SSIM on BT.601 luma, as scikit-image's structural_similarity"},
     {Metric::flip, "flip", "mean LDR FLIP (Andersson et al. 2020) at the given pixels per degree"},
     {Metric::flip_covered, "flip_covered",
-     "LDR FLIP's mean over the pixels either image covers (0 where neither does): a building as seen, where the "
-     "whole image's mean shrinks with its pixels"},
+     "LDR FLIP's mean over the pixels either image covers (0 where neither does): a building as seen, where "
+     "the whole image's mean shrinks with its pixels"},
     {Metric::iou, "iou", "intersection over union of the two coverage masks"},
 };
 
@@ -49,31 +49,34 @@ MetricValues measure_metrics(const std::vector<Metric>& wanted, const MetricPair
     std::optional<FlipResult> flipped;  // measured once for flip and flip_covered
     auto flip_result = [&]() -> const FlipResult& {
         if (!flipped)
-            flipped = pair.flip_reference ? flip(*pair.flip_reference, pair.test, pair.threads)
-                                          : flip(pair.reference, pair.test, pair.pixels_per_degree, pair.threads);
+            flipped = pair.flip_reference
+                          ? flip(*pair.flip_reference, pair.test, pair.threads)
+                          : flip(pair.reference, pair.test, pair.pixels_per_degree, pair.threads);
         return *flipped;
     };
     auto coverages = [&](Metric metric) {
         if (!pair.reference_coverage || !pair.test_coverage)
-            throw std::logic_error(std::string("measure_metrics: ") + enum_name(metrics(), metric) + " needs both coverages");
+            throw std::logic_error(std::string("measure_metrics: ") + enum_name(metrics(), metric) +
+                                   " needs both coverages");
     };
     for (Metric metric : wanted) {
         switch (metric) {
-            case Metric::rmse:
-            case Metric::psnr:
-                if (!error) error = rmse(pair.reference, pair.test);
-                out.values.push_back(metric == Metric::rmse ? *error : psnr_from_rmse(*error));
-                break;
-            case Metric::ssim: out.values.push_back(ssim(pair.reference, pair.test, pair.threads)); break;
-            case Metric::flip: out.values.push_back(flip_result().mean); break;
-            case Metric::flip_covered:
-                coverages(metric);
-                out.values.push_back(covered_mean(flip_result().error, *pair.reference_coverage, *pair.test_coverage));
-                break;
-            case Metric::iou:
-                coverages(metric);
-                out.values.push_back(silhouette_iou(*pair.reference_coverage, *pair.test_coverage));
-                break;
+        case Metric::rmse:
+        case Metric::psnr:
+            if (!error) error = rmse(pair.reference, pair.test);
+            out.values.push_back(metric == Metric::rmse ? *error : psnr_from_rmse(*error));
+            break;
+        case Metric::ssim: out.values.push_back(ssim(pair.reference, pair.test, pair.threads)); break;
+        case Metric::flip: out.values.push_back(flip_result().mean); break;
+        case Metric::flip_covered:
+            coverages(metric);
+            out.values.push_back(
+                covered_mean(flip_result().error, *pair.reference_coverage, *pair.test_coverage));
+            break;
+        case Metric::iou:
+            coverages(metric);
+            out.values.push_back(silhouette_iou(*pair.reference_coverage, *pair.test_coverage));
+            break;
         }
     }
     if (flipped) out.flip_error = std::move(flipped->error);

@@ -4,10 +4,10 @@
 // one FLIP for its mean, its mean over covered pixels and its error map).
 #pragma once
 #include "base/enum_table.h"
+#include "renderer/image.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/separable_filter.h"
 #include "toolkit/metrics/silhouette.h"
-#include "renderer/image.h"
 
 #include <optional>
 #include <span>
@@ -29,8 +29,9 @@ struct MetricPair {
     const Image8& test;
     const Coverage* reference_coverage = nullptr;  // needed for iou and flip_covered
     const Coverage* test_coverage = nullptr;
-    const FlipReference* flip_reference = nullptr;  // the reference's half of FLIP, prepared once per reference
-    double pixels_per_degree = 67;                  // FLIP's, without a prepared reference
+    const FlipReference* flip_reference =
+        nullptr;                    // the reference's half of FLIP, prepared once per reference
+    double pixels_per_degree = 67;  // FLIP's, without a prepared reference
     int threads = 0;
 };
 

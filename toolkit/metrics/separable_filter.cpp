@@ -12,7 +12,8 @@ namespace boxlod {
 namespace {
 
 int radius_of(const std::vector<double>& taps) {
-    if (taps.size() % 2 != 1) throw std::invalid_argument("filter_separable: kernels need an odd number of taps");
+    if (taps.size() % 2 != 1)
+        throw std::invalid_argument("filter_separable: kernels need an odd number of taps");
     return int(taps.size() / 2);
 }
 
@@ -23,8 +24,8 @@ int radius_of(const std::vector<double>& taps) {
 // same order whatever the block or vector width: the AVX2 clone (chosen at
 // run time where the CPU has it) gives the same bits as the default one.
 __attribute__((target_clones("avx2", "default"))) void weighted_sum(double* __restrict out,
-                                                                    const double* const* rows, const double* w,
-                                                                    int taps, int n) {
+                                                                    const double* const* rows,
+                                                                    const double* w, int taps, int n) {
     // Four vectors of four sums (GCC's vector extension: AVX2 registers in
     // that clone, pairs of SSE2 registers in the default one).
     using Vector4 = double __attribute__((vector_size(32)));
@@ -100,7 +101,8 @@ Plane filter_separable(const Plane& in, const SeparableKernel& kernel, int threa
 std::vector<double> sampled_gaussian(double sigma, int radius) {
     std::vector<double> taps(std::size_t(2 * radius + 1));
     double sum = 0;
-    for (int i = -radius; i <= radius; ++i) sum += taps[i + radius] = std::exp(-0.5 * double(i) * i / (sigma * sigma));
+    for (int i = -radius; i <= radius; ++i)
+        sum += taps[i + radius] = std::exp(-0.5 * double(i) * i / (sigma * sigma));
     for (double& t : taps) t /= sum;
     return taps;
 }

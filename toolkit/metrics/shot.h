@@ -14,7 +14,8 @@ namespace boxlod {
 struct Shot {
     Image8 image;
     Coverage coverage;
-    std::optional<FlipReference> flip_reference;  // an original's, when FLIP is measured: prepared once per view
+    std::optional<FlipReference>
+        flip_reference;  // an original's, when FLIP is measured: prepared once per view
 };
 
 Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height);

@@ -8,7 +8,8 @@ namespace boxlod {
 Coverage coverage_from_mask(const Image8& mask) {
     Coverage out{mask.width, mask.height, std::vector<std::uint8_t>(std::size_t(mask.width) * mask.height)};
     for (int y = 0; y < mask.height; ++y)
-        for (int x = 0; x < mask.width; ++x) out.covered[std::size_t(y) * mask.width + x] = mask.at(x, y)[0] > 127;
+        for (int x = 0; x < mask.width; ++x)
+            out.covered[std::size_t(y) * mask.width + x] = mask.at(x, y)[0] > 127;
     return out;
 }
 
@@ -18,7 +19,8 @@ std::size_t covered_pixels(const Coverage& coverage) {
 
 Coverage coverage_from_background(const Image8& image, std::array<std::uint8_t, 3> background) {
     if (image.channels < 3) throw std::invalid_argument("coverage_from_background: RGB image expected");
-    Coverage out{image.width, image.height, std::vector<std::uint8_t>(std::size_t(image.width) * image.height)};
+    Coverage out{image.width, image.height,
+                 std::vector<std::uint8_t>(std::size_t(image.width) * image.height)};
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             const std::uint8_t* p = image.at(x, y);
@@ -29,7 +31,8 @@ Coverage coverage_from_background(const Image8& image, std::array<std::uint8_t, 
 }
 
 double silhouette_iou(const Coverage& a, const Coverage& b) {
-    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("silhouette_iou: masks differ in size");
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("silhouette_iou: masks differ in size");
     std::size_t both = 0, either = 0;
     for (std::size_t i = 0; i < a.covered.size(); ++i) {
         both += a.covered[i] & b.covered[i];

@@ -12,7 +12,8 @@ namespace {
 template <typename PerLevel>
 std::uint64_t sum_over_mip_chain(int width, int height, PerLevel per_level) {
     std::uint64_t sum = 0;
-    for (std::uint64_t w = std::uint64_t(std::max(width, 0)), h = std::uint64_t(std::max(height, 0)); w > 0 && h > 0;) {
+    for (std::uint64_t w = std::uint64_t(std::max(width, 0)), h = std::uint64_t(std::max(height, 0));
+         w > 0 && h > 0;) {
         sum += per_level(w, h);
         if (w == 1 && h == 1) break;
         w = std::max<std::uint64_t>(1, w / 2);
@@ -24,16 +25,17 @@ std::uint64_t sum_over_mip_chain(int width, int height, PerLevel per_level) {
 // Whether any texel's alpha is below 255 (`partial`: strictly between 0 and 255).
 bool has_alpha(const Image8& image, bool partial = false) {
     if (image.channels != 4 && image.channels != 2) return false;
-    for (std::size_t i = std::size_t(image.channels - 1); i < image.pixels.size(); i += std::size_t(image.channels))
+    for (std::size_t i = std::size_t(image.channels - 1); i < image.pixels.size();
+         i += std::size_t(image.channels))
         if (image.pixels[i] != 255 && (!partial || image.pixels[i] != 0)) return true;
     return false;
 }
 
 GpuFormat gpu_format(const Texture& texture, TextureUse role) {
     switch (role) {
-        case TextureUse::normal: return GpuFormat::bc5;  // x and y; z is rebuilt in the shader
-        case TextureUse::scalar: return GpuFormat::bc4;
-        case TextureUse::color: break;
+    case TextureUse::normal: return GpuFormat::bc5;  // x and y; z is rebuilt in the shader
+    case TextureUse::scalar: return GpuFormat::bc4;
+    case TextureUse::color: break;
     }
     // BC1 keeps 1-bit alpha (cut-outs, baked coverage); anything in between needs BC7.
     return has_alpha(texture.image, true) ? GpuFormat::bc7 : GpuFormat::bc1;
@@ -43,7 +45,10 @@ GpuFormat gpu_format(const Texture& texture, TextureUse role) {
 // not opaque, else RGB8; normal RGB8; height 16-bit (8-bit if so stored) grey.
 std::uint64_t uncompressed_bytes(const Texture& texture, TextureUse role) {
     if (!texture.image16.empty()) return mip_chain_texels(texture.image16.width, texture.image16.height) * 2;
-    std::uint64_t texel_bytes = role == TextureUse::scalar ? 1 : role == TextureUse::normal ? 3 : has_alpha(texture.image) ? 4 : 3;
+    std::uint64_t texel_bytes = role == TextureUse::scalar   ? 1
+                                : role == TextureUse::normal ? 3
+                                : has_alpha(texture.image)   ? 4
+                                                             : 3;
     return mip_chain_texels(texture.image.width, texture.image.height) * texel_bytes;
 }
 
@@ -74,13 +79,18 @@ std::uint64_t mip_chain_texels(int width, int height) {
 
 std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format) {
     const std::uint64_t block_bytes = format == GpuFormat::bc1 || format == GpuFormat::bc4 ? 8 : 16;
-    return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) { return (w + 3) / 4 * ((h + 3) / 4) * block_bytes; });
+    return sum_over_mip_chain(width, height, [&](std::uint64_t w, std::uint64_t h) {
+        return (w + 3) / 4 * ((h + 3) / 4) * block_bytes;
+    });
 }
 
 std::map<int, TextureCost> texture_costs(const Model& model, const std::set<int>& materials) {
     // Each texture once, in the use of the first material that samples it,
     // with every map any material samples it as.
-    struct Sampled { TextureUse use; unsigned maps = 0; };
+    struct Sampled {
+        TextureUse use;
+        unsigned maps = 0;
+    };
     std::map<int, Sampled> sampled;
     for (int m : materials) {
         if (m < 0 || m >= int(model.materials.size())) continue;
@@ -97,7 +107,8 @@ std::map<int, TextureCost> texture_costs(const Model& model, const std::set<int>
         const int width = wide ? texture.image16.width : texture.image.width;
         const int height = wide ? texture.image16.height : texture.image.height;
         costs[index] = {texture_digest(texture), uncompressed_bytes(texture, use),
-                        block_compressed_bytes(width, height, gpu_format(texture, use)), texture_sampled.maps};
+                        block_compressed_bytes(width, height, gpu_format(texture, use)),
+                        texture_sampled.maps};
     }
     return costs;
 }

@@ -22,9 +22,10 @@ namespace boxlod {
 enum class GpuFormat { bc1, bc4, bc5, bc7 };
 
 struct ModelCost {
-    std::uint64_t draw_calls = 0;         // one per material drawn: geometry batched by material (the manual's VBOs)
-    std::uint64_t mesh_bytes = 0;         // vertex + index buffers as boxlod's glTF export writes them
-    std::uint64_t texture_bytes = 0;      // every texture a material uses, uncompressed at the format written, with mips
+    std::uint64_t draw_calls = 0;  // one per material drawn: geometry batched by material (the manual's VBOs)
+    std::uint64_t mesh_bytes = 0;  // vertex + index buffers as boxlod's glTF export writes them
+    std::uint64_t texture_bytes =
+        0;  // every texture a material uses, uncompressed at the format written, with mips
     std::uint64_t texture_bytes_gpu = 0;  // the same textures block-compressed, with mips
     std::uint64_t bytes() const { return mesh_bytes + texture_bytes_gpu; }
 };
@@ -58,7 +59,8 @@ std::uint64_t mip_chain_texels(int width, int height);
 // Bytes of a full mip chain in `format`: ceil(w / 4) x ceil(h / 4) blocks per level.
 std::uint64_t block_compressed_bytes(int width, int height, GpuFormat format);
 
-// draw_calls, mesh_bytes, texture_bytes, texture_bytes_gpu, bytes, each name + `suffix` ("_lod", "_original", "").
+// draw_calls, mesh_bytes, texture_bytes, texture_bytes_gpu, bytes, each name + `suffix` ("_lod", "_original",
+// "").
 KeyValues cost_entries(const ModelCost& cost, const std::string& suffix);
 
 }  // namespace boxlod

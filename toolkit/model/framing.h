@@ -23,6 +23,7 @@ float framing_distance(const Framing& framing, float fovy_degrees);
 
 // The camera at `distance` from the centre along `direction` (one of the 26
 // positions of camera_direction, or any), near and far fitted to the sphere.
-Camera framed_camera(const Framing& framing, const Eigen::Vector3f& direction, float distance, float fovy_degrees);
+Camera framed_camera(const Framing& framing, const Eigen::Vector3f& direction, float distance,
+                     float fovy_degrees);
 
 }  // namespace boxlod

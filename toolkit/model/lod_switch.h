@@ -13,7 +13,7 @@ struct LodSwitch {
     // screen's, pi r^2 / (aspect H^2) (as Babylon.js Mesh.getLOD reads it).
     double screen_coverage = 0;
     double unity_relative_height = 0;  // Unity LODGroup screenRelativeTransitionHeight: s / H
-    double unreal_screen_size = 0;     // Unreal ComputeBoundsScreenSize: the sphere's diameter over H, 2 r / H
+    double unreal_screen_size = 0;  // Unreal ComputeBoundsScreenSize: the sphere's diameter over H, 2 r / H
 };
 
 }  // namespace boxlod

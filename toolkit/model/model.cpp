@@ -17,27 +17,32 @@ ContentDigest content_digest(const void* bytes, std::size_t size, ContentDigest 
 }
 
 TextureDigest texture_digest(const Texture& texture) {
-    int layout[] = {texture.image.width, texture.image.height, texture.image.channels, texture.image16.width,
-                    texture.image16.height, texture.image16.channels, int(texture.wrap)};
+    int layout[] = {texture.image.width,   texture.image.height,   texture.image.channels,
+                    texture.image16.width, texture.image16.height, texture.image16.channels,
+                    int(texture.wrap)};
     TextureDigest d = content_digest(layout, sizeof layout);
     d = content_digest(texture.image.pixels.data(), texture.image.pixels.size(), d);
-    return content_digest(texture.image16.pixels.data(), texture.image16.pixels.size() * sizeof(std::uint16_t), d);
+    return content_digest(texture.image16.pixels.data(),
+                          texture.image16.pixels.size() * sizeof(std::uint16_t), d);
 }
 
 std::vector<TextureSlot<int*>> texture_slots(Material& m) {
-    std::vector<TextureSlot<int*>> slots = {{&m.base_color_texture, TextureUse::color, MaterialMap::base_color},
-                                            {&m.normal_texture, TextureUse::normal, MaterialMap::normal},
-                                            {&m.height_texture, TextureUse::scalar, MaterialMap::height},
-                                            {&m.specular_texture, TextureUse::color, MaterialMap::specular}};
+    std::vector<TextureSlot<int*>> slots = {
+        {&m.base_color_texture, TextureUse::color, MaterialMap::base_color},
+        {&m.normal_texture, TextureUse::normal, MaterialMap::normal},
+        {&m.height_texture, TextureUse::scalar, MaterialMap::height},
+        {&m.specular_texture, TextureUse::color, MaterialMap::specular}};
     if (m.specular_extension)
-        slots.insert(slots.end(), {{&m.specular_extension->texture, TextureUse::scalar, MaterialMap::specular},
-                                   {&m.specular_extension->color_texture, TextureUse::color, MaterialMap::specular}});
+        slots.insert(slots.end(),
+                     {{&m.specular_extension->texture, TextureUse::scalar, MaterialMap::specular},
+                      {&m.specular_extension->color_texture, TextureUse::color, MaterialMap::specular}});
     return slots;
 }
 
 std::vector<TextureSlot<int>> texture_slots(const Material& material) {
     std::vector<TextureSlot<int>> slots;
-    for (auto [index, use, map] : texture_slots(const_cast<Material&>(material))) slots.push_back({*index, use, map});
+    for (auto [index, use, map] : texture_slots(const_cast<Material&>(material)))
+        slots.push_back({*index, use, map});
     return slots;
 }
 
@@ -106,13 +111,16 @@ namespace {
 bool validate_primitive(const Model& model, const Primitive& primitive, const std::string& where) {
     const std::string& file = model.source;
     std::size_t n = primitive.positions.size();
-    if (primitive.indices.size() % 3 != 0) throw_input_error(file, where, "index count is not a multiple of 3");
+    if (primitive.indices.size() % 3 != 0)
+        throw_input_error(file, where, "index count is not a multiple of 3");
     for (std::uint32_t index : primitive.indices)
         if (index >= n)
-            throw_input_error(file, where, "vertex index " + std::to_string(index) + " out of range (" +
-                                               std::to_string(n) + " vertices)");
+            throw_input_error(file, where,
+                              "vertex index " + std::to_string(index) + " out of range (" +
+                                  std::to_string(n) + " vertices)");
     auto check_size = [&](std::size_t size, const char* what) {
-        if (size != 0 && size != n) throw_input_error(file, where, std::string(what) + " count differs from position count");
+        if (size != 0 && size != n)
+            throw_input_error(file, where, std::string(what) + " count differs from position count");
     };
     check_size(primitive.normals.size(), "normal");
     check_size(primitive.uvs.size(), "texture coordinate");
@@ -125,10 +133,12 @@ bool validate_primitive(const Model& model, const Primitive& primitive, const st
     check_finite(primitive.normals, "normal");
     check_finite(primitive.uvs, "texture coordinate");
     check_finite(primitive.tangents, "tangent");
-    if (primitive.material >= int(model.materials.size())) throw_input_error(file, where, "material index out of range");
+    if (primitive.material >= int(model.materials.size()))
+        throw_input_error(file, where, "material index out of range");
     for (std::size_t t = 0; t < primitive.indices.size(); t += 3) {
         const auto& a = primitive.positions[primitive.indices[t]];
-        if ((primitive.positions[primitive.indices[t + 1]] - a).cross(primitive.positions[primitive.indices[t + 2]] - a)
+        if ((primitive.positions[primitive.indices[t + 1]] - a)
+                .cross(primitive.positions[primitive.indices[t + 2]] - a)
                 .squaredNorm() > 0)
             return true;
     }
@@ -140,7 +150,8 @@ void validate_material(const Model& model, const Material& material) {
     const std::string& file = model.source;
     const std::string place = "material '" + material.name + "'";
     for (const auto& slot : texture_slots(material))
-        if (slot.index >= int(model.textures.size())) throw_input_error(file, place, "texture index out of range");
+        if (slot.index >= int(model.textures.size()))
+            throw_input_error(file, place, "texture index out of range");
     if (!material.base_color.allFinite() || !material.specular_color.allFinite())
         throw_input_error(file, place, "colour is NaN or infinite");
     if (const auto& extension = material.specular_extension;
@@ -149,10 +160,13 @@ void validate_material(const Model& model, const Material& material) {
                        (extension->color_factor.array() <= specular_color_factor_range.max).all()))
         throw_input_error(file, place, "KHR_materials_specular factor out of range");
     if (!shininess_range.contains(material.shininess))
-        throw_input_error(file, place, "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
+        throw_input_error(
+            file, place,
+            "shininess " + out_of_range_message(shininess_range, format_number(material.shininess)));
     if (!height_depth_range.contains(material.height_depth))
-        throw_input_error(file, place,
-                          "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
+        throw_input_error(
+            file, place,
+            "height_depth " + out_of_range_message(height_depth_range, format_number(material.height_depth)));
 }
 
 }  // namespace
@@ -185,13 +199,16 @@ void validate_model(const Model& model) {
         if ((i == 0) != (node.parent < 0) || node.parent >= int(i))
             throw_input_error(file, place, "the node hierarchy is not a tree");
         for (std::size_t p = 0; p < node.primitives.size(); ++p)
-            any_triangle = validate_primitive(model, node.primitives[p], place + " primitive " + std::to_string(p)) || any_triangle;
+            any_triangle =
+                validate_primitive(model, node.primitives[p], place + " primitive " + std::to_string(p)) ||
+                any_triangle;
         if (node.scope && !(node.scope->center.allFinite() && node.scope->axes.allFinite() &&
                             node.scope->half_extents.allFinite()))
             throw_input_error(file, place, "scope is NaN or infinite");
     }
     for (const Material& material : model.materials) validate_material(model, material);
-    if (!any_triangle) throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
+    if (!any_triangle)
+        throw_input_error(file, "", "the scene has no triangle of non-zero area (empty model)");
 }
 
 }  // namespace boxlod

@@ -26,9 +26,9 @@ struct OrientedBox {
 using Scope = OrientedBox;
 
 struct Texture {
-    std::string name;  // file name or label; a hint for export
-    Image8 image;      // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
-    Image16 image16 = {};  // instead of `image`: one 16-bit channel (baked height maps)
+    std::string name;          // file name or label; a hint for export
+    Image8 image;              // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
+    Image16 image16 = {};      // instead of `image`: one 16-bit channel (baked height maps)
     Wrap wrap = Wrap::repeat;  // LoD pages clamp: their faces may touch the page's border
 };
 
@@ -54,7 +54,7 @@ struct SpecularExtension {
     bool operator==(const SpecularExtension&) const = default;
 };
 constexpr NumberRange specular_color_factor_range{0, 1000};  // the extension allows [0, inf): boxlod's bound
-constexpr NumberRange height_depth_range{0, 1e6};             // metres, as a scope's extents
+constexpr NumberRange height_depth_range{0, 1e6};            // metres, as a scope's extents
 
 struct Material {
     std::string name;
@@ -75,8 +75,9 @@ struct Material {
     float glossiness = -1;      // its glossinessFactor as read (kept exactly); < 0: from the shininess
     std::optional<SpecularExtension> specular_extension = std::nullopt;
     bool double_sided = false;
-    AlphaMode alpha_mode = AlphaMode::opaque;  // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
-    float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, for MASK
+    AlphaMode alpha_mode =
+        AlphaMode::opaque;      // glTF alphaMode; baked box faces are MASK (cut out where uncovered)
+    float alpha_cutoff = 0.5f;  // glTF alphaCutoff, for MASK
     bool operator==(const Material&) const = default;
 };
 
@@ -159,7 +160,10 @@ struct Bounds {
     Eigen::Vector3f min{Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity())};
     Eigen::Vector3f max{Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity())};
     bool empty() const { return !(min.array() <= max.array()).all(); }
-    void add(const Eigen::Vector3f& p) { min = min.cwiseMin(p); max = max.cwiseMax(p); }
+    void add(const Eigen::Vector3f& p) {
+        min = min.cwiseMin(p);
+        max = max.cwiseMax(p);
+    }
     Eigen::Vector3f size() const { return empty() ? Eigen::Vector3f::Zero() : Eigen::Vector3f(max - min); }
     Eigen::Vector3f center() const { return (min + max) / 2; }
 };

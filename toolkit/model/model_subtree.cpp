@@ -42,7 +42,8 @@ Model extract_subtree(const Model& model, int root) {
             copy.primitives.push_back(primitive);
             copy.primitives.back().material = copier.material(primitive.material);
         }
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, index});
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, index});
     }
     return out;
 }

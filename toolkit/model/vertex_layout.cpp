@@ -19,7 +19,8 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
 
 std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model) {
     const VertexLayout layout = vertex_layout(primitive, model);
-    return layout.vertex_bytes() * primitive.positions.size() + std::uint64_t(layout.index_bytes) * primitive.indices.size();
+    return layout.vertex_bytes() * primitive.positions.size() +
+           std::uint64_t(layout.index_bytes) * primitive.indices.size();
 }
 
 std::uint64_t mesh_bytes(const std::vector<Primitive>& primitives, const Model& model) {

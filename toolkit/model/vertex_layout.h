@@ -13,9 +13,12 @@ struct VertexLayout {
     bool normals = false;   // where the primitive has them (none: flat shading)
     bool uvs = false;       // where it has them and its material samples a texture
     bool tangents = false;  // where it has them and its material has a normal or height map
-    int index_bytes = 4;    // 2 where every index fits below 65535 (glTF 2.0, Meshes: an index may not be the type's largest value)
+    int index_bytes = 4;    // 2 where every index fits below 65535 (glTF 2.0, Meshes: an index may not be the
+                            // type's largest value)
 
-    std::uint64_t vertex_bytes() const { return 12 + (normals ? 12 : 0) + (uvs ? 8 : 0) + (tangents ? 16 : 0); }
+    std::uint64_t vertex_bytes() const {
+        return 12 + (normals ? 12 : 0) + (uvs ? 8 : 0) + (tangents ? 16 : 0);
+    }
 };
 
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model);

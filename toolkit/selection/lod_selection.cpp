@@ -40,12 +40,14 @@ double pixels_per_unit(const SelectionView& view, double distance) {
 // monotone in the value, so the count is too, whatever the order of the thresholds.
 template <typename Passed>
 int count_passed(const std::vector<double>& thresholds, double value, Passed passed, int coarsest) {
-    int count = int(std::count_if(thresholds.begin(), thresholds.end(), [&](double t) { return passed(value, t); }));
+    int count =
+        int(std::count_if(thresholds.begin(), thresholds.end(), [&](double t) { return passed(value, t); }));
     return std::min(count, coarsest);
 }
 
 int below(const std::vector<double>& thresholds, double value, int coarsest) {
-    return count_passed(thresholds, value, [](double v, double t) { return v < t; }, coarsest);
+    return count_passed(
+        thresholds, value, [](double v, double t) { return v < t; }, coarsest);
 }
 
 int texel_exact_level(const TexelExact& strategy, const SelectionObject& object, double footprint) {
@@ -60,7 +62,8 @@ int texel_exact_level(const TexelExact& strategy, const SelectionObject& object,
         const SelectionLevel& level = object.levels[c];
         if (!level.sizing) continue;
         if (!(footprint >= pixel_world_size(*level.sizing) * (1 - texel_tolerance))) continue;
-        if (strategy.error_budget && (!level.error || !(scaled_error(*level.error, footprint) <= *strategy.error_budget)))
+        if (strategy.error_budget &&
+            (!level.error || !(scaled_error(*level.error, footprint) <= *strategy.error_budget)))
             continue;
         return c;
     }
@@ -93,7 +96,8 @@ void check_thresholds(const std::vector<double>& thresholds, bool ascending, con
         check(std::isfinite(thresholds[i]) && thresholds[i] >= 0, where, name,
               "thresholds must be finite and non-negative");
         if (i > 0)
-            check(ascending ? thresholds[i] > thresholds[i - 1] : thresholds[i] < thresholds[i - 1], where, name,
+            check(ascending ? thresholds[i] > thresholds[i - 1] : thresholds[i] < thresholds[i - 1], where,
+                  name,
                   ascending ? "thresholds must increase strictly" : "thresholds must decrease strictly");
     }
 }
@@ -112,22 +116,26 @@ SelectionObject selection_object(const OrientedBox& box, std::vector<SelectionLe
 int coarsest_level(const SelectionObject& object) { return std::max(0, int(object.levels.size()) - 1); }
 
 void validate_strategy(const Strategy& strategy, const std::string& where) {
-    if (auto* s = std::get_if<DistanceBands>(&strategy)) check_thresholds(s->distances, true, where, "distance bands");
-    if (auto* s = std::get_if<PixelCount>(&strategy)) check_thresholds(s->pixels, false, where, "pixel count");
-    if (auto* s = std::get_if<ScreenRatio>(&strategy)) check_thresholds(s->ratios, false, where, "screen ratio");
+    if (auto* s = std::get_if<DistanceBands>(&strategy))
+        check_thresholds(s->distances, true, where, "distance bands");
+    if (auto* s = std::get_if<PixelCount>(&strategy))
+        check_thresholds(s->pixels, false, where, "pixel count");
+    if (auto* s = std::get_if<ScreenRatio>(&strategy))
+        check_thresholds(s->ratios, false, where, "screen ratio");
     if (auto* s = std::get_if<BoxDiagonal>(&strategy))
         check(std::isfinite(s->min_pixels) && std::isfinite(s->max_pixels) && s->min_pixels >= 0 &&
                   s->min_pixels <= s->max_pixels,
               where, "box diagonal", "needs finite 0 <= min_pixels <= max_pixels");
     if (auto* s = std::get_if<TexelExact>(&strategy))
-        check(!s->error_budget || (std::isfinite(*s->error_budget) && *s->error_budget >= 0), where, "texel exact",
-              "the error budget must be finite and non-negative");
+        check(!s->error_budget || (std::isfinite(*s->error_budget) && *s->error_budget >= 0), where,
+              "texel exact", "the error budget must be finite and non-negative");
     if (auto* s = std::get_if<MeasuredSwitch>(&strategy))
         check(s->error > 0 && s->error <= 1, where, "measured switching", "the error must be in (0, 1]");
 }
 
 Strategy scale_detail(const Strategy& strategy, double detail) {
-    if (!(detail > 0) || !std::isfinite(detail)) throw std::invalid_argument("scale_detail: detail must be positive");
+    if (!(detail > 0) || !std::isfinite(detail))
+        throw std::invalid_argument("scale_detail: detail must be positive");
     Strategy out = strategy;
     auto scale = [](std::vector<double>& values, double factor) {
         for (double& v : values) v *= factor;
@@ -198,9 +206,9 @@ double diagonal_weight(const BoxDiagonal& s, double x) {
     if (x >= s.max_pixels) return 1;
     auto g = [&](double v) {
         switch (s.interpolation) {
-            case DiagonalInterpolation::square: return v * v;
-            case DiagonalInterpolation::square_root: return std::sqrt(v);
-            case DiagonalInterpolation::linear: break;
+        case DiagonalInterpolation::square: return v * v;
+        case DiagonalInterpolation::square_root: return std::sqrt(v);
+        case DiagonalInterpolation::linear: break;
         }
         return v;
     };
@@ -239,7 +247,8 @@ double strategy_value(const Strategy& strategy, const SelectionObject& object, c
 int level_for_value(const Strategy& strategy, const SelectionObject& object, double value) {
     int n = coarsest_level(object);
     if (auto* s = std::get_if<DistanceBands>(&strategy))
-        return count_passed(s->distances, value, [](double v, double t) { return v >= t; }, n);
+        return count_passed(
+            s->distances, value, [](double v, double t) { return v >= t; }, n);
     if (auto* s = std::get_if<PixelCount>(&strategy)) return below(s->pixels, value, n);
     if (auto* s = std::get_if<ScreenRatio>(&strategy)) return below(s->ratios, value, n);
     if (auto* s = std::get_if<BoxDiagonal>(&strategy))

@@ -7,8 +7,8 @@
 // Progressive Meshes" (2020) (box diagonal).
 #pragma once
 #include "renderer/camera.h"
-#include "toolkit/model/model.h"
 #include "toolkit/lod/pages/texture_sizing.h"
+#include "toolkit/model/model.h"
 
 #include <cstddef>
 #include <optional>
@@ -29,9 +29,10 @@ struct MeasuredError {
 };
 
 struct SelectionLevel {
-    std::size_t faces = 0;                // faces drawn at this level (statistics: faces_lod)
-    std::optional<TextureSizing> sizing;  // the texel = pixel view its boxes were baked for (hybrid: its finest boxes)
-    std::optional<MeasuredError> error;   // for texel-exact selection under an error budget
+    std::size_t faces = 0;  // faces drawn at this level (statistics: faces_lod)
+    std::optional<TextureSizing>
+        sizing;  // the texel = pixel view its boxes were baked for (hybrid: its finest boxes)
+    std::optional<MeasuredError> error;  // for texel-exact selection under an error budget
     // For measured switching: the camera distance (metres, for the fovy and
     // resolution its chain was sized for) from which it is drawn, as the
     // chain measured it (chain.h: switched_levels); none: no distance draws it.
@@ -92,7 +93,8 @@ struct MeasuredSwitch {
     double error = 0.05;
     double detail = 1;
 };
-using Strategy = std::variant<DistanceBands, PixelCount, ScreenRatio, BoxDiagonal, TexelExact, MeasuredSwitch>;
+using Strategy =
+    std::variant<DistanceBands, PixelCount, ScreenRatio, BoxDiagonal, TexelExact, MeasuredSwitch>;
 
 // A level-of-detail bias (the engines' "LOD bias"): the strategy picks levels as if
 // every object were seen from 1/detail of its distance, so detail > 1 keeps finer
@@ -112,8 +114,9 @@ void validate_strategy(const Strategy& strategy, const std::string& where);
 double camera_distance(const SelectionObject& object, const SelectionView& view);
 double sphere_pixel_count(const SelectionObject& object, const SelectionView& view);
 double box_diagonal_pixels(const SelectionObject& object, const SelectionView& view);
-double pixel_footprint(const SelectionObject& object, const SelectionView& view);  // world size of a pixel at d
-double diagonal_weight(const BoxDiagonal& strategy, double pixels);               // t in [0, 1]
+double pixel_footprint(const SelectionObject& object,
+                       const SelectionView& view);                   // world size of a pixel at d
+double diagonal_weight(const BoxDiagonal& strategy, double pixels);  // t in [0, 1]
 // The measured error scaled to a view whose pixel spans `footprint` world units.
 double scaled_error(const MeasuredError& error, double footprint);
 

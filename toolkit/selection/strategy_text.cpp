@@ -37,15 +37,17 @@ std::vector<double> parse_numbers(const std::vector<std::string>& parts, const s
 
 std::string join_numbers(const std::vector<double>& numbers) {
     std::string out;
-    for (double n : numbers) out.append(out.empty() ? "" : ",").append(format_number(n));  // not "," + ...: GCC 12's false -Wrestrict
+    for (double n : numbers)
+        out.append(out.empty() ? "" : ",")
+            .append(format_number(n));  // not "," + ...: GCC 12's false -Wrestrict
     return out;
 }
 
 const char* interpolation_text(DiagonalInterpolation interpolation) {
     switch (interpolation) {
-        case DiagonalInterpolation::square: return "square";
-        case DiagonalInterpolation::square_root: return "square-root";
-        case DiagonalInterpolation::linear: break;
+    case DiagonalInterpolation::square: return "square";
+    case DiagonalInterpolation::square_root: return "square-root";
+    case DiagonalInterpolation::linear: break;
     }
     return "linear";
 }
@@ -60,10 +62,15 @@ BoxDiagonal parse_diagonal(const std::vector<std::string>& parts, const std::str
     diagonal.max_pixels = parse_number(parts[1], where, "diagonal");
     if (parts.size() == 3) {
         const std::string& mode = parts[2];
-        if (mode == "linear") diagonal.interpolation = DiagonalInterpolation::linear;
-        else if (mode == "square") diagonal.interpolation = DiagonalInterpolation::square;
-        else if (mode == "square-root") diagonal.interpolation = DiagonalInterpolation::square_root;
-        else throw_input_error(where, "diagonal", "unknown interpolation '" + mode + "' (linear, square, square-root)");
+        if (mode == "linear")
+            diagonal.interpolation = DiagonalInterpolation::linear;
+        else if (mode == "square")
+            diagonal.interpolation = DiagonalInterpolation::square;
+        else if (mode == "square-root")
+            diagonal.interpolation = DiagonalInterpolation::square_root;
+        else
+            throw_input_error(where, "diagonal",
+                              "unknown interpolation '" + mode + "' (linear, square, square-root)");
     }
     return diagonal;
 }
@@ -74,14 +81,16 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
     std::size_t colon = text.find(':');
     std::string name = text.substr(0, colon);
     bool has_arguments = colon != std::string::npos;
-    std::vector<std::string> parts = has_arguments ? split_commas(text.substr(colon + 1)) : std::vector<std::string>{};
+    std::vector<std::string> parts =
+        has_arguments ? split_commas(text.substr(colon + 1)) : std::vector<std::string>{};
     auto thresholds = [&](const char* example) {
         if (!has_arguments)
             throw_input_error(where, name, std::string("needs thresholds, e.g. '") + example + "'");
         return parse_numbers(parts, where, name);
     };
     auto one_number = [&](const char* value_name) {  // NAME:VALUE
-        if (parts.size() != 1) throw_input_error(where, name, "expected " + name + " or " + name + ":" + value_name);
+        if (parts.size() != 1)
+            throw_input_error(where, name, "expected " + name + " or " + name + ":" + value_name);
         return parse_number(parts[0], where, name);
     };
     Strategy strategy;
@@ -102,8 +111,10 @@ Strategy parse_strategy(const std::string& text, const std::string& where) {
         if (has_arguments) measured.error = one_number("ERROR");
         strategy = measured;
     } else {
-        throw_input_error(where, "", "unknown strategy '" + text + "' (distance:D1,D2,..., pixels:P1,P2,..., "
-                                     "ratio:R1,R2,..., diagonal[:MIN,MAX[,INTERPOLATION]], texel[:BUDGET], measured[:ERROR])");
+        throw_input_error(where, "",
+                          "unknown strategy '" + text +
+                              "' (distance:D1,D2,..., pixels:P1,P2,..., ratio:R1,R2,..., "
+                              "diagonal[:MIN,MAX[,INTERPOLATION]], texel[:BUDGET], measured[:ERROR])");
     }
     validate_strategy(strategy, where);
     return strategy;
@@ -120,7 +131,8 @@ std::string format_strategy(const Strategy& strategy) {
     if (auto* s = std::get_if<PixelCount>(&strategy)) return name + ":" + join_numbers(s->pixels);
     if (auto* s = std::get_if<ScreenRatio>(&strategy)) return name + ":" + join_numbers(s->ratios);
     if (auto* s = std::get_if<BoxDiagonal>(&strategy))
-        return name + ":" + join_numbers({s->min_pixels, s->max_pixels}) + "," + interpolation_text(s->interpolation);
+        return name + ":" + join_numbers({s->min_pixels, s->max_pixels}) + "," +
+               interpolation_text(s->interpolation);
     if (auto* s = std::get_if<MeasuredSwitch>(&strategy)) return name + ":" + format_number(s->error);
     const TexelExact& texel = std::get<TexelExact>(strategy);
     return texel.error_budget ? name + ":" + format_number(*texel.error_budget) : name;

@@ -23,7 +23,8 @@ std::string error_of(const std::string& text) {
 }  // namespace
 
 TEST(CameraPath, ParsesKeyframesWithComments) {
-    auto keys = parse_keyframes("# a dolly\n0 0 2 50  0 2 0\n\n1.5 1 2 30 0 2 0  # closer\n4 0 5 10 0 0 0\n", "path.txt");
+    auto keys = parse_keyframes("# a dolly\n0 0 2 50  0 2 0\n\n1.5 1 2 30 0 2 0  # closer\n4 0 5 10 0 0 0\n",
+                                "path.txt");
     ASSERT_EQ(keys.size(), 3u);
     EXPECT_EQ(keys[1].time, 1.5);
     EXPECT_EQ(keys[1].pose.eye, Eigen::Vector3f(1, 2, 30));
@@ -32,9 +33,12 @@ TEST(CameraPath, ParsesKeyframesWithComments) {
 
 TEST(CameraPath, BadKeyframesNameFileAndLine) {
     EXPECT_EQ(error_of("0 0 0 1 0 0 0\n"), "");
-    EXPECT_EQ(error_of("0 0 0 1 0 0 0\n# fine\n1 0 0 1 0 0\n"), "path.txt: line 3: expected 'time x y z tx ty tz' (7 numbers), got 6");
+    EXPECT_EQ(error_of("0 0 0 1 0 0 0\n# fine\n1 0 0 1 0 0\n"),
+              "path.txt: line 3: expected 'time x y z tx ty tz' (7 numbers), got 6");
     EXPECT_EQ(error_of("0 0 0 1 0 0 0\n1 0 0 1 0 0 x\n"), "path.txt: line 2: expected a number, got 'x'");
-    EXPECT_EQ(error_of("0 0 0 1 0 0 0\n0 0 0 2 0 0 0\n").rfind("path.txt: line 2: times must increase strictly", 0), 0u);
+    EXPECT_EQ(
+        error_of("0 0 0 1 0 0 0\n0 0 0 2 0 0 0\n").rfind("path.txt: line 2: times must increase strictly", 0),
+        0u);
     EXPECT_EQ(error_of("0 1 1 1 1 1 1\n"), "path.txt: line 1: the eye and the target coincide");
     EXPECT_EQ(error_of("0 nan 0 1 0 0 0\n"), "path.txt: line 1: expected a number, got 'nan'");
     EXPECT_EQ(error_of("# nothing\n\n"), "path.txt: no keyframes (lines 'time x y z tx ty tz')");

@@ -55,7 +55,8 @@ const OneBuilding& one_building() {
 // From 3 km straight towards the building's centre, ending 5 m outside its bounding sphere.
 std::vector<CameraPose> dolly(const SelectionObject& object, int frames) {
     Eigen::Vector3f direction = Eigen::Vector3f(1, 0.3f, 0.6f).normalized();
-    return line_path(object.center + direction * 3000, object.center + direction * (object.radius + 5), frames);
+    return line_path(object.center + direction * 3000, object.center + direction * (object.radius + 5),
+                     frames);
 }
 
 }  // namespace
@@ -87,8 +88,8 @@ TEST(FlyThrough, LevelsAreBakedForDoublingDistances) {
 TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
     const OneBuilding& b = one_building();
     std::vector<CameraPose> path = dolly(b.levels.objects[0], 40);
-    for (const char* text : {"texel", "distance:40,80,160,320,640", "pixels:20000,5000,1000,200", "ratio:0.2,0.05,0.01",
-                             "diagonal:4,200,square-root"}) {
+    for (const char* text : {"texel", "distance:40,80,160,320,640", "pixels:20000,5000,1000,200",
+                             "ratio:0.2,0.05,0.01", "diagonal:4,200,square-root"}) {
         for (double hysteresis : {0.0, 0.3}) {
             FlyThroughOptions options = b.options;
             options.strategy = parse_strategy(text, "test");
@@ -98,7 +99,8 @@ TEST(FlyThrough, ACloserCameraNeverPicksACoarserLevel) {
             ASSERT_EQ(frames.size(), path.size());
             for (std::size_t k = 1; k < frames.size(); ++k)
                 EXPECT_LE(frames[k].levels[0], frames[k - 1].levels[0]) << text << " frame " << k;
-            EXPECT_GT(frames.front().levels[0], frames.back().levels[0]) << text << ": the dolly changes nothing";
+            EXPECT_GT(frames.front().levels[0], frames.back().levels[0])
+                << text << ": the dolly changes nothing";
         }
     }
 }
@@ -114,11 +116,13 @@ TEST(FlyThrough, MeasuredSwitchingTakesTheChainsSwitchDistances) {
     const SelectionObject& object = levels.objects[0];
     std::vector<double> switched_at;
     for (int c = 1; c <= coarsest_level(object); ++c)
-        if (object.levels[std::size_t(c)].switch_distance) switched_at.push_back(*object.levels[std::size_t(c)].switch_distance);
+        if (object.levels[std::size_t(c)].switch_distance)
+            switched_at.push_back(*object.levels[std::size_t(c)].switch_distance);
     ASSERT_GE(switched_at.size(), 1u);
     for (std::size_t k = 1; k < switched_at.size(); ++k) EXPECT_GT(switched_at[k], switched_at[k - 1]);
     const std::vector<FrameRecord> frames = fly_through(levels, dolly(object, 40), options);
-    for (std::size_t k = 1; k < frames.size(); ++k) EXPECT_LE(frames[k].levels[0], frames[k - 1].levels[0]) << "frame " << k;
+    for (std::size_t k = 1; k < frames.size(); ++k)
+        EXPECT_LE(frames[k].levels[0], frames[k - 1].levels[0]) << "frame " << k;
     EXPECT_GT(frames.front().levels[0], 0);
     EXPECT_EQ(frames.back().levels[0], 0);
 }
@@ -163,7 +167,8 @@ TEST(FlyThrough, FullDetailDrawnInGroupsIsOneRenderOfAll) {
     const std::vector<CameraPose> path = city_path("orbit", city, levels.bounds, options.fovy, 3);
     std::vector<std::vector<double>> errors[2];
     for (int run = 0; run < 2; ++run) {
-        options.full_detail_group_bytes = run == 0 ? std::size_t(1) << 40 : 1;  // one group; a building a group
+        options.full_detail_group_bytes =
+            run == 0 ? std::size_t(1) << 40 : 1;  // one group; a building a group
         for (const FrameRecord& frame : fly_through(levels, path, options)) {
             ASSERT_TRUE(frame.error);
             errors[run].push_back({frame.error->psnr, frame.error->ssim, frame.error->flip});
@@ -202,7 +207,8 @@ TEST(FlyThrough, FacesStayWithinAnAchievableBudget) {
     std::vector<int> coarsest;
     for (const SelectionObject& object : levels.objects) coarsest.push_back(coarsest_level(object));
     std::size_t least = faces_drawn(levels.objects, coarsest, levels.street_faces);
-    std::size_t most = faces_drawn(levels.objects, std::vector<int>(levels.objects.size(), 0), levels.street_faces);
+    std::size_t most =
+        faces_drawn(levels.objects, std::vector<int>(levels.objects.size(), 0), levels.street_faces);
     for (std::size_t budget : {least, (least + most) / 2, most - 1}) {
         options.face_budget = budget;
         for (const FrameRecord& frame : fly_through(levels, path, options)) {
@@ -230,7 +236,9 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     EXPECT_EQ(csv, test::read_text(two / "frames.csv"));
     std::vector<std::string> rows = lines_of(csv);
     ASSERT_EQ(rows.size(), 6u);
-    std::string header = "frame,strategy,detail,faces,triangles,draw_calls,mesh_bytes,texture_bytes,texture_bytes_gpu,bytes,buildings";
+    std::string header =
+        "frame,strategy,detail,faces,triangles,draw_calls,mesh_bytes,texture_bytes,texture_bytes_gpu,bytes,"
+        "buildings";
     for (std::size_t c = 0; c < report.level_totals.size(); ++c) header += ",level_" + std::to_string(c);
     EXPECT_EQ(rows[0], header + ",levels_changed,psnr,ssim,flip");
     EXPECT_EQ(rows[1].rfind("0,\"distance:100,200,400\",1,", 0), 0u);
@@ -239,7 +247,8 @@ TEST(FlyThrough, OutputsAreIdenticalForOneAndTwoThreads) {
     EXPECT_EQ(report.sampled_frames, 3u);
     EXPECT_EQ(report.frames, 5u);
     EXPECT_EQ(report.buildings, 3u);
-    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(), "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes");
+    EXPECT_EQ(lines_of(test::read_text(one / "timings.csv")).front(),
+              "frame,detail,select_seconds,unpack_seconds,render_seconds,levels_unpacked,resident_bytes");
     for (int k = 0; k < 5; ++k) {
         std::string name = "frames/frame_000" + std::to_string(k) + ".png";
         ASSERT_TRUE(std::filesystem::exists(one / name)) << name;
@@ -259,8 +268,10 @@ TEST(FlyThrough, MoreDetailNeverPicksACoarserLevel) {
     CityPlan city = small_city(3);
     FlyThroughOptions options = tiny_frames();
     options.hysteresis = 0;
-    const std::vector<CameraPose> path = city_path("orbit", city, build_city_levels(city, options, false).bounds, options.fovy, 4);
-    for (const char* text : {"distance:100,200,400", "pixels:4000,1000,250", "ratio:0.5,0.1,0.02", "diagonal:4,64", "texel"}) {
+    const std::vector<CameraPose> path =
+        city_path("orbit", city, build_city_levels(city, options, false).bounds, options.fovy, 4);
+    for (const char* text :
+         {"distance:100,200,400", "pixels:4000,1000,250", "ratio:0.5,0.1,0.02", "diagonal:4,64", "texel"}) {
         options.strategy = parse_strategy(text, "test");
         CityLevels levels = build_city_levels(city, options, false);
         std::vector<FrameRecord> previous;
@@ -354,7 +365,8 @@ TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
     options.levels.keep_small_subtrees = true;
     CityLevels levels = build_city_levels(city, options, false);
     for (const SelectionObject& object : levels.objects)
-        for (std::size_t c = 1; c < object.levels.size(); ++c) EXPECT_LE(object.levels[c].faces, object.levels[0].faces) << c;
+        for (std::size_t c = 1; c < object.levels.size(); ++c)
+            EXPECT_LE(object.levels[c].faces, object.levels[0].faces) << c;
     options.levels.keep_small_subtrees = false;
     CityLevels manual = build_city_levels(city, options, false);
     EXPECT_GT(manual.objects[0].levels[1].faces, levels.objects[0].levels[1].faces);
@@ -363,9 +375,11 @@ TEST(FlyThrough, KeptSmallSubtreesNeverCostMoreFacesThanTheOriginal) {
 // A city's folder is replaced whole only when it holds nothing but what a
 // fly-through writes; a user's own file there keeps it from being swapped.
 TEST(FlyThrough, KnowsTheFilesItWritesIntoItsFolder) {
-    for (const char* name : {"frames.csv", "timings.csv", "frames", "frames/frame_0007.png", "contact_sheet.png",
-                             "detail_0.5", "detail_2/frames/frame_0000.png", "detail_1e-05/contact_sheet.png"})
+    for (const char* name :
+         {"frames.csv", "timings.csv", "frames", "frames/frame_0007.png", "contact_sheet.png", "detail_0.5",
+          "detail_2/frames/frame_0000.png", "detail_1e-05/contact_sheet.png"})
         EXPECT_TRUE(is_fly_through_file(name)) << name;
-    for (const char* name : {"", "notes.txt", "frames/notes.txt", "detail_2/notes.txt", "tileset.json", "results.csv"})
+    for (const char* name :
+         {"", "notes.txt", "frames/notes.txt", "detail_2/notes.txt", "tileset.json", "results.csv"})
         EXPECT_FALSE(is_fly_through_file(name)) << name;
 }

@@ -11,8 +11,8 @@ namespace {
 
 // The test building seen orthographically along `direction` through a window of
 // half-size `half` around `center`, in albedo mode (what the atlas records).
-Frame albedo_view(const Model& model, const Eigen::Vector3f& direction, const Eigen::Vector3f& center, float half,
-                  const Eigen::Vector3f& up) {
+Frame albedo_view(const Model& model, const Eigen::Vector3f& direction, const Eigen::Vector3f& center,
+                  float half, const Eigen::Vector3f& up) {
     auto drawable = make_drawable_model(model);
     RenderSettings settings;
     settings.mode = RenderMode::albedo;
@@ -35,8 +35,10 @@ Frame albedo_view(const Model& model, const Eigen::Vector3f& direction, const Ei
 
 TEST(Impostor, HemiOctahedralDirectionsCoverTheUpperHemisphere) {
     EXPECT_TRUE(hemi_octahedral_direction({0, 0}).isApprox(Eigen::Vector3f(0, 1, 0)));
-    for (Eigen::Vector2f corner : {Eigen::Vector2f(1, 1), Eigen::Vector2f(-1, 1), Eigen::Vector2f(1, -1), Eigen::Vector2f(-1, -1)})
-        EXPECT_NEAR(hemi_octahedral_direction(corner).y(), 0, 1e-6);  // the square's corners lie on the horizon
+    for (Eigen::Vector2f corner :
+         {Eigen::Vector2f(1, 1), Eigen::Vector2f(-1, 1), Eigen::Vector2f(1, -1), Eigen::Vector2f(-1, -1)})
+        EXPECT_NEAR(hemi_octahedral_direction(corner).y(), 0,
+                    1e-6);  // the square's corners lie on the horizon
     for (float x = -1; x <= 1; x += 0.25f)
         for (float y = -1; y <= 1; y += 0.25f) {
             Eigen::Vector3f d = hemi_octahedral_direction({x, y});

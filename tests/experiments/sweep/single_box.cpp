@@ -46,7 +46,8 @@ TEST(SingleBox, ColourIsTheAreaWeightedMean) {
                                              .cross(p.positions[p.indices[i + 2]] - p.positions[p.indices[i]])
                                              .norm());
     Eigen::Vector3f color = single_box_model(building).materials[0].base_color.head<3>();
-    Eigen::Vector3d expected = (ground * Eigen::Vector3d(0.4, 0.45, 0.35) + rest * Eigen::Vector3d::Ones()) / (ground + rest);
+    Eigen::Vector3d expected =
+        (ground * Eigen::Vector3d(0.4, 0.45, 0.35) + rest * Eigen::Vector3d::Ones()) / (ground + rest);
     EXPECT_NEAR(color.x(), expected.x(), 1e-5);
     EXPECT_NEAR(color.y(), expected.y(), 1e-5);
     EXPECT_NEAR(color.z(), expected.z(), 1e-5);
@@ -57,5 +58,6 @@ TEST(SingleBox, TextureDarkensTheColourByItsMean) {
     Model plain = building;
     plain.materials[1].base_color_texture = -1;
     // The brick texture is darker than white: the textured walls pull the mean down.
-    EXPECT_LT(single_box_model(building).materials[0].base_color.y(), single_box_model(plain).materials[0].base_color.y());
+    EXPECT_LT(single_box_model(building).materials[0].base_color.y(),
+              single_box_model(plain).materials[0].base_color.y());
 }

@@ -2,11 +2,11 @@
 
 #include "base/input_error.h"
 #include "experiments/sweep/proxy_baked.h"
-#include "toolkit/lod/hybrid/simplification.h"
 #include "lod_scene.h"
 #include "test_support.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/model/cost.h"
 #include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
@@ -54,8 +54,10 @@ SmallSweep small_sweep(const std::string& name, const std::string& extra = "") {
     save_model(building, (s.folder / "building.glb").string());
     test::write_text(s.folder / "sweep.txt",
                      // The manual's program: the test building's small parts are boxed too.
-                     "manual = true\nmodels = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, 4\nviews = +X+Y+Z, -Z\n"
-                     "width = 64\nheight = 48\nmetrics = rmse, psnr, ssim, flip, iou\nresolution = 48\n" + extra);
+                     "manual = true\nmodels = building.glb\nlevel_modes = top-down, bottom-up\nlevels = 0, "
+                     "4\nviews = +X+Y+Z, -Z\n"
+                     "width = 64\nheight = 48\nmetrics = rmse, psnr, ssim, flip, iou\nresolution = 48\n" +
+                         extra);
     s.config = load_sweep_config((s.folder / "sweep.txt").string());
     return s;
 }
@@ -74,9 +76,9 @@ TEST(Sweep, RowsCountsAndMetricsOfTheCrossProduct) {
     ASSERT_EQ(t.size(), 9u);
     EXPECT_EQ(t[0], result_columns(s.config));
     std::size_t mode = column(t, "level_mode"), level = column(t, "level"), view = column(t, "view"),
-                faces = column(t, "faces"), psnr = column(t, "psnr"), ssim = column(t, "ssim"), rmse = column(t, "rmse"),
-                flip = column(t, "flip"), iou = column(t, "iou"), obtained = column(t, "obtained_levels"),
-                texels = column(t, "texels");
+                faces = column(t, "faces"), psnr = column(t, "psnr"), ssim = column(t, "ssim"),
+                rmse = column(t, "rmse"), flip = column(t, "flip"), iou = column(t, "iou"),
+                obtained = column(t, "obtained_levels"), texels = column(t, "texels");
     // The cross product's order: mode, level, then view.
     EXPECT_EQ(t[1][mode], "top-down");
     EXPECT_EQ(t[1][level], "0");
@@ -148,7 +150,9 @@ TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
         EXPECT_GT(std::stoull(box[column(t, "texture_bytes_gpu")]), 0u);
         EXPECT_EQ(box[column(t, "draw_calls")], "1");
         // The proxy error of a level: 0 at the original, its box's at the top; none for a baseline.
-        EXPECT_EQ(row_of(t, std::string("building.glb,top-down,expanded,linear,0,") + view)[column(t, "depth_error")], "0");
+        EXPECT_EQ(row_of(t, std::string("building.glb,top-down,expanded,linear,0,") +
+                                view)[column(t, "depth_error")],
+                  "0");
         EXPECT_GT(std::stod(box[column(t, "depth_error")]), 0);
         auto simplified = row_of(t, std::string("building.glb,simplification,-,-,4,") + view);
         EXPECT_EQ(simplified[column(t, "depth_error")], "");
@@ -171,7 +175,8 @@ TEST(Sweep, EachRowPaysForTheMapsItsRenderModeDraws) {
     SmallSweep s = small_sweep("sweep_mode_cost", "render_modes = normal, parallax\n");
     run_sweep(s.config, (s.folder / "out").string(), 2);
     Table t = read_csv(s.folder / "out" / "results.csv");
-    const std::size_t gpu = column(t, "texture_bytes_gpu"), bytes = column(t, "bytes"), mesh = column(t, "mesh_bytes");
+    const std::size_t gpu = column(t, "texture_bytes_gpu"), bytes = column(t, "bytes"),
+                      mesh = column(t, "mesh_bytes");
     auto row = [&](const std::string& level, const std::string& mode) {
         return row_of(t, "building.glb,top-down,expanded,linear," + level + ",+X+Y+Z,1," + mode);
     };
@@ -210,7 +215,8 @@ TEST(Sweep, SimplificationBestKeepsTheVariantWithTheLowestError) {
             auto b = row_of(t, std::string("building.glb,simplification-best,-,-,") + level + view);
             auto box = row_of(t, std::string("building.glb,top-down,expanded,linear,") + level + view);
             EXPECT_EQ(p[variant], "collapse");
-            EXPECT_TRUE(b[variant] == "collapse" || b[variant] == "lock-border" || b[variant] == "sloppy") << b[variant];
+            EXPECT_TRUE(b[variant] == "collapse" || b[variant] == "lock-border" || b[variant] == "sloppy")
+                << b[variant];
             if (chosen.empty()) chosen = b[variant];
             EXPECT_EQ(b[variant], chosen);  // one mesh for every view of a level
             EXPECT_LE(std::stoul(b[triangles]), std::stoul(box[triangles]));
@@ -233,14 +239,16 @@ TEST(Sweep, ProxyBakedDrawsTheSimplifiedModelOnItsBakedBoxWithinEachBudget) {
     const std::filesystem::path folder = test::scratch_folder("sweep_proxy_baked");
     const Model building = test::lod_test_building();
     save_model(building, (folder / "building.glb").string());
-    test::write_text(folder / "sweep.txt", "models = building.glb\nlevel_modes = error-greedy\nbudgets = 0.9, 0.1\n"
-                                           "baselines = proxy-baked\nviews = +X+Y+Z, -Z\nwidth = 64\nheight = 48\n"
-                                           "metrics = flip\nresolution = 48\n");
-    const SweepReport report = run_sweep(load_sweep_config((folder / "sweep.txt").string()), (folder / "out").string(), 2);
+    test::write_text(folder / "sweep.txt",
+                     "models = building.glb\nlevel_modes = error-greedy\nbudgets = 0.9, 0.1\n"
+                     "baselines = proxy-baked\nviews = +X+Y+Z, -Z\nwidth = 64\nheight = 48\n"
+                     "metrics = flip\nresolution = 48\n");
+    const SweepReport report =
+        run_sweep(load_sweep_config((folder / "sweep.txt").string()), (folder / "out").string(), 2);
     EXPECT_EQ(report.rows, 6u + 4u);  // no level 0: a baked copy of the original is no level
     Table t = read_csv(folder / "out" / "results.csv");
-    const std::size_t variant = column(t, "baseline_variant"), bytes = column(t, "bytes"), pages = column(t, "pages"),
-                      triangles = column(t, "triangles");
+    const std::size_t variant = column(t, "baseline_variant"), bytes = column(t, "bytes"),
+                      pages = column(t, "pages"), triangles = column(t, "triangles");
     std::vector<std::string> names;
     for (const ProxyBakedVariant& v : proxy_baked_variants(1)) names.push_back(v.name);
     const double original = double(model_cost(building).bytes());
@@ -285,12 +293,15 @@ TEST(Sweep, ImpostorDrawsOneQuadPerViewFromOneAtlas) {
 // read from the same file: two blocks at LoD 1.2 under gabled houses at 2.2.
 TEST(Sweep, FileLodsAreEachObjectsOwnCoarserLevels) {
     const std::filesystem::path folder = test::scratch_folder("sweep_file_lods");
-    ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(BOXLOD_TEST_DATA) + "/../end_to_end/make_district.py " +
-                           (folder / "district.city.json").string() + " 2").c_str()),
-              0);
-    test::write_text(folder / "sweep.txt",
-                     "models = district.city.json#*\nlevel_modes = top-down\nlevels = 0\nviews = +X+Y+Z\nwidth = 64\n"
-                     "height = 48\nmetrics = flip\nresolution = 48\nbaselines = file-lods\n");
+    ASSERT_EQ(
+        std::system(("/usr/bin/python3 " + std::string(BOXLOD_TEST_DATA) +
+                     "/../end_to_end/make_district.py " + (folder / "district.city.json").string() + " 2")
+                        .c_str()),
+        0);
+    test::write_text(
+        folder / "sweep.txt",
+        "models = district.city.json#*\nlevel_modes = top-down\nlevels = 0\nviews = +X+Y+Z\nwidth = 64\n"
+        "height = 48\nmetrics = flip\nresolution = 48\nbaselines = file-lods\n");
     const SweepConfig config = load_sweep_config((folder / "sweep.txt").string());
     ASSERT_EQ(config.models.size(), 2u);
     EXPECT_EQ(config.models[1].name, "district.city.json#house_1");
@@ -298,10 +309,12 @@ TEST(Sweep, FileLodsAreEachObjectsOwnCoarserLevels) {
     EXPECT_EQ(report.rows, 4u);  // per house: its level 0 and its LoD 1.2
     Table t = read_csv(folder / "out" / "results.csv");
     for (const char* house : {"house_0", "house_1"}) {
-        const auto original = row_of(t, std::string("district.city.json#") + house + ",top-down,expanded,linear,0,");
+        const auto original =
+            row_of(t, std::string("district.city.json#") + house + ",top-down,expanded,linear,0,");
         const auto rival = row_of(t, std::string("district.city.json#") + house + ",file-lods,-,-,1,");
         EXPECT_EQ(rival[column(t, "baseline_variant")], "LoD 1.2");
-        EXPECT_LT(std::stoull(rival[column(t, "triangles")]), std::stoull(original[column(t, "triangles")]));  // a block, no roof
+        EXPECT_LT(std::stoull(rival[column(t, "triangles")]),
+                  std::stoull(original[column(t, "triangles")]));  // a block, no roof
         EXPECT_GT(std::stod(rival[column(t, "flip")]), 0);
     }
 }
@@ -321,10 +334,12 @@ TEST(Sweep, SizingEachDistanceBakesFewerTexelsFartherAway) {
     for (const char* folder : {"each", "nearest"}) {
         Table t = read_csv(each.folder / folder / "results.csv");
         ASSERT_EQ(t.size(), 3u);
-        double near_texels = std::stod(t[1][column(t, "face_texels")]), far_texels = std::stod(t[2][column(t, "face_texels")]);
+        double near_texels = std::stod(t[1][column(t, "face_texels")]),
+               far_texels = std::stod(t[2][column(t, "face_texels")]);
         EXPECT_GT(near_texels, 0);
         if (std::string(folder) == "each") {
-            EXPECT_LT(far_texels, near_texels / 8) << "a quarter of the texels per side, give or take rounding up";
+            EXPECT_LT(far_texels, near_texels / 8)
+                << "a quarter of the texels per side, give or take rounding up";
         } else {
             EXPECT_EQ(far_texels, near_texels);
         }
@@ -342,7 +357,8 @@ TEST(Sweep, SizingPerLevelBakesCoarserLevelsForFartherAway) {
     nearest.sizing = SizingRule::nearest;
     run_sweep(s.config, (s.folder / "per_level").string(), 1);
     run_sweep(nearest, (s.folder / "nearest").string(), 1);
-    Table per_level = read_csv(s.folder / "per_level" / "results.csv"), one = read_csv(s.folder / "nearest" / "results.csv");
+    Table per_level = read_csv(s.folder / "per_level" / "results.csv"),
+          one = read_csv(s.folder / "nearest" / "results.csv");
     ASSERT_EQ(per_level.size(), 3u);
     ASSERT_EQ(one.size(), 3u);
     const std::size_t texels = column(one, "face_texels"), covered = column(one, "covered_pixels");
@@ -364,11 +380,13 @@ TEST(Sweep, ResultsAndImagesAreIdenticalForOneAndTwoThreads) {
     EXPECT_EQ(one, test::read_text(s.folder / "two" / "results.csv"));
     std::size_t images = 0;
     for (const auto& entry : std::filesystem::directory_iterator(s.folder / "one" / "images")) {
-        EXPECT_EQ(test::read_text(entry.path()), test::read_text(s.folder / "two" / "images" / entry.path().filename()))
+        EXPECT_EQ(test::read_text(entry.path()),
+                  test::read_text(s.folder / "two" / "images" / entry.path().filename()))
             << entry.path().filename();
         ++images;
     }
-    EXPECT_EQ(images, 2u * 2u * 2u * 2u + 2u);  // level modes x levels x views, a heat map each; the original per view
+    EXPECT_EQ(images, 2u * 2u * 2u * 2u +
+                          2u);  // level modes x levels x views, a heat map each; the original per view
 }
 
 TEST(Sweep, ResumingFillsInOnlyTheMissingRows) {
@@ -421,25 +439,30 @@ TEST(Sweep, ShardsMergeIntoTheWholeSweepsBytes) {
     ASSERT_EQ(shards.size(), 4u);
     EXPECT_EQ(shards[1].model, 0u);
     EXPECT_EQ(shards[1].level_mode, LevelMode::bottom_up);
-    EXPECT_EQ(shard_config(config, shards[0]).baselines.size(), 1u);  // the baselines follow the first level mode
+    EXPECT_EQ(shard_config(config, shards[0]).baselines.size(),
+              1u);  // the baselines follow the first level mode
     EXPECT_TRUE(shard_config(config, shards[1]).baselines.empty());
     std::size_t rows = 0;
     for (std::size_t k = 0; k < shards.size(); ++k) {
         const auto folder = s.folder / "shards" / std::to_string(k);
         rows += run_sweep(shard_config(config, shards[k]), folder.string(), 1).rows;
     }
-    EXPECT_EQ(rows, 2u * (8 + 4));  // per model: 2 modes x 2 levels x 2 views, and the baseline's 2 levels x 2 views
+    EXPECT_EQ(
+        rows,
+        2u * (8 + 4));  // per model: 2 modes x 2 levels x 2 views, and the baseline's 2 levels x 2 views
 
     // Merged in any order of the shards: the same bytes, nothing computed again.
-    const std::vector<std::string> folders{(s.folder / "shards" / "3").string(), (s.folder / "shards" / "0").string(),
-                                           (s.folder / "shards" / "2").string(), (s.folder / "shards" / "1").string()};
+    const std::vector<std::string> folders{
+        (s.folder / "shards" / "3").string(), (s.folder / "shards" / "0").string(),
+        (s.folder / "shards" / "2").string(), (s.folder / "shards" / "1").string()};
     SweepReport merged = merge_sweep(config, folders, (s.folder / "merged").string(), 2);
     EXPECT_EQ(merged.rows_computed, 0u);
     EXPECT_EQ(merged.lods_built, 0u);
     EXPECT_EQ(test::read_text(s.folder / "merged" / "results.csv"), whole);
 
     // A missing shard is computed by the merge (resuming); a shard that disagrees is refused.
-    SweepReport resumed = merge_sweep(config, {folders[0], folders[1], folders[2]}, (s.folder / "resumed").string(), 2);
+    SweepReport resumed =
+        merge_sweep(config, {folders[0], folders[1], folders[2]}, (s.folder / "resumed").string(), 2);
     EXPECT_EQ(resumed.rows_computed, 4u);
     EXPECT_EQ(test::read_text(s.folder / "resumed" / "results.csv"), whole);
     std::string changed = test::read_text(s.folder / "shards" / "1" / "results.csv");
@@ -473,7 +496,8 @@ TEST(Sweep, RefusesAFolderMadeWithOtherSettings) {
     const std::string results = test::read_text(s.folder / "out" / "results.csv");
     for (auto change : std::vector<std::function<void(SweepConfig&)>>{
              [](SweepConfig& c) { c.lod.flat_faces = 4; }, [](SweepConfig& c) { c.lod.resolution = 96; },
-             [](SweepConfig& c) { c.width = 128; }, [](SweepConfig& c) { c.sizing = SizingRule::per_level; }}) {
+             [](SweepConfig& c) { c.width = 128; },
+             [](SweepConfig& c) { c.sizing = SizingRule::per_level; }}) {
         SweepConfig changed = s.config;
         change(changed);
         try {
@@ -497,14 +521,15 @@ TEST(Sweep, RefusesAFolderMadeByAnotherBuild) {
     const std::size_t line = text.find("boxlod_build = ");
     ASSERT_NE(line, std::string::npos) << text;
     EXPECT_NE(text.find(" bytes, crc32 ", line), std::string::npos) << text;  // /proc/self/exe was read
-    EXPECT_EQ(run_sweep(s.config, out, 2).rows_skipped, 8u);  // the same build resumes
+    EXPECT_EQ(run_sweep(s.config, out, 2).rows_skipped, 8u);                  // the same build resumes
     test::write_text(settings, text.substr(0, line) + "boxlod_build = 1 bytes, crc32 00000000\n");
     try {
         run_sweep(s.config, out, 2);
         ADD_FAILURE() << "another build's rows were reused";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("settings.txt"), std::string::npos) << error.what();
-        EXPECT_NE(std::string(error.what()).find("boxlod_build = 1 bytes"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("boxlod_build = 1 bytes"), std::string::npos)
+            << error.what();
     }
 }
 

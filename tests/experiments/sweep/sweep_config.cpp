@@ -23,7 +23,8 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
         "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
-        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = true\nkeep_cheaper_subtrees = false\n",
+        "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = "
+        "true\nkeep_cheaper_subtrees = false\n",
         "/work/sweeps/config.txt");
     ASSERT_EQ(c.models.size(), 3u);
     EXPECT_EQ(c.models[0].name, "house.glb");
@@ -58,7 +59,7 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_EQ(c.views, camera_position_names());
     EXPECT_EQ(c.views.size(), 26u);
     EXPECT_TRUE(c.levels.empty());
-    EXPECT_EQ(c.metrics.size(), 6u);  // default: every metric
+    EXPECT_EQ(c.metrics.size(), 6u);             // default: every metric
     EXPECT_EQ(c.sizing, SizingRule::per_level);  // the chain that pays its way
     EXPECT_TRUE(c.lod.keep_cheaper_subtrees);
     EXPECT_TRUE(c.baselines.empty());
@@ -70,9 +71,12 @@ TEST(SweepConfig, AllMeansEveryViewAndEveryLevel) {
     EXPECT_EQ(manual.lod.flat_faces, 4);
     SweepConfig none = parse_sweep_config("models = a.glb\nbaselines = none\n", "c.txt");
     EXPECT_TRUE(none.baselines.empty());
-    SweepConfig best = parse_sweep_config("models = a.glb\nbaselines = simplification-best, simplification\n", "c.txt");
-    EXPECT_EQ(best.baselines, (std::vector<Baseline>{Baseline::simplification_best, Baseline::simplification}));
-    SweepConfig impostor = parse_sweep_config("models = a.glb\nbaselines = impostor\nimpostor_directions = 12\n", "c.txt");
+    SweepConfig best =
+        parse_sweep_config("models = a.glb\nbaselines = simplification-best, simplification\n", "c.txt");
+    EXPECT_EQ(best.baselines,
+              (std::vector<Baseline>{Baseline::simplification_best, Baseline::simplification}));
+    SweepConfig impostor =
+        parse_sweep_config("models = a.glb\nbaselines = impostor\nimpostor_directions = 12\n", "c.txt");
     EXPECT_EQ(impostor.baselines, (std::vector<Baseline>{Baseline::impostor}));
     EXPECT_EQ(impostor.impostor_directions, 12);
     EXPECT_EQ(none.impostor_directions, 8);
@@ -90,25 +94,42 @@ void expect_error(const std::string& text, const std::string& expected) {
 
 TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nfrobnicate = 1\n", "cfg.txt: line 2: frobnicate: unknown key");
-    expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n", "cfg.txt: line 3: level_modes: unknown value 'sideways'");
+    expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n",
+                 "cfg.txt: line 3: level_modes: unknown value 'sideways'");
     expect_error("models = a.glb\nviews = +X, +W\n", "cfg.txt: line 2: views: unknown camera position '+W'");
-    expect_error("models = a.glb\nviews = all, all\n", "cfg.txt: line 2: views: 'all' stands alone: it names every camera position");
+    expect_error("models = a.glb\nviews = all, all\n",
+                 "cfg.txt: line 2: views: 'all' stands alone: it names every camera position");
     expect_error("models = a.glb\nwidth = wide\n", "cfg.txt: line 2: width: expected a number");
-    expect_error("models = a.glb\nwidth = 4\n", "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
-    expect_error("models = a.glb\ndistances = 1, -2\n", "cfg.txt: line 2: distances: expected a number in [0.01, 1000], got '-2'");
-    expect_error("models = a.glb\nppd = 1e8\n", "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
-    expect_error("models = a.glb\nwanted_levels = 1000000000\n", "cfg.txt: line 2: wanted_levels: expected a number in [1, 64]");
+    expect_error("models = a.glb\nwidth = 4\n",
+                 "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
+    expect_error("models = a.glb\ndistances = 1, -2\n",
+                 "cfg.txt: line 2: distances: expected a number in [0.01, 1000], got '-2'");
+    expect_error("models = a.glb\nppd = 1e8\n",
+                 "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
+    expect_error("models = a.glb\nwanted_levels = 1000000000\n",
+                 "cfg.txt: line 2: wanted_levels: expected a number in [1, 64]");
     expect_error("models = a.glb\nlevels = 1,,2\n", "cfg.txt: line 2: levels: empty item");
-    expect_error("models = a.glb\nmetrics = psnr, vmaf\n", "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, flip_covered, iou)");
-    expect_error("models = a.glb\nkeep_images = some\n", "cfg.txt: line 2: keep_images: expected none, lod or all");
-    expect_error("models = a.glb\nmin_texture_size = 100\n", "cfg.txt: line 2: min_texture_size: expected a power of two in [1, 16384], got '100'");
-    expect_error("models = a.glb\nmin_texture_size = 8192\n", "cfg.txt: min_texture_size and max_texture_size must be powers of two");
-    expect_error("models = a.glb\nlevel_mode = top-down\n", "cfg.txt: line 2: level_mode: the sweep varies this itself");
-    expect_error("models = a.glb\nkeep_small_subtrees = yes\n", "cfg.txt: line 2: keep_small_subtrees: expected true or false");
-    expect_error("models = a.glb\nsizing = far\n", "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
-    expect_error("models = a.glb\nbaselines = qem\n", "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, cgal, single-box, impostor, proxy-baked, file-lods)");
+    expect_error(
+        "models = a.glb\nmetrics = psnr, vmaf\n",
+        "cfg.txt: line 2: metrics: unknown value 'vmaf' (rmse, psnr, ssim, flip, flip_covered, iou)");
+    expect_error("models = a.glb\nkeep_images = some\n",
+                 "cfg.txt: line 2: keep_images: expected none, lod or all");
+    expect_error("models = a.glb\nmin_texture_size = 100\n",
+                 "cfg.txt: line 2: min_texture_size: expected a power of two in [1, 16384], got '100'");
+    expect_error("models = a.glb\nmin_texture_size = 8192\n",
+                 "cfg.txt: min_texture_size and max_texture_size must be powers of two");
+    expect_error("models = a.glb\nlevel_mode = top-down\n",
+                 "cfg.txt: line 2: level_mode: the sweep varies this itself");
+    expect_error("models = a.glb\nkeep_small_subtrees = yes\n",
+                 "cfg.txt: line 2: keep_small_subtrees: expected true or false");
+    expect_error("models = a.glb\nsizing = far\n",
+                 "cfg.txt: line 2: sizing: expected nearest, each-distance or per-level");
+    expect_error("models = a.glb\nbaselines = qem\n",
+                 "cfg.txt: line 2: baselines: unknown value 'qem' (simplification, simplification-best, "
+                 "cgal, single-box, impostor, proxy-baked, file-lods)");
     expect_error("models = a.glb\nimpostor_directions = 64\n", "cfg.txt: line 2: impostor_directions: ");
-    expect_error("models = a.glb\nmodels = b.glb\n", "cfg.txt: line 2: models: given twice (first on line 1)");
+    expect_error("models = a.glb\nmodels = b.glb\n",
+                 "cfg.txt: line 2: models: given twice (first on line 1)");
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
     expect_error("models = sample:\n", "cfg.txt: line 1: models: 'sample:' needs a sample name");
@@ -127,17 +148,21 @@ TEST(SweepConfig, LoadNamesAMissingFile) {
 // variants (2 level modes) and baselines (1), each at every level (wanted 8,
 // or the 4 budgets, and level 0), times views (3), distances (2) and modes (1).
 TEST(SweepConfig, MostRowsBoundTheCrossProductBeforeAModelIsRead) {
-    const std::string lists = "models = a.glb, b.glb\nlevel_modes = top-down, hybrid\nbaselines = simplification\n"
-                              "views = +X, -X, +Z\ndistances = 1, 2\n";
+    const std::string lists =
+        "models = a.glb, b.glb\nlevel_modes = top-down, hybrid\nbaselines = simplification\n"
+        "views = +X, -X, +Z\ndistances = 1, 2\n";
     EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists, "c.txt")), 2.0 * 3 * 9 * 6);
-    EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists + "budgets = 0.5, 0.1, 0.01, 0.001\nwanted_levels = 2\n", "c.txt")),
+    EXPECT_EQ(most_sweep_rows(parse_sweep_config(
+                  lists + "budgets = 0.5, 0.1, 0.01, 0.001\nwanted_levels = 2\n", "c.txt")),
               2.0 * 3 * 5 * 6);
     EXPECT_EQ(most_sweep_rows(parse_sweep_config(lists + "levels = 0, 3\n", "c.txt")), 2.0 * 3 * 2 * 6);
 }
 
-// The configs the README and docs point to load as shipped (their models exist once make test has installed them).
+// The configs the README and docs point to load as shipped (their models exist once make test has installed
+// them).
 TEST(SweepConfig, EveryShippedConfigLoads) {
-    const std::filesystem::path configs = std::filesystem::path(BOXLOD_TEST_DATA).parent_path().parent_path() / "experiments" / "configs";
+    const std::filesystem::path configs =
+        std::filesystem::path(BOXLOD_TEST_DATA).parent_path().parent_path() / "experiments" / "configs";
     int loaded = 0;
     for (const auto& entry : std::filesystem::directory_iterator(configs)) {
         if (entry.path().extension() != ".txt") continue;

@@ -26,7 +26,8 @@ TEST(SweepShots, AShotMatchesItselfAndNotAnotherView) {
     SweepConfig config;
     config.metrics = {Metric::rmse, Metric::flip};
     auto shot = [&](const std::string& view) {
-        return render_shot(drawable->drawable.batches, view_settings(framing, view, 1, RenderMode::normal, config.lod, 1), 64, 48);
+        return render_shot(drawable->drawable.batches,
+                           view_settings(framing, view, 1, RenderMode::normal, config.lod, 1), 64, 48);
     };
     Shot reference = shot("+X+Y+Z");
     reference.flip_reference = prepare_flip_reference(reference.image, config.pixels_per_degree, 1);

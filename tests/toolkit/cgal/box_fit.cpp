@@ -1,13 +1,14 @@
 #include "toolkit/cgal/box_fit.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace boxlod {
 namespace {
 
 bool is_rotation(const Eigen::Matrix3d& m) {
-    return (m.transpose() * m).isApprox(Eigen::Matrix3d::Identity(), 1e-12) && std::abs(m.determinant() - 1) < 1e-12;
+    return (m.transpose() * m).isApprox(Eigen::Matrix3d::Identity(), 1e-12) &&
+           std::abs(m.determinant() - 1) < 1e-12;
 }
 
 TEST(BoxFit, OrthonormalFrameKeepsARotation) {

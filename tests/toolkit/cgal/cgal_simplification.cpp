@@ -32,10 +32,13 @@ TEST(CgalSimplification, ReducesTheFzkHausKeepingMaterialsAndAttributes) {
             EXPECT_LT(std::size_t(p.material), simplified.materials.size());
             EXPECT_EQ(p.normals.size(), p.positions.size());
             EXPECT_TRUE(p.uvs.empty() || p.uvs.size() == p.positions.size());
-            for (std::size_t i = 0; i + 2 < p.indices.size(); i += 3) {  // flat: every corner has the face's normal
-                const auto &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]], &c = p.positions[p.indices[i + 2]];
+            for (std::size_t i = 0; i + 2 < p.indices.size();
+                 i += 3) {  // flat: every corner has the face's normal
+                const auto &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]],
+                           &c = p.positions[p.indices[i + 2]];
                 Eigen::Vector3f face = (b - a).cross(c - a).normalized();
-                for (int k = 0; k < 3; ++k) EXPECT_GT(p.normals[p.indices[i + std::size_t(k)]].dot(face), 0.999f);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_GT(p.normals[p.indices[i + std::size_t(k)]].dot(face), 0.999f);
             }
         }
     validate_model(simplified);

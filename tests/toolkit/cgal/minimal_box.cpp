@@ -5,9 +5,9 @@
 
 #include "box_checks.h"
 
+#include <gtest/gtest.h>
 #include <Eigen/Geometry>
 #include "base/random.h"
-#include <gtest/gtest.h>
 
 #include <algorithm>
 
@@ -54,7 +54,8 @@ TEST(MinimalBox, EnclosesACloudAndBeatsTheAxisAlignedBox) {
     Pcg32 random(12345, 1);
     auto next = [&] { return float(random.uniform()); };
     Eigen::Matrix3f r = Eigen::AngleAxisf(0.5f, Eigen::Vector3f(0, 1, 1).normalized()).toRotationMatrix();
-    for (int i = 0; i < 300; ++i) points.push_back(r * Eigen::Vector3f(4 * next(), 2 * next(), 0.3f * next()));
+    for (int i = 0; i < 300; ++i)
+        points.push_back(r * Eigen::Vector3f(4 * next(), 2 * next(), 0.3f * next()));
     OrientedBox box = minimal_box(points, 1);
     for (const Eigen::Vector3f& p : points) EXPECT_TRUE(encloses(box, p));
     EXPECT_TRUE(valid_frame(box));
@@ -92,7 +93,8 @@ TEST(MinimalBox, HullVerticesAreTheCornersOnly) {
     std::vector<Eigen::Vector3f> points;
     for (int x = 0; x <= 2; ++x)
         for (int y = 0; y <= 2; ++y)
-            for (int z = 0; z <= 2; ++z) points.emplace_back(float(x), float(y), float(z));  // corners, edge midpoints, faces, centre
+            for (int z = 0; z <= 2; ++z)
+                points.emplace_back(float(x), float(y), float(z));  // corners, edge midpoints, faces, centre
     points.emplace_back(-0.f, 0.f, 0.f);
     std::vector<Eigen::Vector3f> hull = hull_vertices(points);
     ASSERT_EQ(hull.size(), 8u);
@@ -127,7 +129,8 @@ TEST(MinimalBox, CollinearPointsGiveASegmentBox) {
 
 TEST(MinimalBox, CoplanarPointsGiveTheMinimumAreaRectangle) {
     // A 4 x 2 rectangle turned 30 degrees in a tilted plane, with points inside and on its edges.
-    Eigen::Matrix3f frame = Eigen::AngleAxisf(0.8f, Eigen::Vector3f(1, -1, 0.5f).normalized()).toRotationMatrix();
+    Eigen::Matrix3f frame =
+        Eigen::AngleAxisf(0.8f, Eigen::Vector3f(1, -1, 0.5f).normalized()).toRotationMatrix();
     Eigen::Matrix2f turn = Eigen::Rotation2Df(0.5236f).toRotationMatrix();
     std::vector<Eigen::Vector3f> points;
     for (Eigen::Vector2f q : {Eigen::Vector2f(-2, -1), Eigen::Vector2f(2, -1), Eigen::Vector2f(2, 1),

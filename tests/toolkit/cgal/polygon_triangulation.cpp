@@ -1,7 +1,7 @@
 #include "toolkit/cgal/polygon_triangulation.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace boxlod {
 namespace {
@@ -16,7 +16,8 @@ std::vector<Eigen::Vector3d> all_points(const std::vector<Ring>& rings, const Po
 }
 
 // The triangles' area, and whether each turns about `normal`.
-double area_about(const std::vector<Ring>& rings, const PolygonTriangles& triangles, const Eigen::Vector3d& normal, bool& all_turn) {
+double area_about(const std::vector<Ring>& rings, const PolygonTriangles& triangles,
+                  const Eigen::Vector3d& normal, bool& all_turn) {
     const auto points = all_points(rings, triangles);
     double area = 0;
     all_turn = true;
@@ -45,7 +46,9 @@ TEST(PolygonTriangulation, AConcaveRingFarFromTheOriginIsExact) {
     // An L-shaped roof 100 km out, facing up: 3 of its 4 unit squares.
     const Eigen::Vector3d far(1e5, 4e5, 20);
     Ring roof;
-    for (Eigen::Vector3d p : {Eigen::Vector3d(0, 0, 0), {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}}) roof.push_back(far + p);
+    for (Eigen::Vector3d p :
+         {Eigen::Vector3d(0, 0, 0), {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}})
+        roof.push_back(far + p);
     const PolygonTriangles triangles = triangulate_polygon({roof});
     bool all_turn = false;
     EXPECT_NEAR(area_about({roof}, triangles, {0, 0, 1}, all_turn), 3, 1e-9);
@@ -59,7 +62,8 @@ TEST(PolygonTriangulation, CrossingRingsMeetAtAddedPoints) {
     const PolygonTriangles triangles = triangulate_polygon({outer, hole});
     ASSERT_EQ(triangles.added_points.size(), 2u);
     for (const Eigen::Vector3d& p : triangles.added_points)
-        EXPECT_TRUE((p - Eigen::Vector3d(2, 1, 0)).norm() < 1e-12 || (p - Eigen::Vector3d(1, 2, 0)).norm() < 1e-12);
+        EXPECT_TRUE((p - Eigen::Vector3d(2, 1, 0)).norm() < 1e-12 ||
+                    (p - Eigen::Vector3d(1, 2, 0)).norm() < 1e-12);
     bool all_turn = false;
     area_about({outer, hole}, triangles, {0, 0, 1}, all_turn);
     EXPECT_TRUE(all_turn);

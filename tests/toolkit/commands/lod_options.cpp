@@ -21,7 +21,8 @@ TEST(LodOptions, OneOptionPerDeclaredParameterWithItsRange) {
     std::vector<Option> options = lod_options();
     ASSERT_EQ(options.size(), lod_parameter_declarations().size() + 2);  // and --params, --manual
     for (const ParameterDeclaration& d : lod_parameter_declarations()) {
-        auto o = std::find_if(options.begin(), options.end(), [&](const Option& o) { return o.name == d.option; });
+        auto o =
+            std::find_if(options.begin(), options.end(), [&](const Option& o) { return o.name == d.option; });
         ASSERT_NE(o, options.end()) << d.option;
         EXPECT_EQ(o->help, d.help_text());
         EXPECT_EQ(o->range.has_value(), d.range.has_value());
@@ -31,8 +32,9 @@ TEST(LodOptions, OneOptionPerDeclaredParameterWithItsRange) {
 }
 
 TEST(LodOptions, OptionsSetTheirParameters) {
-    LodParameters p = parse({"--level-mode", "box-volume", "--wanted-levels", "5", "--box", "minimal", "--no-crop",
-                             "--keep-small-subtrees", "--resolution", "720", "--min-texture-size", "64"});
+    LodParameters p =
+        parse({"--level-mode", "box-volume", "--wanted-levels", "5", "--box", "minimal", "--no-crop",
+               "--keep-small-subtrees", "--resolution", "720", "--min-texture-size", "64"});
     EXPECT_EQ(p.model, "model.glb");
     EXPECT_EQ(p.level_mode, LevelMode::box_volume);
     EXPECT_EQ(p.wanted_levels, 5);
@@ -79,6 +81,7 @@ TEST(LodOptions, ErrorsNameTheOption) {
         return std::string("no error");
     };
     EXPECT_EQ(message({"--box", "round"}).rfind("--box: unknown value 'round' (", 0), 0u);
-    EXPECT_EQ(message({"--min-texture-size", "100"}), "--min-texture-size: expected a power of two in [1, 16384], got '100'");
+    EXPECT_EQ(message({"--min-texture-size", "100"}),
+              "--min-texture-size: expected a power of two in [1, 16384], got '100'");
     EXPECT_NE(message({"--min-texture-size", "8192"}).find("min <= max"), std::string::npos);
 }

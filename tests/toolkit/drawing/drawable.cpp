@@ -50,7 +50,7 @@ TEST(TextureCache, DecodesTheSameTexelsAsWithoutIt) {
         for (std::size_t l = 0; l < plain.color[t]->levels.size(); ++l)
             EXPECT_EQ(plain.color[t]->levels[l].rgba8, cached.color[t]->levels[l].rgba8);
     }
-    EXPECT_FALSE(plain.linear[1]);  // unused as linear data: not decoded
+    EXPECT_FALSE(plain.linear[1]);              // unused as linear data: not decoded
     EXPECT_NE(plain.color[0], plain.color[1]);  // without a cache nothing is shared
 }
 

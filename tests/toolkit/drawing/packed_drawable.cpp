@@ -72,7 +72,8 @@ TEST(PackedDrawable, KeepsTexturesTheCacheHoldsSharedAndPacksTheRest) {
     PackedDrawable packed = pack_drawable(model, &cache);
     EXPECT_EQ(packed.shared.color[std::size_t(bricks)], decoded);
     for (const PackedDrawable::OwnTexture& own : packed.own) EXPECT_NE(own.index, bricks);
-    EXPECT_EQ(packed.own.size(), textures_read(model.materials).size() - 1);  // every page map, not the bricks
+    EXPECT_EQ(packed.own.size(),
+              textures_read(model.materials).size() - 1);  // every page map, not the bricks
 
     auto unpacked = unpack_drawable(packed);
     bool drawn = false;
@@ -95,7 +96,8 @@ TEST(PackedDrawable, WithoutHeightMapsOnlyTheHeightsGoAndNormalModeDrawsTheSame)
         EXPECT_EQ(x.normal != nullptr, y.normal != nullptr);
     }
     EXPECT_TRUE(had_height);
-    EXPECT_EQ(render_with(a->drawable, RenderMode::normal).pixels, render_with(b->drawable, RenderMode::normal).pixels);
+    EXPECT_EQ(render_with(a->drawable, RenderMode::normal).pixels,
+              render_with(b->drawable, RenderMode::normal).pixels);
 }
 
 TEST(PackedDrawable, PackedIsSmallerThanUnpackedAndCountsItRight) {

@@ -56,12 +56,15 @@ TEST(ResidentDrawables, EvictsTheLeastRecentlyUsedBeyondTheBudget) {
 TEST(ResidentDrawables, CountsDoNotDependOnThreads) {
     std::vector<PackedDrawable> packed = four_levels();
     const std::size_t one = packed[0].unpacked_size;
-    std::vector<std::vector<const PackedDrawable*>> calls = {
-        {&packed[0], &packed[1], &packed[2]}, {&packed[3]}, {&packed[1], &packed[0]}, {&packed[2], &packed[3]}};
+    std::vector<std::vector<const PackedDrawable*>> calls = {{&packed[0], &packed[1], &packed[2]},
+                                                             {&packed[3]},
+                                                             {&packed[1], &packed[0]},
+                                                             {&packed[2], &packed[3]}};
     auto run = [&](int threads) {
         ResidentDrawables resident(2 * one);
         for (const auto& call : calls) resident.acquire(call, threads);
-        return std::make_tuple(resident.counts().unpacked, resident.counts().evicted, resident.counts().resident_bytes);
+        return std::make_tuple(resident.counts().unpacked, resident.counts().evicted,
+                               resident.counts().resident_bytes);
     };
     EXPECT_EQ(run(1), run(2));
     EXPECT_EQ(std::get<0>(run(1)), 8u);  // 0 1 2 | 3, evicting 0 1 | 1 0, evicting 2 3 | 2 3 again

@@ -15,34 +15,44 @@ std::string problem(const std::string& bytes, const std::string& extension) {
 }
 
 std::string step(const std::string& data) {
-    return "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('IFC2X3'));\nENDSEC;\nDATA;\n" + data + "ENDSEC;\nEND-ISO-10303-21;\n";
+    return "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('IFC2X3'));\nENDSEC;\nDATA;\n" + data +
+           "ENDSEC;\nEND-ISO-10303-21;\n";
 }
 
 }  // namespace
 
 TEST(AssimpInputCheck, PlyCountsMustFitTheFile) {
-    std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply"), "");
     std::string huge = "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\nend_header\n0\n";
-    EXPECT_EQ(problem(huge, ".ply"), "m.ply: line 3: element 'vertex': claims 1000000000 entries, more than the file's 2 bytes can hold");
-    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\nend_header\n" + std::string(15, '\0');
+    EXPECT_EQ(
+        problem(huge, ".ply"),
+        "m.ply: line 3: element 'vertex': claims 1000000000 entries, more than the file's 2 bytes can hold");
+    std::string binary =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\nend_header\n" +
+        std::string(15, '\0');
     EXPECT_NE(problem(binary, ".ply"), "");  // 2 doubles need 16 bytes
-    std::string overflow = "ply\nformat ascii 1.0\nelement vertex 18446744073709551615\nproperty float x\nend_header\n";
+    std::string overflow =
+        "ply\nformat ascii 1.0\nelement vertex 18446744073709551615\nproperty float x\nend_header\n";
     EXPECT_NE(problem(overflow, ".ply"), "");
 }
 
 TEST(AssimpInputCheck, OffCountsMustFitTheFile) {
     EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
     std::string huge = "OFF\n999999999 1 0\n0 0 0\n";
-    EXPECT_EQ(problem(huge, ".off"), "m.off: line 2: vertex count: claims 999999999 entries, more than the file's " +
-                                         std::to_string(huge.size()) + " bytes can hold");
+    EXPECT_EQ(problem(huge, ".off"),
+              "m.off: line 2: vertex count: claims 999999999 entries, more than the file's " +
+                  std::to_string(huge.size()) + " bytes can hold");
     // The counts may follow the keyword on its own line; comments are skipped.
     EXPECT_EQ(problem("# a triangle\nOFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
     // assimp would clamp an index out of range to the last vertex.
-    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n", ".off"), "m.off: line 6: vertex index 9 out of range (3 vertices)");
+    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n", ".off"),
+              "m.off: line 6: vertex index 9 out of range (3 vertices)");
     // A negative index is reported as written (it read as 18446744073709551615).
-    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", ".off"), "m.off: line 6: vertex index -1 out of range (3 vertices)");
+    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", ".off"),
+              "m.off: line 6: vertex index -1 out of range (3 vertices)");
 }
 
 TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
@@ -57,7 +67,8 @@ TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
 TEST(AssimpInputCheck, StepFilesMustEndWithTheirTrailer) {
     std::string whole = step("#1= IFCCARTESIANPOINT((0.,0.,0.));\n");
     EXPECT_EQ(problem(whole, ".ifc"), "");
-    EXPECT_EQ(problem(whole.substr(0, whole.size() / 2), ".ifc"), "m.ifc: does not end with 'END-ISO-10303-21;' (truncated file?)");
+    EXPECT_EQ(problem(whole.substr(0, whole.size() / 2), ".ifc"),
+              "m.ifc: does not end with 'END-ISO-10303-21;' (truncated file?)");
 }
 
 TEST(AssimpInputCheck, StepReferencesMayNeitherCycleNorNestTooDeep) {
@@ -66,18 +77,26 @@ TEST(AssimpInputCheck, StepReferencesMayNeitherCycleNorNestTooDeep) {
     // A '#' inside a string is no reference.
     EXPECT_EQ(problem(step("#1= IFCWALL('a #1 b',$);\n"), ".ifc"), "");
     std::string chain;
-    for (int i = 1; i <= 300; ++i)  // appended piece by piece: "#" + std::to_string(...) trips GCC 12's false -Wrestrict
-        chain.append("#").append(std::to_string(i)).append("= IFCLOCALPLACEMENT(#").append(std::to_string(i + 1)).append(",$);\n");
-    EXPECT_NE(problem(step(chain), ".ifc").find("references nested more than 200 levels deep"), std::string::npos);
+    for (int i = 1; i <= 300;
+         ++i)  // appended piece by piece: "#" + std::to_string(...) trips GCC 12's false -Wrestrict
+        chain.append("#")
+            .append(std::to_string(i))
+            .append("= IFCLOCALPLACEMENT(#")
+            .append(std::to_string(i + 1))
+            .append(",$);\n");
+    EXPECT_NE(problem(step(chain), ".ifc").find("references nested more than 200 levels deep"),
+              std::string::npos);
 }
 
 TEST(AssimpInputCheck, IfcSpatialRelationshipsMayNotCycle) {
     // Two aggregations making a building part of its own storey: no instance refers back, yet the tree loops.
-    std::string data = "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
-                       "#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n#21= IFCRELAGGREGATES('r2',$,$,$,#11,(#10));\n";
+    std::string data =
+        "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
+        "#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n#21= IFCRELAGGREGATES('r2',$,$,$,#11,(#10));\n";
     EXPECT_NE(problem(step(data), ".ifc").find("spatial relationships form a cycle"), std::string::npos);
-    std::string tree = "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
-                       "#12= IFCWALL('w',$,$,$,$,$,$,$);\n#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n"
-                       "#21= IFCRELCONTAINEDINSPATIALSTRUCTURE('r2',$,$,$,(#12),#11);\n";
+    std::string tree =
+        "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
+        "#12= IFCWALL('w',$,$,$,$,$,$,$);\n#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n"
+        "#21= IFCRELCONTAINEDINSPATIALSTRUCTURE('r2',$,$,$,(#12),#11);\n";
     EXPECT_EQ(problem(step(tree), ".ifc"), "");
 }

@@ -15,7 +15,9 @@ using namespace boxlod;
 namespace fs = std::filesystem;
 
 namespace {
-std::string statistic(const Model& model, const std::string& key) { return value_of(model_statistics(model), key); }
+std::string statistic(const Model& model, const std::string& key) {
+    return value_of(model_statistics(model), key);
+}
 }  // namespace
 
 TEST(AssimpIo, ObjQuadsCountAsOneFaceEach) {
@@ -42,20 +44,26 @@ f 1 2 5
 TEST(AssimpIo, Latin1NamesBecomeUtf8) {
     auto folder = test::scratch_folder("assimp_latin1");
     test::write_text(folder / "m.mtl", "newmtl Terraind\xe6k\nKd 0.5 0.5 0.5\n");
-    test::write_text(folder / "m.obj", "mtllib m.mtl\ng Gel\xe4nde\nusemtl Terraind\xe6k\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    test::write_text(
+        folder / "m.obj",
+        "mtllib m.mtl\ng Gel\xe4nde\nusemtl Terraind\xe6k\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     Model model = load_model((folder / "m.obj").string());
-    const auto material = std::find_if(model.materials.begin(), model.materials.end(), [](const Material& m) { return m.name.starts_with("Terrain"); });
+    const auto material = std::find_if(model.materials.begin(), model.materials.end(),
+                                       [](const Material& m) { return m.name.starts_with("Terrain"); });
     ASSERT_NE(material, model.materials.end());
     EXPECT_EQ(material->name, "Terraind\xc3\xa6k");
-    EXPECT_TRUE(std::any_of(model.nodes.begin(), model.nodes.end(), [](const Node& n) { return n.name == "Gel\xc3\xa4nde"; }));
+    EXPECT_TRUE(std::any_of(model.nodes.begin(), model.nodes.end(),
+                            [](const Node& n) { return n.name == "Gel\xc3\xa4nde"; }));
     save_model(model, (folder / "m.gltf").string());
     const Model read_back = load_model((folder / "m.gltf").string());
-    EXPECT_TRUE(std::any_of(read_back.materials.begin(), read_back.materials.end(), [](const Material& m) { return m.name == "Terraind\xc3\xa6k"; }));
+    EXPECT_TRUE(std::any_of(read_back.materials.begin(), read_back.materials.end(),
+                            [](const Material& m) { return m.name == "Terraind\xc3\xa6k"; }));
 }
 
 TEST(AssimpIo, MalformedFilesAreInputErrors) {
     auto folder = test::scratch_folder("assimp_bad");
-    test::write_text(folder / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n");
+    test::write_text(folder / "bad.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n");
     EXPECT_THROW(load_model((folder / "bad.ply").string()), InputError);
     test::write_text(folder / "bad.obj", "f 1 2 3\n");
     EXPECT_THROW(load_model((folder / "bad.obj").string()), InputError);
@@ -65,11 +73,19 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
 
 // One file of each format the original program's users have, from Debian's assimp-testmodels.
 TEST(AssimpIo, EveryFormatReadsWithItsHierarchy) {
-    struct Case { const char* file; const char* nodes; const char* depth; const char* faces; };
+    struct Case {
+        const char* file;
+        const char* nodes;
+        const char* depth;
+        const char* faces;
+    };
     const Case cases[] = {
-        {"FBX/cubes_with_names.fbx", "5", "2", "210"}, {"Collada/duck.dae", "4", "1", "2144"},
-        {"PLY/cube.ply", "1", "0", "6"},               {"OFF/Cube.off", "1", "0", "6"},
-        {"3DS/fels.3ds", "2", "1", "768"},             {"OBJ/box.obj", "2", "1", "6"},
+        {"FBX/cubes_with_names.fbx", "5", "2", "210"},
+        {"Collada/duck.dae", "4", "1", "2144"},
+        {"PLY/cube.ply", "1", "0", "6"},
+        {"OFF/Cube.off", "1", "0", "6"},
+        {"3DS/fels.3ds", "2", "1", "768"},
+        {"OBJ/box.obj", "2", "1", "6"},
     };
     for (const Case& c : cases) {
         Model model = load_model(std::string("/usr/share/assimp/models/") + c.file);
@@ -94,18 +110,28 @@ TEST(AssimpIo, TexturesNamedAsOnWindowsLoad) {
         EXPECT_GT(model.textures[0].image.width, 0) << file;
     }
     auto folder = test::scratch_folder("assimp_windows_path");
-    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "Wall.png", fs::copy_options::overwrite_existing);
-    test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\textures\\wall.png\n");
-    test::write_text(folder / "m.obj", "mtllib m.mtl\nusemtl wall\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "Wall.png",
+                  fs::copy_options::overwrite_existing);
+    test::write_text(folder / "m.mtl",
+                     "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\textures\\wall.png\n");
+    test::write_text(
+        folder / "m.obj",
+        "mtllib m.mtl\nusemtl wall\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
     Model model = load_model((folder / "m.obj").string());
     ASSERT_EQ(model.textures.size(), 1u);
     EXPECT_GT(model.textures[0].image.width, 0);
     fs::create_directories(folder / "maps");
-    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "maps" / "stone.png", fs::copy_options::overwrite_existing);
-    test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd //maps/stone.png\n");  // Blender's "from the .blend's folder"
+    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "maps" / "stone.png",
+                  fs::copy_options::overwrite_existing);
+    test::write_text(
+        folder / "m.mtl",
+        "newmtl wall\nKd 1 1 1\nmap_Kd //maps/stone.png\n");  // Blender's "from the .blend's folder"
     EXPECT_EQ(load_model((folder / "m.obj").string()).textures.size(), 1u);
     test::write_text(folder / "m.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd C:\\Users\\author\\missing.png\n");
-    EXPECT_NE(test::input_error_of([&] { load_model((folder / "m.obj").string()); }).find("missing.png: no such file"), std::string::npos);
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model((folder / "m.obj").string());
+              }).find("missing.png: no such file"),
+              std::string::npos);
 }
 
 // LightWave maps textures by projection (planar, cylindrical, spherical):
@@ -116,7 +142,8 @@ TEST(AssimpIo, ProjectionMappedTexturesGetTextureCoordinates) {
         int textured = 0;
         for (const Node& node : model.nodes)
             for (const Primitive& primitive : node.primitives)
-                if (primitive.material >= 0 && samples_textures(model.materials[std::size_t(primitive.material)])) {
+                if (primitive.material >= 0 &&
+                    samples_textures(model.materials[std::size_t(primitive.material)])) {
                     EXPECT_EQ(primitive.uvs.size(), primitive.positions.size()) << file;
                     ++textured;
                 }
@@ -128,8 +155,9 @@ TEST(AssimpIo, ProjectionMappedTexturesGetTextureCoordinates) {
 // handed back field for field); it gives the model the reader gives in this
 // process, textures and all.
 TEST(AssimpIo, TheIsolatedReadIsTheInProcessRead) {
-    for (const char* file : {"FBX/cubes_with_names.fbx", "Collada/duck.dae", "PLY/cube.ply", "OFF/Cube.off", "3DS/fels.3ds",
-                             "OBJ/box.obj", "3DS/cube_with_diffuse_texture.3DS", "IFC/AC14-FZK-Haus.ifc"}) {
+    for (const char* file :
+         {"FBX/cubes_with_names.fbx", "Collada/duck.dae", "PLY/cube.ply", "OFF/Cube.off", "3DS/fels.3ds",
+          "OBJ/box.obj", "3DS/cube_with_diffuse_texture.3DS", "IFC/AC14-FZK-Haus.ifc"}) {
         const std::string path = std::string("/usr/share/assimp/models/") + file;
         const Model isolated = import_with_assimp(path), in_process = import_with_assimp_in_process(path);
         EXPECT_EQ(isolated.source, in_process.source) << file;
@@ -172,7 +200,8 @@ TEST(AssimpIo, FzkHausGlassIsBlendedAndKeptByConvert) {
 TEST(AssimpIo, FzkHausGlbFromAssimpExportKeepsItsHierarchy) {
     auto folder = test::scratch_folder("assimp_fzk");
     std::string glb = (folder / "fzk.glb").string();
-    std::string command = std::string("assimp export ") + test::fzk_haus_ifc + " " + glb + " -fglb2 >/dev/null 2>&1";
+    std::string command =
+        std::string("assimp export ") + test::fzk_haus_ifc + " " + glb + " -fglb2 >/dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     Model model = load_model(glb);
     EXPECT_EQ(statistic(model, "nodes"), "216");

@@ -6,10 +6,10 @@
 #include "toolkit/formats/model_io.h"
 #include "toolkit/model/model_subtree.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
 
 namespace boxlod {
 namespace {
@@ -44,7 +44,8 @@ double area(const Node& node) {
         for (std::size_t i = 0; i < p.indices.size(); i += 3)
             sum += (p.positions[p.indices[i + 1]] - p.positions[p.indices[i]])
                        .cross(p.positions[p.indices[i + 2]] - p.positions[p.indices[i]])
-                       .norm() / 2;
+                       .norm() /
+                   2;
     return sum;
 }
 
@@ -62,12 +63,17 @@ json surface(int first) { return {{first, first + 1, first + 2, first + 3}}; }
 TEST(CityJsonImport, ObjectsHangUnderTheirParentsWithTheirTypes) {
     const json objects = {
         {"house", {{"type", "Building"}, {"children", {"east", "west"}}}},
-        {"east", {{"type", "BuildingPart"}, {"parents", {"house"}},
-                  {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}},
-        {"west", {{"type", "BuildingPart"}, {"parents", {"house"}},
-                  {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}}};
+        {"east",
+         {{"type", "BuildingPart"},
+          {"parents", {"house"}},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}},
+        {"west",
+         {{"type", "BuildingPart"},
+          {"parents", {"house"}},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {surface(0)}}}}}}}};
     const Model model = read(city(objects, square_vertices), "parts");
-    const int house = node_named(model, "house"), east = node_named(model, "east"), west = node_named(model, "west");
+    const int house = node_named(model, "house"), east = node_named(model, "east"),
+              west = node_named(model, "west");
     ASSERT_GE(house, 0);
     EXPECT_EQ(model.nodes[std::size_t(house)].parent, 0);
     EXPECT_EQ(model.nodes[std::size_t(east)].parent, house);
@@ -86,9 +92,11 @@ TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
     const json geometry = {{"type", "MultiSurface"},
                            {"lod", "3"},
                            {"boundaries", {{{0, 1, 2, 3}, {4, 5, 6, 7}}, {{4, 7, 6, 5}}}},
-                           {"semantics", {{"surfaces", {{{"type", "WallSurface"}}, {{"type", "Window"}, {"parent", 0}}}},
-                                          {"values", {0, 1}}}}};
-    const Model model = read(city({{"shed", {{"type", "Building"}, {"geometry", {geometry}}}}}, vertices), "window");
+                           {"semantics",
+                            {{"surfaces", {{{"type", "WallSurface"}}, {{"type", "Window"}, {"parent", 0}}}},
+                             {"values", {0, 1}}}}};
+    const Model model =
+        read(city({{"shed", {{"type", "Building"}, {"geometry", {geometry}}}}}, vertices), "window");
     const int wall = node_named(model, "WallSurface 0"), window = node_named(model, "Window 1");
     ASSERT_GE(wall, 0);
     ASSERT_GE(window, 0);
@@ -99,8 +107,10 @@ TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
     EXPECT_NEAR(area(model.nodes[std::size_t(window)]), 1, 1e-5);
     EXPECT_EQ(tree_depth(model), 3);
     // Untextured and without a material: drawn in the semantic type's colour.
-    const Material& wall_material = model.materials[std::size_t(model.nodes[std::size_t(wall)].primitives[0].material)];
-    const Material& window_material = model.materials[std::size_t(model.nodes[std::size_t(window)].primitives[0].material)];
+    const Material& wall_material =
+        model.materials[std::size_t(model.nodes[std::size_t(wall)].primitives[0].material)];
+    const Material& window_material =
+        model.materials[std::size_t(model.nodes[std::size_t(window)].primitives[0].material)];
     EXPECT_NE(wall_material.base_color, window_material.base_color);
     // z up becomes y up: the wall faces -y in the file, +z in the model.
     const Primitive& p = model.nodes[std::size_t(wall)].primitives[0];
@@ -113,19 +123,30 @@ TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
 TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
     const fs::path folder = test::scratch_folder("cityjson_textured");
     Image8 image(2, 2, 4);  // as read_image gives it: RGBA
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = i % 4 == 3 ? 255 : std::uint8_t(40 * i);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        image.pixels[i] = i % 4 == 3 ? 255 : std::uint8_t(40 * i);
     write_png((folder / "roof.png").string(), image);
-    json file = city({{"roof", {{"type", "Building"},
-                                {"geometry", {{{"type", "MultiSurface"},
-                                               {"lod", "2"},
-                                               {"boundaries", {surface(0), surface(4)}},
-                                               {"material", {{"colour", {{"values", {0, 0}}}}}},
-                                               {"texture", {{"photo", {{"values", {{{0, 0, 1, 2, 3}}, {{1, 0, 1, 2, 3}}}}}}}}}}}}}},
-                     {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0},
-                      {0, 0, 100}, {1000, 0, 100}, {1000, 1000, 100}, {0, 1000, 100}});
-    file["appearance"] = {{"materials", {{{"name", "red"}, {"diffuseColor", {1, 0, 0}}, {"transparency", 0.25}}}},
-                          {"textures", {{{"type", "PNG"}, {"image", "roof.png"}}, {{"type", "PNG"}, {"image", "gone.png"}}}},
-                          {"vertices-texture", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}};
+    json file =
+        city({{"roof",
+               {{"type", "Building"},
+                {"geometry",
+                 {{{"type", "MultiSurface"},
+                   {"lod", "2"},
+                   {"boundaries", {surface(0), surface(4)}},
+                   {"material", {{"colour", {{"values", {0, 0}}}}}},
+                   {"texture", {{"photo", {{"values", {{{0, 0, 1, 2, 3}}, {{1, 0, 1, 2, 3}}}}}}}}}}}}}},
+             {{0, 0, 0},
+              {1000, 0, 0},
+              {1000, 1000, 0},
+              {0, 1000, 0},
+              {0, 0, 100},
+              {1000, 0, 100},
+              {1000, 1000, 100},
+              {0, 1000, 100}});
+    file["appearance"] = {
+        {"materials", {{{"name", "red"}, {"diffuseColor", {1, 0, 0}}, {"transparency", 0.25}}}},
+        {"textures", {{{"type", "PNG"}, {"image", "roof.png"}}, {{"type", "PNG"}, {"image", "gone.png"}}}},
+        {"vertices-texture", {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}};
     test::write_text(folder / "roof.city.json", file.dump());
     testing::internal::CaptureStderr();
     const Model model = import_cityjson((folder / "roof.city.json").string());
@@ -150,16 +171,21 @@ TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
 
 // A 10 m square with a 1 mm step in one corner, at the origin or 400 km out.
 Model step_at(const json& translate, const std::string& name) {
-    const json vertices = {{0, 0, 0}, {10000, 0, 0}, {10000, 10000, 0}, {1, 10000, 0}, {1, 10001, 0}, {0, 10001, 0}};
-    return read(city({{"plot", {{"type", "Building"},
-                                {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 3, 4, 5}}}}}}}}}},
-                     vertices, translate),
-                name);
+    const json vertices = {{0, 0, 0},     {10000, 0, 0}, {10000, 10000, 0},
+                           {1, 10000, 0}, {1, 10001, 0}, {0, 10001, 0}};
+    return read(
+        city({{"plot",
+               {{"type", "Building"},
+                {"geometry",
+                 {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 3, 4, 5}}}}}}}}}},
+             vertices, translate),
+        name);
 }
 
 TEST(CityJsonImport, FarFromTheOriginReadsAsNearIt) {
     const Model near = step_at({0, 0, 0}, "near"), far = step_at({150000.25, 400000.25, 12}, "far");
-    EXPECT_EQ(near.origin, Eigen::Vector3d(5, 0, -5));  // the middle of the ground rectangle in whole metres, y up
+    EXPECT_EQ(near.origin,
+              Eigen::Vector3d(5, 0, -5));  // the middle of the ground rectangle in whole metres, y up
     EXPECT_EQ(far.origin, Eigen::Vector3d(150005, 12, -400005));
     const Primitive& a = near.nodes[1].primitives[0];
     const Primitive& b = far.nodes[1].primitives[0];
@@ -187,23 +213,33 @@ TEST(CityJsonImport, GltfKeepsTheOriginAsTheRootsTranslation) {
 }
 
 TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
-    const json geometries = {{{"type", "MultiSurface"}, {"lod", "1.2"}, {"boundaries", {surface(0)}}},
-                             {{"type", "MultiSurface"}, {"lod", "2.2"}, {"boundaries", {surface(0), surface(0)}}}};
+    const json geometries = {
+        {{"type", "MultiSurface"}, {"lod", "1.2"}, {"boundaries", {surface(0)}}},
+        {{"type", "MultiSurface"}, {"lod", "2.2"}, {"boundaries", {surface(0), surface(0)}}}};
     const json file = city({{"b", {{"type", "Building"}, {"geometry", geometries}}}}, square_vertices);
     EXPECT_EQ(read(file, "lod_finest").nodes[1].primitives[0].polygon_count, 2u);
     EXPECT_EQ(read(file, "lod_asked", "1.2").nodes[1].primitives[0].polygon_count, 1u);
-    EXPECT_NE(test::input_error_of([&] { read(file, "lod_absent", "3"); }).find("no surface of LoD 3 (the file has LoD 1.2, 2.2)"),
+    EXPECT_NE(test::input_error_of([&] {
+                  read(file, "lod_absent", "3");
+              }).find("no surface of LoD 3 (the file has LoD 1.2, 2.2)"),
               std::string::npos);
 }
 
 TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
-    const json header = {{"type", "CityJSON"}, {"version", "2.0"},
+    const json header = {{"type", "CityJSON"},
+                         {"version", "2.0"},
                          {"transform", {{"scale", {0.001, 0.001, 0.001}}, {"translate", {0, 0, 0}}}},
-                         {"CityObjects", json::object()}, {"vertices", json::array()}};
+                         {"CityObjects", json::object()},
+                         {"vertices", json::array()}};
     auto feature = [](const std::string& id, int x) {
-        return json{{"type", "CityJSONFeature"}, {"id", id},
-                    {"CityObjects", {{id, {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}}}},
-                    {"vertices", {{x, 0, 0}, {x + 1000, 0, 0}, {x + 1000, 1000, 0}, {x, 1000, 0}}}};
+        return json{
+            {"type", "CityJSONFeature"},
+            {"id", id},
+            {"CityObjects",
+             {{id,
+               {{"type", "Building"},
+                {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}}}},
+            {"vertices", {{x, 0, 0}, {x + 1000, 0, 0}, {x + 1000, 1000, 0}, {x, 1000, 0}}}};
     };
     const fs::path path = test::scratch_folder("cityjson_seq") / "two.city.jsonl";
     // A blank line before the header is no header.
@@ -219,11 +255,17 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
 // a surface without semantics is coloured as its facing suggests.
 TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
     const json objects = {
-        {"a", {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
-        {"b", {{"type", "Building"},
-               {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(4)}},
-                              {"semantics", {{"surfaces", {{{"type", "RoofSurface"}}}}, {"values", {0}}}}}}}}}};
-    const json vertices = {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0},
+        {"a",
+         {{"type", "Building"},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
+        {"b",
+         {{"type", "Building"},
+          {"geometry",
+           {{{"type", "MultiSurface"},
+             {"lod", "1"},
+             {"boundaries", {surface(4)}},
+             {"semantics", {{"surfaces", {{{"type", "RoofSurface"}}}}, {"values", {0}}}}}}}}}};
+    const json vertices = {{0, 0, 0},     {1000, 0, 0},  {1000, 1000, 0},  {0, 1000, 0},
                            {50000, 0, 0}, {51000, 0, 0}, {51000, 1000, 0}, {50000, 1000, 0}};
     const fs::path path = test::scratch_folder("cityjson_object") / "two.city.json";
     test::write_text(path, city(objects, vertices).dump());
@@ -232,7 +274,9 @@ TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
     EXPECT_EQ(b.nodes[0].name, "b");
     ASSERT_EQ(whole.nodes[2].name, "b");
     EXPECT_EQ(model_bounds(b).min, model_bounds(extract_subtree(whole, 2)).min);  // where the district has it
-    EXPECT_NE(test::input_error_of([&] { load_model(path.string() + "#c"); }).find("no object named 'c' (2 objects: a, ...)"),
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(path.string() + "#c");
+              }).find("no object named 'c' (2 objects: a, ...)"),
               std::string::npos);
     // a's square faces up without semantics: drawn in the roof colour of b's RoofSurface.
     const Model a = load_model(path.string() + "#a");
@@ -245,30 +289,43 @@ TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
     auto error_of = [](json file, const std::string& name) {
         return test::input_error_of([&] { read(file, name); });
     };
-    const json one = {{"b", {{"type", "Building"}, {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 9}}}}}}}}}};
-    EXPECT_NE(error_of(city(one, square_vertices), "bad_vertex").find("CityObjects 'b': geometry 0: vertex index 9 is outside 0..3"),
+    const json one = {
+        {"b",
+         {{"type", "Building"},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1, 2, 9}}}}}}}}}};
+    EXPECT_NE(error_of(city(one, square_vertices), "bad_vertex")
+                  .find("CityObjects 'b': geometry 0: vertex index 9 is outside 0..3"),
               std::string::npos);
-    const json cycle = {{"a", {{"type", "Building"}, {"parents", {"b"}}}}, {"b", {{"type", "BuildingPart"}, {"parents", {"a"}}}}};
-    EXPECT_NE(error_of(city(cycle, square_vertices), "cycle").find("parents: a cycle (a > b > a)"), std::string::npos);
+    const json cycle = {{"a", {{"type", "Building"}, {"parents", {"b"}}}},
+                        {"b", {{"type", "BuildingPart"}, {"parents", {"a"}}}}};
+    EXPECT_NE(error_of(city(cycle, square_vertices), "cycle").find("parents: a cycle (a > b > a)"),
+              std::string::npos);
     json no_transform = city(one, square_vertices);
     no_transform.erase("transform");
     EXPECT_NE(error_of(no_transform, "no_transform").find("missing member 'transform'"), std::string::npos);
-    json textured = city({{"b", {{"type", "Building"},
-                                 {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}},
-                                                {"texture", {{"t", {{"values", {{{5, 0, 0, 0, 0}}}}}}}}}}}}}},
+    json textured = city({{"b",
+                           {{"type", "Building"},
+                            {"geometry",
+                             {{{"type", "MultiSurface"},
+                               {"lod", "1"},
+                               {"boundaries", {surface(0)}},
+                               {"texture", {{"t", {{"values", {{{5, 0, 0, 0, 0}}}}}}}}}}}}}},
                          square_vertices);
-    textured["appearance"] = {{"textures", {{{"type", "PNG"}, {"image", "a.png"}}}}, {"vertices-texture", {{0, 0}}}};
+    textured["appearance"] = {{"textures", {{{"type", "PNG"}, {"image", "a.png"}}}},
+                              {"vertices-texture", {{0, 0}}}};
     EXPECT_NE(error_of(textured, "bad_texture").find("texture index 5 is outside 0..0"), std::string::npos);
     EXPECT_NE(error_of(json::array(), "not_object").find("not a CityJSON object"), std::string::npos);
 }
 
 // The CityJSON files of ../shared/models beside the checkout, where present.
 fs::path shared_cityjson(const std::string& name) {
-    return (fs::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / "cityjson" / name).lexically_normal();
+    return (fs::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / "cityjson" / name)
+        .lexically_normal();
 }
 
 TEST(CityJsonImport, SharedModelsReadWithTheirHierarchy) {
-    const fs::path parts = shared_cityjson("DH_01_subs.city.json"), bag = shared_cityjson("3dbag_multi_lod.city.json");
+    const fs::path parts = shared_cityjson("DH_01_subs.city.json"),
+                   bag = shared_cityjson("3dbag_multi_lod.city.json");
     if (!fs::exists(parts) || !fs::exists(bag)) GTEST_SKIP() << "../shared/models/cityjson is absent";
     const Model with_parts = load_model(parts.string());
     EXPECT_EQ(tree_depth(with_parts), 3);  // file > Building > BuildingPart > surface

@@ -2,15 +2,15 @@
 
 #include "base/input_error.h"
 #include "test_support.h"
-#include "toolkit/model/cost.h"
 #include "toolkit/formats/gltf_extras.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/model/cost.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 using namespace boxlod;
 namespace fs = std::filesystem;
@@ -75,7 +75,8 @@ Model sample_model() {
             for (std::size_t i = 0; i < 6; ++i) texture.image16.pixels[i] = std::uint16_t(i * 9001 + 3);
         } else {
             texture.image = Image8(3, 2, 4);
-            for (std::size_t i = 0; i < texture.image.pixels.size(); ++i) texture.image.pixels[i] = std::uint8_t(i * 13 + t);
+            for (std::size_t i = 0; i < texture.image.pixels.size(); ++i)
+                texture.image.pixels[i] = std::uint8_t(i * 13 + t);
         }
         model.textures.push_back(texture);
     }
@@ -197,7 +198,8 @@ TEST(GltfIo, ExportThenImportGivesTheSameModel) {
 TEST(GltfIo, IndicesAttributesAndExtensionsAsAClientReadsThem) {
     auto folder = test::scratch_folder("gltf_client_view");
     Model model = sample_model();
-    Primitive& big = model.nodes[1].primitives.emplace_back(quad(0.5f, 0));  // 70,000 vertices: 32-bit indices
+    Primitive& big =
+        model.nodes[1].primitives.emplace_back(quad(0.5f, 0));  // 70,000 vertices: 32-bit indices
     big.positions.resize(70000, Eigen::Vector3f(0.5f, 0.5f, 0.5f));
     big.normals.resize(70000, Eigen::Vector3f::UnitZ());
     big.uvs.resize(70000, Eigen::Vector2f::Zero());
@@ -207,23 +209,30 @@ TEST(GltfIo, IndicesAttributesAndExtensionsAsAClientReadsThem) {
     save_model(model, (folder / "house.glb").string());
     tinygltf::Model gltf;
     std::string error, warning;
-    ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "house.glb").string())) << error;
+    ASSERT_TRUE(
+        tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "house.glb").string()))
+        << error;
     std::vector<int> index_types;
     for (const tinygltf::Mesh& mesh : gltf.meshes)
         for (const tinygltf::Primitive& p : mesh.primitives) {
             index_types.push_back(gltf.accessors[std::size_t(p.indices)].componentType);
-            const bool textured = gltf.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorTexture.index >= 0;
+            const bool textured =
+                gltf.materials[std::size_t(p.material)].pbrMetallicRoughness.baseColorTexture.index >= 0;
             EXPECT_EQ(p.attributes.count("TEXCOORD_0"), textured ? 1u : 0u);
-            EXPECT_EQ(p.attributes.count("TANGENT"), textured ? 1u : 0u);  // the brick has a normal map, the glass nothing
+            EXPECT_EQ(p.attributes.count("TANGENT"),
+                      textured ? 1u : 0u);  // the brick has a normal map, the glass nothing
         }
-    EXPECT_EQ(index_types, (std::vector<int>{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
+    EXPECT_EQ(
+        index_types,
+        (std::vector<int>{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                          TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
     EXPECT_EQ(gltf.extensionsUsed, std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness"});
     const tinygltf::Value& sg = gltf.materials[0].extensions.at("KHR_materials_pbrSpecularGlossiness");
     EXPECT_FLOAT_EQ(float(sg.Get("specularFactor").Get(2).GetNumberAsDouble()), 0.3f);
     EXPECT_FLOAT_EQ(float(sg.Get("diffuseFactor").Get(0).GetNumberAsDouble()), 0.8f);
     EXPECT_EQ(sg.Get("specularGlossinessTexture").Get("index").GetNumberAsInt(), 0);
-    EXPECT_EQ(gltf.materials[1].extensions.count("KHR_materials_pbrSpecularGlossiness"), 0u);  // the glass states no specular
+    EXPECT_EQ(gltf.materials[1].extensions.count("KHR_materials_pbrSpecularGlossiness"),
+              0u);  // the glass states no specular
     expect_same_model(as_written(model), load_model((folder / "house.glb").string()));
 }
 
@@ -243,13 +252,16 @@ TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
     save_model(model, (folder / "both.glb").string());
     tinygltf::Model gltf;
     std::string error, warning;
-    ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "both.glb").string())) << error;
+    ASSERT_TRUE(
+        tinygltf::TinyGLTF().LoadBinaryFromFile(&gltf, &error, &warning, (folder / "both.glb").string()))
+        << error;
     int textured = 0, untextured = 0;
     for (const tinygltf::Mesh& mesh : gltf.meshes)
         for (const tinygltf::Primitive& p : mesh.primitives) {
             const tinygltf::Material& material = gltf.materials[std::size_t(p.material)];
             if (material.name != model.materials[std::size_t(brick)].name) continue;
-            const bool sampled = material.pbrMetallicRoughness.baseColorTexture.index >= 0 || material.normalTexture.index >= 0;
+            const bool sampled = material.pbrMetallicRoughness.baseColorTexture.index >= 0 ||
+                                 material.normalTexture.index >= 0;
             EXPECT_EQ(sampled, p.attributes.count("TEXCOORD_0") == 1);
             ++(sampled ? textured : untextured);
         }
@@ -260,8 +272,9 @@ TEST(GltfIo, APrimitiveWithoutTextureCoordinatesIsWrittenUntextured) {
     model.nodes[1].primitives.erase(model.nodes[1].primitives.begin());
     save_model(model, (folder / "bare.glb").string());
     const Model back = load_model((folder / "bare.glb").string());
-    const auto written = std::find_if(back.materials.begin(), back.materials.end(),
-                                      [&](const Material& m) { return m.name == model.materials[std::size_t(brick)].name; });
+    const auto written = std::find_if(back.materials.begin(), back.materials.end(), [&](const Material& m) {
+        return m.name == model.materials[std::size_t(brick)].name;
+    });
     ASSERT_NE(written, back.materials.end());
     EXPECT_FALSE(samples_textures(*written));
     EXPECT_TRUE(back.textures.empty());
@@ -285,7 +298,9 @@ namespace {
 // A one-triangle glTF at `path` whose material states `extension` with `fields` (JSON).
 std::string extension_file(const fs::path& path, const std::string& extension, const std::string& fields) {
     std::string body = std::string(triangle_mesh) + R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}],
-      "extensionsUsed": [")" + extension + R"("], "materials": [{"extensions": {")" + extension + "\": " + fields + "}}]";
+      "extensionsUsed": [")" +
+                       extension + R"("], "materials": [{"extensions": {")" + extension + "\": " + fields +
+                       "}}]";
     body.replace(body.find(R"("indices": 1)"), 12, R"("indices": 1, "material": 0)");
     test::write_text(path, gltf_with_buffer(triangle_bytes(), body));
     return path.string();
@@ -300,7 +315,8 @@ TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
     auto file = [&](const std::string& name, const std::string& fields) {
         return extension_file(folder / name, "KHR_materials_pbrSpecularGlossiness", fields);
     };
-    Model model = load_model(file("sg.gltf", R"({"diffuseFactor": [0.5, 0.25, 1, 1], "specularFactor": [0.75, 0.5, 0.25],
+    Model model = load_model(
+        file("sg.gltf", R"({"diffuseFactor": [0.5, 0.25, 1, 1], "specularFactor": [0.75, 0.5, 0.25],
                                                "glossinessFactor": 0.5})"));
     const Material& m = model.materials[0];
     EXPECT_TRUE(m.specular_glossiness);
@@ -314,15 +330,20 @@ TEST(GltfIo, SpecularGlossinessFromAnotherToolIsReadAndKept) {
     EXPECT_EQ(back.base_color, m.base_color);
     EXPECT_EQ(back.specular_color, m.specular_color);
     EXPECT_EQ(back.shininess, m.shininess);
-    EXPECT_NE(test::read_text(folder / "converted.gltf").find(R"("glossinessFactor":0.5)"), std::string::npos);
+    EXPECT_NE(test::read_text(folder / "converted.gltf").find(R"("glossinessFactor":0.5)"),
+              std::string::npos);
     // A mirror's glossiness 1 is beyond the largest exponent boxlod draws, and written back as it was.
     Model mirror = load_model(file("mirror.gltf", R"({"glossinessFactor": 1})"));
     EXPECT_FLOAT_EQ(mirror.materials[0].shininess, float(shininess_range.max));
     save_model(mirror, (folder / "mirror_converted.gltf").string());
-    EXPECT_NE(test::read_text(folder / "mirror_converted.gltf").find(R"("glossinessFactor":1.0)"), std::string::npos);
+    EXPECT_NE(test::read_text(folder / "mirror_converted.gltf").find(R"("glossinessFactor":1.0)"),
+              std::string::npos);
     // Every factor has the extension's range.
-    EXPECT_NE(expect_input_error(file("gloss.gltf", R"({"glossinessFactor": 2})")).find("glossinessFactor"), std::string::npos);
-    EXPECT_NE(expect_input_error(file("spec.gltf", R"({"specularFactor": [0, -1, 0]})")).find("specularFactor"), std::string::npos);
+    EXPECT_NE(expect_input_error(file("gloss.gltf", R"({"glossinessFactor": 2})")).find("glossinessFactor"),
+              std::string::npos);
+    EXPECT_NE(
+        expect_input_error(file("spec.gltf", R"({"specularFactor": [0, -1, 0]})")).find("specularFactor"),
+        std::string::npos);
     expect_input_error(file("diffuse.gltf", R"({"diffuseFactor": [1, 1]})"));
     expect_input_error(file("texture.gltf", R"({"diffuseTexture": {"index": 4}})"));
     expect_input_error(file("form.gltf", R"({"specularGlossinessTexture": {"texCoord": 0}})"));
@@ -335,7 +356,8 @@ TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
     auto file = [&](const std::string& name, const std::string& fields) {
         return extension_file(folder / name, "KHR_materials_specular", fields);
     };
-    Model model = load_model(file("specular.gltf", R"({"specularFactor": 0.25, "specularColorFactor": [2, 0.5, 1]})"));
+    Model model =
+        load_model(file("specular.gltf", R"({"specularFactor": 0.25, "specularColorFactor": [2, 0.5, 1]})"));
     ASSERT_TRUE(model.materials[0].specular_extension);
     const SpecularExtension read = *model.materials[0].specular_extension;
     EXPECT_EQ(read.factor, 0.25f);
@@ -347,8 +369,10 @@ TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
     model.textures.push_back({"tint.png", Image8(2, 2, 4, 100), {}});
     model.materials[0].specular_extension->texture = 0;
     model.materials[0].specular_extension->color_texture = 1;
-    for (Node& node : model.nodes)  // texture coordinates, without which a primitive draws no texture (and is written so)
-        for (Primitive& primitive : node.primitives) primitive.uvs.assign(primitive.positions.size(), Eigen::Vector2f(0.5f, 0.5f));
+    for (Node& node :
+         model.nodes)  // texture coordinates, without which a primitive draws no texture (and is written so)
+        for (Primitive& primitive : node.primitives)
+            primitive.uvs.assign(primitive.positions.size(), Eigen::Vector2f(0.5f, 0.5f));
     save_model(model, (folder / "converted.glb").string());
     Model back = load_model((folder / "converted.glb").string());
     ASSERT_TRUE(back.materials[0].specular_extension);
@@ -361,8 +385,10 @@ TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
     EXPECT_EQ(back.textures[std::size_t(again.color_texture)].image.pixels, model.textures[1].image.pixels);
     EXPECT_GT(model_cost(back).texture_bytes, 0u);  // its textures are paid for
     // Every factor has a range; textures must exist.
-    EXPECT_NE(expect_input_error(file("factor.gltf", R"({"specularFactor": 1.5})")).find("specularFactor"), std::string::npos);
-    EXPECT_NE(expect_input_error(file("colour.gltf", R"({"specularColorFactor": [0, -1, 0]})")).find("specularColorFactor"),
+    EXPECT_NE(expect_input_error(file("factor.gltf", R"({"specularFactor": 1.5})")).find("specularFactor"),
+              std::string::npos);
+    EXPECT_NE(expect_input_error(file("colour.gltf", R"({"specularColorFactor": [0, -1, 0]})"))
+                  .find("specularColorFactor"),
               std::string::npos);
     expect_input_error(file("huge.gltf", R"({"specularColorFactor": [1e30, 1, 1]})"));
     expect_input_error(file("texture.gltf", R"({"specularTexture": {"index": 4}})"));
@@ -370,9 +396,11 @@ TEST(GltfIo, KhrMaterialsSpecularIsKeptAndWrittenBack) {
 }
 
 TEST(GltfIo, GlossinessAndShininessConvertBothWays) {
-    for (float g : {0.0f, 0.25f, 0.5f, 0.75f, 0.85f}) EXPECT_NEAR(glossiness_of_shininess(shininess_of_glossiness(g)), g, 1e-5f);
+    for (float g : {0.0f, 0.25f, 0.5f, 0.75f, 0.85f})
+        EXPECT_NEAR(glossiness_of_shininess(shininess_of_glossiness(g)), g, 1e-5f);
     EXPECT_FLOAT_EQ(shininess_of_glossiness(0), 0);
-    EXPECT_FLOAT_EQ(shininess_of_glossiness(1), float(shininess_range.max));  // a mirror: the largest exponent allowed
+    EXPECT_FLOAT_EQ(shininess_of_glossiness(1),
+                    float(shininess_range.max));  // a mirror: the largest exponent allowed
 }
 
 TEST(GltfIo, LodMarkAndParametersSurviveTheRoundTrip) {
@@ -412,8 +440,9 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         tinygltf::Model gltf;
         std::string error, warning;
         tinygltf::TinyGLTF reader;
-        bool read = std::string(name).ends_with(".glb") ? reader.LoadBinaryFromFile(&gltf, &error, &warning, path)
-                                                        : reader.LoadASCIIFromFile(&gltf, &error, &warning, path);
+        bool read = std::string(name).ends_with(".glb")
+                        ? reader.LoadBinaryFromFile(&gltf, &error, &warning, path)
+                        : reader.LoadASCIIFromFile(&gltf, &error, &warning, path);
         ASSERT_TRUE(read) << error;
         ASSERT_EQ(gltf.scenes.at(0).nodes, std::vector<int>{0});
         const int coarse_root = int(finest.nodes.size());
@@ -424,7 +453,8 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(0).GetNumberAsDouble(), 0.25);
         EXPECT_EQ(gltf.nodes[0].extras.Get("MSFT_screencoverage").Get(1).GetNumberAsDouble(), 0);
         EXPECT_EQ(gltf.nodes[0].extras.Get("boxlod").Get("switch_distances").Get(0).GetNumberAsDouble(), 40);
-        EXPECT_EQ(gltf.extensionsUsed, (std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness", "MSFT_lod"}));
+        EXPECT_EQ(gltf.extensionsUsed,
+                  (std::vector<std::string>{"KHR_materials_pbrSpecularGlossiness", "MSFT_lod"}));
         EXPECT_EQ(gltf.images.size(), finest.textures.size());
         // Equal materials and geometry are shared too: the coarse mass draws level 0's mass, brick and all;
         // only the renamed glass is new.
@@ -435,7 +465,8 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         // a replaced level's meshes) on the same accessors.
         ASSERT_EQ(gltf.meshes.size(), 4u);
         const tinygltf::Mesh &mass = gltf.meshes[std::size_t(gltf.nodes[1].mesh)],
-                             &coarse_mass = gltf.meshes[std::size_t(gltf.nodes[std::size_t(coarse_root) + 1].mesh)];
+                             &coarse_mass =
+                                 gltf.meshes[std::size_t(gltf.nodes[std::size_t(coarse_root) + 1].mesh)];
         EXPECT_NE(&mass, &coarse_mass);
         EXPECT_EQ(coarse_mass.primitives[0].attributes, mass.primitives[0].attributes);
         // Level 0 (not the coarsest, which Babylon.js loads first) keeps one index list in a buffer of its
@@ -443,12 +474,14 @@ TEST(GltfIo, LevelsInOneFileWithMsftLod) {
         ASSERT_EQ(gltf.buffers.size(), 2u);
         int deferred = 0;
         for (const tinygltf::Accessor& accessor : gltf.accessors)
-            deferred += accessor.bufferView >= 0 && gltf.bufferViews[std::size_t(accessor.bufferView)].buffer == 1;
+            deferred +=
+                accessor.bufferView >= 0 && gltf.bufferViews[std::size_t(accessor.bufferView)].buffer == 1;
         EXPECT_EQ(deferred, 1);
     }
     EXPECT_THROW(export_gltf_lods({&finest, &coarse}, {}, (folder / "bad.glb").string()), std::logic_error);
     save_model(finest, (folder / "one_level.glb").string());
-    EXPECT_NE(expect_input_error((folder / "one_level.glb").string(), 1).find("not an LoD chain"), std::string::npos);
+    EXPECT_NE(expect_input_error((folder / "one_level.glb").string(), 1).find("not an LoD chain"),
+              std::string::npos);
 }
 
 TEST(GltfIo, ExportIsByteIdenticalEveryTime) {
@@ -519,24 +552,30 @@ TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
     EXPECT_NE(expect_input_error((folder / "missing.gltf").string()).find("no such file"), std::string::npos);
     expect_input_error(write("malformed.gltf", "{ \"asset\": {\"version\": \"2.0\"}, \"nodes\": [ "));
     expect_input_error(write("empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}]})"));
-    std::string no_geometry = R"({"asset": {"version": "2.0"}, "nodes": [{"name": "a"}], "scenes": [{"nodes": [0]}]})";
+    std::string no_geometry =
+        R"({"asset": {"version": "2.0"}, "nodes": [{"name": "a"}], "scenes": [{"nodes": [0]}]})";
     EXPECT_NE(expect_input_error(write("no_geometry.gltf", no_geometry)).find("empty"), std::string::npos);
 
     std::string nodes = R"(, "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}])";
     auto nan_bytes = triangle_bytes(std::nanf(""));
-    EXPECT_NE(expect_input_error(write("nan.gltf", gltf_with_buffer(nan_bytes, triangle_mesh + nodes))).find("NaN"),
-              std::string::npos);
+    EXPECT_NE(
+        expect_input_error(write("nan.gltf", gltf_with_buffer(nan_bytes, triangle_mesh + nodes))).find("NaN"),
+        std::string::npos);
     auto inf_bytes = triangle_bytes(std::numeric_limits<float>::infinity());
     expect_input_error(write("inf.gltf", gltf_with_buffer(inf_bytes, triangle_mesh + nodes)));
     auto bad_index = triangle_bytes(0, 7);
-    EXPECT_NE(expect_input_error(write("index.gltf", gltf_with_buffer(bad_index, triangle_mesh + nodes))).find("out of range"),
+    EXPECT_NE(expect_input_error(write("index.gltf", gltf_with_buffer(bad_index, triangle_mesh + nodes)))
+                  .find("out of range"),
               std::string::npos);
     auto short_buffer = triangle_bytes();
     short_buffer.resize(30);
     expect_input_error(write("short.gltf", gltf_with_buffer(short_buffer, triangle_mesh + nodes)));
-    std::string cycle = R"(, "nodes": [{"mesh": 0, "children": [1]}, {"children": [0]}], "scenes": [{"nodes": [0]}])";
-    EXPECT_NE(expect_input_error(write("cycle.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + cycle))).find("twice"),
-              std::string::npos);
+    std::string cycle =
+        R"(, "nodes": [{"mesh": 0, "children": [1]}, {"children": [0]}], "scenes": [{"nodes": [0]}])";
+    EXPECT_NE(
+        expect_input_error(write("cycle.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + cycle)))
+            .find("twice"),
+        std::string::npos);
     std::string bad_child = R"(, "nodes": [{"mesh": 0, "children": [9]}], "scenes": [{"nodes": [0]}])";
     expect_input_error(write("child.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + bad_child)));
 
@@ -550,11 +589,14 @@ TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}])";
-    EXPECT_NE(expect_input_error(write("offset.gltf", gltf_with_buffer(triangle_bytes(), far_offset + nodes))).find("runs past"),
+    EXPECT_NE(expect_input_error(write("offset.gltf", gltf_with_buffer(triangle_bytes(), far_offset + nodes)))
+                  .find("runs past"),
               std::string::npos);
     std::string huge_count = triangle_mesh;
-    huge_count.replace(huge_count.find(R"("count": 3, "type": "VEC3")"), 10, R"("count": 4611686018427387904)");
-    EXPECT_NE(expect_input_error(write("count.gltf", gltf_with_buffer(triangle_bytes(), huge_count + nodes))).find("larger than any buffer"),
+    huge_count.replace(huge_count.find(R"("count": 3, "type": "VEC3")"), 10,
+                       R"("count": 4611686018427387904)");
+    EXPECT_NE(expect_input_error(write("count.gltf", gltf_with_buffer(triangle_bytes(), huge_count + nodes)))
+                  .find("larger than any buffer"),
               std::string::npos);
     std::string broken_image = R"(, "images": [{"uri": "broken.png"}], "textures": [{"source": 0}],
   "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])";
@@ -565,7 +607,8 @@ TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
         load_model((folder / "image.gltf").string());
         ADD_FAILURE() << "no error for a broken texture";
     } catch (const InputError& error) {
-        EXPECT_EQ(std::string(error.what()), (folder / "broken.png").string() + ": cannot decode image: unknown image type");
+        EXPECT_EQ(std::string(error.what()),
+                  (folder / "broken.png").string() + ": cannot decode image: unknown image type");
     }
     EXPECT_NE(expect_input_error(write("model.xyz", "?")).find("unknown model format"), std::string::npos);
 }

@@ -26,7 +26,8 @@ tinygltf::Model with_extras_values(tinygltf::Model document) {
     json += "]}";
     tinygltf::Model read;
     std::string error, warning;
-    EXPECT_TRUE(tinygltf::TinyGLTF().LoadASCIIFromString(&read, &error, &warning, json.c_str(), unsigned(json.size()), ""))
+    EXPECT_TRUE(tinygltf::TinyGLTF().LoadASCIIFromString(&read, &error, &warning, json.c_str(),
+                                                         unsigned(json.size()), ""))
         << error;
     for (std::size_t k = 0; k < document.nodes.size(); ++k) {
         if (document.nodes[k].extras_json_string.empty()) continue;
@@ -87,7 +88,8 @@ void expect_as_tinygltf_writes(const tinygltf::Model& document) {
     auto [our_json, our_bin] = glb_chunks(glb_bytes(document));
     auto [their_json, their_bin] = glb_chunks(tinygltf_text(document, true));
     EXPECT_EQ(our_json.size() % 4, 0u);
-    for (std::string* json : {&our_json, &their_json}) json->erase(json->find_last_not_of(' ') + 1);  // the chunk's padding
+    for (std::string* json : {&our_json, &their_json})
+        json->erase(json->find_last_not_of(' ') + 1);  // the chunk's padding
     EXPECT_EQ(nlohmann::json::parse(our_json), nlohmann::json::parse(their_json));
     EXPECT_TRUE(numbers_masked(our_json) == numbers_masked(their_json));
     EXPECT_EQ(our_bin, their_bin);
@@ -126,7 +128,8 @@ TEST(GltfJson, WritesEscapesNumbersAndQuirksAsTinygltfDoes) {
     node.extras = tinygltf::Value(tinygltf::Value::Object{
         {"empty", tinygltf::Value(tinygltf::Value::Array{})},
         {"nulls", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value()})},
-        {"mixed", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(3), tinygltf::Value(), tinygltf::Value(false)})},
+        {"mixed", tinygltf::Value(
+                      tinygltf::Value::Array{tinygltf::Value(3), tinygltf::Value(), tinygltf::Value(false)})},
         {"z", tinygltf::Value(0.3)}});
     node.extensions["EXT_empty"] = tinygltf::Value(tinygltf::Value::Object{});
     node.extensions["EXT_null"] = tinygltf::Value();

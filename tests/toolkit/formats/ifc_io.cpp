@@ -4,8 +4,8 @@
 #include "toolkit/formats/assimp_io.h"
 #include "toolkit/formats/model_io.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <map>
 
@@ -43,12 +43,14 @@ TEST(IfcIo, TheSpatialStructureIsTheTreeWithColoursFromStyles) {
     const Material& red = model.materials[std::size_t(model.nodes[std::size_t(wall)].primitives[0].material)];
     EXPECT_TRUE(red.base_color.isApprox(Eigen::Vector4f(0.8f, 0.2f, 0.1f, 1)));
     EXPECT_EQ(red.alpha_mode, AlphaMode::opaque);
-    const Material& glass = model.materials[std::size_t(model.nodes[std::size_t(slab)].primitives[0].material)];
+    const Material& glass =
+        model.materials[std::size_t(model.nodes[std::size_t(slab)].primitives[0].material)];
     EXPECT_FLOAT_EQ(glass.base_color[3], 0.5f);
     EXPECT_EQ(glass.alpha_mode, AlphaMode::blend);
     // y up: the slab lies 3 m above the ground floor's 3 m high wall.
     Bounds slab_bounds;
-    for (const Eigen::Vector3f& p : model.nodes[std::size_t(slab)].primitives[0].positions) slab_bounds.add(p);
+    for (const Eigen::Vector3f& p : model.nodes[std::size_t(slab)].primitives[0].positions)
+        slab_bounds.add(p);
     EXPECT_NEAR(slab_bounds.min.y(), 3, 1e-5);
     EXPECT_NEAR(slab_bounds.max.y(), 3.25, 1e-5);
     EXPECT_NEAR(model_bounds(model).size().x(), 4, 1e-5);
@@ -62,7 +64,8 @@ TEST(IfcIo, AFarModelKeepsItsOriginAndItsPrecision) {
     const std::string site = "#30=IFCLOCALPLACEMENT($,#13);";
     ASSERT_NE(text.find(site), std::string::npos);
     text.replace(text.find(site), site.size(),
-                 "#30=IFCLOCALPLACEMENT($,#17);\n#16=IFCCARTESIANPOINT((150000.,400000.,0.));\n#17=IFCAXIS2PLACEMENT3D(#16,#11,#12);");
+                 "#30=IFCLOCALPLACEMENT($,#17);\n#16=IFCCARTESIANPOINT((150000.,400000.,0.));\n#17="
+                 "IFCAXIS2PLACEMENT3D(#16,#11,#12);");
     const fs::path far_path = test::scratch_folder("ifc_far") / "far.ifc";
     test::write_text(far_path, text);
     const Model near = load_model(near_path), far = load_model(far_path.string());
@@ -70,15 +73,22 @@ TEST(IfcIo, AFarModelKeepsItsOriginAndItsPrecision) {
     EXPECT_GT(far.origin.norm(), 4e5);
     const Bounds a = model_bounds(near), b = model_bounds(far);
     EXPECT_LT(((b.min - a.min) - (b.max - a.max)).norm(), 1e-4f);  // the same shape, moved as a whole
-    EXPECT_LT((b.min.cast<double>() + far.origin - a.min.cast<double>() - Eigen::Vector3d(150000, 0, -400000)).norm(), 1e-3);
+    EXPECT_LT((b.min.cast<double>() + far.origin - a.min.cast<double>() - Eigen::Vector3d(150000, 0, -400000))
+                  .norm(),
+              1e-3);
 }
 
 TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
     const std::string step = "DATA;\n#1=IFCWALL('a''#9',#2);\n#2=IFCX(#3);/* #8 */\nENDSEC;";
-    EXPECT_NE(test::input_error_of([&] { check_ifc_references(step, "f.ifc"); }).find("f.ifc: #2: names #3, which the file does not define"),
+    EXPECT_NE(test::input_error_of([&] {
+                  check_ifc_references(step, "f.ifc");
+              }).find("f.ifc: #2: names #3, which the file does not define"),
               std::string::npos);
     EXPECT_EQ(test::input_error_of([&] { check_ifc_references(step + "\n#3=IFCY($);", "f.ifc"); }), "");
-    EXPECT_NE(test::input_error_of([&] { check_ifc_references("#1=A();#1=B();", "f.ifc"); }).find("#1: defined twice"), std::string::npos);
+    EXPECT_NE(test::input_error_of([&] {
+                  check_ifc_references("#1=A();#1=B();", "f.ifc");
+              }).find("#1: defined twice"),
+              std::string::npos);
 }
 
 // Per part (an element with a GlobalId): the surface area and bounds of what it draws.
@@ -98,12 +108,15 @@ std::string global_id(const Node& node) {
 std::map<std::string, Part> parts(const Model& model) {
     std::map<std::string, Part> out;
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        int owner = int(n);  // geometry counts for the nearest element above it (assimp's IfcMappedItem children)
-        while (owner >= 0 && global_id(model.nodes[std::size_t(owner)]).empty()) owner = model.nodes[std::size_t(owner)].parent;
+        int owner =
+            int(n);  // geometry counts for the nearest element above it (assimp's IfcMappedItem children)
+        while (owner >= 0 && global_id(model.nodes[std::size_t(owner)]).empty())
+            owner = model.nodes[std::size_t(owner)].parent;
         if (owner < 0) continue;
         for (const Primitive& p : model.nodes[n].primitives)
             for (std::size_t i = 0; i < p.indices.size(); i += 3) {
-                const Eigen::Vector3f &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]], &c = p.positions[p.indices[i + 2]];
+                const Eigen::Vector3f &a = p.positions[p.indices[i]], &b = p.positions[p.indices[i + 1]],
+                                      &c = p.positions[p.indices[i + 2]];
                 Part& part = out[global_id(model.nodes[std::size_t(owner)])];
                 part.area += (b - a).cross(c - a).norm() / 2;
                 part.bounds.add(a);
@@ -135,7 +148,8 @@ TEST(IfcIo, WebIfcAndAssimpReadTheSameParts) {
             continue;
         }
         const Part& other = found->second;
-        EXPECT_LT((other.bounds.min - part.bounds.min - shift).norm(), 1e-3f) << id << " (model shift " << shift.transpose() << ")";
+        EXPECT_LT((other.bounds.min - part.bounds.min - shift).norm(), 1e-3f)
+            << id << " (model shift " << shift.transpose() << ")";
         EXPECT_LT((other.bounds.max - part.bounds.max - shift).norm(), 1e-3f) << id;
         same_area += std::abs(other.area - part.area) <= 0.01 * part.area;
         area += other.area;
@@ -158,7 +172,8 @@ TEST(IfcIo, Ifc4FilesReadWithElementsUnderTheirStoreys) {
         EXPECT_EQ(model.nodes[0].rule, "IfcProject") << name;
         int elements_under_storeys = 0;
         for (const Node& node : model.nodes)
-            if (node.has_geometry() && node.parent >= 0 && model.nodes[std::size_t(node.parent)].rule == "IfcBuildingStorey") {
+            if (node.has_geometry() && node.parent >= 0 &&
+                model.nodes[std::size_t(node.parent)].rule == "IfcBuildingStorey") {
                 ++elements_under_storeys;
                 EXPECT_EQ(node.source_id.size(), 22u) << name << ": " << node.name;  // an IFC GlobalId
             }

@@ -43,7 +43,8 @@ TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
     EXPECT_GE(root["geometricError"].get<double>(), 11.0);  // the city's diameter: 12 x 2 x 2 m of boxes
     EXPECT_LT(root["geometricError"].get<double>(), 13.0);
     shed.levels[1].geometric_error = 10;  // a coarsest level drawn up to twice its switch distance
-    EXPECT_EQ(nlohmann::json::parse(tileset_json({house, shed}, {}))["root"]["geometricError"].get<double>(), 20.0);
+    EXPECT_EQ(nlohmann::json::parse(tileset_json({house, shed}, {}))["root"]["geometricError"].get<double>(),
+              20.0);
     // house: L2 (error raised to L1's 0.5) > L1 > L0, each replacing its parent.
     const nlohmann::json* tile = &root["children"][0];
     std::vector<std::pair<std::string, double>> chain;
@@ -55,7 +56,8 @@ TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
         ASSERT_EQ((*tile)["children"].size(), 1u);
         tile = &(*tile)["children"][0];
     }
-    std::vector<std::pair<std::string, double>> expected{{"h_L2.glb", 0.5}, {"h_L1.glb", 0.5}, {"h_L0.glb", 0}};
+    std::vector<std::pair<std::string, double>> expected{
+        {"h_L2.glb", 0.5}, {"h_L1.glb", 0.5}, {"h_L0.glb", 0}};
     EXPECT_EQ(chain, expected);
     EXPECT_EQ(root["children"][0]["extras"]["name"], "house");
     house.levels[2].surface_deviation = 0.25;  // each tile states its measured deviation

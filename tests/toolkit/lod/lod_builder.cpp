@@ -4,10 +4,10 @@
 #include "golden.h"
 #include "lod_scene.h"
 #include "toolkit/drawing/drawable.h"
-#include "toolkit/lod/cut/error_greedy.h"
-#include "toolkit/lod/chain/chain.h"
-#include "toolkit/lod/lod_export.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/chain/chain.h"
+#include "toolkit/lod/cut/error_greedy.h"
+#include "toolkit/lod/lod_export.h"
 #include "toolkit/model/statistics.h"
 
 #include <gtest/gtest.h>
@@ -99,24 +99,30 @@ TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
     Model model = test::lod_test_building();
     LodParameters whole = small_parameters();
     whole.crop_faces = false;
-    auto cropped_session = start_lod(model, small_parameters(), 2), whole_session = start_lod(model, whole, 2);
+    auto cropped_session = start_lod(model, small_parameters(), 2),
+         whole_session = start_lod(model, whole, 2);
     Lod cropped = build_lod(*cropped_session, 2, 2), uncropped = build_lod(*whole_session, 2, 2);
     EXPECT_LT(std::stoi(statistic(cropped, "faces_lod")), std::stoi(statistic(uncropped, "faces_lod")));
     EXPECT_LT(cropped.face_texels, uncropped.face_texels);
     EXPECT_LT(page_texels(cropped.atlas), page_texels(uncropped.atlas));
     for (RenderMode mode : {RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
         cropped_session->input.parameters.render_mode = whole_session->input.parameters.render_mode = mode;
-        Image8 a = render_lod_preview(cropped, *cropped_session, 240, 180, 2), b = render_lod_preview(uncropped, *whole_session, 240, 180, 2);
+        Image8 a = render_lod_preview(cropped, *cropped_session, 240, 180, 2),
+               b = render_lod_preview(uncropped, *whole_session, 240, 180, 2);
         std::size_t same = 0, pixels = a.pixels.size() / 3;
         double error = 0;
         for (std::size_t i = 0; i < pixels; ++i) {
-            auto pixel_a = a.pixels.begin() + std::ptrdiff_t(i * 3), pixel_b = b.pixels.begin() + std::ptrdiff_t(i * 3);
+            auto pixel_a = a.pixels.begin() + std::ptrdiff_t(i * 3),
+                 pixel_b = b.pixels.begin() + std::ptrdiff_t(i * 3);
             same += std::equal(pixel_a, pixel_a + 3, pixel_b);
-            for (int c = 0; c < 3; ++c) error += std::abs(int(a.pixels[i * 3 + c]) - int(b.pixels[i * 3 + c]));
+            for (int c = 0; c < 3; ++c)
+                error += std::abs(int(a.pixels[i * 3 + c]) - int(b.pixels[i * 3 + c]));
         }
-        // Measured: albedo all pixels equal, normal and parallax 99.998 %, pom 99.6 % (its rays reach the gutters).
+        // Measured: albedo all pixels equal, normal and parallax 99.998 %, pom 99.6 % (its rays reach the
+        // gutters).
         EXPECT_GE(double(same) / double(pixels), 0.995) << render_mode_name(mode);
-        EXPECT_LT(error / double(3 * pixels), 0.2) << render_mode_name(mode);  // mean difference in levels of 255
+        EXPECT_LT(error / double(3 * pixels), 0.2)
+            << render_mode_name(mode);  // mean difference in levels of 255
     }
 }
 
@@ -131,14 +137,16 @@ TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
     flat.flat_faces = 64;  // every face of this small sizing, where at least half covered
     auto plain_session = start_lod(model, plain, 2), flat_session = start_lod(model, flat, 2);
     Lod with_texels = build_lod(*plain_session, 2, 2), with_swatches = build_lod(*flat_session, 2, 2);
-    const int flat_faces = std::stoi(statistic(with_swatches, "flat_faces")), swatches = std::stoi(statistic(with_swatches, "swatches"));
+    const int flat_faces = std::stoi(statistic(with_swatches, "flat_faces")),
+              swatches = std::stoi(statistic(with_swatches, "swatches"));
     EXPECT_EQ(statistic(with_texels, "flat_faces"), "0");
     EXPECT_GE(flat_faces, 5);
     EXPECT_GE(swatches, 1);
     EXPECT_LT(swatches, flat_faces);  // faces of one colour share their swatch
     EXPECT_EQ(statistic(with_swatches, "faces_lod"), statistic(with_texels, "faces_lod"));
     EXPECT_LT(page_texels(with_swatches.atlas), page_texels(with_texels.atlas));
-    EXPECT_LT(std::stoull(statistic(with_swatches, "gutter_texels")), std::stoull(statistic(with_texels, "gutter_texels")));
+    EXPECT_LT(std::stoull(statistic(with_swatches, "gutter_texels")),
+              std::stoull(statistic(with_texels, "gutter_texels")));
 
     // Every quad whose uvs are all one point samples a uniform, aligned, opaque
     // swatch, with the flat normal and height 1, and exactly its colour.
@@ -153,11 +161,13 @@ TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
             const Texture& height = with_swatches.model.textures[std::size_t(material.height_texture)];
             for (std::size_t q = 0; q + 4 <= primitive.uvs.size(); q += 4) {
                 const Eigen::Vector2f uv = primitive.uvs[q];
-                if (!std::all_of(primitive.uvs.begin() + std::ptrdiff_t(q), primitive.uvs.begin() + std::ptrdiff_t(q + 4),
+                if (!std::all_of(primitive.uvs.begin() + std::ptrdiff_t(q),
+                                 primitive.uvs.begin() + std::ptrdiff_t(q + 4),
                                  [&](const Eigen::Vector2f& corner) { return corner == uv; }))
                     continue;
                 ++flat_quads;
-                const float cx = uv.x() * float(color.image.width) - 2, cy = uv.y() * float(color.image.height) - 2;
+                const float cx = uv.x() * float(color.image.width) - 2,
+                            cy = uv.y() * float(color.image.height) - 2;
                 ASSERT_EQ(cx, std::floor(cx));
                 const int x0 = int(cx), y0 = int(cy);
                 EXPECT_EQ(x0 % 4, 0);
@@ -172,15 +182,18 @@ TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
                         EXPECT_EQ(height.image16.at(x, y)[0], 65535);
                     }
                 const MipTexture texture = make_texture(color.image, ColorSpace::srgb, Wrap::clamp);
-                const Eigen::Vector4f sampled = sample(texture, uv, mip_level(texture, Eigen::Vector2f::Zero(), Eigen::Vector2f::Zero()));
+                const Eigen::Vector4f sampled =
+                    sample(texture, uv, mip_level(texture, Eigen::Vector2f::Zero(), Eigen::Vector2f::Zero()));
                 for (int c = 0; c < 3; ++c) EXPECT_EQ(sampled[c], srgb_to_linear(swatch[c]));
             }
         }
     EXPECT_EQ(flat_quads, flat_faces);
 
     // The picture keeps each face's colour on average; misplaced uvs would draw other texels.
-    plain_session->input.parameters.render_mode = flat_session->input.parameters.render_mode = RenderMode::albedo;
-    Image8 a = render_lod_preview(with_texels, *plain_session, 240, 180, 2), b = render_lod_preview(with_swatches, *flat_session, 240, 180, 2);
+    plain_session->input.parameters.render_mode = flat_session->input.parameters.render_mode =
+        RenderMode::albedo;
+    Image8 a = render_lod_preview(with_texels, *plain_session, 240, 180, 2),
+           b = render_lod_preview(with_swatches, *flat_session, 240, 180, 2);
     double error = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) error += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
     EXPECT_GT(error, 0);
@@ -209,11 +222,12 @@ Model recessed_facades() {
         }
     model.textures.push_back(ramp);
     for (float x : {0.0f, 3.0f}) {
-        const float z = x == 0 ? 0.5f : 0.15f, l = x + 0.5f, r = x + 1.5f;  // the opening: [l, r] x [0.5, 1.5]
+        const float z = x == 0 ? 0.5f : 0.15f, l = x + 0.5f,
+                    r = x + 1.5f;  // the opening: [l, r] x [0.5, 1.5]
         int facade = add_node(model, 0, "Facade");
         model.nodes[facade].rule = "Facade";
-        test::add_quad(model.nodes[test::add_part(model, facade, "Back", 1)].primitives[0], {l, 0.5f, 0}, {r, 0.5f, 0},
-                       {r, 1.5f, 0}, {l, 1.5f, 0});
+        test::add_quad(model.nodes[test::add_part(model, facade, "Back", 1)].primitives[0], {l, 0.5f, 0},
+                       {r, 0.5f, 0}, {r, 1.5f, 0}, {l, 1.5f, 0});
         Primitive& f = model.nodes[test::add_part(model, facade, "Wall", 0)].primitives[0];
         test::add_quad(f, {x, 0, z}, {x + 2, 0, z}, {x + 2, 0.5f, z}, {x, 0.5f, z});
         test::add_quad(f, {x, 1.5f, z}, {x + 2, 1.5f, z}, {x + 2, 2, z}, {x, 2, z});
@@ -254,8 +268,10 @@ TEST(LodBuilder, ParallaxOnPagesShowsTheRecessesBehindTheFaces) {
     auto session = start_lod(model, p, 2);
     Lod lod = build_lod(*session, 2, 2);  // top-down: the facades are level 1 and closed from level 2
     ASSERT_EQ(statistic(lod, "nodes_with_box"), "2");
-    // The pages' depth is the deepest face's: the sides, across the 2 m facade; the niches are 0.5 and 0.15 m.
-    for (const Material& material : lod.model.materials) EXPECT_NEAR(material.height_depth, 2, 1e-5) << material.name;
+    // The pages' depth is the deepest face's: the sides, across the 2 m facade; the niches are 0.5 and 0.15
+    // m.
+    for (const Material& material : lod.model.materials)
+        EXPECT_NEAR(material.height_depth, 2, 1e-5) << material.name;
     auto render_model = [](const Model& m, RenderMode mode) {
         RenderSettings settings;
         settings.mode = mode;
@@ -269,19 +285,25 @@ TEST(LodBuilder, ParallaxOnPagesShowsTheRecessesBehindTheFaces) {
     const Image8 original = render_model(model, RenderMode::normal);
     Model page_uv = lod.model;  // the manual's offsets, in page uv
     for (Material& material : page_uv.materials) material.height_depth = 0;
-    const Image8 normal = render_model(lod.model, RenderMode::normal), parallax = render_model(lod.model, RenderMode::parallax),
-                 pom = render_model(lod.model, RenderMode::pom), page_uv_parallax = render_model(page_uv, RenderMode::parallax);
+    const Image8 normal = render_model(lod.model, RenderMode::normal),
+                 parallax = render_model(lod.model, RenderMode::parallax),
+                 pom = render_model(lod.model, RenderMode::pom),
+                 page_uv_parallax = render_model(page_uv, RenderMode::parallax);
     // Judged where the modes differ: the pixels whose texels come from behind the faces.
     std::vector<bool> moved(std::size_t(original.width) * std::size_t(original.height), false);
     for (std::size_t i = 0; i < normal.pixels.size(); ++i)
-        for (const Image8* image : {&parallax, &pom, &page_uv_parallax}) moved[i / 3] = moved[i / 3] || image->pixels[i] != normal.pixels[i];
+        for (const Image8* image : {&parallax, &pom, &page_uv_parallax})
+            moved[i / 3] = moved[i / 3] || image->pixels[i] != normal.pixels[i];
     ASSERT_GT(std::count(moved.begin(), moved.end(), true), 1000);
-    const double error_normal = mean_difference(normal, original, moved), error_parallax = mean_difference(parallax, original, moved),
-                 error_pom = mean_difference(pom, original, moved), error_page_uv = mean_difference(page_uv_parallax, original, moved);
-    std::cout << "mean difference: normal " << error_normal << ", parallax " << error_parallax << ", pom " << error_pom
-              << ", parallax in page uv " << error_page_uv << ", over " << std::count(moved.begin(), moved.end(), true) << " pixels\n";
-    EXPECT_LT(error_parallax, 0.8 * error_normal);  // measured 0.62
-    EXPECT_LT(error_pom, 0.8 * error_normal);  // 0.69
+    const double error_normal = mean_difference(normal, original, moved),
+                 error_parallax = mean_difference(parallax, original, moved),
+                 error_pom = mean_difference(pom, original, moved),
+                 error_page_uv = mean_difference(page_uv_parallax, original, moved);
+    std::cout << "mean difference: normal " << error_normal << ", parallax " << error_parallax << ", pom "
+              << error_pom << ", parallax in page uv " << error_page_uv << ", over "
+              << std::count(moved.begin(), moved.end(), true) << " pixels\n";
+    EXPECT_LT(error_parallax, 0.8 * error_normal);   // measured 0.62
+    EXPECT_LT(error_pom, 0.8 * error_normal);        // 0.69
     EXPECT_LT(error_parallax, 0.7 * error_page_uv);  // 0.51
 }
 
@@ -316,8 +338,9 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     auto folder = test::scratch_folder("lod_export");
     Image8 preview = render_lod_preview(lod, *session, 64, 48, 2);
     export_lod(lod, session->input.parameters, folder.string(), "house", preview, 2);
-    for (const char* file : {"house.gltf", "house.bin", "house_color_0.png", "house_normal_0.png", "house_height_0.png",
-                             "house.params.txt", "house.preview.png", "house.stats.txt"})
+    for (const char* file :
+         {"house.gltf", "house.bin", "house_color_0.png", "house_normal_0.png", "house_height_0.png",
+          "house.params.txt", "house.preview.png", "house.stats.txt"})
         EXPECT_TRUE(std::filesystem::exists(folder / file)) << file;
     Model back = load_model((folder / "house.gltf").string());
     EXPECT_TRUE(back.is_lod);
@@ -347,14 +370,17 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
 // Golden renders of an LoD in every render mode (regenerate: BOXLOD_UPDATE_GOLDEN=1 ctest -R LodGolden).
 TEST(LodGolden, EachRenderMode) {
     Model model = test::lod_test_building();
-    for (RenderMode mode : {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom}) {
+    for (RenderMode mode :
+         {RenderMode::untextured, RenderMode::normal, RenderMode::parallax, RenderMode::pom}) {
         LodParameters p = small_parameters();
         p.render_mode = mode;
         p.resolution = 128;
         auto session = start_lod(model, p, 2);
-        // Level 2 boxes the roof, whose heights vary (level 1 boxes only the flat panes, where parallax draws as normal mapping).
+        // Level 2 boxes the roof, whose heights vary (level 1 boxes only the flat panes, where parallax draws
+        // as normal mapping).
         Lod lod = build_lod(*session, 2, 2);
-        test::expect_golden(render_lod_preview(lod, *session, 120, 90, 2), std::string("lod_") + render_mode_name(mode));
+        test::expect_golden(render_lod_preview(lod, *session, 120, 90, 2),
+                            std::string("lod_") + render_mode_name(mode));
     }
 }
 
@@ -367,7 +393,8 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
     auto session = start_lod(model, p, 2);
     Image8 original = render_lod_preview(build_lod(*session, 0, 2), *session, 200, 150, 2);
     test::expect_golden(original, "lod_fzk_glass_original");
-    test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session, 200, 150, 2), "lod_fzk_glass_level2");
+    test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session, 200, 150, 2),
+                        "lod_fzk_glass_level2");
     int glass = 0;
     for (Material& material : model.materials)
         if (material.alpha_mode == AlphaMode::blend) {
@@ -376,7 +403,8 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
         }
     EXPECT_GT(glass, 0);
     auto opaque_session = start_lod(model, p, 2);
-    EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels, original.pixels);
+    EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels,
+              original.pixels);
 }
 
 // The defaults (docs/design.md: Defaults): the FZK-Haus's chain that pays its
@@ -390,8 +418,10 @@ TEST(LodGolden, FzkHausDefaultChain) {
     Chain chain(model, p, 2);  // level_distances auto
     for (int c : {2, 4}) {
         Lod lod = build_lod(chain.for_level(c), c, 2);
-        EXPECT_LT(combined_cost({&lod.cost}).bytes(), chain.first->derived.original_cost.bytes()) << "level " << c;
-        test::expect_golden(render_lod_preview(lod, *chain.first, 200, 150, 2), "lod_fzk_default_chain_level" + std::to_string(c));
+        EXPECT_LT(combined_cost({&lod.cost}).bytes(), chain.first->derived.original_cost.bytes())
+            << "level " << c;
+        test::expect_golden(render_lod_preview(lod, *chain.first, 200, 150, 2),
+                            "lod_fzk_default_chain_level" + std::to_string(c));
     }
 }
 
@@ -401,8 +431,9 @@ TEST(LodBuilder, FzkHausBuildsAtEveryLevelOfEveryModeAndBoxKind) {
     std::size_t original_faces = mesh_counts(model).faces;
     for (BoxKind kind : {BoxKind::scope, BoxKind::expanded, BoxKind::minimal}) {
         auto boxes = node_boxes(model, kind, 2);
-        for (LevelMode mode : {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings, LevelMode::box_volume,
-                               LevelMode::box_area, LevelMode::box_diagonal, LevelMode::box_max_extent}) {
+        for (LevelMode mode :
+             {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings, LevelMode::box_volume,
+              LevelMode::box_area, LevelMode::box_diagonal, LevelMode::box_max_extent}) {
             LodParameters p = small_parameters();
             p.box_kind = kind;
             p.level_mode = mode;

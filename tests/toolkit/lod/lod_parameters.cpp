@@ -52,9 +52,11 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
 TEST(LodParameters, ParsingChecksTheDeclaredRange) {
     LodParameters p;
     EXPECT_EQ(find_lod_parameter("wanted_levels")->parse("65", p), "expected a number in [1, 64], got '65'");
-    EXPECT_EQ(find_lod_parameter("wanted_levels")->parse("2.5", p), "expected a number in [1, 64], got '2.5'");
+    EXPECT_EQ(find_lod_parameter("wanted_levels")->parse("2.5", p),
+              "expected a number in [1, 64], got '2.5'");
     EXPECT_EQ(find_lod_parameter("fovy")->parse("nan", p), "expected a number in [0.1, 179], got 'nan'");
-    EXPECT_EQ(find_lod_parameter("max_texture_size")->parse("1000", p), "expected a power of two in [1, 16384], got '1000'");
+    EXPECT_EQ(find_lod_parameter("max_texture_size")->parse("1000", p),
+              "expected a power of two in [1, 16384], got '1000'");
     EXPECT_EQ(find_lod_parameter("crop_faces")->parse("yes", p), "expected true or false, got 'yes'");
     EXPECT_EQ(find_lod_parameter("box_kind")->parse("round", p).rfind("unknown value 'round' (", 0), 0u);
     EXPECT_EQ(p.wanted_levels, LodParameters{}.wanted_levels);  // nothing set on failure
@@ -63,9 +65,12 @@ TEST(LodParameters, ParsingChecksTheDeclaredRange) {
 }
 
 TEST(LodParameters, HelpStatesTheDefaultFromTheStruct) {
-    EXPECT_EQ(find_lod_parameter("resolution")->help_text(), "texture sizing: screen height in pixels (default 1080)");
-    EXPECT_EQ(find_lod_parameter("level_mode")->help_text().find("(default top-down)") != std::string::npos, true);
-    EXPECT_EQ(find_lod_parameter("keep_small_subtrees")->help_text().find("default"), std::string::npos);  // a flag
+    EXPECT_EQ(find_lod_parameter("resolution")->help_text(),
+              "texture sizing: screen height in pixels (default 1080)");
+    EXPECT_EQ(find_lod_parameter("level_mode")->help_text().find("(default top-down)") != std::string::npos,
+              true);
+    EXPECT_EQ(find_lod_parameter("keep_small_subtrees")->help_text().find("default"),
+              std::string::npos);  // a flag
 }
 
 TEST(LodParameters, ValidationChecksEveryDeclaredRange) {

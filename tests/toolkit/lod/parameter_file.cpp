@@ -49,7 +49,8 @@ TEST(Parameters, SaveThenLoadGivesTheSameValuesExactly) {
 }
 
 TEST(Parameters, DefaultsAndCommentsParse) {
-    LodParameters p = parse_parameters("# only a comment\n\n  wanted_levels = 3   # trailing comment\n", "p.txt");
+    LodParameters p =
+        parse_parameters("# only a comment\n\n  wanted_levels = 3   # trailing comment\n", "p.txt");
     EXPECT_EQ(p.wanted_levels, 3);
     EXPECT_EQ(p.level_mode, LevelMode::top_down);
     EXPECT_FALSE(p.camera);
@@ -67,16 +68,24 @@ TEST(Parameters, ErrorsNameFileLineAndKey) {
     EXPECT_EQ(message("fovy = 45\nsmoothness = 3\n"), "bad.txt: line 2: smoothness: unknown key");
     EXPECT_EQ(message("fovy = wide\n"), "bad.txt: line 1: fovy: expected a number in [0.1, 179], got 'wide'");
     EXPECT_EQ(message("fovy = 720\n"), "bad.txt: line 1: fovy: expected a number in [0.1, 179], got '720'");
-    EXPECT_EQ(message("current_level = 99999\n"), "bad.txt: line 1: current_level: expected a number in [0, 10000], got '99999'");
+    EXPECT_EQ(message("current_level = 99999\n"),
+              "bad.txt: line 1: current_level: expected a number in [0, 10000], got '99999'");
     EXPECT_EQ(message("fovy = 45\nfovy = 50\n"), "bad.txt: line 2: fovy: given twice (first on line 1)");
-    EXPECT_EQ(message("camera_position = 1 2 3\ncamera_target = 1 2 3\n"), "bad.txt: the camera's position equals its target");
-    EXPECT_EQ(message("camera_position = 0 0 5\ncamera_up = 0 0 0\n"), "bad.txt: the camera's up direction is zero");
+    EXPECT_EQ(message("camera_position = 1 2 3\ncamera_target = 1 2 3\n"),
+              "bad.txt: the camera's position equals its target");
+    EXPECT_EQ(message("camera_position = 0 0 5\ncamera_up = 0 0 0\n"),
+              "bad.txt: the camera's up direction is zero");
     EXPECT_EQ(message("camera_position = 0 5 0\n"), "bad.txt: the camera's up direction is along its view");
-    EXPECT_EQ(message("light_ambient = 1e39\n"), "bad.txt: line 1: light_ambient: expected a number in [0, 100], got '1e39'");
-    EXPECT_EQ(message("level_mode = sideways\n").rfind("bad.txt: line 1: level_mode: unknown value 'sideways' (top-down, ", 0), 0u);
+    EXPECT_EQ(message("light_ambient = 1e39\n"),
+              "bad.txt: line 1: light_ambient: expected a number in [0, 100], got '1e39'");
+    EXPECT_EQ(message("level_mode = sideways\n")
+                  .rfind("bad.txt: line 1: level_mode: unknown value 'sideways' (top-down, ", 0),
+              0u);
     EXPECT_EQ(message("just words\n"), "bad.txt: line 1: expected 'key = value'");
-    EXPECT_EQ(message("camera_position = 1 2\n"), "bad.txt: line 1: camera_position: expected three numbers 'x y z', got '1 2'");
+    EXPECT_EQ(message("camera_position = 1 2\n"),
+              "bad.txt: line 1: camera_position: expected three numbers 'x y z', got '1 2'");
     EXPECT_NE(message("max_texture_size = 1000\n").find("a power of two"), std::string::npos);
-    EXPECT_EQ(message("wanted_levels = 1000000000\n"), "bad.txt: line 1: wanted_levels: expected a number in [1, 64], got '1000000000'");
+    EXPECT_EQ(message("wanted_levels = 1000000000\n"),
+              "bad.txt: line 1: wanted_levels: expected a number in [1, 64], got '1000000000'");
     EXPECT_THROW(load_parameters("/nonexistent/p.txt"), InputError);
 }

@@ -57,7 +57,8 @@ TEST(SurfaceDeviation, CountsOnlyWhatBothDraw) {
     p.indices.resize(6);
     p.polygon_count = 1;
     const OrientedBox frame = wall_frame();
-    EXPECT_EQ(surface_deviation(surface_views(original, frame, 64), surface_views(wall_only, frame, 64)), 0.0);
+    EXPECT_EQ(surface_deviation(surface_views(original, frame, 64), surface_views(wall_only, frame, 64)),
+              0.0);
 }
 
 TEST(SurfaceDeviation, MeasuresAlongTheFramesAxes) {
@@ -69,5 +70,6 @@ TEST(SurfaceDeviation, MeasuresAlongTheFramesAxes) {
     OrientedBox frame = wall_frame();
     frame.center = turn * frame.center;
     frame.axes = turn * frame.axes;
-    EXPECT_NEAR(surface_deviation(surface_views(original, frame, 64), surface_views(level, frame, 64)), 1.0, 1e-4);
+    EXPECT_NEAR(surface_deviation(surface_views(original, frame, 64), surface_views(level, frame, 64)), 1.0,
+                1e-4);
 }

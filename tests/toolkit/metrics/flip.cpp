@@ -16,9 +16,12 @@ namespace {
 // independently published CIELAB values (D65) of the sRGB primaries:
 // green (87.737, -86.185, 83.181), blue (32.303, 79.197, -107.864).
 double expected_flat_color_error(double hyab_distance) {
-    auto hunt = [](double l, double a, double b) { return std::array<double, 3>{l, 0.01 * l * a, 0.01 * l * b}; };
+    auto hunt = [](double l, double a, double b) {
+        return std::array<double, 3>{l, 0.01 * l * a, 0.01 * l * b};
+    };
     auto green = hunt(87.737, -86.185, 83.181), blue = hunt(32.303, 79.197, -107.864);
-    double cmax = std::pow(std::abs(green[0] - blue[0]) + std::hypot(green[1] - blue[1], green[2] - blue[2]), 0.7);
+    double cmax =
+        std::pow(std::abs(green[0] - blue[0]) + std::hypot(green[1] - blue[1], green[2] - blue[2]), 0.7);
     double e = std::pow(hyab_distance, 0.7), pccmax = 0.4 * cmax;
     return e < pccmax ? 0.95 / pccmax * e : 0.95 + (e - pccmax) / (cmax - pccmax) * 0.05;
 }
@@ -45,7 +48,7 @@ TEST(Flip, BlackAgainstWhiteIsTheLightnessDistanceOfOneHundred) {
     FlipResult r = flip(black, white, 67, 1);
     EXPECT_NEAR(r.mean, expected, 2e-4);
     EXPECT_NEAR(min_of(r.error), max_of(r.error), 1e-9);  // flat
-    EXPECT_EQ(flip(white, black, 67, 1).mean, r.mean);     // symmetric
+    EXPECT_EQ(flip(white, black, 67, 1).mean, r.mean);    // symmetric
 }
 
 TEST(Flip, GreenAgainstBlueIsTheMaximumError) {
@@ -175,7 +178,8 @@ TEST(Flip, EqualPartsChangeNothingInTheComparedParts) {
 TEST(Flip, BadInputIsRejected) {
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(11, 10)), std::invalid_argument);
     EXPECT_THROW(flip(pattern_image(10, 10), pattern_image(10, 10), 0), std::invalid_argument);
-    EXPECT_THROW(flip(prepare_flip_reference(pattern_image(10, 10)), pattern_image(10, 11)), std::invalid_argument);
+    EXPECT_THROW(flip(prepare_flip_reference(pattern_image(10, 10)), pattern_image(10, 11)),
+                 std::invalid_argument);
 }
 
 // A building of known pixels: 4 covered by the reference, 2 by the test (1 of
@@ -188,7 +192,8 @@ TEST(Flip, CoveredMeanIsOverThePixelsEitherImageCovers) {
     EXPECT_DOUBLE_EQ(covered_mean(error, reference, test), (0.1 + 0.2 + 0.3 + 0.4 + 0.5) / 5);
     const Coverage none{4, 2, std::vector<std::uint8_t>(8, 0)};
     EXPECT_EQ(covered_mean(error, none, none), 0);  // nothing drawn: nothing differs
-    EXPECT_THROW(covered_mean(error, Coverage{2, 2, std::vector<std::uint8_t>(4, 1)}, test), std::invalid_argument);
+    EXPECT_THROW(covered_mean(error, Coverage{2, 2, std::vector<std::uint8_t>(4, 1)}, test),
+                 std::invalid_argument);
     // A building a quarter of the image: the whole-image mean is a quarter of the covered one.
     const Image8 white(40, 40, 3, 255);
     Image8 a = white, b = white;

@@ -16,7 +16,8 @@ Image8 offset(const Image8& image, int delta, int only_channel = -1) {
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x)
             for (int c = 0; c < 3; ++c)
-                if (only_channel < 0 || c == only_channel) out.at(x, y)[c] = std::uint8_t(out.at(x, y)[c] + delta);
+                if (only_channel < 0 || c == only_channel)
+                    out.at(x, y)[c] = std::uint8_t(out.at(x, y)[c] + delta);
     return out;
 }
 Image8 negative(const Image8& image) {
@@ -59,14 +60,17 @@ TEST(ImageMetrics, RgbErrorMapIsThePerPixelRmsOverRgb) {
 TEST(ImageMetrics, LumaUsesBt601WeightsOnEncodedValues) {
     Plane luma = luma_plane(flat_image(2, 2, 255, 0, 0));
     EXPECT_DOUBLE_EQ(*luma.at(1, 1), 0.299);
-    EXPECT_NEAR(*luma_plane(flat_image(2, 2, 51, 102, 204)).at(0, 0), (0.299 * 51 + 0.587 * 102 + 0.114 * 204) / 255, 1e-15);
+    EXPECT_NEAR(*luma_plane(flat_image(2, 2, 51, 102, 204)).at(0, 0),
+                (0.299 * 51 + 0.587 * 102 + 0.114 * 204) / 255, 1e-15);
 }
 
 TEST(ImageMetrics, SsimOfFlatImagesIsTheLuminanceTerm) {
-    // No variance: SSIM = (2 mx my + C1) / (mx^2 + my^2 + C1) with C1 = (0.01 * 1)^2 (Wang et al. 2004, eq. 13).
+    // No variance: SSIM = (2 mx my + C1) / (mx^2 + my^2 + C1) with C1 = (0.01 * 1)^2 (Wang et al. 2004, eq.
+    // 13).
     double mx = 100 / 255.0, my = 150 / 255.0, c1 = 1e-4;
     double expected = (2 * mx * my + c1) / (mx * mx + my * my + c1);
-    EXPECT_NEAR(ssim(flat_image(20, 16, 100, 100, 100), flat_image(20, 16, 150, 150, 150), 1), expected, 1e-12);
+    EXPECT_NEAR(ssim(flat_image(20, 16, 100, 100, 100), flat_image(20, 16, 150, 150, 150), 1), expected,
+                1e-12);
 }
 
 TEST(ImageMetrics, SsimOfANegativeIsLow) {
@@ -97,6 +101,7 @@ TEST(ImageMetrics, SsimIsTheSameForAnyThreadCount) {
 TEST(ImageMetrics, BadInputIsRejected) {
     EXPECT_THROW(rmse(pattern_image(10, 10), pattern_image(10, 11)), std::invalid_argument);
     EXPECT_THROW(ssim(pattern_image(20, 20), pattern_image(21, 20), 1), std::invalid_argument);
-    EXPECT_THROW(ssim(pattern_image(10, 30), pattern_image(10, 30), 1), std::invalid_argument);  // smaller than the window
+    EXPECT_THROW(ssim(pattern_image(10, 30), pattern_image(10, 30), 1),
+                 std::invalid_argument);  // smaller than the window
     EXPECT_NO_THROW(ssim(pattern_image(11, 11), pattern_image(11, 11), 1));
 }

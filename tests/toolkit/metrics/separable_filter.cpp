@@ -11,7 +11,8 @@ namespace {
 Plane ramp_plane(int width, int height) {
     Plane p(width, height, 1);
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) *p.at(x, y) = std::sin(0.37 * x) + 0.01 * y * y - 0.5 * ((x * 7 + y * 3) % 5);
+        for (int x = 0; x < width; ++x)
+            *p.at(x, y) = std::sin(0.37 * x) + 0.01 * y * y - 0.5 * ((x * 7 + y * 3) % 5);
     return p;
 }
 }  // namespace
@@ -31,9 +32,11 @@ TEST(SeparableFilter, ImpulseResponseIsTheOuterProductOfTheKernels) {
     Plane out = filter_separable(impulse, kernel, 1);
     for (int y = 0; y < 17; ++y)
         for (int x = 0; x < 21; ++x) {
-            // Convolution as written: out(x) = sum_i h[i] in(x + i - r), so the impulse at 10 shows h mirrored.
+            // Convolution as written: out(x) = sum_i h[i] in(x + i - r), so the impulse at 10 shows h
+            // mirrored.
             int i = 10 - x + 1, j = 8 - y + 2;
-            double expected = (i >= 0 && i < 3 && j >= 0 && j < 5) ? kernel.horizontal[i] * kernel.vertical[j] : 0;
+            double expected =
+                (i >= 0 && i < 3 && j >= 0 && j < 5) ? kernel.horizontal[i] * kernel.vertical[j] : 0;
             EXPECT_DOUBLE_EQ(*out.at(x, y), expected) << x << "," << y;
         }
 }
@@ -59,7 +62,8 @@ TEST(SeparableFilter, SameBitsForAnyThreadCount) {
     Plane in = ramp_plane(97, 61);
     SeparableKernel kernel{sampled_gaussian(2.0, 7), sampled_gaussian(0.8, 3)};
     Plane one = filter_separable(in, kernel, 1);
-    for (int threads : {2, 3, 8}) EXPECT_EQ(filter_separable(in, kernel, threads).pixels, one.pixels) << threads;
+    for (int threads : {2, 3, 8})
+        EXPECT_EQ(filter_separable(in, kernel, threads).pixels, one.pixels) << threads;
 }
 
 // FLIP filters only the columns where two images differ: any part of a row,
@@ -71,11 +75,13 @@ TEST(SeparableFilter, PartOfARowHasTheBitsOfTheWholeRow) {
     Plane whole = filter_separable(in, kernel, 1);
     std::vector<double> scratch, row(53, -1.0);
     for (int y : {0, 7, 18})
-        for (auto [begin, end] : {std::pair{0, 53}, std::pair{0, 5}, std::pair{50, 53}, std::pair{10, 40}, std::pair{3, 4}}) {
+        for (auto [begin, end] :
+             {std::pair{0, 53}, std::pair{0, 5}, std::pair{50, 53}, std::pair{10, 40}, std::pair{3, 4}}) {
             std::fill(row.begin(), row.end(), -1.0);
             filter_separable_row(in, kernel, y, begin, end, scratch, row.data());
             for (int x = 0; x < 53; ++x)
-                EXPECT_EQ(row[std::size_t(x)], x >= begin && x < end ? *whole.at(x, y) : -1.0) << y << ": " << x;
+                EXPECT_EQ(row[std::size_t(x)], x >= begin && x < end ? *whole.at(x, y) : -1.0)
+                    << y << ": " << x;
         }
 }
 

@@ -41,7 +41,9 @@ Model textured_quad(std::uint8_t alpha) {
     model.materials = {material};
     Texture color{"c.png", Image8(8, 8, 4, 255), {}};
     color.image.pixels[3] = alpha;
-    model.textures = {color, {"n.png", Image8(4, 4, 3, 128), {}}, {"h.png", {}, Image16(4, 4, 1, 0)},
+    model.textures = {color,
+                      {"n.png", Image8(4, 4, 3, 128), {}},
+                      {"h.png", {}, Image16(4, 4, 1, 0)},
                       {"unused.png", Image8(64, 64, 4, 0), {}}};
     return model;
 }
@@ -50,8 +52,10 @@ TEST(Cost, HandComputedQuad) {
     ModelCost cost = model_cost(textured_quad(0));
     EXPECT_EQ(cost.draw_calls, 1u);
     EXPECT_EQ(cost.mesh_bytes, 4u * (12 + 12 + 8) + 6 * 2);  // 16-bit indices
-    // Colour RGBA8 8x8 + normal RGB8 4x4 + height 16-bit 4x4, each with its mips; the unused texture is not paid.
-    EXPECT_EQ(cost.texture_bytes, 4u * (64 + 16 + 4 + 1) + 3 * (16 + 4 + 1) + 2 * (16 + 4 + 1));  // RGBA: one texel is clear
+    // Colour RGBA8 8x8 + normal RGB8 4x4 + height 16-bit 4x4, each with its mips; the unused texture is not
+    // paid.
+    EXPECT_EQ(cost.texture_bytes,
+              4u * (64 + 16 + 4 + 1) + 3 * (16 + 4 + 1) + 2 * (16 + 4 + 1));  // RGBA: one texel is clear
     // Cut-out alpha: BC1 (4 + 1 + 1 + 1 blocks); BC5 and BC4 for 4x4, 2x2, 1x1.
     EXPECT_EQ(cost.texture_bytes_gpu, 7u * 8 + 3 * 16 + 3 * 8);
     EXPECT_EQ(cost.bytes(), cost.mesh_bytes + cost.texture_bytes_gpu);
@@ -61,11 +65,13 @@ TEST(Cost, HandComputedQuad) {
 
 TEST(Cost, PartialAlphaNeedsBc7) {
     ModelCost cut_out = model_cost(textured_quad(0)), blended = model_cost(textured_quad(100));
-    EXPECT_EQ(blended.texture_bytes_gpu - cut_out.texture_bytes_gpu, 7u * 8);  // 16 instead of 8 bytes a block
+    EXPECT_EQ(blended.texture_bytes_gpu - cut_out.texture_bytes_gpu,
+              7u * 8);  // 16 instead of 8 bytes a block
 }
 
 TEST(Cost, SharedTexturesArePaidOnceWhenModelsAreCombined) {
-    CostParts a = cost_parts(textured_quad(0)), b = cost_parts(textured_quad(0)), c = cost_parts(textured_quad(100));
+    CostParts a = cost_parts(textured_quad(0)), b = cost_parts(textured_quad(0)),
+              c = cost_parts(textured_quad(100));
     ModelCost one = combined_cost({&a}), two = combined_cost({&a, &b}), other = combined_cost({&a, &c});
     EXPECT_EQ(two.mesh_bytes, 2 * one.mesh_bytes);
     EXPECT_EQ(two.draw_calls, 2u);
@@ -79,7 +85,8 @@ TEST(Cost, SharedTexturesArePaidOnceWhenModelsAreCombined) {
 // parallax and pom. A texture two maps share is paid where either is drawn.
 TEST(Cost, EachRenderModePaysForTheMapsItDraws) {
     Model model = textured_quad(0);
-    const std::uint64_t color = 4u * (64 + 16 + 4 + 1), normal = 3u * (16 + 4 + 1), height = 2u * (16 + 4 + 1);
+    const std::uint64_t color = 4u * (64 + 16 + 4 + 1), normal = 3u * (16 + 4 + 1),
+                        height = 2u * (16 + 4 + 1);
     const std::uint64_t color_gpu = 7u * 8, normal_gpu = 3u * 16, height_gpu = 3u * 8;
     CostParts parts = cost_parts(model);
     auto texture_bytes = [&](RenderMode mode) { return drawn_cost({&parts}, mode).texture_bytes; };
@@ -89,7 +96,8 @@ TEST(Cost, EachRenderModePaysForTheMapsItDraws) {
     EXPECT_EQ(texture_bytes(RenderMode::parallax), color + normal + height);
     EXPECT_EQ(texture_bytes(RenderMode::pom), color + normal + height);
     EXPECT_EQ(drawn_cost({&parts}, RenderMode::normal).texture_bytes_gpu, color_gpu + normal_gpu);
-    EXPECT_EQ(drawn_cost({&parts}, RenderMode::pom).texture_bytes_gpu, combined_cost({&parts}).texture_bytes_gpu);
+    EXPECT_EQ(drawn_cost({&parts}, RenderMode::pom).texture_bytes_gpu,
+              combined_cost({&parts}).texture_bytes_gpu);
     for (const EnumEntry<RenderMode>& mode : render_modes()) {
         const ModelCost drawn = drawn_cost({&parts}, mode.value);
         EXPECT_EQ(drawn.mesh_bytes, parts.mesh_bytes) << mode.name;  // vertex buffers as exported
@@ -125,9 +133,11 @@ TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     EXPECT_EQ(value_of(lod.statistics, "mesh_bytes_lod"), std::to_string(cost.mesh_bytes));
     EXPECT_EQ(value_of(lod.statistics, "bytes_original"), std::to_string(model_cost(model).bytes()));
     ASSERT_FALSE(lod.atlas.pages.empty());
-    // Per page: RGBA8 colour, RGB8 normal, 16-bit height, each with mips; plus the kept parts' bricks (32^2 RGB8).
+    // Per page: RGBA8 colour, RGB8 normal, 16-bit height, each with mips; plus the kept parts' bricks (32^2
+    // RGB8).
     std::uint64_t page_bytes = 0;
-    for (const Eigen::Vector2i& page : lod.atlas.pages) page_bytes += mip_chain_texels(page.x(), page.y()) * (4 + 3 + 2);
+    for (const Eigen::Vector2i& page : lod.atlas.pages)
+        page_bytes += mip_chain_texels(page.x(), page.y()) * (4 + 3 + 2);
     EXPECT_GE(cost.texture_bytes, page_bytes);
     EXPECT_LE(cost.texture_bytes, page_bytes + mip_chain_texels(32, 32) * 3);
 

@@ -28,7 +28,8 @@ TEST(MaterialMerge, CopiesMergeAndMaterialsNothingDrawsGo) {
     // 0 brick, 1 unused, 2 copy of brick, 3 glass, 4 brick_2, 5 unused copy of glass
     model.materials = {brick, Material{"unused"}, brick, glass, renamed, glass};
     int root = add_node(model, -1, "root");
-    for (int m : {0, 2, 3, 4, -1}) model.nodes[std::size_t(add_node(model, root, "part"))].primitives.push_back(triangle_of(m));
+    for (int m : {0, 2, 3, 4, -1})
+        model.nodes[std::size_t(add_node(model, root, "part"))].primitives.push_back(triangle_of(m));
     EXPECT_EQ(merge_materials(model), 3u);
     ASSERT_EQ(model.materials.size(), 3u);
     EXPECT_EQ(model.materials[0], brick);

@@ -20,7 +20,9 @@ Primitive triangle(int material, float x) {
 Model two_branches() {
     Model model;
     model.source = "two.gltf";
-    for (int t = 0; t < 3; ++t) model.textures.push_back({std::string("t") += std::to_string(t), Image8(1, 1, 4, std::uint8_t(t)), {}});
+    for (int t = 0; t < 3; ++t)
+        model.textures.push_back(
+            {std::string("t") += std::to_string(t), Image8(1, 1, 4, std::uint8_t(t)), {}});
     for (int m = 0; m < 3; ++m) model.materials.push_back(Material{std::string("m") += std::to_string(m)});
     model.materials[1].base_color_texture = 0;
     model.materials[2].base_color_texture = 1;

@@ -11,7 +11,8 @@ SelectionObject object_at(float x, std::vector<std::size_t> faces) {
     SelectionObject object;
     object.center = {x, 0, 0};
     object.radius = 1;
-    for (std::size_t f : faces) object.levels.push_back(SelectionLevel{f, std::nullopt, std::nullopt, std::nullopt});
+    for (std::size_t f : faces)
+        object.levels.push_back(SelectionLevel{f, std::nullopt, std::nullopt, std::nullopt});
     return object;
 }
 
@@ -27,7 +28,8 @@ SelectionView camera_at_origin() {
 }  // namespace
 
 TEST(FaceBudget, CoarsensTheLeastImportantFirstUntilTheFacesFit) {
-    std::vector<SelectionObject> objects = {object_at(10, {1000, 300, 50, 6}), object_at(20, {1000, 300, 50, 6}),
+    std::vector<SelectionObject> objects = {object_at(10, {1000, 300, 50, 6}),
+                                            object_at(20, {1000, 300, 50, 6}),
                                             object_at(40, {1000, 300, 50, 6})};
     std::vector<double> importance = {3, 2, 1};  // the farthest matters least
     std::vector<int> levels = {0, 0, 0};
@@ -74,8 +76,8 @@ TEST(FaceBudget, ImportanceFallsWithDistanceForEveryStrategy) {
     SelectionObject near = object_at(10, {100, 6}), far = object_at(50, {100, 6});
     TextureSizing sizing;
     near.levels[1].sizing = far.levels[1].sizing = sizing;
-    for (const Strategy& strategy : std::vector<Strategy>{DistanceBands{{30}}, PixelCount{{1000}}, ScreenRatio{{0.01}},
-                                                          BoxDiagonal{}, TexelExact{}})
+    for (const Strategy& strategy : std::vector<Strategy>{DistanceBands{{30}}, PixelCount{{1000}},
+                                                          ScreenRatio{{0.01}}, BoxDiagonal{}, TexelExact{}})
         EXPECT_GT(selection_importance(strategy, near, view), selection_importance(strategy, far, view))
             << "strategy " << strategy.index();
 }

@@ -14,8 +14,8 @@ using namespace boxlod;
 
 namespace {
 
-SelectionView perspective(const Eigen::Vector3f& position, const Eigen::Vector3f& target, float fovy, int width,
-                          int height) {
+SelectionView perspective(const Eigen::Vector3f& position, const Eigen::Vector3f& target, float fovy,
+                          int width, int height) {
     SelectionView view;
     view.camera.position = position;
     view.camera.target = target;
@@ -48,7 +48,8 @@ TextureSizing sizing(float distance, float fovy = 45, float resolution = 1080) {
 // Window pixel coordinates of a world point (pixel centres aside): x right, y up.
 Eigen::Vector2d to_pixels(const SelectionView& view, const Eigen::Vector3f& point) {
     float aspect = float(view.width) / float(view.height);
-    Eigen::Vector4f clip = projection_matrix(view.camera, aspect) * view_matrix(view.camera) * point.homogeneous();
+    Eigen::Vector4f clip =
+        projection_matrix(view.camera, aspect) * view_matrix(view.camera) * point.homogeneous();
     return {(clip.x() / clip.w() + 1) * view.width / 2.0, (clip.y() / clip.w() + 1) * view.height / 2.0};
 }
 
@@ -205,14 +206,17 @@ TEST(LodSelection, MeasuredSwitchingPicksTheCoarsestLevelSwitchedIn) {
     EXPECT_EQ(choose_level(measured, object, on_axis(30, 45, 640, 480)).level, 1);
     EXPECT_EQ(choose_level(measured, object, on_axis(50, 45, 640, 480)).level, 3);
     EXPECT_EQ(choose_level(scale_detail(measured, 2), object, on_axis(50, 45, 640, 480)).level, 1);
-    EXPECT_EQ(choose_level(measured, sphere(1, 4), on_axis(1000, 45, 640, 480)).level, 0);  // nothing measured: the original
+    EXPECT_EQ(choose_level(measured, sphere(1, 4), on_axis(1000, 45, 640, 480)).level,
+              0);  // nothing measured: the original
 }
 
 TEST(LodSelection, TexelExactAcceptsALevelFromItsBakedDistanceOn) {
     SelectionObject object = sphere(2, 4);
     for (int c = 1; c <= 3; ++c) object.levels[c].sizing = sizing(25.0f * float(1 << c));  // 50, 100, 200
     Eigen::Vector3f direction = Eigen::Vector3f(1, 1, 1).normalized();
-    auto at = [&](float d, int height = 1080) { return perspective(direction * d, {0, 0, 0}, 45, 1920, height); };
+    auto at = [&](float d, int height = 1080) {
+        return perspective(direction * d, {0, 0, 0}, 45, 1920, height);
+    };
 
     Choice baked = choose_level(TexelExact{}, object, at(100));
     EXPECT_NEAR(baked.value, 2 * 100 * std::tan(M_PI / 8) / 1080, 1e-6);
@@ -311,14 +315,18 @@ TEST(LodSelection, HysteresisHoldsTheLevelWithinTheMarginAndSwitchesBeyondIt) {
                 return select_level(selector, strategy, object, fly_away(object, threshold * factor));
             };
             EXPECT_EQ(select_at(1 - cross), level);
-            for (int frame = 0; frame < 10; ++frame) EXPECT_EQ(select_at(frame % 2 ? 1 - wobble : 1 + wobble), level);
+            for (int frame = 0; frame < 10; ++frame)
+                EXPECT_EQ(select_at(frame % 2 ? 1 - wobble : 1 + wobble), level);
             EXPECT_EQ(select_at(1 + cross), next_level);
-            for (int frame = 0; frame < 10; ++frame) EXPECT_EQ(select_at(frame % 2 ? 1 + wobble : 1 - wobble), next_level);
+            for (int frame = 0; frame < 10; ++frame)
+                EXPECT_EQ(select_at(frame % 2 ? 1 + wobble : 1 - wobble), next_level);
             EXPECT_EQ(select_at(1 - cross), level);
             // Without a margin the selector follows every wobble.
             Selector eager{0};
-            EXPECT_EQ(select_level(eager, strategy, object, fly_away(object, threshold * (1 - wobble))), level);
-            EXPECT_EQ(select_level(eager, strategy, object, fly_away(object, threshold * (1 + wobble))), next_level);
+            EXPECT_EQ(select_level(eager, strategy, object, fly_away(object, threshold * (1 - wobble))),
+                      level);
+            EXPECT_EQ(select_level(eager, strategy, object, fly_away(object, threshold * (1 + wobble))),
+                      next_level);
 
             ++changes;
             level = next_level;
@@ -395,7 +403,8 @@ TEST(LodSelection, DetailPicksTheLevelOfACameraKTimesCloser) {
     SelectionObject object = building();  // radius 14
     for (const auto& [name, strategy] : every_strategy()) {
         SCOPED_TRACE(name);
-        bool disc = std::holds_alternative<PixelCount>(strategy) || std::holds_alternative<ScreenRatio>(strategy);
+        bool disc =
+            std::holds_alternative<PixelCount>(strategy) || std::holds_alternative<ScreenRatio>(strategy);
         for (double detail : {0.5, 2.0, 3.0}) {
             Strategy biased = scale_detail(strategy, detail);
             for (double d = 50; d < 3000; d *= 1.37) {
@@ -403,14 +412,17 @@ TEST(LodSelection, DetailPicksTheLevelOfACameraKTimesCloser) {
                 int level = choose_level(biased, object, fly_away(object, d)).level;
                 if (!disc || d / detail > 400) {
                     EXPECT_EQ(level, unbiased) << d << " x" << detail;
-                } else if (detail > 1) {  // the biased disc shrinks slower: never coarser than the unbiased one
+                } else if (detail >
+                           1) {  // the biased disc shrinks slower: never coarser than the unbiased one
                     EXPECT_LE(level, choose_level(strategy, object, fly_away(object, d)).level) << d;
                 }
             }
         }
     }
-    EXPECT_EQ(std::get<DistanceBands>(scale_detail(DistanceBands{{10, 20}}, 2)).distances, (std::vector<double>{20, 40}));
-    EXPECT_EQ(std::get<PixelCount>(scale_detail(PixelCount{{400, 100}}, 2)).pixels, (std::vector<double>{100, 25}));
+    EXPECT_EQ(std::get<DistanceBands>(scale_detail(DistanceBands{{10, 20}}, 2)).distances,
+              (std::vector<double>{20, 40}));
+    EXPECT_EQ(std::get<PixelCount>(scale_detail(PixelCount{{400, 100}}, 2)).pixels,
+              (std::vector<double>{100, 25}));
     EXPECT_EQ(std::get<TexelExact>(scale_detail(scale_detail(TexelExact{}, 2), 3)).detail, 6);
     EXPECT_THROW(scale_detail(TexelExact{}, 0), std::invalid_argument);
 }

@@ -43,7 +43,8 @@ TEST(StrategyText, ParsesEveryStrategyWithItsParameters) {
     EXPECT_EQ(defaults.min_pixels, 16);
     EXPECT_EQ(defaults.max_pixels, 512);
     EXPECT_EQ(defaults.interpolation, DiagonalInterpolation::linear);
-    EXPECT_EQ(std::get<BoxDiagonal>(parse_strategy("diagonal:1,2,square", "x")).interpolation, DiagonalInterpolation::square);
+    EXPECT_EQ(std::get<BoxDiagonal>(parse_strategy("diagonal:1,2,square", "x")).interpolation,
+              DiagonalInterpolation::square);
 
     EXPECT_FALSE(std::get<TexelExact>(parse_strategy("texel", "--strategy")).error_budget);
     EXPECT_EQ(std::get<TexelExact>(parse_strategy("texel:0.05", "--strategy")).error_budget, 0.05);
@@ -54,8 +55,8 @@ TEST(StrategyText, ParsesEveryStrategyWithItsParameters) {
 
 TEST(StrategyText, FormatParsesBackToTheSameText) {
     for (const char* text : {"distance:40,80,160", "pixels:2e+05,50000,10000", "ratio:0.2,0.05,0.01",
-                             "diagonal:16,512,linear", "diagonal:8,300,square-root", "diagonal:1,2,square", "texel",
-                             "texel:0.05", "measured:0.1", "distance:0.1,0.30000000000000004"}) {
+                             "diagonal:16,512,linear", "diagonal:8,300,square-root", "diagonal:1,2,square",
+                             "texel", "texel:0.05", "measured:0.1", "distance:0.1,0.30000000000000004"}) {
         Strategy strategy = parse_strategy(text, "--strategy");
         EXPECT_EQ(format_strategy(strategy), text);
         EXPECT_EQ(format_strategy(parse_strategy(format_strategy(strategy), "again")), text);
@@ -73,11 +74,29 @@ TEST(StrategyText, FormatParsesBackToTheSameText) {
 
 TEST(StrategyText, BadTextIsOneErrorNamingWhere) {
     EXPECT_EQ(error_of("distance:40,80,160"), "");
-    for (const char* text : {"sideways", "", "distance", "distance:", "distance:40,,80", "distance:40,abc",
-                             "distance:80,40", "pixels:10,20", "ratio:0.1,0.1", "pixels:-5", "distance:nan",
-                             "diagonal:16", "diagonal:16,512,cubic", "diagonal:600,500", "diagonal:1,2,linear,4",
-                             "texel:", "texel:-1", "texel:0.1,0.2", "distance:40 ,80", "measured:0", "measured:1.5",
-                             "measured:0.1,0.2", "measured:nan"}) {
+    for (const char* text : {"sideways",
+                             "",
+                             "distance",
+                             "distance:",
+                             "distance:40,,80",
+                             "distance:40,abc",
+                             "distance:80,40",
+                             "pixels:10,20",
+                             "ratio:0.1,0.1",
+                             "pixels:-5",
+                             "distance:nan",
+                             "diagonal:16",
+                             "diagonal:16,512,cubic",
+                             "diagonal:600,500",
+                             "diagonal:1,2,linear,4",
+                             "texel:",
+                             "texel:-1",
+                             "texel:0.1,0.2",
+                             "distance:40 ,80",
+                             "measured:0",
+                             "measured:1.5",
+                             "measured:0.1,0.2",
+                             "measured:nan"}) {
         std::string message = error_of(text);
         EXPECT_EQ(message.rfind("--strategy: ", 0), 0u) << "'" << text << "' gave '" << message << "'";
         EXPECT_EQ(message.find('\n'), std::string::npos);

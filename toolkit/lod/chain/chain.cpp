@@ -17,30 +17,34 @@ double doubled_distance(double level_one_distance, int level) {
 std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels) {
     std::vector<float> distances;
     switch (rule.rule) {
-    case LevelDistances::Rule::same:
-        break;
+    case LevelDistances::Rule::same: break;
     case LevelDistances::Rule::doubling:
         for (int c = 1; c <= levels; ++c) distances.push_back(float(doubled_distance(distance, c)));
         break;
     case LevelDistances::Rule::listed:
         if (int(rule.listed.size()) != levels)
             throw InputError("level_distances: " + std::to_string(rule.listed.size()) + " distances for " +
-                             std::to_string(levels) + " levels (1.." + std::to_string(levels) + "), or auto, or same");
+                             std::to_string(levels) + " levels (1.." + std::to_string(levels) +
+                             "), or auto, or same");
         distances = rule.listed;
     }
     return distances;
 }
 
 Chain::Chain(const Model& model, const LodParameters& parameters, int threads)
-    : model(model), threads(threads),
+    : model(model),
+      threads(threads),
       measurements(parameters.level_mode == LevelMode::hybrid ? make_hybrid_measurements(model) : nullptr),
       first(start_lod(model, parameters, threads, nullptr, measurements.get())),
-      distances(level_distances(parameters.level_distances, first->input.parameters.distance, obtained_levels())) {}
+      distances(
+          level_distances(parameters.level_distances, first->input.parameters.distance, obtained_levels())) {}
 
 LodSession& Chain::for_level(int level) {
-    // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan made once.
-    // Past the levels obtained: build_lod refuses it.
-    if (level <= 0 || level > int(distances.size()) || distances[std::size_t(level - 1)] == first->input.parameters.distance) return *first;
+    // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan
+    // made once. Past the levels obtained: build_lod refuses it.
+    if (level <= 0 || level > int(distances.size()) ||
+        distances[std::size_t(level - 1)] == first->input.parameters.distance)
+        return *first;
     std::unique_ptr<LodSession>& session = sized[distances[std::size_t(level - 1)]];
     if (!session) {
         LodParameters p = first->input.parameters;
@@ -68,8 +72,10 @@ void check_chain_budgets(Chain& chain, const std::vector<int>& levels) {
     for (int level : levels) check_budget_reachable(chain.for_level(level), level, chain.threads);
 }
 
-int take_distinct_levels(Chain& chain, int first, int last, int max_levels, const std::function<void(ChainLevel)>& take) {
-    std::optional<ChainLevel> pending;  // the last distinct level, held until the next one shows it has no more repeats
+int take_distinct_levels(Chain& chain, int first, int last, int max_levels,
+                         const std::function<void(ChainLevel)>& take) {
+    std::optional<ChainLevel>
+        pending;  // the last distinct level, held until the next one shows it has no more repeats
     int held = 0, level = first;
     for (; level <= last; ++level) {
         LodSession& session = chain.for_level(level);
@@ -100,15 +106,17 @@ SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
         std::vector<const Model*> models;
         for (const ChainLevel& level : distinct) models.push_back(&level.lod.model);
         const LodParameters& p = chain.parameters();
-        measured = measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p, chain.threads);
+        measured =
+            measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p, chain.threads);
         switches = switch_distances(measured, threshold);
         switched.distances = measured.distances;
     } else {
         // Where its texels meet the screen's pixels: d_c, or where auto distances put it when every
         // level is sized for one distance (--manual), which would otherwise switch all at once.
         for (const ChainLevel& level : distinct)
-            switches.push_back(chain.distances.empty() ? doubled_distance(chain.parameters().distance, level.level)
-                                                       : level.session->input.parameters.distance);
+            switches.push_back(chain.distances.empty()
+                                   ? doubled_distance(chain.parameters().distance, level.level)
+                                   : level.session->input.parameters.distance);
     }
     const std::vector<std::size_t> reachable = reachable_levels(switches, bytes);
     switched.distinct = int(distinct.size());

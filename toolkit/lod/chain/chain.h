@@ -30,7 +30,8 @@ std::vector<float> level_distances(const LevelDistances& rule, float distance, i
 struct Chain {
     const Model& model;
     int threads;
-    std::shared_ptr<HybridMeasurements> measurements;  // level mode hybrid: made once, reused at every distance
+    std::shared_ptr<HybridMeasurements>
+        measurements;                   // level mode hybrid: made once, reused at every distance
     std::unique_ptr<LodSession> first;  // at the parameters' distance; level 0, the boxes, the level values
     std::vector<float> distances;       // of levels 1..N; empty: every level at the first's distance
     std::map<float, std::unique_ptr<LodSession>> sized;
@@ -49,7 +50,8 @@ struct ChainLevel {
     int level = 0;
     Lod lod;
     LodSession* session = nullptr;  // the one that sized it
-    std::vector<int> same_levels;   // the later levels that draw what it draws (model.h: draws_the_same), left out
+    std::vector<int>
+        same_levels;  // the later levels that draw what it draws (model.h: draws_the_same), left out
 };
 
 // Throws InputError when a level's byte budget lies below its session's
@@ -59,7 +61,8 @@ void check_chain_budgets(Chain& chain, const std::vector<int>& levels);
 // Builds levels first..last in order and hands each distinct one to `take`
 // (in order, once the next distinct level is known), at most `max_levels` of
 // them. Returns the first level not held: last + 1, or where the cap cut.
-int take_distinct_levels(Chain& chain, int first, int last, int max_levels, const std::function<void(ChainLevel)>& take);
+int take_distinct_levels(Chain& chain, int first, int last, int max_levels,
+                         const std::function<void(ChainLevel)>& take);
 
 // A chain as engines get it: the levels some distance draws, each with the
 // distance it switches in at (level 0: 0).

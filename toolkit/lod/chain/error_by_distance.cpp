@@ -20,9 +20,11 @@ const Eigen::Vector3f measured_directions[] = {{1, 1, 1}, {-1, 1, 1}, {-1, 1, -1
 constexpr std::size_t direction_count = std::size(measured_directions);
 constexpr int max_distances = 64;
 
-// A view of `drawable` as the chain draws it (its render mode and parallax), one thread: views are measured side by side.
+// A view of `drawable` as the chain draws it (its render mode and parallax), one thread: views are measured
+// side by side.
 Shot render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
-    return render_shot(drawable.batches, drawing_settings(camera, drawn.render_mode, drawn, 1), pixels, pixels);
+    return render_shot(drawable.batches, drawing_settings(camera, drawn.render_mode, drawn, 1), pixels,
+                       pixels);
 }
 
 }  // namespace
@@ -34,12 +36,14 @@ std::vector<double> measured_distances(const Model& original, const TextureSizin
     // The sphere spans 2 r / (2 d tan(fovy / 2)) of the screen's height.
     const double last = double(screen.resolution) * framing.radius / (few_pixels * tangent);
     std::vector<double> distances{first};
-    while (distances.back() < last && int(distances.size()) < max_distances) distances.push_back(first * std::exp2(0.5 * double(distances.size())));
+    while (distances.back() < last && int(distances.size()) < max_distances)
+        distances.push_back(first * std::exp2(0.5 * double(distances.size())));
     return distances;
 }
 
 ErrorByDistance measure_error_by_distance(const Model& original, const std::vector<const Model*>& levels,
-                                          const TextureSizing& screen, const LodParameters& drawn, int threads) {
+                                          const TextureSizing& screen, const LodParameters& drawn,
+                                          int threads) {
     ErrorByDistance measured;
     measured.distances = measured_distances(original, screen);
     const Framing framing = model_framing(original);
@@ -58,17 +62,20 @@ ErrorByDistance measure_error_by_distance(const Model& original, const std::vect
         const double largest = std::max(16.0, std::min(double(measure_pixels), double(screen.resolution)));
         const int pixels = int(std::clamp(std::ceil(1.25 * sphere_pixels), 16.0, largest));
         const float fovy = float(2 * std::atan(tangent * pixels / double(screen.resolution)) * 180 / M_PI);
-        const Camera camera = framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
+        const Camera camera =
+            framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
         const Shot seen = render_view(reference->drawable, camera, drawn, pixels);
         const FlipReference prepared = prepare_flip_reference(seen.image, 67, 1);
         for (std::size_t l = 0; l < levels.size(); ++l) {
             const Shot level = render_view(drawables[l]->drawable, camera, drawn, pixels);
-            per_view[v][l] = covered_mean(flip(prepared, level.image, 1).error, seen.coverage, level.coverage);
+            per_view[v][l] =
+                covered_mean(flip(prepared, level.image, 1).error, seen.coverage, level.coverage);
         }
     });
     measured.errors.assign(levels.size(), std::vector<double>(measured.distances.size(), 0));
     for (std::size_t v = 0; v < views; ++v)  // summed in view order: the same for any thread count
-        for (std::size_t l = 0; l < levels.size(); ++l) measured.errors[l][v / direction_count] += per_view[v][l] / direction_count;
+        for (std::size_t l = 0; l < levels.size(); ++l)
+            measured.errors[l][v / direction_count] += per_view[v][l] / direction_count;
     return measured;
 }
 
@@ -82,18 +89,21 @@ std::vector<double> switch_distances(const ErrorByDistance& measured, double thr
     return switches;
 }
 
-std::vector<std::size_t> reachable_levels(const std::vector<double>& switches, const std::vector<std::uint64_t>& bytes) {
+std::vector<std::size_t> reachable_levels(const std::vector<double>& switches,
+                                          const std::vector<std::uint64_t>& bytes) {
     auto from = [&](std::size_t k) { return k == 0 ? 0.0 : switches[k]; };  // the finest is drawn from 0 on
     // At each distance a chain draws the cheapest level within the threshold there: levels by the
     // distance they switch in at (the finer first among equals), each kept where it becomes the cheapest.
     std::vector<std::size_t> order;
     for (std::size_t c = 1; c < switches.size(); ++c)
         if (std::isfinite(switches[c])) order.push_back(c);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return from(a) < from(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return from(a) < from(b); });
     std::vector<std::size_t> kept{0};
     for (std::size_t c : order) {
         if (bytes[c] >= bytes[kept.back()]) continue;  // a cheaper level is drawn here already
-        if (kept.size() > 1 && from(c) == from(kept.back())) kept.pop_back();  // switching in together: never drawn
+        if (kept.size() > 1 && from(c) == from(kept.back()))
+            kept.pop_back();  // switching in together: never drawn
         kept.push_back(c);
     }
     return kept;

@@ -21,8 +21,8 @@
 
 namespace boxlod {
 
-constexpr int measure_pixels = 384;   // the largest side of a measured view
-constexpr double few_pixels = 4;      // where the measured distances end: the sphere this wide on the screen
+constexpr int measure_pixels = 384;  // the largest side of a measured view
+constexpr double few_pixels = 4;     // where the measured distances end: the sphere this wide on the screen
 constexpr NumberRange switch_error_range{1e-4, 1};  // a threshold of covered ꟻLIP
 
 struct ErrorByDistance {
@@ -36,7 +36,8 @@ std::vector<double> measured_distances(const Model& original, const TextureSizin
 // `levels` against `original`, drawn in the parameters' render mode and
 // parallax; the same for any thread count.
 ErrorByDistance measure_error_by_distance(const Model& original, const std::vector<const Model*>& levels,
-                                          const TextureSizing& screen, const LodParameters& drawn, int threads);
+                                          const TextureSizing& screen, const LodParameters& drawn,
+                                          int threads);
 
 // Per level, the nearest measured distance from which on its error is at most
 // `threshold`; infinity where its error at the farthest exceeds it.
@@ -48,6 +49,7 @@ std::vector<double> switch_distances(const ErrorByDistance& measured, double thr
 // kept level switches in farther and costs fewer bytes than the one before.
 // A level left out is never needed: a cheaper one is within the threshold
 // wherever it would be drawn.
-std::vector<std::size_t> reachable_levels(const std::vector<double>& switches, const std::vector<std::uint64_t>& bytes);
+std::vector<std::size_t> reachable_levels(const std::vector<double>& switches,
+                                          const std::vector<std::uint64_t>& bytes);
 
 }  // namespace boxlod

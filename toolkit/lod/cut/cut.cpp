@@ -22,7 +22,8 @@ Cut take_cut(const Model& model, const std::vector<int>& level, int current_leve
             continue;
         }
         if (node.has_geometry()) cut.geometry_nodes.push_back(n);
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back(*child);
     }
     return cut;
 }

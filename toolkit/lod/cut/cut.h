@@ -19,14 +19,16 @@ namespace boxlod {
 struct BakedNode {
     int node = 0;
     int proxy = -1;  // hybrid.h: its proxy in the plan; -1: none (the proxy-baked baseline)
-    const std::vector<Primitive>* geometry = nullptr;  // the plan's or the caller's, while a level is built (then null)
+    const std::vector<Primitive>* geometry =
+        nullptr;  // the plan's or the caller's, while a level is built (then null)
 };
 
 struct Cut {
     std::vector<int> used_nodes;      // every node the cut visits, in tree order
     std::vector<int> geometry_nodes;  // used nodes that keep their own geometry
     std::vector<int> box_nodes;       // used nodes replaced by their box (sub-trees with geometry)
-    std::vector<std::pair<int, int>> simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
+    std::vector<std::pair<int, int>>
+        simplified_nodes;  // hybrid.h: (used node, its simplified proxy in the plan)
     std::vector<BakedNode> baked_nodes;
     // hybrid.h: box and baked nodes whose texels are as at s > 1 times the sizing
     // distance (texture_sizing.h), with s; every other's s is 1.

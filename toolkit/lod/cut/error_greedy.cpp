@@ -1,8 +1,8 @@
 #include "toolkit/lod/cut/error_greedy.h"
 
-#include "toolkit/model/cost.h"
 #include "toolkit/lod/cut/kept_subtrees.h"
 #include "toolkit/lod/cut/level_budgets.h"
+#include "toolkit/model/cost.h"
 
 #include <cmath>
 #include <set>
@@ -10,7 +10,8 @@
 
 namespace boxlod {
 
-std::vector<double> box_depth_errors(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes) {
+std::vector<double> box_depth_errors(const Model& model,
+                                     const std::vector<std::optional<OrientedBox>>& boxes) {
     std::vector<double> errors(model.nodes.size(), 0);
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
         if (!boxes[n]) continue;
@@ -44,7 +45,8 @@ GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional
     std::vector<double> box_bytes(count, 0), own_bytes(count, 0);
     for (std::size_t n = 0; n < count; ++n) {
         if (boxes[n]) box_bytes[n] = double(box_bytes_estimate(*boxes[n], sizing, textured));
-        for (const Primitive& p : model.nodes[n].primitives) own_bytes[n] += double(primitive_mesh_bytes(p, model));
+        for (const Primitive& p : model.nodes[n].primitives)
+            own_bytes[n] += double(primitive_mesh_bytes(p, model));
     }
     // What opening n buys and costs: its box gives way to its own geometry and its children's boxes.
     auto change = [&](int n) {
@@ -91,7 +93,8 @@ std::vector<std::size_t> greedy_prefixes(const GreedyOpening& opening, const std
     return prefix;
 }
 
-std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening, const std::vector<std::size_t>& prefixes) {
+std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening,
+                               const std::vector<std::size_t>& prefixes) {
     std::vector<int> level(model.nodes.size(), 0);
     for (std::size_t step = 0; step < opening.order.size(); ++step)
         for (std::size_t c = prefixes.size() - 1; c >= 1; --c)
@@ -110,7 +113,9 @@ LevelValues error_greedy_levels(const Model& model, const std::vector<std::optio
     values.level.assign(model.nodes.size(), 0);
     if (opening.order.empty()) return values;
     values.level = opened_levels(
-        model, opening, greedy_prefixes(opening, geometric_budgets(opening.bytes.front(), opening.bytes.back(), wanted_levels)));
+        model, opening,
+        greedy_prefixes(opening,
+                        geometric_budgets(opening.bytes.front(), opening.bytes.back(), wanted_levels)));
     return values;
 }
 

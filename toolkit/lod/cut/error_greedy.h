@@ -24,7 +24,8 @@
 namespace boxlod {
 
 // e(n) for every node with a box (0 for the others).
-std::vector<double> box_depth_errors(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes);
+std::vector<double> box_depth_errors(const Model& model,
+                                     const std::vector<std::optional<OrientedBox>>& boxes);
 
 struct GreedyOpening {
     std::vector<int> order;     // nodes in the order they are opened, the root first
@@ -43,7 +44,8 @@ GreedyOpening greedy_opening(const Model& model, const std::vector<std::optional
 std::vector<std::size_t> greedy_prefixes(const GreedyOpening& opening, const std::vector<double>& budgets);
 
 // Per node, the largest c whose prefix opens it (0: none of 1..N), as level values.
-std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening, const std::vector<std::size_t>& prefixes);
+std::vector<int> opened_levels(const Model& model, const GreedyOpening& opening,
+                               const std::vector<std::size_t>& prefixes);
 
 // Level values from the opening: N = wanted_levels, budgets geometric from the
 // root's box to the original (level_budgets.h: geometric_budgets).

@@ -10,7 +10,8 @@ namespace {
 template <typename T, typename OwnValue>
 std::vector<T> sum_over_subtrees(const Model& model, OwnValue own_value) {
     std::vector<T> sums(model.nodes.size(), T(0));
-    // A parent comes before its children (model.h), so going backwards a node is complete before its parent adds it.
+    // A parent comes before its children (model.h), so going backwards a node is complete before its parent
+    // adds it.
     for (std::size_t n = model.nodes.size(); n-- > 0;) {
         for (const Primitive& primitive : model.nodes[n].primitives) sums[n] += own_value(primitive);
         if (model.nodes[n].parent >= 0) sums[std::size_t(model.nodes[n].parent)] += sums[n];
@@ -29,11 +30,13 @@ std::vector<std::size_t> subtree_triangles(const Model& model) {
 }
 
 std::vector<std::uint64_t> subtree_mesh_bytes(const Model& model) {
-    return sum_over_subtrees<std::uint64_t>(model, [&](const Primitive& p) { return primitive_mesh_bytes(p, model); });
+    return sum_over_subtrees<std::uint64_t>(
+        model, [&](const Primitive& p) { return primitive_mesh_bytes(p, model); });
 }
 
 std::uint64_t box_bytes_estimate(const OrientedBox& box, const TextureSizing& sizing, bool textured) {
-    // Per quad 4 vertices (position, normal; uv, tangent when textured) and 6 16-bit indices, as the export writes them.
+    // Per quad 4 vertices (position, normal; uv, tangent when textured) and 6 16-bit indices, as the export
+    // writes them.
     const std::uint64_t vertex_bytes = VertexLayout{true, textured, textured, 2}.vertex_bytes();
     std::uint64_t bytes = 6 * (4 * vertex_bytes + 6 * 2);
     if (!textured) return bytes;
@@ -59,7 +62,8 @@ std::vector<bool> kept_subtrees(const Model& model, const std::vector<std::optio
     if (rules.cheaper) mesh_bytes = subtree_mesh_bytes(model);
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
         if (rules.small && faces[n] <= box_faces) kept[n] = true;
-        if (rules.cheaper && boxes[n] && mesh_bytes[n] <= box_bytes_estimate(*boxes[n], sizing, textured)) kept[n] = true;
+        if (rules.cheaper && boxes[n] && mesh_bytes[n] <= box_bytes_estimate(*boxes[n], sizing, textured))
+            kept[n] = true;
         // The whole sub-tree: boxing descendants of a node too cheap to box could cost more than its box
         // (a parent comes before its children, model.h).
         if (model.nodes[n].parent >= 0 && kept[std::size_t(model.nodes[n].parent)]) kept[n] = true;

@@ -12,8 +12,8 @@
 // cheap to box could cost more than its own box.
 #pragma once
 #include "toolkit/lod/pages/bake.h"
-#include "toolkit/model/model.h"
 #include "toolkit/lod/pages/texture_sizing.h"
+#include "toolkit/model/model.h"
 
 #include <cstdint>
 #include <optional>
@@ -41,7 +41,8 @@ struct KeptSubtrees {
     bool small = false;    // at most 6 faces
     bool cheaper = false;  // a mesh cheaper than its box
 };
-// For each node: whether it keeps its geometry (every descendant of a kept node is kept) (`boxes` as node_boxes gives them).
+// For each node: whether it keeps its geometry (every descendant of a kept node is kept) (`boxes` as
+// node_boxes gives them).
 std::vector<bool> kept_subtrees(const Model& model, const std::vector<std::optional<OrientedBox>>& boxes,
                                 KeptSubtrees rules, const TextureSizing& sizing, bool textured);
 

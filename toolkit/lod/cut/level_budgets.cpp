@@ -32,14 +32,16 @@ std::string parse_budget(const std::string& item, ByteBudget& budget) {
         return "'" + item + "' is neither a fraction nor a size (0.25, 300kB)";
     const std::string unit(end, item.data() + item.size());
     if (unit.empty()) {
-        if (!(number > 0 && number <= 1)) return "the fraction '" + item + "' is outside (0, 1] of the original's bytes";
+        if (!(number > 0 && number <= 1))
+            return "the fraction '" + item + "' is outside (0, 1] of the original's bytes";
         budget = {true, number};
         return "";
     }
     for (const ByteUnit& u : byte_units)
         if (unit == u.name) {
             const double bytes = std::round(number * u.bytes);
-            if (!(bytes >= 1 && bytes <= max_budget_bytes)) return "the size '" + item + "' is outside [1 B, 1e15 B]";
+            if (!(bytes >= 1 && bytes <= max_budget_bytes))
+                return "the size '" + item + "' is outside [1 B, 1e15 B]";
             budget = {false, bytes};
             return "";
         }
@@ -102,7 +104,8 @@ std::size_t longest_prefix_within(const std::vector<double>& bytes, double budge
     return steps;
 }
 
-std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error, double budget) {
+std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error,
+                               double budget) {
     // Not the longest prefix: an opening that gains nothing yet can raise the error for a while.
     std::size_t steps = 0;
     for (std::size_t k = 1; k < bytes.size(); ++k)

@@ -32,6 +32,7 @@ std::vector<double> geometric_budgets(double start_bytes, double original_bytes,
 // Prefixes of an order of cuts (bytes[k], error[k] after k steps) within a budget:
 // the longest, or the one of lowest error (the shortest of equal error); 0 when none fits.
 std::size_t longest_prefix_within(const std::vector<double>& bytes, double budget);
-std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error, double budget);
+std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error,
+                               double budget);
 
 }  // namespace boxlod

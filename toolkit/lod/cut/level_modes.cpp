@@ -12,19 +12,21 @@ namespace boxlod {
 namespace {
 
 constexpr EnumEntry<LevelMode> level_mode_table[] = {
-    {LevelMode::top_down, "top-down", "the root gets N - 1, each child its parent's value - 1; N = depth + 1"},
+    {LevelMode::top_down, "top-down",
+     "the root gets N - 1, each child its parent's value - 1; N = depth + 1"},
     {LevelMode::bottom_up, "bottom-up", "leaves 0, inner nodes 1 + their children's maximum"},
-    {LevelMode::bottom_up_siblings, "bottom-up-siblings", "bottom-up, siblings raised to their maximum first"},
+    {LevelMode::bottom_up_siblings, "bottom-up-siblings",
+     "bottom-up, siblings raised to their maximum first"},
     {LevelMode::box_volume, "box-volume", "from the box's volume, N = the wanted levels"},
     {LevelMode::box_area, "box-area", "from the box's surface area"},
     {LevelMode::box_diagonal, "box-diagonal", "from the box's diagonal"},
     {LevelMode::box_max_extent, "box-max-extent", "from the box's longest side"},
     {LevelMode::error_greedy, "error-greedy",
-     "beyond the manual: from the root's box, open the node that buys the most estimated error per byte; "
-     "N = the wanted levels, at byte budgets from the root's box to the original"},
+     "beyond the manual: from the root's box, open the node that buys the most estimated error per byte; N = "
+     "the wanted levels, at byte budgets from the root's box to the original"},
     {LevelMode::hybrid, "hybrid",
-     "beyond the manual: per node its box, its sub-tree simplified or its geometry, chosen by measured image error "
-     "per byte from the root's cheapest proxy; N = the wanted levels, budgets as error-greedy's"},
+     "beyond the manual: per node its box, its sub-tree simplified or its geometry, chosen by measured image "
+     "error per byte from the root's cheapest proxy; N = the wanted levels, budgets as error-greedy's"},
 };
 
 constexpr EnumEntry<Interpolation> interpolation_table[] = {
@@ -40,7 +42,8 @@ LevelValues top_down_levels(const Model& model) {
     LevelValues values;
     values.obtained_levels = tree_depth(model) + 1;
     values.level.assign(model.nodes.size(), values.obtained_levels - 1);
-    for (std::size_t i = 1; i < model.nodes.size(); ++i) values.level[i] = values.level[model.nodes[i].parent] - 1;
+    for (std::size_t i = 1; i < model.nodes.size(); ++i)
+        values.level[i] = values.level[model.nodes[i].parent] - 1;
     return values;
 }
 
@@ -67,10 +70,10 @@ namespace {
 
 double box_value(LevelMode mode, const OrientedBox& box) {
     switch (mode) {
-        case LevelMode::box_volume: return box_volume(box);
-        case LevelMode::box_area: return box_area(box);
-        case LevelMode::box_diagonal: return box_diagonal(box);
-        default: return box_max_extent(box);
+    case LevelMode::box_volume: return box_volume(box);
+    case LevelMode::box_area: return box_area(box);
+    case LevelMode::box_diagonal: return box_diagonal(box);
+    default: return box_max_extent(box);
     }
 }
 
@@ -93,7 +96,8 @@ std::vector<double> interpolated(std::vector<double> v, Interpolation interpolat
 // Bounding Box modes: t = (w - wmin) / (wmax - wmin) over the boxed nodes (1
 // when the range is empty), L = floor(t * (N - 1)) with N the wanted levels.
 // For rank, wmin = 0 and wmax = count - 1, so t = rank / (count - 1).
-LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
+LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels,
+                            Interpolation interpolation,
                             const std::vector<std::optional<OrientedBox>>& boxes) {
     if (boxes.size() != model.nodes.size())
         throw std::invalid_argument("compute_level_values: one box (or none) per node expected");
@@ -116,7 +120,8 @@ LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_level
     values.obtained_levels = wanted_levels;
     values.level.assign(model.nodes.size(), 0);
     // All v equal: every t is 1 (for rank too, where all ranks would be 0).
-    const bool empty_range = v.empty() || *std::min_element(v.begin(), v.end()) == *std::max_element(v.begin(), v.end());
+    const bool empty_range =
+        v.empty() || *std::min_element(v.begin(), v.end()) == *std::max_element(v.begin(), v.end());
     for (std::size_t k = 0; k < boxed.size(); ++k) {
         double t = empty_range || hi <= lo ? 1.0 : (w[k] - lo) / (hi - lo);
         int level = int(std::floor(t * (wanted_levels - 1)));
@@ -127,9 +132,13 @@ LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_level
 
 std::span<const EnumEntry<LevelMode>> level_modes() { return level_mode_table; }
 std::span<const EnumEntry<Interpolation>> interpolations() { return interpolation_table; }
-bool parse_level_mode(const std::string& name, LevelMode& mode) { return parse_enum(level_modes(), name, mode); }
+bool parse_level_mode(const std::string& name, LevelMode& mode) {
+    return parse_enum(level_modes(), name, mode);
+}
 const char* level_mode_name(LevelMode mode) { return enum_name(level_modes(), mode); }
-bool parse_interpolation(const std::string& name, Interpolation& value) { return parse_enum(interpolations(), name, value); }
+bool parse_interpolation(const std::string& name, Interpolation& value) {
+    return parse_enum(interpolations(), name, value);
+}
 const char* interpolation_name(Interpolation value) { return enum_name(interpolations(), value); }
 
 bool is_box_mode(LevelMode mode) {

@@ -3,8 +3,8 @@
 // L(n) < c is replaced, with its sub-tree, by its box.
 #pragma once
 #include "base/enum_table.h"
-#include "toolkit/model/model.h"
 #include "toolkit/lod/pages/texture_sizing.h"
+#include "toolkit/model/model.h"
 
 #include <optional>
 #include <span>
@@ -21,8 +21,10 @@ enum class LevelMode {
     box_area,
     box_diagonal,
     box_max_extent,
-    error_greedy,  // beyond the manual: open the node that buys the most estimated error per byte (error_greedy.h)
-    hybrid,        // beyond the manual: per node a box, a simplified sub-tree or its geometry, by measured error per byte (hybrid.h)
+    error_greedy,  // beyond the manual: open the node that buys the most estimated error per byte
+                   // (error_greedy.h)
+    hybrid,  // beyond the manual: per node a box, a simplified sub-tree or its geometry, by measured error
+             // per byte (hybrid.h)
 };
 enum class Interpolation { linear, log, rank };  // how box modes turn v into t
 
@@ -34,10 +36,11 @@ bool parse_interpolation(const std::string& name, Interpolation& interpolation);
 const char* interpolation_name(Interpolation interpolation);
 bool is_box_mode(LevelMode mode);
 bool uses_boxes(LevelMode mode);  // the box modes, error-greedy and hybrid
-bool orders_by_bytes(LevelMode mode);  // error-greedy and hybrid: their levels can take byte budgets (level_budgets.h)
+bool orders_by_bytes(
+    LevelMode mode);  // error-greedy and hybrid: their levels can take byte budgets (level_budgets.h)
 
 struct LevelValues {
-    std::vector<int> level;  // per node
+    std::vector<int> level;   // per node
     int obtained_levels = 1;  // N
 };
 
@@ -46,7 +49,8 @@ struct LevelValues {
 // level 0; N = wanted_levels). Every mode at once: level_values.h.
 LevelValues top_down_levels(const Model& model);
 LevelValues bottom_up_levels(const Model& model, bool same_siblings);
-LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
+LevelValues box_mode_levels(const Model& model, LevelMode mode, int wanted_levels,
+                            Interpolation interpolation,
                             const std::vector<std::optional<OrientedBox>>& boxes);
 
 }  // namespace boxlod

@@ -11,9 +11,10 @@ namespace boxlod {
 // for both. error-greedy prices boxes with `sizing` (its distance aside) and
 // `textured`. hybrid's levels come from its plan, which renders (hybrid.h:
 // hybrid_levels; start_lod makes it): not here.
-LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels, Interpolation interpolation,
-                                 const std::vector<std::optional<OrientedBox>>& boxes, const TextureSizing& sizing = {},
-                                 bool textured = true);
+LevelValues compute_level_values(const Model& model, LevelMode mode, int wanted_levels,
+                                 Interpolation interpolation,
+                                 const std::vector<std::optional<OrientedBox>>& boxes,
+                                 const TextureSizing& sizing = {}, bool textured = true);
 
 // N alone: the wanted levels for the modes that take them (box modes,
 // error-greedy, hybrid), the hierarchy's for the others.

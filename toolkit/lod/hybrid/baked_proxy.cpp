@@ -75,7 +75,8 @@ std::array<Primitive, 6> baked_proxy_faces(const std::vector<Primitive>& simplif
             const OrientedBoxFace& face = faces[std::size_t(f)];
             Primitive& q = out[std::size_t(f)];
             for (int i = 0; i < 3; ++i) {
-                auto [at, added] = copied[std::size_t(f)].try_emplace(v[i], std::uint32_t(q.positions.size()));
+                auto [at, added] =
+                    copied[std::size_t(f)].try_emplace(v[i], std::uint32_t(q.positions.size()));
                 if (added) {
                     q.positions.push_back(p.positions[v[i]]);
                     q.normals.push_back(face.normal);
@@ -94,7 +95,8 @@ std::uint64_t baked_proxy_mesh_bytes(const std::array<Primitive, 6>& faces) {
     std::uint64_t bytes = 0;
     for (const Primitive& q : faces) {
         const VertexLayout layout{true, true, true, q.positions.size() <= 65535 ? 2 : 4};
-        bytes += q.positions.size() * layout.vertex_bytes() + q.indices.size() * std::uint64_t(layout.index_bytes);
+        bytes +=
+            q.positions.size() * layout.vertex_bytes() + q.indices.size() * std::uint64_t(layout.index_bytes);
     }
     return bytes;
 }

@@ -44,7 +44,8 @@ std::vector<Primitive> merge_primitives(const Model& model, const std::vector<in
     for (int n : nodes)
         for (const Primitive& primitive : model.nodes[std::size_t(n)].primitives) {
             if (primitive.indices.empty()) continue;
-            GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(), !primitive.tangents.empty()};
+            GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(),
+                         !primitive.tangents.empty()};
             auto [it, added] = index.try_emplace(key, merged.size());
             if (added) merged.emplace_back().material = key.material;
             append(merged[it->second], primitive);
@@ -53,7 +54,8 @@ std::vector<Primitive> merge_primitives(const Model& model, const std::vector<in
 }
 
 void remap_vertices(Primitive& primitive, const std::vector<unsigned>& remap, std::size_t unique) {
-    meshopt_remapIndexBuffer(primitive.indices.data(), primitive.indices.data(), primitive.indices.size(), remap.data());
+    meshopt_remapIndexBuffer(primitive.indices.data(), primitive.indices.data(), primitive.indices.size(),
+                             remap.data());
     remap_attribute(primitive.positions, remap, unique);
     remap_attribute(primitive.normals, remap, unique);
     remap_attribute(primitive.uvs, remap, unique);
@@ -61,17 +63,23 @@ void remap_vertices(Primitive& primitive, const std::vector<unsigned>& remap, st
 }
 
 void weld(Primitive& primitive) {
-    std::vector<meshopt_Stream> streams = {{primitive.positions.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)}};
-    if (!primitive.normals.empty()) streams.push_back({primitive.normals.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)});
-    if (!primitive.uvs.empty()) streams.push_back({primitive.uvs.data(), sizeof(Eigen::Vector2f), sizeof(Eigen::Vector2f)});
-    if (!primitive.tangents.empty()) streams.push_back({primitive.tangents.data(), sizeof(Eigen::Vector4f), sizeof(Eigen::Vector4f)});
+    std::vector<meshopt_Stream> streams = {
+        {primitive.positions.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)}};
+    if (!primitive.normals.empty())
+        streams.push_back({primitive.normals.data(), sizeof(Eigen::Vector3f), sizeof(Eigen::Vector3f)});
+    if (!primitive.uvs.empty())
+        streams.push_back({primitive.uvs.data(), sizeof(Eigen::Vector2f), sizeof(Eigen::Vector2f)});
+    if (!primitive.tangents.empty())
+        streams.push_back({primitive.tangents.data(), sizeof(Eigen::Vector4f), sizeof(Eigen::Vector4f)});
     std::vector<unsigned> remap(primitive.positions.size());
-    std::size_t unique = meshopt_generateVertexRemapMulti(remap.data(), primitive.indices.data(), primitive.indices.size(),
-                                                          primitive.positions.size(), streams.data(), streams.size());
+    std::size_t unique =
+        meshopt_generateVertexRemapMulti(remap.data(), primitive.indices.data(), primitive.indices.size(),
+                                         primitive.positions.size(), streams.data(), streams.size());
     remap_vertices(primitive, remap, unique);
 }
 
-Model model_of_primitives(const Model& source, std::vector<Primitive> primitives, const std::string& root_name) {
+Model model_of_primitives(const Model& source, std::vector<Primitive> primitives,
+                          const std::string& root_name) {
     Model result;
     keep_provenance(source, result);
     result.materials = source.materials;
@@ -84,7 +92,8 @@ Model model_of_primitives(const Model& source, std::vector<Primitive> primitives
         const int material = primitive.material;
         auto [it, added] = node_of_material.try_emplace(material, 0);
         if (added)
-            it->second = add_node(result, 0, material >= 0 ? source.materials[std::size_t(material)].name : "default material");
+            it->second = add_node(
+                result, 0, material >= 0 ? source.materials[std::size_t(material)].name : "default material");
         result.nodes[std::size_t(it->second)].primitives.push_back(std::move(primitive));
     }
     return result;

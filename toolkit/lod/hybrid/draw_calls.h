@@ -24,7 +24,8 @@ void remap_vertices(Primitive& primitive, const std::vector<unsigned>& remap, st
 
 // `source`'s materials, textures, file and LoD mark with a root named
 // `root_name` whose children, one per material and named after it, hold `primitives`.
-Model model_of_primitives(const Model& source, std::vector<Primitive> primitives, const std::string& root_name);
+Model model_of_primitives(const Model& source, std::vector<Primitive> primitives,
+                          const std::string& root_name);
 
 // The model with one node per draw call: equal materials merged first
 // (toolkit/model/material_merge.h), then every primitive of a material merged and

@@ -1,17 +1,17 @@
 #include "toolkit/lod/hybrid/hybrid.h"
 
 #include "base/parallel.h"
-#include "toolkit/lod/pages/bake.h"
+#include "toolkit/lod/cut/kept_subtrees.h"
+#include "toolkit/lod/cut/level_budgets.h"
 #include "toolkit/lod/hybrid/baked_proxy.h"
 #include "toolkit/lod/hybrid/hybrid_measuring.h"
 #include "toolkit/lod/hybrid/hybrid_order.h"
-#include "toolkit/lod/hybrid/proxy_drawables.h"
-#include "toolkit/model/framing.h"
-#include "toolkit/lod/cut/kept_subtrees.h"
-#include "toolkit/lod/cut/level_budgets.h"
-#include "toolkit/model/model_subtree.h"
 #include "toolkit/lod/hybrid/paid_textures.h"
+#include "toolkit/lod/hybrid/proxy_drawables.h"
 #include "toolkit/lod/hybrid/simplification.h"
+#include "toolkit/lod/pages/bake.h"
+#include "toolkit/model/framing.h"
+#include "toolkit/model/model_subtree.h"
 #include "toolkit/model/vertex_layout.h"
 
 #include <algorithm>
@@ -33,7 +33,8 @@ constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 
 // Large sub-trees by edge collapse also at 1/sqrt(2) and 1/sqrt(8): a budget
 // between two halvings otherwise draws the coarser one
 // (docs/cost.md: The hybrid level mode).
-constexpr std::array<double, 9> large_simplified_shares = {1, 0.7071, 0.5, 0.3536, 0.25, 0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,      0.3536,  0.25,
+                                                           0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: the many smaller sub-trees cost most of
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
@@ -84,14 +85,16 @@ struct BakedSum {
 
 struct NodeMeasurement {
     bool simplified_made = false, baked_made = false;
-    std::vector<SimplifiedSubtree> simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
-    std::vector<SimplifiedSubtree> baked;       // baked proxies' geometry (baked_geometry)
-    float pixel = 0;  // the measuring view the sums below are of (0: none yet)
+    std::vector<SimplifiedSubtree>
+        simplified;  // by edge collapse, then clustering: each simpler than the one before, in share order
+    std::vector<SimplifiedSubtree> baked;  // baked proxies' geometry (baked_geometry)
+    float pixel = 0;                       // the measuring view the sums below are of (0: none yet)
     int side = 0;
-    std::map<float, double> box_sums;     // per texel size (m) of the baked box
+    std::map<float, double> box_sums;                   // per texel size (m) of the baked box
     std::map<float, std::vector<BakedSum>> baked_sums;  // per texel size, per geometry in `baked`
     bool simplified_measured = false;
-    std::vector<double> simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
+    std::vector<double>
+        simplified_sums;  // per simplified sub-tree; 0 for one of the sub-tree's own triangle count
 };
 
 }  // namespace
@@ -122,8 +125,9 @@ std::size_t triangle_count(const std::vector<Primitive>& primitives) {
 }
 
 // Node n's simplified sub-trees, each simpler than the one before (made once per model).
-const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n, std::size_t subtree_triangles,
-                                                           NodeMeasurement& measurement) {
+const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n,
+                                                          std::size_t subtree_triangles,
+                                                          NodeMeasurement& measurement) {
     if (measurement.simplified_made) return measurement.simplified;
     SimplifyOptions options;
     options.budget_by_area = true;  // walls keep their few triangles (docs/sweeps.md: simplification-best)
@@ -133,13 +137,15 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
         const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
-        for (double share : finer ? std::span<const double>(large_simplified_shares) : std::span<const double>(simplified_shares)) {
+        for (double share : finer ? std::span<const double>(large_simplified_shares)
+                                  : std::span<const double>(simplified_shares)) {
             const auto target = std::size_t(double(subtree_triangles) * share);
             if (target < fewest_simplified_triangles) break;
             if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
-            if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // nothing left, or no simpler than the last
+            if (simplified.triangles == 0 || simplified.triangles >= previous)
+                continue;  // nothing left, or no simpler than the last
             previous = simplified.triangles;
             measurement.simplified.push_back(std::move(simplified));
         }
@@ -197,13 +203,16 @@ std::vector<const Primitive*> sibling_primitives(const Model& model, int n, cons
             for (const Primitive& p : model.nodes[std::size_t(k)].primitives) {
                 Eigen::AlignedBox3f bounds;
                 for (const Eigen::Vector3f& v : p.positions) bounds.extend(v);
-                if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach) others.push_back(&p);
+                if (!p.positions.empty() && bounds.squaredExteriorDistance(center) <= reach * reach)
+                    others.push_back(&p);
             }
     return others;
 }
 
 // Baked proxies are offered where asked for and the levels are textured (they draw their box's pages).
-bool baked_wanted(const HybridSettings& settings) { return settings.baked_proxies && settings.mode != RenderMode::untextured; }
+bool baked_wanted(const HybridSettings& settings) {
+    return settings.baked_proxies && settings.mode != RenderMode::untextured;
+}
 
 // What a node's candidates are drawn among: the rest of the model near it, in its materials' base
 // colours, untextured: it only hides and is hidden, the same in every render. Its opaque part is
@@ -211,15 +220,17 @@ bool baked_wanted(const HybridSettings& settings) { return settings.baked_proxie
 // depth_from_frame), its blended part with each candidate: the pictures of one render of the
 // context and the candidate, at a fraction of the cost.
 struct MeasuringContext {
-    Drawable drawable;           // owns the meshes `blended` points into
+    Drawable drawable;  // owns the meshes `blended` points into
     std::vector<Batch> blended;
     std::vector<Frame> underlay;
 };
 
 MeasuringContext measuring_context(const Model& model, int n, const MeasuringView& view, RenderMode mode) {
     std::vector<Material> plain = model.materials;
-    for (Material& m : plain) m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
-    MeasuringContext context{make_drawable(plain, DecodedTextures{}, sibling_primitives(model, n, view)), {}, {}};
+    for (Material& m : plain)
+        m = Material{.name = m.name, .base_color = m.base_color, .alpha_mode = m.alpha_mode};
+    MeasuringContext context{
+        make_drawable(plain, DecodedTextures{}, sibling_primitives(model, n, view)), {}, {}};
     std::vector<Batch> opaque;
     for (const Batch& batch : context.drawable.batches)
         (batch.surface.alpha_mode == AlphaMode::blend ? context.blended : opaque).push_back(batch);
@@ -231,8 +242,9 @@ MeasuringContext measuring_context(const Model& model, int n, const MeasuringVie
 // simplified sub-trees in `view`, rendered among their siblings, but those
 // `measurement` holds for this view.
 void measure_error_sums(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
-                        const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles, const Drawable& subtree,
-                        const MeasuringView& view, const HybridSettings& settings, NodeMeasurement& measurement) {
+                        const std::vector<BoxTexels>& box_texels, std::size_t subtree_triangles,
+                        const Drawable& subtree, const MeasuringView& view, const HybridSettings& settings,
+                        NodeMeasurement& measurement) {
     if (measurement.pixel != view.pixel || measurement.side != view.side) {
         measurement.box_sums.clear();
         measurement.baked_sums.clear();
@@ -243,7 +255,8 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
     }
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
-        if (!measurement.box_sums.count(texels.size) || (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
+        if (!measurement.box_sums.count(texels.size) ||
+            (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
             missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
     const MeasuringContext context = measuring_context(model, n, view, settings.mode);
@@ -253,28 +266,35 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
         return compared_views(render_views(batches, view, settings.mode, &context.underlay));
     };
     const auto original = among_context(subtree);
-    const std::vector<SimplifiedSubtree>& simplified_list = simplified_subtrees(model, n, subtree_triangles, measurement);
+    const std::vector<SimplifiedSubtree>& simplified_list =
+        simplified_subtrees(model, n, subtree_triangles, measurement);
     const bool textured = settings.mode != RenderMode::untextured;
     for (const BoxTexels& texels : missing) {
-        const std::array<BakedFace, 6> baked = textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
-        measurement.box_sums[texels.size] = pixel_error_sum(original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
+        const std::array<BakedFace, 6> baked =
+            textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
+        measurement.box_sums[texels.size] = pixel_error_sum(
+            original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
         std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
         if (!baked_wanted(settings)) continue;
         for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
-            std::array<Primitive, 6> faces = baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
+            std::array<Primitive, 6> faces =
+                baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
             BakedSum measured{0, baked_proxy_mesh_bytes(faces), {}};
             for (std::size_t f = 0; f < 6; ++f) measured.sampled[f] = !faces[f].indices.empty();
-            measured.sum = pixel_error_sum(original, among_context(baked_proxy_drawable(std::move(faces), baked)->drawable));
+            measured.sum = pixel_error_sum(
+                original, among_context(baked_proxy_drawable(std::move(faces), baked)->drawable));
             baked_sums.push_back(measured);
         }
     }
     if (measurement.simplified_measured) return;
     for (const SimplifiedSubtree& simplified : simplified_list) {
         double sum = 0;
-        if (simplified.triangles < subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
+        if (simplified.triangles <
+            subtree_triangles) {  // else only merged and welded: the same triangles, nothing to measure
             std::vector<const Primitive*> primitives;
             for (const Primitive& p : simplified.primitives) primitives.push_back(&p);
-            sum = pixel_error_sum(original, among_context(make_drawable(model.materials, textures, primitives)));
+            sum = pixel_error_sum(original,
+                                  among_context(make_drawable(model.materials, textures, primitives)));
         }
         measurement.simplified_sums.push_back(sum);
     }
@@ -282,8 +302,9 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
 }
 
 // The baked proxies measured with its box at `texel_scale` (`sums`, per geometry in measurement.baked).
-void add_baked_proxies(const OrientedBox& box, int texel_scale, const std::vector<BakedSum>& sums, const NodeMeasurement& measurement,
-                       const MeasuringView& view, const HybridSettings& settings, std::vector<Proxy>& proxies) {
+void add_baked_proxies(const OrientedBox& box, int texel_scale, const std::vector<BakedSum>& sums,
+                       const NodeMeasurement& measurement, const MeasuringView& view,
+                       const HybridSettings& settings, std::vector<Proxy>& proxies) {
     const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(box);
     const TextureSizing sizing = coarser_sizing(settings.sizing, texel_scale);
     for (std::size_t c = 0; c < sums.size(); ++c) {
@@ -305,8 +326,9 @@ void add_baked_proxies(const OrientedBox& box, int texel_scale, const std::vecto
 // Every proxy of node n, measured (or its measurements reused); then sorted by
 // bytes drawn alone (with the textures they sample), keeping only those that
 // beat every cheaper one and cost less than the sub-tree itself.
-std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n, const OrientedBox& box,
-                                   double subtree_bytes, std::size_t subtree_triangles, const PaidTextures& paid,
+std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& textures, int n,
+                                   const OrientedBox& box, double subtree_bytes,
+                                   std::size_t subtree_triangles, const PaidTextures& paid,
                                    const HybridSettings& settings) {
     const Drawable subtree = make_drawable(model, textures, n);
     const MeasuringView view = measuring_view(subtree.bounds, settings);
@@ -324,12 +346,14 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         if (scale > 1 && box_proxy.bytes > coarser_box_most_bytes * proxies.back().bytes) continue;
         const float texel = scale == 1 ? view.pixel : float(scale * pixel);  // the measurements' key
         if (scale > 1 && !(texel > view.pixel)) continue;
-        box_texels.push_back({texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});
+        box_texels.push_back(
+            {texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});
         proxies.push_back(std::move(box_proxy));
     }
     NodeMeasurement own;
     NodeMeasurement& measurement = settings.measurements ? settings.measurements->nodes[std::size_t(n)] : own;
-    measure_error_sums(model, textures, n, box, box_texels, subtree_triangles, subtree, view, settings, measurement);
+    measure_error_sums(model, textures, n, box, box_texels, subtree_triangles, subtree, view, settings,
+                       measurement);
     for (std::size_t k = 0; k < proxies.size(); ++k)
         proxies[k].error = measured_error(measurement.box_sums.at(box_texels[k].size), view, settings);
     for (std::size_t k = 0; k < measurement.simplified.size(); ++k) {
@@ -343,25 +367,30 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
     }
     for (std::size_t k = 0; k < box_texels.size(); ++k)
         if (baked_wanted(settings))
-            add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size), measurement, view, settings, proxies);
+            add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size),
+                              measurement, view, settings, proxies);
     std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
     for (Proxy& proxy : proxies) {
         const double alone = proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy));
         by_bytes.emplace_back(alone, std::move(proxy));
     }
-    std::stable_sort(by_bytes.begin(), by_bytes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(by_bytes.begin(), by_bytes.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<Proxy> kept;
     for (auto& [alone, proxy] : by_bytes)
-        if (alone < subtree_bytes && (kept.empty() || proxy.error < kept.back().error)) kept.push_back(std::move(proxy));
+        if (alone < subtree_bytes && (kept.empty() || proxy.error < kept.back().error))
+            kept.push_back(std::move(proxy));
     return kept;
 }
 
 // Per node, after the first `count` of `steps`: its proxy, or -1 where it keeps its geometry.
-std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps, std::size_t count) {
+std::vector<int> state_after(const HybridPlan& plan, const std::vector<HybridStep>& steps,
+                             std::size_t count) {
     std::vector<int> state(plan.proxies.size(), -1);
     for (std::size_t n = 0; n < plan.proxies.size(); ++n)
         if (!plan.proxies[n].empty()) state[n] = 0;
-    for (std::size_t k = 0; k < std::min(count, steps.size()); ++k) state[std::size_t(steps[k].node)] = steps[k].proxy;
+    for (std::size_t k = 0; k < std::min(count, steps.size()); ++k)
+        state[std::size_t(steps[k].node)] = steps[k].proxy;
     return state;
 }
 
@@ -381,18 +410,23 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
     // for the first share that simplifies). Proxies are then kept by their
     // bytes alone, with every texture they sample.
     const PaidTextures paid = paid_textures(model);
-    const std::vector<std::vector<int>> sampled = subtree_textures(model, paid), exclusive = exclusive_textures(model, paid);
+    const std::vector<std::vector<int>> sampled = subtree_textures(model, paid),
+                                        exclusive = exclusive_textures(model, paid);
     std::vector<double> alone(model.nodes.size());
-    for (std::size_t n = 0; n < model.nodes.size(); ++n) alone[n] = double(bytes[n]) + bytes_of(paid, sampled[n]);
+    for (std::size_t n = 0; n < model.nodes.size(); ++n)
+        alone[n] = double(bytes[n]) + bytes_of(paid, sampled[n]);
     std::vector<int> measured;
     const TextureSizing coarsest = coarser_sizing(settings.sizing, box_texel_scales.back());
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        if (boxes[n] && (box_bytes_estimate(*boxes[n], coarsest, textured) < double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
-                         double(triangles[n]) * smallest_simplified_share_of_interest >= double(fewest_simplified_triangles)))
+        if (boxes[n] && (box_bytes_estimate(*boxes[n], coarsest, textured) <
+                             double(bytes[n]) + bytes_of(paid, exclusive[n]) ||
+                         double(triangles[n]) * smallest_simplified_share_of_interest >=
+                             double(fewest_simplified_triangles)))
             measured.push_back(int(n));
     parallel_for(measured.size(), settings.threads, [&](std::size_t i) {
         const auto n = std::size_t(measured[i]);
-        plan.proxies[n] = measure_proxies(model, textures, int(n), *boxes[n], alone[n], triangles[n], paid, settings);
+        plan.proxies[n] =
+            measure_proxies(model, textures, int(n), *boxes[n], alone[n], triangles[n], paid, settings);
     });
     order_hybrid_plan(model, plan);
     return plan;
@@ -402,10 +436,13 @@ void order_hybrid_plan(const Model& model, HybridPlan& plan) {
     plan.steps.clear();
     plan.bytes.clear();
     plan.error.clear();
-    order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes, plan.error);
+    order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes,
+                 plan.error);
 }
 
-std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) { return state_after(plan, plan.steps, steps); }
+std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) {
+    return state_after(plan, plan.steps, steps);
+}
 
 HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
     std::vector<HybridStep> steps;
@@ -427,11 +464,13 @@ Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int
             if (proxy.kind == ProxyKind::simplified) cut.simplified_nodes.emplace_back(n, s);
             if (proxy.kind == ProxyKind::baked) cut.baked_nodes.push_back({n, s, &proxy.primitives});
             if (proxy.kind == ProxyKind::box) cut.box_nodes.push_back(n);
-            if (proxy.kind != ProxyKind::simplified && proxy.texel_scale > 1) cut.box_texel_scales[n] = proxy.texel_scale;
+            if (proxy.kind != ProxyKind::simplified && proxy.texel_scale > 1)
+                cut.box_texel_scales[n] = proxy.texel_scale;
             continue;
         }
         if (node.has_geometry()) cut.geometry_nodes.push_back(n);
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back(*child);
     }
     return cut;
 }
@@ -440,8 +479,10 @@ double hybrid_cut_error(const HybridPlan& plan, const Cut& cut) {
     double error = 0;
     for (int n : cut.box_nodes)
         for (const Proxy& proxy : plan.proxies[std::size_t(n)])
-            if (proxy.kind == ProxyKind::box && proxy.texel_scale == texel_scale(cut, n)) error += proxy.error;
-    for (auto [n, proxy] : cut.simplified_nodes) error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
+            if (proxy.kind == ProxyKind::box && proxy.texel_scale == texel_scale(cut, n))
+                error += proxy.error;
+    for (auto [n, proxy] : cut.simplified_nodes)
+        error += plan.proxies[std::size_t(n)][std::size_t(proxy)].error;
     for (const BakedNode& baked : cut.baked_nodes)
         if (baked.proxy >= 0) error += plan.proxies[std::size_t(baked.node)][std::size_t(baked.proxy)].error;
     return error;

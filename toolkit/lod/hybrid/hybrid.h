@@ -17,12 +17,12 @@
 // facades, simplification on curved or thin parts.
 #pragma once
 #include "renderer/renderer.h"
-#include "toolkit/lod/cut/cut.h"
-#include "toolkit/lod/hybrid/hybrid_proxy.h"
 #include "toolkit/drawing/drawable.h"
+#include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/cut/level_modes.h"
-#include "toolkit/model/model.h"
+#include "toolkit/lod/hybrid/hybrid_proxy.h"
 #include "toolkit/lod/pages/texture_sizing.h"
+#include "toolkit/model/model.h"
 
 #include <cstddef>
 #include <memory>
@@ -37,8 +37,9 @@ struct HybridPlan {
     // sub-tree is drawn as it is wherever it is reached (no geometry, or
     // geometry cheaper than any proxy).
     std::vector<std::vector<Proxy>> proxies;
-    std::vector<HybridStep> steps;      // from the root at its cheapest proxy to the original
-    std::vector<double> bytes, error;   // after k steps: bytes (meshes, box estimates, each texture once) and the summed proxy errors
+    std::vector<HybridStep> steps;  // from the root at its cheapest proxy to the original
+    std::vector<double> bytes,
+        error;  // after k steps: bytes (meshes, box estimates, each texture once) and the summed proxy errors
 };
 
 // What plan_hybrid measured, kept for the plans of the same model at other
@@ -53,8 +54,8 @@ std::shared_ptr<HybridMeasurements> make_hybrid_measurements(const Model& model)
 struct HybridSettings {
     TextureSizing sizing;
     RenderMode mode = RenderMode::normal;
-    int threads = 0;      // nodes measured in parallel; the plan never depends on it
-    int max_side = 48;    // measuring renders at most this many pixels a side (coarser pixels weigh more)
+    int threads = 0;    // nodes measured in parallel; the plan never depends on it
+    int max_side = 48;  // measuring renders at most this many pixels a side (coarser pixels weigh more)
     HybridMeasurements* measurements = nullptr;  // set: reused and filled (the same plan as without)
     bool baked_proxies = false;  // also each sub-tree's baked proxies (textured modes; baked_proxy.h)
 };

@@ -20,7 +20,8 @@ void downsample(Frame& frame) {
     for (int y = 0; y < frame.height; ++y)
         for (int x = 0; x < frame.width; ++x)
             color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
-                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / float(supersampling * supersampling);
+                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] /
+                float(supersampling * supersampling);
     frame.width = w;
     frame.height = h;
     frame.color = std::move(color);
@@ -29,13 +30,15 @@ void downsample(Frame& frame) {
 }
 
 ComparedPixel compared_pixel(const Eigen::Vector4f& linear) {
-    return {std::clamp(linear.w(), 0.0f, 1.0f), {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
+    return {std::clamp(linear.w(), 0.0f, 1.0f),
+            {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
 }
 
 double compared_pixel_error(const ComparedPixel& a, const ComparedPixel& b) {
     double colour = 0;
     for (int c = 0; c < 3; ++c) colour += std::abs(a.srgb[std::size_t(c)] - b.srgb[std::size_t(c)]);
-    return double(std::abs(a.coverage - b.coverage)) + double(std::min(a.coverage, b.coverage)) * colour / (3 * 255.0);
+    return double(std::abs(a.coverage - b.coverage)) +
+           double(std::min(a.coverage, b.coverage)) * colour / (3 * 255.0);
 }
 
 }  // namespace
@@ -47,7 +50,8 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
     for (int k = 0; k < measuring_directions; ++k) {
         const int corner = measuring_corners[std::size_t(k)];
         const Eigen::Vector3f direction =
-            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f).normalized();
+            Eigen::Vector3f(corner & 1 ? 1.f : -1.f, corner & 2 ? 1.f : -1.f, corner & 4 ? 1.f : -1.f)
+                .normalized();
         RenderSettings settings;
         settings.mode = mode;
         settings.threads = 1;  // nodes are measured in parallel
@@ -61,8 +65,9 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
         camera.near_plane = r * 0.5f;
         camera.far_plane = r * 3.5f;
         settings.light = light_for_camera(camera);
-        frames.push_back(underlay ? (*underlay)[std::size_t(k)]
-                                  : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
+        frames.push_back(underlay
+                             ? (*underlay)[std::size_t(k)]
+                             : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
         render(batches, settings, frames.back());
         if (downsampled) downsample(frames.back());
     }
@@ -79,10 +84,12 @@ std::vector<std::vector<ComparedPixel>> compared_views(const std::vector<Frame>&
     return views;
 }
 
-double pixel_error_sum(const std::vector<std::vector<ComparedPixel>>& original, const std::vector<std::vector<ComparedPixel>>& proxy) {
+double pixel_error_sum(const std::vector<std::vector<ComparedPixel>>& original,
+                       const std::vector<std::vector<ComparedPixel>>& proxy) {
     double sum = 0;
     for (std::size_t v = 0; v < original.size(); ++v)
-        for (std::size_t i = 0; i < original[v].size(); ++i) sum += compared_pixel_error(original[v][i], proxy[v][i]);
+        for (std::size_t i = 0; i < original[v].size(); ++i)
+            sum += compared_pixel_error(original[v][i], proxy[v][i]);
     return sum;
 }
 

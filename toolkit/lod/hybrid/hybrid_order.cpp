@@ -25,7 +25,11 @@ namespace {
 class Planner {
 public:
     Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
-        : model_(model), proxies_(proxies), budget_(budget), state_(model.nodes.size(), -1), paid_(paid_textures(model)),
+        : model_(model),
+          proxies_(proxies),
+          budget_(budget),
+          state_(model.nodes.size(), -1),
+          paid_(paid_textures(model)),
           drawn_(paid_) {
         subtree_bytes_.assign(model.nodes.size(), 0);
         own_bytes_.assign(model.nodes.size(), 0);
@@ -49,7 +53,8 @@ public:
         while (!frontier_.empty()) {
             const Move move = std::get<3>(*frontier_.begin());
             frontier_.erase(frontier_.begin());
-            if (weigh(move.node, move.proxy).cost != move.cost || bytes.back() + move.cost > budget_ * (1 + 1e-12)) {
+            if (weigh(move.node, move.proxy).cost != move.cost ||
+                bytes.back() + move.cost > budget_ * (1 + 1e-12)) {
                 consider(move.node, budget_ - bytes.back());  // its best now, that fits, if any
                 continue;
             }
@@ -78,7 +83,8 @@ private:
     using Key = std::tuple<int, double, int, Move>;
     struct KeyOrder {
         bool operator()(const Key& a, const Key& b) const {
-            return std::tie(std::get<0>(a), std::get<1>(a), std::get<2>(a)) < std::tie(std::get<0>(b), std::get<1>(b), std::get<2>(b));
+            return std::tie(std::get<0>(a), std::get<1>(a), std::get<2>(a)) <
+                   std::tie(std::get<0>(b), std::get<1>(b), std::get<2>(b));
         }
     };
 
@@ -136,7 +142,9 @@ private:
             if (m.cost <= room * (1 + 1e-12) + 1e-9 && (!best || KeyOrder{}(key(m), *best))) best = key(m);
         };
         offer(weigh(n, -1));
-        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies_[std::size_t(n)].size(); ++j) offer(weigh(n, int(j)));
+        for (std::size_t j = std::size_t(state_[std::size_t(n)]) + 1; j < proxies_[std::size_t(n)].size();
+             ++j)
+            offer(weigh(n, int(j)));
         if (best) frontier_.insert(*best);
     }
 
@@ -154,8 +162,8 @@ private:
 
 }  // namespace
 
-void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget, std::vector<HybridStep>& steps,
-                  std::vector<double>& bytes, std::vector<double>& error) {
+void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
+                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
     Planner(model, proxies, budget).run(steps, bytes, error);
 }
 

@@ -19,7 +19,7 @@ std::vector<int> proxy_textures(const PaidTextures& paid, const Proxy& proxy);
 // The steps taken within `budget` bytes (infinity: to the original), and the
 // bytes and error before any step and after each; deterministic, ties to the
 // lower node index.
-void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget, std::vector<HybridStep>& steps,
-                  std::vector<double>& bytes, std::vector<double>& error);
+void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
+                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error);
 
 }  // namespace boxlod

@@ -15,11 +15,14 @@ enum class ProxyKind { box, simplified, baked };
 // One way to draw a sub-tree instead of its geometry.
 struct Proxy {
     ProxyKind kind = ProxyKind::box;
-    std::vector<Primitive> primitives;  // simplified: the sub-tree simplified (the model's materials); baked: positions only
+    std::vector<Primitive>
+        primitives;  // simplified: the sub-tree simplified (the model's materials); baked: positions only
     bool clustered = false;  // simplified by vertex clustering (large sub-trees), else by edge collapse
-    int texel_scale = 1;  // box, baked: its texels as at this many times the sizing distance
-    double bytes = 0;  // box: box_bytes_estimate at its texels; simplified: its mesh bytes; baked: both (baked_proxy.h)
-    double error = 0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
+    int texel_scale = 1;     // box, baked: its texels as at this many times the sizing distance
+    double bytes =
+        0;  // box: box_bytes_estimate at its texels; simplified: its mesh bytes; baked: both (baked_proxy.h)
+    double error =
+        0;  // measured: pixels of the sizing view (hybrid_pixel_error summed, mean over the directions)
 };
 
 struct HybridStep {

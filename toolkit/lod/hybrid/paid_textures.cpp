@@ -23,7 +23,8 @@ PaidTextures paid_textures(const Model& model) {
     for (std::size_t m = 0; m < model.materials.size(); ++m) {
         std::vector<int>& textures = paid.of_material[m];
         for (auto [index, use, map] : texture_slots(model.materials[m]))
-            if (const auto it = of_texture.find(index); it != of_texture.end()) textures.push_back(it->second);
+            if (const auto it = of_texture.find(index); it != of_texture.end())
+                textures.push_back(it->second);
         std::sort(textures.begin(), textures.end());
         textures.erase(std::unique(textures.begin(), textures.end()), textures.end());
     }
@@ -75,7 +76,8 @@ std::vector<std::vector<int>> subtree_textures(const Model& model, const PaidTex
 
 std::vector<std::vector<int>> exclusive_textures(const Model& model, const PaidTextures& paid) {
     std::vector<int> depth(model.nodes.size(), 0);
-    for (std::size_t n = 1; n < model.nodes.size(); ++n) depth[n] = depth[std::size_t(model.nodes[n].parent)] + 1;
+    for (std::size_t n = 1; n < model.nodes.size(); ++n)
+        depth[n] = depth[std::size_t(model.nodes[n].parent)] + 1;
     auto common_ancestor = [&](int a, int b) {
         while (a != b) {
             if (depth[std::size_t(a)] < depth[std::size_t(b)]) std::swap(a, b);
@@ -87,14 +89,17 @@ std::vector<std::vector<int>> exclusive_textures(const Model& model, const PaidT
     std::vector<int> lowest(paid.bytes.size(), -1);  // per texture: the lowest common ancestor of its nodes
     const std::vector<std::vector<int>> own = node_textures(model, paid);
     for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        for (int t : own[n]) lowest[std::size_t(t)] = lowest[std::size_t(t)] < 0 ? int(n) : common_ancestor(lowest[std::size_t(t)], int(n));
+        for (int t : own[n])
+            lowest[std::size_t(t)] =
+                lowest[std::size_t(t)] < 0 ? int(n) : common_ancestor(lowest[std::size_t(t)], int(n));
     std::vector<std::vector<int>> textures(model.nodes.size());
     for (std::size_t t = 0; t < lowest.size(); ++t)
         if (lowest[t] >= 0) textures[std::size_t(lowest[t])].push_back(int(t));
     return united_upwards(model, std::move(textures));
 }
 
-double DrawnTextures::apply(const std::vector<int>& removed, const std::vector<const std::vector<int>*>& added) {
+double DrawnTextures::apply(const std::vector<int>& removed,
+                            const std::vector<const std::vector<int>*>& added) {
     double bytes = 0;  // added before removed: a texture both sample stays paid
     for (const std::vector<int>* part : added)
         for (int t : *part)
@@ -104,7 +109,8 @@ double DrawnTextures::apply(const std::vector<int>& removed, const std::vector<c
     return bytes;
 }
 
-double DrawnTextures::change(const std::vector<int>& removed, const std::vector<const std::vector<int>*>& added) {
+double DrawnTextures::change(const std::vector<int>& removed,
+                             const std::vector<const std::vector<int>*>& added) {
     const double bytes = apply(removed, added);
     for (const std::vector<int>* part : added)
         for (int t : *part) --parts_[std::size_t(t)];

@@ -13,8 +13,10 @@ int add_face_material(const BakedFace* baked, AlphaMode alpha_mode, ProxyDrawabl
     if (baked) {
         material.base_color_texture = material.normal_texture = int(proxy.textures.color.size());
         material.alpha_mode = alpha_mode;
-        proxy.textures.color.push_back(std::make_shared<const MipTexture>(make_texture(baked->color, ColorSpace::srgb, Wrap::clamp)));
-        proxy.textures.linear.push_back(std::make_shared<const MipTexture>(make_texture(baked->normal, ColorSpace::linear, Wrap::clamp)));
+        proxy.textures.color.push_back(
+            std::make_shared<const MipTexture>(make_texture(baked->color, ColorSpace::srgb, Wrap::clamp)));
+        proxy.textures.linear.push_back(
+            std::make_shared<const MipTexture>(make_texture(baked->normal, ColorSpace::linear, Wrap::clamp)));
     }
     proxy.materials.push_back(material);
     return int(proxy.materials.size()) - 1;
@@ -28,25 +30,30 @@ void make_proxy_drawable(ProxyDrawable& proxy) {
 
 }  // namespace
 
-std::array<BakedFace, 6> bake_box(const Drawable& subtree, const OrientedBox& box, const TextureSizing& measuring) {
+std::array<BakedFace, 6> bake_box(const Drawable& subtree, const OrientedBox& box,
+                                  const TextureSizing& measuring) {
     std::array<BakedFace, 6> baked;
     const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(box);
     for (std::size_t f = 0; f < 6; ++f)
-        baked[f] = bake_face(subtree, faces[f], face_texels(2 * faces[f].half_width, 2 * faces[f].half_height, measuring), 1);
+        baked[f] = bake_face(subtree, faces[f],
+                             face_texels(2 * faces[f].half_width, 2 * faces[f].half_height, measuring), 1);
     return baked;
 }
 
-std::unique_ptr<ProxyDrawable> box_proxy_drawable(const OrientedBox& box, const std::array<BakedFace, 6>* baked) {
+std::unique_ptr<ProxyDrawable> box_proxy_drawable(const OrientedBox& box,
+                                                  const std::array<BakedFace, 6>* baked) {
     auto proxy = std::make_unique<ProxyDrawable>();
     const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(box);
     for (std::size_t f = 0; f < 6; ++f) {
         const OrientedBoxFace& face = faces[f];
         Primitive quad;
         quad.material = add_face_material(baked ? &(*baked)[f] : nullptr, AlphaMode::mask, *proxy);
-        const float corners[4][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) over the face, as bake_face's image
+        const float corners[4][2] = {
+            {0, 0}, {0, 1}, {1, 1}, {1, 0}};  // (right, down) over the face, as bake_face's image
         for (const auto& c : corners) {
             const float s = 2 * c[0] - 1, t = 1 - 2 * c[1];
-            quad.positions.push_back(face.center + face.tangent * (s * face.half_width) + face.bitangent * (t * face.half_height));
+            quad.positions.push_back(face.center + face.tangent * (s * face.half_width) +
+                                     face.bitangent * (t * face.half_height));
             quad.normals.push_back(face.normal);
             if (baked) {
                 quad.uvs.emplace_back(c[0], c[1]);
@@ -61,7 +68,8 @@ std::unique_ptr<ProxyDrawable> box_proxy_drawable(const OrientedBox& box, const 
     return proxy;
 }
 
-std::unique_ptr<ProxyDrawable> baked_proxy_drawable(std::array<Primitive, 6> faces, const std::array<BakedFace, 6>& baked) {
+std::unique_ptr<ProxyDrawable> baked_proxy_drawable(std::array<Primitive, 6> faces,
+                                                    const std::array<BakedFace, 6>& baked) {
     auto proxy = std::make_unique<ProxyDrawable>();
     for (std::size_t f = 0; f < 6; ++f) {
         if (faces[f].indices.empty()) continue;

@@ -19,7 +19,8 @@ namespace {
 // Drops the vertices the simplified indices no longer use.
 void compact(Primitive& mesh) {
     std::vector<unsigned> remap(mesh.positions.size());
-    std::size_t unique = meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(), mesh.indices.size(), mesh.positions.size());
+    std::size_t unique = meshopt_optimizeVertexFetchRemap(remap.data(), mesh.indices.data(),
+                                                          mesh.indices.size(), mesh.positions.size());
     remap_vertices(mesh, remap, unique);
 }
 
@@ -28,10 +29,12 @@ using Indices = std::vector<unsigned>;
 // No error bound: the face budget alone decides, as for the LoD levels it is compared with.
 constexpr float no_error_limit = std::numeric_limits<float>::max();
 
-Indices collapse_edges(const Primitive& mesh, const Indices& indices, std::size_t target_triangles, unsigned flags) {
+Indices collapse_edges(const Primitive& mesh, const Indices& indices, std::size_t target_triangles,
+                       unsigned flags) {
     Indices out(indices.size());
-    out.resize(meshopt_simplify(out.data(), indices.data(), indices.size(), mesh.positions[0].data(), mesh.positions.size(),
-                                sizeof(Eigen::Vector3f), target_triangles * 3, no_error_limit, flags, nullptr));
+    out.resize(meshopt_simplify(out.data(), indices.data(), indices.size(), mesh.positions[0].data(),
+                                mesh.positions.size(), sizeof(Eigen::Vector3f), target_triangles * 3,
+                                no_error_limit, flags, nullptr));
     return out;
 }
 
@@ -44,8 +47,9 @@ Indices cluster_vertices(const Primitive& mesh, const Indices& indices, std::siz
     for (int step = 0; step < 16 && low <= high; ++step) {
         std::size_t ask = low + (high - low) / 2;
         out.resize(indices.size());
-        out.resize(meshopt_simplifySloppy(out.data(), indices.data(), indices.size(), mesh.positions[0].data(),
-                                          mesh.positions.size(), sizeof(Eigen::Vector3f), ask * 3, no_error_limit, nullptr));
+        out.resize(meshopt_simplifySloppy(out.data(), indices.data(), indices.size(),
+                                          mesh.positions[0].data(), mesh.positions.size(),
+                                          sizeof(Eigen::Vector3f), ask * 3, no_error_limit, nullptr));
         if (out.size() <= target_triangles * 3) {
             if (out.size() > best.size()) best = out;
             low = ask + 1;
@@ -58,17 +62,22 @@ Indices cluster_vertices(const Primitive& mesh, const Indices& indices, std::siz
 }
 
 // Whether the budget is always reached (possibly by clustering).
-bool clusters(const SimplifyOptions& options) { return options.clustering_fallback || !options.edge_collapse; }
+bool clusters(const SimplifyOptions& options) {
+    return options.clustering_fallback || !options.edge_collapse;
+}
 
 // The welded mesh with at most `target_triangles` triangles when the fallback
 // is on (possibly none: parts too small to cluster vanish).
-Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles, const SimplifyOptions& options) {
+Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles,
+                        const SimplifyOptions& options) {
     Primitive mesh = welded;
     if (mesh.triangle_count() > target_triangles) {
         const unsigned flags = options.lock_border ? meshopt_SimplifyLockBorder : 0;
         const std::size_t target_indices = target_triangles * 3;
-        Indices out = options.edge_collapse ? collapse_edges(mesh, mesh.indices, target_triangles, flags) : mesh.indices;
-        if (clusters(options) && out.size() > target_indices) out = cluster_vertices(mesh, out, target_triangles);
+        Indices out = options.edge_collapse ? collapse_edges(mesh, mesh.indices, target_triangles, flags)
+                                            : mesh.indices;
+        if (clusters(options) && out.size() > target_indices)
+            out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);
     }
@@ -100,7 +109,8 @@ std::vector<std::size_t> proportional_budget(std::size_t total, const std::vecto
         remainders.push_back({-(exact - double(parts[i])), i});
     }
     std::sort(remainders.begin(), remainders.end());
-    for (std::size_t k = 0; given < total && k < remainders.size(); ++k, ++given) ++parts[remainders[k].second];
+    for (std::size_t k = 0; given < total && k < remainders.size(); ++k, ++given)
+        ++parts[remainders[k].second];
     return parts;
 }
 
@@ -118,22 +128,26 @@ Primitive positions_only(const std::vector<Primitive>& groups) {
 
 }  // namespace
 
-std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options) {
-    if (model.is_lod) throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
+std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces,
+                                        const SimplifyOptions& options) {
+    if (model.is_lod)
+        throw_input_error(model.source, "simplify", "an LoD that boxlod exported cannot be simplified again");
     if (target_faces == 0) throw_input_error(model.source, "simplify", "the face target must be at least 1");
     std::vector<Primitive> groups = merge_primitives(model, subtree_nodes(model, root));
     if (groups.empty()) throw_input_error(model.source, "simplify", "the model has no triangles");
     if (options.geometry_only) groups = {positions_only(groups)};
 
     std::vector<Primitive> welded(groups.size());
-    parallel_for(groups.size(), options.threads, [&](std::size_t g) { weld(welded[g] = std::move(groups[g])); });
+    parallel_for(groups.size(), options.threads,
+                 [&](std::size_t g) { weld(welded[g] = std::move(groups[g])); });
     std::vector<std::size_t> triangles;
     std::vector<double> weights;  // each material's share of the budget
     for (const Primitive& mesh : welded) {
         triangles.push_back(mesh.triangle_count());
         weights.push_back(options.budget_by_area ? surface_area(mesh) : double(mesh.triangle_count()));
     }
-    const std::size_t target = std::min(target_faces, std::accumulate(triangles.begin(), triangles.end(), std::size_t(0)));
+    const std::size_t target =
+        std::min(target_faces, std::accumulate(triangles.begin(), triangles.end(), std::size_t(0)));
 
     // Each round gives the faces still missing (materials that came out below
     // their share: too small to simplify, or clustered away) to the materials
@@ -149,8 +163,8 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
             if (round == 0 || mesh.triangle_count() > achieved[g]) {
                 groups[g] = std::move(mesh);
                 achieved[g] = groups[g].triangle_count();
-            }
-            else stuck[g] = true;
+            } else
+                stuck[g] = true;
         });
         std::size_t sum = std::accumulate(achieved.begin(), achieved.end(), std::size_t(0));
         if (!clusters(options) || sum >= target || double(target - sum) < 0.01 * double(target)) break;

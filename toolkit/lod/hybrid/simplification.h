@@ -12,7 +12,7 @@ namespace boxlod {
 
 struct SimplifyOptions {
     bool edge_collapse = true;  // false: vertex clustering alone (meshopt_simplifySloppy)
-    bool lock_border = false;  // never move vertices on open borders (meshopt_SimplifyLockBorder)
+    bool lock_border = false;   // never move vertices on open borders (meshopt_SimplifyLockBorder)
     // Edge collapse keeps topology, so it stalls on many small separate parts
     // (panes, tiles, sills); vertex clustering (meshopt_simplifySloppy) then
     // takes what is left to the budget. Off: pure edge collapse, which may
@@ -47,7 +47,8 @@ Model simplify_model(const Model& model, std::size_t target_faces, const Simplif
 // The same for the sub-tree under `root` alone (the hybrid level mode's
 // candidates): its primitives merged and simplified, one per material and
 // attribute set, with the model's material indices.
-std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces, const SimplifyOptions& options);
+std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_t target_faces,
+                                        const SimplifyOptions& options);
 
 // What meshoptimizer 0.18 (Debian 12) offers for a face budget, as named
 // variants: `collapse` (edge collapse, then clustering: boxlod simplify's

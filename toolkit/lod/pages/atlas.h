@@ -13,8 +13,9 @@ namespace boxlod {
 
 struct AtlasPlacement {
     int page = 0;
-    int x = 0, y = 0;      // top-left texel of the face's block in the page (the gutter lies around it)
-    bool rotated = false;  // turned 90 degrees clockwise: the face's rows run down the page, its top row rightmost
+    int x = 0, y = 0;  // top-left texel of the face's block in the page (the gutter lies around it)
+    bool rotated =
+        false;  // turned 90 degrees clockwise: the face's rows run down the page, its top row rightmost
 };
 
 struct Atlas {
@@ -25,8 +26,8 @@ struct Atlas {
 // `gutter` free texels around each face on every side (so >= 2 gutter between
 // faces); none is needed at a page's border (the sampler clamps to the edge).
 // Throws std::invalid_argument when a face does not fit max_texture_size.
-Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size, int gutter,
-                 int threads = 1);
+Atlas pack_atlas(const std::vector<Eigen::Vector2i>& face_sizes, int min_texture_size, int max_texture_size,
+                 int gutter, int threads = 1);
 
 // The size of a face's block in its page: its texels, swapped when rotated.
 Eigen::Vector2i placed_size(const Eigen::Vector2i& face_size, const AtlasPlacement& placement);

@@ -18,8 +18,10 @@ std::array<OrientedBoxFace, 6> oriented_box_faces(const OrientedBox& box) {
             int a = (k + 1) % 3, b = (k + 2) % 3;
             // Upright: the in-plane axis most aligned with +Y; horizontal faces use -Z.
             Eigen::Vector3f reference = Eigen::Vector3f::UnitY();
-            if (std::abs(box.axes.col(a).y()) < 0.5f && std::abs(box.axes.col(b).y()) < 0.5f) reference = -Eigen::Vector3f::UnitZ();
-            int up = std::abs(box.axes.col(b).dot(reference)) > std::abs(box.axes.col(a).dot(reference)) ? b : a;
+            if (std::abs(box.axes.col(a).y()) < 0.5f && std::abs(box.axes.col(b).y()) < 0.5f)
+                reference = -Eigen::Vector3f::UnitZ();
+            int up =
+                std::abs(box.axes.col(b).dot(reference)) > std::abs(box.axes.col(a).dot(reference)) ? b : a;
             int side = up == a ? b : a;
             face.bitangent = box.axes.col(up);
             if (face.bitangent.dot(reference) < 0) face.bitangent = -face.bitangent;
@@ -44,7 +46,8 @@ void dilate_colors(Image8& color) {
                 if (ring[y * w + x] != -1) continue;
                 for (int d = 0; d < 4; ++d) {
                     int nx = x + dx[d], ny = y + dy[d];
-                    if (nx >= 0 && ny >= 0 && nx < w && ny < h && ring[ny * w + nx] >= 0 && ring[ny * w + nx] < r) {
+                    if (nx >= 0 && ny >= 0 && nx < w && ny < h && ring[ny * w + nx] >= 0 &&
+                        ring[ny * w + nx] < r) {
                         frontier.push_back(y * w + x);
                         break;
                     }
@@ -61,7 +64,8 @@ void dilate_colors(Image8& color) {
                 for (int c = 0; c < 3; ++c) sum[c] += color.pixels[std::size_t(j) * 4 + c];
                 ++count;
             }
-            for (int c = 0; c < 3; ++c) color.pixels[std::size_t(i) * 4 + c] = std::uint8_t((sum[c] + count / 2) / count);
+            for (int c = 0; c < 3; ++c)
+                color.pixels[std::size_t(i) * 4 + c] = std::uint8_t((sum[c] + count / 2) / count);
         }
         for (int i : frontier) ring[i] = r;
     }
@@ -85,7 +89,8 @@ TexelRect covered_rect(const Image8& color) {
 
 }  // namespace
 
-BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads) {
+BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels,
+                    int threads) {
     // Near and far lie a hair outside the box so geometry flush with a face is kept.
     float depth = 2 * face.half_depth;
     float margin = std::max(depth, std::max(face.half_width, face.half_height)) * 1e-3f + 1e-6f;
@@ -124,11 +129,13 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
             normal[2] = 255;
             continue;
         }
-        for (int c = 0; c < 3; ++c) baked.color.pixels[i * 4 + c] = linear_to_srgb(frame.color[i][c] / coverage);
+        for (int c = 0; c < 3; ++c)
+            baked.color.pixels[i * 4 + c] = linear_to_srgb(frame.color[i][c] / coverage);
         baked.color.pixels[i * 4 + 3] = 255;
         const Eigen::Vector3f& w = frame.normal[i];
         Eigen::Vector3f t(w.dot(face.tangent), w.dot(face.bitangent), w.dot(face.normal));
-        for (int c = 0; c < 3; ++c) normal[c] = std::uint8_t(std::lround(std::clamp(t[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255));
+        for (int c = 0; c < 3; ++c)
+            normal[c] = std::uint8_t(std::lround(std::clamp(t[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255));
         // Orthographic window depth is linear from near to far; the face plane lies at back_off.
         float distance = n + frame.depth[i] * (f - n) - back_off;
         float height = depth > 0 ? 1 - distance / depth : 1;

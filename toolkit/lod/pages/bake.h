@@ -29,13 +29,14 @@ struct TexelRect {
 };
 
 struct BakedFace {
-    Image8 color;    // RGBA, sRGB albedo; alpha = coverage; uncovered colour dilated from covered texels
-    Image8 normal;   // RGB, tangent-space normal * 0.5 + 0.5; uncovered (0, 0, 1)
-    Image16 height;  // 1 (65535) at the face plane, 0 at the opposite face; uncovered 0
+    Image8 color;       // RGBA, sRGB albedo; alpha = coverage; uncovered colour dilated from covered texels
+    Image8 normal;      // RGB, tangent-space normal * 0.5 + 0.5; uncovered (0, 0, 1)
+    Image16 height;     // 1 (65535) at the face plane, 0 at the opposite face; uncovered 0
     TexelRect covered;  // the smallest rectangle holding every covered texel; empty when none is
 };
 
-BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels, int threads);
+BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const Eigen::Vector2i& texels,
+                    int threads);
 
 // Fills every uncovered texel (alpha 0) with the mean colour of its nearest
 // covered texels, ring by ring, so filtering never reaches the background.

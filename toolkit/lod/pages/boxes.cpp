@@ -92,7 +92,8 @@ std::vector<std::vector<Eigen::Vector3f>> subtree_hulls(const Model& model, cons
             const Node& node = model.nodes[nodes[k]];
             std::vector<Eigen::Vector3f> points;
             append_positions(node, points);
-            for (int child : node.children) points.insert(points.end(), hulls[child].begin(), hulls[child].end());
+            for (int child : node.children)
+                points.insert(points.end(), hulls[child].begin(), hulls[child].end());
             hulls[nodes[k]] = hull_vertices(points);
         });
     }
@@ -103,8 +104,8 @@ std::vector<std::vector<Eigen::Vector3f>> subtree_hulls(const Model& model, cons
 // solved once per distinct hull shape (equal up to translation), with a seed
 // from the shape, so a shared orientation is exactly the one the node would
 // get; each node then fits its own box around its own hull.
-void minimal_boxes(const Model& model, const std::vector<char>& wanted, const std::vector<char>& below, int threads,
-                   std::vector<std::optional<OrientedBox>>& boxes, MinimalBoxCounts& counts) {
+void minimal_boxes(const Model& model, const std::vector<char>& wanted, const std::vector<char>& below,
+                   int threads, std::vector<std::optional<OrientedBox>>& boxes, MinimalBoxCounts& counts) {
     const std::size_t n = model.nodes.size();
     const std::vector<std::vector<Eigen::Vector3f>> hulls = subtree_hulls(model, wanted, below, threads);
     std::vector<HullShape> shapes(n);
@@ -119,7 +120,8 @@ void minimal_boxes(const Model& model, const std::vector<char>& wanted, const st
         ++counts.nodes;
         seed[i] = hash_shape(shapes[i]);
         std::vector<int>& same_hash = by_hash[seed[i]];
-        auto same = std::find_if(same_hash.begin(), same_hash.end(), [&](int j) { return shapes[j] == shapes[i]; });
+        auto same =
+            std::find_if(same_hash.begin(), same_hash.end(), [&](int j) { return shapes[j] == shapes[i]; });
         if (same != same_hash.end()) {
             source[i] = *same;
             ++counts.reused;
@@ -131,7 +133,8 @@ void minimal_boxes(const Model& model, const std::vector<char>& wanted, const st
     }
     counts.computed += jobs.size();
     std::vector<Eigen::Matrix3d> axes(n);
-    parallel_for(jobs.size(), threads, [&](std::size_t k) { axes[jobs[k]] = minimal_box_axes(shapes[jobs[k]], seed[jobs[k]]); });
+    parallel_for(jobs.size(), threads,
+                 [&](std::size_t k) { axes[jobs[k]] = minimal_box_axes(shapes[jobs[k]], seed[jobs[k]]); });
     parallel_for(n, threads, [&](std::size_t i) {
         if (wanted[i]) boxes[i] = fit_minimal_box(axes[source[i]], hulls[i]);
     });
@@ -172,7 +175,8 @@ std::vector<std::optional<OrientedBox>> node_boxes(const Model& model, BoxKind k
     const std::size_t n = model.nodes.size();
     const std::vector<char> below = geometry_below(model);
     std::vector<char> wanted(n, 0);
-    for (std::size_t i = 0; i < n; ++i) wanted[i] = below[i] && (kind == BoxKind::minimal || !model.nodes[i].scope);
+    for (std::size_t i = 0; i < n; ++i)
+        wanted[i] = below[i] && (kind == BoxKind::minimal || !model.nodes[i].scope);
     std::vector<std::optional<OrientedBox>> boxes(n);
     minimal_boxes(model, wanted, below, threads, boxes, counts);
     // Flat scopes (a facade) and flat geometry still get a thickness, relative to the model's size.

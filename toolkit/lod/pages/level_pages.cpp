@@ -21,7 +21,8 @@ void add_pages(Model& out, const Atlas& atlas, float height_depth, bool textured
         const Eigen::Vector2i size = atlas.pages[std::size_t(page)];
         Texture color{"color_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 4, 0), {}};
         Texture normal{"normal_" + std::to_string(page) + ".png", Image8(size.x(), size.y(), 3, 255), {}};
-        for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3) normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
+        for (std::size_t i = 0; i < normal.image.pixels.size(); i += 3)
+            normal.image.pixels[i] = normal.image.pixels[i + 1] = 128;
         Texture height{"height_" + std::to_string(page) + ".png", {}, Image16(size.x(), size.y(), 1, 0)};
         color.wrap = normal.wrap = height.wrap = Wrap::clamp;  // faces touch the page's border
         const LodPage textures = lod_page(page);
@@ -56,7 +57,8 @@ int baked_page_material(Model& out, int page, std::map<int, int>& made) {
     return at->second;
 }
 
-Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page, float x, float y) {
+Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page,
+                        float x, float y) {
     const float page_x = at.rotated ? float(region.height) - y : x, page_y = at.rotated ? x : y;
     return {(float(at.x) + page_x) / float(page.x()), (float(at.y) + page_y) / float(page.y())};
 }
@@ -71,9 +73,12 @@ void place_swatches(const Swatches& swatches, const AtlasPlacement& at, int gutt
     auto swatch_of = [](int texel, int start, int n) {
         return std::clamp(texel < start ? -1 : (texel - start) / swatch_side, 0, n - 1);
     };
-    for (int py = std::max(at.y - gutter, 0); py < std::min(at.y + swatches.block_side() + gutter, color.image.height); ++py)
-        for (int px = std::max(at.x - gutter, 0); px < std::min(at.x + swatches.block_side() + gutter, color.image.width); ++px) {
-            const int k = std::min(swatch_of(py, first.y(), rows) * swatches.columns + swatch_of(px, first.x(), swatches.columns),
+    for (int py = std::max(at.y - gutter, 0);
+         py < std::min(at.y + swatches.block_side() + gutter, color.image.height); ++py)
+        for (int px = std::max(at.x - gutter, 0);
+             px < std::min(at.x + swatches.block_side() + gutter, color.image.width); ++px) {
+            const int k = std::min(swatch_of(py, first.y(), rows) * swatches.columns +
+                                       swatch_of(px, first.x(), swatches.columns),
                                    count - 1);
             std::copy_n(swatches.colors[std::size_t(k)].data(), 4, color.image.at(px, py));
             std::copy_n(flat_normal, 3, normal.image.at(px, py));
@@ -81,7 +86,8 @@ void place_swatches(const Swatches& swatches, const AtlasPlacement& at, int gutt
         }
 }
 
-std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region, int flat_faces) {
+std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region,
+                                                      int flat_faces) {
     if (std::max(region.width, region.height) > flat_faces) return std::nullopt;
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     int covered = 0;
@@ -100,20 +106,23 @@ std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, con
 
 Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at, int k) {
     auto aligned = [](int v) { return v + (swatch_side - v % swatch_side) % swatch_side; };
-    return {aligned(at.x) + swatch_side * (k % swatches.columns), aligned(at.y) + swatch_side * (k / swatches.columns)};
+    return {aligned(at.x) + swatch_side * (k % swatches.columns),
+            aligned(at.y) + swatch_side * (k / swatches.columns)};
 }
 
-void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, float depth_ratio,
-                Texture& color, Texture& normal, Texture& height) {
+void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter,
+                float depth_ratio, Texture& color, Texture& normal, Texture& height) {
     const Eigen::Vector2i block = placed_size({region.width, region.height}, at);
     const int page_width = color.image.width, page_height = color.image.height;
     for (int by = -gutter; by < block.y() + gutter; ++by)
         for (int bx = -gutter; bx < block.x() + gutter; ++bx) {
             const int px = at.x + bx, py = at.y + by;
             if (px < 0 || py < 0 || px >= page_width || py >= page_height) continue;
-            // The region texel at block texel (bx, by); turned clockwise, the region's top row is the block's right column.
+            // The region texel at block texel (bx, by); turned clockwise, the region's top row is the block's
+            // right column.
             const int rx = at.rotated ? by : bx, ry = at.rotated ? region.height - 1 - bx : by;
-            const int sx = std::clamp(region.x + rx, 0, face.color.width - 1), sy = std::clamp(region.y + ry, 0, face.color.height - 1);
+            const int sx = std::clamp(region.x + rx, 0, face.color.width - 1),
+                      sy = std::clamp(region.y + ry, 0, face.color.height - 1);
             std::copy_n(face.color.at(sx, sy), 4, color.image.at(px, py));
             std::copy_n(face.normal.at(sx, sy), 3, normal.image.at(px, py));
             const float below = float(65535 - face.height.at(sx, sy)[0]) * depth_ratio;

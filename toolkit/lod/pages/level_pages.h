@@ -29,7 +29,8 @@ LodPage lod_page(int page);
 int baked_page_material(Model& out, int page, std::map<int, int>& made);
 
 // Where a point `x`, `y` texels into a face's region (right, down) lies on its page, as a uv.
-Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page, float x, float y);
+Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const Eigen::Vector2i& page,
+                        float x, float y);
 
 // Flat faces (docs/design.md: Atlas): one 4x4 swatch per distinct colour, in
 // one square block of the atlas whose swatches lie on 4-texel boundaries of
@@ -37,7 +38,7 @@ Eigen::Vector2f page_uv(const AtlasPlacement& at, const TexelRect& region, const
 constexpr int swatch_side = 4;
 
 struct Swatches {
-    std::vector<std::array<std::uint8_t, 4>> colors;  // sRGB RGBA, opaque
+    std::vector<std::array<std::uint8_t, 4>> colors;   // sRGB RGBA, opaque
     std::map<std::array<std::uint8_t, 4>, int> index;  // of each colour in `colors`
     int columns = 0;
     int block_side() const { return swatch_side * columns + swatch_side - 1; }
@@ -53,7 +54,8 @@ void place_swatches(const Swatches& swatches, const AtlasPlacement& at, int gutt
 
 // A face `region` small enough for `flat_faces` and at least half covered gets
 // its covered texels' mean colour, averaged in linear light as mip-maps are.
-std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region, int flat_faces);
+std::optional<std::array<std::uint8_t, 4>> flat_color(const BakedFace& face, const TexelRect& region,
+                                                      int flat_faces);
 
 // The page texel where swatch k starts, in the block placed at `at`.
 Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at, int k);
@@ -63,7 +65,7 @@ Eigen::Vector2i swatch_texel(const Swatches& swatches, const AtlasPlacement& at,
 // the neighbours it had uncropped), its edge texels repeated beyond; clipped
 // to the page's border. Heights go from the face's own depth (0 at the box's
 // opposite face) to the pages' common depth: depth_ratio = face depth / page depth.
-void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter, float depth_ratio,
-                Texture& color, Texture& normal, Texture& height);
+void place_face(const BakedFace& face, const TexelRect& region, const AtlasPlacement& at, int gutter,
+                float depth_ratio, Texture& color, Texture& normal, Texture& height);
 
 }  // namespace boxlod

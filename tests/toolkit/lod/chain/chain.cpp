@@ -22,7 +22,9 @@ LodParameters small_chain_parameters() {
     return p;
 }
 
-LevelDistances listed(std::vector<float> distances) { return {LevelDistances::Rule::listed, std::move(distances)}; }
+LevelDistances listed(std::vector<float> distances) {
+    return {LevelDistances::Rule::listed, std::move(distances)};
+}
 
 }  // namespace
 
@@ -32,7 +34,9 @@ TEST(Chain, AutoSizesEachLevelForTwiceTheLastDistance) {
     EXPECT_EQ(level_distances({}, 10, 4), (std::vector<float>{10, 20, 40, 80}));
     EXPECT_EQ(level_distances({LevelDistances::Rule::same, {}}, 10, 4), std::vector<float>{});
     EXPECT_EQ(level_distances(listed({5, 6, 9}), 10, 3), (std::vector<float>{5, 6, 9}));
-    EXPECT_EQ(test::input_error_of([] { level_distances(listed({5, 6}), 10, 3); }),
+    EXPECT_EQ(test::input_error_of([] {
+                  level_distances(listed({5, 6}), 10, 3);
+              }),
               "level_distances: 2 distances for 3 levels (1..3), or auto, or same");
 }
 
@@ -67,8 +71,11 @@ TEST(Chain, ABuildingInCentimetresBuildsItsFarLevels) {
     ASSERT_GT(first * 512, 1e6f);
     p.distance = first * 512;  // a 10-level chain's level 10
     Chain far(model, p, 2);
-    EXPECT_EQ(far.for_level(far.obtained_levels()).input.parameters.distance, first * 512 * float(std::ldexp(1.0, far.obtained_levels() - 1)));
-    EXPECT_EQ(test::input_error_of([&] { build_lod(far.for_level(far.obtained_levels()), far.obtained_levels(), 2); }), "");
+    EXPECT_EQ(far.for_level(far.obtained_levels()).input.parameters.distance,
+              first * 512 * float(std::ldexp(1.0, far.obtained_levels() - 1)));
+    EXPECT_EQ(test::input_error_of(
+                  [&] { build_lod(far.for_level(far.obtained_levels()), far.obtained_levels(), 2); }),
+              "");
     // 64 levels double past any range: the farthest stay at its end, still ascending.
     const std::vector<float> many = level_distances({}, first, 64);
     EXPECT_EQ(double(many.back()), double(float(parameter_range::distance.max)));
@@ -108,7 +115,8 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
         Chain chain(model, p, 2);
         const int obtained = chain.obtained_levels();
         std::vector<ChainLevel> taken;
-        EXPECT_EQ(take_distinct_levels(chain, 0, obtained, 100, [&](ChainLevel level) { taken.push_back(std::move(level)); }),
+        EXPECT_EQ(take_distinct_levels(chain, 0, obtained, 100,
+                                       [&](ChainLevel level) { taken.push_back(std::move(level)); }),
                   obtained + 1);
         std::vector<int> every;  // each level once, as taken or as a repeat
         for (std::size_t i = 0; i < taken.size(); ++i) {
@@ -116,11 +124,13 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
             EXPECT_EQ(taken[i].lod.current_level, taken[i].level);
             EXPECT_EQ(taken[i].session, &chain.for_level(taken[i].level));
             if (i > 0) {
-                EXPECT_FALSE(draws_the_same(taken[i - 1].lod.model, taken[i].lod.model)) << "level " << taken[i].level;
+                EXPECT_FALSE(draws_the_same(taken[i - 1].lod.model, taken[i].lod.model))
+                    << "level " << taken[i].level;
             }
             for (int c : taken[i].same_levels) {
                 every.push_back(c);
-                EXPECT_TRUE(draws_the_same(taken[i].lod.model, build_lod(chain.for_level(c), c, 2).model)) << "level " << c;
+                EXPECT_TRUE(draws_the_same(taken[i].lod.model, build_lod(chain.for_level(c), c, 2).model))
+                    << "level " << c;
             }
         }
         std::sort(every.begin(), every.end());
@@ -130,11 +140,13 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
             ASSERT_GE(taken.size(), 3u);
             // At most two: the first level not held is the third distinct one.
             std::vector<int> capped;
-            const int cut = take_distinct_levels(chain, 0, obtained, 2, [&](ChainLevel level) { capped.push_back(level.level); });
+            const int cut = take_distinct_levels(chain, 0, obtained, 2,
+                                                 [&](ChainLevel level) { capped.push_back(level.level); });
             EXPECT_EQ(capped, (std::vector<int>{taken[0].level, taken[1].level}));
             EXPECT_EQ(cut, taken[2].level);
         } else {
-            EXPECT_EQ(taken.size(), 1u);  // the paying chain of a building this small: its geometry at every level
+            EXPECT_EQ(taken.size(),
+                      1u);  // the paying chain of a building this small: its geometry at every level
         }
     }
 }
@@ -150,7 +162,8 @@ TEST(Chain, ALevelsParameterFileBuildsTheSameLevel) {
     saved.current_level = c;
     const LodParameters read = parse_parameters(format_parameters(saved), "level.params.txt");
     Chain again(model, read, 2);
-    const Lod a = build_lod(chain.for_level(c), c, 2), b = build_lod(again.for_level(read.current_level), read.current_level, 2);
+    const Lod a = build_lod(chain.for_level(c), c, 2),
+              b = build_lod(again.for_level(read.current_level), read.current_level, 2);
     EXPECT_EQ(again.for_level(c).input.parameters.distance, chain.for_level(c).input.parameters.distance);
     EXPECT_TRUE(draws_the_same(a.model, b.model));
     EXPECT_EQ(format_key_values(a.statistics), format_key_values(b.statistics));
@@ -172,7 +185,8 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
         EXPECT_EQ(switched.switch_distances[0], 0);
         for (std::size_t k = 1; k < switched.levels.size(); ++k) {
             EXPECT_GT(switched.switch_distances[k], switched.switch_distances[k - 1]);
-            EXPECT_LT(combined_cost({&switched.levels[k].lod.cost}).bytes(), combined_cost({&switched.levels[k - 1].lod.cost}).bytes());
+            EXPECT_LT(combined_cost({&switched.levels[k].lod.cost}).bytes(),
+                      combined_cost({&switched.levels[k - 1].lod.cost}).bytes());
             for (std::size_t d = 0; d < switched.distances.size(); ++d)
                 if (switched.distances[d] >= switched.switch_distances[k]) {
                     EXPECT_LE(switched.errors[k][d], threshold);
@@ -194,5 +208,6 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
     const SwitchedChain texels = switched_levels(same, 0, 100);
     EXPECT_GE(texels.levels.size(), 3u);
     for (std::size_t k = 1; k < texels.levels.size(); ++k)
-        EXPECT_EQ(texels.switch_distances[k], doubled_distance(same.parameters().distance, texels.levels[k].level));
+        EXPECT_EQ(texels.switch_distances[k],
+                  doubled_distance(same.parameters().distance, texels.levels[k].level));
 }

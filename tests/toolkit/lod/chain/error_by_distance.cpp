@@ -33,7 +33,8 @@ TEST(ErrorByDistance, DistancesRunFromTheFramingDistanceToAFewPixels) {
     auto pixels_at = [&](double distance) { return 1080 * framing.radius / (distance * std::tan(M_PI / 8)); };
     EXPECT_LE(pixels_at(d.back()), few_pixels);
     EXPECT_GT(pixels_at(d[d.size() - 2]), few_pixels);
-    EXPECT_LT(measured_distances(model, screen(270)).size(), d.size());  // a smaller screen: fewer pixels to lose
+    EXPECT_LT(measured_distances(model, screen(270)).size(),
+              d.size());  // a smaller screen: fewer pixels to lose
 }
 
 // The original against itself is 0 at every distance; a level that differs
@@ -42,20 +43,24 @@ TEST(ErrorByDistance, MeasuresWhatALevelChanges) {
     const Model model = test::lod_test_building();
     Model recoloured = model;
     recoloured.materials[2].base_color = {0.1f, 0.6f, 0.2f, 1};  // the roof
-    const ErrorByDistance one = measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 1);
+    const ErrorByDistance one =
+        measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 1);
     ASSERT_EQ(one.errors.size(), 2u);
     for (std::size_t d = 0; d < one.distances.size(); ++d) {
         EXPECT_EQ(one.errors[0][d], 0) << d;
         EXPECT_GT(one.errors[1][d], 0.05) << d;  // a green roof instead of a red one, on every view
     }
-    const ErrorByDistance two = measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 2);
+    const ErrorByDistance two =
+        measure_error_by_distance(model, {&model, &recoloured}, screen(540), LodParameters{}, 2);
     EXPECT_EQ(two.errors, one.errors);
 }
 
 // From the nearest distance on which the error stays within the threshold;
 // never where it ends above it.
 TEST(ErrorByDistance, SwitchDistancesFromKnownErrors) {
-    const ErrorByDistance measured{{10, 20, 40, 80}, {{0, 0, 0, 0}, {0.2, 0.04, 0.03, 0.01}, {0.01, 0.2, 0.04, 0.02}, {0.3, 0.2, 0.1, 0.06}}};
+    const ErrorByDistance measured{
+        {10, 20, 40, 80},
+        {{0, 0, 0, 0}, {0.2, 0.04, 0.03, 0.01}, {0.01, 0.2, 0.04, 0.02}, {0.3, 0.2, 0.1, 0.06}}};
     EXPECT_EQ(switch_distances(measured, 0.05), (std::vector<double>{10, 20, 40, never}));
     EXPECT_EQ(switch_distances(measured, 0.25), (std::vector<double>{10, 10, 10, 20}));
 }

@@ -34,7 +34,9 @@ TEST(SwitchMeasures, ClientsRefineALevelNearerThanItsSwitchDistance) {
     const double error = level_geometric_error(50, view, 0.5);
     EXPECT_NEAR(error, 16, 1e-4);  // a pixel at 50 m is 2 x 50 x tan(45 degrees) / 100 = 1 m
     // CesiumJS's and 3d-tiles-renderer's projection of a tile's error on a screen as tall as the view.
-    auto screen_space_error = [&](double distance) { return error * view.resolution / (2 * distance * std::tan(M_PI / 4)); };
+    auto screen_space_error = [&](double distance) {
+        return error * view.resolution / (2 * distance * std::tan(M_PI / 4));
+    };
     EXPECT_GT(screen_space_error(49.5), client_screen_space_error);  // nearer: level c - 1
     EXPECT_LT(screen_space_error(50.5), client_screen_space_error);  // farther: level c stays
 }

@@ -1,5 +1,5 @@
-#include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/cut/error_greedy.h"
+#include "toolkit/lod/cut/level_values.h"
 
 #include "toolkit/lod/cut/cut.h"
 
@@ -72,9 +72,11 @@ TEST(ErrorGreedy, OpensWhereTheErrorIsFirst) {
 TEST(ErrorGreedy, LevelsCutTheOpeningAtByteBudgets) {
     TwoParts t = two_parts();
     for (int wanted : {1, 2, 4, 8}) {
-        LevelValues values = compute_level_values(t.model, LevelMode::error_greedy, wanted, Interpolation::linear, t.boxes);
+        LevelValues values =
+            compute_level_values(t.model, LevelMode::error_greedy, wanted, Interpolation::linear, t.boxes);
         EXPECT_EQ(values.obtained_levels, wanted);
-        for (std::size_t n = 1; n < t.model.nodes.size(); ++n)  // a child is never open where its parent is boxed
+        for (std::size_t n = 1; n < t.model.nodes.size();
+             ++n)  // a child is never open where its parent is boxed
             EXPECT_LE(values.level[n], values.level[std::size_t(t.model.nodes[n].parent)]) << n;
         // Level 0 is the original; the deep part is open at least wherever the flat one is.
         EXPECT_TRUE(take_cut(t.model, values.level, 0, t.boxes).box_nodes.empty());

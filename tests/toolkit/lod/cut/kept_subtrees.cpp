@@ -1,7 +1,7 @@
 #include "toolkit/lod/cut/kept_subtrees.h"
 
-#include "toolkit/model/cost.h"
 #include "toolkit/lod/cut/cut.h"
+#include "toolkit/model/cost.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,9 @@ TEST(KeptSubtrees, SubtreeSumsAddEveryDescendant) {
     EXPECT_EQ(subtree_faces(model), (std::vector<std::size_t>{12, 9, 7, 2, 3}));
     // Per triangle 3 vertices of position + normal (24 bytes) and 3 16-bit indices.
     const std::uint64_t triangle = 3 * 24 + 3 * 2;
-    EXPECT_EQ(subtree_mesh_bytes(model), (std::vector<std::uint64_t>{12 * triangle, 9 * triangle, 7 * triangle, 2 * triangle, 3 * triangle}));
+    EXPECT_EQ(
+        subtree_mesh_bytes(model),
+        (std::vector<std::uint64_t>{12 * triangle, 9 * triangle, 7 * triangle, 2 * triangle, 3 * triangle}));
     EXPECT_EQ(subtree_mesh_bytes(model)[2], primitive_mesh_bytes(model.nodes[2].primitives[0], model));
 }
 
@@ -70,7 +72,8 @@ TEST(KeptSubtrees, BoxBytesAreSixQuadsAndTheirGutteredTexelsAtTwoBytesWithMips) 
 TEST(KeptSubtrees, SmallSubtreesHaveAtMostABoxsFaces) {
     Model model = tree(7, 2, 3);
     std::vector<std::optional<OrientedBox>> boxes(model.nodes.size(), cube(1));
-    EXPECT_EQ(kept_subtrees(model, boxes, {true, false}, unit_pixel(), true), (std::vector<bool>{false, false, false, true, true}));
+    EXPECT_EQ(kept_subtrees(model, boxes, {true, false}, unit_pixel(), true),
+              (std::vector<bool>{false, false, false, true, true}));
     EXPECT_EQ(kept_subtrees(model, boxes, {false, false}, unit_pixel(), true), std::vector<bool>(5, false));
 }
 
@@ -81,24 +84,27 @@ TEST(KeptSubtrees, CheaperSubtreesCostFewerBytesThanTheirBox) {
     std::vector<std::optional<OrientedBox>> boxes(model.nodes.size(), cube(10));
     ASSERT_EQ(box_bytes_estimate(cube(10), sizing, true), 1224u + 3136u);
     const std::vector<bool> kept = kept_subtrees(model, boxes, {false, true}, sizing, true);
-    EXPECT_EQ(kept, (std::vector<bool>{false, false, false, true, true}));  // a1 (100) and a (110) pay; a2, b do not
+    EXPECT_EQ(kept, (std::vector<bool>{false, false, false, true,
+                                       true}));  // a1 (100) and a (110) pay; a2, b do not
     // The cut opens a (level 0 < 1 but its box pays: boxed), keeps b.
     const std::vector<int> level{2, 0, 0, 0, 0};
     Cut cut = take_cut(model, level, 1, boxes, kept);
     EXPECT_EQ(cut.box_nodes, (std::vector<int>{1}));
     EXPECT_EQ(cut.geometry_nodes, (std::vector<int>{4}));
     // A kept node keeps its whole sub-tree, though a child's own box would pay: a child of 30 triangles
-    // (2,340 bytes) has a box of side 1 (1,224 + 6 x 5 x 5 texels x 8 / 3 = 1,624), its parent of 31 triangles
-    // (2,418) a box of side 10 (4,360).
+    // (2,340 bytes) has a box of side 1 (1,224 + 6 x 5 x 5 texels x 8 / 3 = 1,624), its parent of 31
+    // triangles (2,418) a box of side 10 (4,360).
     Model deep = tree(30, 0, 0);
     deep.nodes[1].primitives = {deep.nodes[2].primitives[0]};
     deep.nodes[1].primitives[0].positions.resize(3);
     deep.nodes[1].primitives[0].normals.resize(3);
     deep.nodes[1].primitives[0].indices.resize(3);
     deep.nodes[1].primitives[0].polygon_count = 1;
-    std::vector<std::optional<OrientedBox>> deep_boxes{std::nullopt, cube(10), cube(1), std::nullopt, std::nullopt};
+    std::vector<std::optional<OrientedBox>> deep_boxes{std::nullopt, cube(10), cube(1), std::nullopt,
+                                                       std::nullopt};
     ASSERT_EQ(box_bytes_estimate(cube(1), sizing, true), 1624u);
-    EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true), (std::vector<bool>{false, true, true, true, false}));
+    EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true),
+              (std::vector<bool>{false, true, true, true, false}));
     deep_boxes[1] = cube(1);  // now a's box pays too
     EXPECT_EQ(kept_subtrees(deep, deep_boxes, {false, true}, sizing, true), (std::vector<bool>(5, false)));
     // A node without a box is never marked cheaper (nothing would replace it).

@@ -32,14 +32,15 @@ TEST(LevelBudgets, ReadsFractionsAndSizesAndWritesThemBack) {
 }
 
 TEST(LevelBudgets, RefusesBudgetsThatNameNoLevels) {
-    for (const char* text : {"0.1,0.5", "0.5,0.5", "0.5,0", "-0.5", "1.5", "nan", "inf", "0.5,100kB", "5parsecs", "0.5,,0.1",
-                             "0.5,", "", "2e20B", "0B"}) {
+    for (const char* text : {"0.1,0.5", "0.5,0.5", "0.5,0", "-0.5", "1.5", "nan", "inf", "0.5,100kB",
+                             "5parsecs", "0.5,,0.1", "0.5,", "", "2e20B", "0B"}) {
         std::vector<ByteBudget> budgets = {{true, 0.5}};
         EXPECT_NE(parse_budgets(text, budgets), "") << text;
         EXPECT_EQ(budgets.size(), 1u) << text << ": a refused text leaves the budgets as they were";
     }
     std::string many;
-    for (int i = 0; i < 65; ++i) {  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "," + string
+    for (int i = 0; i < 65;
+         ++i) {  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "," + string
         if (i) many += ',';
         many += std::to_string(1000 - i);
         many += 'B';
@@ -57,7 +58,7 @@ TEST(LevelBudgets, GeometricBudgetsRunFromTheOriginalToTheCoarsestCut) {
 
 TEST(LevelBudgets, PrefixesWithinABudget) {
     const std::vector<double> bytes = {10, 20, 15, 40, 50}, error = {9, 5, 6, 2, 0};
-    EXPECT_EQ(longest_prefix_within(bytes, 20), 2u);  // 15 bytes after two steps
+    EXPECT_EQ(longest_prefix_within(bytes, 20), 2u);      // 15 bytes after two steps
     EXPECT_EQ(best_prefix_within(bytes, error, 20), 1u);  // error 5 beats 6
     EXPECT_EQ(best_prefix_within(bytes, error, 45), 3u);
     EXPECT_EQ(best_prefix_within(bytes, error, 5), 0u);  // none fits: the start

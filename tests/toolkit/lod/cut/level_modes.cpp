@@ -1,11 +1,11 @@
-#include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/cut/level_modes.h"
+#include "toolkit/lod/cut/level_values.h"
 
 #include "base/input_error.h"
 #include "test_support.h"
-#include "toolkit/lod/pages/boxes.h"
-#include "toolkit/lod/cut/cut.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/cut/cut.h"
+#include "toolkit/lod/pages/boxes.h"
 
 #include <gtest/gtest.h>
 
@@ -52,9 +52,9 @@ BoxedModel boxed_leaves(const std::vector<float>& heights, float root_height) {
 }
 
 TEST(LevelModes, NamesRoundTrip) {
-    for (LevelMode mode : {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings,
-                           LevelMode::box_volume, LevelMode::box_area, LevelMode::box_diagonal,
-                           LevelMode::box_max_extent}) {
+    for (LevelMode mode :
+         {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings, LevelMode::box_volume,
+          LevelMode::box_area, LevelMode::box_diagonal, LevelMode::box_max_extent}) {
         LevelMode parsed{};
         ASSERT_TRUE(parse_level_mode(level_mode_name(mode), parsed));
         EXPECT_EQ(parsed, mode);
@@ -136,7 +136,8 @@ TEST(LevelModes, CutOfTopDownAtNIsTheRootBoxAndAtZeroTheOriginal) {
 TEST(LevelModes, BoxVolumeLinear) {
     // Volumes 8, 16, 24, 40 (root) -> t = 0, 1/4, 1/2, 1 -> with N = 5: 0, 1, 2, 4.
     BoxedModel m = boxed_leaves({1, 2, 3}, 5);
-    LevelValues values = compute_level_values(m.model, LevelMode::box_volume, 5, Interpolation::linear, m.boxes);
+    LevelValues values =
+        compute_level_values(m.model, LevelMode::box_volume, 5, Interpolation::linear, m.boxes);
     EXPECT_EQ(values.obtained_levels, 5);
     EXPECT_EQ(values.level, (std::vector<int>{4, 0, 1, 2}));
 }
@@ -160,7 +161,8 @@ TEST(LevelModes, BoxDiagonalLinear) {
         add_node(model, root, "leaf");
         boxes.push_back(box_with_half_extents(h, 0, 0));
     }
-    LevelValues values = compute_level_values(model, LevelMode::box_diagonal, 5, Interpolation::linear, boxes);
+    LevelValues values =
+        compute_level_values(model, LevelMode::box_diagonal, 5, Interpolation::linear, boxes);
     EXPECT_EQ(values.level, (std::vector<int>{4, 0, 1, 2}));
 }
 
@@ -170,8 +172,8 @@ TEST(LevelModes, EqualValuesGiveTheTopLevel) {
     int root = add_node(model, -1, "root");
     add_node(model, root, "a");
     add_node(model, root, "unboxed");
-    std::vector<std::optional<OrientedBox>> boxes{box_with_half_extents(3, 0, 0), box_with_half_extents(1, 0, 0),
-                                                  std::nullopt};
+    std::vector<std::optional<OrientedBox>> boxes{box_with_half_extents(3, 0, 0),
+                                                  box_with_half_extents(1, 0, 0), std::nullopt};
     for (Interpolation interpolation : {Interpolation::linear, Interpolation::log, Interpolation::rank}) {
         LevelValues values = compute_level_values(model, LevelMode::box_area, 3, interpolation, boxes);
         EXPECT_EQ(values.level, (std::vector<int>{2, 2, 0})) << interpolation_name(interpolation);
@@ -183,7 +185,8 @@ TEST(LevelModes, NodesWithoutBoxTakeNoPart) {
     BoxedModel m = boxed_leaves({1, 2, 3}, 5);
     add_node(m.model, 0, "empty");
     m.boxes.push_back(std::nullopt);
-    LevelValues values = compute_level_values(m.model, LevelMode::box_volume, 5, Interpolation::linear, m.boxes);
+    LevelValues values =
+        compute_level_values(m.model, LevelMode::box_volume, 5, Interpolation::linear, m.boxes);
     EXPECT_EQ(values.level, (std::vector<int>{4, 0, 1, 2, 0}));
 }
 
@@ -193,7 +196,8 @@ TEST(LevelModes, LogInterpolation) {
     LevelValues log = compute_level_values(m.model, LevelMode::box_volume, 4, Interpolation::log, m.boxes);
     EXPECT_EQ(log.level, (std::vector<int>{3, 0, 0, 1}));
     // Linear on the same values: t = 1, 0, 8/504, 56/504 -> 3, 0, 0, 0.
-    LevelValues linear = compute_level_values(m.model, LevelMode::box_volume, 4, Interpolation::linear, m.boxes);
+    LevelValues linear =
+        compute_level_values(m.model, LevelMode::box_volume, 4, Interpolation::linear, m.boxes);
     EXPECT_EQ(linear.level, (std::vector<int>{3, 0, 0, 0}));
 }
 
@@ -207,33 +211,38 @@ TEST(LevelModes, LogOfZeroVolumeIsFloored) {
 TEST(LevelModes, RankInterpolationWithTies) {
     // Heights 5 (root), 1, 2, 2, 3: ranks 4, 0, 1, 1, 3 (ties share the lowest) -> t = rank / 4.
     BoxedModel m = boxed_leaves({1, 2, 2, 3}, 5);
-    LevelValues values = compute_level_values(m.model, LevelMode::box_max_extent, 5, Interpolation::rank, m.boxes);
+    LevelValues values =
+        compute_level_values(m.model, LevelMode::box_max_extent, 5, Interpolation::rank, m.boxes);
     EXPECT_EQ(values.level, (std::vector<int>{4, 0, 1, 1, 3}));
     // Linear on the same values: longest sides 2, 4, 4, 6, 10 -> t = (h - 1) / 4 -> 0, 1, 1, 2.
-    LevelValues linear = compute_level_values(m.model, LevelMode::box_max_extent, 5, Interpolation::linear, m.boxes);
+    LevelValues linear =
+        compute_level_values(m.model, LevelMode::box_max_extent, 5, Interpolation::linear, m.boxes);
     EXPECT_EQ(linear.level, (std::vector<int>{4, 0, 1, 1, 2}));
 }
 
 TEST(LevelModes, OneWantedLevelPutsEverythingAtZero) {
     BoxedModel m = boxed_leaves({1, 2, 3}, 5);
-    LevelValues values = compute_level_values(m.model, LevelMode::box_volume, 1, Interpolation::linear, m.boxes);
+    LevelValues values =
+        compute_level_values(m.model, LevelMode::box_volume, 1, Interpolation::linear, m.boxes);
     EXPECT_EQ(values.obtained_levels, 1);
     EXPECT_EQ(values.level, (std::vector<int>{0, 0, 0, 0}));
 }
 
 TEST(LevelModes, BoxModesRejectFewerThanOneLevel) {
     BoxedModel m = boxed_leaves({1}, 2);
-    EXPECT_THROW(compute_level_values(m.model, LevelMode::box_volume, 0, Interpolation::linear, m.boxes), InputError);
+    EXPECT_THROW(compute_level_values(m.model, LevelMode::box_volume, 0, Interpolation::linear, m.boxes),
+                 InputError);
 }
 
 TEST(LevelModes, FzkHausEveryModeAndBoxKind) {
     Model model = load_model(test::fzk_haus_ifc);
     for (BoxKind kind : {BoxKind::scope, BoxKind::expanded, BoxKind::minimal}) {
         auto boxes = node_boxes(model, kind, 0);
-        for (LevelMode mode : {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings,
-                               LevelMode::box_volume, LevelMode::box_area, LevelMode::box_diagonal,
-                               LevelMode::box_max_extent}) {
-            for (Interpolation interpolation : {Interpolation::linear, Interpolation::log, Interpolation::rank}) {
+        for (LevelMode mode :
+             {LevelMode::top_down, LevelMode::bottom_up, LevelMode::bottom_up_siblings, LevelMode::box_volume,
+              LevelMode::box_area, LevelMode::box_diagonal, LevelMode::box_max_extent}) {
+            for (Interpolation interpolation :
+                 {Interpolation::linear, Interpolation::log, Interpolation::rank}) {
                 LevelValues values = compute_level_values(model, mode, 6, interpolation, boxes);
                 ASSERT_EQ(values.level.size(), model.nodes.size());
                 if (is_box_mode(mode)) {

@@ -50,10 +50,12 @@ TEST(BakedProxy, ATriangleSamplesTheFaceThatSawItNotTheOneItFacesMost) {
     const Eigen::Vector3f normal = Eigen::Vector3f(0.8f, 0.6f, 0).normalized();
     const Eigen::Vector3f along = Eigen::Vector3f::UnitZ(), across = normal.cross(along);
     const Eigen::Vector3f centre(0.5f, 0.9f, 0);
-    const Eigen::Vector3f a = centre - 0.05f * across + 0.05f * along, b = centre + 0.1f * across, c = centre - 0.05f * across - 0.05f * along;
+    const Eigen::Vector3f a = centre - 0.05f * across + 0.05f * along, b = centre + 0.1f * across,
+                          c = centre - 0.05f * across - 0.05f * along;
     ASSERT_GT((b - a).cross(c - a).dot(normal), 0);
     EXPECT_EQ(sampled_face(faces, baked.pointers(), a, b, c), 2);
-    // Where neither face saw it (+Y's surface is far off too), the nearer surface decides: +X's at 0.5 against +Y's at 0.9.
+    // Where neither face saw it (+Y's surface is far off too), the nearer surface decides: +X's at 0.5
+    // against +Y's at 0.9.
     const BakedBox far({0, 0, 1.0f, 0, 0, 0});
     EXPECT_EQ(sampled_face(faces, far.pointers(), a, b, c), 0);
     // A face that saw nothing is never sampled.
@@ -66,7 +68,8 @@ TEST(BakedProxy, ATriangleSamplesTheFaceThatSawItNotTheOneItFacesMost) {
 // frames (the baked normal maps' tangent space) with uvs over the whole face.
 TEST(BakedProxy, ACubeSamplesEachFaceWithTwoTrianglesInItsFrame) {
     Primitive cube;
-    for (int k = 0; k < 8; ++k) cube.positions.emplace_back(k & 1 ? 1.f : -1.f, k & 2 ? 1.f : -1.f, k & 4 ? 1.f : -1.f);
+    for (int k = 0; k < 8; ++k)
+        cube.positions.emplace_back(k & 1 ? 1.f : -1.f, k & 2 ? 1.f : -1.f, k & 4 ? 1.f : -1.f);
     cube.indices = {1, 3, 7, 1, 7, 5, 0, 4, 6, 0, 6, 2,   // +X, -X
                     2, 6, 7, 2, 7, 3, 0, 1, 5, 0, 5, 4,   // +Y, -Y
                     4, 5, 7, 4, 7, 6, 0, 2, 3, 0, 3, 1};  // +Z, -Z

@@ -31,7 +31,8 @@ std::vector<Triangle> triangles(const Model& model) {
             for (std::size_t t = 0; t < p.indices.size(); t += 3) {
                 Triangle triangle{float(p.material)};
                 for (int k = 0; k < 3; ++k)
-                    for (int a = 0; a < 3; ++a) triangle[std::size_t(1 + 3 * k + a)] = p.positions[p.indices[t + std::size_t(k)]][a];
+                    for (int a = 0; a < 3; ++a)
+                        triangle[std::size_t(1 + 3 * k + a)] = p.positions[p.indices[t + std::size_t(k)]][a];
                 out.push_back(triangle);
             }
     std::sort(out.begin(), out.end());
@@ -40,14 +41,16 @@ std::vector<Triangle> triangles(const Model& model) {
 
 Model level_of_parts() {
     Model model;
-    model.materials = {Material{"brick"}, Material{"page_0"}, Material{"brick"}};  // 2: an importer's copy of 0
+    model.materials = {Material{"brick"}, Material{"page_0"},
+                       Material{"brick"}};  // 2: an importer's copy of 0
     model.is_lod = true;
     model.lod_params = {{"level", "3"}};
     model.source = "house.glb";
     int root = add_node(model, -1, "house");
     int wall = add_node(model, root, "wall");
     model.nodes[std::size_t(add_node(model, wall, "left"))].primitives.push_back(quad(0, 0, 0, true));
-    model.nodes[std::size_t(add_node(model, wall, "right"))].primitives.push_back(quad(1, 0, 2, true));  // shares an edge
+    model.nodes[std::size_t(add_node(model, wall, "right"))].primitives.push_back(
+        quad(1, 0, 2, true));  // shares an edge
     model.nodes[std::size_t(add_node(model, root, "box"))].primitives.push_back(quad(0, 1, 1, true));
     return model;
 }

@@ -1,14 +1,14 @@
 #include "toolkit/lod/hybrid/hybrid.h"
 
-#include "toolkit/lod/pages/boxes.h"
-#include "toolkit/model/cost.h"
+#include "test_support.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/cut/kept_subtrees.h"
 #include "toolkit/lod/cut/level_budgets.h"
-#include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/pages/bake.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/model/cost.h"
 #include "toolkit/model/vertex_layout.h"
-#include "toolkit/formats/model_io.h"
-#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -21,15 +21,15 @@ using namespace boxlod;
 
 namespace {
 
-void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f& right, const Eigen::Vector3f& up) {
+void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f& right,
+              const Eigen::Vector3f& up) {
     const auto base = std::uint32_t(p.positions.size());
     const Eigen::Vector3f normal = right.cross(up).normalized();
-    for (const Eigen::Vector3f& v : {corner, Eigen::Vector3f(corner + right), Eigen::Vector3f(corner + right + up),
-                                     Eigen::Vector3f(corner + up)})
-        {
-            p.positions.push_back(v);
-            p.normals.push_back(normal);
-        }
+    for (const Eigen::Vector3f& v : {corner, Eigen::Vector3f(corner + right),
+                                     Eigen::Vector3f(corner + right + up), Eigen::Vector3f(corner + up)}) {
+        p.positions.push_back(v);
+        p.normals.push_back(normal);
+    }
     p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     ++p.polygon_count;
 }
@@ -39,12 +39,14 @@ void add_quad(Primitive& p, const Eigen::Vector3f& corner, const Eigen::Vector3f
 // its thousands of separate quads loses tiles.
 int add_facade(Model& model, int parent, float x0, int n = 96) {
     const int first_material = int(model.materials.size());
-    const Eigen::Vector4f colors[4] = {{0.8f, 0.2f, 0.1f, 1}, {0.1f, 0.6f, 0.2f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.2f, 1}};
+    const Eigen::Vector4f colors[4] = {
+        {0.8f, 0.2f, 0.1f, 1}, {0.1f, 0.6f, 0.2f, 1}, {0.1f, 0.2f, 0.8f, 1}, {0.9f, 0.9f, 0.2f, 1}};
     for (const Eigen::Vector4f& color : colors) model.materials.emplace_back().base_color = color;
     const int facade = add_node(model, parent, "facade");
     // n = 96: its mesh, even welded, costs more than its box's pages
     const float tile = 4.0f / n;
-    for (int k = 0; k < 4; ++k) model.nodes[std::size_t(facade)].primitives.emplace_back().material = first_material + k;
+    for (int k = 0; k < 4; ++k)
+        model.nodes[std::size_t(facade)].primitives.emplace_back().material = first_material + k;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x)
             add_quad(model.nodes[std::size_t(facade)].primitives[std::size_t((x * 7 + y * 3) % 4)],
@@ -63,7 +65,8 @@ int add_sphere(Model& model, int parent, float cx) {
     for (int i = 0; i <= stacks; ++i)
         for (int j = 0; j <= slices; ++j) {
             const double theta = pi * i / stacks, phi = 2 * pi * j / slices;
-            const Eigen::Vector3f n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+            const Eigen::Vector3f n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                                    float(std::sin(theta) * std::sin(phi)));
             p.positions.push_back(Eigen::Vector3f(cx, 2, 0) + 1.5f * n);
             p.normals.push_back(n);
         }
@@ -83,18 +86,20 @@ int add_roof(Model& model, int parent) {
     model.materials.emplace_back().base_color = {0.8f, 0.15f, 0.1f, 1};
     model.materials.emplace_back().base_color = {0.9f, 0.9f, 0.9f, 1};
     const int roof = add_node(model, parent, "roof");
-    for (int k = 0; k < 2; ++k) model.nodes[std::size_t(roof)].primitives.emplace_back().material = first_material + k;
+    for (int k = 0; k < 2; ++k)
+        model.nodes[std::size_t(roof)].primitives.emplace_back().material = first_material + k;
     const int around = 96, along = 24;
     const double pi = 3.14159265358979323846;
     auto point = [&](int i, int j) {
         const double angle = pi * i / around;
-        return Eigen::Vector3f(float(2 * std::cos(angle)), float(2 * std::sin(angle)), 6.0f * float(j) / float(along));
+        return Eigen::Vector3f(float(2 * std::cos(angle)), float(2 * std::sin(angle)),
+                               6.0f * float(j) / float(along));
     };
     for (int i = 0; i < around; ++i)
         for (int j = 0; j < along; ++j) {
             const Eigen::Vector3f corner = point(i + 1, j);
-            add_quad(model.nodes[std::size_t(roof)].primitives[std::size_t((i + j) % 2)], corner, point(i + 1, j + 1) - corner,
-                     point(i, j) - corner);
+            add_quad(model.nodes[std::size_t(roof)].primitives[std::size_t((i + j) % 2)], corner,
+                     point(i + 1, j + 1) - corner, point(i, j) - corner);
         }
     return roof;
 }
@@ -120,7 +125,8 @@ HybridSettings settings_for(float pixel_metres, int threads) {
     HybridSettings settings;
     settings.sizing.fovy_degrees = 45;
     settings.sizing.resolution = 1080;
-    settings.sizing.distance = float(pixel_metres * 1080 / (2 * std::tan(22.5 * 3.14159265358979323846 / 180)));
+    settings.sizing.distance =
+        float(pixel_metres * 1080 / (2 * std::tan(22.5 * 3.14159265358979323846 / 180)));
     settings.threads = threads;
     return settings;
 }
@@ -134,8 +140,10 @@ TEST(Hybrid, TheBoxWinsOnAFlatDetailedFacadeAndSimplificationOnACurvedPart) {
     const std::vector<Proxy>& sphere = plan.proxies[std::size_t(s.sphere)];
     ASSERT_FALSE(facade.empty());
     ASSERT_FALSE(sphere.empty());
-    // The facade's box with the sizing's texels is kept, no cheaper proxy beats it, and it shows the facade nearly exactly.
-    auto box = std::find_if(facade.begin(), facade.end(), [](const Proxy& p) { return p.kind == ProxyKind::box && p.texel_scale == 1; });
+    // The facade's box with the sizing's texels is kept, no cheaper proxy beats it, and it shows the facade
+    // nearly exactly.
+    auto box = std::find_if(facade.begin(), facade.end(),
+                            [](const Proxy& p) { return p.kind == ProxyKind::box && p.texel_scale == 1; });
     ASSERT_NE(box, facade.end());
     for (auto p = facade.begin(); p != box; ++p) EXPECT_GT(p->error, box->error);
     for (auto p = box + 1; p != facade.end(); ++p) EXPECT_GT(p->bytes, box->bytes);
@@ -166,11 +174,13 @@ TEST(Hybrid, OffersTheSubtreeSimplifiedToHalfItsTrianglesAndLargeOnesFiner) {
         for (const Primitive& primitive : p.primitives) triangles += primitive.triangle_count();
         shares.push_back(double(triangles) / double(sphere_triangles));
     }
-    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) { return share > 0.4 && share < 0.6; }))
-        << ::testing::PrintToString(shares);
+    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) {
+        return share > 0.4 && share < 0.6;
+    })) << ::testing::PrintToString(shares);
     // Its 4,096 triangles make it large: 1/sqrt(2) of them too.
-    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) { return share > 0.65 && share < 0.75; }))
-        << ::testing::PrintToString(shares);
+    EXPECT_TRUE(std::any_of(shares.begin(), shares.end(), [](double share) {
+        return share > 0.65 && share < 0.75;
+    })) << ::testing::PrintToString(shares);
 }
 
 // Vertex clustering simplifies a whole building's many separate parts
@@ -207,8 +217,10 @@ TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
             corner[axis] = side ? hi[axis] : lo[axis];
             right[u] = hi[u] - lo[u];
             up[v] = hi[v] - lo[v];
-            if (side) add_quad(shell, corner, right, up);
-            else add_quad(shell, corner + up, right, -up);
+            if (side)
+                add_quad(shell, corner, right, up);
+            else
+                add_quad(shell, corner + up, right, -up);
         }
     validate_model(model);
     const auto boxes = node_boxes(model, BoxKind::minimal, 1);
@@ -314,7 +326,8 @@ TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
         EXPECT_EQ(plan.steps[k].node, expected[k].first) << "step " << k;
         EXPECT_EQ(plan.steps[k].proxy, expected[k].second) << "step " << k;
     }
-    const std::vector<double> bytes = {100, 110, 210, 250, 150 + own, 2 * own}, error = {1000, 600, 300, 220, 100, 0};
+    const std::vector<double> bytes = {100, 110, 210, 250, 150 + own, 2 * own},
+                              error = {1000, 600, 300, 220, 100, 0};
     EXPECT_EQ(plan.bytes, bytes);
     EXPECT_EQ(plan.error, error);
 }
@@ -325,12 +338,14 @@ TEST(Hybrid, TakesTheLargestErrorDropPerByteFirst) {
 TEST(Hybrid, ALevelFillsItsBudgetWithTheChangesThatFit) {
     Model model = two_children();
     HybridPlan plan = hand_set_plan(model);
-    EXPECT_EQ(best_prefix_within(plan.bytes, plan.error, 160), 1u);  // the plan's own prefix stops at 110 bytes
+    EXPECT_EQ(best_prefix_within(plan.bytes, plan.error, 160),
+              1u);  // the plan's own prefix stops at 110 bytes
     const HybridLevel level = hybrid_level_within(model, plan, 160);
     EXPECT_EQ(level.bytes, 150);
     EXPECT_EQ(level.error, 520);
     EXPECT_EQ(level.state, (std::vector<int>{-1, 0, 1}));
-    EXPECT_EQ(hybrid_level_within(model, plan, 50).state, (std::vector<int>{0, 0, 0}));  // nothing fits: the root's cheapest
+    EXPECT_EQ(hybrid_level_within(model, plan, 50).state,
+              (std::vector<int>{0, 0, 0}));  // nothing fits: the root's cheapest
 }
 
 // Both children sample one texture: the plan pays for it once, when the first
@@ -357,7 +372,8 @@ TEST(Hybrid, PaysForATextureOnceHoweverManyPartsSampleIt) {
     order_hybrid_plan(model, plan);
     ASSERT_EQ(plan.steps.size(), 3u);
     EXPECT_EQ(plan.steps[1].node, 1);  // a: 400 error for its geometry and the texture
-    const std::vector<double> bytes = {100, 110, 110 - 50 + own + texture, 110 - 50 + own + texture - 60 + own};
+    const std::vector<double> bytes = {100, 110, 110 - 50 + own + texture,
+                                       110 - 50 + own + texture - 60 + own};
     EXPECT_EQ(plan.bytes, bytes);
     EXPECT_EQ(plan.bytes.back(), double(model_cost(model).bytes()));  // the original, as cost.h counts it
 }
@@ -384,7 +400,8 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
             EXPECT_EQ(value_of(lod.statistics, "budget_bytes"), format_number(std::floor(budget)));
             EXPECT_EQ(value_of(lod.statistics, "bytes_lod"), format_number(spent));
             if (mode == LevelMode::hybrid) {  // its proxies' measured errors, stated
-                EXPECT_EQ(value_of(lod.statistics, "measured_error"), format_number(hybrid_cut_error(*session->derived.hybrid, lod.cut)));
+                EXPECT_EQ(value_of(lod.statistics, "measured_error"),
+                          format_number(hybrid_cut_error(*session->derived.hybrid, lod.cut)));
             }
         }
     }
@@ -418,7 +435,8 @@ TEST(Hybrid, ALevelTheEstimatesUnderspendGrowsIntoItsBudget) {
         if (c == 2 || c == 3) {
             EXPECT_LT(lod.measured_error * 4, within_estimate.error) << "level " << c;
         }
-        const Cut kept = hybrid_cut(model, *session->derived.hybrid, session->cache.hybrid_levels[std::size_t(c)].state);
+        const Cut kept =
+            hybrid_cut(model, *session->derived.hybrid, session->cache.hybrid_levels[std::size_t(c)].state);
         EXPECT_EQ(kept.box_nodes, lod.cut.box_nodes);  // the session keeps the level drawn
         EXPECT_EQ(kept.geometry_nodes, lod.cut.geometry_nodes);
     }
@@ -458,7 +476,8 @@ TEST(Hybrid, LevelsDrawBoxesAndSimplifiedSubtreesWithinTheirBudgets) {
         Lod lod = build_lod(*session, c, 2);
         some_box |= !lod.cut.box_nodes.empty();
         some_simplified |= !lod.cut.simplified_nodes.empty();
-        // A simplified node draws no more triangles than its sub-tree, in fewer bytes (at share 1 only welded).
+        // A simplified node draws no more triangles than its sub-tree, in fewer bytes (at share 1 only
+        // welded).
         for (auto [node, proxy] : lod.cut.simplified_nodes) {
             const Proxy& drawn = session->derived.hybrid->proxies[std::size_t(node)][std::size_t(proxy)];
             std::size_t triangles = 0;
@@ -493,16 +512,20 @@ TEST(Hybrid, OffersTheBoxWithCoarserTexelsForFewerBytes) {
     for (const Proxy& p : plan.proxies[std::size_t(facade)])
         if (p.kind == ProxyKind::box) by_scale[p.texel_scale] = &p;
     ASSERT_TRUE(by_scale.count(1) && by_scale.count(2) && by_scale.count(4));
-    for (auto finer = by_scale.begin(), coarser = std::next(finer); coarser != by_scale.end(); ++finer, ++coarser) {
-        EXPECT_EQ(coarser->second->bytes, double(box_bytes_estimate(*boxes[std::size_t(facade)],
-                                                                    coarser_sizing(settings.sizing, double(coarser->first)), true)));
+    for (auto finer = by_scale.begin(), coarser = std::next(finer); coarser != by_scale.end();
+         ++finer, ++coarser) {
+        EXPECT_EQ(coarser->second->bytes,
+                  double(box_bytes_estimate(*boxes[std::size_t(facade)],
+                                            coarser_sizing(settings.sizing, double(coarser->first)), true)));
         EXPECT_LE(coarser->second->bytes, 0.75 * finer->second->bytes);
         EXPECT_GT(coarser->second->error, finer->second->error);
     }
     // At 16, pages at their least size save less than a quarter of the box at 8: not offered.
     ASSERT_TRUE(by_scale.count(8));
     EXPECT_FALSE(by_scale.count(16));
-    EXPECT_GT(double(box_bytes_estimate(*boxes[std::size_t(facade)], coarser_sizing(settings.sizing, 16), true)), 0.75 * by_scale[8]->bytes);
+    EXPECT_GT(
+        double(box_bytes_estimate(*boxes[std::size_t(facade)], coarser_sizing(settings.sizing, 16), true)),
+        0.75 * by_scale[8]->bytes);
 
     // A budget below the box at 2: the best box that fits is the one at 4.
     LodParameters parameters;
@@ -518,7 +541,8 @@ TEST(Hybrid, OffersTheBoxWithCoarserTexelsForFewerBytes) {
     ASSERT_EQ(texel_scale(lod.cut, n), 4);
     std::uint64_t texels = 0;  // the faces whole at scale 4: cropping keeps no more
     for (const OrientedBoxFace& face : oriented_box_faces(*boxes[std::size_t(n)])) {
-        const Eigen::Vector2i size = face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(settings.sizing, 4));
+        const Eigen::Vector2i size =
+            face_texels(2 * face.half_width, 2 * face.half_height, coarser_sizing(settings.sizing, 4));
         texels += std::uint64_t(size.x()) * std::uint64_t(size.y());
     }
     EXPECT_GT(lod.face_texels, 0u);
@@ -545,7 +569,8 @@ TEST(Hybrid, AFarCurvedRoofIsDrawnByItsBakedProxyWhereOffered) {
     settings.baked_proxies = true;
     const HybridPlan plan = plan_hybrid(model, decode_textures(model), boxes, settings);
     const std::vector<Proxy>& proxies = plan.proxies[std::size_t(roof)];
-    auto baked = std::find_if(proxies.begin(), proxies.end(), [](const Proxy& p) { return p.kind == ProxyKind::baked; });
+    auto baked = std::find_if(proxies.begin(), proxies.end(),
+                              [](const Proxy& p) { return p.kind == ProxyKind::baked; });
     ASSERT_NE(baked, proxies.end());
     for (const Proxy& p : proxies) {
         EXPECT_NE(p.kind, ProxyKind::box);
@@ -571,6 +596,8 @@ TEST(Hybrid, AFarCurvedRoofIsDrawnByItsBakedProxyWhereOffered) {
     bool sampled = false;
     for (const Node& node : lod.model.nodes)
         for (const Primitive& p : node.primitives)
-            sampled = sampled || (lod.model.materials[std::size_t(p.material)].name.find("_proxy") != std::string::npos && !p.uvs.empty());
+            sampled = sampled || (lod.model.materials[std::size_t(p.material)].name.find("_proxy") !=
+                                      std::string::npos &&
+                                  !p.uvs.empty());
     EXPECT_TRUE(sampled);
 }

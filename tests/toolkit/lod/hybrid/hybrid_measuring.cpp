@@ -7,7 +7,7 @@ using namespace boxlod;
 TEST(HybridMeasuring, PixelErrorCountsCoverageAndColour) {
     const Eigen::Vector4f red(1, 0, 0, 1), black(0, 0, 0, 1), none(0, 0, 0, 0);
     EXPECT_EQ(hybrid_pixel_error(red, red), 0);
-    EXPECT_EQ(hybrid_pixel_error(red, none), 1);              // covered against background
+    EXPECT_EQ(hybrid_pixel_error(red, none), 1);                  // covered against background
     EXPECT_NEAR(hybrid_pixel_error(red, black), 1.0 / 3, 1e-12);  // one channel of three, fully apart
     EXPECT_EQ(hybrid_pixel_error(none, none), 0);
 }

@@ -43,7 +43,7 @@ TEST(PaidTextures, AChangePaysForWhatItBringsInAndGetsBackWhatItFrees) {
     const std::vector<int> first = paid.of_material[0], both = paid.of_material[1], none;
     DrawnTextures drawn(paid);
     EXPECT_EQ(drawn.apply(none, {&first}), paid.bytes[0]);
-    EXPECT_EQ(drawn.change(none, {&first}), 0);  // already paid for
+    EXPECT_EQ(drawn.change(none, {&first}), 0);              // already paid for
     EXPECT_EQ(drawn.change(first, {&both}), paid.bytes[1]);  // texture 0 stays paid while both sample it
     EXPECT_EQ(drawn.change(first, {}), -paid.bytes[0]);      // and is freed with its last part
     EXPECT_EQ(drawn.change(first, {}), -paid.bytes[0]);      // change() left the count as it was

@@ -1,7 +1,7 @@
 #include "toolkit/lod/pages/atlas.h"
 
-#include "base/random.h"
 #include <gtest/gtest.h>
+#include "base/random.h"
 
 using namespace boxlod;
 
@@ -22,7 +22,8 @@ bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 // Power-of-two pages within the limits; every face inside its page; two faces on a
 // page at least two gutters apart (a face may touch the page's border).
-void expect_valid(const Atlas& atlas, const std::vector<Eigen::Vector2i>& sizes, int min_size, int max_size, int gutter) {
+void expect_valid(const Atlas& atlas, const std::vector<Eigen::Vector2i>& sizes, int min_size, int max_size,
+                  int gutter) {
     ASSERT_EQ(atlas.placements.size(), sizes.size());
     for (const Eigen::Vector2i& page : atlas.pages) {
         EXPECT_TRUE(power_of_two(page.x()) && power_of_two(page.y())) << page.transpose();
@@ -98,12 +99,15 @@ TEST(Atlas, AtTheLargestSizeAsManyPagesAsNeededThenSmallerOnes) {
 // many small faces (where the gutters alone take a quarter), a few large ones, a mix;
 // each bound a point or two below what the packer reaches on these PCG32 inputs.
 TEST(Atlas, OccupancyOnFixedInputs) {
-    std::vector<Eigen::Vector2i> many = faces(400, 5), large = faces(12, 6, 400, 300), mix = faces(200, 7, 200, 120);
-    const std::vector<std::pair<std::vector<Eigen::Vector2i>, double>> cases = {{many, 0.70}, {large, 0.68}, {mix, 0.76}};
+    std::vector<Eigen::Vector2i> many = faces(400, 5), large = faces(12, 6, 400, 300),
+                                 mix = faces(200, 7, 200, 120);
+    const std::vector<std::pair<std::vector<Eigen::Vector2i>, double>> cases = {
+        {many, 0.70}, {large, 0.68}, {mix, 0.76}};
     for (const auto& [sizes, at_least] : cases) {
         Atlas atlas = pack_atlas(sizes, 64, 4096, 2);
         expect_valid(atlas, sizes, 64, 4096, 2);
-        EXPECT_GE(occupancy(atlas, sizes), at_least) << sizes.size() << " faces on " << atlas.pages.size() << " pages";
+        EXPECT_GE(occupancy(atlas, sizes), at_least)
+            << sizes.size() << " faces on " << atlas.pages.size() << " pages";
     }
 }
 
@@ -114,7 +118,8 @@ TEST(Atlas, GutterTexelsAreTheBlocksButTheFacesInsideThePage) {
     Atlas atlas = pack_atlas(one, 32, 1024, 2);
     ASSERT_EQ(atlas.pages[0], Eigen::Vector2i(256, 64));
     const AtlasPlacement at = atlas.placements[0];
-    const int x0 = std::max(at.x - 2, 0), x1 = std::min(at.x + 200 + 2, 256), y0 = std::max(at.y - 2, 0), y1 = std::min(at.y + 50 + 2, 64);
+    const int x0 = std::max(at.x - 2, 0), x1 = std::min(at.x + 200 + 2, 256), y0 = std::max(at.y - 2, 0),
+              y1 = std::min(at.y + 50 + 2, 64);
     EXPECT_EQ(gutter_texels(atlas, one, 2), std::uint64_t((x1 - x0) * (y1 - y0) - 200 * 50));
     EXPECT_EQ(gutter_texels(atlas, one, 0), 0u);
     std::vector<Eigen::Vector2i> many = faces(400, 5);
@@ -124,7 +129,8 @@ TEST(Atlas, GutterTexelsAreTheBlocksButTheFacesInsideThePage) {
     const std::uint64_t gutter = gutter_texels(packed, many, 2);
     EXPECT_GT(gutter, face / 4);  // small faces: the gutters are a large share
     EXPECT_LE(face + gutter, page_texels(packed));
-    EXPECT_GE(double(face + gutter), 0.85 * double(page_texels(packed)));  // and the packer leaves little free
+    EXPECT_GE(double(face + gutter),
+              0.85 * double(page_texels(packed)));  // and the packer leaves little free
 }
 
 // The same atlas for any thread count (the two layouts are packed side by side).

@@ -1,7 +1,7 @@
 #include "toolkit/lod/pages/bake.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 using namespace boxlod;
 
@@ -63,7 +63,7 @@ TEST(Bake, FaceRecordsAlbedoCoverageTangentNormalAndHeight) {
                 EXPECT_EQ(baked.color.at(x, y)[1], 0);
                 EXPECT_EQ(baked.normal.at(x, y)[0], 128);
                 EXPECT_EQ(baked.normal.at(x, y)[1], 128);
-                EXPECT_EQ(baked.normal.at(x, y)[2], 255);  // facing the face: (0, 0, 1)
+                EXPECT_EQ(baked.normal.at(x, y)[2], 255);          // facing the face: (0, 0, 1)
                 EXPECT_NEAR(baked.height.at(x, y)[0], 32768, 40);  // halfway: height 0.5
             }
     }

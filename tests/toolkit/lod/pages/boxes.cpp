@@ -6,8 +6,8 @@
 
 #include "box_checks.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace boxlod {
 namespace {
@@ -63,7 +63,8 @@ Scene scene() {
     s.flat = add_node(m, s.root, "flat");
     OrientedBox wall = make_box({0, 0, 0}, 0.4f, {3, 2, 0.2f});
     add_box_geometry(m.nodes[s.wall], wall);
-    add_box_geometry(m.nodes[s.wall], make_box(wall.axes * Eigen::Vector3f(0, -1.9f, 0.3f), 0.4f, {1, 0.1f, 0.3f}));  // sill
+    add_box_geometry(m.nodes[s.wall],
+                     make_box(wall.axes * Eigen::Vector3f(0, -1.9f, 0.3f), 0.4f, {1, 0.1f, 0.3f}));  // sill
     OrientedBox wall_scope = wall;
     wall_scope.half_extents = {2.5f, 1.5f, 0.2f};
     m.nodes[s.wall].scope = wall_scope;
@@ -197,7 +198,8 @@ TEST(Boxes, TranslatedCopiesAreSolvedOnce) {
     EXPECT_EQ(counts.computed, 2u);  // the facade, one window
     EXPECT_EQ(counts.reused, 2u);
     for (int window : windows) {
-        for (const Eigen::Vector3f& p : subtree_vertices(model, window)) EXPECT_TRUE(encloses(*boxes[window], p));
+        for (const Eigen::Vector3f& p : subtree_vertices(model, window))
+            EXPECT_TRUE(encloses(*boxes[window], p));
         EXPECT_NEAR(box_volume(*boxes[window]), 8 * 0.5f * 0.75f * 0.125f, 1e-4);
     }
 }
@@ -207,7 +209,8 @@ TEST(Boxes, SameBitsForAnyThreadCount) {
     // More nodes than threads, with distinct hulls, so the work really is shared out.
     for (int i = 0; i < 8; ++i) {
         int node = add_node(s.model, s.root, "extra");
-        add_box_geometry(s.model.nodes[node], make_box({float(i), 2, -1}, 0.2f * i, {0.3f, 0.2f + 0.1f * i, 0.4f}));
+        add_box_geometry(s.model.nodes[node],
+                         make_box({float(i), 2, -1}, 0.2f * i, {0.3f, 0.2f + 0.1f * i, 0.4f}));
     }
     for (BoxKind kind : {BoxKind::scope, BoxKind::expanded, BoxKind::minimal}) {
         auto one = node_boxes(s.model, kind, 1);

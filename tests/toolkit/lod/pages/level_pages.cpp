@@ -31,10 +31,12 @@ TEST(LevelPages, EachPageHasItsMaterialAndThreeTextures) {
         EXPECT_EQ(material.normal_texture, lod_page(page).normal);
         EXPECT_EQ(material.height_texture, lod_page(page).height);
         EXPECT_EQ(material.height_depth, 2.5f);
-        EXPECT_EQ(model.textures[std::size_t(lod_page(page).color)].image.width, atlas.pages[std::size_t(page)].x());
+        EXPECT_EQ(model.textures[std::size_t(lod_page(page).color)].image.width,
+                  atlas.pages[std::size_t(page)].x());
     }
     const Image8& normal = model.textures[std::size_t(lod_page(1).normal)].image;
-    EXPECT_EQ(std::vector<int>(normal.at(3, 3), normal.at(3, 3) + 3), (std::vector<int>{128, 128, 255}));  // the flat normal
+    EXPECT_EQ(std::vector<int>(normal.at(3, 3), normal.at(3, 3) + 3),
+              (std::vector<int>{128, 128, 255}));  // the flat normal
     Model untextured;
     add_pages(untextured, atlas, 1, false);
     EXPECT_EQ(untextured.materials.size(), 1u);
@@ -46,7 +48,8 @@ TEST(LevelPages, EachPageHasItsMaterialAndThreeTextures) {
 TEST(LevelPages, AFlatFaceTakesItsCoveredTexelsMeanInLinearLight) {
     BakedFace face = plain_face(4, {255, 255, 255, 255});
     for (int x = 0; x < 4; ++x)
-        for (int y = 0; y < 2; ++y) face.color.at(x, y)[0] = face.color.at(x, y)[1] = face.color.at(x, y)[2] = 0;
+        for (int y = 0; y < 2; ++y)
+            face.color.at(x, y)[0] = face.color.at(x, y)[1] = face.color.at(x, y)[2] = 0;
     const auto color = flat_color(face, face.covered, 8);
     ASSERT_TRUE(color);
     EXPECT_EQ(*color, (std::array<std::uint8_t, 4>{188, 188, 188, 255}));

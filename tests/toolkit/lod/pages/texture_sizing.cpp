@@ -32,7 +32,7 @@ TEST(TextureSizing, FacesGetCeilTexelsAtLeastOne) {
 }
 
 TEST(TextureSizing, LargeFacesScaleDownUniformlyToFitTheLargestPage) {
-    TextureSizing s = sizing(90, 10, 1000, 256);  // limit 256 - 4 = 252 texels
+    TextureSizing s = sizing(90, 10, 1000, 256);      // limit 256 - 4 = 252 texels
     Eigen::Vector2i t = face_texels(10.0f, 5.0f, s);  // 500 x 250 wanted
     EXPECT_EQ(t, Eigen::Vector2i(252, 126));
 }
