@@ -20,7 +20,11 @@ std::string range_text(const NumberRange& range) {
         std::snprintf(buffer, sizeof buffer, "%.10g", v);
         return std::string(buffer);
     };
-    return "[" + number(range.min) + ", " + number(range.max) + "]";
+    std::string text = "[";  // appended, not "[" + ...: GCC 12's false -Wrestrict
+    text += number(range.min);
+    text += ", ";
+    text += number(range.max);
+    return text + "]";
 }
 
 std::string out_of_range_message(const NumberRange& range, const std::string& text) {

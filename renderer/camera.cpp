@@ -119,6 +119,23 @@ void fit_depth_range(Camera& camera, float distance, float radius) {
     if (camera.far_plane <= camera.near_plane * 1.001f) camera.far_plane = camera.near_plane * 2;
 }
 
+Camera orthographic_camera(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
+                           const Eigen::Vector3f& up, const Eigen::Vector2f& half_window, float near_plane,
+                           float far_plane) {
+    Camera camera;
+    camera.orthographic = true;
+    camera.position = eye;
+    camera.target = target;
+    camera.up = up;
+    camera.left = -half_window.x();
+    camera.right = half_window.x();
+    camera.bottom = -half_window.y();
+    camera.top = half_window.y();
+    camera.near_plane = near_plane;
+    camera.far_plane = far_plane;
+    return camera;
+}
+
 float framing_distance(float radius, float fovy_degrees) {
     return 1.1f * radius / std::sin(fovy_degrees * float(M_PI) / 360);
 }

@@ -49,6 +49,13 @@ void fit_depth_range(Camera& camera, float distance, float radius);
 Camera camera_at_position(const Eigen::Vector3f& direction, const Eigen::Vector3f& center, float distance,
                           float fovy_degrees, float scene_radius);
 
+// An orthographic camera at `eye` looking at `target`, `up` upright in the picture: a window of
+// 2 half_window.x() x 2 half_window.y() metres about the view axis, depths from near_plane to
+// far_plane metres in front of the eye. Baking, measuring and surface deviation view this way.
+Camera orthographic_camera(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
+                           const Eigen::Vector3f& up, const Eigen::Vector2f& half_window, float near_plane,
+                           float far_plane);
+
 // Distance at which a sphere of `radius` fills the vertical field of view (with a margin).
 float framing_distance(float radius, float fovy_degrees);
 

@@ -402,6 +402,19 @@ Image8 frame_to_srgb8(const Frame& frame) {
     return image;
 }
 
+Frame downsample(const Frame& frame, int factor) {
+    Frame out;
+    out.width = frame.width / factor;
+    out.height = frame.height / factor;
+    out.color.assign(std::size_t(out.width) * std::size_t(out.height), Eigen::Vector4f::Zero());
+    const float weight = float(factor * factor);
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x)
+            out.color[std::size_t(y / factor) * std::size_t(out.width) + std::size_t(x / factor)] +=
+                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] / weight;
+    return out;
+}
+
 Image8 coverage_mask(const Frame& frame) {
     Image8 mask(frame.width, frame.height, 1);
     for (std::size_t i = 0; i < frame.color.size(); ++i) mask.pixels[i] = frame.color[i].w() > 0 ? 255 : 0;

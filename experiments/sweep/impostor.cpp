@@ -31,7 +31,7 @@ OrientedBoxFace frame_of(const Eigen::Vector3f& direction, const Eigen::Vector3f
 }  // namespace
 
 int impostor_cell(const Bounds& bounds, double texel_size) {
-    double diameter = std::max(double(bounds.size().norm()), 1e-6);
+    double diameter = 2 * double(framing_of(bounds).radius);  // the bounding sphere (model/framing.h)
     double texels = std::ceil(std::min(diameter / texel_size, 4096.0)) + 2 * margin;
     return int(std::clamp(texels, 8.0, 2048.0));
 }

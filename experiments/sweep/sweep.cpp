@@ -169,7 +169,8 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
     check_memory(
         "boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) +
             " pixels",
-        2 * render_memory(config.width, config.height) + metrics_memory(config.width, config.height));
+        2 * render_memory(config.width * config.supersampling, config.height * config.supersampling) +
+            metrics_memory(config.width, config.height));
     const double most_rows =
         most_sweep_rows(config);  // refused before a model is read, an enormous one ran until killed
     check_memory("boxlod sweep: the tables of up to " + format_number(most_rows) + " rows",

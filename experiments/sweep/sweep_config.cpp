@@ -72,6 +72,7 @@ std::string sweep_settings(const SweepConfig& config) {
     auto add = [&](const std::string& key, const std::string& value) { text += key + " = " + value + "\n"; };
     add("width", std::to_string(config.width));
     add("height", std::to_string(config.height));
+    add("supersampling", std::to_string(config.supersampling));
     add("ppd", format_number(config.pixels_per_degree));
     add("sizing", enum_name(sizing_rules(), config.sizing));
     add("impostor_directions", std::to_string(config.impostor_directions));
@@ -84,6 +85,7 @@ namespace {
 
 constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
 constexpr NumberRange distance_multiple_range{0.01, 1000};         // of the framing distance
+constexpr NumberRange supersampling_range{1, 4};                   // 16 samples a pixel at most
 
 struct Line {
     const std::string& file;
@@ -226,6 +228,8 @@ const std::vector<SweepKey>& sweep_keys() {
          [](SweepConfig& c, const Line& l, Folder) { c.width = l.number_in<int>(sweep_image_side_range); }},
         {"height",
          [](SweepConfig& c, const Line& l, Folder) { c.height = l.number_in<int>(sweep_image_side_range); }},
+        {"supersampling", [](SweepConfig& c, const Line& l,
+                             Folder) { c.supersampling = l.number_in<int>(supersampling_range); }},
         {"metrics", [](SweepConfig& c, const Line& l, Folder) { c.metrics = l.words(metrics()); }},
         {"ppd", [](SweepConfig& c, const Line& l,
                    Folder) { c.pixels_per_degree = l.number_in<double>(pixels_per_degree_range); }},

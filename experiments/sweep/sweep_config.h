@@ -56,6 +56,7 @@ struct SweepConfig {
     std::vector<float> distances{1};           // multiples of the model's framing distance
     std::vector<RenderMode> render_modes{RenderMode::normal};
     int width = 512, height = 512;
+    int supersampling = 1;  // renders k times as large a side, averaged over k x k pixels (shot.h)
     std::vector<Metric> metrics = all_metrics();
     double pixels_per_degree = 67;  // FLIP's
     // Every LoD's parameters but those the sweep varies (level mode, box kind,

@@ -125,7 +125,8 @@ void make_reference_shots(ModelRun& run, SweepOutput& out, SweepReport& report,
         const RenderSettings settings =
             view_settings(run.framing, config.views[v], config.distances[d], mode, config.lod, 1);
         shots[k] = timed(render_seconds[k], [&] {
-            return render_shot(run.original->drawable.batches, settings, config.width, config.height);
+            return render_shot(run.original->drawable.batches, settings, config.width, config.height,
+                               config.supersampling);
         });
         if (flip_measured)
             shots[k].flip_reference = timed(metric_seconds[k], [&] {
@@ -163,7 +164,8 @@ DrawnRow draw_row(const ModelRun& run, bool keep_image, const SweepCandidate& c,
                                                   config.distances[row.distance], row.mode, config.lod, 1);
     DrawnRow drawn;
     Shot shot = timed(drawn.render_seconds, [&] {
-        return render_shot(c.drawable->drawable.batches, settings, config.width, config.height);
+        return render_shot(c.drawable->drawable.batches, settings, config.width, config.height,
+                           config.supersampling);
     });
     Metrics metrics = timed(drawn.metric_seconds, [&] {
         return compare_shots(config, original_shot, shot, config.keep_images == KeptImages::all, 1);

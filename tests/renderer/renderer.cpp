@@ -531,3 +531,17 @@ TEST(Renderer, AFrameOverTheMemoryBudgetIsRefusedBeforeItIsAllocated) {
     EXPECT_THROW(make_frame(513, 512, {0, 0, 0}), InputError);
     set_memory_budget(0);
 }
+
+TEST(Renderer, DownsampleAveragesBlocksOfColourAndCoverage) {
+    Frame frame = make_frame(4, 2, {0, 0, 0});
+    for (int x = 0; x < 4; ++x) {
+        frame.color[std::size_t(x)] = Eigen::Vector4f(float(x), 0, 1, x < 2 ? 1.f : 0.f);
+        frame.color[std::size_t(4 + x)] = Eigen::Vector4f(float(x), 1, 1, x == 0 ? 1.f : 0.f);
+    }
+    const Frame half = downsample(frame, 2);
+    ASSERT_EQ(half.width, 2);
+    ASSERT_EQ(half.height, 1);
+    EXPECT_EQ(half.color[0], Eigen::Vector4f(0.5f, 0.5f, 1, 0.75f));  // three of four samples covered
+    EXPECT_EQ(half.color[1], Eigen::Vector4f(2.5f, 0.5f, 1, 0));
+    EXPECT_TRUE(half.depth.empty());
+}

@@ -299,8 +299,8 @@ Subcommand build_subcommand() {
              switch_error_option(),
              {"viewer", "",
               "with --chain: also write OUT.three.html and OUT.babylon.html beside it, viewers that switch "
-              "its levels at its switch distances in three.js and Babylon.js (docs/cost.md: Switching "
-              "levels)"},
+              "its levels at its switch distances in three.js and Babylon.js "
+              "(docs/cost.md: Switching levels)"},
              {"preview-width", "W", "preview image width", image_side_range, "1024"},
              {"preview-height", "H", "preview image height", image_side_range, "768"},
              {"timings", "",

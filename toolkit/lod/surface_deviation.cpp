@@ -21,17 +21,11 @@ SurfaceViews surface_views(const Model& model, const OrientedBox& frame, int max
             RenderSettings settings;
             settings.mode = RenderMode::untextured;  // only depth and coverage are read
             settings.threads = threads;
-            Camera& camera = settings.camera;
-            camera.orthographic = true;
-            camera.target = frame.center;
-            camera.position = frame.center + sign * frame.axes.col(axis).normalized() * (half[axis] + margin);
-            camera.up = frame.axes.col(v).normalized();
-            camera.left = -half[u] - pixel;
-            camera.right = half[u] + pixel;
-            camera.bottom = -half[v] - pixel;
-            camera.top = half[v] + pixel;
-            camera.near_plane = 0;
-            camera.far_plane = 2 * (half[axis] + margin);
+            settings.camera = orthographic_camera(
+                frame.center + sign * frame.axes.col(axis).normalized() * (half[axis] + margin), frame.center,
+                frame.axes.col(v).normalized(), {half[u] + pixel, half[v] + pixel}, 0,
+                2 * (half[axis] + margin));
+            const Camera& camera = settings.camera;
             const int width = std::max(1, int(std::ceil((camera.right - camera.left) / pixel)));
             const int height = std::max(1, int(std::ceil((camera.top - camera.bottom) / pixel)));
             Frame rendered = make_frame(width, height, {0, 0, 0});

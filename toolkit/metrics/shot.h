@@ -18,6 +18,10 @@ struct Shot {
         flip_reference;  // an original's, when FLIP is measured: prepared once per view
 };
 
-Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height);
+// With `supersampling` k > 1 the render is k times as large on each side and averaged over k x k
+// pixels (renderer.h: downsample): edges and detail below a pixel blend as an anti-aliased
+// client shows them, and a pixel is covered where any of its samples is.
+Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height,
+                 int supersampling = 1);
 
 }  // namespace boxlod

@@ -22,7 +22,7 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
         "render_modes = normal, parallax\n"
         "width = 64\nheight = 48\nfovy = 30\n"
         "metrics = psnr, ssim\n"
-        "ppd = 40\nresolution = 256\nkeep_images = all\nthreads = 2\n"
+        "ppd = 40\nsupersampling = 2\nresolution = 256\nkeep_images = all\nthreads = 2\n"
         "sizing = each-distance\nbaselines = single-box, simplification\nkeep_small_subtrees = "
         "true\nkeep_cheaper_subtrees = false\n",
         "/work/sweeps/config.txt");
@@ -45,6 +45,8 @@ TEST(SweepConfig, ParsesListsAndResolvesPathsAgainstTheConfigFolder) {
     EXPECT_EQ(c.lod.fovy, 30);
     EXPECT_EQ(c.metrics, (std::vector<Metric>{Metric::psnr, Metric::ssim}));
     EXPECT_EQ(c.pixels_per_degree, 40);
+    EXPECT_EQ(c.supersampling, 2);
+    EXPECT_EQ(SweepConfig{}.supersampling, 1);
     EXPECT_EQ(c.lod.resolution, 256);
     EXPECT_EQ(c.keep_images, KeptImages::all);
     EXPECT_EQ(c.threads, 2);
@@ -104,6 +106,8 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
                  "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
     expect_error("models = a.glb\ndistances = 1, -2\n",
                  "cfg.txt: line 2: distances: expected a number in [0.01, 1000], got '-2'");
+    expect_error("models = a.glb\nsupersampling = 8\n",
+                 "cfg.txt: line 2: supersampling: expected a number in [1, 4], got '8'");
     expect_error("models = a.glb\nppd = 1e8\n",
                  "cfg.txt: line 2: ppd: expected a number in [1, 300], got '1e8'");
     expect_error("models = a.glb\nwanted_levels = 1000000000\n",

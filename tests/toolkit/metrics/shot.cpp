@@ -31,3 +31,28 @@ TEST(Shot, CoversWhatTheModelDrawsOnWhite) {
     const Shot empty = render_shot({}, settings, 16, 16);
     EXPECT_EQ(covered_pixels(empty.coverage), 0u);
 }
+
+// Supersampled: the same size, every pixel covered at 1 sample also covered, edges blended between
+// the building's colour and white, and the picture near the 1-sample one away from the edges.
+TEST(Shot, SupersampledBlendsEdgesAndCoversAnyPixelASampleCovers) {
+    const std::unique_ptr<DrawableModel> drawable = make_drawable_model(test::lod_test_building());
+    const Framing framing = framing_of(drawable->drawable.bounds);
+    RenderSettings settings;
+    settings.camera = framed_camera(framing, {1, 1, 1}, framing_distance(framing, 45), 45);
+    settings.light = light_for_camera(settings.camera);
+    settings.threads = 1;
+    const Shot one = render_shot(drawable->drawable.batches, settings, 64, 48);
+    const Shot four = render_shot(drawable->drawable.batches, settings, 64, 48, 4);
+    ASSERT_EQ(four.image.width, 64);
+    ASSERT_EQ(four.image.height, 48);
+    EXPECT_GT(covered_pixels(four.coverage), covered_pixels(one.coverage));
+    int blended = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const std::uint8_t* p = four.image.at(x, y);
+            if (four.coverage.covered[std::size_t(y * 64 + x)] &&
+                !one.coverage.covered[std::size_t(y * 64 + x)])
+                blended += p[0] > 128 && p[0] < 255;  // part building, part white
+        }
+    EXPECT_GT(blended, 10);
+}

@@ -14,21 +14,6 @@ namespace {
 // a texture baked from it, and the error measures the aliasing.
 constexpr int supersampling = 2;
 
-void downsample(Frame& frame) {
-    const int w = frame.width / supersampling, h = frame.height / supersampling;
-    std::vector<Eigen::Vector4f> color(std::size_t(w) * std::size_t(h), Eigen::Vector4f::Zero());
-    for (int y = 0; y < frame.height; ++y)
-        for (int x = 0; x < frame.width; ++x)
-            color[std::size_t(y / supersampling) * std::size_t(w) + std::size_t(x / supersampling)] +=
-                frame.color[std::size_t(y) * std::size_t(frame.width) + std::size_t(x)] /
-                float(supersampling * supersampling);
-    frame.width = w;
-    frame.height = h;
-    frame.color = std::move(color);
-    frame.depth.clear();
-    frame.normal.clear();
-}
-
 ComparedPixel compared_pixel(const Eigen::Vector4f& linear) {
     return {std::clamp(linear.w(), 0.0f, 1.0f),
             {linear_to_srgb(linear[0]), linear_to_srgb(linear[1]), linear_to_srgb(linear[2])}};
@@ -56,20 +41,14 @@ std::vector<Frame> render_views(const std::vector<Batch>& batches, const Measuri
         settings.mode = mode;
         settings.threads = 1;  // nodes are measured in parallel
         settings.depth_from_frame = underlay != nullptr;
-        Camera& camera = settings.camera;
-        camera.orthographic = true;
-        camera.position = view.sphere.center + direction * (2 * r);
-        camera.target = view.sphere.center;
-        camera.left = camera.bottom = -half;
-        camera.right = camera.top = half;
-        camera.near_plane = r * 0.5f;
-        camera.far_plane = r * 3.5f;
-        settings.light = light_for_camera(camera);
+        settings.camera = orthographic_camera(view.sphere.center + direction * (2 * r), view.sphere.center,
+                                              Eigen::Vector3f::UnitY(), {half, half}, r * 0.5f, r * 3.5f);
+        settings.light = light_for_camera(settings.camera);
         frames.push_back(underlay
                              ? (*underlay)[std::size_t(k)]
                              : make_frame(view.side * supersampling, view.side * supersampling, {0, 0, 0}));
         render(batches, settings, frames.back());
-        if (downsampled) downsample(frames.back());
+        if (downsampled) frames.back() = downsample(frames.back(), supersampling);
     }
     return frames;
 }

@@ -98,17 +98,10 @@ BakedFace bake_face(const Drawable& subtree, const OrientedBoxFace& face, const 
     RenderSettings settings;
     settings.mode = RenderMode::albedo;
     settings.threads = threads;
-    Camera& camera = settings.camera;
-    camera.orthographic = true;
-    camera.position = face.center + face.normal * back_off;
-    camera.target = face.center;
-    camera.up = face.bitangent;
-    camera.left = -face.half_width;
-    camera.right = face.half_width;
-    camera.bottom = -face.half_height;
-    camera.top = face.half_height;
-    camera.near_plane = back_off - margin;
-    camera.far_plane = back_off + depth + margin;
+    settings.camera = orthographic_camera(face.center + face.normal * back_off, face.center, face.bitangent,
+                                          {face.half_width, face.half_height}, back_off - margin,
+                                          back_off + depth + margin);
+    const Camera& camera = settings.camera;
     Frame frame = make_frame(texels.x(), texels.y(), {0, 0, 0});
     render(subtree.batches, settings, frame);
 
