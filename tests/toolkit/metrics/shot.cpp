@@ -8,14 +8,24 @@
 
 using namespace boxlod;
 
-// On white, the coverage is the pixels the model draws; nothing drawn, nothing covered.
-TEST(Shot, CoversWhatTheModelDrawsOnWhite) {
-    const std::unique_ptr<DrawableModel> drawable = make_drawable_model(test::lod_test_building());
-    const Framing framing = framing_of(drawable->drawable.bounds);
+namespace {
+
+// The test building framed from a raised corner, one thread.
+RenderSettings framing_settings(const DrawableModel& drawable) {
+    const Framing framing = framing_of(drawable.drawable.bounds);
     RenderSettings settings;
     settings.camera = framed_camera(framing, {1, 1, 1}, framing_distance(framing, 45), 45);
     settings.light = light_for_camera(settings.camera);
     settings.threads = 1;
+    return settings;
+}
+
+}  // namespace
+
+// On white, the coverage is the pixels the model draws; nothing drawn, nothing covered.
+TEST(Shot, CoversWhatTheModelDrawsOnWhite) {
+    const std::unique_ptr<DrawableModel> drawable = make_drawable_model(test::lod_test_building());
+    const RenderSettings settings = framing_settings(*drawable);
     const Shot shot = render_shot(drawable->drawable.batches, settings, 64, 48);
     ASSERT_EQ(shot.image.width, 64);
     ASSERT_EQ(shot.coverage.covered.size(), 64u * 48u);
@@ -36,11 +46,7 @@ TEST(Shot, CoversWhatTheModelDrawsOnWhite) {
 // the building's colour and white, and the picture near the 1-sample one away from the edges.
 TEST(Shot, SupersampledBlendsEdgesAndCoversAnyPixelASampleCovers) {
     const std::unique_ptr<DrawableModel> drawable = make_drawable_model(test::lod_test_building());
-    const Framing framing = framing_of(drawable->drawable.bounds);
-    RenderSettings settings;
-    settings.camera = framed_camera(framing, {1, 1, 1}, framing_distance(framing, 45), 45);
-    settings.light = light_for_camera(settings.camera);
-    settings.threads = 1;
+    const RenderSettings settings = framing_settings(*drawable);
     const Shot one = render_shot(drawable->drawable.batches, settings, 64, 48);
     const Shot four = render_shot(drawable->drawable.batches, settings, 64, 48, 4);
     ASSERT_EQ(four.image.width, 64);
