@@ -12,7 +12,11 @@ const char* const punctuation[] = {"-->", "<=", ">=", "==", "!=", "&&", "||", "(
                                    "{",   "}",  "[",  "]",  "|",  ":",  ",",  "*", "'",
                                    "~",   "%",  "+",  "-",  "/",  "<",  ">",  "=", "!"};
 
-bool is(int (*test)(int), char c) { return test(static_cast<unsigned char>(c)) != 0; }
+// <cctype>'s tests on a char of any sign (a standard function's address is not to be taken).
+bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+bool is_alnum(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; }
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 
 // The token starting at text[i] (no space, no comment) and the characters it spans.
 std::pair<Token, std::size_t> read_token(const std::string& text, std::size_t i, SourcePlace place,
@@ -20,15 +24,14 @@ std::pair<Token, std::size_t> read_token(const std::string& text, std::size_t i,
     Token token;
     token.place = place;
     const char c = text[i];
-    if (is(std::isalpha, c) || c == '_') {
+    if (is_alpha(c) || c == '_') {
         std::size_t end = i;
-        while (end < text.size() && (is(std::isalnum, text[end]) || text[end] == '_' || text[end] == '.'))
-            ++end;
+        while (end < text.size() && (is_alnum(text[end]) || text[end] == '_' || text[end] == '.')) ++end;
         token.kind = Token::Kind::identifier;
         token.text = text.substr(i, end - i);
         return {token, end - i};
     }
-    if (is(std::isdigit, c) || (c == '.' && i + 1 < text.size() && is(std::isdigit, text[i + 1]))) {
+    if (is_digit(c) || (c == '.' && i + 1 < text.size() && is_digit(text[i + 1]))) {
         auto [end, error] = std::from_chars(text.data() + i, text.data() + text.size(), token.number);
         if (error != std::errc()) throw_grammar_error(file, place, "malformed number");
         token.kind = Token::Kind::number;
@@ -67,7 +70,7 @@ std::vector<Token> tokenize(const std::string& text, const std::string& file) {
         }
     };
     while (i < text.size()) {
-        if (is(std::isspace, text[i])) {
+        if (is_space(text[i])) {
             advance(1);
         } else if (text[i] == '#' || text.compare(i, 2, "//") == 0) {
             while (i < text.size() && text[i] != '\n') advance(1);

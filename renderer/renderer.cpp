@@ -15,6 +15,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace boxlod {
 
@@ -403,6 +404,10 @@ Image8 frame_to_srgb8(const Frame& frame) {
 }
 
 Frame downsample(const Frame& frame, int factor) {
+    if (factor < 1 || frame.width % factor != 0 || frame.height % factor != 0)
+        throw std::invalid_argument("downsample: a factor of " + std::to_string(factor) + " for a " +
+                                    std::to_string(frame.width) + " x " + std::to_string(frame.height) +
+                                    " frame (it must divide both sides)");
     Frame out;
     out.width = frame.width / factor;
     out.height = frame.height / factor;

@@ -33,9 +33,9 @@ Frame make_frame(int width, int height, const Eigen::Vector3f& background);
 // what `boxlod render` peaks at, docs/testing.md: Hardening).
 double render_memory(int width, int height);
 void render(const std::vector<Batch>& batches, const RenderSettings& settings, Frame& frame);
-// `frame` averaged over blocks of factor x factor pixels, its sides divided by `factor` (which
-// divides them): supersampling, the anti-aliasing of the hybrid's measuring and of shots that ask
-// for it. Colour and coverage only; depth and normals are dropped.
+// `frame` averaged over blocks of factor x factor pixels, its sides divided by `factor`
+// (std::invalid_argument unless factor >= 1 divides both): supersampling, the anti-aliasing of the hybrid's
+// measuring and of shots that ask for it. Colour and coverage only; depth and normals are dropped.
 Frame downsample(const Frame& frame, int factor);
 
 Image8 frame_to_srgb8(const Frame& frame);  // RGB, sRGB-encoded

@@ -11,27 +11,16 @@
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
 #include "experiments/sweep/file_lods.h"
-#include "experiments/sweep/impostor.h"
-#include "experiments/sweep/proxy_baked.h"
-#include "experiments/sweep/single_box.h"
 #include "experiments/sweep/sweep_shots.h"
 #include "experiments/sweep/sweep_tables.h"
-#include "experiments/sweep/within_budget.h"
-#include "toolkit/cgal/cgal_simplification.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/cut/level_budgets.h"
 #include "toolkit/lod/cut/level_values.h"
-#include "toolkit/lod/hybrid/simplification.h"
-#include "toolkit/metrics/flip.h"
-#include "toolkit/metrics/heatmap.h"
-#include "toolkit/metrics/image_metrics.h"
 #include "toolkit/metrics/metric_registry.h"
-#include "toolkit/metrics/silhouette.h"
 #include "toolkit/model/cost.h"
 #include "toolkit/model/framing.h"
-#include "toolkit/model/statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +28,6 @@
 #include <functional>
 #include <map>
 #include <optional>
-#include <sstream>
-#include <tuple>
 
 namespace boxlod {
 namespace {
@@ -165,12 +152,14 @@ SweepReport sweep_into(const SweepConfig& config, const std::string& output_fold
                        std::FILE* progress, const std::vector<std::string>& shard_folders = {}) {
     auto sweep_start = Clock::now();
     if (threads < 0) threads = config.threads;
-    // A row holds its view's reference shot and the one it measures, both compared.
-    check_memory(
-        "boxlod sweep: views of " + std::to_string(config.width) + "x" + std::to_string(config.height) +
-            " pixels",
-        2 * render_memory(config.width * config.supersampling, config.height * config.supersampling) +
-            metrics_memory(config.width, config.height));
+    // Rows are drawn `threads` at a time, each rendering (supersampled) and comparing with its view's
+    // reference, which is rendered the same way.
+    const int side_by_side = thread_count(threads);
+    const int k = config.supersampling;
+    check_memory("boxlod sweep: " + std::to_string(side_by_side) + " views of " +
+                     std::to_string(config.width * k) + "x" + std::to_string(config.height * k) + " pixels",
+                 side_by_side * (2 * render_memory(config.width * k, config.height * k) +
+                                 metrics_memory(config.width, config.height)));
     const double most_rows =
         most_sweep_rows(config);  // refused before a model is read, an enormous one ran until killed
     check_memory("boxlod sweep: the tables of up to " + format_number(most_rows) + " rows",

@@ -4,6 +4,7 @@
 # Usage: concepts_once.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
+git rev-parse --is-inside-work-tree > /dev/null || { echo "concepts_once: $1 is no git checkout"; exit 1; }
 problems=0
 # once PATTERN FILE WHAT: PATTERN (a fixed string) appears in FILE and in no other source outside tests/.
 once() {

@@ -7,6 +7,7 @@ cd "$1"
 format=$(command -v clang-format-14 || true)
 [ -n "$format" ] || { echo "formatted: clang-format-14 is missing (scripts/install-deps.sh installs it)"; exit 1; }
 mapfile -t files < <(git ls-files '*.cpp' '*.h')
+[ ${#files[@]} -gt 0 ] || { echo "formatted: no C++ file listed by git in $1 (a checkout is needed)"; exit 1; }
 unformatted=()
 for file in "${files[@]}"; do
   "$format" --style=file --dry-run --Werror "$file" > /dev/null 2>&1 || unformatted+=("$file")

@@ -8,7 +8,9 @@
 #include "renderer/shading.h"
 
 #include <gtest/gtest.h>
+
 #include <Eigen/Geometry>
+#include <stdexcept>
 
 #include <cstdlib>
 #include <cstring>
@@ -544,4 +546,6 @@ TEST(Renderer, DownsampleAveragesBlocksOfColourAndCoverage) {
     EXPECT_EQ(half.color[0], Eigen::Vector4f(0.5f, 0.5f, 1, 0.75f));  // three of four samples covered
     EXPECT_EQ(half.color[1], Eigen::Vector4f(2.5f, 0.5f, 1, 0));
     EXPECT_TRUE(half.depth.empty());
+    EXPECT_THROW(downsample(frame, 3), std::invalid_argument);  // 3 does not divide 4
+    EXPECT_THROW(downsample(frame, 0), std::invalid_argument);
 }

@@ -42,8 +42,8 @@ TEST(Shot, CoversWhatTheModelDrawsOnWhite) {
     EXPECT_EQ(covered_pixels(empty.coverage), 0u);
 }
 
-// Supersampled: the same size, every pixel covered at 1 sample also covered, edges blended between
-// the building's colour and white, and the picture near the 1-sample one away from the edges.
+// Supersampled: the same size, more pixels covered (a pixel is where any of its 16 samples is), and
+// pixels at the edges blended between the building's colour and white.
 TEST(Shot, SupersampledBlendsEdgesAndCoversAnyPixelASampleCovers) {
     const std::unique_ptr<DrawableModel> drawable = make_drawable_model(test::lod_test_building());
     const RenderSettings settings = framing_settings(*drawable);

@@ -7,7 +7,7 @@
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
 // rendered among their siblings, from 4 corners of a cube (a tetrahedron), orthographically with pixels
 // of the sizing view's size (texture_sizing.h; coarser for large parts), and the error
-// is the number of pixels that differ, summed as hybrid_pixel_error weighs
+// is the number of pixels that differ, summed as hybrid_pixel_error (hybrid_measuring.h) weighs
 // them. Starting from the root's cheapest proxy, a plan repeatedly takes the
 // change (swap a node's proxy for a better one, or open the node: its own
 // geometry and its children at their cheapest proxies) with the largest drop
