@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
+
+#include <unistd.h>
 
 namespace boxlod::test {
 
@@ -24,9 +27,25 @@ std::string input_error_of(Run run) {
     return "";
 }
 
+// The test program's own folder in the temporary folder, removed when the program ends (a forked
+// child leaves by _exit and removes nothing): tests leave nothing behind, and programs running side
+// by side (ctest -j) never share a folder.
+inline const std::filesystem::path& scratch_root() {
+    struct Root {
+        std::filesystem::path path =
+            std::filesystem::temp_directory_path() / ("boxlod_test_" + std::to_string(::getpid()));
+        ~Root() {
+            std::error_code ignored;
+            std::filesystem::remove_all(path, ignored);
+        }
+    };
+    static const Root root;
+    return root.path;
+}
+
 // A fresh, empty folder for one test.
 inline std::filesystem::path scratch_folder(const std::string& name) {
-    auto path = std::filesystem::temp_directory_path() / ("boxlod_test_" + name);
+    auto path = scratch_root() / name;
     std::filesystem::remove_all(path);
     std::filesystem::create_directories(path);
     return path;
