@@ -1,6 +1,7 @@
 #include "data_gen/grammar_tokens.h"
 
 #include "base/input_error.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -28,12 +29,7 @@ TEST(GrammarTokens, CutsTextIntoWordsWithTheirPlaces) {
 
 TEST(GrammarTokens, RefusesWhatNoTokenStartsWithAtItsPlace) {
     auto message = [](const std::string& text) {
-        try {
-            tokenize(text, "g.grammar");
-        } catch (const InputError& e) {
-            return std::string(e.what());
-        }
-        return std::string("accepted");
+        return test::input_error_of([&] { tokenize(text, "g.grammar"); });
     };
     EXPECT_NE(message("a\n  \"open").find("g.grammar:2:3"), std::string::npos) << message("a\n  \"open");
     EXPECT_NE(message("a\n  \"open").find("unterminated string"), std::string::npos);
