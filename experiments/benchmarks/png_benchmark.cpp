@@ -8,7 +8,8 @@
 // Counters: encoded MB and raw MB encoded per second.
 #include "data_gen/interpreter.h"
 #include "data_gen/samples.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain/chain.h"
+#include "toolkit/lod/pages/level_pages.h"
 
 #include <benchmark/benchmark.h>
 
@@ -38,8 +39,7 @@ const Pages& manual_pages() {
         // and draws small faces flat, which leaves level 8 with few or no pages to write.
         LodParameters parameters;
         set_manual(parameters);
-        auto session = start_lod(model, parameters, 0);
-        p.lod = std::make_unique<Lod>(build_lod(*session, 8, 0));
+        p.lod = std::make_unique<Lod>(Chain(model, parameters, 0).build(8));
         for (std::size_t page = 0; page < p.lod->atlas.pages.size(); ++page) {
             LodPage textures = lod_page(int(page));
             p.images8.push_back(&p.lod->model.textures[std::size_t(textures.color)].image);

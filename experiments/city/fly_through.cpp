@@ -101,12 +101,11 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
     p.distance = options.base_distance;  // level 1's; level c's doubles it (chain.h)
     p.level_distances = {};
     Chain chain(model, p, 1);
-    const auto& boxes = chain.first->derived.boxes;
+    const auto& boxes = chain.boxes();
     for (int c = 1; c <= chain.obtained_levels(); ++c) {
-        LodSession& session = chain.for_level(c);
-        Lod lod = build_lod(session, c, 1);
+        Lod lod = chain.build(c);
         MeshCounts counts = mesh_counts(lod.model);
-        levels.push_back({counts.faces, session.derived.sizing, std::nullopt, std::nullopt});
+        levels.push_back({counts.faces, chain.sizing(c), std::nullopt, std::nullopt});
         built.triangles.push_back(counts.triangles);
         built.costs.push_back(lod.cost);
         built.levels.push_back(pack_drawable(lod.model, &cache, maps_drawn(city_render_mode).height));

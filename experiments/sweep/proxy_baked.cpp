@@ -13,6 +13,7 @@ LodParameters proxy_baked_parameters(const LodParameters& sweep, float distance)
     p.level_mode = LevelMode::top_down;
     p.budgets.clear();
     p.distance = distance;
+    p.level_distances.rule = LevelDistances::Rule::same;
     return p;
 }
 
@@ -30,13 +31,13 @@ std::vector<ProxyBakedVariant> proxy_baked_variants(int threads) {
     return variants;
 }
 
-Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles,
-                      double budget, int level, int threads) {
-    const Model& model = *session.input.model;
+Lod proxy_baked_level(Chain& chain, const ProxyBakedVariant& variant, std::size_t triangles, double budget,
+                      int level) {
+    const Model& model = chain.model;
     std::optional<Lod> drawn;  // the last level built that draws a triangle
     const std::function<Lod(std::size_t)> make = [&](std::size_t target) {
         const std::vector<Primitive> geometry = simplify_subtree(model, 0, target, variant.simplify);
-        Lod lod = build_baked_model(session, geometry, variant.texel_scale, level, threads);
+        Lod lod = chain.build_baked_model(geometry, variant.texel_scale, level);
         if (mesh_counts(lod.model).triangles > 0) drawn = lod;
         return lod;
     };

@@ -5,8 +5,8 @@
 // far level that Simplygon and Unreal's HLOD ship, as a user would make it
 // with Debian's meshoptimizer instead of boxlod's levels.
 #pragma once
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/hybrid/simplification.h"
-#include "toolkit/lod/lod_builder.h"
 
 #include <cstddef>
 #include <string>
@@ -14,8 +14,8 @@
 
 namespace boxlod {
 
-// The parameters of its session, which only bakes: the sweep's, sized for
-// `distance`, top-down level values, no budgets.
+// The parameters of its chain, which only bakes: the sweep's, every level
+// sized for `distance`, top-down level values, no budgets.
 LodParameters proxy_baked_parameters(const LodParameters& sweep, float distance);
 
 struct ProxyBakedVariant {
@@ -30,8 +30,8 @@ std::vector<ProxyBakedVariant> proxy_baked_variants(int threads);
 // The model simplified to `triangles` by `variant`, or, with a budget >= 0,
 // as finely as keeps the level's bytes (every texture) within it (where only
 // a level drawing nothing would, the cheapest that draws); baked for
-// the session's distance. Its parameters and statistics name it level `level`.
-Lod proxy_baked_level(LodSession& session, const ProxyBakedVariant& variant, std::size_t triangles,
-                      double budget, int level, int threads);
+// the chain's distance. Its parameters and statistics name it level `level`.
+Lod proxy_baked_level(Chain& chain, const ProxyBakedVariant& variant, std::size_t triangles, double budget,
+                      int level);
 
 }  // namespace boxlod

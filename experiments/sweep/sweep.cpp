@@ -100,8 +100,8 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
 
 // The LoD levels of one variant. Normal, parallax, pom and albedo draw the same
 // baked boxes; untextured boxes are not baked. Slot = 2 x sizing distance +
-// (untextured ? 1 : 0); one session per slot and sizing level, shared by the
-// levels (per_level sizing: one per level, baked for the nearest distance x 2^(level-1)).
+// (untextured ? 1 : 0); one chain per slot, shared by the levels: every level
+// sized for the slot's distance, or (per_level sizing) level c for it x 2^(c-1), the chain's doubling.
 void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan,
                  const SweepVariant& variant) {
     const SweepConfig& config = run.config;
@@ -111,32 +111,35 @@ void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const Mod
         return std::size_t(std::min_element(config.distances.begin(), config.distances.end()) -
                            config.distances.begin());
     };
-    std::map<std::pair<int, int>, std::unique_ptr<LodSession>> sessions;
+    std::map<int, std::unique_ptr<Chain>> chains;
     auto slot = [&](RenderMode mode, std::size_t, std::size_t d) {
         return int(2 * sizing_index(d) + (mode == RenderMode::untextured));
     };
     for (int level : variant.levels) {
-        const int sizing_level = config.sizing == SizingRule::per_level ? std::max(level, 1) : 1;
         std::string group =
             csv_row({run.entry.name, level_mode_name(variant.mode), box_kind_name(variant.box),
                      interpolation_name(variant.interpolation), std::to_string(level)});
         run_group(run, out, report, group, slot, [&](int s, int) {
-            std::unique_ptr<LodSession>& session = sessions[{s, sizing_level}];
-            if (!session) {
+            std::unique_ptr<Chain>& chain = chains[s];
+            if (!chain) {
                 LodParameters p = config.lod;
                 p.level_mode = variant.mode;
                 p.box_kind = variant.box;
                 p.interpolation = variant.interpolation;
-                p.distance = float(doubled_distance(
-                    config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy),
-                    sizing_level));
+                p.distance =  // level 1's, within range
+                    float(doubled_distance(
+                        config.distances[std::size_t(s / 2)] * framing_distance(run.framing, p.fovy), 1));
+                p.level_distances.rule = config.sizing == SizingRule::per_level
+                                             ? LevelDistances::Rule::doubling
+                                             : LevelDistances::Rule::same;
                 p.render_mode = s % 2 ? RenderMode::untextured : RenderMode::normal;
                 if (!orders_by_bytes(p.level_mode))
                     p.budgets.clear();  // the other modes make wanted_levels levels
-                session = start_lod(run.model, p, run.threads, &plan.boxes.at(variant.box));
-                session->input.budgets_strict = false;  // a row over its budget says so in its bytes
+                // A row over its budget says so in its bytes.
+                chain = std::make_unique<Chain>(run.model, p, run.threads,
+                                                ChainOptions{&plan.boxes.at(variant.box), false});
             }
-            Lod lod = build_lod(*session, level, run.threads);
+            Lod lod = chain->build(level);
             SweepCandidate c = candidate(std::move(lod.model), std::move(lod.atlas), lod.cut.box_nodes.size(),
                                          variant.obtained_levels, &lod.cost);
             c.face_texels = lod.face_texels;

@@ -83,7 +83,7 @@ double level_budget(const ModelRun& run, const SweepVariant& first, int level) {
 // proxy-baked: per level but the original (a baked copy of it is no level)
 // the best of its variants that fit the level's budget (or at its
 // triangles), baked as the first variant's level is sized (sizing
-// each-distance: for the nearest distance, as the impostor; one session per
+// each-distance: for the nearest distance, as the impostor; one chain per
 // sizing level, which bakes the root's box once).
 void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const SweepVariant& first,
                      const std::function<std::size_t(int)>& triangles_of_level) {
@@ -91,7 +91,7 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
     const std::vector<ProxyBakedVariant> variants = proxy_baked_variants(run.threads);
     const double nearest = *std::min_element(config.distances.begin(), config.distances.end()) *
                            framing_distance(run.framing, config.lod.fovy);
-    std::map<int, std::unique_ptr<LodSession>> sessions;  // per sizing level
+    std::map<int, std::unique_ptr<Chain>> chains;  // per sizing level
     for (int level : first.levels) {
         if (level == 0) continue;
         const int sizing_level = config.sizing == SizingRule::per_level ? level : 1;
@@ -101,15 +101,14 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
         run_group(
             run, out, report, group, one_slot,
             [&](int, int a) {
-                std::unique_ptr<LodSession>& session = sessions[sizing_level];
-                if (!session)
-                    session = start_lod(
+                std::unique_ptr<Chain>& chain = chains[sizing_level];
+                if (!chain)
+                    chain = std::make_unique<Chain>(
                         run.model,
                         proxy_baked_parameters(config.lod, float(doubled_distance(nearest, sizing_level))),
                         run.threads);
                 const ProxyBakedVariant& v = variants[std::size_t(a)];
-                Lod lod =
-                    proxy_baked_level(*session, v, triangles_of_level(level), budget, level, run.threads);
+                Lod lod = proxy_baked_level(*chain, v, triangles_of_level(level), budget, level);
                 SweepCandidate c = candidate(std::move(lod.model), std::move(lod.atlas), 0,
                                              first.obtained_levels, &lod.cost);
                 c.face_texels = lod.face_texels;

@@ -7,7 +7,10 @@
 # formats < lod < selection < commands and the library's face (boxlod.h),
 # and so do lod's: pages (boxes and their baked pages) < cut (which parts a
 # level keeps) < hybrid (measured error per byte) < lod itself (a level: its
-# parameters, session, builder, files) < chain.
+# parameters, session, builder, files) < chain. A level's session and the
+# builder that fills it (lod_session.h, lod_builder.h, level_faces.h) are
+# lod's own: elsewhere, tests included, a chain (lod/chain/chain.h) hands
+# out levels (issue 72).
 # Prints every include that breaks a rule and fails if there is one.
 # Usage: layers_point_one_way.sh ROOT
 set -u
@@ -30,6 +33,10 @@ while IFS= read -r file; do
     [ -z "$header" ] && continue
     target=$(rank "${header%%/*}")
     [ "$target" -lt 0 ] && continue  # a system or third-party header
+    if [[ $header =~ ^toolkit/lod/(lod_session|lod_builder|level_faces)\.h$ && $file != toolkit/lod/* && $file != tests/toolkit/lod/* ]]; then
+      echo "$file includes $header: a level's session is lod/'s own; ask a Chain (toolkit/lod/chain/chain.h)"; broken=1
+    fi
+    [ "$layer" = tests ] && continue  # tests may include any layer
     if [ "$target" -gt "$own" ]; then
       echo "$file includes $header: $layer may not include ${header%%/*}, a layer above it"; broken=1
     fi
@@ -40,7 +47,7 @@ while IFS= read -r file; do
       echo "$file includes $header: only a commands/ folder includes commands"; broken=1
     fi
   done < <(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$file")
-done < <(find base renderer toolkit data_gen experiments -name '*.h' -o -name '*.cpp' | sort)
+done < <(find base renderer toolkit data_gen experiments tests -name '*.h' -o -name '*.cpp' | sort)
 if [ "$checked" -lt 100 ]; then echo "only $checked files found under $1: wrong folder?"; exit 1; fi
 # No two modules (a header with its .cpp) need each other, however
 # indirectly: each idea sits on the ones it uses (issue 48).

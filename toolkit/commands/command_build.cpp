@@ -66,10 +66,9 @@ KeyValues chain_report(const std::string& name, const ChainCost& written) {
 // stands for (they draw what it draws: chain.h), its errors by distance
 // (a chain's: error_by_distance.h), where engines switch to it, in their
 // terms (toolkit/lod/chain/switch_measures.h), its statistics.
-KeyValues level_report(const std::string& name, const ChainLevel& level, const std::optional<LodSwitch>& at,
-                       const std::vector<double>& errors) {
-    KeyValues report{text_entry("name", name),
-                     float_entry("sizing_distance", level.session->input.parameters.distance)};
+KeyValues level_report(const std::string& name, const ChainLevel& level, float sizing_distance,
+                       const std::optional<LodSwitch>& at, const std::vector<double>& errors) {
+    KeyValues report{text_entry("name", name), float_entry("sizing_distance", sizing_distance)};
     if (!level.same_levels.empty())
         report.push_back(numbers_entry(
             "same_as_levels", std::vector<double>(level.same_levels.begin(), level.same_levels.end())));
@@ -111,11 +110,12 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
         name_pages(level.lod, name);
         std::optional<LodSwitch> at;
         if (k > 0) {
-            at = lod_switch(switched.switch_distances[k], bounds, level.session->derived.sizing);
+            at = lod_switch(switched.switch_distances[k], bounds, chain.sizing(level.level));
             switches.push_back(*at);
         }
-        const KeyValues report = level_report(
-            name, level, at, switched.errors.empty() ? std::vector<double>{} : switched.errors[k]);
+        const KeyValues report =
+            level_report(name, level, chain.sized_parameters(level.level).distance, at,
+                         switched.errors.empty() ? std::vector<double>{} : switched.errors[k]);
         std::fputs((format_key_values(report) + "\n").c_str(), stdout);
         models.push_back(a.has("keep-hierarchy") ? std::move(level.lod.model)
                                                  : merge_draw_calls(std::move(level.lod.model), name));
@@ -139,7 +139,7 @@ void write_chain(const Arguments& a, Chain& chain, ChainCost& cost) {
             nodes, max_engine_nodes);
     std::vector<std::string> pages;
     {
-        const ScopedTimer timer(chain.first->times.write);
+        const ScopedTimer timer(chain.written.write);
         OutputGroup files;  // the chain and its viewer pages, or nothing
         export_gltf_lods(pointers, switches, output, chain.threads);
         if (a.has("viewer")) pages = write_viewer_pages(output);
@@ -164,23 +164,24 @@ void write_levels(const Arguments& a, Chain& chain, const std::string& name, int
     take_distinct_levels(chain, first, last, std::numeric_limits<int>::max(), [&](ChainLevel level) {
         cost.add(level.lod);
         if (writing.valid()) writing.get();
-        writing = std::async(std::launch::async, [&, level = std::move(level)]() mutable {
+        // Read here: the chain makes the next level's session while this one is written.
+        const LodParameters sized = chain.sized_parameters(level.level);
+        const TextureSizing sizing = chain.sizing(level.level);
+        writing = std::async(std::launch::async, [&, sized, sizing, level = std::move(level)]() mutable {
             const std::string level_name = all_levels ? name + "_L" + std::to_string(level.level) : name;
             KeyValues report;
             Image8 preview;
             {
-                const ScopedTimer timer(
-                    level.session->times.preview);  // build_lod touches the other times only
-                preview = render_lod_preview(level.lod, *level.session, preview_width, preview_height,
+                const ScopedTimer timer(chain.written.preview);
+                preview = render_lod_preview(level.lod, chain.model, sized, preview_width, preview_height,
                                              chain.threads);
             }
             {
-                const ScopedTimer timer(level.session->times.write);
+                const ScopedTimer timer(chain.written.write);
                 std::optional<LodSwitch> at;  // sized per level: where its texels meet the screen's pixels
                 if (!chain.distances.empty() && level.level >= 1)
-                    at = lod_switch(level.session->input.parameters.distance, bounds,
-                                    level.session->derived.sizing);
-                report = level_report(level_name, level, at, {});
+                    at = lod_switch(sized.distance, bounds, sizing);
+                report = level_report(level_name, level, sized.distance, at, {});
                 export_lod(std::move(level.lod), chain.parameters(), a.text("output"), level_name, preview,
                            chain.threads, a.has("glb"));
             }

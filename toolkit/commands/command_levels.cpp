@@ -5,9 +5,9 @@
 #include "toolkit/boxlod.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/cut/level_values.h"
-#include "toolkit/lod/lod_builder.h"
 #include "toolkit/lod/pages/boxes.h"
 #include "toolkit/lod/parameter_file.h"
 
@@ -41,9 +41,9 @@ static int run_levels(const Arguments& arguments) {
             seconds_since(start), thread_count(threads), counts.nodes, counts.computed, counts.reused);
     }
     // hybrid's levels are prefixes of a plan that measures its proxies by rendering them (hybrid.h); budgets
-    // are fractions of the original's bytes and price boxes at the sizing distance: both need a session.
+    // are fractions of the original's bytes and price boxes at the sizing distance: both need a chain.
     LevelValues values = mode == LevelMode::hybrid || !parameters.budgets.empty()
-                             ? start_lod(model, parameters, threads, &boxes)->derived.levels
+                             ? Chain(model, parameters, threads, {.boxes = &boxes}).level_values()
                              : compute_level_values(model, mode, wanted_levels, interpolation, boxes);
 
     KeyValues report{text_entry("model", path), text_entry("level_mode", level_mode_name(mode))};

@@ -45,8 +45,8 @@ TileObject build_object(const Model& model, int index, const LodParameters& para
         TileLevel level{name + ".glb", 0, 0};
         if (k > 0) {
             level.surface_deviation = surface_deviation(original, surface_views(built.lod.model, object.box));
-            level.geometric_error = level_geometric_error(
-                switched.switch_distances[k], built.session->derived.sizing, level.surface_deviation);
+            level.geometric_error = level_geometric_error(switched.switch_distances[k],
+                                                          chain.sizing(built.level), level.surface_deviation);
         }
         export_gltf(keep_hierarchy ? built.lod.model : merge_draw_calls(std::move(built.lod.model), name),
                     (std::filesystem::path(folder) / level.content).string(), 1);
@@ -75,7 +75,7 @@ int run_tiles(const Arguments& a) {
                                         city.origin.y());  // y up to the file's z up
     city.origin = Eigen::Vector3d::Zero();
     const std::vector<int> nodes = object_nodes(city);
-    start_lod(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
+    Chain(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     const double error = switch_error(a);
     // The new tileset replaces a folder holding an old one in one step, so no
     // client ever loads a mix of two tilesets' tiles.

@@ -10,6 +10,7 @@
 #include "toolkit/commands/viewer_state.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/lod_export.h"
+#include "toolkit/lod/pages/level_pages.h"
 
 #include <cstdio>
 #include <filesystem>

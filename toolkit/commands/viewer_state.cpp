@@ -305,8 +305,7 @@ Frame render_view(ViewerState& s, int threads) {
         if (s.parameters.current_level > 0) {
             if (!s.chain) s.chain = std::make_unique<Chain>(*s.model, s.parameters, threads);
             s.parameters.current_level = std::min(s.parameters.current_level, s.chain->obtained_levels());
-            s.lod = std::make_unique<Lod>(build_lod(s.chain->for_level(s.parameters.current_level),
-                                                    s.parameters.current_level, threads));
+            s.lod = std::make_unique<Lod>(s.chain->build(s.parameters.current_level));
             s.lod_drawable = make_drawable_model(s.lod->model);
         }
         s.needs_update = false;

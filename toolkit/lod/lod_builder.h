@@ -6,6 +6,7 @@
 #include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/cut/error_greedy.h"
 #include "toolkit/lod/hybrid/hybrid.h"
+#include "toolkit/lod/lod.h"
 #include "toolkit/lod/lod_session.h"
 #include "toolkit/lod/pages/atlas.h"
 #include "toolkit/lod/pages/bake.h"
@@ -26,22 +27,6 @@ namespace boxlod {
 std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& parameters, int threads,
                                       const std::vector<std::optional<OrientedBox>>* boxes = nullptr,
                                       HybridMeasurements* measurements = nullptr);
-
-struct Lod {
-    int current_level = 0;
-    // is_lod and lod_params set; the pages' textures (lod_page) and materials come first.
-    Model model;
-    Cut cut;
-    Atlas atlas;  // no pages in untextured mode (no baking)
-    std::uint64_t face_texels =
-        0;                   // the packed faces' own texels (cropped), without gutters and free page space
-    double depth_error = 0;  // the proxy error of the cut: e(n) summed over its boxes (error_greedy.h), m^3
-    double measured_error =
-        0;  // hybrid: its proxies' measured errors summed (hybrid_cut_error), sizing-view pixels
-    CostParts
-        cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
-    KeyValues statistics;  // docs/design.md: Statistics
-};
 
 Lod build_lod(LodSession& session, int current_level, int threads);
 

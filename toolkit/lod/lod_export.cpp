@@ -4,6 +4,8 @@
 #include "base/input_error.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/gltf_io.h"
+#include "toolkit/lod/pages/level_pages.h"
+#include "toolkit/lod/parameter_file.h"
 #include "toolkit/model/framing.h"
 
 #include <filesystem>
@@ -13,9 +15,8 @@ namespace boxlod {
 namespace {
 
 // The camera of the parameters, or the default view: +X+Y+Z at the sizing distance.
-Camera preview_camera(const LodSession& session) {
-    const LodParameters& p = session.input.parameters;
-    const Framing framing = model_framing(*session.input.model);
+Camera preview_camera(const Model& original, const LodParameters& p) {
+    const Framing framing = model_framing(original);
     if (!p.camera) return framed_camera(framing, {1, 1, 1}, p.distance, p.fovy);
     Camera camera = *p.camera;
     fit_depth_range(camera, (camera.position - framing.center).norm(), framing.radius);
@@ -24,11 +25,11 @@ Camera preview_camera(const LodSession& session) {
 
 }  // namespace
 
-Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads) {
-    const LodParameters& p = session.input.parameters;
+Image8 render_lod_preview(const Lod& lod, const Model& original, const LodParameters& p, int width,
+                          int height, int threads) {
     auto drawable = make_drawable_model(lod.model, nullptr, threads);
     RenderSettings settings;
-    settings.camera = preview_camera(session);
+    settings.camera = preview_camera(original, p);
     settings.mode = p.render_mode;
     settings.light = p.light ? *p.light : light_for_camera(settings.camera);
     settings.parallax_scale = p.parallax_scale;

@@ -2,14 +2,19 @@
 // NAME.gltf + NAME.bin, NAME_color_K.png, NAME_normal_K.png, NAME_height_K.png,
 // NAME.params.txt, NAME.preview.png, NAME.stats.txt — each written atomically.
 #pragma once
-#include "toolkit/lod/lod_builder.h"
+#include "renderer/image.h"
+#include "toolkit/lod/lod.h"
+#include "toolkit/lod/lod_parameters.h"
 
 #include <string>
 
 namespace boxlod {
 
-// A render of the LoD with the session's camera, light and render mode.
-Image8 render_lod_preview(const Lod& lod, const LodSession& session, int width, int height, int threads);
+// A render of the LoD of `original` with the camera, light and render mode of
+// `sized`, the parameters it was sized with (chain.h: Chain::sized_parameters;
+// without a camera, from +X+Y+Z at their distance).
+Image8 render_lod_preview(const Lod& lod, const Model& original, const LodParameters& sized, int width,
+                          int height, int threads);
 
 // Renames the LoD's page textures NAME_color_K.png, NAME_normal_K.png, ...
 void name_pages(Lod& lod, const std::string& name);

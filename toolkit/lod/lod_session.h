@@ -6,6 +6,7 @@
 #include "toolkit/lod/cut/error_greedy.h"
 #include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/hybrid/hybrid.h"
+#include "toolkit/lod/lod.h"
 #include "toolkit/lod/lod_parameters.h"
 #include "toolkit/lod/pages/bake.h"
 #include "toolkit/lod/pages/texture_sizing.h"
@@ -19,11 +20,6 @@
 #include <vector>
 
 namespace boxlod {
-
-struct LodTimes {  // seconds, for the time split in docs/performance.md
-    double boxes = 0, levels = 0, bake = 0, pack = 0, mesh = 0;
-    double preview = 0, write = 0;  // rendering NAME.preview.png; writing the files
-};
 
 // What the user gave: the model and its parameters.
 struct LodInput {

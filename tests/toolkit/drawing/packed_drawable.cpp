@@ -1,7 +1,7 @@
 #include "toolkit/drawing/packed_drawable.h"
 
 #include "lod_scene.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain/chain.h"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +18,7 @@ Model baked_level() {
         p.level_mode = LevelMode::top_down;
         p.resolution = 128;
         p.min_texture_size = 16;
-        auto session = start_lod(model, p, 1);
-        return build_lod(*session, 1, 1).model;
+        return Chain(model, p, 1).build(1).model;
     }();
     return level;
 }

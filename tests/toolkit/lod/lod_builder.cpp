@@ -107,8 +107,10 @@ TEST(LodBuilder, CroppingDropsUncoveredFacesAndKeepsThePicture) {
     EXPECT_LT(page_texels(cropped.atlas), page_texels(uncropped.atlas));
     for (RenderMode mode : {RenderMode::normal, RenderMode::parallax, RenderMode::pom, RenderMode::albedo}) {
         cropped_session->input.parameters.render_mode = whole_session->input.parameters.render_mode = mode;
-        Image8 a = render_lod_preview(cropped, *cropped_session, 240, 180, 2),
-               b = render_lod_preview(uncropped, *whole_session, 240, 180, 2);
+        Image8 a = render_lod_preview(cropped, *cropped_session->input.model,
+                                      cropped_session->input.parameters, 240, 180, 2),
+               b = render_lod_preview(uncropped, *whole_session->input.model, whole_session->input.parameters,
+                                      240, 180, 2);
         std::size_t same = 0, pixels = a.pixels.size() / 3;
         double error = 0;
         for (std::size_t i = 0; i < pixels; ++i) {
@@ -192,8 +194,10 @@ TEST(LodBuilder, FlatFacesDrawOneColourFromAlignedSwatches) {
     // The picture keeps each face's colour on average; misplaced uvs would draw other texels.
     plain_session->input.parameters.render_mode = flat_session->input.parameters.render_mode =
         RenderMode::albedo;
-    Image8 a = render_lod_preview(with_texels, *plain_session, 240, 180, 2),
-           b = render_lod_preview(with_swatches, *flat_session, 240, 180, 2);
+    Image8 a = render_lod_preview(with_texels, *plain_session->input.model, plain_session->input.parameters,
+                                  240, 180, 2),
+           b = render_lod_preview(with_swatches, *flat_session->input.model, flat_session->input.parameters,
+                                  240, 180, 2);
     double error = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) error += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
     EXPECT_GT(error, 0);
@@ -336,7 +340,7 @@ TEST(LodBuilder, ExportWritesEveryFileAndReadsBackAsAnLod) {
     auto session = start_lod(model, small_parameters(), 2);
     Lod lod = build_lod(*session, 2, 2);
     auto folder = test::scratch_folder("lod_export");
-    Image8 preview = render_lod_preview(lod, *session, 64, 48, 2);
+    Image8 preview = render_lod_preview(lod, *session->input.model, session->input.parameters, 64, 48, 2);
     export_lod(lod, session->input.parameters, folder.string(), "house", preview, 2);
     for (const char* file :
          {"house.gltf", "house.bin", "house_color_0.png", "house_normal_0.png", "house_height_0.png",
@@ -379,8 +383,9 @@ TEST(LodGolden, EachRenderMode) {
         // Level 2 boxes the roof, whose heights vary (level 1 boxes only the flat panes, where parallax draws
         // as normal mapping).
         Lod lod = build_lod(*session, 2, 2);
-        test::expect_golden(render_lod_preview(lod, *session, 120, 90, 2),
-                            std::string("lod_") + render_mode_name(mode));
+        test::expect_golden(
+            render_lod_preview(lod, *session->input.model, session->input.parameters, 120, 90, 2),
+            std::string("lod_") + render_mode_name(mode));
     }
 }
 
@@ -391,9 +396,11 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
     LodParameters p = small_parameters();
     p.resolution = 128;
     auto session = start_lod(model, p, 2);
-    Image8 original = render_lod_preview(build_lod(*session, 0, 2), *session, 200, 150, 2);
+    Image8 original = render_lod_preview(build_lod(*session, 0, 2), *session->input.model,
+                                         session->input.parameters, 200, 150, 2);
     test::expect_golden(original, "lod_fzk_glass_original");
-    test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session, 200, 150, 2),
+    test::expect_golden(render_lod_preview(build_lod(*session, 2, 2), *session->input.model,
+                                           session->input.parameters, 200, 150, 2),
                         "lod_fzk_glass_level2");
     int glass = 0;
     for (Material& material : model.materials)
@@ -403,7 +410,9 @@ TEST(LodGolden, FzkHausGlassIsSeeThrough) {
         }
     EXPECT_GT(glass, 0);
     auto opaque_session = start_lod(model, p, 2);
-    EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session, 200, 150, 2).pixels,
+    EXPECT_NE(render_lod_preview(build_lod(*opaque_session, 0, 2), *opaque_session->input.model,
+                                 opaque_session->input.parameters, 200, 150, 2)
+                  .pixels,
               original.pixels);
 }
 
@@ -420,7 +429,7 @@ TEST(LodGolden, FzkHausDefaultChain) {
         Lod lod = build_lod(chain.for_level(c), c, 2);
         EXPECT_LT(combined_cost({&lod.cost}).bytes(), chain.first->derived.original_cost.bytes())
             << "level " << c;
-        test::expect_golden(render_lod_preview(lod, *chain.first, 200, 150, 2),
+        test::expect_golden(render_lod_preview(lod, chain.model, chain.parameters(), 200, 150, 2),
                             "lod_fzk_default_chain_level" + std::to_string(c));
     }
 }

@@ -2,7 +2,7 @@
 
 #include "lod_scene.h"
 #include "test_support.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/chain/chain.h"
 #include "toolkit/lod/lod_export.h"
 
 #include <gtest/gtest.h>
@@ -127,8 +127,8 @@ TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     p.distance = 20;
     p.resolution = 200;
     p.min_texture_size = 64;
-    auto session = start_lod(model, p, 2);
-    Lod lod = build_lod(*session, 2, 2);
+    Chain chain(model, p, 2);
+    Lod lod = chain.build(2);
     ModelCost cost = model_cost(lod.model);
     EXPECT_EQ(value_of(lod.statistics, "mesh_bytes_lod"), std::to_string(cost.mesh_bytes));
     EXPECT_EQ(value_of(lod.statistics, "bytes_original"), std::to_string(model_cost(model).bytes()));
@@ -142,7 +142,7 @@ TEST(Cost, MeshBytesAreTheExportedBinAndPagesAreCounted) {
     EXPECT_LE(cost.texture_bytes, page_bytes + mip_chain_texels(32, 32) * 3);
 
     auto folder = test::scratch_folder("cost_export");
-    export_lod(std::move(lod), session->input.parameters, folder.string(), "house", Image8(4, 4, 3, 0), 1);
+    export_lod(std::move(lod), chain.parameters(), folder.string(), "house", Image8(4, 4, 3, 0), 1);
     EXPECT_EQ(std::filesystem::file_size(folder / "house.bin"), cost.mesh_bytes);
 }
 

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "toolkit/lod/lod_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,13 +32,25 @@ std::vector<float> level_distances(const LevelDistances& rule, float distance, i
     return distances;
 }
 
-Chain::Chain(const Model& model, const LodParameters& parameters, int threads)
+Chain::Chain(const Model& model, const LodParameters& parameters, int threads, const ChainOptions& options)
     : model(model),
       threads(threads),
       measurements(parameters.level_mode == LevelMode::hybrid ? make_hybrid_measurements(model) : nullptr),
-      first(start_lod(model, parameters, threads, nullptr, measurements.get())),
+      first(start_lod(model, parameters, threads, options.boxes, measurements.get())),
       distances(
-          level_distances(parameters.level_distances, first->input.parameters.distance, obtained_levels())) {}
+          level_distances(parameters.level_distances, first->input.parameters.distance, obtained_levels())) {
+    first->input.budgets_strict = options.budgets_strict;
+}
+
+Chain::~Chain() = default;
+
+const LodParameters& Chain::parameters() const { return first->input.parameters; }
+
+int Chain::obtained_levels() const { return first->derived.levels.obtained_levels; }
+
+const LevelValues& Chain::level_values() const { return first->derived.levels; }
+
+const std::vector<std::optional<OrientedBox>>& Chain::boxes() const { return first->derived.boxes; }
 
 LodSession& Chain::for_level(int level) {
     // A level sized for the first's distance (auto's level 1) is the first's: its boxes baked and its plan
@@ -51,12 +64,25 @@ LodSession& Chain::for_level(int level) {
         p.distance = distances[std::size_t(level - 1)];
         p.level_distances.rule = LevelDistances::Rule::same;  // the session sizes for this one distance
         session = start_lod(model, p, threads, &first->derived.boxes, measurements.get());
+        session->input.budgets_strict = first->input.budgets_strict;
     }
     return *session;
 }
 
+const LodParameters& Chain::sized_parameters(int level) { return for_level(level).input.parameters; }
+
+const TextureSizing& Chain::sizing(int level) { return for_level(level).derived.sizing; }
+
+Lod Chain::build(int level) { return build_lod(for_level(level), level, threads); }
+
+Lod Chain::build_baked_model(const std::vector<Primitive>& geometry, int texel_scale, int level) {
+    return boxlod::build_baked_model(for_level(level), geometry, texel_scale, level, threads);
+}
+
 LodTimes Chain::times() const {
     LodTimes t = first->times;
+    t.preview += written.preview;
+    t.write += written.write;
     for (const auto& [distance, session] : sized) {
         t.levels += session->times.levels;  // each distance plans its own levels (hybrid measures again)
         t.bake += session->times.bake;
@@ -78,15 +104,14 @@ int take_distinct_levels(Chain& chain, int first, int last, int max_levels,
         pending;  // the last distinct level, held until the next one shows it has no more repeats
     int held = 0, level = first;
     for (; level <= last; ++level) {
-        LodSession& session = chain.for_level(level);
-        Lod lod = build_lod(session, level, chain.threads);
+        Lod lod = chain.build(level);
         if (pending && draws_the_same(pending->lod.model, lod.model)) {
             pending->same_levels.push_back(level);
             continue;
         }
         if (held == max_levels) break;
         if (pending) take(std::move(*pending));
-        pending = ChainLevel{level, std::move(lod), &session, {}};
+        pending = ChainLevel{level, std::move(lod), {}};
         ++held;
     }
     if (pending) take(std::move(*pending));
@@ -106,8 +131,7 @@ SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
         std::vector<const Model*> models;
         for (const ChainLevel& level : distinct) models.push_back(&level.lod.model);
         const LodParameters& p = chain.parameters();
-        measured =
-            measure_error_by_distance(chain.model, models, chain.first->derived.sizing, p, chain.threads);
+        measured = measure_error_by_distance(chain.model, models, chain.sizing(0), p, chain.threads);
         switches = switch_distances(measured, threshold);
         switched.distances = measured.distances;
     } else {
@@ -116,7 +140,7 @@ SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
         for (const ChainLevel& level : distinct)
             switches.push_back(chain.distances.empty()
                                    ? doubled_distance(chain.parameters().distance, level.level)
-                                   : level.session->input.parameters.distance);
+                                   : chain.sized_parameters(level.level).distance);
     }
     const std::vector<std::size_t> reachable = reachable_levels(switches, bytes);
     switched.distinct = int(distinct.size());

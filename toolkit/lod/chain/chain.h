@@ -8,14 +8,22 @@
 // whichever command, or however many levels, asked.
 #pragma once
 #include "toolkit/lod/chain/error_by_distance.h"
-#include "toolkit/lod/lod_builder.h"
+#include "toolkit/lod/cut/level_values.h"
+#include "toolkit/lod/lod.h"
+#include "toolkit/lod/lod_parameters.h"
+#include "toolkit/lod/pages/boxes.h"
+#include "toolkit/lod/pages/texture_sizing.h"
 
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace boxlod {
+
+struct HybridMeasurements;  // hybrid.h
+struct LodSession;          // lod_session.h
 
 // The doubling rule: level c >= 1 sized for level 1's distance x 2^(c-1)
 // (docs/cost.md: Switching levels), at most parameter_range::distance's
@@ -27,6 +35,16 @@ double doubled_distance(double level_one_distance, int level);
 // list has not one distance per level.
 std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels);
 
+// What a chain may be given beside its model and parameters.
+struct ChainOptions {
+    // The model's node_boxes for parameters.box_kind, computed once and reused (the sweep's variants).
+    const std::vector<std::optional<OrientedBox>>* boxes = nullptr;
+    bool budgets_strict = true;  // false (sweeps): a level no cut fits draws the coarsest instead of failing
+};
+
+// The sessions behind it (lod_session.h) are lod/'s own: whoever holds a
+// chain asks it for levels, their sizing and their parameters. The non-const
+// functions make a distance's session when first asked: one thread at a time.
 struct Chain {
     const Model& model;
     int threads;
@@ -35,21 +53,33 @@ struct Chain {
     std::unique_ptr<LodSession> first;  // at the parameters' distance; level 0, the boxes, the level values
     std::vector<float> distances;       // of levels 1..N; empty: every level at the first's distance
     std::map<float, std::unique_ptr<LodSession>> sized;
+    LodTimes written;  // what the commands spend on the chain's previews and files (times() adds it)
 
-    Chain(const Model& model, const LodParameters& parameters, int threads);
+    // Throws InputError for an LoD model, bad parameters, or a list of level distances that does not fit.
+    Chain(const Model& model, const LodParameters& parameters, int threads, const ChainOptions& options = {});
+    ~Chain();
+    Chain(const Chain&) = delete;
+    Chain& operator=(const Chain&) = delete;
+
     // The chain's parameters, distance resolved: what a level's parameter file
     // saves, so that building from it makes the same level.
-    const LodParameters& parameters() const { return first->input.parameters; }
-    int obtained_levels() const { return first->derived.levels.obtained_levels; }
-    LodSession& for_level(int level);  // the session that sizes level `level`
-    LodTimes times() const;            // summed over every session
+    const LodParameters& parameters() const;
+    int obtained_levels() const;
+    const LevelValues& level_values() const;                       // of the first session
+    const std::vector<std::optional<OrientedBox>>& boxes() const;  // per node (pages/boxes.h)
+    LodSession& for_level(int level);                              // the session that sizes level `level`
+    const LodParameters& sized_parameters(int level);              // level `level`'s: its sizing distance
+    const TextureSizing& sizing(int level);                        // the texel sizing level `level` bakes at
+    Lod build(int level);  // level `level` (0..obtained_levels(); InputError beyond)
+    // The whole model as one baked proxy sized as level `level` (lod_builder.h: build_baked_model).
+    Lod build_baked_model(const std::vector<Primitive>& geometry, int texel_scale, int level);
+    LodTimes times() const;  // summed over every session and `written`
 };
 
 // A level as the chain holds it.
 struct ChainLevel {
     int level = 0;
     Lod lod;
-    LodSession* session = nullptr;  // the one that sized it
     std::vector<int>
         same_levels;  // the later levels that draw what it draws (model.h: draws_the_same), left out
 };

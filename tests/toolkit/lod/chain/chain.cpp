@@ -71,11 +71,9 @@ TEST(Chain, ABuildingInCentimetresBuildsItsFarLevels) {
     ASSERT_GT(first * 512, 1e6f);
     p.distance = first * 512;  // a 10-level chain's level 10
     Chain far(model, p, 2);
-    EXPECT_EQ(far.for_level(far.obtained_levels()).input.parameters.distance,
+    EXPECT_EQ(far.sized_parameters(far.obtained_levels()).distance,
               first * 512 * float(std::ldexp(1.0, far.obtained_levels() - 1)));
-    EXPECT_EQ(test::input_error_of(
-                  [&] { build_lod(far.for_level(far.obtained_levels()), far.obtained_levels(), 2); }),
-              "");
+    EXPECT_EQ(test::input_error_of([&] { far.build(far.obtained_levels()); }), "");
     // 64 levels double past any range: the farthest stay at its end, still ascending.
     const std::vector<float> many = level_distances({}, first, 64);
     EXPECT_EQ(double(many.back()), double(float(parameter_range::distance.max)));
@@ -91,16 +89,40 @@ TEST(Chain, EachLevelIsSizedForItsOwnDistance) {
     const float d = chain.parameters().distance;
     EXPECT_EQ(&chain.for_level(0), chain.first.get());
     EXPECT_EQ(&chain.for_level(1), chain.first.get());  // auto's level 1 is at the distance
-    EXPECT_EQ(chain.for_level(3).input.parameters.distance, 4 * d);
-    EXPECT_EQ(chain.for_level(3).input.parameters.level_distances.rule, LevelDistances::Rule::same);
+    EXPECT_EQ(chain.sized_parameters(3).distance, 4 * d);
+    EXPECT_EQ(chain.sized_parameters(3).level_distances.rule, LevelDistances::Rule::same);
     EXPECT_EQ(&chain.for_level(3), &chain.for_level(3));  // one session per distance
-    EXPECT_NE(test::input_error_of([&] { build_lod(chain.for_level(99), 99, 2); }), "");
+    EXPECT_NE(test::input_error_of([&] { chain.build(99); }), "");
     LodParameters manual = small_chain_parameters();
     set_manual(manual);
     manual.max_texture_size = 256;
     Chain same(model, manual, 2);
     EXPECT_TRUE(same.distances.empty());
     EXPECT_EQ(&same.for_level(same.obtained_levels()), same.first.get());
+}
+
+// What a sweep gives a chain: boxes it computed once (reused, not made
+// again), and budgets that only report (a level no cut fits draws the
+// coarsest, over its budget, instead of failing), at every distance.
+TEST(Chain, TakesGivenBoxesAndLenientBudgetsAtEveryDistance) {
+    const Model model = test::lod_test_building();
+    LodParameters p = small_chain_parameters();
+    p.level_mode = LevelMode::error_greedy;
+    p.budgets = {ByteBudget{true, 2e-6}, ByteBudget{true, 1e-6}};
+    std::vector<std::optional<OrientedBox>> boxes = node_boxes(model, p.box_kind, 2);
+    ASSERT_TRUE(boxes[0]);
+    boxes[0]->center.x() += 0.01f;  // a box no computation makes: seen only if the chain takes it
+    Chain lenient(model, p, 2, {.boxes = &boxes, .budgets_strict = false});
+    EXPECT_EQ(lenient.boxes()[0]->center, boxes[0]->center);
+    Chain strict(model, p, 2);
+    ASSERT_EQ(strict.obtained_levels(), 2);
+    for (int c : {1, 2}) {
+        EXPECT_NE(test::input_error_of([&] { strict.build(c); }), "") << "level " << c;
+        const Lod lod = lenient.build(c);
+        EXPECT_GT(combined_cost({&lod.cost}).bytes(), 2e-6 * double(model_cost(model).bytes()))
+            << "level " << c;
+    }
+    EXPECT_NE(&lenient.for_level(2), lenient.first.get());  // level 2 sized by a session of its own
 }
 
 // Levels in order, each once: a level that draws what the one before draws
@@ -122,15 +144,13 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
         for (std::size_t i = 0; i < taken.size(); ++i) {
             every.push_back(taken[i].level);
             EXPECT_EQ(taken[i].lod.current_level, taken[i].level);
-            EXPECT_EQ(taken[i].session, &chain.for_level(taken[i].level));
             if (i > 0) {
                 EXPECT_FALSE(draws_the_same(taken[i - 1].lod.model, taken[i].lod.model))
                     << "level " << taken[i].level;
             }
             for (int c : taken[i].same_levels) {
                 every.push_back(c);
-                EXPECT_TRUE(draws_the_same(taken[i].lod.model, build_lod(chain.for_level(c), c, 2).model))
-                    << "level " << c;
+                EXPECT_TRUE(draws_the_same(taken[i].lod.model, chain.build(c).model)) << "level " << c;
             }
         }
         std::sort(every.begin(), every.end());
@@ -162,9 +182,8 @@ TEST(Chain, ALevelsParameterFileBuildsTheSameLevel) {
     saved.current_level = c;
     const LodParameters read = parse_parameters(format_parameters(saved), "level.params.txt");
     Chain again(model, read, 2);
-    const Lod a = build_lod(chain.for_level(c), c, 2),
-              b = build_lod(again.for_level(read.current_level), read.current_level, 2);
-    EXPECT_EQ(again.for_level(c).input.parameters.distance, chain.for_level(c).input.parameters.distance);
+    const Lod a = chain.build(c), b = again.build(read.current_level);
+    EXPECT_EQ(again.sized_parameters(c).distance, chain.sized_parameters(c).distance);
     EXPECT_TRUE(draws_the_same(a.model, b.model));
     EXPECT_EQ(format_key_values(a.statistics), format_key_values(b.statistics));
 }
@@ -199,7 +218,7 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
     const SwitchedChain sized = switched_levels(chain, 0, 100);
     EXPECT_TRUE(sized.errors.empty());
     for (std::size_t k = 1; k < sized.levels.size(); ++k)
-        EXPECT_EQ(sized.switch_distances[k], sized.levels[k].session->input.parameters.distance);
+        EXPECT_EQ(sized.switch_distances[k], chain.sized_parameters(sized.levels[k].level).distance);
     EXPECT_EQ(switched_levels(chain, 0, 2).levels.size(), 2u);  // the cap
     LodParameters manual = p;  // every level sized for one distance: switched where auto distances put them
     set_manual(manual);
