@@ -11,6 +11,7 @@
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/parameter_file.h"
 #include "toolkit/metrics/flip.h"
+#include "toolkit/metrics/shot.h"
 
 #include <algorithm>
 #include <charconv>
@@ -85,7 +86,7 @@ namespace {
 
 constexpr NumberRange sweep_image_side_range{16, max_image_side};  // SSIM needs an 11-pixel window
 constexpr NumberRange distance_multiple_range{0.01, 1000};         // of the framing distance
-constexpr NumberRange supersampling_range{1, 4};                   // 16 samples a pixel at most
+constexpr NumberRange supersampling_range{1, max_supersampling};
 
 struct Line {
     const std::string& file;

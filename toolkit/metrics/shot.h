@@ -23,5 +23,7 @@ struct Shot {
 // client shows them, and a pixel is covered where any of its samples is.
 Shot render_shot(const std::vector<Batch>& batches, const RenderSettings& settings, int width, int height,
                  int supersampling = 1);
+constexpr int max_supersampling =
+    4;  // the most the sweeps and a chain's switches ask for: 16 samples a pixel
 
 }  // namespace boxlod

@@ -22,9 +22,10 @@ constexpr int max_distances = 64;
 
 // A view of `drawable` as the chain draws it (its render mode and parallax), one thread: views are measured
 // side by side.
-Shot render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels) {
+Shot render_view(const Drawable& drawable, const Camera& camera, const LodParameters& drawn, int pixels,
+                 int supersampling) {
     return render_shot(drawable.batches, drawing_settings(camera, drawn.render_mode, drawn, 1), pixels,
-                       pixels);
+                       pixels, supersampling);
 }
 
 }  // namespace
@@ -64,10 +65,11 @@ ErrorByDistance measure_error_by_distance(const Model& original, const std::vect
         const float fovy = float(2 * std::atan(tangent * pixels / double(screen.resolution)) * 180 / M_PI);
         const Camera camera =
             framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
-        const Shot seen = render_view(reference->drawable, camera, drawn, pixels);
+        const int samples = std::clamp(measure_pixels / pixels, 1, max_supersampling);  // .h: measure_pixels
+        const Shot seen = render_view(reference->drawable, camera, drawn, pixels, samples);
         const FlipReference prepared = prepare_flip_reference(seen.image, 67, 1);
         for (std::size_t l = 0; l < levels.size(); ++l) {
-            const Shot level = render_view(drawables[l]->drawable, camera, drawn, pixels);
+            const Shot level = render_view(drawables[l]->drawable, camera, drawn, pixels, samples);
             per_view[v][l] =
                 covered_mean(flip(prepared, level.image, 1).error, seen.coverage, level.coverage);
         }

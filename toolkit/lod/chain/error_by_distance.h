@@ -22,7 +22,12 @@
 namespace boxlod {
 
 constexpr int measure_pixels = 384;  // the largest side of a measured view
-constexpr double few_pixels = 4;     // where the measured distances end: the sphere this wide on the screen
+// A view of p pixels a side is rendered min(measure_pixels / p, 4) times as
+// large a side and averaged (metrics/shot.h: render_shot): a far building's
+// windows and edges below a pixel blend as an anti-aliased client shows them,
+// where one sample each measured aliasing (docs/cost.md: Judged where they are
+// seen), and no view costs more pixels than the nearest.
+constexpr double few_pixels = 4;  // where the measured distances end: the sphere this wide on the screen
 constexpr NumberRange switch_error_range{1e-4, 1};  // a threshold of covered ꟻLIP
 
 struct ErrorByDistance {
