@@ -42,7 +42,7 @@ quiet "$boxlod" build "$work/house.glb" -o "$work/level" --level 3 --resolution 
 quiet "$boxlod" build "$fzk" -o "$work/fzk_level" --level 2 --resolution 256
 quiet "$boxlod" build "$work/house.glb" -o "$work/flat_level" --level 3 --resolution 128 --manual --min-texture-size 16 --flat-faces 8
 grep -q '^flat_faces = [1-9]' "$work/flat_level/house_lod.stats.txt" || { echo "gltf_validator: no flat faces to validate" >&2; exit 1; }
-quiet "$boxlod" build "$work/house.glb" -o "$work/baked_level" --level 1 --resolution 128 --level-mode hybrid --baked-proxies --budgets 0.1
+quiet "$boxlod" build "$work/house.glb" -o "$work/baked_level" --level 1 --resolution 128 --level-mode hybrid --budgets 0.1
 grep -q '^nodes_baked = [1-9]' "$work/baked_level/house_lod.stats.txt" || { echo "gltf_validator: no baked proxy to validate" >&2; exit 1; }
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)

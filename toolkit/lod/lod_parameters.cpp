@@ -169,17 +169,15 @@ ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
     return declaration;
 }
 
-// Off by default, and so named in parameter files only where set: on the
-// buildings measured, hybrid levels with baked proxies were as often dearer
-// as cheaper at equal quality by distance (docs/cost.md: Baked proxies).
+// On by default: at equal quality by distance, hybrid levels with baked
+// proxies are cheaper on far levels of every kind of building measured
+// (docs/cost.md: Baked proxies).
 ParameterDeclaration baked_proxies_parameter() {
-    ParameterDeclaration d = yes_no_parameter(
-        "baked_proxies", "baked-proxies",
-        "beyond the manual, level mode hybrid: also offer each sub-tree's baked proxy, its geometry "
-        "simplified as one mesh and drawn with its box's baked faces (docs/design.md: The hybrid level mode)",
-        &LodParameters::baked_proxies);
-    d.written_at_default = false;
-    return d;
+    return yes_no_parameter("baked_proxies", "no-baked-proxies",
+                            "level mode hybrid: do not offer each sub-tree's baked proxy, its geometry "
+                            "simplified as one mesh and "
+                            "drawn with its box's baked faces (docs/design.md: The hybrid level mode)",
+                            &LodParameters::baked_proxies);
 }
 
 std::vector<ParameterDeclaration> make_declarations() {

@@ -46,7 +46,7 @@ struct LodParameters {
     int flat_faces =
         8;  // beyond the manual: faces up to this many texels drawn in one colour from a swatch; 0: off
     bool baked_proxies =
-        false;  // beyond the manual, level mode hybrid: also baked proxies (hybrid.h, baked_proxy.h)
+        true;  // beyond the manual, level mode hybrid: also baked proxies (hybrid.h, baked_proxy.h)
     // Texture sizing: the virtual camera whose pixels the texels match.
     float fovy = 45;
     float distance = 0;  // 0: the distance that frames the model; a chain's level 1

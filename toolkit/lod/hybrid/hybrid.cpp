@@ -57,6 +57,15 @@ constexpr std::array<double, 4> baked_shares = {1, 0.25, 1.0 / 16, 1.0 / 64};
 // where it costs at most 3/4 of the last one offered: most save a few bytes of
 // pages at their least size, not worth measuring (docs/cost.md: The hybrid level mode).
 constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
+// Baked proxies at the box's texel scales 1, 4 and 16 (those offered), as the
+// proxy-baked baseline: at all five they cost a fifth more planning time for no
+// more cells won (docs/cost.md: Baked proxies).
+constexpr std::array<int, 3> baked_texel_scales = {1, 4, 16};
+
+bool baked_at(int texel_scale) {
+    return std::find(baked_texel_scales.begin(), baked_texel_scales.end(), texel_scale) !=
+           baked_texel_scales.end();
+}
 constexpr double coarser_box_most_bytes = 0.75;
 
 MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
@@ -185,6 +194,7 @@ const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, 
 struct BoxTexels {
     float size = 0;
     TextureSizing sizing;
+    int scale = 1;  // box_texel_scales'
 };
 
 // Among its siblings: the parent's sub-tree but n's own, drawn in every
@@ -256,7 +266,7 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
         if (!measurement.box_sums.count(texels.size) ||
-            (baked_wanted(settings) && !measurement.baked_sums.count(texels.size)))
+            (baked_wanted(settings) && baked_at(texels.scale) && !measurement.baked_sums.count(texels.size)))
             missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
     const MeasuringContext context = measuring_context(model, n, view, settings.mode);
@@ -274,8 +284,8 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
             textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
         measurement.box_sums[texels.size] = pixel_error_sum(
             original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
+        if (!baked_wanted(settings) || !baked_at(texels.scale)) continue;
         std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
-        if (!baked_wanted(settings)) continue;
         for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
             std::array<Primitive, 6> faces =
                 baked_proxy_faces(geometry.primitives, box, face_pointers(baked));
@@ -347,7 +357,8 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         const float texel = scale == 1 ? view.pixel : float(scale * pixel);  // the measurements' key
         if (scale > 1 && !(texel > view.pixel)) continue;
         box_texels.push_back(
-            {texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing});
+            {texel, scale == 1 ? coarser_sizing(settings.sizing, double(view.pixel) / pixel) : sizing,
+             scale});
         proxies.push_back(std::move(box_proxy));
     }
     NodeMeasurement own;
@@ -366,7 +377,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxies.push_back(std::move(proxy));
     }
     for (std::size_t k = 0; k < box_texels.size(); ++k)
-        if (baked_wanted(settings))
+        if (baked_wanted(settings) && baked_at(box_texels[k].scale))
             add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size),
                               measurement, view, settings, proxies);
     std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone

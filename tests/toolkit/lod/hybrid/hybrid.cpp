@@ -422,6 +422,7 @@ TEST(Hybrid, ALevelTheEstimatesUnderspendGrowsIntoItsBudget) {
     LodParameters parameters;
     parameters.level_mode = LevelMode::hybrid;
     parameters.box_kind = BoxKind::minimal;
+    parameters.baked_proxies = false;  // boxes and simplified facades, whose estimates underspend
     ASSERT_EQ(parse_budgets("0.5,0.25,0.1,0.05", parameters.budgets), "");
     parameters.distance = settings_for(0.25f, 1).sizing.distance;
     auto session = start_lod(model, parameters, 2);
@@ -533,6 +534,7 @@ TEST(Hybrid, OffersTheBoxWithCoarserTexelsForFewerBytes) {
     parameters.box_kind = BoxKind::minimal;
     parameters.distance = settings.sizing.distance;
     parameters.min_texture_size = 16;
+    parameters.baked_proxies = false;  // the boxes alone
     ASSERT_EQ(parse_budgets(std::to_string(int(by_scale[2]->bytes)) + "B", parameters.budgets), "");
     auto session = start_lod(model, parameters, 2);
     const Lod lod = build_lod(*session, 1, 2);
