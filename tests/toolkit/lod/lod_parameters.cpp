@@ -29,7 +29,7 @@ TEST(LodParameters, EveryValueReadsBackAsWritten) {
     changed.box_kind = BoxKind::minimal;
     changed.keep_small_subtrees = true;
     changed.crop_faces = false;
-    changed.baked_proxies = true;
+    changed.baked_proxies = false;
     changed.fovy = 33.3f;
     changed.resolution = 720.5f;
     changed.max_texture_size = 1024;

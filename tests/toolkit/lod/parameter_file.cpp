@@ -56,6 +56,17 @@ TEST(Parameters, DefaultsAndCommentsParse) {
     EXPECT_FALSE(p.camera);
 }
 
+// A file written while baked proxies were off by default left the key out
+// where off: it still builds its level; every file written now names it.
+TEST(Parameters, AFileWithoutBakedProxiesReadsThemOff) {
+    EXPECT_FALSE(parse_parameters("level_mode = hybrid\n", "old.txt").baked_proxies);
+    EXPECT_TRUE(parse_parameters("baked_proxies = true\n", "new.txt").baked_proxies);
+    EXPECT_TRUE(LodParameters{}.baked_proxies);
+    LodParameters defaults;
+    defaults.model = "house.glb";
+    EXPECT_TRUE(parse_parameters(format_parameters(defaults), "written.txt").baked_proxies);
+}
+
 TEST(Parameters, ErrorsNameFileLineAndKey) {
     auto message = [](const std::string& text) {
         try {

@@ -65,7 +65,7 @@ ErrorByDistance measure_error_by_distance(const Model& original, const std::vect
         const float fovy = float(2 * std::atan(tangent * pixels / double(screen.resolution)) * 180 / M_PI);
         const Camera camera =
             framed_camera(framing, measured_directions[v % direction_count], float(distance), fovy);
-        const int samples = std::clamp(measure_pixels / pixels, 1, max_supersampling);  // .h: measure_pixels
+        const int samples = std::clamp(int(largest) / pixels, 1, max_supersampling);  // .h: measure_pixels
         const Shot seen = render_view(reference->drawable, camera, drawn, pixels, samples);
         const FlipReference prepared = prepare_flip_reference(seen.image, 67, 1);
         for (std::size_t l = 0; l < levels.size(); ++l) {

@@ -22,8 +22,9 @@
 namespace boxlod {
 
 constexpr int measure_pixels = 384;  // the largest side of a measured view
-// A view of p pixels a side is rendered min(measure_pixels / p, 4) times as
-// large a side and averaged (metrics/shot.h: render_shot): a far building's
+// A view of p pixels a side is rendered min(n / p, 4) times as large a side,
+// n the nearest view's side (measure_pixels or the screen's height, the
+// smaller), and averaged (metrics/shot.h: render_shot): a far building's
 // windows and edges below a pixel blend as an anti-aliased client shows them,
 // where one sample each measured aliasing (docs/cost.md: Judged where they are
 // seen), and no view costs more pixels than the nearest.

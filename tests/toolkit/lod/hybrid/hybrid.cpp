@@ -579,6 +579,9 @@ TEST(Hybrid, AFarCurvedRoofIsDrawnByItsBakedProxyWhereOffered) {
         if (p.kind == ProxyKind::simplified && p.bytes <= baked->bytes) {
             EXPECT_GT(p.error, baked->error);
         }
+        if (p.kind == ProxyKind::baked) {  // baked at the box's texel scales 1, 4 and 16 only
+            EXPECT_TRUE(p.texel_scale == 1 || p.texel_scale == 4 || p.texel_scale == 16) << p.texel_scale;
+        }
     }
     const HybridLevel level = hybrid_level_within(model, plan, baked->bytes);
     EXPECT_EQ(level.state[std::size_t(roof)], int(baked - proxies.begin()));
