@@ -173,11 +173,14 @@ ParameterDeclaration not_in_sweeps(ParameterDeclaration declaration) {
 // proxies are cheaper on far levels of every kind of building measured
 // (docs/cost.md: Baked proxies).
 ParameterDeclaration baked_proxies_parameter() {
-    return yes_no_parameter("baked_proxies", "no-baked-proxies",
-                            "level mode hybrid: do not offer each sub-tree's baked proxy, its geometry "
-                            "simplified as one mesh and "
-                            "drawn with its box's baked faces (docs/design.md: The hybrid level mode)",
-                            &LodParameters::baked_proxies);
+    ParameterDeclaration d =
+        yes_no_parameter("baked_proxies", "no-baked-proxies",
+                         "level mode hybrid: do not offer each sub-tree's baked proxy, its geometry "
+                         "simplified as one mesh and "
+                         "drawn with its box's baked faces (docs/design.md: The hybrid level mode)",
+                         &LodParameters::baked_proxies);
+    d.absent_from_file = "false";  // files written while off by default named it only where on
+    return d;
 }
 
 std::vector<ParameterDeclaration> make_declarations() {

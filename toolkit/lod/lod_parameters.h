@@ -89,6 +89,9 @@ struct ParameterDeclaration {
         true;  // a sweep config sets it with `key = value`; false: the sweep varies it under a key of its own
     bool written_at_default =
         true;  // false: a parameter file names it only where it differs from the default
+    // Set: what a parameter file without the key means, where that is not today's default (files written
+    // before the default changed still build their level).
+    std::string absent_from_file;
     std::function<std::string(const LodParameters&)> format;  // reads back exactly through parse
     // Reads `text` into `parameters`; returns what is wrong ("" when nothing is).
     std::function<std::string(const std::string& text, LodParameters& parameters)> parse;

@@ -100,9 +100,8 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
     Camera camera;
     Light light;
     bool has_camera = false, has_light = false;  // a view given in part takes the rest from the defaults
-    // Files written while baked proxies were off by default name them only where on: without the key, off,
-    // so that such a file still builds its level (docs/design.md: Parameter file).
-    p.baked_proxies = false;
+    for (const ParameterDeclaration& d : lod_parameter_declarations())
+        if (!d.absent_from_file.empty()) d.parse(d.absent_from_file, p);  // docs/design.md: Parameter file
     const std::map<std::string, ViewSetter> setters = view_keys(camera, light);
     for (const KeyValueLine& line : parse_key_value_lines(text, file)) {
         Parser parser{file, line.line, line.key};
