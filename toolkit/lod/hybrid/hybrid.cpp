@@ -61,11 +61,6 @@ constexpr std::array<int, 5> box_texel_scales = {1, 2, 4, 8, 16};
 // proxy-baked baseline: at all five they cost a fifth more planning time for no
 // more cells won (docs/cost.md: Baked proxies).
 constexpr std::array<int, 3> baked_texel_scales = {1, 4, 16};
-
-bool baked_at(int texel_scale) {
-    return std::find(baked_texel_scales.begin(), baked_texel_scales.end(), texel_scale) !=
-           baked_texel_scales.end();
-}
 constexpr double coarser_box_most_bytes = 0.75;
 
 MeasuringView measuring_view(const Bounds& bounds, const HybridSettings& settings) {
@@ -219,9 +214,12 @@ std::vector<const Primitive*> sibling_primitives(const Model& model, int n, cons
     return others;
 }
 
-// Baked proxies are offered where asked for and the levels are textured (they draw their box's pages).
-bool baked_wanted(const HybridSettings& settings) {
-    return settings.baked_proxies && settings.mode != RenderMode::untextured;
+// Baked proxies are offered where asked for, the levels are textured (they draw their box's pages) and
+// the box is at one of baked_texel_scales.
+bool baked_wanted(const HybridSettings& settings, int texel_scale) {
+    return settings.baked_proxies && settings.mode != RenderMode::untextured &&
+           std::find(baked_texel_scales.begin(), baked_texel_scales.end(), texel_scale) !=
+               baked_texel_scales.end();
 }
 
 // What a node's candidates are drawn among: the rest of the model near it, in its materials' base
@@ -266,7 +264,7 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
     std::vector<BoxTexels> missing;
     for (const BoxTexels& texels : box_texels)
         if (!measurement.box_sums.count(texels.size) ||
-            (baked_wanted(settings) && baked_at(texels.scale) && !measurement.baked_sums.count(texels.size)))
+            (baked_wanted(settings, texels.scale) && !measurement.baked_sums.count(texels.size)))
             missing.push_back(texels);
     if (missing.empty() && measurement.simplified_measured) return;
     const MeasuringContext context = measuring_context(model, n, view, settings.mode);
@@ -284,7 +282,7 @@ void measure_error_sums(const Model& model, const DecodedTextures& textures, int
             textured ? bake_box(subtree, box, texels.sizing) : std::array<BakedFace, 6>{};
         measurement.box_sums[texels.size] = pixel_error_sum(
             original, among_context(box_proxy_drawable(box, textured ? &baked : nullptr)->drawable));
-        if (!baked_wanted(settings) || !baked_at(texels.scale)) continue;
+        if (!baked_wanted(settings, texels.scale)) continue;
         std::vector<BakedSum>& baked_sums = measurement.baked_sums[texels.size];
         for (const SimplifiedSubtree& geometry : baked_geometry(model, n, subtree_triangles, measurement)) {
             std::array<Primitive, 6> faces =
@@ -377,7 +375,7 @@ std::vector<Proxy> measure_proxies(const Model& model, const DecodedTextures& te
         proxies.push_back(std::move(proxy));
     }
     for (std::size_t k = 0; k < box_texels.size(); ++k)
-        if (baked_wanted(settings) && baked_at(box_texels[k].scale))
+        if (baked_wanted(settings, box_texels[k].scale))
             add_baked_proxies(box, proxies[k].texel_scale, measurement.baked_sums.at(box_texels[k].size),
                               measurement, view, settings, proxies);
     std::vector<std::pair<double, Proxy>> by_bytes;  // each with its bytes alone
