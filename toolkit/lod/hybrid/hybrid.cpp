@@ -35,6 +35,10 @@ constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 
 // (docs/cost.md: The hybrid level mode).
 constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,      0.3536,  0.25,
                                                            0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
+// The whole model (the root) goes on halving below them down to a few
+// triangles: the farthest levels, a few tenths of a percent of a building's
+// bytes, draw it as one small mesh rather than one box; on every large
+// sub-tree such shares won no more (docs/cost.md: Baked proxies).
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: the many smaller sub-trees cost most of
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
@@ -141,8 +145,12 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
         const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
-        for (double share : finer ? std::span<const double>(large_simplified_shares)
-                                  : std::span<const double>(simplified_shares)) {
+        std::vector<double> shares(finer ? large_simplified_shares.begin() : simplified_shares.begin(),
+                                   finer ? large_simplified_shares.end() : simplified_shares.end());
+        if (n == 0)  // the loop below stops at fewest_simplified_triangles
+            for (double share = shares.back() / 2; share * double(subtree_triangles) >= 1; share /= 2)
+                shares.push_back(share);
+        for (double share : shares) {
             const auto target = std::size_t(double(subtree_triangles) * share);
             if (target < fewest_simplified_triangles) break;
             if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering

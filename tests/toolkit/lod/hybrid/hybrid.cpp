@@ -201,6 +201,24 @@ TEST(Hybrid, ClustersLargeSubtreesWhereItBeatsEdgeCollapse) {
         }
 }
 
+// The whole house goes on halving its triangles below the sub-trees' last
+// share (1/64): within half a percent of its bytes it is drawn as one small
+// mesh; without, that budget held nothing but one box of the whole.
+TEST(Hybrid, TheWholeModelIsSimplifiedForTheSmallestBudgets) {
+    const Model model = load_model(test::fzk_haus_ifc);
+    const std::vector<std::optional<OrientedBox>> boxes = node_boxes(model, BoxKind::expanded, 2);
+    const HybridPlan plan = plan_hybrid(model, decode_textures(model), boxes, settings_for(0.4f, 2));
+    const double triangles = double(subtree_triangles(model)[0]);
+    const HybridLevel level = hybrid_level_within(model, plan, 0.005 * double(model_cost(model).bytes()));
+    const int root = level.state[0];
+    ASSERT_GE(root, 0);
+    const Proxy& drawn = plan.proxies[0][std::size_t(root)];
+    EXPECT_EQ(drawn.kind, ProxyKind::simplified);
+    std::size_t kept = 0;
+    for (const Primitive& p : drawn.primitives) kept += p.triangle_count();
+    EXPECT_LT(double(kept), triangles / 64);
+}
+
 TEST(Hybrid, ProxiesAreMeasuredAmongTheirSiblings) {
     Model model;
     model.source = "hybrid-test";
