@@ -11,7 +11,7 @@ set -euo pipefail
 program_packages=(
   build-essential cmake pkg-config
   libeigen3-dev libcgal-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libspng-dev libdeflate-dev
-  libopenexr-dev libassimp-dev libmeshoptimizer-dev libsdl2-dev
+  libopenexr-dev libassimp-dev libmeshoptimizer-dev libsdl2-dev libproj-dev
 )
 # The tests and benchmarks.
 build_packages=("${program_packages[@]}" libgtest-dev libgmock-dev libbenchmark-dev)

@@ -34,7 +34,7 @@ done
 for view in near far; do
   open_page "http://127.0.0.1:$port/three.html?view=$view" "$work/three_$view.json" "$work/three_$view.png"
 done
-# A CityJSON district of 50 buildings 450 km from its CRS's origin, each
+# A CityJSON district of 50 buildings 450 km from its CRS's origin, placed by that CRS, each
 # Building an object: under a minute on 2 cores, then shown by both clients.
 /usr/bin/python3 "$here/make_district.py" "$work/district.city.json" 50
 start=$(date +%s.%N)
@@ -71,4 +71,11 @@ assert district["drawn"] > 0.01 * district["pixels"], "the district's picture is
 three = json.load(open(f"{sys.argv[1]}/three_district.json"))
 assert "error" not in three and three.get("settled", True) and three["tiles"], three
 assert open(f"{sys.argv[1]}/district.txt").read().count("objects = 50") == 1
+# Placed by its reference system (RD New + NAP, x 85 km, y 447 km): in Delft, 52.01 N 4.37 E, not at KIT.
+import math
+x, y, z = json.load(open(f"{sys.argv[1]}/site/tiles/tileset.json"))["root"]["transform"][12:15]
+latitude = math.degrees(math.atan2(z, math.hypot(x, y) * (1 - 6.69437999014e-3)))  # on the ellipsoid's surface
+longitude = math.degrees(math.atan2(y, x))
+print(f"tiles_clients district placed at {latitude:.4f} N {longitude:.4f} E")
+assert abs(latitude - 52.01) < 0.02 and abs(longitude - 4.37) < 0.02, (latitude, longitude)
 PY

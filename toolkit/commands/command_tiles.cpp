@@ -5,6 +5,7 @@
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/formats/gltf_io.h"
+#include "toolkit/formats/map_projection.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/formats/tileset.h"
 #include "toolkit/lod/chain/chain.h"
@@ -68,11 +69,21 @@ int run_tiles(const Arguments& a) {
         throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
-    const Geodetic origin{a.number("latitude"), a.number("longitude"), a.number("height")};
+    Geodetic origin{a.number("latitude"), a.number("longitude"), a.number("height")};
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
     const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(),
                                         city.origin.y());  // y up to the file's z up
+    if (!city.reference_system.empty() && !a.has("latitude") && !a.has("longitude") && !a.has("height")) {
+        const MapPlacement placed = place_on_earth(city.reference_system, source_origin, parameters.model);
+        origin = placed.at;
+        std::fprintf(stderr,
+                     "boxlod tiles: placed by its reference system at latitude %s, longitude %s, "
+                     "height %s, heading %s degrees (PROJ: %s)\n",
+                     format_number(origin.latitude_degrees).c_str(),
+                     format_number(origin.longitude_degrees).c_str(), format_number(origin.height).c_str(),
+                     format_number(origin.heading_degrees).c_str(), placed.operation.c_str());
+    }
     city.origin = Eigen::Vector3d::Zero();
     const std::vector<int> nodes = object_nodes(city);
     Chain(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
@@ -100,30 +111,32 @@ int run_tiles(const Arguments& a) {
 }  // namespace
 
 Subcommand tiles_subcommand() {
-    Subcommand tiles{{"tiles",
-                      "MODEL|PARAMS.txt",
-                      "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and "
-                      "streets) and the root's own geometry (the whole model where all of it is on the root) "
-                      "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down "
-                      "to the original; glb content, boxes from boxlod's boxes, geometric errors in metres "
-                      "that make clients switch levels where a chain does (16 pixels at the level's switch "
-                      "distance, --switch-error); OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
-                      {
-                          {"output", "OUTDIR", "folder for the tileset (required)", {}, "", 'o'},
-                          {"latitude", "DEG",
-                           "where the model's origin lies on the WGS84 ellipsoid (by default KIT, Karlsruhe)",
-                           latitude_range, format_number(Geodetic{}.latitude_degrees)},
-                          {"longitude", "DEG", "its longitude", longitude_range,
-                           format_number(Geodetic{}.longitude_degrees)},
-                          {"height", "M", "its height above the ellipsoid", height_range,
-                           format_number(Geodetic{}.height)},
-                          keep_hierarchy_option(),
-                          switch_error_option(),
-                          threads_option(),
-                      },
-                      1,
-                      1},
-                     run_tiles};
+    Subcommand tiles{
+        {"tiles",
+         "MODEL|PARAMS.txt",
+         "Write a 3D Tiles 1.1 tileset: every child of the model's root (a city's buildings and "
+         "streets) and the root's own geometry (the whole model where all of it is on the root) "
+         "an object whose levels are a chain of tiles, coarsest first, refined by REPLACE down "
+         "to the original; glb content, boxes from boxlod's boxes, geometric errors in metres "
+         "that make clients switch levels where a chain does (16 pixels at the level's switch "
+         "distance, --switch-error); OUTDIR/tileset.json and OUTDIR/object_K_L<c>.glb.",
+         {
+             {"output", "OUTDIR", "folder for the tileset (required)", {}, "", 'o'},
+             {"latitude", "DEG",
+              "where the model's origin lies on the WGS84 ellipsoid (by default where a city file's "
+              "reference system places it (PROJ), else KIT, Karlsruhe)",
+              latitude_range, format_number(Geodetic{}.latitude_degrees)},
+             {"longitude", "DEG", "its longitude", longitude_range,
+              format_number(Geodetic{}.longitude_degrees)},
+             {"height", "M", "its height above the ellipsoid", height_range,
+              format_number(Geodetic{}.height)},
+             keep_hierarchy_option(),
+             switch_error_option(),
+             threads_option(),
+         },
+         1,
+         1},
+        run_tiles};
     std::vector<Option> lod = lod_options();
     tiles.command.options.insert(tiles.command.options.begin() + 1, lod.begin(), lod.end());
     return tiles;

@@ -187,6 +187,16 @@ std::map<std::string, std::string> parents_of(const CityPlace& at, const json& o
     return parent;
 }
 
+// metadata.referenceSystem of the first document (a CityJSONSeq's header), "" without one.
+std::string reference_system(const CityPlace& at, const json& document) {
+    const auto metadata = document.find("metadata");
+    if (metadata == document.end()) return "";
+    if (!metadata->is_object()) at.fail("'metadata' is not an object");
+    if (!metadata->contains("referenceSystem")) return "";
+    return member(at.in("metadata"), *metadata, "referenceSystem", json::value_t::string, "a string")
+        .get<std::string>();
+}
+
 }  // namespace
 
 Model import_cityjson(const std::string& path, const std::string& lod) {
@@ -201,6 +211,7 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
     Model model;
     model.source = path;
     model.origin = Eigen::Vector3d(origin.x(), origin.z(), -origin.y());  // z-up to the model's y-up
+    model.reference_system = reference_system({path, parts.front().line}, parts.front().document);
     add_node(model, -1, fs::path(path).stem().string());
     CityGeometryReader reader(model, path, origin);
     for (Part& part : parts) {

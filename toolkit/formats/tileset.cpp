@@ -68,8 +68,12 @@ std::array<double, 16> east_north_up_to_ecef(const Geodetic& at) {
                                 std::cos(phi));
     const Eigen::Vector3d up(std::cos(phi) * std::cos(lambda), std::cos(phi) * std::sin(lambda),
                              std::sin(phi));
+    // The model's x and y axes: east and north turned clockwise by the heading.
+    const double heading = at.heading_degrees * M_PI / 180;
+    const Eigen::Vector3d x = std::cos(heading) * east - std::sin(heading) * north,
+                          y = std::sin(heading) * east + std::cos(heading) * north;
     std::array<double, 16> m{};
-    const Eigen::Vector3d* columns[4] = {&east, &north, &up, &origin};
+    const Eigen::Vector3d* columns[4] = {&x, &y, &up, &origin};
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 3; ++r) m[std::size_t(c * 4 + r)] = (*columns[c])[r];
         m[std::size_t(c * 4 + 3)] = c == 3 ? 1 : 0;

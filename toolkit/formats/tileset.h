@@ -15,6 +15,9 @@ namespace boxlod {
 struct Geodetic {
     double latitude_degrees = 49.0094, longitude_degrees = 8.4120,
            height = 0;  // default: KIT, Karlsruhe, home of the FZK-Haus
+    // The model's north (+y of its file, a map grid's north) as an azimuth,
+    // degrees clockwise from true north (map_projection.h).
+    double heading_degrees = 0;
 };
 
 struct TileLevel {
@@ -37,7 +40,7 @@ struct TileObject {
 // every finer level, as refinement requires.
 // `source_origin`: where the model's local origin lies in its file's
 // coordinates (a city file's, z up; Model::origin), kept in the root's
-// extras.boxlod.source_origin; the tiles are placed at `origin` (no map projection).
+// extras.boxlod.source_origin; the tiles are placed at `origin`, turned by its heading.
 std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic& origin,
                          const Eigen::Vector3d& source_origin = Eigen::Vector3d::Zero());
 
@@ -45,8 +48,8 @@ std::string tileset_json(const std::vector<TileObject>& objects, const Geodetic&
 // by default (CesiumJS's maximumScreenSpaceError, 3d-tiles-renderer's errorTarget).
 constexpr double client_screen_space_error = 16;
 
-// The east-north-up frame at `at` in Earth-centred Earth-fixed metres (WGS84),
-// column-major as 3D Tiles' `transform`.
+// The east-north-up frame at `at`, turned about up by its heading, in
+// Earth-centred Earth-fixed metres (WGS84), column-major as 3D Tiles' `transform`.
 std::array<double, 16> east_north_up_to_ecef(const Geodetic& at);
 
 // A box in glTF's y-up frame as 3D Tiles' `boundingVolume.box` (z-up: glTF

@@ -139,15 +139,19 @@ struct Model {
     // that float keeps them exact; glTF writes it as the root's translation
     // and 3D Tiles as the root tile's transform (docs/design.md: Files).
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    // The source's coordinate reference system as it names it (CityJSON's
+    // metadata.referenceSystem), "" when it names none: where `origin` lies on the Earth.
+    std::string reference_system;
     // An LoD that boxlod exported: viewable, never simplified again.
     bool is_lod = false;
     std::vector<std::pair<std::string, std::string>> lod_params;
 };
 
-// What a model made from another keeps of it: its source file and origin.
+// What a model made from another keeps of it: its source file, origin and reference system.
 inline void keep_provenance(const Model& from, Model& to) {
     to.source = from.source;
     to.origin = from.origin;
+    to.reference_system = from.reference_system;
 }
 
 // Appends a node under `parent` (-1 for the root) and returns its index.

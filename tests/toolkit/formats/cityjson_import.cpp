@@ -285,6 +285,22 @@ TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
 }
 
 // Bad input: one line naming the file and the place.
+// Where the file lies on the Earth, as it names it (map_projection.h places it).
+TEST(CityJsonImport, KeepsTheReferenceSystem) {
+    const json one = {
+        {"b",
+         {{"type", "Building"},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}}};
+    json file = city(one, square_vertices);
+    EXPECT_EQ(read(file, "no_system").reference_system, "");
+    file["metadata"] = {{"referenceSystem", "https://www.opengis.net/def/crs/EPSG/0/7415"}};
+    EXPECT_EQ(read(file, "system").reference_system, "https://www.opengis.net/def/crs/EPSG/0/7415");
+    file["metadata"]["referenceSystem"] = 7415;
+    EXPECT_NE(
+        test::input_error_of([&] { read(file, "system_number"); }).find("'referenceSystem' is not a string"),
+        std::string::npos);
+}
+
 TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
     auto error_of = [](json file, const std::string& name) {
         return test::input_error_of([&] { read(file, name); });

@@ -27,6 +27,15 @@ TEST(Tileset, EastNorthUpFrameOnTheEllipsoid) {
     EXPECT_NEAR(pole[12], 0, 1e-6);
 }
 
+// A map grid's north 90 degrees east of true north: the model's +y points east, its +x south.
+TEST(Tileset, TheFrameTurnsByItsHeading) {
+    Geodetic at{0, 0, 0};
+    at.heading_degrees = 90;
+    const std::array<double, 16> m = east_north_up_to_ecef(at);
+    std::array<double, 16> expected{0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 6378137, 0, 0, 1};
+    for (std::size_t i = 0; i < 16; ++i) EXPECT_NEAR(m[i], expected[i], 1e-9) << i;
+}
+
 TEST(Tileset, EachObjectIsAChainOfReplacingTilesCoarsestFirst) {
     OrientedBox box;
     box.half_extents = {1, 1, 1};

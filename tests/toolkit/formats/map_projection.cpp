@@ -1,0 +1,44 @@
+#include "toolkit/formats/map_projection.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace boxlod;
+
+// The RD New origin (x 155,000 m, y 463,000 m at Amersfoort) lies at
+// 52.15517440 N, 5.38720621 E on WGS 84 (RDNAPTRANS 2018's published point);
+// PROJ's Helmert fit is within a metre, 1e-5 degrees. The grid's north is
+// true north on its central meridian.
+TEST(MapProjection, TheRdOriginLiesAtAmersfoort) {
+    for (const char* system : {"EPSG:28992", "https://www.opengis.net/def/crs/EPSG/0/7415"}) {
+        const MapPlacement placed = place_on_earth(system, {155000, 463000, 7}, "rd.city.json");
+        EXPECT_NEAR(placed.at.latitude_degrees, 52.15517440, 1e-5) << system;
+        EXPECT_NEAR(placed.at.longitude_degrees, 5.38720621, 1e-5) << system;
+        EXPECT_EQ(placed.at.height, 7) << system;  // the file's height, as it is
+        EXPECT_NEAR(placed.at.heading_degrees, 0, 1e-3) << system;
+        // EPSG 7415 by its horizontal part, not PROJ's ballpark for the compound (110 m off).
+        EXPECT_EQ(placed.operation.find("allpark"), std::string::npos) << placed.operation;
+    }
+}
+
+// In Rotterdam, 0.93 degrees west of the central meridian, the grid's north
+// turns west by the meridian convergence, about (lambda - lambda0) sin(phi).
+TEST(MapProjection, TheGridsNorthTurnsAwayFromTheCentralMeridian) {
+    const MapPlacement placed = place_on_earth("EPSG:28992", {91000, 437000, 0}, "rotterdam.city.json");
+    const double convergence =
+        (placed.at.longitude_degrees - 5.38763888889) * std::sin(placed.at.latitude_degrees * M_PI / 180);
+    EXPECT_LT(placed.at.heading_degrees, -0.5);
+    EXPECT_NEAR(placed.at.heading_degrees, convergence, 0.01);
+}
+
+TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
+    const std::string error = test::input_error_of([] {
+        place_on_earth("EPSG:999999", {0, 0, 0}, "district.city.json");
+    });
+    EXPECT_NE(error.find("district.city.json: reference system 'EPSG:999999'"), std::string::npos) << error;
+    EXPECT_NE(error.find("--latitude"), std::string::npos) << error;
+    EXPECT_NE(test::input_error_of([] { place_on_earth("not a system", {0, 0, 0}, "a.city.json"); }), "");
+}

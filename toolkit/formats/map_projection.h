@@ -1,0 +1,33 @@
+// Where a city file's coordinates lie on the Earth: its reference system
+// (CityJSON's metadata.referenceSystem, e.g. EPSG 7415, the Netherlands' RD
+// New + NAP) to WGS 84 latitude and longitude through PROJ, so that `tiles`
+// places a district where it is (docs/city.md: Viewing a city as 3D Tiles).
+#pragma once
+#include "toolkit/formats/tileset.h"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace boxlod {
+
+// What PROJ makes of `point` (x east, y north, z up, in the reference system's
+// units) of the reference system named `reference_system` (EPSG:7415,
+// urn:ogc:def:crs:EPSG::7415 or https://www.opengis.net/def/crs/EPSG/0/7415):
+// its latitude and longitude on WGS 84, its height as the file gives it
+// (heights are not converted: PROJ's geoid grids are not in Debian's
+// proj-data), and the heading of the map grid's north there (meridian
+// convergence), so that the model's axes are turned as the grid is. A compound
+// system is taken by its horizontal part, as PROJ's transformation of the
+// whole falls back to a ballpark offset (about 100 m in the Netherlands).
+// `operation`: PROJ's description of the transformation used.
+// Throws InputError naming `source` when PROJ does not know the system or
+// cannot transform the point.
+struct MapPlacement {
+    Geodetic at;
+    std::string operation;
+};
+MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Vector3d& point,
+                            const std::string& source);
+
+}  // namespace boxlod
