@@ -461,17 +461,18 @@ void sequence_levels(Writer& w) {
 // The finest level's root is the scene; the others hang off its MSFT_lod
 // extension, coarsest last, with switch hints in extras.MSFT_screencoverage
 // (KhronosGroup/glTF, extensions/2.0/Vendor/MSFT_lod) and extras.boxlod.switch_distances.
-// A model with an origin (a city file's) hangs under a node that moves it there.
+// A model with an origin (a city file's) hangs under a node that moves it there
+// and names the file's reference system.
 void add_scene(Writer& w, const std::vector<int>& roots, const std::vector<LodSwitch>& switches,
-               const Node& finest_root, const Eigen::Vector3d& origin) {
+               const Node& finest_root, const Eigen::Vector3d& origin, const std::string& reference_system) {
     tinygltf::Scene scene;
     scene.nodes = {roots[0]};
-    if (!origin.isZero()) {
+    if (!origin.isZero() || !reference_system.empty()) {
         tinygltf::Node placed;
         placed.name = "origin";
         placed.translation = {origin.x(), origin.y(), origin.z()};
         placed.children = {roots[0]};
-        placed.extras = origin_node_extras();
+        placed.extras = origin_node_extras(reference_system);
         w.gltf.nodes.push_back(std::move(placed));
         scene.nodes = {int(w.gltf.nodes.size()) - 1};
     }
@@ -510,7 +511,7 @@ tinygltf::Model gltf_document(const std::vector<const Model*>& levels, const std
         add_nodes(w, *model);
     }
     if (w.share) sequence_levels(w);
-    add_scene(w, roots, switches, levels[0]->nodes[0], levels[0]->origin);
+    add_scene(w, roots, switches, levels[0]->nodes[0], levels[0]->origin, levels[0]->reference_system);
     w.finish();
     return std::move(w.gltf);
 }

@@ -152,7 +152,20 @@ tinygltf::Value primitive_extras(const Primitive& primitive) {
     return boxlod_object({{"polygons", tinygltf::Value(int(primitive.polygon_count))}});
 }
 
-tinygltf::Value origin_node_extras() { return boxlod_object({{"origin", tinygltf::Value(true)}}); }
+tinygltf::Value origin_node_extras(const std::string& reference_system) {
+    tinygltf::Value::Object fields{{"origin", tinygltf::Value(true)}};
+    if (!reference_system.empty()) fields["reference_system"] = tinygltf::Value(reference_system);
+    return boxlod_object(std::move(fields));
+}
+
+std::string read_origin_reference_system(const tinygltf::Node& node, const ExtrasPlace& at) {
+    const tinygltf::Value* fields = boxlod_fields(node.extras);
+    if (!fields || !fields->Has("reference_system")) return "";
+    const tinygltf::Value& system = fields->Get("reference_system");
+    if (!system.IsString() || system.Get<std::string>().empty())
+        throw_input_error(at.file, at.place, "extras.boxlod.reference_system is not a non-empty string");
+    return system.Get<std::string>();
+}
 
 bool is_origin_node(const tinygltf::Node& node) {
     const tinygltf::Value* fields = boxlod_fields(node.extras);

@@ -25,8 +25,9 @@ tinygltf::Value material_extras(const Material& material, int height_image);  //
 // a chain's root also says where its levels switch (gltf_io.h: export_gltf_lods).
 std::string node_extras_json(const Node& node, const std::vector<LodSwitch>& switches = {});
 tinygltf::Value primitive_extras(const Primitive& primitive);
-// The node above the scene that carries Model::origin as its translation.
-tinygltf::Value origin_node_extras();
+// The node above the scene that carries Model::origin as its translation, and
+// Model::reference_system (where not "") as extras.boxlod.reference_system.
+tinygltf::Value origin_node_extras(const std::string& reference_system);
 bool is_origin_node(const tinygltf::Node& node);  // that node as written: a translation only
 
 // Where a reader is: the file and the place in it ("material 3", "node 7 mesh 2 primitive 0").
@@ -34,6 +35,9 @@ struct ExtrasPlace {
     const std::string& file;
     std::string place;
 };
+
+// The origin node's reference system, "" without one.
+std::string read_origin_reference_system(const tinygltf::Node& node, const ExtrasPlace& at);
 
 void read_asset_extras(const tinygltf::Value& extras, Model& model);
 void read_material_extras(const tinygltf::Value& extras, int image_count, const ExtrasPlace& at,

@@ -439,6 +439,8 @@ std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model
         reader.fail("node " + std::to_string(roots[0]), "origin translation is NaN or infinite");
     if (node.children.empty())
         reader.fail("node " + std::to_string(roots[0]), "origin node without children");
+    model.reference_system =
+        read_origin_reference_system(node, {reader.file, "node " + std::to_string(roots[0])});
     return node.children;
 }
 

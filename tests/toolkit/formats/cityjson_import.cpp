@@ -197,11 +197,13 @@ TEST(CityJsonImport, FarFromTheOriginReadsAsNearIt) {
 }
 
 TEST(CityJsonImport, GltfKeepsTheOriginAsTheRootsTranslation) {
-    const Model far = step_at({150000.25, 400000.25, 12}, "far_gltf");
+    Model far = step_at({150000.25, 400000.25, 12}, "far_gltf");
+    far.reference_system = "EPSG:7415";  // kept beside the origin, so `tiles` of the glb places it too
     const fs::path path = test::scratch_folder("cityjson_far_gltf_out") / "far.glb";
     save_model(far, path.string());
     const Model back = load_model(path.string());
     EXPECT_EQ(back.origin, far.origin);
+    EXPECT_EQ(back.reference_system, "EPSG:7415");
     EXPECT_EQ(back.nodes.size(), far.nodes.size());
     EXPECT_EQ(back.nodes[1].primitives[0].positions, far.nodes[1].primitives[0].positions);
     // What any client sees: the scene's one node moves the model there.
