@@ -69,21 +69,25 @@ int run_tiles(const Arguments& a) {
         throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
-    Geodetic origin{a.number("latitude"), a.number("longitude"), a.number("height")};
+    if (a.has("latitude") != a.has("longitude"))
+        throw InputError(
+            "--latitude and --longitude: give both or neither (the model's reference system, "
+            "else KIT, Karlsruhe, places it)");
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
     const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(),
                                         city.origin.y());  // y up to the file's z up
-    if (!city.reference_system.empty() && !a.has("latitude") && !a.has("longitude") && !a.has("height")) {
+    Geodetic origin;
+    std::string placed_by = "default";
+    if (a.has("latitude")) {
+        origin = {a.number("latitude"), a.number("longitude"), 0};
+        placed_by = "options";
+    } else if (!city.reference_system.empty()) {
         const MapPlacement placed = place_on_earth(city.reference_system, source_origin, parameters.model);
         origin = placed.at;
-        std::fprintf(stderr,
-                     "boxlod tiles: placed by its reference system at latitude %s, longitude %s, "
-                     "height %s, heading %s degrees (PROJ: %s)\n",
-                     format_number(origin.latitude_degrees).c_str(),
-                     format_number(origin.longitude_degrees).c_str(), format_number(origin.height).c_str(),
-                     format_number(origin.heading_degrees).c_str(), placed.operation.c_str());
+        placed_by = city.reference_system + " (PROJ: " + placed.operation + ")";
     }
+    if (a.has("height")) origin.height = a.number("height");  // e.g. a file's NAP heights to the ellipsoid
     city.origin = Eigen::Vector3d::Zero();
     const std::vector<int> nodes = object_nodes(city);
     Chain(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
@@ -105,6 +109,10 @@ int run_tiles(const Arguments& a) {
     std::size_t tiles = 0;
     for (const TileObject& object : objects) tiles += object.levels.size();
     std::printf("tileset = %s\nobjects = %zu\ntiles = %zu\n", tileset.c_str(), objects.size(), tiles);
+    std::printf("latitude = %s\nlongitude = %s\nheight = %s\nheading = %s\nplaced_by = %s\n",
+                format_number(origin.latitude_degrees).c_str(),
+                format_number(origin.longitude_degrees).c_str(), format_number(origin.height).c_str(),
+                format_number(origin.heading_degrees).c_str(), placed_by.c_str());
     return 0;
 }
 
@@ -123,13 +131,13 @@ Subcommand tiles_subcommand() {
          {
              {"output", "OUTDIR", "folder for the tileset (required)", {}, "", 'o'},
              {"latitude", "DEG",
-              "where the model's origin lies on the WGS84 ellipsoid (by default where a city file's "
-              "reference system places it (PROJ), else KIT, Karlsruhe)",
+              "where the model's origin lies on the WGS84 ellipsoid, with --longitude (by default where a "
+              "city file's reference system places it (PROJ), else KIT, Karlsruhe)",
               latitude_range, format_number(Geodetic{}.latitude_degrees)},
              {"longitude", "DEG", "its longitude", longitude_range,
               format_number(Geodetic{}.longitude_degrees)},
-             {"height", "M", "its height above the ellipsoid", height_range,
-              format_number(Geodetic{}.height)},
+             {"height", "M", "its height above the ellipsoid (by default a city file's own, else 0)",
+              height_range, format_number(Geodetic{}.height)},
              keep_hierarchy_option(),
              switch_error_option(),
              threads_option(),

@@ -104,9 +104,21 @@ json parse_json(const CityPlace& at, std::string_view text) {
     }
 }
 
+// metadata.referenceSystem of a CityJSON document (a CityJSONSeq's first line), "" without one.
+std::string read_reference_system(const CityPlace& at, const json& document) {
+    const auto metadata = document.find("metadata");
+    if (metadata == document.end()) return "";
+    if (!metadata->is_object()) at.fail("'metadata' is not an object");
+    if (!metadata->contains("referenceSystem")) return "";
+    return member(at.in("metadata"), *metadata, "referenceSystem", json::value_t::string, "a string")
+        .get<std::string>();
+}
+
 // The documents of a file: one, or a CityJSONSeq's lines (the first holds
-// the transform; each later line a CityJSONFeature).
-std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
+// the transform and the metadata; each later line a CityJSONFeature); the
+// reference system, if `reference_system` is given.
+std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
+                             std::string* reference_system = nullptr) {
     std::vector<Part> parts;
     const CityPlace file{path, ""};
     if (lowercase_extension(path) != ".jsonl") {
@@ -114,6 +126,7 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
         if (!parts[0].document.is_object()) file.fail("not a CityJSON object");
         check_version(file, parts[0].document, "CityJSON");
         read_vertices(file, parts[0], read_transform(file, parts[0].document));
+        if (reference_system) *reference_system = read_reference_system(file, parts[0].document);
         return parts;
     }
     std::size_t line_number = 0;
@@ -131,6 +144,7 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path) {
         if (!transform) {
             check_version(at, document, "CityJSON");
             transform = read_transform(at, document);
+            if (reference_system) *reference_system = read_reference_system(at, document);
             continue;
         }
         check_version(at, document, "CityJSONFeature");
@@ -187,16 +201,6 @@ std::map<std::string, std::string> parents_of(const CityPlace& at, const json& o
     return parent;
 }
 
-// metadata.referenceSystem of the first document (a CityJSONSeq's header), "" without one.
-std::string reference_system(const CityPlace& at, const json& document) {
-    const auto metadata = document.find("metadata");
-    if (metadata == document.end()) return "";
-    if (!metadata->is_object()) at.fail("'metadata' is not an object");
-    if (!metadata->contains("referenceSystem")) return "";
-    return member(at.in("metadata"), *metadata, "referenceSystem", json::value_t::string, "a string")
-        .get<std::string>();
-}
-
 }  // namespace
 
 Model import_cityjson(const std::string& path, const std::string& lod) {
@@ -206,12 +210,13 @@ Model import_cityjson(const std::string& path, const std::string& lod) {
 // The steps: the documents and their vertices, the local origin, then each
 // document's objects, parents first, with the geometry of the chosen LoD.
 Model import_cityjson_bytes(std::string_view bytes, const std::string& path, const std::string& lod) {
-    std::vector<Part> parts = read_parts(bytes, path);
+    std::string reference_system;
+    std::vector<Part> parts = read_parts(bytes, path, &reference_system);
     const Eigen::Vector3d origin = local_origin({path, ""}, parts);
     Model model;
     model.source = path;
     model.origin = Eigen::Vector3d(origin.x(), origin.z(), -origin.y());  // z-up to the model's y-up
-    model.reference_system = reference_system({path, parts.front().line}, parts.front().document);
+    model.reference_system = reference_system;
     add_node(model, -1, fs::path(path).stem().string());
     CityGeometryReader reader(model, path, origin);
     for (Part& part : parts) {

@@ -122,6 +122,7 @@ template <typename Stream, typename M>
 void walk(Stream& s, M& model) {
     s.text(model.source);
     s.value(model.origin);
+    s.text(model.reference_system);
     s.value(model.is_lod);
     std::uint64_t count = model.lod_params.size();
     s.value(count);

@@ -251,6 +251,13 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     const Model model = load_model(path.string());
     ASSERT_EQ(model.nodes[0].children.size(), 2u);
     EXPECT_EQ(model_bounds(model).size().x(), 6);
+    EXPECT_EQ(model.reference_system, "");
+    // The header's metadata names the reference system of every feature.
+    json placed = header;
+    placed["metadata"] = {{"referenceSystem", "EPSG:7415"}};
+    lines = placed.dump() + "\n" + feature("a", 0).dump() + "\n";
+    test::write_text(path, lines);
+    EXPECT_EQ(load_model(path.string()).reference_system, "EPSG:7415");
 }
 
 // FILE#OBJECT reads one object of a city file, at the whole file's origin;
@@ -286,7 +293,6 @@ TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
               b.materials[std::size_t(b.nodes[1].primitives[0].material)].base_color);
 }
 
-// Bad input: one line naming the file and the place.
 // Where the file lies on the Earth, as it names it (map_projection.h places it).
 TEST(CityJsonImport, KeepsTheReferenceSystem) {
     const json one = {
@@ -303,6 +309,7 @@ TEST(CityJsonImport, KeepsTheReferenceSystem) {
         std::string::npos);
 }
 
+// Bad input: one line naming the file and the place.
 TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
     auto error_of = [](json file, const std::string& name) {
         return test::input_error_of([&] { read(file, name); });

@@ -21,6 +21,7 @@ TEST(MapProjection, TheRdOriginLiesAtAmersfoort) {
         EXPECT_NEAR(placed.at.heading_degrees, 0, 1e-3) << system;
         // EPSG 7415 by its horizontal part, not PROJ's ballpark for the compound (110 m off).
         EXPECT_EQ(placed.operation.find("allpark"), std::string::npos) << placed.operation;
+        EXPECT_NE(placed.operation.find("Amersfoort to WGS 84"), std::string::npos) << placed.operation;
     }
 }
 
@@ -41,4 +42,16 @@ TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
     EXPECT_NE(error.find("district.city.json: reference system 'EPSG:999999'"), std::string::npos) << error;
     EXPECT_NE(error.find("--latitude"), std::string::npos) << error;
     EXPECT_NE(test::input_error_of([] { place_on_earth("not a system", {0, 0, 0}, "a.city.json"); }), "");
+    // The model's coordinates are metres east and north: degrees, geocentric metres and feet are refused.
+    for (const char* other : {"EPSG:4326", "EPSG:4978", "EPSG:2263"})
+        EXPECT_NE(test::input_error_of([&] {
+                      place_on_earth(other, {1, 1, 0}, "a.city.json");
+                  }).find(std::string("reference system '") + other + "'"),
+                  std::string::npos)
+            << other;
+    // One line, whatever the file names.
+    const std::string two_lines = test::input_error_of([] {
+        place_on_earth("EPSG:1\nx", {0, 0, 0}, "a.city.json");
+    });
+    EXPECT_EQ(two_lines.find('\n'), std::string::npos) << two_lines;
 }

@@ -35,10 +35,12 @@ constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 
 // (docs/cost.md: The hybrid level mode).
 constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,      0.3536,  0.25,
                                                            0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
-// The whole model (the root) goes on halving below them down to a few
-// triangles: the farthest levels, a few tenths of a percent of a building's
-// bytes, draw it as one small mesh rather than one box; on every large
-// sub-tree such shares won no more (docs/cost.md: Baked proxies).
+// The whole model (the root) goes on halving below them, at most 8 times
+// (to 1/16384: a building of 100,000 triangles to 6) and down to
+// fewest_simplified_triangles: the farthest levels, a few tenths of a percent
+// of a building's bytes, draw it as one small mesh rather than one box; on
+// every large sub-tree such shares won no more (docs/cost.md: Baked proxies).
+constexpr int most_whole_model_halvings = 8;
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: the many smaller sub-trees cost most of
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
@@ -147,17 +149,20 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
         std::vector<double> shares(finer ? large_simplified_shares.begin() : simplified_shares.begin(),
                                    finer ? large_simplified_shares.end() : simplified_shares.end());
+        const std::size_t common = shares.size();
         if (n == 0)  // the loop below stops at fewest_simplified_triangles
-            for (double share = shares.back() / 2; share * double(subtree_triangles) >= 1; share /= 2)
-                shares.push_back(share);
-        for (double share : shares) {
+            for (int k = 0; k < most_whole_model_halvings; ++k) shares.push_back(shares.back() / 2);
+        for (std::size_t k = 0; k < shares.size(); ++k) {
+            const double share = shares[k];
             const auto target = std::size_t(double(subtree_triangles) * share);
             if (target < fewest_simplified_triangles) break;
             if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
-            if (simplified.triangles == 0 || simplified.triangles >= previous)
-                continue;  // nothing left, or no simpler than the last
+            if (simplified.triangles == 0 || simplified.triangles >= previous) {
+                if (k >= common) break;  // the whole model's further halvings would stall as well
+                continue;                // nothing left, or no simpler than the last
+            }
             previous = simplified.triangles;
             measurement.simplified.push_back(std::move(simplified));
         }
