@@ -78,4 +78,8 @@ latitude = math.degrees(math.atan2(z, math.hypot(x, y) * (1 - 6.69437999014e-3))
 longitude = math.degrees(math.atan2(y, x))
 print(f"tiles_clients district placed at {latitude:.4f} N {longitude:.4f} E")
 assert abs(latitude - 52.01) < 0.02 and abs(longitude - 4.37) < 0.02, (latitude, longitude)
+# The tiles are in the tileset's frame, at no system's origin: none names the file's system.
+import glob
+named = [g for g in glob.glob(f"{sys.argv[1]}/site/tiles/*.glb") if b"reference_system" in open(g, "rb").read()]
+assert not named, f"tiles naming a reference system: {named[:3]}"
 PY

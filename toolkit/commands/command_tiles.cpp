@@ -88,7 +88,9 @@ int run_tiles(const Arguments& a) {
         placed_by = city.reference_system + " (PROJ: " + placed.operation + ")";
     }
     if (a.has("height")) origin.height = a.number("height");  // e.g. a file's NAP heights to the ellipsoid
+    // The tiles' coordinates are the tileset frame's, at no system's origin: their glbs name none.
     city.origin = Eigen::Vector3d::Zero();
+    city.reference_system.clear();
     const std::vector<int> nodes = object_nodes(city);
     Chain(object_model(city, nodes[0]), parameters, 1);  // bad parameters fail here, before any file
     const double error = switch_error(a);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <memory>
+#include <set>
+#include <string>
 
 namespace boxlod {
 namespace {
@@ -45,12 +47,19 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     if (!system || proj_get_type(system.get()) != PJ_TYPE_PROJECTED_CRS)
         fail("not a projected system (x east, y north in metres)");
     const Object axes(proj_crs_get_coordinate_system(context.get(), system.get()));
-    for (int axis = 0; axes && axis < proj_cs_get_axis_count(context.get(), axes.get()); ++axis) {
+    const int axis_count = axes ? proj_cs_get_axis_count(context.get(), axes.get()) : -1;
+    if (axis_count < 2) fail("PROJ gives no axes for it");
+    std::set<std::string> directions;
+    for (int axis = 0; axis < axis_count; ++axis) {
+        const char* direction = nullptr;
         double metres_per_unit = 0;
-        proj_cs_get_axis_info(context.get(), axes.get(), axis, nullptr, nullptr, nullptr, &metres_per_unit,
+        proj_cs_get_axis_info(context.get(), axes.get(), axis, nullptr, nullptr, &direction, &metres_per_unit,
                               nullptr, nullptr, nullptr);
         if (metres_per_unit != 1) fail("its units are not metres");
+        if (direction) directions.insert(direction);
     }
+    // normalize_for_visualization below orders the axes, but does not turn a southing or westing.
+    if (!directions.count("east") || !directions.count("north")) fail("its axes do not point east and north");
     const Object wgs84(proj_create(context.get(), "EPSG:4326"));
     Object raw(
         wgs84 ? proj_create_crs_to_crs_from_pj(context.get(), system.get(), wgs84.get(), nullptr, nullptr)

@@ -43,7 +43,8 @@ TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
     EXPECT_NE(error.find("--latitude"), std::string::npos) << error;
     EXPECT_NE(test::input_error_of([] { place_on_earth("not a system", {0, 0, 0}, "a.city.json"); }), "");
     // The model's coordinates are metres east and north: degrees, geocentric metres and feet are refused.
-    for (const char* other : {"EPSG:4326", "EPSG:4978", "EPSG:2263"})
+    // ... and so are grids whose axes point south and west (Krovak, EPSG 2065).
+    for (const char* other : {"EPSG:4326", "EPSG:4978", "EPSG:2263", "EPSG:2065"})
         EXPECT_NE(test::input_error_of([&] {
                       place_on_earth(other, {1, 1, 0}, "a.city.json");
                   }).find(std::string("reference system '") + other + "'"),

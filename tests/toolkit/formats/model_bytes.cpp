@@ -10,6 +10,7 @@ namespace {
 Model every_field() {
     Model model;
     model.source = "house.ifc";
+    model.reference_system = "EPSG:7415";
     model.is_lod = true;
     model.lod_params = {{"level", "2"}, {"mode", ""}};
     Material brick{"brick"};
@@ -49,6 +50,7 @@ TEST(ModelBytes, EveryFieldComesBack) {
     const Model back = model_from_bytes(bytes);
     EXPECT_EQ(model_bytes(back), bytes);
     EXPECT_EQ(back.source, "house.ifc");
+    EXPECT_EQ(back.reference_system, "EPSG:7415");
     EXPECT_TRUE(back.is_lod);
     EXPECT_EQ(back.lod_params, model.lod_params);
     EXPECT_EQ(back.materials, model.materials);
