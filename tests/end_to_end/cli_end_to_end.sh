@@ -272,6 +272,10 @@ root = tree['scenes'][tree.get('scene', 0)]['nodes'][0]
 tree['nodes'][root]['mesh'] = 0  # the box on the root too, beside its child's (the matrix turns it)
 json.dump(tree, open(f'{work}/root_and_child.gltf', 'w'))
 PY
+# Placed by default at KIT; by a reference system the user names, where PROJ puts its origin
+# (RD New's (0, 0), south-west of the Netherlands: 47.97 N, 3.31 E).
+check "tiles places a model without a system at KIT" bash -c "'$boxlod' tiles '$work/city2.glb' -o '$work/tiles_kit' --resolution 64 | grep -qx 'placed_by = default'"
+check "tiles places a model by the reference system given" bash -c "'$boxlod' tiles '$work/city2.glb' -o '$work/tiles_rd' --resolution 64 --reference-system EPSG:28992 > '$work/tiles_rd.txt' && grep -q '^placed_by = EPSG:28992 (PROJ: ' '$work/tiles_rd.txt' && grep -q '^latitude = 47\.97' '$work/tiles_rd.txt' && grep -q '^longitude = 3\.3' '$work/tiles_rd.txt'"
 check "tiles of a model all on its root: one object" bash -c "'$boxlod' tiles /usr/share/assimp/models/OBJ/box.obj -o '$work/tiles_box' --resolution 64 | grep -qx 'objects = 1' && test -s '$work/tiles_box/object_0_L0.glb'"
 check "tiles of geometry on the root and below: the root's own one object more" bash -c "'$boxlod' tiles '$work/root_and_child.gltf' -o '$work/tiles_root' --resolution 64 | grep -qx 'objects = 2' && test -s '$work/tiles_root/object_1_L0.glb'"
 check "city with several details runs each over one build" test "$(status_of "$boxlod" city --buildings 2 --strategy texel --frames 2 --width 64 --height 48 --detail 0.5,2 -o "$work/city_details")" = 0

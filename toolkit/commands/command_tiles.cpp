@@ -62,6 +62,40 @@ bool is_tileset_file(const std::string& name) {
     return name == "tileset.json" || std::regex_match(name, tile);
 }
 
+// Where the tileset lies on the Earth, and by what ("default", "options", or the reference system).
+struct Placement {
+    Geodetic at;
+    std::string by = "default";
+};
+
+void check_placement_options(const Arguments& a) {
+    if (a.has("latitude") != a.has("longitude"))
+        throw InputError(
+            "--latitude and --longitude: give both or neither (the model's reference system, "
+            "else KIT, Karlsruhe, places it)");
+    if (a.has("latitude") && a.has("reference-system"))
+        throw InputError(
+            "--reference-system: the model is placed by --latitude and --longitude; give one or the other");
+}
+
+// The options' place, else the reference system's (--reference-system, else the file's) through PROJ,
+// else KIT's; --height sets the height whatever places the rest (e.g. a file's NAP heights).
+Placement tileset_placement(const Arguments& a, const std::string& file_system,
+                            const Eigen::Vector3d& source_origin, const std::string& model) {
+    Placement placement;
+    if (a.has("latitude")) {
+        placement = {{a.number("latitude"), a.number("longitude"), 0}, "options"};
+    } else if (const std::string system =
+                   a.has("reference-system") ? a.text("reference-system") : file_system;
+               !system.empty()) {
+        const MapPlacement placed =
+            place_on_earth(system, source_origin, a.has("reference-system") ? "--reference-system" : model);
+        placement = {placed.at, system + " (PROJ: " + placed.operation + ")"};
+    }
+    if (a.has("height")) placement.at.height = a.number("height");
+    return placement;
+}
+
 int run_tiles(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
@@ -69,25 +103,13 @@ int run_tiles(const Arguments& a) {
         throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
-    if (a.has("latitude") != a.has("longitude"))
-        throw InputError(
-            "--latitude and --longitude: give both or neither (the model's reference system, "
-            "else KIT, Karlsruhe, places it)");
+    check_placement_options(a);
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
     const Eigen::Vector3d source_origin(city.origin.x(), -city.origin.z(),
                                         city.origin.y());  // y up to the file's z up
-    Geodetic origin;
-    std::string placed_by = "default";
-    if (a.has("latitude")) {
-        origin = {a.number("latitude"), a.number("longitude"), 0};
-        placed_by = "options";
-    } else if (!city.reference_system.empty()) {
-        const MapPlacement placed = place_on_earth(city.reference_system, source_origin, parameters.model);
-        origin = placed.at;
-        placed_by = city.reference_system + " (PROJ: " + placed.operation + ")";
-    }
-    if (a.has("height")) origin.height = a.number("height");  // e.g. a file's NAP heights to the ellipsoid
+    const Placement placement = tileset_placement(a, city.reference_system, source_origin, parameters.model);
+    const Geodetic& origin = placement.at;
     // The tiles' coordinates are the tileset frame's, at no system's origin: their glbs name none.
     city.origin = Eigen::Vector3d::Zero();
     city.reference_system.clear();
@@ -114,7 +136,7 @@ int run_tiles(const Arguments& a) {
     std::printf("latitude = %s\nlongitude = %s\nheight = %s\nheading = %s\nplaced_by = %s\n",
                 format_number(origin.latitude_degrees).c_str(),
                 format_number(origin.longitude_degrees).c_str(), format_number(origin.height).c_str(),
-                format_number(origin.heading_degrees).c_str(), placed_by.c_str());
+                format_number(origin.heading_degrees).c_str(), placement.by.c_str());
     return 0;
 }
 
@@ -138,6 +160,13 @@ Subcommand tiles_subcommand() {
               latitude_range, format_number(Geodetic{}.latitude_degrees)},
              {"longitude", "DEG", "its longitude", longitude_range,
               format_number(Geodetic{}.longitude_degrees)},
+             {"reference-system",
+              "CRS",
+              "the model's coordinate reference system as PROJ names it (EPSG:7415), for a city file that "
+              "names "
+              "none or another: where its coordinates lie on the Earth",
+              {},
+              ""},
              {"height", "M", "its height above the ellipsoid (by default a city file's own, else 0)",
               height_range, format_number(Geodetic{}.height)},
              keep_hierarchy_option(),
