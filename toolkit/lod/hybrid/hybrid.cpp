@@ -147,8 +147,9 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
         const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
-        std::vector<double> shares(finer ? large_simplified_shares.begin() : simplified_shares.begin(),
-                                   finer ? large_simplified_shares.end() : simplified_shares.end());
+        const std::span<const double> listed = finer ? std::span<const double>(large_simplified_shares)
+                                                     : std::span<const double>(simplified_shares);
+        std::vector<double> shares(listed.begin(), listed.end());
         const std::size_t common = shares.size();
         if (n == 0)  // the loop below stops at fewest_simplified_triangles
             for (int k = 0; k < most_whole_model_halvings; ++k) shares.push_back(shares.back() / 2);
