@@ -162,9 +162,8 @@ Subcommand tiles_subcommand() {
               format_number(Geodetic{}.longitude_degrees)},
              {"reference-system",
               "CRS",
-              "the model's coordinate reference system as PROJ names it (EPSG:7415), for a city file that "
-              "names "
-              "none or another: where its coordinates lie on the Earth",
+              "the model's coordinate reference system as PROJ names it (EPSG:7415), for a city file "
+              "that names none or another: where its coordinates lie on the Earth",
               {},
               ""},
              {"height", "M", "its height above the ellipsoid (by default a city file's own, else 0)",
