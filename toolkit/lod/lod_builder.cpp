@@ -370,9 +370,10 @@ Lod shrink_to_budget(LodSession& session, Lod lod, int threads) {
 // level fitting its budget spends less than 95 % of it, ask for one within a
 // larger estimate, in proportion to the shortfall, or halfway to the least
 // estimate whose level spent too much; keep a level that fits and has a lower
-// estimated error. At most 4 more builds.
+// estimated error. Where a larger estimate gives the same level (the pruned
+// cuts of hybrid.h jump), ask for more again. At most 4 more builds, 8 asks.
 Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
-    constexpr int most_builds = 4;
+    constexpr int most_builds = 4, most_asks = 8;
     constexpr double full = 0.95;
     const int c = lod.current_level;
     const double budget = level_budget(session, c);
@@ -382,11 +383,16 @@ Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
     double estimate = estimated_bytes(session, level),
            spent = spent_bytes(lod);  // of the last level built that fit
     double asked = budget, too_much = std::numeric_limits<double>::infinity();  // estimates asked for
-    for (int build = 0; build < most_builds && spent < full * budget; ++build) {
-        const double ask = std::isinf(too_much) ? estimate * budget / spent : (asked + too_much) / 2;
+    for (int build = 0, asks = 0; build < most_builds && asks < most_asks && spent < full * budget; ++asks) {
+        double ask = std::isinf(too_much) ? estimate * budget / spent : (asked + too_much) / 2;
+        if (std::isinf(too_much) && !(ask > asked)) ask = asked * budget / spent;
         if (!(ask > asked)) break;
         set_level_within(session, c, ask);
-        if (estimated_bytes(session, level) == estimate) break;  // no other level up to there
+        if (estimated_bytes(session, level) == estimate) {  // no other level up to there
+            asked = ask;
+            continue;
+        }
+        ++build;
         Lod grown = build_cut(session, c, level_cut(session, c), threads);
         if (spent_bytes(grown) > budget) {
             too_much = ask;

@@ -472,6 +472,16 @@ HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, doub
     std::vector<double> bytes, error;
     order_within(model, plan.proxies, budget, steps, bytes, error);
     const std::size_t best = best_prefix_within(bytes, error, budget);
+    // The greedy order can stall behind an opening that gains nothing until
+    // its children change: also from the pruned cut within the budget, keeping
+    // the lower error (docs/design.md: The hybrid level mode).
+    const std::vector<int> start = pruned_state_within(model, plan.proxies, budget);
+    std::vector<HybridStep> pruned_steps;
+    std::vector<double> pruned_bytes, pruned_error;
+    order_within(model, plan.proxies, budget, pruned_steps, pruned_bytes, pruned_error, &start);
+    if (const std::size_t pruned = best_prefix_within(pruned_bytes, pruned_error, budget);
+        pruned_error[pruned] < error[best])
+        return {state_after(plan, pruned_steps, pruned), pruned_bytes[pruned], pruned_error[pruned]};
     return {state_after(plan, steps, best), bytes[best], error[best]};
 }
 

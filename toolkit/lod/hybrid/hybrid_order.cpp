@@ -4,6 +4,7 @@
 #include "toolkit/lod/hybrid/paid_textures.h"
 #include "toolkit/model/vertex_layout.h"
 
+#include <cmath>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -45,11 +46,23 @@ public:
         }
     }
 
-    void run(std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
+    // From `start` (each node in it reached from the root down), if given, then greedily.
+    void run(const std::vector<int>* start, std::vector<HybridStep>& steps, std::vector<double>& bytes,
+             std::vector<double>& error) {
         bytes.push_back(drawn_bytes(0) + drawn_.apply({}, {&drawn_textures(0)}));
         error.push_back(drawn_error(0));
         if (state_[0] < 0) return;  // the root has no proxy: only the original
-        consider(0, budget_ - bytes.back());
+        if (start) reach(*start, steps, bytes, error);
+        for (std::vector<int> stack{0}; !stack.empty();) {  // the parts drawn now, each its best change
+            const int n = stack.back();
+            stack.pop_back();
+            if (state_[std::size_t(n)] >= 0) {
+                consider(n, budget_ - bytes.back());
+                continue;
+            }
+            if (!proxies_[std::size_t(n)].empty())
+                for (int child : model_.nodes[std::size_t(n)].children) stack.push_back(child);
+        }
         while (!frontier_.empty()) {
             const Move move = std::get<3>(*frontier_.begin());
             frontier_.erase(frontier_.begin());
@@ -58,11 +71,7 @@ public:
                 consider(move.node, budget_ - bytes.back());  // its best now, that fits, if any
                 continue;
             }
-            steps.push_back({move.node, move.proxy});
-            bytes.push_back(bytes.back() + move.cost);
-            error.push_back(error.back() - move.gain);
-            drawn_.apply(drawn_textures(move.node), added_textures(move.node, move.proxy));
-            state_[std::size_t(move.node)] = move.proxy;
+            take(move, steps, bytes, error);
             if (move.proxy >= 0) {
                 consider(move.node, budget_ - bytes.back());
                 continue;
@@ -129,6 +138,29 @@ private:
         return move;
     }
 
+    void take(const Move& move, std::vector<HybridStep>& steps, std::vector<double>& bytes,
+              std::vector<double>& error) {
+        steps.push_back({move.node, move.proxy});
+        bytes.push_back(bytes.back() + move.cost);
+        error.push_back(error.back() - move.gain);
+        drawn_.apply(drawn_textures(move.node), added_textures(move.node, move.proxy));
+        state_[std::size_t(move.node)] = move.proxy;
+    }
+
+    // The steps from the root's cheapest proxy to `target`, parents before their children.
+    void reach(const std::vector<int>& target, std::vector<HybridStep>& steps, std::vector<double>& bytes,
+               std::vector<double>& error) {
+        for (std::vector<int> stack{0}; !stack.empty();) {
+            const int n = stack.back();
+            stack.pop_back();
+            const int wanted = target[std::size_t(n)];
+            if (proxies_[std::size_t(n)].empty() || wanted == state_[std::size_t(n)]) continue;
+            take(weigh(n, wanted), steps, bytes, error);
+            if (wanted < 0)
+                for (int child : model_.nodes[std::size_t(n)].children) stack.push_back(child);
+        }
+    }
+
     static Key key(const Move& m) {
         if (m.gain >= 0 && m.cost <= 0) return {0, -m.gain, m.node, m};
         if (m.gain > 0) return {1, -m.gain / m.cost, m.node, m};
@@ -163,8 +195,103 @@ private:
 }  // namespace
 
 void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
-                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error) {
-    Planner(model, proxies, budget).run(steps, bytes, error);
+                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error,
+                  const std::vector<int>* start) {
+    Planner(model, proxies, budget).run(start, steps, bytes, error);
+}
+
+namespace {
+
+// lambda's 18 decades to a hundred-millionth of one
+constexpr int pruning_bisections = 32;
+
+// Each node's choices priced alone: its proxies' bytes with the textures each
+// samples, and (opened) its own geometry's and textures, or (without proxies)
+// its whole sub-tree's; children after their parents in `order`.
+struct PruningCosts {
+    std::vector<std::vector<double>> proxy_bytes;
+    std::vector<double> open_bytes, whole_bytes;
+    std::vector<int> order;
+};
+
+PruningCosts pruning_costs(const Model& model, const std::vector<std::vector<Proxy>>& proxies) {
+    const PaidTextures paid = paid_textures(model);
+    const std::vector<std::vector<int>> own = node_textures(model, paid),
+                                        whole = subtree_textures(model, paid);
+    const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
+    PruningCosts costs;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        costs.proxy_bytes.emplace_back();
+        for (const Proxy& proxy : proxies[n])
+            costs.proxy_bytes.back().push_back(proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy)));
+        costs.open_bytes.push_back(double(mesh_bytes(model.nodes[n].primitives, model)) +
+                                   bytes_of(paid, own[n]));
+        costs.whole_bytes.push_back(double(subtree[n]) + bytes_of(paid, whole[n]));
+    }
+    for (std::vector<int> stack{0}; !stack.empty();) {
+        const int n = stack.back();
+        stack.pop_back();
+        costs.order.push_back(n);
+        for (int child : model.nodes[std::size_t(n)].children) stack.push_back(child);
+    }
+    return costs;
+}
+
+// The state minimizing error + lambda x bytes, and its bytes as priced alone.
+std::pair<std::vector<int>, double> pruned_state(const std::vector<std::vector<Proxy>>& proxies,
+                                                 const Model& model, const PruningCosts& costs,
+                                                 double lambda) {
+    const std::size_t count = model.nodes.size();
+    std::vector<double> value(count), bytes(count);
+    std::vector<int> choice(count, -1);
+    for (auto it = costs.order.rbegin(); it != costs.order.rend(); ++it) {  // children first
+        const auto n = std::size_t(*it);
+        if (proxies[n].empty()) {  // drawn whole where reached
+            bytes[n] = costs.whole_bytes[n];
+            value[n] = lambda * bytes[n];
+            continue;
+        }
+        bytes[n] = costs.open_bytes[n];
+        for (int child : model.nodes[n].children) bytes[n] += bytes[std::size_t(child)];
+        value[n] = lambda * costs.open_bytes[n];
+        for (int child : model.nodes[n].children) value[n] += value[std::size_t(child)];
+        for (std::size_t p = 0; p < proxies[n].size(); ++p) {
+            const double v = proxies[n][p].error + lambda * costs.proxy_bytes[n][p];
+            if (v < value[n]) {
+                value[n] = v;
+                bytes[n] = costs.proxy_bytes[n][p];
+                choice[n] = int(p);
+            }
+        }
+    }
+    std::vector<int> state(count, -1);
+    for (std::size_t n = 0; n < count; ++n)
+        if (!proxies[n].empty()) state[n] = 0;
+    for (std::vector<int> stack{0}; !stack.empty();) {
+        const auto n = std::size_t(stack.back());
+        stack.pop_back();
+        if (proxies[n].empty()) continue;
+        state[n] = choice[n];
+        if (choice[n] < 0)
+            for (int child : model.nodes[n].children) stack.push_back(child);
+    }
+    return {state, bytes[0]};
+}
+
+}  // namespace
+
+std::vector<int> pruned_state_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
+                                     double budget) {
+    const PruningCosts costs = pruning_costs(model, proxies);
+    // The least lambda whose cut fits, by bisection of its logarithm (a cut's
+    // bytes fall as lambda grows): at 1e6 bytes per pixel of error no change
+    // pays, at 1e-12 every one does.
+    double low = 1e-12, high = 1e6;
+    for (int k = 0; k < pruning_bisections; ++k) {
+        const double lambda = std::sqrt(low * high);
+        (pruned_state(proxies, model, costs, lambda).second <= budget ? high : low) = lambda;
+    }
+    return pruned_state(proxies, model, costs, high).first;
 }
 
 }  // namespace boxlod

@@ -18,8 +18,19 @@ std::vector<int> proxy_textures(const PaidTextures& paid, const Proxy& proxy);
 
 // The steps taken within `budget` bytes (infinity: to the original), and the
 // bytes and error before any step and after each; deterministic, ties to the
-// lower node index.
+// lower node index. From `start` where given: its steps first (parents before
+// their children), then on greedily.
 void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
-                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error);
+                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error,
+                  const std::vector<int>* start = nullptr);
+
+// The cut within `budget` that minimizes error + lambda x bytes for the least
+// lambda whose cut fits, each part's bytes priced with the textures it samples
+// alone: the optimal pruning of a tree by a Lagrange multiplier (Chou,
+// Lookabaugh and Gray 1989, generalized BFOS), a point of the lower convex
+// hull of error against bytes that the greedy order can miss where an opening
+// gains nothing until its children change. Per node: its proxy, -1 opened.
+std::vector<int> pruned_state_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
+                                     double budget);
 
 }  // namespace boxlod

@@ -429,8 +429,9 @@ TEST(Hybrid, LevelsByByteBudgetNeverExceedThem) {
 // drawn flat, from one swatch, they cost far less than the pages their
 // estimates count. A level that spends less than 95 % of its budget asks for
 // one within a larger estimate and keeps it if it fits and errs less
-// (lod_builder.cpp: grow_to_budget): without, levels 2 and 3 stopped where
-// their estimates did, at 4.8 and 9.8 times the error.
+// (lod_builder.cpp: grow_to_budget): without, levels 2, 3 and 4 stopped where
+// their estimates did, at 3.2, 2.5 and 6.7 times the error; level 4's larger
+// estimates gave the same pruned cut twice before a larger one that fits.
 TEST(Hybrid, ALevelTheEstimatesUnderspendGrowsIntoItsBudget) {
     Model model;
     model.source = "flat-facades";
@@ -451,8 +452,8 @@ TEST(Hybrid, ALevelTheEstimatesUnderspendGrowsIntoItsBudget) {
         const Lod lod = build_lod(*session, c, 2);
         EXPECT_LE(double(combined_cost({&lod.cost}).bytes()), budget) << "level " << c;
         EXPECT_LE(lod.measured_error, within_estimate.error) << "level " << c;
-        if (c == 2 || c == 3) {
-            EXPECT_LT(lod.measured_error * 4, within_estimate.error) << "level " << c;
+        if (c >= 2) {
+            EXPECT_LT(lod.measured_error * 2, within_estimate.error) << "level " << c;
         }
         const Cut kept =
             hybrid_cut(model, *session->derived.hybrid, session->cache.hybrid_levels[std::size_t(c)].state);
