@@ -370,8 +370,11 @@ Lod shrink_to_budget(LodSession& session, Lod lod, int threads) {
 // level fitting its budget spends less than 95 % of it, ask for one within a
 // larger estimate, in proportion to the shortfall, or halfway to the least
 // estimate whose level spent too much; keep a level that fits and has a lower
-// estimated error. Where a larger estimate gives the same level (the pruned
-// cuts of hybrid.h jump), ask for more again. At most 4 more builds, 8 asks.
+// estimated error. Where that ask is no more than the last (the level's
+// estimate was no dearer than what it spent, or a larger estimate gave the
+// same level, as hybrid's pruned cuts jump: hybrid_order.h), ask for
+// budget / spent times the last; an ask that gives the level that spent too
+// much is too much, unbuilt. At most 4 more builds and 8 asks.
 Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
     constexpr int most_builds = 4, most_asks = 8;
     constexpr double full = 0.95;
@@ -383,19 +386,26 @@ Lod grow_to_budget(LodSession& session, Lod lod, int threads) {
     double estimate = estimated_bytes(session, level),
            spent = spent_bytes(lod);  // of the last level built that fit
     double asked = budget, too_much = std::numeric_limits<double>::infinity();  // estimates asked for
+    double too_much_estimate = -1;  // of the level that spent too much
     for (int build = 0, asks = 0; build < most_builds && asks < most_asks && spent < full * budget; ++asks) {
         double ask = std::isinf(too_much) ? estimate * budget / spent : (asked + too_much) / 2;
         if (std::isinf(too_much) && !(ask > asked)) ask = asked * budget / spent;
         if (!(ask > asked)) break;
         set_level_within(session, c, ask);
-        if (estimated_bytes(session, level) == estimate) {  // no other level up to there
+        const double now = estimated_bytes(session, level);
+        if (now == estimate) {  // no other level up to there
             asked = ask;
+            continue;
+        }
+        if (now == too_much_estimate) {  // the level that spent too much
+            too_much = ask;
             continue;
         }
         ++build;
         Lod grown = build_cut(session, c, level_cut(session, c), threads);
         if (spent_bytes(grown) > budget) {
             too_much = ask;
+            too_much_estimate = now;
             continue;
         }
         asked = ask;

@@ -106,10 +106,12 @@ std::size_t longest_prefix_within(const std::vector<double>& bytes, double budge
 
 std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error,
                                double budget) {
-    // Not the longest prefix: an opening that gains nothing yet can raise the error for a while.
+    // Not the longest prefix: an opening that gains nothing yet can raise the
+    // error for a while. Where the start is over the budget, any prefix within it beats it.
+    auto fits = [&](std::size_t k) { return bytes[k] <= budget * (1 + 1e-12); };
     std::size_t steps = 0;
     for (std::size_t k = 1; k < bytes.size(); ++k)
-        if (bytes[k] <= budget * (1 + 1e-12) && error[k] < error[steps]) steps = k;
+        if (fits(k) && (error[k] < error[steps] || !fits(steps))) steps = k;
     return steps;
 }
 

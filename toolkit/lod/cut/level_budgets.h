@@ -30,7 +30,8 @@ double budget_bytes(const ByteBudget& budget, double original_bytes);
 std::vector<double> geometric_budgets(double start_bytes, double original_bytes, int levels);
 
 // Prefixes of an order of cuts (bytes[k], error[k] after k steps) within a budget:
-// the longest, or the one of lowest error (the shortest of equal error); 0 when none fits.
+// the longest, or the one of lowest error (the shortest of equal error, and any
+// within the budget before a start beyond it); 0 when none fits.
 std::size_t longest_prefix_within(const std::vector<double>& bytes, double budget);
 std::size_t best_prefix_within(const std::vector<double>& bytes, const std::vector<double>& error,
                                double budget);

@@ -456,11 +456,12 @@ HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
 }
 
 void order_hybrid_plan(const Model& model, HybridPlan& plan) {
+    plan.prices = plan_prices(model, plan.proxies);
     plan.steps.clear();
     plan.bytes.clear();
     plan.error.clear();
-    order_within(model, plan.proxies, std::numeric_limits<double>::infinity(), plan.steps, plan.bytes,
-                 plan.error);
+    order_within(model, plan.proxies, plan.prices, std::numeric_limits<double>::infinity(), plan.steps,
+                 plan.bytes, plan.error);
 }
 
 std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) {
@@ -468,21 +469,20 @@ std::vector<int> hybrid_state(const HybridPlan& plan, std::size_t steps) {
 }
 
 HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget) {
-    std::vector<HybridStep> steps;
-    std::vector<double> bytes, error;
-    order_within(model, plan.proxies, budget, steps, bytes, error);
-    const std::size_t best = best_prefix_within(bytes, error, budget);
+    auto replay = [&](const std::vector<int>* start) {
+        std::vector<HybridStep> steps;
+        std::vector<double> bytes, error;
+        order_within(model, plan.proxies, plan.prices, budget, steps, bytes, error, start);
+        const std::size_t best = best_prefix_within(bytes, error, budget);
+        return HybridLevel{state_after(plan, steps, best), bytes[best], error[best]};
+    };
     // The greedy order can stall behind an opening that gains nothing until
     // its children change: also from the pruned cut within the budget, keeping
     // the lower error (docs/design.md: The hybrid level mode).
-    const std::vector<int> start = pruned_state_within(model, plan.proxies, budget);
-    std::vector<HybridStep> pruned_steps;
-    std::vector<double> pruned_bytes, pruned_error;
-    order_within(model, plan.proxies, budget, pruned_steps, pruned_bytes, pruned_error, &start);
-    if (const std::size_t pruned = best_prefix_within(pruned_bytes, pruned_error, budget);
-        pruned_error[pruned] < error[best])
-        return {state_after(plan, pruned_steps, pruned), pruned_bytes[pruned], pruned_error[pruned]};
-    return {state_after(plan, steps, best), bytes[best], error[best]};
+    HybridLevel greedy = replay(nullptr);
+    const std::vector<int> start = pruned_state_within(model, plan.proxies, plan.prices, budget);
+    HybridLevel pruned = replay(&start);
+    return pruned.error < greedy.error ? std::move(pruned) : std::move(greedy);
 }
 
 Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state) {

@@ -20,6 +20,7 @@
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/cut/level_modes.h"
+#include "toolkit/lod/hybrid/hybrid_order.h"
 #include "toolkit/lod/hybrid/hybrid_proxy.h"
 #include "toolkit/lod/pages/texture_sizing.h"
 #include "toolkit/model/model.h"
@@ -37,6 +38,7 @@ struct HybridPlan {
     // sub-tree is drawn as it is wherever it is reached (no geometry, or
     // geometry cheaper than any proxy).
     std::vector<std::vector<Proxy>> proxies;
+    PlanPrices prices;              // what the order prices changes with (order_hybrid_plan makes them)
     std::vector<HybridStep> steps;  // from the root at its cheapest proxy to the original
     std::vector<double> bytes,
         error;  // after k steps: bytes (meshes, box estimates, each texture once) and the summed proxy errors
@@ -65,8 +67,8 @@ struct HybridSettings {
 HybridPlan plan_hybrid(const Model& model, const DecodedTextures& textures,
                        const std::vector<std::optional<OrientedBox>>& boxes, const HybridSettings& settings);
 
-// The plan's steps, bytes and errors from its proxies (plan_hybrid's second
-// half): deterministic, ties to the lower node index.
+// The plan's prices, steps, bytes and errors from its proxies (plan_hybrid's
+// second half): deterministic, ties to the lower node index.
 void order_hybrid_plan(const Model& model, HybridPlan& plan);
 
 // Per node, after `steps` steps of the plan: the proxy it is drawn by (an index

@@ -1,7 +1,6 @@
 #include "toolkit/lod/hybrid/hybrid_order.h"
 
 #include "toolkit/lod/cut/kept_subtrees.h"
-#include "toolkit/lod/hybrid/paid_textures.h"
 #include "toolkit/model/vertex_layout.h"
 
 #include <cmath>
@@ -25,25 +24,16 @@ namespace {
 // a queued change whose bytes went stale is weighed again when it comes up.
 class Planner {
 public:
-    Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget)
+    Planner(const Model& model, const std::vector<std::vector<Proxy>>& proxies, const PlanPrices& prices,
+            double budget)
         : model_(model),
           proxies_(proxies),
+          prices_(prices),
           budget_(budget),
           state_(model.nodes.size(), -1),
-          paid_(paid_textures(model)),
-          drawn_(paid_) {
-        subtree_bytes_.assign(model.nodes.size(), 0);
-        own_bytes_.assign(model.nodes.size(), 0);
-        own_textures_ = node_textures(model, paid_);
-        subtree_textures_ = subtree_textures(model, paid_);
-        proxy_textures_.resize(model.nodes.size());
-        const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
-        for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-            subtree_bytes_[n] = double(subtree[n]);
-            own_bytes_[n] = double(mesh_bytes(model.nodes[n].primitives, model));
-            for (const Proxy& proxy : proxies[n]) proxy_textures_[n].push_back(proxy_textures(paid_, proxy));
+          drawn_(prices.paid) {
+        for (std::size_t n = 0; n < model.nodes.size(); ++n)
             if (!proxies[n].empty()) state_[n] = 0;  // the cheapest, until changed
-        }
     }
 
     // From `start` (each node in it reached from the root down), if given, then greedily.
@@ -100,11 +90,13 @@ private:
     // Mesh bytes, textures and error of node n's sub-tree as drawn when n is reached in its current state.
     double drawn_bytes(int n) const {
         const int s = state_[std::size_t(n)];
-        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes : subtree_bytes_[std::size_t(n)];
+        return s >= 0 ? proxies_[std::size_t(n)][std::size_t(s)].bytes
+                      : prices_.subtree_bytes[std::size_t(n)];
     }
     const std::vector<int>& drawn_textures(int n) const {
         const int s = state_[std::size_t(n)];
-        return s >= 0 ? proxy_textures_[std::size_t(n)][std::size_t(s)] : subtree_textures_[std::size_t(n)];
+        return s >= 0 ? prices_.proxy_textures[std::size_t(n)][std::size_t(s)]
+                      : prices_.subtree_textures[std::size_t(n)];
     }
     double drawn_error(int n) const {
         const int s = state_[std::size_t(n)];
@@ -113,8 +105,8 @@ private:
 
     // The textures of what node n draws after changing to `proxy` (-1: opened).
     std::vector<const std::vector<int>*> added_textures(int n, int proxy) const {
-        if (proxy >= 0) return {&proxy_textures_[std::size_t(n)][std::size_t(proxy)]};
-        std::vector<const std::vector<int>*> added{&own_textures_[std::size_t(n)]};
+        if (proxy >= 0) return {&prices_.proxy_textures[std::size_t(n)][std::size_t(proxy)]};
+        std::vector<const std::vector<int>*> added{&prices_.own_textures[std::size_t(n)]};
         for (int child : model_.nodes[std::size_t(n)].children) added.push_back(&drawn_textures(child));
         return added;
     }
@@ -128,7 +120,7 @@ private:
             move.gain -= proxies_[std::size_t(n)][std::size_t(proxy)].error;
             move.cost += proxies_[std::size_t(n)][std::size_t(proxy)].bytes;
         } else {
-            move.cost += own_bytes_[std::size_t(n)];
+            move.cost += prices_.own_bytes[std::size_t(n)];
             for (int child : model_.nodes[std::size_t(n)].children) {
                 move.gain -= drawn_error(child);
                 move.cost += drawn_bytes(child);
@@ -182,22 +174,34 @@ private:
 
     const Model& model_;
     const std::vector<std::vector<Proxy>>& proxies_;
+    const PlanPrices& prices_;
     double budget_;
     std::vector<int> state_;
-    std::vector<double> subtree_bytes_, own_bytes_;
-    PaidTextures paid_;
     DrawnTextures drawn_;
-    std::vector<std::vector<int>> own_textures_, subtree_textures_;
-    std::vector<std::vector<std::vector<int>>> proxy_textures_;  // per node and proxy
     std::set<Key, KeyOrder> frontier_;
 };
 
 }  // namespace
 
-void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
-                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error,
-                  const std::vector<int>* start) {
-    Planner(model, proxies, budget).run(start, steps, bytes, error);
+PlanPrices plan_prices(const Model& model, const std::vector<std::vector<Proxy>>& proxies) {
+    PlanPrices prices{paid_textures(model), {}, {}, {}, {}, {}};
+    prices.own_textures = node_textures(model, prices.paid);
+    prices.subtree_textures = subtree_textures(model, prices.paid);
+    const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        prices.subtree_bytes.push_back(double(subtree[n]));
+        prices.own_bytes.push_back(double(mesh_bytes(model.nodes[n].primitives, model)));
+        prices.proxy_textures.emplace_back();
+        for (const Proxy& proxy : proxies[n])
+            prices.proxy_textures.back().push_back(proxy_textures(prices.paid, proxy));
+    }
+    return prices;
+}
+
+void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
+                  const PlanPrices& prices, double budget, std::vector<HybridStep>& steps,
+                  std::vector<double>& bytes, std::vector<double>& error, const std::vector<int>* start) {
+    Planner(model, proxies, prices, budget).run(start, steps, bytes, error);
 }
 
 namespace {
@@ -205,61 +209,32 @@ namespace {
 // lambda's 18 decades to a hundred-millionth of one
 constexpr int pruning_bisections = 32;
 
-// Each node's choices priced alone: its proxies' bytes with the textures each
-// samples, and (opened) its own geometry's and textures, or (without proxies)
-// its whole sub-tree's; children after their parents in `order`.
-struct PruningCosts {
-    std::vector<std::vector<double>> proxy_bytes;
-    std::vector<double> open_bytes, whole_bytes;
-    std::vector<int> order;
-};
-
-PruningCosts pruning_costs(const Model& model, const std::vector<std::vector<Proxy>>& proxies) {
-    const PaidTextures paid = paid_textures(model);
-    const std::vector<std::vector<int>> own = node_textures(model, paid),
-                                        whole = subtree_textures(model, paid);
-    const std::vector<std::uint64_t> subtree = subtree_mesh_bytes(model);
-    PruningCosts costs;
-    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        costs.proxy_bytes.emplace_back();
-        for (const Proxy& proxy : proxies[n])
-            costs.proxy_bytes.back().push_back(proxy.bytes + bytes_of(paid, proxy_textures(paid, proxy)));
-        costs.open_bytes.push_back(double(mesh_bytes(model.nodes[n].primitives, model)) +
-                                   bytes_of(paid, own[n]));
-        costs.whole_bytes.push_back(double(subtree[n]) + bytes_of(paid, whole[n]));
-    }
-    for (std::vector<int> stack{0}; !stack.empty();) {
-        const int n = stack.back();
-        stack.pop_back();
-        costs.order.push_back(n);
-        for (int child : model.nodes[std::size_t(n)].children) stack.push_back(child);
-    }
-    return costs;
-}
-
-// The state minimizing error + lambda x bytes, and its bytes as priced alone.
-std::pair<std::vector<int>, double> pruned_state(const std::vector<std::vector<Proxy>>& proxies,
-                                                 const Model& model, const PruningCosts& costs,
-                                                 double lambda) {
+// The state minimizing error + lambda x bytes, each part priced with the
+// textures it samples alone, and its bytes so priced.
+std::pair<std::vector<int>, double> pruned_state(const Model& model,
+                                                 const std::vector<std::vector<Proxy>>& proxies,
+                                                 const PlanPrices& prices, double lambda) {
+    const PaidTextures& paid = prices.paid;
     const std::size_t count = model.nodes.size();
     std::vector<double> value(count), bytes(count);
     std::vector<int> choice(count, -1);
-    for (auto it = costs.order.rbegin(); it != costs.order.rend(); ++it) {  // children first
-        const auto n = std::size_t(*it);
-        if (proxies[n].empty()) {  // drawn whole where reached
-            bytes[n] = costs.whole_bytes[n];
+    for (std::size_t n = count; n-- > 0;) {  // children after their parents (model.h)
+        if (proxies[n].empty()) {            // drawn whole where reached
+            bytes[n] = prices.subtree_bytes[n] + bytes_of(paid, prices.subtree_textures[n]);
             value[n] = lambda * bytes[n];
             continue;
         }
-        bytes[n] = costs.open_bytes[n];
-        for (int child : model.nodes[n].children) bytes[n] += bytes[std::size_t(child)];
-        value[n] = lambda * costs.open_bytes[n];
-        for (int child : model.nodes[n].children) value[n] += value[std::size_t(child)];
+        bytes[n] = prices.own_bytes[n] + bytes_of(paid, prices.own_textures[n]);
+        value[n] = lambda * bytes[n];
+        for (int child : model.nodes[n].children) {
+            bytes[n] += bytes[std::size_t(child)];
+            value[n] += value[std::size_t(child)];
+        }
         for (std::size_t p = 0; p < proxies[n].size(); ++p) {
-            const double v = proxies[n][p].error + lambda * costs.proxy_bytes[n][p];
-            if (v < value[n]) {
+            const double alone = proxies[n][p].bytes + bytes_of(paid, prices.proxy_textures[n][p]);
+            if (const double v = proxies[n][p].error + lambda * alone; v < value[n]) {
                 value[n] = v;
-                bytes[n] = costs.proxy_bytes[n][p];
+                bytes[n] = alone;
                 choice[n] = int(p);
             }
         }
@@ -281,17 +256,17 @@ std::pair<std::vector<int>, double> pruned_state(const std::vector<std::vector<P
 }  // namespace
 
 std::vector<int> pruned_state_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
-                                     double budget) {
-    const PruningCosts costs = pruning_costs(model, proxies);
-    // The least lambda whose cut fits, by bisection of its logarithm (a cut's
-    // bytes fall as lambda grows): at 1e6 bytes per pixel of error no change
-    // pays, at 1e-12 every one does.
+                                     const PlanPrices& prices, double budget) {
+    // The least lambda (pixels of error per byte) whose cut fits, by bisection
+    // of its logarithm, as a cut's bytes fall while lambda grows: at 1e6 no
+    // change pays, at 1e-12 each that gains a thousandth of a pixel for a
+    // gigabyte does; the greedy order fills what the cut leaves of the budget.
     double low = 1e-12, high = 1e6;
     for (int k = 0; k < pruning_bisections; ++k) {
         const double lambda = std::sqrt(low * high);
-        (pruned_state(proxies, model, costs, lambda).second <= budget ? high : low) = lambda;
+        (pruned_state(model, proxies, prices, lambda).second <= budget ? high : low) = lambda;
     }
-    return pruned_state(proxies, model, costs, high).first;
+    return pruned_state(model, proxies, prices, high).first;
 }
 
 }  // namespace boxlod

@@ -16,12 +16,24 @@ namespace boxlod {
 // a baked proxy sample their level's pages, which their bytes count).
 std::vector<int> proxy_textures(const PaidTextures& paid, const Proxy& proxy);
 
+// What the order prices changes with, made once per plan: each distinct
+// texture's bytes; per node the textures its own geometry, its sub-tree and
+// each of its proxies sample, and the bytes of its own and its sub-tree's meshes.
+struct PlanPrices {
+    PaidTextures paid;
+    std::vector<std::vector<int>> own_textures, subtree_textures;
+    std::vector<std::vector<std::vector<int>>> proxy_textures;  // per node and proxy
+    std::vector<double> own_bytes, subtree_bytes;
+};
+PlanPrices plan_prices(const Model& model, const std::vector<std::vector<Proxy>>& proxies);
+
 // The steps taken within `budget` bytes (infinity: to the original), and the
 // bytes and error before any step and after each; deterministic, ties to the
 // lower node index. From `start` where given: its steps first (parents before
 // their children), then on greedily.
-void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies, double budget,
-                  std::vector<HybridStep>& steps, std::vector<double>& bytes, std::vector<double>& error,
+void order_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
+                  const PlanPrices& prices, double budget, std::vector<HybridStep>& steps,
+                  std::vector<double>& bytes, std::vector<double>& error,
                   const std::vector<int>* start = nullptr);
 
 // The cut within `budget` that minimizes error + lambda x bytes for the least
@@ -31,6 +43,6 @@ void order_within(const Model& model, const std::vector<std::vector<Proxy>>& pro
 // hull of error against bytes that the greedy order can miss where an opening
 // gains nothing until its children change. Per node: its proxy, -1 opened.
 std::vector<int> pruned_state_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
-                                     double budget);
+                                     const PlanPrices& prices, double budget);
 
 }  // namespace boxlod

@@ -63,4 +63,8 @@ TEST(LevelBudgets, PrefixesWithinABudget) {
     EXPECT_EQ(best_prefix_within(bytes, error, 45), 3u);
     EXPECT_EQ(best_prefix_within(bytes, error, 5), 0u);  // none fits: the start
     EXPECT_EQ(longest_prefix_within(bytes, 5), 0u);
+    // A start beyond the budget gives way to the first prefix within it, then to lower errors.
+    const std::vector<double> dear_start = {30, 25, 10, 20}, more_error = {5, 8, 9, 7};
+    EXPECT_EQ(best_prefix_within(dear_start, more_error, 20), 3u);
+    EXPECT_EQ(best_prefix_within(dear_start, more_error, 15), 2u);
 }

@@ -26,12 +26,11 @@ void add_geometry(Model& model, int node) {
     model.nodes[std::size_t(node)].primitives.push_back(p);
 }
 
-// A root over two parts, each piece of geometry dearer than the budgets asked. X's box (10 bytes, error 100) is better than its two
-// pieces at their cheapest (5 bytes, 60 each), but the pieces' best (10 bytes,
-// error 0 each) beats it: opening X gains nothing until they change. Y's
-// better box gains 20 for 20 bytes. Within 40 bytes the greedy order spends
-// them on Y before it opens X; the best is X opened, its pieces at their
-// best, and Y's cheap box: 30 bytes, error 100.
+// A root over two parts, each piece of geometry dearer than the budgets asked. X's box (10 bytes, error 100)
+// is better than its two pieces at their cheapest (5 bytes, 60 each), but the pieces' best (10 bytes, error 0
+// each) beats it: opening X gains nothing until they change. Y's better box gains 20 for 20 bytes. Within 40
+// bytes the greedy order spends them on Y before it opens X; the best is X opened, its pieces at their best,
+// and Y's cheap box: 30 bytes, error 100.
 struct OpeningThatPaysLater {
     Model model;
     std::vector<std::vector<Proxy>> proxies;
@@ -57,7 +56,8 @@ TEST(HybridOrder, TheGreedyOrderSpendsTheBudgetBeforeAnOpeningThatPaysLater) {
     const OpeningThatPaysLater scene;
     std::vector<HybridStep> steps;
     std::vector<double> bytes, error;
-    order_within(scene.model, scene.proxies, 40, steps, bytes, error);
+    order_within(scene.model, scene.proxies, plan_prices(scene.model, scene.proxies), 40, steps, bytes,
+                 error);
     const std::size_t best = best_prefix_within(bytes, error, 40);
     EXPECT_EQ(bytes[best], 40);
     EXPECT_EQ(error[best], 180);  // Y's better box and X's
@@ -65,12 +65,14 @@ TEST(HybridOrder, TheGreedyOrderSpendsTheBudgetBeforeAnOpeningThatPaysLater) {
 
 TEST(HybridOrder, ThePrunedCutOpensWhatPaysLater) {
     const OpeningThatPaysLater scene;
-    const std::vector<int> state = pruned_state_within(scene.model, scene.proxies, 40);
+    const PlanPrices prices = plan_prices(scene.model, scene.proxies);
+    const std::vector<int> state = pruned_state_within(scene.model, scene.proxies, prices, 40);
     EXPECT_EQ(state, (std::vector<int>{-1, -1, 0, 1, 1}));
     // Unbounded: every part at its best (Y's geometry, the pieces' boxes of error 0, cheaper than theirs).
-    EXPECT_EQ(pruned_state_within(scene.model, scene.proxies, 1e9), (std::vector<int>{-1, -1, -1, 1, 1}));
+    EXPECT_EQ(pruned_state_within(scene.model, scene.proxies, prices, 1e9),
+              (std::vector<int>{-1, -1, -1, 1, 1}));
     // Below the root's cheapest proxy nothing fits: the cheapest.
-    EXPECT_EQ(pruned_state_within(scene.model, scene.proxies, 0)[0], 0);
+    EXPECT_EQ(pruned_state_within(scene.model, scene.proxies, prices, 0)[0], 0);
 }
 
 TEST(HybridOrder, StartingFromACutTakesItsStepsThenGoesOnGreedily) {
@@ -78,7 +80,8 @@ TEST(HybridOrder, StartingFromACutTakesItsStepsThenGoesOnGreedily) {
     const std::vector<int> start{-1, -1, 0, 1, 1};
     std::vector<HybridStep> steps;
     std::vector<double> bytes, error;
-    order_within(scene.model, scene.proxies, 60, steps, bytes, error, &start);
+    order_within(scene.model, scene.proxies, plan_prices(scene.model, scene.proxies), 60, steps, bytes, error,
+                 &start);
     ASSERT_EQ(steps.size(), 5u);
     EXPECT_EQ(steps[0].node, 0);  // parents before their children
     EXPECT_EQ(steps[1].node, scene.x);
