@@ -478,11 +478,13 @@ HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, doub
     };
     // The greedy order can stall behind an opening that gains nothing until
     // its children change: also from the pruned cut within the budget, keeping
-    // the lower error (docs/design.md: The hybrid level mode).
+    // the one within the budget, else the lower error (docs/design.md: The hybrid level mode).
     HybridLevel greedy = replay(nullptr);
     const std::vector<int> start = pruned_state_within(model, plan.proxies, plan.prices, budget);
     HybridLevel pruned = replay(&start);
-    return pruned.error < greedy.error ? std::move(pruned) : std::move(greedy);
+    auto fits = [&](const HybridLevel& level) { return level.bytes <= budget * (1 + 1e-12); };
+    const bool take_pruned = fits(pruned) != fits(greedy) ? fits(pruned) : pruned.error < greedy.error;
+    return take_pruned ? std::move(pruned) : std::move(greedy);
 }
 
 Cut hybrid_cut(const Model& model, const HybridPlan& plan, const std::vector<int>& state) {

@@ -85,9 +85,9 @@ struct HybridLevel {
 // The best level within `budget` bytes: the plan's order taken again, a change
 // that would exceed the budget giving way to the node's best change that fits,
 // once from the root's cheapest proxy and once from the pruned cut within the
-// budget (hybrid_order.h); of the states passed, the lowest error (the first
-// of equal error, the greedy order's first). Beyond the budget only when the
-// root's cheapest proxy is.
+// budget (hybrid_order.h); of the states passed within the budget, the
+// lowest error (the first of equal error, the greedy order's first). Beyond
+// the budget only when nothing within it is reached.
 HybridLevel hybrid_level_within(const Model& model, const HybridPlan& plan, double budget);
 
 // The cut of a state (cut.h): nodes at a box proxy in box_nodes (with its

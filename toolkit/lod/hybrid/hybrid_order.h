@@ -3,7 +3,8 @@
 // change (swap a node's proxy, or open the node) with the largest drop of
 // error per added byte; a change that would exceed the budget gives way to
 // the node's best change that fits. Bytes count each texture once, as a level
-// pays for it (paid_textures.h).
+// pays for it (paid_textures.h). And the pruned cut within a budget, which
+// the order may start from where it would stall.
 #pragma once
 #include "toolkit/lod/hybrid/hybrid_proxy.h"
 #include "toolkit/lod/hybrid/paid_textures.h"
@@ -42,6 +43,7 @@ void order_within(const Model& model, const std::vector<std::vector<Proxy>>& pro
 // Lookabaugh and Gray 1989, generalized BFOS), a point of the lower convex
 // hull of error against bytes that the greedy order can miss where an opening
 // gains nothing until its children change. Per node: its proxy, -1 opened.
+// Where no cut fits, the cheapest (the root's cheapest proxy).
 std::vector<int> pruned_state_within(const Model& model, const std::vector<std::vector<Proxy>>& proxies,
                                      const PlanPrices& prices, double budget);
 

@@ -101,3 +101,22 @@ TEST(HybridOrder, ALevelIsTheBetterOfTheGreedyOrderAndThePrunedCut) {
     EXPECT_EQ(level.error, 100);
     EXPECT_EQ(level.state, (std::vector<int>{-1, -1, 0, 1, 1}));
 }
+
+// A budget below the root's cheapest proxy (30 bytes), met only two openings
+// down (its pieces at 5 bytes each): the greedy order cannot take the first
+// opening (it saves 2 bytes, still 28 over), the pruned cut takes both. The
+// level within the budget wins, whatever its error.
+TEST(HybridOrder, ALevelWithinTheBudgetBeatsADearerStart) {
+    Model model;
+    add_node(model, -1, "root");
+    const int x = add_node(model, 0, "X");
+    add_geometry(model, add_node(model, x, "piece"));
+    add_geometry(model, add_node(model, x, "piece"));
+    HybridPlan plan;
+    plan.proxies = {{proxy(30, 5)}, {proxy(28, 50)}, {proxy(5, 100)}, {proxy(5, 100)}};
+    order_hybrid_plan(model, plan);
+    const HybridLevel level = hybrid_level_within(model, plan, 20);
+    EXPECT_EQ(level.bytes, 10);
+    EXPECT_EQ(level.error, 200);
+    EXPECT_EQ(level.state, (std::vector<int>{-1, -1, 0, 0}));
+}
