@@ -4,7 +4,8 @@
 // the node tree (Project > Site > Building > Storey > element > its parts,
 // from IfcRelAggregates and IfcRelContainedInSpatialStructure), each element's
 // colour and transparency from its styles, its IFC type as the node's rule and
-// its GlobalId as the node's source id (docs/design.md: Scene model).
+// its GlobalId as the node's source id (docs/design.md: Scene model). The first read keeps V8's
+// compiled code of web-ifc beside the module, for the next reads to load rather than compile.
 #pragma once
 #include "toolkit/model/model.h"
 

@@ -1,11 +1,14 @@
 // Reads an IFC file (2x3, 4, 4x3) with web-ifc for boxlod (toolkit/formats/ifc_io.h),
 // which runs it under node in a child process and embeds this file in its
-// program. Usage: node - WEB_IFC_MODULE IFC_FILE; the answer goes to file
+// program. Usage: node - WEB_IFC_FOLDER IFC_FILE; the answer goes to file
 // descriptor 3 (web-ifc logs to stdout and stderr): an 8-byte little-endian
 // length, a JSON header of that length, then the vertex and index bytes the
 // header's pieces point into. On failure the header is {"error": "..."}.
 'use strict';
 const fs = require('fs');
+const Module = require('module');
+const path = require('path');
+const vm = require('vm');
 
 function answer(header, chunks) {
   const json = Buffer.from(JSON.stringify(header));
@@ -105,9 +108,35 @@ function packed(placed, origin) {
   return {out, chunks};
 }
 
+// web-ifc's API is 5.9 MB of JavaScript that V8 takes about 0.2 s to compile
+// on each read: compiled once, its code is kept beside the module as V8's
+// code cache (vm.Script's cachedData; rebuilt where V8 rejects it, as after a
+// node upgrade, and skipped where the folder is read-only). Written under a
+// temporary name and renamed, so that readers running at once never see half
+// of one.
+function requireWithCodeCache(folder) {
+  const file = path.join(folder, 'web-ifc-api-node.js'), cacheFile = file + '.v8-code-cache';
+  let cachedData;
+  try { cachedData = fs.readFileSync(cacheFile); } catch (error) { cachedData = undefined; }
+  const script = new vm.Script(Module.wrap(fs.readFileSync(file, 'utf8')), {filename: file, cachedData});
+  const module = {exports: {}};
+  script.runInThisContext().call(module.exports, module.exports, Module.createRequire(file), module, file, folder);
+  const keep = () => {
+    if (cachedData !== undefined && !script.cachedDataRejected) return;
+    const temporary = `${cacheFile}.${process.pid}`;
+    try {
+      fs.writeFileSync(temporary, script.createCachedData());
+      fs.renameSync(temporary, cacheFile);
+    } catch (error) {
+      try { fs.unlinkSync(temporary); } catch (ignored) { /* never written */ }
+    }
+  };
+  return {WebIFC: module.exports, keep};
+}
+
 (async () => {
   try {
-    const WebIFC = require(process.argv[2]);
+    const {WebIFC, keep} = requireWithCodeCache(process.argv[2]);
     const api = new WebIFC.IfcAPI();
     await api.Init();
     const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
@@ -117,6 +146,7 @@ function packed(placed, origin) {
     const origin = originOf(placed);
     const {out, chunks} = packed(placed, origin);
     answer({schema: api.GetModelSchema(model), origin, nodes, pieces: out}, chunks);
+    keep();  // after a read, with the functions it compiled
   } catch (error) {
     answer({error: String(error && error.message ? error.message : error)}, []);
   }

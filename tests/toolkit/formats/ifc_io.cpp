@@ -2,11 +2,14 @@
 
 #include "test_support.h"
 #include "toolkit/formats/assimp_io.h"
+#include "toolkit/formats/model_bytes.h"
 #include "toolkit/formats/model_io.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
+#include <cstdlib>
+#include <iterator>
 #include <map>
 
 namespace boxlod {
@@ -89,6 +92,32 @@ TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
                   check_ifc_references("#1=A();#1=B();", "f.ifc");
               }).find("#1: defined twice"),
               std::string::npos);
+}
+
+// web-ifc's compiled code is kept beside it (ifc_reader.cjs: requireWithCodeCache): the first
+// read makes it, the next reads use it, one V8 rejects is made again, and the model is the same.
+TEST(IfcIo, WebIfcsCodeCacheIsKeptAndChangesNoModel) {
+    const std::string installed = web_ifc_module();
+    ASSERT_FALSE(installed.empty()) << "make test installs web-ifc";
+    const fs::path folder = test::scratch_folder("web_ifc_code_cache");
+    for (const char* file : {"package.json", "web-ifc-api-node.js", "web-ifc-node.wasm"})
+        fs::copy_file(fs::path(installed) / file, folder / file);
+    const fs::path cache = folder / "web-ifc-api-node.js.v8-code-cache";
+    const char* before = std::getenv("BOXLOD_WEB_IFC");
+    const std::string restore = before ? before : "";
+    ::setenv("BOXLOD_WEB_IFC", folder.c_str(), 1);
+    const std::string ifc = std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc";
+    const std::string first = model_bytes(load_model(ifc));
+    ASSERT_TRUE(fs::exists(cache));
+    const auto made = fs::last_write_time(cache);
+    EXPECT_EQ(model_bytes(load_model(ifc)), first);
+    EXPECT_EQ(fs::last_write_time(cache), made);  // used, not made again
+    test::write_text(cache, "not V8's code");
+    EXPECT_EQ(model_bytes(load_model(ifc)), first);
+    EXPECT_GT(fs::file_size(cache), 1000000u);
+    EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()),
+              4);  // nothing else left
+    before ? ::setenv("BOXLOD_WEB_IFC", restore.c_str(), 1) : ::unsetenv("BOXLOD_WEB_IFC");
 }
 
 // Per part (an element with a GlobalId): the surface area and bounds of what it draws.
