@@ -4,10 +4,11 @@
 
 #include <proj.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <set>
 #include <string>
+#include <vector>
 
 namespace boxlod {
 namespace {
@@ -27,6 +28,58 @@ Eigen::Vector2d longitude_latitude(PJ* to_wgs84, double x, double y) {
     return {out.xy.x, out.xy.y};
 }
 
+// The height of the geoid above the WGS 84 ellipsoid at a longitude and latitude
+// (degrees), from EGM96's global grid in Debian's proj-data: NaN where it is missing.
+double egm96_undulation(PJ_CONTEXT* context, const Eigen::Vector2d& longitude_latitude) {
+    const Object shift(proj_create(context, "+proj=vgridshift +grids=egm96_15.gtx +multiplier=1"));
+    if (!shift) return std::nan("");
+    const PJ_COORD out =
+        proj_trans(shift.get(), PJ_FWD,
+                   proj_coord(proj_torad(longitude_latitude.x()), proj_torad(longitude_latitude.y()), 0, 0));
+    return std::abs(out.xyz.z) < 200 ? out.xyz.z : std::nan("");  // |N| < 110 m on the Earth
+}
+
+// A compound system's height (above its geoid, `heights` its vertical part) made a height above
+// the ellipsoid, by EGM96's geoid; false where the grid is missing.
+bool add_geoid(PJ_CONTEXT* context, PJ* heights, MapPlacement& placement) {
+    const double undulation =
+        egm96_undulation(context, {placement.at.longitude_degrees, placement.at.latitude_degrees});
+    if (!std::isfinite(undulation)) return false;
+    placement.at.height += undulation;
+    const char* name = proj_get_name(heights);
+    placement.operation += std::string(" + ") + (name ? name : "heights") + " by EGM96's geoid";
+    return true;
+}
+
+// The metres of a coordinate system's axes; 0 where they differ or PROJ gives none.
+double metres_per_unit(PJ_CONTEXT* context, PJ* system) {
+    const Object axes(proj_crs_get_coordinate_system(context, system));
+    const int axis_count = axes ? proj_cs_get_axis_count(context, axes.get()) : 0;
+    double metres = 0;
+    for (int axis = 0; axis < axis_count; ++axis) {
+        double unit = 0;
+        proj_cs_get_axis_info(context, axes.get(), axis, nullptr, nullptr, nullptr, &unit, nullptr, nullptr,
+                              nullptr);
+        if (axis > 0 && unit != metres) return 0;
+        metres = unit;
+    }
+    return metres;
+}
+
+// Where a coordinate system's axes point ("east", "north", ...; "" where PROJ does not say).
+std::vector<std::string> axis_directions(PJ_CONTEXT* context, PJ* system) {
+    const Object axes(proj_crs_get_coordinate_system(context, system));
+    const int axis_count = axes ? proj_cs_get_axis_count(context, axes.get()) : 0;
+    std::vector<std::string> directions;
+    for (int axis = 0; axis < axis_count; ++axis) {
+        const char* direction = nullptr;
+        proj_cs_get_axis_info(context, axes.get(), axis, nullptr, nullptr, &direction, nullptr, nullptr,
+                              nullptr, nullptr);
+        directions.push_back(direction ? direction : "");
+    }
+    return directions;
+}
+
 }  // namespace
 
 MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Vector3d& point,
@@ -41,25 +94,24 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     proj_context_set_enable_network(context.get(), false);  // the same answer everywhere, offline
     Object system(proj_create(context.get(), reference_system.c_str()));
     if (!system || !proj_is_crs(system.get())) fail("not a reference system PROJ knows");
-    if (proj_get_type(system.get()) == PJ_TYPE_COMPOUND_CRS)
+    Object heights;  // a compound system's vertical part: heights above its geoid
+    if (proj_get_type(system.get()) == PJ_TYPE_COMPOUND_CRS) {
+        heights.reset(proj_crs_get_sub_crs(context.get(), system.get(), 1));
         system.reset(proj_crs_get_sub_crs(context.get(), system.get(), 0));
+        if (heights && proj_get_type(heights.get()) != PJ_TYPE_VERTICAL_CRS) heights.reset();
+        if (heights && metres_per_unit(context.get(), heights.get()) != 1)
+            fail("its heights are not in metres");
+    }
     // The model's coordinates are metres east and north: a map grid in metres.
     if (!system || proj_get_type(system.get()) != PJ_TYPE_PROJECTED_CRS)
         fail("not a projected system (x east, y north in metres)");
-    const Object axes(proj_crs_get_coordinate_system(context.get(), system.get()));
-    const int axis_count = axes ? proj_cs_get_axis_count(context.get(), axes.get()) : -1;
-    if (axis_count < 2) fail("PROJ gives no axes for it");
-    std::set<std::string> directions;
-    for (int axis = 0; axis < axis_count; ++axis) {
-        const char* direction = nullptr;
-        double metres_per_unit = 0;
-        proj_cs_get_axis_info(context.get(), axes.get(), axis, nullptr, nullptr, &direction, &metres_per_unit,
-                              nullptr, nullptr, nullptr);
-        if (metres_per_unit != 1) fail("its units are not metres");
-        if (direction) directions.insert(direction);
-    }
+    const std::vector<std::string> directions = axis_directions(context.get(), system.get());
+    if (directions.size() < 2) fail("PROJ gives no axes for it");
+    if (metres_per_unit(context.get(), system.get()) != 1) fail("its units are not metres");
     // normalize_for_visualization below orders the axes, but does not turn a southing or westing.
-    if (!directions.count("east") || !directions.count("north")) fail("its axes do not point east and north");
+    if (std::find(directions.begin(), directions.end(), "east") == directions.end() ||
+        std::find(directions.begin(), directions.end(), "north") == directions.end())
+        fail("its axes do not point east and north");
     const Object wgs84(proj_create(context.get(), "EPSG:4326"));
     Object raw(
         wgs84 ? proj_create_crs_to_crs_from_pj(context.get(), system.get(), wgs84.get(), nullptr, nullptr)
@@ -79,10 +131,12 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     MapPlacement placement;
     placement.at.latitude_degrees = here.y();
     placement.at.longitude_degrees = here.x();
-    placement.at.height = point.z();
     placement.at.heading_degrees = std::atan2(east, up_north) * 180 / M_PI;
     const PJ_PROJ_INFO info = proj_pj_info(to_wgs84.get());
     placement.operation = info.description ? info.description : "";
+    placement.at.height = point.z();
+    if (heights && !add_geoid(context.get(), heights.get(), placement))
+        fail("EGM96's geoid grid (egm96_15.gtx, Debian's proj-data) is missing");
     return placement;
 }
 

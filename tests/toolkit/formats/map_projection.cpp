@@ -17,11 +17,15 @@ TEST(MapProjection, TheRdOriginLiesAtAmersfoort) {
         const MapPlacement placed = place_on_earth(system, {155000, 463000, 7}, "rd.city.json");
         EXPECT_NEAR(placed.at.latitude_degrees, 52.15517440, 1e-5) << system;
         EXPECT_NEAR(placed.at.longitude_degrees, 5.38720621, 1e-5) << system;
-        EXPECT_EQ(placed.at.height, 7) << system;  // the file's height, as it is
+        // EPSG 7415's NAP heights are above the geoid: EGM96's is 43.30 m above the ellipsoid there
+        // (NLGEO2018, NAP's own, about 43.3 m); EPSG 28992 has no heights, the file's are kept.
+        EXPECT_NEAR(placed.at.height, system[0] == 'E' ? 7 : 50.30, 0.01) << system;
         EXPECT_NEAR(placed.at.heading_degrees, 0, 1e-3) << system;
         // EPSG 7415 by its horizontal part, not PROJ's ballpark for the compound (110 m off).
         EXPECT_EQ(placed.operation.find("allpark"), std::string::npos) << placed.operation;
         EXPECT_NE(placed.operation.find("Amersfoort to WGS 84"), std::string::npos) << placed.operation;
+        EXPECT_EQ(placed.operation.find("NAP height by EGM96's geoid") != std::string::npos, system[0] != 'E')
+            << placed.operation;
     }
 }
 
@@ -50,6 +54,11 @@ TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
                   }).find(std::string("reference system '") + other + "'"),
                   std::string::npos)
             << other;
+    // ... and heights in feet (RD New with NAVD88's heights in US feet).
+    EXPECT_NE(test::input_error_of([] {
+                  place_on_earth("EPSG:28992+6360", {1, 1, 0}, "a.city.json");
+              }).find("its heights are not in metres"),
+              std::string::npos);
     // One line, whatever the file names.
     const std::string two_lines = test::input_error_of([] {
         place_on_earth("EPSG:1\nx", {0, 0, 0}, "a.city.json");
