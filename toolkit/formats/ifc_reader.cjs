@@ -19,6 +19,14 @@ function answer(header, chunks) {
   }
 }
 
+// An entity as a node: its Name, IFC type and GlobalId, under `parent`.
+function describe(api, model, id, parent) {
+  const line = api.GetLine(model, id);
+  const text = (field) => (line && line[field] && typeof line[field].value === 'string' ? line[field].value : '');
+  return {name: text('Name'), type: api.GetNameFromTypeCode(api.GetLineType(model, id)) || '',
+          global_id: text('GlobalId'), parent};
+}
+
 // Nodes of the spatial structure (IfcRelAggregates and
 // IfcRelContainedInSpatialStructure: Project > Site > Building > Storey >
 // element > its parts), parents first, with names and GlobalIds.
@@ -28,14 +36,8 @@ function spatialNodes(api, model, tree) {
   while (pending.length > 0) {
     const [node, parent, depth] = pending.pop();
     if (indexOf.has(node.expressID) || depth > 200) continue;  // a cycle, or deeper than any real building
-    const line = api.GetLine(model, node.expressID);
     indexOf.set(node.expressID, nodes.length);
-    nodes.push({
-      name: line && line.Name && typeof line.Name.value === 'string' ? line.Name.value : '',
-      type: api.GetNameFromTypeCode(api.GetLineType(model, node.expressID)) || '',
-      global_id: line && line.GlobalId && typeof line.GlobalId.value === 'string' ? line.GlobalId.value : '',
-      parent,
-    });
+    nodes.push(describe(api, model, node.expressID, parent));
     const index = nodes.length - 1;
     for (let c = node.children.length - 1; c >= 0; --c) pending.push([node.children[c], index, depth + 1]);
   }
@@ -48,13 +50,9 @@ function pieces(api, model, nodes, indexOf) {
   api.StreamAllMeshes(model, (mesh) => {
     let node = indexOf.get(mesh.expressID);
     if (node === undefined) {  // an element outside the spatial structure: under the root
-      const line = api.GetLine(model, mesh.expressID);
       node = nodes.length;
       indexOf.set(mesh.expressID, node);
-      nodes.push({name: line && line.Name && typeof line.Name.value === 'string' ? line.Name.value : '',
-                  type: api.GetNameFromTypeCode(api.GetLineType(model, mesh.expressID)) || '',
-                  global_id: line && line.GlobalId && typeof line.GlobalId.value === 'string' ? line.GlobalId.value : '',
-                  parent: 0});
+      nodes.push(describe(api, model, mesh.expressID, 0));
     }
     for (let g = 0; g < mesh.geometries.size(); ++g) {
       const placed = mesh.geometries.get(g);
@@ -125,6 +123,7 @@ function requireWithCodeCache(folder) {
     if (cachedData !== undefined && !script.cachedDataRejected) return;
     const temporary = `${cacheFile}.${process.pid}`;
     try {
+      fs.accessSync(folder, fs.constants.W_OK);  // before making the cache (tens of milliseconds)
       fs.writeFileSync(temporary, script.createCachedData());
       fs.renameSync(temporary, cacheFile);
     } catch (error) {
