@@ -101,7 +101,6 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
         const int node = piece.value("node", -1);
         if (node < 0 || node >= int(model.nodes.size()))
             throw_input_error(path, "", "web-ifc's piece names no node");
-        const int material = material_of(model, materials, piece.value("color", json()), path);
         const std::vector<float> positions =
             values_at<float>(answer, piece.value("positions", json()), 3, path);
         const std::vector<float> normals = values_at<float>(answer, piece.value("normals", json()), 3, path);
@@ -109,6 +108,8 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
             values_at<std::uint32_t>(answer, piece.value("indices", json()), 1, path);
         if (normals.size() != positions.size() || indices.size() % 3 != 0)
             throw_input_error(path, "", "web-ifc's piece is malformed");
+        if (indices.empty()) continue;  // web-ifc meshes some elements to nothing: no primitive, no material
+        const int material = material_of(model, materials, piece.value("color", json()), path);
         auto& primitives = model.nodes[std::size_t(node)].primitives;
         auto primitive = std::find_if(primitives.begin(), primitives.end(),
                                       [&](const Primitive& p) { return p.material == material; });

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iterator>
 #include <map>
@@ -165,6 +166,13 @@ TEST(IfcIo, WebIfcAndAssimpReadTheSameParts) {
     const Model by_web_ifc = import_ifc_with_web_ifc(test::fzk_haus_ifc);
     const Model by_assimp = import_with_assimp(test::fzk_haus_ifc);
     const auto ours = parts(by_web_ifc), theirs = parts(by_assimp);
+    std::vector<bool> drawn(by_web_ifc.materials.size(), false);
+    for (const Node& node : by_web_ifc.nodes)
+        for (const Primitive& p : node.primitives) {
+            EXPECT_GT(p.triangle_count(), 0u) << node.name;  // web-ifc's empty meshes are left out
+            drawn[std::size_t(p.material)] = true;
+        }
+    EXPECT_EQ(std::count(drawn.begin(), drawn.end(), false), 0);  // and their materials
     EXPECT_EQ(ours.size(), 110u);
     EXPECT_EQ(theirs.size(), 110u);
     const Eigen::Vector3f shift = model_bounds(by_web_ifc).min - model_bounds(by_assimp).min;
