@@ -79,7 +79,7 @@ void check_placement_options(const Arguments& a) {
 }
 
 // The options' place, else the reference system's (--reference-system, else the file's) through PROJ,
-// else KIT's; --height sets the height whatever places the rest (e.g. a file's NAP heights).
+// else KIT's; --height sets the height whatever places the rest.
 Placement tileset_placement(const Arguments& a, const std::string& file_system,
                             const Eigen::Vector3d& source_origin, const std::string& model) {
     Placement placement;
@@ -166,7 +166,9 @@ Subcommand tiles_subcommand() {
               "that names none or another: where its coordinates lie on the Earth",
               {},
               ""},
-             {"height", "M", "its height above the ellipsoid (by default a city file's own, else 0)",
+             {"height", "M",
+              "its height above the ellipsoid (by default a city file's own, a compound system's with "
+              "EGM96's geoid added, else 0)",
               height_range, format_number(Geodetic{}.height)},
              keep_hierarchy_option(),
              switch_error_option(),

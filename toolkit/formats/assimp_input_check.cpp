@@ -281,7 +281,9 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
     }
 }
 
-void check_step(std::string_view bytes, const std::string& file) {
+}  // namespace
+
+void check_step_file(std::string_view bytes, const std::string& file) {
     std::size_t end = bytes.find_last_not_of(" \t\r\n");
     constexpr std::string_view trailer = "END-ISO-10303-21;";
     if (end == std::string_view::npos || end + 1 < trailer.size() ||
@@ -292,13 +294,11 @@ void check_step(std::string_view bytes, const std::string& file) {
     check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file);
 }
 
-}  // namespace
-
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
-    if (extension == ".ifc" || extension == ".stp" || extension == ".step") check_step(bytes, file);
+    if (extension == ".ifc" || extension == ".stp" || extension == ".step") check_step_file(bytes, file);
 }
 
 }  // namespace boxlod

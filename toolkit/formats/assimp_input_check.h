@@ -14,4 +14,8 @@ namespace boxlod {
 // InputError naming `file` and the place.
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file);
 
+// The STEP checks alone: also what web-ifc needs before it reads an IFC file
+// (ifc_io.h), as it reads a file cut short or with cyclic placements without a word.
+void check_step_file(std::string_view bytes, const std::string& file);
+
 }  // namespace boxlod

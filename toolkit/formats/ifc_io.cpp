@@ -4,6 +4,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/utf8.h"
+#include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/ifc_reader_script.h"
 
 #include <nlohmann/json.hpp>
@@ -189,7 +190,7 @@ std::string web_ifc_module() {
         folder = (cache / ("web-ifc-" + std::string(web_ifc_version)) / "node_modules" / "web-ifc").string();
     }
     std::error_code error;
-    // Absolute: node takes a bare relative name for a package to look up.
+    // Absolute: the reader finds web-ifc's WebAssembly beside the module by this folder.
     return fs::is_regular_file(fs::path(folder) / "web-ifc-api-node.js", error)
                ? fs::absolute(folder, error).string()
                : "";
@@ -208,7 +209,9 @@ std::string ifc_schema(const std::string& header) {
 
 Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
-    check_ifc_references(read_input_file(path, "IFC file"), path);
+    const std::string bytes = read_input_file(path, "IFC file");
+    check_step_file(bytes, path);
+    check_ifc_references(bytes, path);
     const std::string module = web_ifc_module();
     if (module.empty())
         throw_input_error(

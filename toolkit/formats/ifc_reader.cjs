@@ -5,6 +5,7 @@
 // length, a JSON header of that length, then the vertex and index bytes the
 // header's pieces point into. On failure the header is {"error": "..."}.
 'use strict';
+const crypto = require('crypto');
 const fs = require('fs');
 const Module = require('module');
 const path = require('path');
@@ -106,25 +107,56 @@ function packed(placed, origin) {
   return {out, chunks};
 }
 
-// web-ifc's API is 5.9 MB of JavaScript that V8 takes about 0.2 s to compile
-// on each read: compiled once, its code is kept beside the module as V8's
-// code cache (vm.Script's cachedData; rebuilt where V8 rejects it, as after a
-// node upgrade, and skipped where the folder is read-only). Written under a
-// temporary name and renamed, so that readers running at once never see half
-// of one.
+// web-ifc's API is 5.9 MB of JavaScript that V8 takes about 0.3 s to compile
+// on each read: compiled once, its code is kept in web-ifc's folder as V8's
+// code cache (vm.Script's cachedData), skipped where the folder is read-only.
+// V8 checks a cache against its own version and the source's length only, so
+// the file starts with a line naming the source (size and time) and the
+// SHA-256 of the cache bytes: a cache of another source, a damaged one, or one
+// V8 rejects (after a node upgrade) is made again. Written under a temporary
+// name and renamed, so that readers running at once never see half of one;
+// a temporary whose reader was killed is removed by the next.
+const cacheSuffix = '.v8-code-cache', temporaryMark = '.boxlod-tmp';
+
+function stampOf(file) {
+  const stat = fs.statSync(file);
+  return `${stat.size} ${stat.mtimeMs}`;
+}
+
+function cachedCode(cacheFile, stamp) {
+  let bytes;
+  try { bytes = fs.readFileSync(cacheFile); } catch (error) { return undefined; }
+  const end = bytes.indexOf(10);
+  const [named, digest] = end < 0 ? [] : bytes.subarray(0, end).toString().split('|');
+  const code = bytes.subarray(end + 1);
+  return named === stamp && digest === crypto.createHash('sha256').update(code).digest('hex') ? code : undefined;
+}
+
+function removeDeadTemporaries(folder, cacheName) {
+  for (const name of fs.readdirSync(folder)) {
+    if (!name.startsWith(cacheName + temporaryMark)) continue;
+    const pid = Number(name.slice(cacheName.length + temporaryMark.length));
+    try { process.kill(pid, 0); } catch (error) {
+      if (error.code === 'ESRCH') try { fs.unlinkSync(path.join(folder, name)); } catch (ignored) { /* gone */ }
+    }
+  }
+}
+
 function requireWithCodeCache(folder) {
-  const file = path.join(folder, 'web-ifc-api-node.js'), cacheFile = file + '.v8-code-cache';
-  let cachedData;
-  try { cachedData = fs.readFileSync(cacheFile); } catch (error) { cachedData = undefined; }
+  const file = path.join(folder, 'web-ifc-api-node.js'), cacheFile = file + cacheSuffix;
+  const stamp = stampOf(file), cachedData = cachedCode(cacheFile, stamp);
   const script = new vm.Script(Module.wrap(fs.readFileSync(file, 'utf8')), {filename: file, cachedData});
   const module = {exports: {}};
   script.runInThisContext().call(module.exports, module.exports, Module.createRequire(file), module, file, folder);
   const keep = () => {
     if (cachedData !== undefined && !script.cachedDataRejected) return;
-    const temporary = `${cacheFile}.${process.pid}`;
+    const temporary = `${cacheFile}${temporaryMark}${process.pid}`;
     try {
       fs.accessSync(folder, fs.constants.W_OK);  // before making the cache (tens of milliseconds)
-      fs.writeFileSync(temporary, script.createCachedData());
+      removeDeadTemporaries(folder, path.basename(cacheFile));
+      const code = script.createCachedData();
+      const digest = crypto.createHash('sha256').update(code).digest('hex');
+      fs.writeFileSync(temporary, Buffer.concat([Buffer.from(`${stamp}|${digest}\n`), code]));
       fs.renameSync(temporary, cacheFile);
     } catch (error) {
       try { fs.unlinkSync(temporary); } catch (ignored) { /* never written */ }

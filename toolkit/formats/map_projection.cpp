@@ -51,33 +51,32 @@ bool add_geoid(PJ_CONTEXT* context, PJ* heights, MapPlacement& placement) {
     return true;
 }
 
-// The metres of a coordinate system's axes; 0 where they differ or PROJ gives none.
-double metres_per_unit(PJ_CONTEXT* context, PJ* system) {
-    const Object axes(proj_crs_get_coordinate_system(context, system));
-    const int axis_count = axes ? proj_cs_get_axis_count(context, axes.get()) : 0;
+// A coordinate system's axes: where each points ("east", "north", "up", ...; "" where PROJ does
+// not say) and its metres per unit.
+struct Axis {
+    std::string direction;
     double metres = 0;
-    for (int axis = 0; axis < axis_count; ++axis) {
-        double unit = 0;
-        proj_cs_get_axis_info(context, axes.get(), axis, nullptr, nullptr, nullptr, &unit, nullptr, nullptr,
-                              nullptr);
-        if (axis > 0 && unit != metres) return 0;
-        metres = unit;
-    }
-    return metres;
-}
-
-// Where a coordinate system's axes point ("east", "north", ...; "" where PROJ does not say).
-std::vector<std::string> axis_directions(PJ_CONTEXT* context, PJ* system) {
+};
+std::vector<Axis> axes_of(PJ_CONTEXT* context, PJ* system) {
     const Object axes(proj_crs_get_coordinate_system(context, system));
     const int axis_count = axes ? proj_cs_get_axis_count(context, axes.get()) : 0;
-    std::vector<std::string> directions;
+    std::vector<Axis> out;
     for (int axis = 0; axis < axis_count; ++axis) {
         const char* direction = nullptr;
-        proj_cs_get_axis_info(context, axes.get(), axis, nullptr, nullptr, &direction, nullptr, nullptr,
+        double metres = 0;
+        proj_cs_get_axis_info(context, axes.get(), axis, nullptr, nullptr, &direction, &metres, nullptr,
                               nullptr, nullptr);
-        directions.push_back(direction ? direction : "");
+        out.push_back({direction ? direction : "", metres});
     }
-    return directions;
+    return out;
+}
+
+bool in_metres(const std::vector<Axis>& axes) {
+    return std::all_of(axes.begin(), axes.end(), [](const Axis& a) { return a.metres == 1; });
+}
+
+bool points(const std::vector<Axis>& axes, const std::string& direction) {
+    return std::any_of(axes.begin(), axes.end(), [&](const Axis& a) { return a.direction == direction; });
 }
 
 }  // namespace
@@ -98,20 +97,23 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     if (proj_get_type(system.get()) == PJ_TYPE_COMPOUND_CRS) {
         heights.reset(proj_crs_get_sub_crs(context.get(), system.get(), 1));
         system.reset(proj_crs_get_sub_crs(context.get(), system.get(), 0));
-        if (heights && proj_get_type(heights.get()) != PJ_TYPE_VERTICAL_CRS) heights.reset();
-        if (heights && metres_per_unit(context.get(), heights.get()) != 1)
-            fail("its heights are not in metres");
+        if (heights && proj_get_type(heights.get()) == PJ_TYPE_BOUND_CRS)  // a WKT 1 height with its grid
+            heights.reset(proj_get_source_crs(context.get(), heights.get()));
+        if (heights && proj_get_type(heights.get()) != PJ_TYPE_VERTICAL_CRS)
+            fail("its heights are not heights");
+        const std::vector<Axis> vertical =
+            heights ? axes_of(context.get(), heights.get()) : std::vector<Axis>{};
+        if (heights && (!in_metres(vertical) || !points(vertical, "up")))
+            fail("its heights are not metres up (give --height)");
     }
     // The model's coordinates are metres east and north: a map grid in metres.
     if (!system || proj_get_type(system.get()) != PJ_TYPE_PROJECTED_CRS)
         fail("not a projected system (x east, y north in metres)");
-    const std::vector<std::string> directions = axis_directions(context.get(), system.get());
-    if (directions.size() < 2) fail("PROJ gives no axes for it");
-    if (metres_per_unit(context.get(), system.get()) != 1) fail("its units are not metres");
+    const std::vector<Axis> axes = axes_of(context.get(), system.get());
+    if (axes.size() < 2) fail("PROJ gives no axes for it");
+    if (!in_metres(axes)) fail("its units are not metres");
     // normalize_for_visualization below orders the axes, but does not turn a southing or westing.
-    if (std::find(directions.begin(), directions.end(), "east") == directions.end() ||
-        std::find(directions.begin(), directions.end(), "north") == directions.end())
-        fail("its axes do not point east and north");
+    if (!points(axes, "east") || !points(axes, "north")) fail("its axes do not point east and north");
     const Object wgs84(proj_create(context.get(), "EPSG:4326"));
     Object raw(
         wgs84 ? proj_create_crs_to_crs_from_pj(context.get(), system.get(), wgs84.get(), nullptr, nullptr)
@@ -136,7 +138,7 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     placement.operation = info.description ? info.description : "";
     placement.at.height = point.z();
     if (heights && !add_geoid(context.get(), heights.get(), placement))
-        fail("EGM96's geoid grid (egm96_15.gtx, Debian's proj-data) is missing");
+        fail("EGM96's geoid grid (egm96_15.gtx, Debian's proj-data) is missing (or give --height)");
     return placement;
 }
 

@@ -22,7 +22,8 @@ namespace boxlod {
 // taken by its horizontal part, as PROJ's transformation of the whole falls back to a ballpark offset (about
 // 100 m in the Netherlands). `operation`: PROJ's description of the transformation used. Throws InputError
 // naming `source` when PROJ does not know the system, when it is not a projected system in metres (a
-// geographic or geocentric one, a grid in feet: the model's coordinates would not be metres east and north)
+// geographic or geocentric one, a grid in feet: the model's coordinates would not be metres east and north),
+// when a compound system's heights are not metres up (feet, depths), when EGM96's grid is missing,
 // or when the point does not transform.
 struct MapPlacement {
     Geodetic at;

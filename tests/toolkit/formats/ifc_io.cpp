@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <map>
+#include <optional>
 
 namespace boxlod {
 namespace {
@@ -95,8 +96,20 @@ TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
               std::string::npos);
 }
 
-// web-ifc's compiled code is kept beside it (ifc_reader.cjs: requireWithCodeCache): the first
-// read makes it, the next reads use it, one V8 rejects is made again, and the model is the same.
+// An environment variable set for one test, restored however it ends.
+struct ScopedEnvironment {
+    std::string name;
+    std::optional<std::string> before;
+    ScopedEnvironment(std::string variable, const std::string& value) : name(std::move(variable)) {
+        if (const char* old = std::getenv(name.c_str())) before = old;
+        ::setenv(name.c_str(), value.c_str(), 1);
+    }
+    ~ScopedEnvironment() { before ? ::setenv(name.c_str(), before->c_str(), 1) : ::unsetenv(name.c_str()); }
+};
+
+// web-ifc's compiled code is kept in its folder (ifc_reader.cjs: requireWithCodeCache): the first
+// read makes it, the next reads use it, a damaged one is made again, a temporary whose reader was
+// killed is removed, and the model is the same.
 TEST(IfcIo, WebIfcsCodeCacheIsKeptAndChangesNoModel) {
     const std::string installed = web_ifc_module();
     ASSERT_FALSE(installed.empty()) << "make test installs web-ifc";
@@ -104,21 +117,21 @@ TEST(IfcIo, WebIfcsCodeCacheIsKeptAndChangesNoModel) {
     for (const char* file : {"package.json", "web-ifc-api-node.js", "web-ifc-node.wasm"})
         fs::copy_file(fs::path(installed) / file, folder / file);
     const fs::path cache = folder / "web-ifc-api-node.js.v8-code-cache";
-    const char* before = std::getenv("BOXLOD_WEB_IFC");
-    const std::string restore = before ? before : "";
-    ::setenv("BOXLOD_WEB_IFC", folder.c_str(), 1);
+    const ScopedEnvironment web_ifc("BOXLOD_WEB_IFC", folder.string());
     const std::string ifc = std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc";
     const std::string first = model_bytes(load_model(ifc));
     ASSERT_TRUE(fs::exists(cache));
     const auto made = fs::last_write_time(cache);
     EXPECT_EQ(model_bytes(load_model(ifc)), first);
     EXPECT_EQ(fs::last_write_time(cache), made);  // used, not made again
-    test::write_text(cache, "not V8's code");
+    std::string damaged = test::read_text(cache.string());
+    damaged[damaged.size() / 2] ^= 1;
+    test::write_text(cache, damaged);
+    test::write_text(folder / "web-ifc-api-node.js.v8-code-cache.boxlod-tmp999999999", "a killed reader's");
     EXPECT_EQ(model_bytes(load_model(ifc)), first);
-    EXPECT_GT(fs::file_size(cache), 1000000u);
+    EXPECT_NE(test::read_text(cache.string()), damaged);
     EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()),
               4);  // nothing else left
-    before ? ::setenv("BOXLOD_WEB_IFC", restore.c_str(), 1) : ::unsetenv("BOXLOD_WEB_IFC");
 }
 
 // Per part (an element with a GlobalId): the surface area and bounds of what it draws.

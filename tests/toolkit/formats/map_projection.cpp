@@ -13,18 +13,23 @@ using namespace boxlod;
 // PROJ's Helmert fit is within a metre, 1e-5 degrees. The grid's north is
 // true north on its central meridian.
 TEST(MapProjection, TheRdOriginLiesAtAmersfoort) {
-    for (const char* system : {"EPSG:28992", "https://www.opengis.net/def/crs/EPSG/0/7415"}) {
+    // EPSG 7415's NAP heights are above the geoid, there 43.30 m above the ellipsoid by EGM96's
+    // grid; EPSG 28992 names no heights: the file's are kept.
+    const struct {
+        const char* system;
+        double height;
+        bool by_geoid;
+    } systems[] = {{"EPSG:28992", 7, false}, {"https://www.opengis.net/def/crs/EPSG/0/7415", 50.30, true}};
+    for (const auto& [system, height, by_geoid] : systems) {
         const MapPlacement placed = place_on_earth(system, {155000, 463000, 7}, "rd.city.json");
         EXPECT_NEAR(placed.at.latitude_degrees, 52.15517440, 1e-5) << system;
         EXPECT_NEAR(placed.at.longitude_degrees, 5.38720621, 1e-5) << system;
-        // EPSG 7415's NAP heights are above the geoid: EGM96's is 43.30 m above the ellipsoid there
-        // (NLGEO2018, NAP's own, about 43.3 m); EPSG 28992 has no heights, the file's are kept.
-        EXPECT_NEAR(placed.at.height, system[0] == 'E' ? 7 : 50.30, 0.01) << system;
+        EXPECT_NEAR(placed.at.height, height, 0.01) << system;
         EXPECT_NEAR(placed.at.heading_degrees, 0, 1e-3) << system;
         // EPSG 7415 by its horizontal part, not PROJ's ballpark for the compound (110 m off).
         EXPECT_EQ(placed.operation.find("allpark"), std::string::npos) << placed.operation;
         EXPECT_NE(placed.operation.find("Amersfoort to WGS 84"), std::string::npos) << placed.operation;
-        EXPECT_EQ(placed.operation.find("NAP height by EGM96's geoid") != std::string::npos, system[0] != 'E')
+        EXPECT_EQ(placed.operation.find("NAP height by EGM96's geoid") != std::string::npos, by_geoid)
             << placed.operation;
     }
 }
@@ -57,7 +62,12 @@ TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
     // ... and heights in feet (RD New with NAVD88's heights in US feet).
     EXPECT_NE(test::input_error_of([] {
                   place_on_earth("EPSG:28992+6360", {1, 1, 0}, "a.city.json");
-              }).find("its heights are not in metres"),
+              }).find("its heights are not metres up"),
+              std::string::npos);
+    // ... and depths (RD New with depths below mean sea level).
+    EXPECT_NE(test::input_error_of([] {
+                  place_on_earth("EPSG:28992+5715", {1, 1, 0}, "a.city.json");
+              }).find("its heights are not metres up"),
               std::string::npos);
     // One line, whatever the file names.
     const std::string two_lines = test::input_error_of([] {
