@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <sstream>
@@ -190,7 +191,24 @@ std::size_t each_reference(std::string_view bytes, std::size_t i, Reference&& re
     return i;
 }
 
-// Parses `#N = TYPE(attributes);` instances, strings and comments skipped.
+// The file with its comments (/* ... */ outside strings) made spaces, so that a '#' in one names nothing.
+std::string blank_comments(std::string_view bytes) {
+    std::string text(bytes);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\'') {  // a string; '' is a quote inside it
+            for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\''));
+                 ++i)
+                if (text[i] == '\'') ++i;
+        } else if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            const std::size_t end = std::min(text.find("*/", i + 2), text.size() - 2) + 2;
+            std::fill(text.begin() + std::ptrdiff_t(i), text.begin() + std::ptrdiff_t(end), ' ');
+            i = end - 1;
+        }
+    }
+    return text;
+}
+
+// Parses `#N = TYPE(attributes);` instances, strings skipped.
 StepGraph read_step_graph(std::string_view bytes) {
     StepGraph graph;
     std::unordered_map<std::uint64_t, std::uint32_t> index;
@@ -242,7 +260,7 @@ StepGraph read_step_graph(std::string_view bytes) {
 // Depth-first over `edges` with an explicit stack: a cycle, or a path longer
 // than max_nesting_depth, is refused at the instance where it is found.
 void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::vector<std::uint32_t>>& edges,
-                               const std::string& what, const std::string& file) {
+                               const std::string& what, const std::string& file, int max_depth) {
     enum State : std::uint8_t { unseen, open, done };
     std::vector<State> state(edges.size(), unseen);
     std::vector<int> height(edges.size(), 0);
@@ -258,12 +276,14 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
             Frame& frame = stack.back();
             if (frame.next < edges[frame.node].size()) {
                 std::uint32_t child = edges[frame.node][frame.next++];
-                std::string place = std::to_string(graph.ids[child])
-                                        .insert(0, 1, '#');  // not "#" + ...: GCC 12's false -Wrestrict
-                if (state[child] == open) throw_input_error(file, place, what + " form a cycle");
+                auto place = [&] {
+                    return std::to_string(graph.ids[child])
+                        .insert(0, 1, '#');  // not "#" + ...: GCC 12's -Wrestrict
+                };
+                if (state[child] == open) throw_input_error(file, place(), what + " form a cycle");
                 if (state[child] == unseen) {
-                    if (stack.size() >= std::size_t(max_nesting_depth))
-                        throw_input_error(file, place, what + " " + nesting_message());
+                    if (stack.size() >= std::size_t(max_depth))
+                        throw_input_error(file, place(), what + " " + nesting_message());
                     state[child] = open;
                     stack.push_back({child, 0});
                 }
@@ -271,7 +291,7 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
             }
             int h = 0;
             for (std::uint32_t child : edges[frame.node]) h = std::max(h, height[child] + 1);
-            if (h > max_nesting_depth)
+            if (h > max_depth)
                 throw_input_error(file, "#" + std::to_string(graph.ids[frame.node]),
                                   what + " " + nesting_message());
             height[frame.node] = h;
@@ -283,22 +303,23 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
 
 }  // namespace
 
-void check_step_file(std::string_view bytes, const std::string& file) {
+void check_step_file(std::string_view bytes, const std::string& file, int max_depth) {
     std::size_t end = bytes.find_last_not_of(" \t\r\n");
     constexpr std::string_view trailer = "END-ISO-10303-21;";
     if (end == std::string_view::npos || end + 1 < trailer.size() ||
         bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
         throw_input_error(file, "", "does not end with 'END-ISO-10303-21;' (truncated file?)");
-    StepGraph graph = read_step_graph(bytes);
-    check_acyclic_and_shallow(graph, graph.references, "references", file);
-    check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file);
+    StepGraph graph = read_step_graph(blank_comments(bytes));
+    check_acyclic_and_shallow(graph, graph.references, "references", file, max_depth);
+    check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file, max_depth);
 }
 
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
-    if (extension == ".ifc" || extension == ".stp" || extension == ".step") check_step_file(bytes, file);
+    if (extension == ".ifc" || extension == ".stp" || extension == ".step")
+        check_step_file(bytes, file, max_nesting_depth);
 }
 
 }  // namespace boxlod

@@ -14,8 +14,10 @@ namespace boxlod {
 // InputError naming `file` and the place.
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file);
 
-// The STEP checks alone: also what web-ifc needs before it reads an IFC file
-// (ifc_io.h), as it reads a file cut short or with cyclic placements without a word.
-void check_step_file(std::string_view bytes, const std::string& file);
+// The STEP checks alone, references nested at most `max_depth` deep: also what
+// web-ifc needs before it reads an IFC file (ifc_io.h), as it reads a file cut
+// short or with cyclic placements without a word (with no depth limit: it
+// reads deep chains of boolean cuts, and runs in a child process).
+void check_step_file(std::string_view bytes, const std::string& file, int max_depth);
 
 }  // namespace boxlod

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <unordered_set>
@@ -209,9 +210,11 @@ std::string ifc_schema(const std::string& header) {
 
 Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
-    const std::string bytes = read_input_file(path, "IFC file");
-    check_step_file(bytes, path);
-    check_ifc_references(bytes, path);
+    {
+        const std::string bytes = read_input_file(path, "IFC file");
+        check_ifc_references(bytes, path);
+        check_step_file(bytes, path, std::numeric_limits<int>::max());
+    }
     const std::string module = web_ifc_module();
     if (module.empty())
         throw_input_error(

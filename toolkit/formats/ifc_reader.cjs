@@ -111,17 +111,14 @@ function packed(placed, origin) {
 // on each read: compiled once, its code is kept in web-ifc's folder as V8's
 // code cache (vm.Script's cachedData), skipped where the folder is read-only.
 // V8 checks a cache against its own version and the source's length only, so
-// the file starts with a line naming the source (size and time) and the
-// SHA-256 of the cache bytes: a cache of another source, a damaged one, or one
-// V8 rejects (after a node upgrade) is made again. Written under a temporary
-// name and renamed, so that readers running at once never see half of one;
-// a temporary whose reader was killed is removed by the next.
+// the file starts with a line of the SHA-256 of the source and of the cache
+// bytes: a cache of another source, a damaged one, or one V8 rejects (after a
+// node upgrade) is made again. Written under a temporary name and renamed, so
+// that readers running at once never see half of one; a temporary whose
+// reader was killed is removed by the next reader that writes a cache.
 const cacheSuffix = '.v8-code-cache', temporaryMark = '.boxlod-tmp';
 
-function stampOf(file) {
-  const stat = fs.statSync(file);
-  return `${stat.size} ${stat.mtimeMs}`;
-}
+const sha256 = (bytes) => crypto.createHash('sha256').update(bytes).digest('hex');
 
 function cachedCode(cacheFile, stamp) {
   let bytes;
@@ -129,14 +126,15 @@ function cachedCode(cacheFile, stamp) {
   const end = bytes.indexOf(10);
   const [named, digest] = end < 0 ? [] : bytes.subarray(0, end).toString().split('|');
   const code = bytes.subarray(end + 1);
-  return named === stamp && digest === crypto.createHash('sha256').update(code).digest('hex') ? code : undefined;
+  return named === stamp && digest === sha256(code) ? code : undefined;
 }
 
 function removeDeadTemporaries(folder, cacheName) {
   for (const name of fs.readdirSync(folder)) {
     if (!name.startsWith(cacheName + temporaryMark)) continue;
-    const pid = Number(name.slice(cacheName.length + temporaryMark.length));
-    try { process.kill(pid, 0); } catch (error) {
+    const pid = name.slice(cacheName.length + temporaryMark.length);
+    if (!/^[0-9]{1,9}$/.test(pid)) continue;
+    try { process.kill(Number(pid), 0); } catch (error) {
       if (error.code === 'ESRCH') try { fs.unlinkSync(path.join(folder, name)); } catch (ignored) { /* gone */ }
     }
   }
@@ -144,8 +142,9 @@ function removeDeadTemporaries(folder, cacheName) {
 
 function requireWithCodeCache(folder) {
   const file = path.join(folder, 'web-ifc-api-node.js'), cacheFile = file + cacheSuffix;
-  const stamp = stampOf(file), cachedData = cachedCode(cacheFile, stamp);
-  const script = new vm.Script(Module.wrap(fs.readFileSync(file, 'utf8')), {filename: file, cachedData});
+  const source = fs.readFileSync(file, 'utf8');
+  const stamp = sha256(source), cachedData = cachedCode(cacheFile, stamp);
+  const script = new vm.Script(Module.wrap(source), {filename: file, cachedData});
   const module = {exports: {}};
   script.runInThisContext().call(module.exports, module.exports, Module.createRequire(file), module, file, folder);
   const keep = () => {
@@ -155,8 +154,7 @@ function requireWithCodeCache(folder) {
       fs.accessSync(folder, fs.constants.W_OK);  // before making the cache (tens of milliseconds)
       removeDeadTemporaries(folder, path.basename(cacheFile));
       const code = script.createCachedData();
-      const digest = crypto.createHash('sha256').update(code).digest('hex');
-      fs.writeFileSync(temporary, Buffer.concat([Buffer.from(`${stamp}|${digest}\n`), code]));
+      fs.writeFileSync(temporary, Buffer.concat([Buffer.from(`${stamp}|${sha256(code)}\n`), code]));
       fs.renameSync(temporary, cacheFile);
     } catch (error) {
       try { fs.unlinkSync(temporary); } catch (ignored) { /* never written */ }

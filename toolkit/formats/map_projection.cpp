@@ -104,7 +104,7 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
         const std::vector<Axis> vertical =
             heights ? axes_of(context.get(), heights.get()) : std::vector<Axis>{};
         if (heights && (!in_metres(vertical) || !points(vertical, "up")))
-            fail("its heights are not metres up (give --height)");
+            fail("its heights are not metres up");
     }
     // The model's coordinates are metres east and north: a map grid in metres.
     if (!system || proj_get_type(system.get()) != PJ_TYPE_PROJECTED_CRS)
@@ -138,7 +138,7 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
     placement.operation = info.description ? info.description : "";
     placement.at.height = point.z();
     if (heights && !add_geoid(context.get(), heights.get(), placement))
-        fail("EGM96's geoid grid (egm96_15.gtx, Debian's proj-data) is missing (or give --height)");
+        fail("EGM96's geoid grid (egm96_15.gtx, Debian's proj-data) is missing");
     return placement;
 }
 

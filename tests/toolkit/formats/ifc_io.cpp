@@ -1,6 +1,7 @@
 #include "toolkit/formats/ifc_io.h"
 
 #include "test_support.h"
+#include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/assimp_io.h"
 #include "toolkit/formats/model_bytes.h"
 #include "toolkit/formats/model_io.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -130,8 +132,43 @@ TEST(IfcIo, WebIfcsCodeCacheIsKeptAndChangesNoModel) {
     test::write_text(folder / "web-ifc-api-node.js.v8-code-cache.boxlod-tmp999999999", "a killed reader's");
     EXPECT_EQ(model_bytes(load_model(ifc)), first);
     EXPECT_NE(test::read_text(cache.string()), damaged);
+    // Another source (a comment added): its cache is made again.
+    const std::string made_again = test::read_text(cache.string());
+    test::write_text(folder / "web-ifc-api-node.js",
+                     test::read_text(folder / "web-ifc-api-node.js") + "\n// another version\n");
+    EXPECT_EQ(model_bytes(load_model(ifc)), first);
+    EXPECT_NE(test::read_text(cache.string()), made_again);
     EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()),
               4);  // nothing else left
+}
+
+// What web-ifc reads without a word is refused before it runs: a file cut
+// short after a whole entity, placements in a cycle; a comment naming an
+// entity is no reference, and nesting is not limited (chains of boolean cuts).
+TEST(IfcIo, FilesCutShortOrCyclicAreRefusedBeforeWebIfc) {
+    const std::string folder = std::string(BOXLOD_TEST_DATA) + "/../bad_inputs/ifc4/";
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(folder + "ends_early.ifc");
+              }).find("does not end with 'END-ISO-10303-21;'"),
+              std::string::npos);
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(folder + "placement_cycle.ifc");
+              }).find("#30: references form a cycle"),
+              std::string::npos);
+    std::string text = test::read_text(std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc");
+    const std::string site = "#30=IFCLOCALPLACEMENT($,#13);";
+    ASSERT_NE(text.find(site), std::string::npos);
+    text.replace(text.find(site), site.size(), "/* #30 is the site's: #30=X(#30); */\n" + site);
+    const fs::path commented = test::scratch_folder("ifc_commented") / "commented.ifc";
+    test::write_text(commented, text);
+    EXPECT_EQ(test::input_error_of([&] { load_model(commented.string()); }), "");
+    std::string chain = "DATA;\n#1=A(#2);\n";
+    for (int k = 2; k < 400; ++k) chain += "#" + std::to_string(k) + "=A(#" + std::to_string(k + 1) + ");\n";
+    chain += "#400=A($);\nENDSEC;\nEND-ISO-10303-21;\n";
+    EXPECT_EQ(
+        test::input_error_of([&] { check_step_file(chain, "deep.ifc", std::numeric_limits<int>::max()); }),
+        "");
+    EXPECT_NE(test::input_error_of([&] { check_step_file(chain, "deep.ifc", 200); }), "");
 }
 
 // Per part (an element with a GlobalId): the surface area and bounds of what it draws.
@@ -183,7 +220,7 @@ TEST(IfcIo, WebIfcAndAssimpReadTheSameParts) {
     for (const Node& node : by_web_ifc.nodes)
         for (const Primitive& p : node.primitives) {
             EXPECT_GT(p.triangle_count(), 0u) << node.name;  // web-ifc's empty meshes are left out
-            drawn[std::size_t(p.material)] = true;
+            drawn.at(std::size_t(p.material)) = true;
         }
     EXPECT_EQ(std::count(drawn.begin(), drawn.end(), false), 0);  // and their materials
     EXPECT_EQ(ours.size(), 110u);
