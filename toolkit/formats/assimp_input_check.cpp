@@ -172,10 +172,7 @@ std::size_t each_reference(std::string_view bytes, std::size_t i, Reference&& re
     for (; i < bytes.size() && bytes[i] != ';'; ++i) {
         char c = bytes[i];
         if (c == '\'') {  // a string; '' is a quote inside it
-            for (++i;
-                 i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\''));
-                 ++i)
-                if (bytes[i] == '\'') ++i;
+            i = step_string_end(bytes, i);
         } else if (c == '(') {
             ++depth;
         } else if (c == ')') {
@@ -196,9 +193,7 @@ std::string blank_comments(std::string_view bytes) {
     std::string text(bytes);
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (text[i] == '\'') {  // a string; '' is a quote inside it
-            for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\''));
-                 ++i)
-                if (text[i] == '\'') ++i;
+            i = step_string_end(text, i);
         } else if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '*') {
             const std::size_t end = std::min(text.find("*/", i + 2), text.size() - 2) + 2;
             std::fill(text.begin() + std::ptrdiff_t(i), text.begin() + std::ptrdiff_t(end), ' ');
@@ -302,6 +297,12 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
 }
 
 }  // namespace
+
+std::size_t step_string_end(std::string_view text, std::size_t i) {
+    for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\'')); ++i)
+        if (text[i] == '\'') ++i;
+    return i;
+}
 
 void check_step_file(std::string_view bytes, const std::string& file, int max_depth) {
     std::size_t end = bytes.find_last_not_of(" \t\r\n");

@@ -5,6 +5,7 @@
 // than max_nesting_depth (ISO 10303-21: entity instances `#N = TYPE(...);`), and
 // XML (COLLADA, X3D) nested deeper than that.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -13,6 +14,10 @@ namespace boxlod {
 // `bytes` is the whole file, `extension` lower case with its dot. Throws
 // InputError naming `file` and the place.
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file);
+
+// Where the STEP string opening at text[i] ends: its closing quote ('' is a
+// quote inside it), or text.size() if none.
+std::size_t step_string_end(std::string_view text, std::size_t i);
 
 // The STEP checks alone, references nested at most `max_depth` deep: also what
 // web-ifc needs before it reads an IFC file (ifc_io.h), as it reads a file cut

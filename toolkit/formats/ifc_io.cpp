@@ -143,10 +143,7 @@ void check_ifc_references(std::string_view bytes, const std::string& path) {
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const char c = bytes[i];
         if (c == '\'') {  // a string: '' inside it is a quote
-            for (++i;
-                 i < bytes.size() && !(bytes[i] == '\'' && (i + 1 >= bytes.size() || bytes[i + 1] != '\''));
-                 ++i)
-                if (bytes[i] == '\'') ++i;
+            i = step_string_end(bytes, i);
         } else if (c == '/' && i + 1 < bytes.size() && bytes[i + 1] == '*') {
             const std::size_t end = bytes.find("*/", i + 2);
             i = end == std::string_view::npos ? bytes.size() : end + 1;
