@@ -1,4 +1,4 @@
-// boxlod as a library (toolkit/boxlod.h): a building's chain, a level within
+// boxlod as a library (toolkit/boxlod.h): a building's hybrid chain, a level within
 // 5 % of its bytes, and how that level looks against the original from twice
 // the framing distance. Usage: api_example MODEL OUT.glb
 #include "toolkit/boxlod.h"
@@ -13,9 +13,9 @@ int main(int argc, char** argv) {
     try {
         const boxlod::Model model = boxlod::read_model(argv[1]);
         boxlod::LodParameters parameters;
+        parameters.level_mode = boxlod::LevelMode::hybrid;  // box, simplified sub-tree or geometry per part
         for (const boxlod::Level& level : boxlod::build_chain(model, parameters))
             std::printf("chain level %d from %.1f m\n", level.level, level.switch_distance);
-        parameters.level_mode = boxlod::LevelMode::hybrid;
         parameters.budgets = {{true, 0.05}};  // 5 % of the original's bytes
         const boxlod::Level level = boxlod::build_levels_by_budget(model, parameters).front();
         boxlod::write_model(level.model, argv[2]);

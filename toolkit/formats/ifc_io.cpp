@@ -194,17 +194,6 @@ std::string web_ifc_module() {
                : "";
 }
 
-std::string ifc_schema(const std::string& header) {
-    const std::size_t at = header.find("FILE_SCHEMA");
-    if (at == std::string::npos) return "";
-    const std::size_t open = header.find('\'', at),
-                      close = open == std::string::npos ? open : header.find('\'', open + 1);
-    if (close == std::string::npos || close - open > 64) return "";
-    std::string schema = header.substr(open + 1, close - open - 1);
-    for (char& c : schema) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return schema;
-}
-
 Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
     {
@@ -216,7 +205,7 @@ Model import_ifc_with_web_ifc(const std::string& path) {
     if (module.empty())
         throw_input_error(
             path, "",
-            "reading IFC 4 needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
+            "reading IFC needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
     // A minute, and a second more per megabyte; no address-space limit: a
     // WebAssembly memory reserves far more than it uses (web-ifc caps its own).
     const ChildLimits limits{0, 60 + double(file_bytes) / 1e6};

@@ -1,4 +1,4 @@
-// IFC 4 and 4x3 (and 2x3 where asked) read with web-ifc (npm, MPL-2.0; pinned
+// IFC 2x3, 4 and 4x3 read with web-ifc (npm, MPL-2.0; pinned
 // in web_ifc_version.txt, installed by `make demo` and `make test` into the
 // npm cache folder), run by node in a child process: the spatial structure as
 // the node tree (Project > Site > Building > Storey > element > its parts,
@@ -18,9 +18,6 @@ namespace boxlod {
 // cache folder ($BOXLOD_NPM_CACHE, else $XDG_CACHE_HOME or ~/.cache, /boxlod/npm);
 // "" when it is not there.
 std::string web_ifc_module();
-
-// The schema a STEP file's header names (FILE_SCHEMA(('IFC4'))), upper case; "" if none.
-std::string ifc_schema(const std::string& header);
 
 // Every #N an entity names is one the file defines (ISO 10303-21), each
 // defined once: web-ifc leaves out what a dangling reference leads to without

@@ -45,9 +45,11 @@ function spatialNodes(api, model, tree) {
   return {nodes, indexOf};
 }
 
-// Each placed geometry in world coordinates (y up, as web-ifc gives them), in double.
+// Each placed geometry in world coordinates (y up, as web-ifc gives them), in
+// double, and the bounds of them all. Plain indexing: a view per vertex made
+// this loop and its garbage a sixth of a read.
 function pieces(api, model, nodes, indexOf) {
-  const out = [];
+  const out = [], low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
   api.StreamAllMeshes(model, (mesh) => {
     let node = indexOf.get(mesh.expressID);
     if (node === undefined) {  // an element outside the spatial structure: under the root
@@ -64,10 +66,14 @@ function pieces(api, model, nodes, indexOf) {
       const count = data.length / 6;
       const positions = new Float64Array(count * 3), normals = new Float32Array(count * 3);
       for (let v = 0; v < count; ++v) {
-        const [x, y, z, nx, ny, nz] = data.subarray(v * 6, v * 6 + 6);
+        const x = data[v * 6], y = data[v * 6 + 1], z = data[v * 6 + 2];
+        const nx = data[v * 6 + 3], ny = data[v * 6 + 4], nz = data[v * 6 + 5];
         for (let r = 0; r < 3; ++r) {
-          positions[v * 3 + r] = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r];
+          const p = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r];
+          positions[v * 3 + r] = p;
           normals[v * 3 + r] = t[r] * nx + t[4 + r] * ny + t[8 + r] * nz;
+          if (p < low[r]) low[r] = p;
+          if (p > high[r]) high[r] = p;
         }
       }
       geometry.delete();
@@ -75,19 +81,31 @@ function pieces(api, model, nodes, indexOf) {
       out.push({node, color: [c.x, c.y, c.z, c.w], positions, normals, indices});
     }
   });
-  return out;
+  return {placed: out, low, high};
+}
+
+// The nodes that draw something, themselves or below them, and the root:
+// an IFC file's annotations and spaces (which web-ifc does not mesh) would
+// be hundreds of empty leaves. Renumbered in order, parents first.
+function drawnNodes(nodes, placed) {
+  const keep = new Array(nodes.length).fill(false);
+  keep[0] = nodes.length > 0;
+  for (const piece of placed)
+    for (let n = piece.node; n >= 0 && !keep[n]; n = nodes[n].parent) keep[n] = true;
+  const renumbered = [], kept = [];
+  nodes.forEach((node, n) => {
+    if (!keep[n]) return;
+    renumbered[n] = kept.length;
+    kept.push({...node, parent: node.parent < 0 ? -1 : renumbered[node.parent]});
+  });
+  for (const piece of placed) piece.node = renumbered[piece.node];
+  return kept;
 }
 
 // A model far from its file's origin (a georeferenced one) is moved, in
 // double, to the middle of its bounds in whole units, which the answer names
 // as its origin; a near one keeps the file's coordinates.
-function originOf(placed) {
-  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
-  for (const piece of placed)
-    for (let i = 0; i < piece.positions.length; ++i) {
-      low[i % 3] = Math.min(low[i % 3], piece.positions[i]);
-      high[i % 3] = Math.max(high[i % 3], piece.positions[i]);
-    }
+function originOf({placed, low, high}) {
   const middle = low.map((l, r) => (l + high[r]) / 2);
   return placed.length > 0 && Math.hypot(...middle) > 1e4 ? middle.map(Math.round) : [0, 0, 0];
 }
@@ -97,7 +115,8 @@ function packed(placed, origin) {
   let offset = 0;
   for (const piece of placed) {
     const positions = new Float32Array(piece.positions.length);
-    for (let i = 0; i < positions.length; ++i) positions[i] = piece.positions[i] - origin[i % 3];
+    for (let i = 0; i < positions.length; i += 3)
+      for (let r = 0; r < 3; ++r) positions[i + r] = piece.positions[i + r] - origin[r];
     const bytes = [Buffer.from(positions.buffer), Buffer.from(piece.normals.buffer), Buffer.from(piece.indices.buffer)];
     const count = positions.length / 3;
     out.push({node: piece.node, color: piece.color, positions: [offset, count], normals: [offset + bytes[0].length, count],
@@ -171,10 +190,11 @@ function requireWithCodeCache(folder) {
     const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
     if (model < 0) throw new Error('web-ifc cannot open it');
     const {nodes, indexOf} = spatialNodes(api, model, await api.properties.getSpatialStructure(model));
-    const placed = pieces(api, model, nodes, indexOf);
-    const origin = originOf(placed);
-    const {out, chunks} = packed(placed, origin);
-    answer({schema: api.GetModelSchema(model), origin, nodes, pieces: out}, chunks);
+    const meshes = pieces(api, model, nodes, indexOf);
+    const origin = originOf(meshes);
+    const drawn = drawnNodes(nodes, meshes.placed);
+    const {out, chunks} = packed(meshes.placed, origin);
+    answer({schema: api.GetModelSchema(model), origin, nodes: drawn, pieces: out}, chunks);
     keep();  // after a read, with the functions it compiled
   } catch (error) {
     answer({error: String(error && error.message ? error.message : error)}, []);

@@ -17,17 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// IFC 2x3 (and the older 2x) through assimp, whose reading the project's
-// measurements were made with; IFC 4 and 4x3, which assimp cannot read, through web-ifc.
-bool read_by_web_ifc(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::string header;
-    for (std::string line;
-         header.size() < (1 << 20) && header.find("ENDSEC") == std::string::npos && std::getline(in, line);)
-        header += line + '\n';  // the HEADER section: FILE_NAME may be long
-    return !ifc_schema(header).starts_with("IFC2X");
-}
-
 // The file itself, by its extension.
 Model load_file(const std::string& path, const ReadOptions& options) {
     check_input_file(path, "model file");
@@ -36,9 +25,10 @@ Model load_file(const std::string& path, const ReadOptions& options) {
     if (options.chain_level > 0)
         throw_input_error(path, "", "only a glTF LoD chain (build --chain) has levels to choose");
     if (extension == ".json" || extension == ".jsonl") return import_cityjson(path, options.city_lod);
-    if (extension == ".ifc" && read_by_web_ifc(path)) return import_ifc_with_web_ifc(path);
-    static const char* assimp_formats[] = {".fbx", ".obj",   ".dae", ".ply", ".off",  ".3ds", ".ifc", ".stl",
-                                           ".x3d", ".blend", ".ase", ".lwo", ".ms3d", ".x",   ".3mf", ".ac"};
+    if (extension == ".ifc")
+        return import_ifc_with_web_ifc(path);  // every schema (docs/design.md: Scene model)
+    static const char* assimp_formats[] = {".fbx",   ".obj", ".dae", ".ply",  ".off", ".3ds", ".stl", ".x3d",
+                                           ".blend", ".ase", ".lwo", ".ms3d", ".x",   ".3mf", ".ac"};
     for (const char* known : assimp_formats)
         if (extension == known) return import_with_assimp(path);
     throw_input_error(path, "",
