@@ -1,7 +1,7 @@
 // boxlod's rasterizer against Mesa's llvmpipe on the same scenes, in one run:
 // - frame: ~1M small triangles at 1920x1080 with per-pixel Blinn-Phong;
 // - model: real buildings at 1920x1080 in normal mode (colour maps, normal
-//   maps, trilinear mip-mapping): the FZK-Haus (IFC, 16,037 faces) and the
+//   maps, trilinear mip-mapping): the FZK-Haus (IFC by web-ifc, 35,792 faces) and the
 //   `manual` sample (19,049 faces), framed from +X+Y+Z.
 //   build/experiments/rasterizer_benchmark [--benchmark_filter=...]
 // llvmpipe runs with LP_NUM_THREADS set to the thread count of the case.

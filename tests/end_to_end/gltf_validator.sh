@@ -46,7 +46,7 @@ quiet "$boxlod" build "$work/house.glb" -o "$work/baked_level" --level 1 --resol
 grep -q '^nodes_baked = [1-9]' "$work/baked_level/house_lod.stats.txt" || { echo "gltf_validator: no baked proxy to validate" >&2; exit 1; }
 mkdir "$work/chain"
 quiet "$boxlod" build "$work/house.glb" --chain -o "$work/chain/house.gltf" --resolution 256   # chains (MSFT_lod)
-quiet "$boxlod" build "$fzk" --chain -o "$work/fzk_chain.glb" --resolution 256
+quiet "$boxlod" build "$fzk" --chain --level-mode hybrid -o "$work/fzk_chain.glb" --resolution 256
 /usr/bin/python3 "$here/make_district.py" "$work/district.city.json" 4     # CityJSON: the origin as the root's translation
 quiet "$boxlod" convert "$work/district.city.json" -o "$work/district.glb"
 quiet "$boxlod" build "$work/district.city.json" --chain -o "$work/district_chain.glb" --resolution 256

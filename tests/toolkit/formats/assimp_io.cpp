@@ -71,6 +71,22 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
     EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
 }
 
+// A reference to an entity the file lacks crashes assimp's IFC reader: its
+// isolated read (docs/design.md: Errors) makes that one InputError naming the
+// file and the reader. boxlod reads IFC by web-ifc, which refuses the file first.
+TEST(AssimpIo, ACrashInsideAssimpIsAnInputError) {
+    std::string text = test::read_text(test::fzk_haus_ifc);
+    const std::string placement = "#564= IFCLOCALPLACEMENT($,#44);";
+    ASSERT_NE(text.find(placement), std::string::npos);
+    text.replace(text.find(placement), placement.size(), "#564= IFCLOCALPLACEMENT(#99999999,#44);");
+    const auto file = test::scratch_folder("assimp_crash") / "missing_placement.ifc";
+    test::write_text(file, text);
+    const std::string error = test::input_error_of([&] { import_with_assimp(file.string()); });
+    EXPECT_EQ(error.find(file.string() + ": assimp's importer crashed on this file"), 0u) << error;
+    EXPECT_NE(test::input_error_of([&] { load_model(file.string()); }).find("#564: names #99999999"),
+              std::string::npos);
+}
+
 // One file of each format the original program's users have, from Debian's assimp-testmodels.
 TEST(AssimpIo, EveryFormatReadsWithItsHierarchy) {
     struct Case {
