@@ -53,7 +53,7 @@ cluster_packages=(slurmctld slurmd slurm-client munge)
 
 wanted=("${build_packages[@]}" "${data_packages[@]}" "${paper_packages[@]}" "${cluster_packages[@]}")
 # make demo: the program, the FZK-Haus and the plot; no tests, benchmarks, viewer test or LaTeX.
-# IFC 4 is read by web-ifc under Node.js (toolkit/formats/ifc_io.h), installed below.
+# IFC is read by web-ifc under Node.js (toolkit/formats/ifc_io.h), installed below.
 program_packages+=(nodejs)
 command -v npm > /dev/null 2>&1 || program_packages+=(npm)
 [ "${1:-}" = demo ] && wanted=("${program_packages[@]}" assimp-testmodels python3-matplotlib)

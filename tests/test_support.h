@@ -60,6 +60,15 @@ inline std::string read_text(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// `text` with its first `from` made `to` (a test's edit of a real file); a
+// failure when `from` is not there, since the edit would change nothing.
+inline std::string replaced_once(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the text";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
 inline std::string base64(const std::vector<std::uint8_t>& bytes) {
     static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     std::string out;

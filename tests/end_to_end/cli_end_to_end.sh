@@ -131,12 +131,12 @@ bad "simplify to fewer faces than keep a triangle" simplify "$ifc" --faces 1 -o 
 check "the refusal blames the request, not the model" grep -q "^boxlod: --faces 1: simplifying .* to 1 face(s) keeps no triangle; ask for more\$" "$work/err"
 check "no output after a failed simplify" test ! -e "$work/none.glb"
 # sweep: one mode, two levels (the first and the last), one view of the FZK-Haus; a bad config is one line, exit 2.
-printf 'models = %s\nlevel_modes = top-down\nlevels = 0, 4\nviews = -Z\nwidth = 64\nheight = 48\nmetrics = psnr, ssim\n' "$ifc" > "$work/sweep.txt"
+printf 'models = %s\nlevel_modes = top-down\nlevels = 0, 5\nviews = -Z\nwidth = 64\nheight = 48\nmetrics = psnr, ssim\n' "$ifc" > "$work/sweep.txt"
 check "sweep succeeds" test "$(status_of "$boxlod" sweep "$work/sweep.txt" -o "$work/sweep" --threads 2)" = 0
 check "sweep prints its counts" bash -c "grep -qx 'rows = 2' '$work/out' && grep -qx 'rows_computed = 2' '$work/out' && grep -qx 'lods_built = 2' '$work/out'"
 check "sweep writes a header and two rows" test "$(wc -l < "$work/sweep/results.csv")" = 3
 check "sweep level 0 is the original" grep -q "^$ifc,top-down,expanded,linear,0,-Z,1,normal,5,35792,.*,inf,1\$" "$work/sweep/results.csv"
-check "sweep level 4 is one box" grep -q "^$ifc,top-down,expanded,linear,4,-Z,1,normal,5,6," "$work/sweep/results.csv"
+check "sweep level 5 is one box" grep -q "^$ifc,top-down,expanded,linear,5,-Z,1,normal,5,6," "$work/sweep/results.csv"
 check "sweep reports progress on stderr" grep -q "ETA" "$work/err"
 check "sweep again skips every row" bash -c "'$boxlod' sweep '$work/sweep.txt' -o '$work/sweep' 2>/dev/null | grep -qx 'rows_skipped = 2'"
 # Another build (here the same executable with one byte more) may draw other pixels: it does not take these rows.

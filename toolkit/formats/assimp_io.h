@@ -1,5 +1,7 @@
-// Every other format users have (FBX, OBJ, DAE, PLY, OFF, 3DS, IFC 2x3, ...),
-// read with assimp, hierarchy kept where the format has one.
+// Every other format users have (FBX, OBJ, DAE, PLY, OFF, 3DS, ...), read
+// with assimp, hierarchy kept where the format has one; it reads IFC 2x3
+// too, which boxlod reads by web-ifc (assimp's reading is the peer of its
+// benchmark and tests).
 #pragma once
 #include "toolkit/model/model.h"
 

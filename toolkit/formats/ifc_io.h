@@ -1,10 +1,11 @@
-// IFC 2x3, 4 and 4x3 read with web-ifc (npm, MPL-2.0; pinned
+// IFC (2x, 2x3, 4, 4x3) read with web-ifc (npm, MPL-2.0; pinned
 // in web_ifc_version.txt, installed by `make demo` and `make test` into the
 // npm cache folder), run by node in a child process: the spatial structure as
 // the node tree (Project > Site > Building > Storey > element > its parts,
 // from IfcRelAggregates and IfcRelContainedInSpatialStructure), each element's
 // colour and transparency from its styles, its IFC type as the node's rule and
-// its GlobalId as the node's source id (docs/design.md: Scene model). The first read keeps V8's
+// its GlobalId as the node's source id; nodes that draw nothing, themselves
+// or below them, left out (docs/design.md: Scene model). The first read keeps V8's
 // compiled code of web-ifc beside the module, for the next reads to load rather than compile.
 #pragma once
 #include "toolkit/model/model.h"

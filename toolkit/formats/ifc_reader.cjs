@@ -62,6 +62,10 @@ function pieces(api, model, nodes, indexOf) {
       const geometry = api.GetGeometry(model, placed.geometryExpressID);
       const data = api.GetVertexArray(geometry.GetVertexData(), geometry.GetVertexDataSize());
       const indices = new Uint32Array(api.GetIndexArray(geometry.GetIndexData(), geometry.GetIndexDataSize()));
+      if (indices.length === 0) {  // web-ifc meshed it to nothing: it neither draws nor keeps its node
+        geometry.delete();
+        continue;
+      }
       const t = placed.flatTransformation;  // column-major 4x4
       const count = data.length / 6;
       const positions = new Float64Array(count * 3), normals = new Float32Array(count * 3);

@@ -9,7 +9,6 @@
 #include "toolkit/model/model_subtree.h"
 
 #include <filesystem>
-#include <fstream>
 
 namespace boxlod {
 

@@ -1,6 +1,6 @@
 // Loading and saving models by file extension: glTF and CityJSON natively,
-// IFC 4 and 4x3 with web-ifc (toolkit/formats/ifc_io.h), everything else
-// (IFC 2x3 too) as assimp reads it.
+// IFC with web-ifc (toolkit/formats/ifc_io.h), everything else as assimp
+// reads it.
 #pragma once
 #include "toolkit/model/model.h"
 

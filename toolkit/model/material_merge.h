@@ -1,5 +1,5 @@
 // Materials as a client wants them: an importer's copies of one material
-// (assimp gives each IFC shape its own) merged, and materials that no
+// (assimp gives each shape of an IFC file its own) merged, and materials that no
 // primitive draws (those of parts a simplification removed) dropped.
 #pragma once
 #include "toolkit/model/model.h"

@@ -75,10 +75,9 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
 // isolated read (docs/design.md: Errors) makes that one InputError naming the
 // file and the reader. boxlod reads IFC by web-ifc, which refuses the file first.
 TEST(AssimpIo, ACrashInsideAssimpIsAnInputError) {
-    std::string text = test::read_text(test::fzk_haus_ifc);
-    const std::string placement = "#564= IFCLOCALPLACEMENT($,#44);";
-    ASSERT_NE(text.find(placement), std::string::npos);
-    text.replace(text.find(placement), placement.size(), "#564= IFCLOCALPLACEMENT(#99999999,#44);");
+    const std::string text =
+        test::replaced_once(test::read_text(test::fzk_haus_ifc), "#564= IFCLOCALPLACEMENT($,#44);",
+                            "#564= IFCLOCALPLACEMENT(#99999999,#44);");
     const auto file = test::scratch_folder("assimp_crash") / "missing_placement.ifc";
     test::write_text(file, text);
     const std::string error = test::input_error_of([&] { import_with_assimp(file.string()); });

@@ -60,12 +60,10 @@ TEST(IfcIo, TheSpatialStructureIsTheTreeWithColoursFromStyles) {
 // origin in double, so it reads as it does near the file's origin.
 TEST(IfcIo, AFarModelKeepsItsOriginAndItsPrecision) {
     const std::string near_path = std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc";
-    std::string text = test::read_text(near_path);
-    const std::string site = "#30=IFCLOCALPLACEMENT($,#13);";
-    ASSERT_NE(text.find(site), std::string::npos);
-    text.replace(text.find(site), site.size(),
-                 "#30=IFCLOCALPLACEMENT($,#17);\n#16=IFCCARTESIANPOINT((150000.,400000.,0.));\n#17="
-                 "IFCAXIS2PLACEMENT3D(#16,#11,#12);");
+    const std::string text = test::replaced_once(
+        test::read_text(near_path), "#30=IFCLOCALPLACEMENT($,#13);",
+        "#30=IFCLOCALPLACEMENT($,#17);\n#16=IFCCARTESIANPOINT((150000.,400000.,0.));\n#17="
+        "IFCAXIS2PLACEMENT3D(#16,#11,#12);");
     const fs::path far_path = test::scratch_folder("ifc_far") / "far.ifc";
     test::write_text(far_path, text);
     const Model near = load_model(near_path), far = load_model(far_path.string());
@@ -148,10 +146,10 @@ TEST(IfcIo, FilesCutShortOrCyclicAreRefusedBeforeWebIfc) {
                   load_model(folder + "placement_cycle.ifc");
               }).find("#30: references form a cycle"),
               std::string::npos);
-    std::string text = test::read_text(std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc");
     const std::string site = "#30=IFCLOCALPLACEMENT($,#13);";
-    ASSERT_NE(text.find(site), std::string::npos);
-    text.replace(text.find(site), site.size(), "/* #30 is the site's: #30=X(#30); */\n" + site);
+    const std::string text =
+        test::replaced_once(test::read_text(std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc"), site,
+                            "/* #30 is the site's: #30=X(#30); */\n" + site);
     const fs::path commented = test::scratch_folder("ifc_commented") / "commented.ifc";
     test::write_text(commented, text);
     EXPECT_EQ(test::input_error_of([&] { load_model(commented.string()); }), "");
@@ -167,6 +165,37 @@ TEST(IfcIo, FilesCutShortOrCyclicAreRefusedBeforeWebIfc) {
         test::input_error_of([&] { check_step_file(chain, "deep.ifc", std::numeric_limits<int>::max()); }),
         "");
     EXPECT_NE(test::input_error_of([&] { check_step_file(chain, "deep.ifc", 200); }), "");
+}
+
+// Nodes that draw nothing, themselves or below them (an empty storey, a
+// space, which web-ifc does not mesh), are left out; an element outside the
+// spatial structure hangs under the root; parents come before children.
+TEST(IfcIo, NodesThatDrawNothingAreLeftOut) {
+    std::string text = test::read_text(std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc");
+    text = test::replaced_once(
+        text, "#42=IFCRELAGGREGATES('2G3E3fPEv1gQ6Ah9c2vZ4N',$,$,$,#33,(#35,#37));",
+        "#38=IFCBUILDINGSTOREY('2Fj2c1nb14$hN9dGs0UT7m',$,'Empty attic',$,$,#36,$,$,"
+        ".ELEMENT.,6.);\n#39=IFCSPACE('3Fj2c1nb14$hN9dGs0UT7m',$,'Lobby',$,$,#34,$,$,"
+        ".ELEMENT.,.INTERNAL.,$);\n#42=IFCRELAGGREGATES('2G3E3fPEv1gQ6Ah9c2vZ4N',$,$,$,#33,"
+        "(#35,#37,#38));\n#43=IFCRELAGGREGATES('3G3E3fPEv1gQ6Ah9c2vZ4N',$,$,$,#35,(#39));");
+    text = test::replaced_once(
+        text, "#80=", "#90=IFCWALL('0wB2YO$MX4xv5uCqZZG05x',$,'Loose wall',$,$,#56,#55,$,$);\n#80=");
+    const fs::path path = test::scratch_folder("ifc_pruned") / "pruned.ifc";
+    test::write_text(path, text);
+    const Model model = load_model(path.string());
+    std::vector<std::string> names;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        names.push_back(model.nodes[n].name);
+        EXPECT_LT(model.nodes[n].parent, int(n)) << model.nodes[n].name;
+    }
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"First floor", "Glass floor", "Ground floor", "House",
+                                               "Loose wall", "Red wall", "Site", "Test project"}));
+    EXPECT_EQ(model.nodes[std::size_t(node_named(model, "Red wall"))].parent,
+              node_named(model, "Ground floor"));
+    EXPECT_EQ(model.nodes[std::size_t(node_named(model, "Glass floor"))].parent,
+              node_named(model, "First floor"));
+    EXPECT_EQ(model.nodes[std::size_t(node_named(model, "Loose wall"))].parent, 0);
 }
 
 // Per part (an element with a GlobalId): the surface area and bounds of what it draws.
