@@ -23,8 +23,9 @@
 namespace boxlod {
 
 // The model at `path`: glTF/GLB, CityJSON (.city.json, .jsonl), IFC (2x to
-// 4x3, through web-ifc in a child process) and what assimp reads; FILE#OBJECT is one object of a city file.
-// `city_lod` picks a CityJSON LoD ("2.2"; "": each object's finest); `chain_level` K > 0 reads level K of a
+// 4x3, through web-ifc in a child process) and what assimp reads;
+// FILE#OBJECT is one object of a city file. `city_lod` picks a CityJSON LoD
+// ("2.2"; "": each object's finest); `chain_level` K > 0 reads level K of a
 // chain (build --chain) as an MSFT_lod client draws it.
 Model read_model(const std::string& path, const std::string& city_lod = "", int chain_level = 0);
 

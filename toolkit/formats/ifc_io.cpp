@@ -110,7 +110,7 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
             values_at<std::uint32_t>(answer, piece.value("indices", json()), 1, path);
         if (normals.size() != positions.size() || indices.size() % 3 != 0)
             throw_input_error(path, "", "web-ifc's piece is malformed");
-        if (indices.empty()) continue;  // web-ifc meshes some elements to nothing: no primitive, no material
+        if (indices.empty()) continue;  // a piece that draws nothing: no primitive, no material
         const int material = material_of(model, materials, piece.value("color", json()), path);
         auto& primitives = model.nodes[std::size_t(node)].primitives;
         auto primitive = std::find_if(primitives.begin(), primitives.end(),

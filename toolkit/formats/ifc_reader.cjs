@@ -46,8 +46,7 @@ function spatialNodes(api, model, tree) {
 }
 
 // Each placed geometry in world coordinates (y up, as web-ifc gives them), in
-// double, and the bounds of them all. Plain indexing: a view per vertex made
-// this loop and its garbage a sixth of a read.
+// double, and the bounds of them all (no second pass over the vertices).
 function pieces(api, model, nodes, indexOf) {
   const out = [], low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
   api.StreamAllMeshes(model, (mesh) => {
