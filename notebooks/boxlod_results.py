@@ -165,18 +165,25 @@ def level_means(results, model):
     return means[means.measured == rows.view.nunique()]
 
 
-def cheapest_bytes(means, original, family, distance, threshold):
-    """The bytes of the family's cheapest level within the threshold at the distance and every farther
-    one (as a chain draws it from its switch on: toolkit/lod/chain/error_by_distance.h), the original's if none
-    is; NaN for a family the sweep did not run on the model."""
+def cheapest_level(means, original, family, distance, threshold):
+    """(level, bytes) of the family's cheapest level within the threshold at the distance and every
+    farther one (as a chain draws it from its switch on: toolkit/lod/chain/error_by_distance.h), (0, the
+    original's bytes) if none is; (None, NaN) for a family the sweep did not run on the model."""
     if means[means.level_mode == family].empty:
-        return float("nan")
+        return None, float("nan")
     distances = sorted(means.distance.unique())
     rows = means[(means.level_mode == family) & (means.distance >= distance)]
     farther = sum(d >= distance for d in distances)
     levels = rows.groupby("level").agg(worst=("error", "max"), measured=("error", "count"), bytes=("bytes", "max"))
-    within = levels[(levels.measured == farther) & (levels.worst <= threshold)]
-    return min([original] + list(within.bytes))
+    within = levels[(levels.measured == farther) & (levels.worst <= threshold) & (levels.bytes < original)]
+    if within.empty:
+        return 0, original
+    return int(within.bytes.idxmin()), within.bytes.min()
+
+
+def cheapest_bytes(means, original, family, distance, threshold):
+    """The bytes of cheapest_level."""
+    return cheapest_level(means, original, family, distance, threshold)[1]
 
 
 def save(fig, stem):

@@ -50,7 +50,6 @@ void name_pages(Lod& lod, const std::string& name) {
 void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory,
                 const std::string& name, const Image8& preview, int threads, bool binary) {
     namespace fs = std::filesystem;
-    std::error_code error;
     // A level's files appear together or not at all: they wait as temporaries
     // until the commit renames them, so even SIGKILL leaves no half level; the
     // folder is made by the first of them and goes with a failed group.
@@ -59,9 +58,6 @@ void export_lod(Lod lod, const LodParameters& chain_parameters, const std::strin
     name_pages(lod, name);
     LodParameters parameters = chain_parameters;
     parameters.current_level = lod.current_level;
-    // The parameter file names its model relative to itself, so the folder can move.
-    fs::path relative = fs::relative(fs::absolute(parameters.model), fs::absolute(directory), error);
-    if (!error && !relative.empty()) parameters.model = relative.string();
     save_parameters(file(".params.txt"), parameters);
     write_png(file(".preview.png"), preview);
     write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));

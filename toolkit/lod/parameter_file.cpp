@@ -134,7 +134,19 @@ LodParameters load_parameters(const std::string& path) {
 }
 
 void save_parameters(const std::string& path, const LodParameters& parameters) {
-    write_text_atomically(path, format_parameters(parameters));
+    namespace fs = std::filesystem;
+    // An absolute model path is kept as the user gave it; a relative one (to
+    // the working folder) is written relative to the file, as it reads back,
+    // so the two can move together.
+    LodParameters saved = parameters;
+    if (fs::path(saved.model).is_relative() && !saved.model.empty()) {
+        std::error_code error;
+        const fs::path folder = fs::absolute(fs::path(path).parent_path(), error).lexically_normal();
+        const fs::path relative =
+            fs::absolute(saved.model, error).lexically_normal().lexically_relative(folder);
+        if (!error && !relative.empty()) saved.model = relative.string();
+    }
+    write_text_atomically(path, format_parameters(saved));
 }
 
 }  // namespace boxlod

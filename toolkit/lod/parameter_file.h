@@ -15,6 +15,7 @@ std::string format_parameters(const LodParameters& parameters);
 // `file` names the source in errors: "file:line: key: what is wrong".
 LodParameters parse_parameters(const std::string& text, const std::string& file);
 LodParameters load_parameters(const std::string& path);
-void save_parameters(const std::string& path, const LodParameters& parameters);  // atomic
+// Atomic; an absolute model path is written as given, a relative one relative to the file.
+void save_parameters(const std::string& path, const LodParameters& parameters);
 
 }  // namespace boxlod

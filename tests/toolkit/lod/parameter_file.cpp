@@ -9,7 +9,7 @@ using namespace boxlod;
 
 TEST(Parameters, SaveThenLoadGivesTheSameValuesExactly) {
     LodParameters p;
-    p.model = "house.glb";
+    p.model = "/srv/models/house.glb";
     p.level_mode = LevelMode::box_diagonal;
     p.wanted_levels = 7;
     p.current_level = 3;
@@ -39,13 +39,31 @@ TEST(Parameters, SaveThenLoadGivesTheSameValuesExactly) {
     std::string path = (folder / "p.params.txt").string();
     save_parameters(path, p);
     LodParameters q = load_parameters(path);
-    EXPECT_EQ(q.model, (folder / "house.glb").string());  // relative to the parameter file
-    q.model = p.model;
     EXPECT_EQ(format_parameters(q), format_parameters(p));
     EXPECT_EQ(q.fovy, p.fovy);
     EXPECT_EQ(q.distance, p.distance);
     EXPECT_EQ(q.camera->position, p.camera->position);
     EXPECT_EQ(q.light->position, p.light->position);
+}
+
+// An absolute model path is kept as given (no run of "../" spelling out the
+// folders between); a relative one, given from the working folder, is
+// written relative to the file and reads back to the same model from anywhere.
+TEST(Parameters, TheModelIsNamedAsGivenOrRelativeToTheFile) {
+    namespace fs = std::filesystem;
+    auto folder = test::scratch_folder("parameters_model");
+    LodParameters p;
+    p.model = "/srv/models/house.ifc";
+    save_parameters((folder / "out" / "absolute.params.txt").string(), p);
+    EXPECT_NE(test::read_text(folder / "out" / "absolute.params.txt").find("model = /srv/models/house.ifc\n"),
+              std::string::npos);
+    p.model = (folder / "in" / "house.ifc").lexically_relative(fs::current_path()).string();
+    ASSERT_TRUE(fs::path(p.model).is_relative());
+    save_parameters((folder / "out" / "relative.params.txt").string(), p);
+    EXPECT_NE(test::read_text(folder / "out" / "relative.params.txt").find("model = ../in/house.ifc\n"),
+              std::string::npos);
+    EXPECT_EQ(fs::weakly_canonical(load_parameters((folder / "out" / "relative.params.txt").string()).model),
+              fs::weakly_canonical(folder / "in" / "house.ifc"));
 }
 
 TEST(Parameters, DefaultsAndCommentsParse) {
