@@ -3,12 +3,12 @@
 # and depths, on copies of the same inputs, with outputs into folders that do
 # not exist yet, give byte-identical files, and no file names the folder it
 # was built in (docs/design.md: Files), but the parameter files of a model
-# given by its absolute path, which name it as given (docs/design.md:
-# Parameter file).
+# given by its absolute path, which name it as given
+# (docs/design.md: Parameter file).
 set -euo pipefail
 boxlod=$1
 ifc=/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc
-work=$(mktemp -d)
+work=$(cd "$(mktemp -d)" && pwd)
 trap 'rm -rf "$work"' EXIT
 run_in() {  # run_in FOLDER: every command that writes an asset, from FOLDER
   mkdir -p "$1"
@@ -33,7 +33,7 @@ for f in $files; do
   cmp -s "$work/one/$f" "$work/two/deeper/still/$f" || { echo "FAIL: $f differs between the two folders"; failures=$((failures + 1)); }
 done
 for folder in "$work/one" "$work/two/deeper/still"; do
-  grep -qx "model = $folder/house.ifc" "$folder/absolute/house_lod_L2.params.txt" ||
+  grep -qxF "model = $folder/house.ifc" "$folder/absolute/house_lod_L0.params.txt" ||
     { echo "FAIL: $folder/absolute: the parameter file does not name the model as given"; failures=$((failures + 1)); }
 done
 if grep -rla --exclude='*.params.txt' -e "$work" "$work/one" "$work/two" ||

@@ -26,7 +26,7 @@ struct LevelDistances {
 };
 
 struct LodParameters {
-    std::string model;     // the model file (relative paths are relative to the parameter file)
+    std::string model;     // the model file (relative: to the working folder; parameter_file.h)
     std::string city_lod;  // a CityJSON model's LoD read ("": each object's finest;
                            // toolkit/formats/cityjson_import.h)
     LevelMode level_mode = LevelMode::top_down;

@@ -127,9 +127,17 @@ LodParameters parse_parameters(const std::string& text, const std::string& file)
 
 LodParameters load_parameters(const std::string& path) {
     LodParameters p = parse_parameters(read_input_file(path, "parameter file"), path);
-    // The model is named relative to the parameter file.
-    if (!p.model.empty() && std::filesystem::path(p.model).is_relative())
-        p.model = (std::filesystem::path(path).parent_path() / p.model).lexically_normal().string();
+    // The file names a relative model relative to itself; in memory it is
+    // relative to the working folder again, so saving it elsewhere keeps it
+    // relative (save_parameters).
+    namespace fs = std::filesystem;
+    if (!p.model.empty() && fs::path(p.model).is_relative()) {
+        fs::path model = (fs::path(path).parent_path() / p.model).lexically_normal();
+        std::error_code error;
+        const fs::path working = fs::current_path(error);
+        if (model.is_absolute() && !error) model = model.lexically_proximate(working);
+        p.model = model.string();
+    }
     return p;
 }
 
@@ -140,11 +148,11 @@ void save_parameters(const std::string& path, const LodParameters& parameters) {
     // so the two can move together.
     LodParameters saved = parameters;
     if (fs::path(saved.model).is_relative() && !saved.model.empty()) {
-        std::error_code error;
-        const fs::path folder = fs::absolute(fs::path(path).parent_path(), error).lexically_normal();
-        const fs::path relative =
-            fs::absolute(saved.model, error).lexically_normal().lexically_relative(folder);
-        if (!error && !relative.empty()) saved.model = relative.string();
+        std::error_code folder_error, model_error;
+        const fs::path folder = fs::absolute(path, folder_error).parent_path().lexically_normal();
+        const fs::path model = fs::absolute(saved.model, model_error).lexically_normal();
+        const fs::path relative = model.lexically_relative(folder);
+        if (!folder_error && !model_error && !relative.empty()) saved.model = relative.string();
     }
     write_text_atomically(path, format_parameters(saved));
 }

@@ -62,8 +62,21 @@ TEST(Parameters, TheModelIsNamedAsGivenOrRelativeToTheFile) {
     save_parameters((folder / "out" / "relative.params.txt").string(), p);
     EXPECT_NE(test::read_text(folder / "out" / "relative.params.txt").find("model = ../in/house.ifc\n"),
               std::string::npos);
-    EXPECT_EQ(fs::weakly_canonical(load_parameters((folder / "out" / "relative.params.txt").string()).model),
-              fs::weakly_canonical(folder / "in" / "house.ifc"));
+    LodParameters back = load_parameters(fs::absolute(folder / "out" / "relative.params.txt").string());
+    EXPECT_EQ(fs::weakly_canonical(back.model), fs::weakly_canonical(folder / "in" / "house.ifc"));
+    // Read by its absolute path and saved elsewhere, the model stays relative.
+    save_parameters((folder / "again" / "deeper" / "p.params.txt").string(), back);
+    EXPECT_NE(
+        test::read_text(folder / "again" / "deeper" / "p.params.txt").find("model = ../../in/house.ifc\n"),
+        std::string::npos);
+    // A file named without a folder (the viewer's default) sits in the working folder.
+    const fs::path working = fs::current_path();
+    fs::current_path(folder / "out");
+    p.model = "../in/house.ifc";
+    save_parameters("bare.params.txt", p);
+    fs::current_path(working);
+    EXPECT_NE(test::read_text(folder / "out" / "bare.params.txt").find("model = ../in/house.ifc\n"),
+              std::string::npos);
 }
 
 TEST(Parameters, DefaultsAndCommentsParse) {
