@@ -15,12 +15,21 @@ double doubled_distance(double level_one_distance, int level) {
     return std::min(level_one_distance * std::ldexp(1.0, level - 1), parameter_range::distance.max);
 }
 
-std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels) {
+std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels,
+                                   const std::vector<ByteBudget>& budgets) {
     std::vector<float> distances;
     switch (rule.rule) {
     case LevelDistances::Rule::same: break;
     case LevelDistances::Rule::doubling:
-        for (int c = 1; c <= levels; ++c) distances.push_back(float(doubled_distance(distance, c)));
+        for (int c = 1; c <= levels; ++c) {
+            double sized = doubled_distance(distance, c);
+            // A budget's level is never needed farther than where a level-1 rendering's bytes,
+            // falling at least as 1/d (a mesh's), come down to it; halvings and the default
+            // ladder (0.5, 0.25, 0.1, ...) stay doubled.
+            if (int(budgets.size()) == levels)
+                sized = std::min(sized, distance * budgets.front().value / budgets[std::size_t(c - 1)].value);
+            distances.push_back(float(sized));
+        }
         break;
     case LevelDistances::Rule::listed:
         if (int(rule.listed.size()) != levels)
@@ -37,8 +46,8 @@ Chain::Chain(const Model& model, const LodParameters& parameters, int threads, c
       threads(threads),
       measurements(parameters.level_mode == LevelMode::hybrid ? make_hybrid_measurements(model) : nullptr),
       first(start_lod(model, parameters, threads, options.boxes, measurements.get())),
-      distances(
-          level_distances(parameters.level_distances, first->input.parameters.distance, obtained_levels())) {
+      distances(level_distances(parameters.level_distances, first->input.parameters.distance,
+                                obtained_levels(), parameters.budgets)) {
     first->input.budgets_strict = options.budgets_strict;
 }
 

@@ -31,9 +31,13 @@ struct LodSession;          // lod_session.h
 double doubled_distance(double level_one_distance, int level);
 
 // The sizing distances of levels 1..N by `rule` from the (resolved) distance;
-// empty for the rule `same`. Throws InputError naming level_distances when a
-// list has not one distance per level.
-std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels);
+// empty for the rule `same`. With one budget a level, `auto` sizes level c no
+// farther than distance x B_1 / B_c: a ladder finer than halvings would
+// otherwise size its last levels where the building is a pixel
+// (docs/design.md: Texture sizing). Throws InputError naming level_distances
+// when a list has not one distance per level.
+std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels,
+                                   const std::vector<ByteBudget>& budgets = {});
 
 // What a chain may be given beside its model and parameters.
 struct ChainOptions {

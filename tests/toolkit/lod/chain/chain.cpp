@@ -40,6 +40,23 @@ TEST(Chain, AutoSizesEachLevelForTwiceTheLastDistance) {
               "level_distances: 2 distances for 3 levels (1..3), or auto, or same");
 }
 
+TEST(Chain, AutoSizesABudgetsLevelNoFartherThanItsShareOfTheFirst) {
+    const auto fractions = [](std::vector<double> values) {
+        std::vector<ByteBudget> budgets;
+        for (double v : values) budgets.push_back({true, v});
+        return budgets;
+    };
+    // Halvings and the default ladder keep the doubling; a finer ladder follows its budgets.
+    EXPECT_EQ(level_distances({}, 10, 4, fractions({0.5, 0.25, 0.1, 0.05})),
+              (std::vector<float>{10, 20, 40, 80}));
+    EXPECT_EQ(level_distances({}, 10, 4, fractions({0.5, 0.4, 0.25, 0.2})),
+              (std::vector<float>{10, 12.5, 20, 25}));
+    EXPECT_EQ(level_distances({}, 10, 2, {{false, 2e6}, {false, 1e6}}), (std::vector<float>{10, 20}));
+    EXPECT_EQ(level_distances({}, 10, 3, fractions({0.5, 0.4})),
+              (std::vector<float>{10, 20, 40}));  // not one a level
+    EXPECT_EQ(level_distances(listed({5, 6}), 10, 2, fractions({0.5, 0.49})), (std::vector<float>{5, 6}));
+}
+
 // Equal distances would size two levels alike (issue 73: accepted without a word).
 TEST(Chain, ListedDistancesAscendStrictlyWithinTheirRange) {
     LodParameters p;
