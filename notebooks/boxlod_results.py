@@ -165,6 +165,13 @@ def level_means(results, model):
     return means[means.measured == rows.view.nunique()]
 
 
+def original_bytes(results, model):
+    """The bytes of the model as read: a level mode's level 0. A baseline's level 0 is a level of its own
+    (cgal's simplified mesh may be larger than the original, simplification's welded one smaller)."""
+    rows = results[results.model == model]
+    return rows[(rows.level == 0) & rows.baseline_variant.isna()].bytes.max()
+
+
 def cheapest_level(means, original, family, distance, threshold):
     """(level, bytes) of the family's cheapest level within the threshold at the distance and every
     farther one (as a chain draws it from its switch on: toolkit/lod/chain/error_by_distance.h), (0, the
