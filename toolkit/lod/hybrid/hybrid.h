@@ -5,7 +5,7 @@
 // targets (meshoptimizer's edge collapse, and vertex clustering for large
 // sub-trees; the sub-tree's own materials and textures). Each
 // proxy's error is measured, not guessed: the sub-tree and the proxy are
-// rendered among their siblings, from 4 corners of a cube (a tetrahedron), orthographically with pixels
+// rendered among their siblings, from the 4 raised corners of a cube, orthographically with pixels
 // of the sizing view's size (texture_sizing.h; coarser for large parts), and the error
 // is the number of pixels that differ, summed as hybrid_pixel_error (hybrid_measuring.h) weighs
 // them. Starting from the root's cheapest proxy, a plan repeatedly takes the

@@ -1,6 +1,6 @@
 #pragma once
 // How the hybrid measures a proxy (docs/cost.md: The hybrid level mode): a sub-tree's bounding
-// sphere rendered orthographically from 4 corners of a cube, supersampled, and compared pixel by
+// sphere rendered orthographically from the 4 raised corners of a cube, supersampled, and compared pixel by
 // pixel with the proxy's renders, each pixel weighed by hybrid_pixel_error.
 
 #include "renderer/renderer.h"
@@ -21,11 +21,13 @@ struct MeasuringView {
     int side = 1;
 };
 
-// Measured from the 4 corners of a cube that make a regular tetrahedron (bit k
-// of a corner: + along axis k): every direction within 71 degrees of one, at
-// half the time of all 8 corners for the same choices in the sweeps
-// (docs/cost.md: The hybrid level mode).
-constexpr std::array<int, 4> measuring_corners = {0, 3, 5, 6};
+// Measured from the 4 raised corners of a cube (bit k of a corner: + along
+// axis k; +Y is up): a building is seen from above its ground, never from
+// below, and every such direction lies within 55 degrees of one. The
+// tetrahedron's corners, two of them below, weighed parts no viewer sees;
+// on views neither set measures from (edges and horizontals) the raised
+// corners need fewer bytes by distance (docs/cost.md: Baked proxies).
+constexpr std::array<int, 4> measuring_corners = {2, 3, 6, 7};
 constexpr int measuring_directions = int(measuring_corners.size());
 
 // The measuring renders of `batches`, from every direction, `view.side` pixels a side
