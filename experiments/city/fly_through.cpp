@@ -98,7 +98,7 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
     LodParameters p = options.levels;
     p.fovy = options.fovy;
     p.resolution = float(options.height);
-    p.distance = options.base_distance;  // level 1's; level c's doubles it (chain.h)
+    p.distance = options.base_distance;  // level 1's; level c's doubles it (chain.h: level_distances)
     p.level_distances = {};
     Chain chain(model, p, 1);
     const auto& boxes = chain.boxes();
@@ -124,7 +124,7 @@ DesignLevels build_design(const Model& model, TextureCache& cache, const FlyThro
         for (int c = 1; c <= coarsest_level(built.object); ++c)
             built.object.levels[std::size_t(c)].error =
                 measure_level_error(unpack_drawable(built.levels[std::size_t(c)])->drawable, full->drawable,
-                                    built.object, level_sizing_distance(options, c), options);
+                                    built.object, chain.sized_parameters(c).distance, options);
     }
     return built;
 }
@@ -195,10 +195,6 @@ void record_cost(const CityLevels& city, const FrameRecord* previous, FrameRecor
 std::size_t thumbnail_factor(int width) { return std::size_t(std::max(1, (width + 239) / 240)); }
 
 }  // namespace
-
-float level_sizing_distance(const FlyThroughOptions& options, int level) {
-    return float(doubled_distance(options.base_distance, level));
-}
 
 CityLevels build_city_levels(const CityPlan& city, const FlyThroughOptions& options, bool measure_error,
                              std::FILE* progress) {

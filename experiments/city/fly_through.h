@@ -51,9 +51,6 @@ struct FlyThroughOptions {
     int threads = 0;  // 0 = all cores
 };
 
-// Level c (1..N) of a building is baked for this distance.
-float level_sizing_distance(const FlyThroughOptions& options, int level);
-
 // One design's LoD at the origin, built once for every lot that shows it.
 struct DesignLevels {
     std::vector<std::size_t> triangles;  // per level 0..N

@@ -91,6 +91,11 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
     const std::vector<ProxyBakedVariant> variants = proxy_baked_variants(run.threads);
     const double nearest = *std::min_element(config.distances.begin(), config.distances.end()) *
                            framing_distance(run.framing, config.lod.fovy);
+    // Where the first variant's chain sizes each level: with its budgets, no farther than their share
+    // (chain.h).
+    const std::vector<float> sized =
+        level_distances({}, float(nearest), first.obtained_levels,
+                        orders_by_bytes(first.mode) ? config.lod.budgets : std::vector<ByteBudget>{});
     std::map<int, std::unique_ptr<Chain>> chains;  // per sizing level
     for (int level : first.levels) {
         if (level == 0) continue;
@@ -104,8 +109,7 @@ void run_proxy_baked(ModelRun& run, SweepOutput& out, SweepReport& report, const
                 std::unique_ptr<Chain>& chain = chains[sizing_level];
                 if (!chain)
                     chain = std::make_unique<Chain>(
-                        run.model,
-                        proxy_baked_parameters(config.lod, float(doubled_distance(nearest, sizing_level))),
+                        run.model, proxy_baked_parameters(config.lod, sized[std::size_t(sizing_level - 1)]),
                         run.threads);
                 const ProxyBakedVariant& v = variants[std::size_t(a)];
                 Lod lod = proxy_baked_level(*chain, v, triangles_of_level(level), budget, level);

@@ -134,7 +134,8 @@ std::string parse_level_distances(const std::string& text, LevelDistances& dista
 ParameterDeclaration level_distances_parameter() {
     ParameterDeclaration d =
         named("level_distances", "level-distances", "auto|same|D1,...,DN",
-              "where a chain's level c >= 1 is sized: auto, the distance x 2^(c-1), so each level is as "
+              "where a chain's level c >= 1 is sized: auto, the distance x 2^(c-1) (with budgets at most x "
+              "B_1/B_c), so each level is as "
               "sharp as the screen where it is used; same, every level at the distance (--manual); or one "
               "distance per level 1..N, ascending (docs/cost.md: Switching levels)");
     d.sweep_key = false;  // a sweep sizes by its own `sizing` rule

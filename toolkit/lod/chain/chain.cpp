@@ -24,8 +24,9 @@ std::vector<float> level_distances(const LevelDistances& rule, float distance, i
         for (int c = 1; c <= levels; ++c) {
             double sized = doubled_distance(distance, c);
             // A budget's level is never needed farther than where a level-1 rendering's bytes,
-            // falling at least as 1/d (a mesh's), come down to it; halvings and the default
-            // ladder (0.5, 0.25, 0.1, ...) stay doubled.
+            // falling at least as 1/d (a mesh's), come down to it; halvings and the README's
+            // ladder (0.5, 0.25, 0.1, 0.05, ...) stay doubled. Levels without budgets (geometric
+            // ones, derived later) keep the doubling.
             if (int(budgets.size()) == levels)
                 sized = std::min(sized, distance * budgets.front().value / budgets[std::size_t(c - 1)].value);
             distances.push_back(float(sized));
@@ -146,10 +147,13 @@ SwitchedChain switched_levels(Chain& chain, double threshold, int max_levels) {
     } else {
         // Where its texels meet the screen's pixels: d_c, or where auto distances put it when every
         // level is sized for one distance (--manual), which would otherwise switch all at once.
+        const LodParameters& p = chain.parameters();
+        const std::vector<float> automatic =
+            level_distances({}, p.distance, chain.obtained_levels(), p.budgets);
         for (const ChainLevel& level : distinct)
-            switches.push_back(chain.distances.empty()
-                                   ? doubled_distance(chain.parameters().distance, level.level)
-                                   : chain.sized_parameters(level.level).distance);
+            switches.push_back(!chain.distances.empty() ? chain.sized_parameters(level.level).distance
+                               : level.level == 0       ? doubled_distance(p.distance, 0)
+                                                        : automatic[std::size_t(level.level - 1)]);
     }
     const std::vector<std::size_t> reachable = reachable_levels(switches, bytes);
     switched.distinct = int(distinct.size());

@@ -27,13 +27,13 @@ struct LodSession;          // lod_session.h
 
 // The doubling rule: level c >= 1 sized for level 1's distance x 2^(c-1)
 // (docs/cost.md: Switching levels), at most parameter_range::distance's
-// largest (64 levels double past it).
+// largest (64 levels double past it); level_distances caps it by budgets.
 double doubled_distance(double level_one_distance, int level);
 
 // The sizing distances of levels 1..N by `rule` from the (resolved) distance;
 // empty for the rule `same`. With one budget a level, `auto` sizes level c no
 // farther than distance x B_1 / B_c: a ladder finer than halvings would
-// otherwise size its last levels where the building is a pixel
+// otherwise size its last levels where the building is under a pixel
 // (docs/design.md: Texture sizing). Throws InputError naming level_distances
 // when a list has not one distance per level.
 std::vector<float> level_distances(const LevelDistances& rule, float distance, int levels,
