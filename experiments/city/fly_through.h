@@ -36,8 +36,8 @@ struct FlyThroughOptions {
     double pixels_per_degree = 67;  // FLIP's observer
     // The levels: every building's LoD parameters (level mode, wanted levels,
     // kept sub-trees, ...; by default the chain that pays its way), level c
-    // baked for base_distance · 2^(c-1) on a screen `height` pixels high with
-    // `fovy` (texel = pixel there), so those three are set per level.
+    // baked where the chain sizes it (base_distance · 2^(c-1), capped by budgets: chain.h) on a screen
+    // `height` pixels high with `fovy` (texel = pixel there), so those three are set per level.
     LodParameters levels;
     float base_distance = 20;
     // Unpacked levels kept between frames (docs/city.md: Memory); a frame's own levels are always unpacked.
