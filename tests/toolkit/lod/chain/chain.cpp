@@ -247,3 +247,26 @@ TEST(Chain, SwitchesEachLevelWhereItsMeasuredErrorIsWithinTheThreshold) {
         EXPECT_EQ(texels.switch_distances[k],
                   doubled_distance(same.parameters().distance, texels.levels[k].level));
 }
+
+// Under --manual a ladder finer than halvings switches where auto sizing would put its levels:
+// capped by the budgets, not doubled out to where the building is a pixel.
+TEST(Chain, SameSizedBudgetLevelsSwitchWhereAutoCapsThem) {
+    const Model model = load_model(test::fzk_haus_ifc);
+    LodParameters p = small_chain_parameters();
+    set_manual(p);
+    p.max_texture_size = 256;
+    p.level_mode = LevelMode::error_greedy;
+    p.budgets = {{true, 0.5}, {true, 0.4}, {true, 0.3}};
+    Chain chain(model, p, 2);
+    ASSERT_EQ(chain.obtained_levels(), 3);
+    const std::vector<float> automatic = level_distances({}, chain.parameters().distance, 3, p.budgets);
+    const SwitchedChain switched = switched_levels(chain, 0, 100);
+    ASSERT_GE(switched.levels.size(), 2u);
+    for (std::size_t k = 1; k < switched.levels.size(); ++k) {
+        const int c = switched.levels[k].level;
+        EXPECT_EQ(switched.switch_distances[k], automatic[std::size_t(c - 1)]) << c;
+        if (c > 1) {
+            EXPECT_LT(switched.switch_distances[k], doubled_distance(chain.parameters().distance, c)) << c;
+        }
+    }
+}
