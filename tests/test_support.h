@@ -94,4 +94,11 @@ void append_bytes(std::vector<std::uint8_t>& out, std::initializer_list<T> value
 // The FZK-Haus IFC model shipped by Debian's assimp-testmodels.
 inline const char* fzk_haus_ifc = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc";
 
+// A model of ../shared/models beside the checkout (its README), `name` under
+// it; the tests that read one skip where it is absent.
+inline std::filesystem::path shared_model(const std::string& name) {
+    return (std::filesystem::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / name)
+        .lexically_normal();
+}
+
 }  // namespace boxlod::test

@@ -342,15 +342,9 @@ TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
     EXPECT_NE(error_of(json::array(), "not_object").find("not a CityJSON object"), std::string::npos);
 }
 
-// The CityJSON files of ../shared/models beside the checkout, where present.
-fs::path shared_cityjson(const std::string& name) {
-    return (fs::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / "cityjson" / name)
-        .lexically_normal();
-}
-
 TEST(CityJsonImport, SharedModelsReadWithTheirHierarchy) {
-    const fs::path parts = shared_cityjson("DH_01_subs.city.json"),
-                   bag = shared_cityjson("3dbag_multi_lod.city.json");
+    const fs::path parts = test::shared_model("cityjson/DH_01_subs.city.json"),
+                   bag = test::shared_model("cityjson/3dbag_multi_lod.city.json");
     if (!fs::exists(parts) || !fs::exists(bag)) GTEST_SKIP() << "../shared/models/cityjson is absent";
     const Model with_parts = load_model(parts.string());
     EXPECT_EQ(tree_depth(with_parts), 3);  // file > Building > BuildingPart > surface

@@ -277,14 +277,9 @@ TEST(IfcIo, WebIfcAndAssimpReadTheSameParts) {
     EXPECT_NEAR(area, their_area, 0.05 * their_area);
 }
 
-// The IFC 4 files of ../shared/models beside the checkout, where present.
-fs::path shared_model(const std::string& name) {
-    return (fs::path(BOXLOD_TEST_DATA) / ".." / ".." / ".." / "shared" / "models" / name).lexically_normal();
-}
-
 TEST(IfcIo, Ifc4FilesReadWithElementsUnderTheirStoreys) {
     for (const char* name : {"AC20-FZK-Haus.ifc", "IfcOpenHouse_IFC4.ifc"}) {
-        const fs::path path = shared_model(name);
+        const fs::path path = test::shared_model(name);
         if (!fs::exists(path)) GTEST_SKIP() << path << " is absent";
         const Model model = load_model(path.string());
         EXPECT_EQ(model.nodes[0].rule, "IfcProject") << name;

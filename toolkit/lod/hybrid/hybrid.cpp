@@ -37,7 +37,7 @@ constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,
                                                            0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
 // The whole model (the root) goes on halving below them, at most 8 times
 // (to 1/16384: a building of 100,000 triangles to 6) and down to
-// fewest_simplified_triangles: the farthest levels, a few tenths of a percent
+// fewest_whole_model_triangles: the farthest levels, a few tenths of a percent
 // of a building's bytes, draw it as one small mesh rather than one box; on
 // every large sub-tree such shares won no more (docs/cost.md: Baked proxies).
 constexpr int most_whole_model_halvings = 8;
@@ -46,6 +46,10 @@ constexpr int most_whole_model_halvings = 8;
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
 constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
+// The whole model halves on to a single triangle: a small building's budget
+// of 1 or 2 % (a CityJSON house of 150 triangles: 43 to 87 bytes) otherwise
+// fits no level of hybrid's while simplification draws it in one or two.
+constexpr std::size_t fewest_whole_model_triangles = 1;
 // A sub-tree of at least this many triangles is also simplified by vertex
 // clustering (meshopt_simplifySloppy), at every share below 1: a whole
 // building's many separate parts cluster together where edge collapse
@@ -151,12 +155,12 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
                                                      : std::span<const double>(simplified_shares);
         std::vector<double> shares(listed.begin(), listed.end());
         const std::size_t common = shares.size();
-        if (n == 0)  // the loop below stops at fewest_simplified_triangles
+        if (n == 0)  // the loop below stops at fewest_whole_model_triangles
             for (int k = 0; k < most_whole_model_halvings; ++k) shares.push_back(shares.back() / 2);
         for (std::size_t k = 0; k < shares.size(); ++k) {
             const double share = shares[k];
             const auto target = std::size_t(double(subtree_triangles) * share);
-            if (target < fewest_simplified_triangles) break;
+            if (target < (n == 0 ? fewest_whole_model_triangles : fewest_simplified_triangles)) break;
             if (clustering && share == 1) continue;  // at 1 only merged and welded, as without clustering
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
@@ -175,24 +179,32 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
 // The geometry of node n's baked proxies (baked_proxy.h; made once per
 // model): its sub-tree as one mesh of positions, as it is and simplified
 // across material seams to 1/4, 1/16 and 1/64 of its triangles by edge
-// collapse, and for large sub-trees by clustering too (but at 1). Baking is for far levels, where a box
-// would lose the silhouette and simplification the colours.
+// collapse (the whole model on down, as simplified_subtrees), and for large sub-trees by clustering
+// too (but at 1). Baking is for far levels, where a box would lose the silhouette and simplification
+// the colours.
 const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, std::size_t subtree_triangles,
                                                      NodeMeasurement& measurement) {
     if (measurement.baked_made) return measurement.baked;
     SimplifyOptions options;
     options.geometry_only = true;
     options.threads = 1;
+    std::vector<double> shares(baked_shares.begin(), baked_shares.end());
+    if (n == 0)
+        for (int k = 0; k < most_whole_model_halvings / 2; ++k) shares.push_back(shares.back() / 4);
+    const std::size_t fewest = n == 0 ? fewest_whole_model_triangles : fewest_simplified_triangles;
     for (const bool clustering : {false, true}) {
         if (clustering && subtree_triangles < fewest_clustered_triangles) break;
         options.edge_collapse = !clustering;
-        for (double share : baked_shares) {
+        std::size_t previous = subtree_triangles + 1;
+        for (double share : shares) {
             const auto target = std::size_t(double(subtree_triangles) * share);
-            if (target < fewest_simplified_triangles) break;
+            if (target < fewest) break;
             if (clustering && share == 1) continue;  // as it is: once
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
-            if (simplified.triangles > 0) measurement.baked.push_back(std::move(simplified));
+            if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // stalled
+            previous = simplified.triangles;
+            measurement.baked.push_back(std::move(simplified));
         }
     }
     measurement.baked_made = true;
