@@ -77,12 +77,17 @@ def sweep(name):
     return results
 
 
+def settings(name):
+    """A sweep's settings.txt (the keys it ran with: budgets, sizing, ...)."""
+    return host(os.path.join(results_dir(), "sweeps", name, "settings.txt"))
+
+
 def timings(name):
     return pd.read_csv(os.path.join(results_dir(), "sweeps", name, "timings.csv"), dtype={"view": str})
 
 
 def host(path):
-    """key = value lines of a host.txt."""
+    """key = value lines of a host.txt (or a sweep's settings.txt)."""
     facts = {}
     with open(path) as f:
         for line in f:

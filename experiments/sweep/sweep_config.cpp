@@ -55,7 +55,8 @@ std::span<const EnumEntry<Baseline>> baselines() { return baseline_table; }
 constexpr EnumEntry<SizingRule> sizing_table[] = {
     {SizingRule::nearest, "nearest", "one LoD per level, sized for the smallest distance"},
     {SizingRule::each_distance, "each-distance", "an LoD per level and distance, sized for it"},
-    {SizingRule::per_level, "per-level", "level c sized for the smallest distance x 2^(c-1)"},
+    {SizingRule::per_level, "per-level",
+     "level c sized for the smallest distance x 2^(c-1), with budgets at most x B_1/B_c"},
 };
 
 std::span<const EnumEntry<SizingRule>> sizing_rules() { return sizing_table; }
