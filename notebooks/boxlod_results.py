@@ -82,6 +82,21 @@ def settings(name):
     return host(os.path.join(results_dir(), "sweeps", name, "settings.txt"))
 
 
+def budgets(setting):
+    """A sweep's budgets from its settings: (value, in bytes?) each, a fraction of the original's bytes
+    or a size (written NB: toolkit/lod/cut/level_budgets.h); empty for none."""
+    text = setting.get("budgets", "none").strip()
+    if text == "none":
+        return []
+    return [(float(b[:-1]), True) if b.endswith("B") else (float(b), False) for b in text.split(",")]
+
+
+def geometric_mean(values):
+    """The geometric mean of positive values (NaN for none)."""
+    values = [v for v in values if v == v and v > 0]
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else float("nan")
+
+
 def timings(name):
     return pd.read_csv(os.path.join(results_dir(), "sweeps", name, "timings.csv"), dtype={"view": str})
 

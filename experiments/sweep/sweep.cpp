@@ -101,7 +101,8 @@ ModelPlan plan_model(const SweepConfig& config, const Model& model, const std::s
 // The LoD levels of one variant. Normal, parallax, pom and albedo draw the same
 // baked boxes; untextured boxes are not baked. Slot = 2 x sizing distance +
 // (untextured ? 1 : 0); one chain per slot, shared by the levels: every level
-// sized for the slot's distance, or (per_level sizing) level c for it x 2^(c-1), the chain's doubling.
+// sized for the slot's distance, or (per_level sizing) level c for it x 2^(c-1), the chain's doubling
+// (with budgets at most x B_1/B_c: chain.h, level_distances).
 void run_variant(ModelRun& run, SweepOutput& out, SweepReport& report, const ModelPlan& plan,
                  const SweepVariant& variant) {
     const SweepConfig& config = run.config;

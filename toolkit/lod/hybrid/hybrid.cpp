@@ -47,7 +47,7 @@ constexpr int most_whole_model_halvings = 8;
 constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
 // The whole model halves on to a single triangle: a small building's budget
-// of 1 or 2 % (a CityJSON house of 150 triangles: 43 to 87 bytes) otherwise
+// of 1 or 2 % (a CityJSON house of 148 triangles: 43 to 87 bytes) otherwise
 // fits no level of hybrid's while simplification draws it in one or two.
 constexpr std::size_t fewest_whole_model_triangles = 1;
 // A sub-tree of at least this many triangles is also simplified by vertex
@@ -196,13 +196,16 @@ const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, 
         if (clustering && subtree_triangles < fewest_clustered_triangles) break;
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
-        for (double share : shares) {
-            const auto target = std::size_t(double(subtree_triangles) * share);
+        for (std::size_t k = 0; k < shares.size(); ++k) {
+            const auto target = std::size_t(double(subtree_triangles) * shares[k]);
             if (target < fewest) break;
-            if (clustering && share == 1) continue;  // as it is: once
+            if (clustering && shares[k] == 1) continue;  // as it is: once
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
-            if (simplified.triangles == 0 || simplified.triangles >= previous) continue;  // stalled
+            if (simplified.triangles == 0 || simplified.triangles >= previous) {
+                if (k >= baked_shares.size()) break;  // the whole model's further shares would stall as well
+                continue;
+            }
             previous = simplified.triangles;
             measurement.baked.push_back(std::move(simplified));
         }
