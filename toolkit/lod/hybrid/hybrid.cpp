@@ -41,6 +41,12 @@ constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,
 // of a building's bytes, draw it as one small mesh rather than one box; on
 // every large sub-tree such shares won no more (docs/cost.md: Baked proxies).
 constexpr int most_whole_model_halvings = 8;
+// The whole model's shares (edge collapse and clustering) step by 2^(-1/4)
+// from 1 down, not by halvings: where a level is the whole model simplified, a budget
+// between two halvings drew the coarser, at half its bytes (IfcOpenHouse
+// within 25 %: twice simplification's error; docs/cost.md: Each budget at
+// equal bytes). Past 1/64, an octave of stalls in a row ends them.
+constexpr int whole_model_shares_per_halving = 4;
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: the many smaller sub-trees cost most of
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
@@ -138,6 +144,16 @@ std::size_t triangle_count(const std::vector<Primitive>& primitives) {
     return triangles;
 }
 
+// The whole model's shares: 1 and on by 2^(-1/whole_model_shares_per_halving) to
+// 1/64 (whole_model_common_shares of them), then at most most_whole_model_halvings halvings more.
+constexpr std::size_t whole_model_common_shares = 6 * whole_model_shares_per_halving + 1;
+std::vector<double> whole_model_shares() {
+    std::vector<double> shares;
+    const int steps = (6 + most_whole_model_halvings) * whole_model_shares_per_halving;
+    for (int k = 0; k <= steps; ++k) shares.push_back(std::exp2(-double(k) / whole_model_shares_per_halving));
+    return shares;
+}
+
 // Node n's simplified sub-trees, each simpler than the one before (made once per model).
 const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, int n,
                                                           std::size_t subtree_triangles,
@@ -153,10 +169,10 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
         const std::span<const double> listed = finer ? std::span<const double>(large_simplified_shares)
                                                      : std::span<const double>(simplified_shares);
-        std::vector<double> shares(listed.begin(), listed.end());
-        const std::size_t common = shares.size();
-        if (n == 0)  // the loop below stops at fewest_whole_model_triangles
-            for (int k = 0; k < most_whole_model_halvings; ++k) shares.push_back(shares.back() / 2);
+        const std::vector<double> shares =
+            n == 0 ? whole_model_shares() : std::vector<double>(listed.begin(), listed.end());
+        const std::size_t common = n == 0 ? whole_model_common_shares : shares.size();
+        int stalls = 0;
         for (std::size_t k = 0; k < shares.size(); ++k) {
             const double share = shares[k];
             const auto target = std::size_t(double(subtree_triangles) * share);
@@ -165,9 +181,11 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
             SimplifiedSubtree simplified{simplify_subtree(model, n, target, options), 0, clustering};
             simplified.triangles = triangle_count(simplified.primitives);
             if (simplified.triangles == 0 || simplified.triangles >= previous) {
-                if (k >= common) break;  // the whole model's further halvings would stall as well
-                continue;                // nothing left, or no simpler than the last
+                // Past 1/64 an octave of stalls ends the whole model's shares: the next would stall as well.
+                if (k >= common && ++stalls == whole_model_shares_per_halving) break;
+                continue;  // nothing left, or no simpler than the last
             }
+            stalls = 0;
             previous = simplified.triangles;
             measurement.simplified.push_back(std::move(simplified));
         }
