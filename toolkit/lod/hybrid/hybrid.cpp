@@ -19,7 +19,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <span>
 #include <utility>
 
 namespace boxlod {
@@ -35,24 +34,28 @@ constexpr std::array<double, 7> simplified_shares = {1, 0.5, 0.25, 0.125, 1.0 / 
 // (docs/cost.md: The hybrid level mode).
 constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,      0.3536,  0.25,
                                                            0.125, 1.0 / 16, 1.0 / 32, 1.0 / 64};
-// The whole model (the root) goes on halving below them, at most 8 times
-// (to 1/16384: a building of 100,000 triangles to 6) and down to
+// The whole model (the root) is simplified at every 2^(-1/4) of its
+// triangles from 1 down, by edge collapse and by clustering: where a level is
+// the whole model simplified, a budget between two of the sub-trees' shares
+// drew the coarser (IfcOpenHouse within 25 %: 78 % of its budget, twice
+// simplification's error; docs/cost.md: Each budget at equal bytes). The
+// steps of an octave as literals, so every libm gives the same shares.
+constexpr std::array<double, 4> whole_model_octave = {1, 0.8408964152537145, 0.7071067811865476,
+                                                      0.5946035575013605};
+constexpr int subtree_octaves = 6;  // simplified_shares' last is 2^-6
+// Below that the whole model goes on, at most 8 octaves more (to 1/16384: a
+// building of 100,000 triangles to 6) and down to
 // fewest_whole_model_triangles: the farthest levels, a few tenths of a percent
 // of a building's bytes, draw it as one small mesh rather than one box; on
 // every large sub-tree such shares won no more (docs/cost.md: Baked proxies).
-constexpr int most_whole_model_halvings = 8;
-// The whole model's shares (edge collapse and clustering) step by 2^(-1/4)
-// from 1 down, not by halvings: where a level is the whole model simplified, a budget
-// between two halvings drew the coarser, at half its bytes (IfcOpenHouse
-// within 25 %: twice simplification's error; docs/cost.md: Each budget at
-// equal bytes). Past 1/64, an octave of stalls in a row ends them.
-constexpr int whole_model_shares_per_halving = 4;
+// There an octave of shares in a row no simpler than the last ends them.
+constexpr int most_whole_model_octaves = 8;
 // A sub-tree's simplified proxies are measured only if a quarter of its
 // triangles is enough to simplify to: the many smaller sub-trees cost most of
 // the measuring and are rarely worth their own proxy (docs/cost.md: The hybrid level mode).
 constexpr double smallest_simplified_share_of_interest = 0.25;
 constexpr std::size_t fewest_simplified_triangles = 4;
-// The whole model halves on to a single triangle: a small building's budget
+// The whole model goes on to a single triangle: a small building's budget
 // of 1 or 2 % (a CityJSON house of 148 triangles: 43 to 87 bytes) otherwise
 // fits no level of hybrid's while simplification draws it in one or two.
 constexpr std::size_t fewest_whole_model_triangles = 1;
@@ -144,14 +147,20 @@ std::size_t triangle_count(const std::vector<Primitive>& primitives) {
     return triangles;
 }
 
-// The whole model's shares: 1 and on by 2^(-1/whole_model_shares_per_halving) to
-// 1/64 (whole_model_common_shares of them), then at most most_whole_model_halvings halvings more.
-constexpr std::size_t whole_model_common_shares = 6 * whole_model_shares_per_halving + 1;
-std::vector<double> whole_model_shares() {
+// The shares node n is simplified to (edge collapse or clustering).
+constexpr std::size_t whole_model_common_shares = subtree_octaves * whole_model_octave.size() + 1;
+std::vector<double> subtree_shares(int n, std::size_t subtree_triangles, bool clustering) {
     std::vector<double> shares;
-    const int steps = (6 + most_whole_model_halvings) * whole_model_shares_per_halving;
-    for (int k = 0; k <= steps; ++k) shares.push_back(std::exp2(-double(k) / whole_model_shares_per_halving));
-    return shares;
+    if (n == 0) {
+        const int octaves = subtree_octaves + most_whole_model_octaves;
+        for (int octave = 0; octave < octaves; ++octave)
+            for (const double step : whole_model_octave) shares.push_back(step / double(1u << octave));
+        shares.push_back(1 / double(1u << octaves));
+        return shares;
+    }
+    const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
+    if (finer) return {large_simplified_shares.begin(), large_simplified_shares.end()};
+    return {simplified_shares.begin(), simplified_shares.end()};
 }
 
 // Node n's simplified sub-trees, each simpler than the one before (made once per model).
@@ -166,11 +175,7 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
         if (clustering && subtree_triangles < fewest_clustered_triangles) break;
         options.edge_collapse = !clustering;
         std::size_t previous = subtree_triangles + 1;
-        const bool finer = subtree_triangles >= fewest_clustered_triangles && !clustering;
-        const std::span<const double> listed = finer ? std::span<const double>(large_simplified_shares)
-                                                     : std::span<const double>(simplified_shares);
-        const std::vector<double> shares =
-            n == 0 ? whole_model_shares() : std::vector<double>(listed.begin(), listed.end());
+        const std::vector<double> shares = subtree_shares(n, subtree_triangles, clustering);
         const std::size_t common = n == 0 ? whole_model_common_shares : shares.size();
         int stalls = 0;
         for (std::size_t k = 0; k < shares.size(); ++k) {
@@ -182,7 +187,7 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
             simplified.triangles = triangle_count(simplified.primitives);
             if (simplified.triangles == 0 || simplified.triangles >= previous) {
                 // Past 1/64 an octave of stalls ends the whole model's shares: the next would stall as well.
-                if (k >= common && ++stalls == whole_model_shares_per_halving) break;
+                if (k >= common && ++stalls == int(whole_model_octave.size())) break;
                 continue;  // nothing left, or no simpler than the last
             }
             stalls = 0;
@@ -197,9 +202,9 @@ const std::vector<SimplifiedSubtree>& simplified_subtrees(const Model& model, in
 // The geometry of node n's baked proxies (baked_proxy.h; made once per
 // model): its sub-tree as one mesh of positions, as it is and simplified
 // across material seams to 1/4, 1/16 and 1/64 of its triangles by edge
-// collapse (the whole model on down, as simplified_subtrees), and for large sub-trees by clustering
-// too (but at 1). Baking is for far levels, where a box would lose the silhouette and simplification
-// the colours.
+// collapse (the whole model on down by quarters, to simplified_subtrees' floor), and for large sub-trees by
+// clustering too (but at 1). Baking is for far levels, where a box would lose the silhouette and
+// simplification the colours.
 const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, std::size_t subtree_triangles,
                                                      NodeMeasurement& measurement) {
     if (measurement.baked_made) return measurement.baked;
@@ -208,7 +213,7 @@ const std::vector<SimplifiedSubtree>& baked_geometry(const Model& model, int n, 
     options.threads = 1;
     std::vector<double> shares(baked_shares.begin(), baked_shares.end());
     if (n == 0)
-        for (int k = 0; k < most_whole_model_halvings / 2; ++k) shares.push_back(shares.back() / 4);
+        for (int k = 0; k < most_whole_model_octaves / 2; ++k) shares.push_back(shares.back() / 4);
     const std::size_t fewest = n == 0 ? fewest_whole_model_triangles : fewest_simplified_triangles;
     for (const bool clustering : {false, true}) {
         if (clustering && subtree_triangles < fewest_clustered_triangles) break;
