@@ -8,6 +8,7 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <array>
 #include <compare>
 #include <limits>
 #include <map>
@@ -66,8 +67,26 @@ bool clusters(const SimplifyOptions& options) {
     return options.clustering_fallback || !options.edge_collapse;
 }
 
+// Whether a position of the welded mesh carries two normals: a faceted part,
+// flat-shaded as IFC's are. meshoptimizer 0.18 collapses by position and
+// leaves each kept position one of its vertices for every face around it, so
+// such a part's normals come out arbitrary (a wall shaded as the roof).
+bool faceted(const Primitive& welded) {
+    if (welded.normals.empty()) return false;
+    std::map<std::array<float, 3>, Eigen::Vector3f> normal_at;
+    for (std::size_t v = 0; v < welded.positions.size(); ++v) {
+        const Eigen::Vector3f& p = welded.positions[v];
+        const auto [at, added] = normal_at.try_emplace({p.x(), p.y(), p.z()}, welded.normals[v]);
+        if (!added && at->second != welded.normals[v]) return true;
+    }
+    return false;
+}
+
 // The welded mesh with at most `target_triangles` triangles when the fallback
-// is on (possibly none: parts too small to cluster vanish).
+// is on (possibly none: parts too small to cluster vanish). A faceted mesh
+// comes out flat-shaded, without normals (glTF 2.0, 3.7.2.1: the client
+// computes flat normals) and welded by position: by ꟻLIP and bytes both
+// better than its normals as the collapse leaves them (docs/cost.md: Each budget at equal bytes).
 Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles,
                         const SimplifyOptions& options) {
     Primitive mesh = welded;
@@ -80,6 +99,10 @@ Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles,
             out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);
+        if (mesh.tangents.empty() && faceted(welded)) {
+            mesh.normals.clear();
+            weld(mesh);
+        }
     }
     mesh.polygon_count = mesh.triangle_count();
     return mesh;

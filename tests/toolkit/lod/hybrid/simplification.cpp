@@ -181,6 +181,46 @@ TEST(Simplification, EveryVariantStaysWithinTheBudget) {
     EXPECT_NE(positions(collapse), positions(sloppy));
 }
 
+// A sphere whose every vertex carries its own position's normal: smooth shaded.
+Model smooth_sphere() {
+    Model model;
+    model.source = "smooth sphere";
+    Primitive& sphere = model.nodes[std::size_t(add_node(model, -1, "sphere"))].primitives.emplace_back();
+    const int rings = 16, segments = 32;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const float theta = float(M_PI) * float(r) / rings,
+                        phi = 2 * float(M_PI) * float(s % segments) / segments;
+            const Eigen::Vector3f p(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                    std::sin(theta) * std::sin(phi));
+            sphere.positions.push_back(p);
+            sphere.normals.push_back(p);
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const auto a = std::uint32_t(r * (segments + 1) + s), b = a + segments + 1;
+            sphere.indices.insert(sphere.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    sphere.polygon_count = sphere.triangle_count();
+    return model;
+}
+
+// The FZK-Haus's parts are faceted (a position carries one normal per face
+// around it); simplified, they come out flat-shaded, without normals: the
+// collapse would leave each kept position one face's normal for all of them.
+// A smooth part keeps its normals.
+TEST(Simplification, FacetedPartsComeOutFlatShadedSmoothOnesKeepTheirNormals) {
+    const Model faceted = simplify_model(fzk_haus(), faces_of(fzk_haus()) / 10, {});
+    ASSERT_GT(faces_of(faceted), 0u);
+    for (const Node& node : faceted.nodes)
+        for (const Primitive& p : node.primitives) EXPECT_TRUE(p.normals.empty());
+    const Model sphere = smooth_sphere();
+    const Model smooth = simplify_model(sphere, faces_of(sphere) / 4, {});
+    ASSERT_GT(faces_of(smooth), 0u);
+    for (const Node& node : smooth.nodes)
+        for (const Primitive& p : node.primitives) EXPECT_EQ(p.normals.size(), p.positions.size());
+}
+
 TEST(Simplification, BadInputIsAnInputError) {
     EXPECT_THROW(simplify_model(fzk_haus(), 0, {}), InputError);
     Model lod = test::lod_test_building();
