@@ -40,8 +40,10 @@ struct SimplifyOptions {
 // Faces a material cannot use (parts too small to simplify, or clustered
 // away: such a material may vanish at small budgets) go to the others in up
 // to seven more rounds, so the total ends close to, and never above, the
-// target. Materials and textures are kept as they are. A target at or above
-// the triangle count keeps every triangle. Deterministic.
+// target. Materials and textures are kept as they are. A faceted part (a
+// position with two normals: flat-shaded) comes out without normals, drawn
+// flat-shaded: meshoptimizer 0.18 leaves it one normal per kept position. A
+// target at or above the triangle count keeps every triangle. Deterministic.
 // Throws InputError for target_faces 0, an LoD model or a model without triangles.
 Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options);
 // The same for the sub-tree under `root` alone (the hybrid level mode's
