@@ -67,27 +67,29 @@ bool clusters(const SimplifyOptions& options) {
     return options.clustering_fallback || !options.edge_collapse;
 }
 
-// Whether a position of the welded mesh carries two normals: a faceted part,
-// flat-shaded as IFC's are. meshoptimizer 0.18 collapses by position and
-// leaves each kept position one of its vertices for every face around it, so
-// such a part's normals come out arbitrary (a wall shaded as the roof).
+// Whether a position of the welded mesh carries two normals (apart by more
+// than rounding: cos 0.8 degrees): a faceted part, flat-shaded as IFC's are.
+// meshoptimizer 0.18 collapses by position and leaves each kept position one
+// of its vertices for every face around it, so such a part's normals come out
+// arbitrary (a wall shaded as the roof).
 bool faceted(const Primitive& welded) {
     if (welded.normals.empty()) return false;
     std::map<std::array<float, 3>, Eigen::Vector3f> normal_at;
     for (std::size_t v = 0; v < welded.positions.size(); ++v) {
-        const Eigen::Vector3f& p = welded.positions[v];
-        const auto [at, added] = normal_at.try_emplace({p.x(), p.y(), p.z()}, welded.normals[v]);
-        if (!added && at->second != welded.normals[v]) return true;
+        const Eigen::Vector3f &p = welded.positions[v], &n = welded.normals[v];
+        const auto [at, added] = normal_at.try_emplace({p.x(), p.y(), p.z()}, n);
+        if (!added && at->second.dot(n) < 0.9999f * at->second.norm() * n.norm()) return true;
     }
     return false;
 }
 
 // The welded mesh with at most `target_triangles` triangles when the fallback
 // is on (possibly none: parts too small to cluster vanish). A faceted mesh
-// comes out flat-shaded, without normals (glTF 2.0, 3.7.2.1: the client
-// computes flat normals) and welded by position: by ꟻLIP and bytes both
-// better than its normals as the collapse leaves them (docs/cost.md: Each budget at equal bytes).
-Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles,
+// without tangents (normal-mapped parts keep them and their normals) comes
+// out flat-shaded, without normals (glTF 2.0, 3.7.2.1: the client computes
+// flat normals), welded by position and uv: by ꟻLIP and bytes both better
+// than its normals as the collapse leaves them (docs/cost.md: Each budget at equal bytes).
+Primitive simplify_mesh(const Primitive& welded, bool flat, std::size_t target_triangles,
                         const SimplifyOptions& options) {
     Primitive mesh = welded;
     if (mesh.triangle_count() > target_triangles) {
@@ -99,7 +101,7 @@ Primitive simplify_mesh(const Primitive& welded, std::size_t target_triangles,
             out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);
-        if (mesh.tangents.empty() && faceted(welded)) {
+        if (flat) {
             mesh.normals.clear();
             weld(mesh);
         }
@@ -161,8 +163,11 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     if (options.geometry_only) groups = {positions_only(groups)};
 
     std::vector<Primitive> welded(groups.size());
-    parallel_for(groups.size(), options.threads,
-                 [&](std::size_t g) { weld(welded[g] = std::move(groups[g])); });
+    std::vector<char> flat(groups.size());  // char: written in parallel
+    parallel_for(groups.size(), options.threads, [&](std::size_t g) {
+        weld(welded[g] = std::move(groups[g]));
+        flat[g] = welded[g].tangents.empty() && faceted(welded[g]);
+    });
     std::vector<std::size_t> triangles;
     std::vector<double> weights;  // each material's share of the budget
     for (const Primitive& mesh : welded) {
@@ -182,7 +187,7 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     for (int round = 0; round < 8; ++round) {
         parallel_for(groups.size(), options.threads, [&](std::size_t g) {
             if (done[g] || (round > 0 && budget[g] == achieved[g])) return;
-            Primitive mesh = simplify_mesh(welded[g], budget[g], options);
+            Primitive mesh = simplify_mesh(welded[g], flat[g], budget[g], options);
             if (round == 0 || mesh.triangle_count() > achieved[g]) {
                 groups[g] = std::move(mesh);
                 achieved[g] = groups[g].triangle_count();

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 using namespace boxlod;
@@ -50,6 +51,30 @@ std::set<int> materials_used(const Model& model) {
     for (const Node& node : model.nodes)
         for (const Primitive& p : node.primitives) used.insert(p.material);
     return used;
+}
+
+// A sphere whose every vertex carries its own position's normal: smooth shaded.
+Model smooth_sphere() {
+    Model model;
+    model.source = "smooth sphere";
+    Primitive& sphere = model.nodes[std::size_t(add_node(model, -1, "sphere"))].primitives.emplace_back();
+    const int rings = 16, segments = 32;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const float theta = float(M_PI) * float(r) / rings,
+                        phi = 2 * float(M_PI) * float(s % segments) / segments;
+            const Eigen::Vector3f p(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                    std::sin(theta) * std::sin(phi));
+            sphere.positions.push_back(p);
+            sphere.normals.push_back(p);
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const auto a = std::uint32_t(r * (segments + 1) + s), b = a + segments + 1;
+            sphere.indices.insert(sphere.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    sphere.polygon_count = sphere.triangle_count();
+    return model;
 }
 
 }  // namespace
@@ -181,39 +206,26 @@ TEST(Simplification, EveryVariantStaysWithinTheBudget) {
     EXPECT_NE(positions(collapse), positions(sloppy));
 }
 
-// A sphere whose every vertex carries its own position's normal: smooth shaded.
-Model smooth_sphere() {
-    Model model;
-    model.source = "smooth sphere";
-    Primitive& sphere = model.nodes[std::size_t(add_node(model, -1, "sphere"))].primitives.emplace_back();
-    const int rings = 16, segments = 32;
-    for (int r = 0; r <= rings; ++r)
-        for (int s = 0; s <= segments; ++s) {
-            const float theta = float(M_PI) * float(r) / rings,
-                        phi = 2 * float(M_PI) * float(s % segments) / segments;
-            const Eigen::Vector3f p(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                    std::sin(theta) * std::sin(phi));
-            sphere.positions.push_back(p);
-            sphere.normals.push_back(p);
-        }
-    for (int r = 0; r < rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            const auto a = std::uint32_t(r * (segments + 1) + s), b = a + segments + 1;
-            sphere.indices.insert(sphere.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-        }
-    sphere.polygon_count = sphere.triangle_count();
-    return model;
-}
-
 // The FZK-Haus's parts are faceted (a position carries one normal per face
 // around it); simplified, they come out flat-shaded, without normals: the
 // collapse would leave each kept position one face's normal for all of them.
 // A smooth part keeps its normals.
 TEST(Simplification, FacetedPartsComeOutFlatShadedSmoothOnesKeepTheirNormals) {
+    ASSERT_TRUE(std::any_of(fzk_haus().nodes.begin(), fzk_haus().nodes.end(), [](const Node& node) {
+        return !node.primitives.empty() && !node.primitives[0].normals.empty();
+    }));
     const Model faceted = simplify_model(fzk_haus(), faces_of(fzk_haus()) / 10, {});
     ASSERT_GT(faces_of(faceted), 0u);
     for (const Node& node : faceted.nodes)
-        for (const Primitive& p : node.primitives) EXPECT_TRUE(p.normals.empty());
+        for (const Primitive& p : node.primitives) {
+            EXPECT_TRUE(p.normals.empty());
+            std::set<std::array<float, 5>> corners;  // welded: no two vertices alike
+            for (std::size_t v = 0; v < p.positions.size(); ++v) {
+                const Eigen::Vector2f uv = p.uvs.empty() ? Eigen::Vector2f::Zero() : p.uvs[v];
+                corners.insert({p.positions[v].x(), p.positions[v].y(), p.positions[v].z(), uv.x(), uv.y()});
+            }
+            EXPECT_EQ(corners.size(), p.positions.size());
+        }
     const Model sphere = smooth_sphere();
     const Model smooth = simplify_model(sphere, faces_of(sphere) / 4, {});
     ASSERT_GT(faces_of(smooth), 0u);
