@@ -8,8 +8,9 @@
 # less what Blender drops (a triangle on the same three vertices as another
 # of its mesh: an IFC's doubled faces, one once welded, and the two sides of
 # a thin part that simplification welded into one sheet, which engines draw
-# both of: 15 % of a hybrid level of the FZK-Haus; a writer doubling every
-# triangle would reach 50 %, the test allows 25 %). Copies in the same
+# both of: 26 % of a hybrid level of the FZK-Haus since faceted parts are
+# simplified flat-shaded and welded by position, 15 % before; a writer
+# doubling every triangle would reach 50 %, the test allows 35 %). Copies in the same
 # winding, which no engine needs, stay under 1 %.
 # Skipped (exit 77) where Blender is absent.
 # Usage: chain_blender.sh BOXLOD
@@ -84,7 +85,7 @@ for level, node in enumerate(level_roots):
     name, kept = gltf["nodes"][node]["name"], sum(distinct_triangles(c, frozenset) for c in children)
     sides = sum(distinct_triangles(c, winding) for c in children)
     assert sides > 0.99 * triangles[level], f"level {level}: {triangles[level] - sides} of {triangles[level]} triangles are copies"
-    assert kept > 0.75 * triangles[level], f"level {level}: {triangles[level] - kept} of {triangles[level]} triangles are another's other side"
+    assert kept > 0.65 * triangles[level], f"level {level}: {triangles[level] - kept} of {triangles[level]} triangles are another's other side"
     assert blender["roots"].get(name) == kept, f"level {level} ({name}): Blender has {blender['roots'].get(name)} triangles, not {kept}"
 PY
 done
