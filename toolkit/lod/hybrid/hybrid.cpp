@@ -37,8 +37,8 @@ constexpr std::array<double, 9> large_simplified_shares = {1,     0.7071,   0.5,
 // The whole model (the root) is simplified at every 2^(-1/4) of its
 // triangles from 1 down, by edge collapse and by clustering: where a level is
 // the whole model simplified, a budget between two of the sub-trees' shares
-// drew the coarser (IfcOpenHouse within 25 %: 78 % of its budget, twice
-// simplification's error; docs/cost.md: Each budget at equal bytes). The
+// drew the coarser (DH_01_subs within 10 %: 71 % of its budget, 90 % now;
+// docs/cost.md: Each budget at equal bytes). The
 // steps of an octave as literals, so every libm gives the same shares.
 constexpr std::array<double, 4> whole_model_octave = {1, 0.8408964152537145, 0.7071067811865476,
                                                       0.5946035575013605};
