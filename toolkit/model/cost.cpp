@@ -116,12 +116,14 @@ std::map<int, TextureCost> texture_costs(const Model& model, const std::set<int>
 CostParts cost_parts(const Model& model) {
     CostParts parts;
     std::set<int> materials;
+    std::set<DrawCallKey> draw_calls;
     for (const Node& node : model.nodes)
         for (const Primitive& p : node.primitives) {
             materials.insert(p.material);
+            if (!p.indices.empty()) draw_calls.insert(draw_call_key(p));
             parts.mesh_bytes += primitive_mesh_bytes(p, model);
         }
-    parts.draw_calls = materials.size();
+    parts.draw_calls = draw_calls.size();
     for (auto& [index, cost] : texture_costs(model, materials)) parts.textures.push_back(cost);
     return parts;
 }

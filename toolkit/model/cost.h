@@ -22,7 +22,7 @@ namespace boxlod {
 enum class GpuFormat { bc1, bc4, bc5, bc7 };
 
 struct ModelCost {
-    std::uint64_t draw_calls = 0;  // one per material drawn: geometry batched by material (the manual's VBOs)
+    std::uint64_t draw_calls = 0;  // one per material and vertex layout drawn (vertex_layout.h: DrawCallKey)
     std::uint64_t mesh_bytes = 0;  // vertex + index buffers as boxlod's glTF export writes them
     std::uint64_t texture_bytes =
         0;  // every texture a material uses, uncompressed at the format written, with mips

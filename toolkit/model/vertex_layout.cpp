@@ -17,6 +17,11 @@ VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     return layout;
 }
 
+DrawCallKey draw_call_key(const Primitive& primitive) {
+    return {primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(),
+            !primitive.tangents.empty()};
+}
+
 std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model) {
     const VertexLayout layout = vertex_layout(primitive, model);
     return layout.vertex_bytes() * primitive.positions.size() +

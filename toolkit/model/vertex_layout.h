@@ -4,6 +4,7 @@
 #pragma once
 #include "toolkit/model/model.h"
 
+#include <compare>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,16 @@ struct VertexLayout {
 };
 
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model);
+
+// What one draw call draws: the primitives of one material with the same
+// attributes present, merged into one mesh (lod/hybrid/draw_calls.h), so a
+// level counts one draw call per key (docs/cost.md: Draw calls).
+struct DrawCallKey {
+    int material = -1;
+    bool normals = false, uvs = false, tangents = false;
+    auto operator<=>(const DrawCallKey&) const = default;
+};
+DrawCallKey draw_call_key(const Primitive& primitive);
 
 // Vertex + index bytes of one primitive as the glTF export writes it.
 std::uint64_t primitive_mesh_bytes(const Primitive& primitive, const Model& model);

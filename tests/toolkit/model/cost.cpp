@@ -3,6 +3,7 @@
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/lod/chain/chain.h"
+#include "toolkit/lod/hybrid/draw_calls.h"
 #include "toolkit/lod/lod_export.h"
 
 #include <gtest/gtest.h>
@@ -78,6 +79,23 @@ TEST(Cost, SharedTexturesArePaidOnceWhenModelsAreCombined) {
     EXPECT_EQ(two.texture_bytes, one.texture_bytes);
     // Another colour texture is paid for; the equal normal and height maps are not.
     EXPECT_EQ(other.texture_bytes, one.texture_bytes + 4u * (64 + 16 + 4 + 1));
+}
+
+// A material's flat-shaded part (no normals, as simplified IFC parts come
+// out) cannot share a mesh with its smooth ones: one more draw call, as many as
+// the merged level ships.
+TEST(Cost, EachMaterialsVertexLayoutIsADrawCall) {
+    Model model = textured_quad(255);
+    Primitive flat = model.nodes[0].primitives[0];
+    flat.normals.clear();
+    model.nodes[std::size_t(add_node(model, 0, "flat"))].primitives = {
+        flat, Primitive{}};  // the empty one is not drawn
+    EXPECT_EQ(model_cost(model).draw_calls, 2u);
+    std::size_t shipped = 0;
+    for (const Node& node : merge_draw_calls(model, "level").nodes) shipped += node.primitives.size();
+    EXPECT_EQ(shipped, 2u);
+    model.nodes[1].primitives[0].normals = model.nodes[0].primitives[0].normals;
+    EXPECT_EQ(model_cost(model).draw_calls, 1u);
 }
 
 // A render mode pays for the maps it draws: none untextured, colour for

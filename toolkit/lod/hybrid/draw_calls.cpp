@@ -1,22 +1,15 @@
 #include "toolkit/lod/hybrid/draw_calls.h"
 
 #include "toolkit/model/material_merge.h"
+#include "toolkit/model/vertex_layout.h"
 
 #include <meshoptimizer.h>
 
-#include <compare>
 #include <map>
 #include <numeric>
 
 namespace boxlod {
 namespace {
-
-// Primitives that can share one vertex layout: same material and attributes.
-struct GroupKey {
-    int material = -1;
-    bool normals = false, uvs = false, tangents = false;
-    auto operator<=>(const GroupKey&) const = default;
-};
 
 void append(Primitive& to, const Primitive& from) {
     auto base = std::uint32_t(to.positions.size());
@@ -39,13 +32,12 @@ void remap_attribute(std::vector<T>& values, const std::vector<unsigned>& remap,
 }  // namespace
 
 std::vector<Primitive> merge_primitives(const Model& model, const std::vector<int>& nodes) {
-    std::map<GroupKey, std::size_t> index;
+    std::map<DrawCallKey, std::size_t> index;
     std::vector<Primitive> merged;
     for (int n : nodes)
         for (const Primitive& primitive : model.nodes[std::size_t(n)].primitives) {
             if (primitive.indices.empty()) continue;
-            GroupKey key{primitive.material, !primitive.normals.empty(), !primitive.uvs.empty(),
-                         !primitive.tangents.empty()};
+            const DrawCallKey key = draw_call_key(primitive);
             auto [it, added] = index.try_emplace(key, merged.size());
             if (added) merged.emplace_back().material = key.material;
             append(merged[it->second], primitive);
