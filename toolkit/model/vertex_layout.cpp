@@ -4,11 +4,15 @@
 
 namespace boxlod {
 
+bool maps_normals(const Material& material) {
+    return material.normal_texture >= 0 || material.height_texture >= 0;
+}
+
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     const Material* material = primitive.material >= 0 && primitive.material < int(model.materials.size())
                                    ? &model.materials[std::size_t(primitive.material)]
                                    : nullptr;
-    const bool mapped = material && (material->normal_texture >= 0 || material->height_texture >= 0);
+    const bool mapped = material && maps_normals(*material);
     VertexLayout layout;
     layout.normals = !primitive.normals.empty();
     layout.uvs = !primitive.uvs.empty() && material && samples_textures(*material);

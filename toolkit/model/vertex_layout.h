@@ -22,6 +22,9 @@ struct VertexLayout {
     }
 };
 
+// A normal or height map: the material's parts need their normals and tangent frames.
+bool maps_normals(const Material& material);
+
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model);
 
 // What one draw call draws: the primitives of one material with the same

@@ -4,6 +4,7 @@
 #include "base/parallel.h"
 #include "toolkit/lod/hybrid/draw_calls.h"
 #include "toolkit/model/model_subtree.h"
+#include "toolkit/model/vertex_layout.h"
 
 #include <meshoptimizer.h>
 
@@ -85,7 +86,7 @@ bool faceted(const Primitive& welded) {
 
 // The welded mesh with at most `target_triangles` triangles when the fallback
 // is on (possibly none: parts too small to cluster vanish). A faceted mesh
-// without tangents (normal-mapped parts keep them and their normals) comes
+// whose material maps no normals (normal-mapped parts keep theirs) comes
 // out flat-shaded, without normals (glTF 2.0, 3.7.2.1: the client computes
 // flat normals), welded by position and uv: by ꟻLIP and bytes both better
 // than its normals as the collapse leaves them (docs/cost.md: Each budget at equal bytes).
@@ -101,8 +102,9 @@ Primitive simplify_mesh(const Primitive& welded, bool flat, std::size_t target_t
             out = cluster_vertices(mesh, out, target_triangles);
         mesh.indices = std::move(out);
         compact(mesh);
-        if (flat) {
+        if (flat) {  // tangents, unused without a normal map, go too (glTF 2.0, 3.7.2.1)
             mesh.normals.clear();
+            mesh.tangents.clear();
             weld(mesh);
         }
     }
@@ -166,7 +168,10 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     std::vector<char> flat(groups.size());  // char: written in parallel
     parallel_for(groups.size(), options.threads, [&](std::size_t g) {
         weld(welded[g] = std::move(groups[g]));
-        flat[g] = welded[g].tangents.empty() && faceted(welded[g]);
+        const int material = welded[g].material;
+        const bool mapped = material >= 0 && material < int(model.materials.size()) &&
+                            maps_normals(model.materials[std::size_t(material)]);
+        flat[g] = !mapped && faceted(welded[g]);
     });
     std::vector<std::size_t> triangles;
     std::vector<double> weights;  // each material's share of the budget

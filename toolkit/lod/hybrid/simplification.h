@@ -42,7 +42,8 @@ struct SimplifyOptions {
 // to seven more rounds, so the total ends close to, and never above, the
 // target. Materials and textures are kept as they are. A faceted part (a
 // position with two normals: flat-shaded) comes out without normals, drawn
-// flat-shaded: meshoptimizer 0.18 leaves it one normal per kept position. A
+// flat-shaded: meshoptimizer 0.18 leaves it one normal per kept position;
+// only a material with a normal or height map keeps them, and tangents. A
 // target at or above the triangle count keeps every triangle. Deterministic.
 // Throws InputError for target_faces 0, an LoD model or a model without triangles.
 Model simplify_model(const Model& model, std::size_t target_faces, const SimplifyOptions& options);

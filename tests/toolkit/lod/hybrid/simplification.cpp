@@ -233,6 +233,30 @@ TEST(Simplification, FacetedPartsComeOutFlatShadedSmoothOnesKeepTheirNormals) {
         for (const Primitive& p : node.primitives) EXPECT_EQ(p.normals.size(), p.positions.size());
 }
 
+// Whether a faceted part keeps its normals is its material's: tangents that
+// no normal map reads (a grammar's untextured parts carry them in memory, not
+// in their files) go with the normals, and a normal-mapped part keeps both.
+TEST(Simplification, OnlyANormalMapKeepsAFacetedPartsNormals) {
+    Model model = fzk_haus();
+    for (Node& node : model.nodes)
+        for (Primitive& p : node.primitives) p.tangents.assign(p.positions.size(), {1, 0, 0, 1});
+    const std::size_t target = faces_of(model) / 10;
+    for (const Node& node : simplify_model(model, target, {}).nodes)
+        for (const Primitive& p : node.primitives) {
+            EXPECT_TRUE(p.normals.empty());
+            EXPECT_TRUE(p.tangents.empty());
+        }
+    model.textures.push_back({"n.png", Image8(4, 4, 3, 128), {}});
+    for (Material& material : model.materials) material.normal_texture = int(model.textures.size()) - 1;
+    const Model mapped = simplify_model(model, target, {});
+    ASSERT_GT(faces_of(mapped), 0u);
+    for (const Node& node : mapped.nodes)
+        for (const Primitive& p : node.primitives) {
+            EXPECT_EQ(p.normals.size(), p.positions.size());
+            EXPECT_EQ(p.tangents.size(), p.positions.size());
+        }
+}
+
 TEST(Simplification, BadInputIsAnInputError) {
     EXPECT_THROW(simplify_model(fzk_haus(), 0, {}), InputError);
     Model lod = test::lod_test_building();
