@@ -26,7 +26,7 @@ inline Option keep_materials_option() {
 inline Option keep_hierarchy_option() {
     return {"keep-hierarchy", "",
             "keep one node per kept part and box in each level, with its scope and rule in extras, instead "
-            "of one node per material (draw call)"};
+            "of one node per material"};
 }
 
 // For the commands that write chains for engines (build --chain, tiles): the

@@ -1,12 +1,12 @@
 #include "toolkit/drawing/drawable.h"
 
 #include "base/parallel.h"
+#include "toolkit/model/vertex_layout.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
 #include <mutex>
-#include <tuple>
 
 namespace boxlod {
 
@@ -90,12 +90,11 @@ Drawable make_drawable(const std::vector<Material>& materials, const DecodedText
     Drawable drawable;
     // Primitives sharing a material and the same attribute set go into one mesh,
     // in the order they first appear.
-    using Key = std::tuple<int, bool, bool, bool>;
-    std::map<Key, Mesh*> meshes;
-    std::vector<Key> order;
+    std::map<DrawCallKey, Mesh*> meshes;
+    std::vector<DrawCallKey> order;
     for (const Primitive* p : primitives) {
         for (const Eigen::Vector3f& v : p->positions) drawable.bounds.add(v);
-        Key key{p->material, !p->normals.empty(), !p->uvs.empty(), !p->tangents.empty()};
+        const DrawCallKey key = draw_call_key(*p);
         Mesh*& mesh = meshes[key];
         if (!mesh) {
             drawable.meshes.push_back(std::make_unique<Mesh>());
@@ -109,10 +108,10 @@ Drawable make_drawable(const std::vector<Material>& materials, const DecodedText
         mesh->tangents.insert(mesh->tangents.end(), p->tangents.begin(), p->tangents.end());
         for (std::uint32_t i : p->indices) mesh->indices.push_back(base + i);
     }
-    for (const Key& key : order) {
+    for (const DrawCallKey& key : order) {
         Batch batch;
         batch.mesh = meshes[key];
-        const int m = std::get<0>(key);
+        const int m = key.material;
         if (m >= 0) batch.surface = material_surface(materials[std::size_t(m)], textures);
         drawable.batches.push_back(batch);
         drawable.materials.push_back(m);

@@ -4,15 +4,17 @@
 
 namespace boxlod {
 
-bool maps_normals(const Material& material) {
-    return material.normal_texture >= 0 || material.height_texture >= 0;
+bool maps_normals(const Model& model, int material) {
+    if (material < 0 || material >= int(model.materials.size())) return false;
+    const Material& m = model.materials[std::size_t(material)];
+    return m.normal_texture >= 0 || m.height_texture >= 0;
 }
 
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model) {
     const Material* material = primitive.material >= 0 && primitive.material < int(model.materials.size())
                                    ? &model.materials[std::size_t(primitive.material)]
                                    : nullptr;
-    const bool mapped = material && maps_normals(*material);
+    const bool mapped = maps_normals(model, primitive.material);
     VertexLayout layout;
     layout.normals = !primitive.normals.empty();
     layout.uvs = !primitive.uvs.empty() && material && samples_textures(*material);

@@ -22,8 +22,9 @@ struct VertexLayout {
     }
 };
 
-// A normal or height map: the material's parts need their normals and tangent frames.
-bool maps_normals(const Material& material);
+// Whether model.materials[material] (if any) has a normal or height map: its
+// parts need their normals and tangent frames.
+bool maps_normals(const Model& model, int material);
 
 VertexLayout vertex_layout(const Primitive& primitive, const Model& model);
 

@@ -27,7 +27,7 @@ void remap_vertices(Primitive& primitive, const std::vector<unsigned>& remap, st
 Model model_of_primitives(const Model& source, std::vector<Primitive> primitives,
                           const std::string& root_name);
 
-// The model with one node per draw call: equal materials merged first
+// The model with one node per material: equal materials merged first
 // (toolkit/model/material_merge.h), then every primitive of a material merged and
 // welded. Draws the same triangles.
 Model merge_draw_calls(Model model, const std::string& root_name);

@@ -168,10 +168,7 @@ std::vector<Primitive> simplify_subtree(const Model& model, int root, std::size_
     std::vector<char> flat(groups.size());  // char: written in parallel
     parallel_for(groups.size(), options.threads, [&](std::size_t g) {
         weld(welded[g] = std::move(groups[g]));
-        const int material = welded[g].material;
-        const bool mapped = material >= 0 && material < int(model.materials.size()) &&
-                            maps_normals(model.materials[std::size_t(material)]);
-        flat[g] = !mapped && faceted(welded[g]);
+        flat[g] = !maps_normals(model, welded[g].material) && faceted(welded[g]);
     });
     std::vector<std::size_t> triangles;
     std::vector<double> weights;  // each material's share of the budget
