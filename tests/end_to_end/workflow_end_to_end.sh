@@ -10,10 +10,14 @@
 # no error; a second run of snakemake has nothing to do; a notebook run again
 # writes byte-identical figures and tables; a sweep's merged shards equal the
 # same sweep run as one job.
-# Usage: workflow_end_to_end.sh BOXLOD REPO
+# Usage: workflow_end_to_end.sh BOXLOD REPO [KEEP]
+#   KEEP: a folder the run's outputs are moved to, so workflow_on_slurm.sh
+#   compares its SLURM run with them instead of running the profile again.
 set -u
 boxlod=$(realpath "$1")
 repo=$(realpath "$2")
+keep=${3:+$(realpath -m "$3")}
+[ -n "$keep" ] && rm -rf "$keep"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=$work/out
@@ -182,4 +186,5 @@ else fail "01_quality run again changed its outputs"; diff <(echo "$before") <(e
 
 echo "$(( $(date +%s) - start )) s in all"
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
+[ -z "$keep" ] || { mkdir -p "$(dirname "$keep")" && mv "$out" "$keep"; }
 echo "all checks passed"

@@ -2,18 +2,21 @@
 # The experiment workflow on a real scheduler: a one-node SLURM cluster started
 # here (tests/end_to_end/slurm_one_node.sh), the smoke profile run through
 # `snakemake --profile experiments/workflow/slurm`, and the same profile run
-# locally. Checks: every job but Snakemake's local rules went through sbatch
+# locally (or the local run workflow_end_to_end.sh kept). Checks: every job but Snakemake's local rules went through sbatch
 # (each sweep shard, merge and city run records its SLURM job id, and
 # Snakemake submitted as many jobs as it ran); the sweeps' results.csv, the
 # city runs' frames.csv and every generated table, number and figure but the
 # runs' own (times, hosts) equal the local run's byte for byte. Prints one
 # SKIP line and exits 77 when this machine cannot start SLURM.
-# Usage: workflow_on_slurm.sh BOXLOD REPO [CPUS]
-#   CPUS: the CPUs slurmd offers (default: all); a job's threads are capped to them.
+# Usage: workflow_on_slurm.sh BOXLOD REPO [CPUS [LOCAL]]
+#   CPUS: the CPUs slurmd offers (default: all), one per job.
+#   LOCAL: the outputs of a local smoke run (workflow_end_to_end.sh's KEEP, the
+#   ctest fixture), compared instead of running the profile locally here.
 set -u
 boxlod=$(realpath "$1")
 repo=$(realpath "$2")
 cpus=${3:-$(nproc)}
+kept=${4:-}
 work=$(mktemp -d)
 cluster=$work/cluster
 source "$repo/tests/end_to_end/slurm_one_node.sh"
@@ -30,8 +33,9 @@ if ! slurm_start "$cluster" "$cpus"; then
 fi
 ok "one-node SLURM cluster up: $(sinfo -h -o '%P %D %c %t')"
 
-threads=()
-[ "$cpus" -lt 2 ] && threads=(--set-threads sweep_shard="$cpus" sweep="$cpus" city="$cpus")
+# One thread a job, so the node runs CPUS jobs at once: a smoke job's time is mostly
+# Snakemake starting inside it, not its computing. The outputs do not depend on threads.
+threads=(--set-threads sweep_shard=1 sweep=1 city=1)
 snake() {  # snake FOLDER ARGS...: the smoke profile into FOLDER/out, run from FOLDER
   local folder=$1
   shift
@@ -50,9 +54,16 @@ if ! snake "$work/slurm" --profile "$repo/experiments/workflow/slurm" "${threads
 fi
 slurm_seconds=$(( $(date +%s) - start ))
 ok "workflow on SLURM ($cpus CPUs) finished in $slurm_seconds s"
-start=$(date +%s)
-snake "$work/local" -j "$cpus" "${threads[@]}" > "$work/local.txt" 2>&1 || { tail -n 40 "$work/local.txt"; fail "the local run failed"; }
-ok "the same profile locally in $(( $(date +%s) - start )) s"
+local_out=$work/local/out
+if [ -n "$kept" ]; then
+  [ -d "$kept/sweeps" ] || { echo "FAIL no local run's outputs in $kept (workflow_end_to_end keeps them)"; exit 1; }
+  local_out=$kept
+  ok "the same profile run locally by workflow_end_to_end: $kept"
+else
+  start=$(date +%s)
+  snake "$work/local" -j "$cpus" > "$work/local.txt" 2>&1 || { tail -n 40 "$work/local.txt"; fail "the local run failed"; }
+  ok "the same profile locally in $(( $(date +%s) - start )) s"
+fi
 
 # Every job went through the scheduler: Snakemake submitted each job it ran but
 # the local rules, and every job that records its host ran inside a SLURM job.
@@ -74,8 +85,8 @@ else fail "$outside of $hosts jobs ran outside SLURM"; fi
 compared=0
 while read -r file; do
   compared=$((compared + 1))
-  cmp -s "$work/slurm/out/$file" "$work/local/out/$file" || fail "differs from the local run: $file"
-done < <(cd "$work/local/out" && find sweeps city paper/generated -type f \
+  cmp -s "$work/slurm/out/$file" "$local_out/$file" || fail "differs from the local run: $file"
+done < <(cd "$local_out" && find sweeps city paper/generated -type f \
            \( -name results.csv -o -name frames.csv -o -name '*.tex' -o -name '*.png' \) \
            ! -path '*/shards/*' ! -name '*_runs.tex' | sort)
 [ "$compared" -gt 20 ] && ok "$compared files equal the local run's byte for byte" || fail "only $compared files compared"
