@@ -32,14 +32,16 @@ test: build debug-build sanitize-build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The workflow's smoke profile through a one-node SLURM cluster started for the
-# test, against the same profile run locally (docs/workflow.md: On a cluster);
-# also part of `make test`.
+# test, against the same profile run locally (docs/workflow.md: On a cluster):
+# ctest runs workflow_end_to_end first, whose outputs it compares with (and
+# which must pass); also part of `make test`.
 test-cluster: build
 	@cd $(BUILD) && ctest --output-on-failure -R workflow_on_slurm
 
 # The Debug side of the Debug-against-Release tests (docs/testing.md: Determinism): -O0
-# with the standard library's assertions, linked with the one-definition-rule
-# check (LTO, -Werror=odr); only the program, the golden tests and the check.
+# with the standard library's assertions, compiled for the one-definition-rule
+# check (fat LTO objects; odr_check links them with LTO and -Werror=odr); only
+# the program, the golden tests and the check.
 debug-build: deps
 	@cmake -S . -B $(DEBUG_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DBOXLOD_ODR_CHECK=ON \
 	  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null

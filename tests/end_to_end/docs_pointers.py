@@ -9,6 +9,7 @@
     is the GitHub slug of a heading of the file.
 Prints every pointer that does not resolve and exits 1 if there is one.
 Usage: docs_pointers.py SOURCE_DIR"""
+import os
 import pathlib
 import re
 import sys
@@ -38,9 +39,16 @@ def slug(heading):
     return re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
 
 
-sources = [p for p in root.rglob("*") if p.is_file() and not any(part in ("build", ".git", "out") or part.startswith("build")
-                                                                    for part in p.relative_to(root).parts)
-           and (p.suffix in (".cpp", ".h", ".py", ".sh", ".md", ".txt", ".cmake", ".html", ".yaml") or p.name in ("Snakefile", "Makefile"))]
+def skipped(name):  # build folders (tests write in them while this runs), git's, the workflow's outputs
+    return name in (".git", "out") or name.startswith("build")
+
+
+sources = []
+for folder, folders, files in os.walk(root):
+    folders[:] = sorted(f for f in folders if not skipped(f))
+    sources += [pathlib.Path(folder, name) for name in files
+                if os.path.splitext(name)[1] in (".cpp", ".h", ".py", ".sh", ".md", ".txt", ".cmake", ".html", ".yaml")
+                or name in ("Snakefile", "Makefile")]
 pointer = re.compile(r"(docs/)?([a-z_]+)\.md: ([A-Z][^,;)\]\n]*)")
 link = re.compile(r"\]\(([a-z_./]*\.md)?#([a-z0-9\-_]+)\)")
 bad, checked = [], 0

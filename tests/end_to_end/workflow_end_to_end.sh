@@ -11,13 +11,18 @@
 # writes byte-identical figures and tables; a sweep's merged shards equal the
 # same sweep run as one job.
 # Usage: workflow_end_to_end.sh BOXLOD REPO [KEEP]
-#   KEEP: a folder the run's outputs are moved to, so workflow_on_slurm.sh
-#   compares its SLURM run with them instead of running the profile again.
+#   KEEP: a folder the run's outputs are moved to when every check passed, so
+#   workflow_on_slurm.sh compares its SLURM run with them instead of running
+#   the profile again. An earlier run's KEEP is replaced; any other folder is refused.
 set -u
 boxlod=$(realpath "$1")
 repo=$(realpath "$2")
 keep=${3:+$(realpath -m "$3")}
-[ -n "$keep" ] && rm -rf "$keep"
+kept_mark=.workflow_end_to_end
+if [ -n "$keep" ] && [ -e "$keep" ]; then
+  [ -f "$keep/$kept_mark" ] || { echo "FAIL $keep exists and is not an earlier run's outputs: not replaced"; exit 1; }
+  rm -rf "$keep"
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=$work/out
@@ -186,5 +191,8 @@ else fail "01_quality run again changed its outputs"; diff <(echo "$before") <(e
 
 echo "$(( $(date +%s) - start )) s in all"
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
-[ -z "$keep" ] || { mkdir -p "$(dirname "$keep")" && mv "$out" "$keep"; }
+if [ -n "$keep" ]; then
+  { mkdir -p "$(dirname "$keep")" && mv -T "$out" "$keep" && echo "outputs of workflow_end_to_end.sh" > "$keep/$kept_mark"; } ||
+    { echo "FAIL cannot keep the outputs in $keep"; exit 1; }
+fi
 echo "all checks passed"

@@ -9,14 +9,16 @@
 # runs' own (times, hosts) equal the local run's byte for byte. Prints one
 # SKIP line and exits 77 when this machine cannot start SLURM.
 # Usage: workflow_on_slurm.sh BOXLOD REPO [CPUS [LOCAL]]
-#   CPUS: the CPUs slurmd offers (default: all), one per job.
+#   CPUS: the CPUs slurmd offers (default or `all`: every one), one per job.
 #   LOCAL: the outputs of a local smoke run (workflow_end_to_end.sh's KEEP, the
 #   ctest fixture), compared instead of running the profile locally here.
 set -u
 boxlod=$(realpath "$1")
 repo=$(realpath "$2")
-cpus=${3:-$(nproc)}
+cpus=${3:-all}
+[ "$cpus" = all ] && cpus=$(nproc)
 kept=${4:-}
+[ -z "$kept" ] || [ -d "$kept/sweeps" ] || { echo "FAIL no local run's outputs in $kept (workflow_end_to_end keeps them)"; exit 1; }
 work=$(mktemp -d)
 cluster=$work/cluster
 source "$repo/tests/end_to_end/slurm_one_node.sh"
@@ -56,7 +58,6 @@ slurm_seconds=$(( $(date +%s) - start ))
 ok "workflow on SLURM ($cpus CPUs) finished in $slurm_seconds s"
 local_out=$work/local/out
 if [ -n "$kept" ]; then
-  [ -d "$kept/sweeps" ] || { echo "FAIL no local run's outputs in $kept (workflow_end_to_end keeps them)"; exit 1; }
   local_out=$kept
   ok "the same profile run locally by workflow_end_to_end: $kept"
 else
@@ -81,14 +82,19 @@ outside=$(find "$work/slurm/out" -name host.txt -exec grep -l '^slurm_job = none
 if [ "$hosts" -gt 0 ] && [ "$outside" -eq 0 ]; then ok "$hosts sweep shard, merge and city jobs ran inside SLURM jobs"
 else fail "$outside of $hosts jobs ran outside SLURM"; fi
 
-# The same bytes as the local run.
+# The same files, with the same bytes, as the local run.
+compared_files() {  # compared_files OUT: the results, frames, tables, numbers and figures of a run
+  (cd "$1" && find sweeps city paper/generated -type f \
+     \( -name results.csv -o -name frames.csv -o -name '*.tex' -o -name '*.png' \) \
+     ! -path '*/shards/*' ! -name '*_runs.tex' | LC_ALL=C sort)
+}
+[ "$(compared_files "$local_out")" = "$(compared_files "$work/slurm/out")" ] ||
+  fail "the runs wrote different files: $(diff <(compared_files "$local_out") <(compared_files "$work/slurm/out") | grep '^[<>]' | head -n 5 | tr '\n' ' ')"
 compared=0
 while read -r file; do
   compared=$((compared + 1))
   cmp -s "$work/slurm/out/$file" "$local_out/$file" || fail "differs from the local run: $file"
-done < <(cd "$local_out" && find sweeps city paper/generated -type f \
-           \( -name results.csv -o -name frames.csv -o -name '*.tex' -o -name '*.png' \) \
-           ! -path '*/shards/*' ! -name '*_runs.tex' | sort)
+done < <(compared_files "$local_out")
 [ "$compared" -gt 20 ] && ok "$compared files equal the local run's byte for byte" || fail "only $compared files compared"
 
 echo "seconds_on_slurm = $slurm_seconds"
