@@ -2,7 +2,8 @@
 # The experiment workflow on a real scheduler: a one-node SLURM cluster started
 # here (tests/end_to_end/slurm_one_node.sh), the smoke profile run through
 # `snakemake --profile experiments/workflow/slurm`, and the same profile run
-# locally (or the local run workflow_end_to_end.sh kept). Checks: every job but Snakemake's local rules went through sbatch
+# locally (or the local run workflow_end_to_end.sh kept). Checks: every job
+# but Snakemake's local rules went through sbatch
 # (each sweep shard, merge and city run records its SLURM job id, and
 # Snakemake submitted as many jobs as it ran); the sweeps' results.csv, the
 # city runs' frames.csv and every generated table, number and figure but the
