@@ -3,6 +3,7 @@
 into OUTDIR (run by bad_inputs.sh; not stored in the repository)."""
 import base64
 import json
+import math
 import os
 import struct
 import sys
@@ -65,6 +66,23 @@ while len(json_chunk) % 4:
 body = struct.pack("<I", len(json_chunk)) + b"JSON" + json_chunk + struct.pack("<I", 36) + b"BIN\0" + triangle
 put("deep_node_extras_20000.glb", b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body)
 
+# One mesh of 20,000 primitives used by 20,000 nodes: each node's copy asks 400 million primitives.
+shared = json.loads(gltf_text())
+shared["meshes"][0]["primitives"] *= 20000
+shared["nodes"] *= 20000
+del shared["scene"], shared["scenes"]
+put("mesh_shared_by_many_nodes.gltf", json.dumps(shared))
+
+# A CityJSON template of 20,000 triangles placed 10 times: the copies would ask 96 MB (docs/design.md: Errors).
+identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+put("instances_many.city.json", json.dumps({
+    "type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},
+    "geometry-templates": {"templates": [{"type": "MultiSurface", "lod": "2", "boundaries": [[[0, 1, 2]]] * 20000}],
+                           "vertices-templates": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+    "CityObjects": {"t": {"type": "SolitaryVegetationObject", "geometry": [
+        {"type": "GeometryInstance", "template": 0, "boundaries": [0], "transformationMatrix": identity}] * 10}},
+    "vertices": [[0, 0, 0]]}))
+
 # ---------------------------------------------------------------- grammars nested deeply or very long
 n = 3000
 put("grammar_parens_3000.grammar", "Lot --> extrude(%s3%s) i(box)\n" % ("(" * n, ")" * n))
@@ -111,3 +129,20 @@ put("sweep_enormous.txt", ("models = sample:house\nlevel_modes = top-down\nlevel
                            "baselines = simplification\ndistances = " +
                            ", ".join("%.2f" % (1 + i * 0.01) for i in range(99900)) + "\n").encode())
 
+
+# One 1024 x 1024 grey PNG (1 KB) named by 64 images of a glTF: each alone fits 100 MB, all of them do not.
+grey_1024 = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1024, 1024, 8, 0, 0, 0, 0)) + \
+    chunk(b"IDAT", zlib.compress(b"\0" * (1025 * 1024))) + chunk(b"IEND", b"")
+put("grey_1024.png", grey_1024)
+many_images = json.loads(gltf_text())
+many_images["images"] = [{"uri": "grey_1024.png"}] * 64
+put("images_one_file_64_times.gltf", json.dumps(many_images))
+
+# A CityJSON polygon whose ring is wound as a star {201/100}: about 20,000 crossings.
+star = [[round(1000 * math.cos(2 * math.pi * (j * 100 % 201) / 201)), round(1000 * math.sin(2 * math.pi * (j * 100 % 201) / 201)), 0]
+        for j in range(201)]
+put("ring_star.city.json", json.dumps({
+    "type": "CityJSON", "version": "2.0", "transform": {"scale": [0.001, 0.001, 0.001], "translate": [0, 0, 0]},
+    "CityObjects": {"b": {"type": "Building", "geometry": [
+        {"type": "MultiSurface", "lod": "2", "boundaries": [[list(range(201))]]}]}},
+    "vertices": star}))

@@ -17,6 +17,7 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 constexpr std::uint32_t no_index = std::numeric_limits<std::uint32_t>::max();
+constexpr std::size_t most_crossings = 64;  // beyond as many as the rings have points
 struct VertexInfo {
     std::uint32_t index = no_index;  // into the rings' points; no_index: where two rings cross
 };
@@ -100,6 +101,11 @@ PolygonTriangles triangulate_polygon(const std::vector<std::vector<Eigen::Vector
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             auto a = vertices[i], b = vertices[(i + 1) % vertices.size()];
             if (a != b) triangulation.insert_constraint(a, b);
+            // Crossings grow as the square of the points: a ring wound as a star would fill the memory.
+            if (triangulation.number_of_vertices() > 2 * std::size_t(index) + most_crossings) {
+                out.too_many_crossings = true;
+                return out;
+            }
         }
     }
     mark_nesting(triangulation);

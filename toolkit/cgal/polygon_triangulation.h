@@ -15,10 +15,12 @@ namespace boxlod {
 // Triangles index the rings' points in order (ring 0's first, then ring 1's,
 // ...), then `added_points` where crossing rings meet; each triangle turns
 // as the outer ring does (counter-clockwise about the polygon's normal by
-// Newell's method). A polygon without area gives no triangle.
+// Newell's method). A polygon without area gives no triangle; one whose rings
+// cross more often than they have points (and 64) none either, and says so.
 struct PolygonTriangles {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<Eigen::Vector3d> added_points;
+    bool too_many_crossings = false;
 };
 PolygonTriangles triangulate_polygon(const std::vector<std::vector<Eigen::Vector3d>>& rings);
 

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "renderer/image.h"
 #include "toolkit/cgal/polygon_triangulation.h"
 
@@ -160,8 +161,10 @@ struct CityReadState {
         material_of;  // (material, texture, semantic type) -> model material
     std::string material_theme, texture_theme;
     // Over all documents:
+    std::map<std::pair<std::string, Wrap>, int> texture_of_file;  // (image file, wrap) -> model texture
     std::set<std::string> missing_textures, lods;
     std::size_t without_lod = 0, polygons = 0;
+    std::size_t points = 0, instanced_points = 0;  // polygon points emitted; those by GeometryInstances
 
     const json* appearance(const char* key) const {
         auto a = document->find("appearance");
@@ -190,15 +193,23 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
         !fs::is_regular_file(path, error)) {
         s.missing_textures.insert(image);
     } else {
-        Texture out{fs::path(image).filename().string(), read_image(path.string())};
-        const std::string wrap = texture.contains("wrapMode") && texture["wrapMode"].is_string()
-                                     ? texture["wrapMode"].get<std::string>()
-                                     : "none";
-        out.wrap = wrap == "wrap" || wrap == "mirror"
-                       ? Wrap::repeat
-                       : Wrap::clamp;  // CityGML's "none" and "border": no repeat
-        s.model.textures.push_back(std::move(out));
-        index = int(s.model.textures.size()) - 1;
+        const std::string wrap_mode = texture.contains("wrapMode") && texture["wrapMode"].is_string()
+                                          ? texture["wrapMode"].get<std::string>()
+                                          : "none";
+        const Wrap wrap = wrap_mode == "wrap" || wrap_mode == "mirror"
+                              ? Wrap::repeat
+                              : Wrap::clamp;  // CityGML's "none" and "border": no repeat
+        // One image file, one texture: a CityJSONSeq's features or many textures may share one atlas.
+        const auto key = std::make_pair(fs::weakly_canonical(path, error).string(), wrap);
+        if (auto known = s.texture_of_file.find(key); known != s.texture_of_file.end()) {
+            index = known->second;
+        } else {
+            Texture out{fs::path(image).filename().string(), read_image(path.string())};
+            out.wrap = wrap;
+            s.model.textures.push_back(std::move(out));
+            index = int(s.model.textures.size()) - 1;
+            s.texture_of_file[key] = index;
+        }
     }
     s.texture_of[t] = index;
     return index;
@@ -375,6 +386,7 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
         for (std::size_t v : ring) points.back().push_back(g.vertices[v] - s.origin);
     }
     const PolygonTriangles triangles = triangulate_polygon(points);
+    if (triangles.too_many_crossings) at.fail("a polygon whose rings cross more often than they have points");
     std::vector<std::uint32_t> index_of;  // polygon point -> primitive vertex
     std::size_t k = 0;
     for (const auto& ring : rings)
@@ -396,6 +408,7 @@ void emit_polygon(const CityPlace& at, GeometryEmission& g, const json& polygon,
     }
     for (const auto& triangle : triangles.triangles)
         for (std::uint32_t corner : triangle) primitive.indices.push_back(index_of[corner]);
+    s.points += k;
     if (!triangles.triangles.empty()) {
         ++primitive.polygon_count;
         ++s.polygons;
@@ -427,6 +440,12 @@ int surface_depth(const CityPlace& at, const std::string& type) {
 
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
                    const std::vector<Eigen::Vector3d>& vertices, bool in_template = false);
+
+// A file's instances each copy their template: memory and time grow as instances x template, which the
+// file's size does not bound, so the copies are held to the memory budget. A polygon point's share of
+// the model: its vertex (position, normal, tangent, uv), its share of the triangles' indices, its entry
+// in the emission's vertex map.
+constexpr double bytes_per_instanced_point = 160;
 
 // A GeometryInstance: a template of geometry-templates, transformed by its
 // matrix (row-major) and moved to its reference point (CityJSON 2.0, "Geometry templates").
@@ -464,7 +483,11 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!(placed.back().array().abs() <= max_city_coordinate).all())
             at.fail("a placed template vertex lies beyond " + format_number(max_city_coordinate));
     }
+    const std::size_t before = s.points;
     read_geometry(at.in("template"), s, shape, object_node, placed, true);
+    s.instanced_points += s.points - before;
+    check_memory(s.file + ": the GeometryInstances' copies of their templates",
+                 double(s.instanced_points) * bytes_per_instanced_point);
 }
 
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
@@ -514,9 +537,11 @@ void CityGeometryReader::start_part(const CityPlace& at, const json& document,
         if (!uvs->is_array()) at.fail("appearance: 'vertices-texture' is not an array");
         for (std::size_t i = 0; i < uvs->size(); ++i) {
             const json& uv = (*uvs)[i];
-            if (!uv.is_array() || uv.size() != 2 || !uv[0].is_number() || !uv[1].is_number() ||
-                !std::isfinite(uv[0].get<double>()) || !std::isfinite(uv[1].get<double>()))
-                at.fail("appearance: vertices-texture " + std::to_string(i) + " is not two numbers");
+            // Within a million repeats of the texture: a float holds it, and no texture repeats more.
+            auto fits = [](const json& x) { return x.is_number() && std::abs(x.get<double>()) <= 1e6; };
+            if (!uv.is_array() || uv.size() != 2 || !fits(uv[0]) || !fits(uv[1]))
+                at.fail("appearance: vertices-texture " + std::to_string(i) +
+                        " is not two numbers in [-1e6, 1e6]");
             s.uvs.emplace_back(uv[0].get<float>(),
                                1 - uv[1].get<float>());  // CityGML's origin is bottom left, glTF's top left
         }

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_values.h"
+#include "base/utf8.h"
 #include "toolkit/formats/cityjson_geometry.h"
 #include "toolkit/formats/gltf_structure.h"
 
@@ -217,7 +218,7 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
     model.source = path;
     model.origin = Eigen::Vector3d(origin.x(), origin.z(), -origin.y());  // z-up to the model's y-up
     model.reference_system = reference_system;
-    add_node(model, -1, fs::path(path).stem().string());
+    add_node(model, -1, utf8_or_latin1(fs::path(path).stem().string()));
     CityGeometryReader reader(model, path, origin);
     for (Part& part : parts) {
         const CityPlace at{path, part.line};
@@ -242,6 +243,10 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
         }
     }
     reader.finish(lod);
+    // A polygon that triangulates to nothing (collinear, or fewer than 3 points) may leave a primitive
+    // without triangles, which glTF cannot hold (an accessor of count 0).
+    for (Node& node : model.nodes)
+        std::erase_if(node.primitives, [](const Primitive& p) { return p.indices.empty(); });
     make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;

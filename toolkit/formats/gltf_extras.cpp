@@ -192,12 +192,16 @@ void read_material_extras(const tinygltf::Value& extras, int image_count, const 
     if (!fields) return;
     if (fields->Has("specular"))
         material.specular_color = read_numbers<3>(fields->Get("specular"), at, "specular");
-    if (fields->Has("shininess")) material.shininess = float(fields->Get("shininess").GetNumberAsDouble());
-    if (fields->Has("height_texture") && fields->Get("height_texture").IsNumber()) {
-        int texture = int(fields->Get("height_texture").GetNumberAsDouble());
-        if (texture < 0 || texture >= image_count)
-            throw_input_error(at.file, at.place, "height_texture out of range");
-        material.height_texture = texture;
+    if (fields->Has("shininess")) {
+        if (!fields->Get("shininess").IsNumber())
+            throw_input_error(at.file, at.place, "shininess must be a number");  // range: validate_model
+        material.shininess = float(fields->Get("shininess").GetNumberAsDouble());
+    }
+    if (fields->Has("height_texture")) {
+        const tinygltf::Value& texture = fields->Get("height_texture");
+        if (!texture.IsInt() || texture.Get<int>() < 0 || texture.Get<int>() >= image_count)
+            throw_input_error(at.file, at.place, "height_texture must be an image index");
+        material.height_texture = texture.Get<int>();
     }
     if (fields->Has("height_depth")) {
         if (!fields->Get("height_depth").IsNumber())

@@ -6,7 +6,9 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "base/parallel.h"
+#include "base/utf8.h"
 #include "renderer/image.h"
 #include "toolkit/formats/gltf_extras.h"
 #include "toolkit/formats/gltf_structure.h"
@@ -260,12 +262,20 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string*, const std::s
     return true;
 }
 
+// The images a file has decoded so far: each is checked against the memory budget by its header, and
+// all of them together as they come (a file may name one large image many times).
+struct ImagesDecoded {
+    const std::string& file;
+    double bytes = 0;
+};
+
 // tinygltf's image callback: our decoders, so that a broken image is named by
 // its own file and a claimed size is checked before anything is allocated.
 // 16-bit grey stays 16-bit (height maps); everything else becomes RGBA8.
 bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                const unsigned char* bytes, int size, void* gltf_file) {
-    const std::string& file = *static_cast<const std::string*>(gltf_file);
+                const unsigned char* bytes, int size, void* images_decoded) {
+    ImagesDecoded& decoded_so_far = *static_cast<ImagesDecoded*>(images_decoded);
+    const std::string& file = decoded_so_far.file;
     std::string name = image->uri.empty() ? file + ": image " + std::to_string(index)
                                           : (fs::path(file).parent_path() / image->uri).string();
     std::span<const std::uint8_t> encoded(bytes, std::size_t(size));
@@ -289,6 +299,9 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
         image->bits = 8;
         image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     }
+    decoded_so_far.bytes += double(image->image.size());
+    check_memory(file + ": its images, decoded and converted",
+                 2 * decoded_so_far.bytes);  // convert_image copies
     return true;
 }
 
@@ -322,7 +335,8 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
 // tinygltf's model of the bytes, with our file and image callbacks.
 tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string& path) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(load_image, const_cast<std::string*>(&path));
+    ImagesDecoded images_decoded{path};
+    loader.SetImageLoader(load_image, &images_decoded);
     tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file,
                                 &tinygltf::WriteWholeFile, nullptr};
     loader.SetFsCallbacks(files);
@@ -466,6 +480,26 @@ std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>&
     return {id.GetNumberAsInt()};
 }
 
+// What the nodes' copies of a mesh beyond its first need (read_primitive: positions, normals, uvs and
+// tangents as floats, 32-bit indices): a few meshes used by many nodes would otherwise ask for memory
+// quadratic in the file's size. The first copy is checked against the file's buffers as it is read.
+double mesh_copy_bytes(const tinygltf::Model& gltf, const std::vector<int>& mesh_users) {
+    auto count = [&](int accessor) {
+        return accessor >= 0 && accessor < int(gltf.accessors.size())
+                   ? double(gltf.accessors[std::size_t(accessor)].count)
+                   : 0.0;
+    };
+    double bytes = 0;
+    for (std::size_t m = 0; m < gltf.meshes.size(); ++m)
+        for (const tinygltf::Primitive& primitive : gltf.meshes[m].primitives) {
+            const auto position = primitive.attributes.find("POSITION");
+            const double vertices = position == primitive.attributes.end() ? 0 : count(position->second);
+            bytes += std::max(mesh_users[m] - 1, 0) *
+                     (vertices * 12 * sizeof(float) + count(primitive.indices) * sizeof(std::uint32_t));
+        }
+    return bytes;
+}
+
 // The node tree under the roots (several roots get a common one, named after
 // the file), geometry in world space; depth-first, parents before children,
 // with an explicit stack so that a deep chain cannot overflow.
@@ -484,13 +518,14 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
         pending.insert(pending.end(), node.children.begin(), node.children.end());
     }
+    check_memory(reader.file + ": the nodes' copies of their meshes", mesh_copy_bytes(gltf, mesh_users));
     struct Visit {
         int gltf_node;
         int parent;
         Eigen::Matrix4d parent_world;
     };
     std::vector<Visit> stack;
-    if (roots.size() > 1) add_node(model, -1, fs::path(reader.file).stem().string());
+    if (roots.size() > 1) add_node(model, -1, utf8_or_latin1(fs::path(reader.file).stem().string()));
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
         stack.push_back({*it, roots.size() > 1 ? 0 : -1, Eigen::Matrix4d::Identity()});
     std::vector<bool> visited(gltf.nodes.size(), false);

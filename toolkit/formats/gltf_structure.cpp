@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <cstring>
 
@@ -73,7 +74,7 @@ const nlohmann::json& array_member(const nlohmann::json& root, const char* key, 
 // The JSON kind of a member as the glTF 2.0 schema gives it (spec section 5,
 // Properties Reference). tinygltf skips a member of another kind without a
 // word, and the file would be read as if the member were absent.
-enum class Kind { object, array, string, boolean, number, index, numbers, indices, strings };
+enum class Kind { object, array, string, boolean, number, index, count, numbers, indices, strings };
 
 struct MemberKind {
     const char* path;  // from the root: "materials[].alphaCutoff"; [] walks an array's elements
@@ -94,6 +95,7 @@ constexpr MemberKind member_kinds[] = {
     {"nodes[].children", Kind::indices},
     {"nodes[].mesh", Kind::index},
     {"nodes[].camera", Kind::index},
+    {"nodes[].extensions.MSFT_lod.ids", Kind::indices},
     {"nodes[].matrix", Kind::numbers, 16},
     {"nodes[].translation", Kind::numbers, 3},
     {"nodes[].rotation", Kind::numbers, 4},
@@ -103,10 +105,11 @@ constexpr MemberKind member_kinds[] = {
     {"meshes[].primitives[].indices", Kind::index},
     {"meshes[].primitives[].material", Kind::index},
     {"meshes[].primitives[].mode", Kind::index},
+    {"meshes[].primitives[].extras.boxlod.polygons", Kind::index},  // boxlod's extras (gltf_extras.h)
     {"accessors[].bufferView", Kind::index},
-    {"accessors[].byteOffset", Kind::index},
+    {"accessors[].byteOffset", Kind::count},
     {"accessors[].componentType", Kind::index},
-    {"accessors[].count", Kind::index},
+    {"accessors[].count", Kind::count},  // tinygltf keeps counts and offsets whole
     {"accessors[].type", Kind::string},
     {"accessors[].normalized", Kind::boolean},
     {"accessors[].min", Kind::numbers},
@@ -115,6 +118,7 @@ constexpr MemberKind member_kinds[] = {
     {"materials[].alphaMode", Kind::string},
     {"materials[].alphaCutoff", Kind::number},
     {"materials[].doubleSided", Kind::boolean},
+    {"materials[].extras.boxlod.height_texture", Kind::index},
     {"materials[].emissiveFactor", Kind::numbers, 3},
     {"materials[].pbrMetallicRoughness", Kind::object},
     {"materials[].pbrMetallicRoughness.baseColorFactor", Kind::numbers, 4},
@@ -161,12 +165,18 @@ const char* kind_text(Kind kind) {
     case Kind::string: return "a string";
     case Kind::boolean: return "true or false";
     case Kind::number: return "a number";
-    case Kind::index: return "a non-negative integer";
+    case Kind::index: return "a non-negative integer below 2^31";
+    case Kind::count: return "a non-negative integer";
     case Kind::numbers: return "an array of numbers";
-    case Kind::indices: return "an array of non-negative integers";
+    case Kind::indices: return "an array of non-negative integers below 2^31";
     case Kind::strings: return "an array of strings";
     }
     return "";
+}
+
+// tinygltf 2.7 keeps every index in an int, truncating larger ones to another index.
+bool is_index(const nlohmann::json& value) {
+    return value.is_number_unsigned() && value.get<std::uint64_t>() <= std::uint64_t(INT_MAX);
 }
 
 bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
@@ -177,11 +187,12 @@ bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
     case Kind::string: return value.is_string();
     case Kind::boolean: return value.is_boolean();
     case Kind::number: return value.is_number();
-    case Kind::index: return value.is_number_unsigned();
+    case Kind::index: return is_index(value);
+    case Kind::count: return value.is_number_unsigned();
     case Kind::numbers:
         return all([](const nlohmann::json& v) { return v.is_number(); }) &&
                (length == 0 || value.size() == length);
-    case Kind::indices: return all([](const nlohmann::json& v) { return v.is_number_unsigned(); });
+    case Kind::indices: return all(is_index);
     case Kind::strings: return all([](const nlohmann::json& v) { return v.is_string(); });
     }
     return false;

@@ -152,8 +152,10 @@ void validate_material(const Model& model, const Material& material) {
     for (const auto& slot : texture_slots(material))
         if (slot.index >= int(model.textures.size()))
             throw_input_error(file, place, "texture index out of range");
-    if (!material.base_color.allFinite() || !material.specular_color.allFinite())
-        throw_input_error(file, place, "colour is NaN or infinite");
+    // glTF 2.0's factors (5.19.4, KHR_materials_pbrSpecularGlossiness): each in [0, 1], NaN failing too.
+    auto unit = [](const auto& colour) { return ((colour.array() >= 0) && (colour.array() <= 1)).all(); };
+    if (!unit(material.base_color) || !unit(material.specular_color))
+        throw_input_error(file, place, "colour out of range [0, 1]");
     if (const auto& extension = material.specular_extension;
         extension && !(extension->factor >= 0 && extension->factor <= 1 &&
                        (extension->color_factor.array() >= specular_color_factor_range.min).all() &&

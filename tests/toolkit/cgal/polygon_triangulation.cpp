@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
+#include <cmath>
+
 namespace boxlod {
 namespace {
 
@@ -67,6 +69,24 @@ TEST(PolygonTriangulation, CrossingRingsMeetAtAddedPoints) {
     bool all_turn = false;
     area_about({outer, hole}, triangles, {0, 0, 1}, all_turn);
     EXPECT_TRUE(all_turn);
+}
+
+// A ring wound as a star {n/k} crosses itself about n^2/2 times: refused, not triangulated.
+TEST(PolygonTriangulation, ARingThatCrossesItselfMoreThanItHasPointsIsRefused) {
+    auto star = [](int n, int k) {
+        Ring ring;
+        for (int j = 0; j < n; ++j) {
+            const double angle = 2 * M_PI * double(j * k % n) / n;
+            ring.emplace_back(std::cos(angle), std::sin(angle), 0);
+        }
+        return ring;
+    };
+    const PolygonTriangles crossed = triangulate_polygon({star(201, 100)});
+    EXPECT_TRUE(crossed.too_many_crossings);
+    EXPECT_TRUE(crossed.triangles.empty());
+    const PolygonTriangles pentagram = triangulate_polygon({star(5, 2)});  // 5 crossings
+    EXPECT_FALSE(pentagram.too_many_crossings);
+    EXPECT_EQ(pentagram.added_points.size(), 5u);
 }
 
 TEST(PolygonTriangulation, APolygonWithoutAreaGivesNoTriangle) {

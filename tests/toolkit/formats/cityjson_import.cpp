@@ -167,6 +167,12 @@ TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
     EXPECT_EQ(red.base_color_texture, -1);
     EXPECT_EQ(red.base_color, Eigen::Vector4f(1, 0, 0, 0.75f));
     EXPECT_EQ(red.alpha_mode, AlphaMode::blend);
+    // Two textures of one image file (as a CityJSONSeq's features may name one atlas): one texture.
+    file["appearance"]["textures"][1]["image"] = "./roof.png";
+    test::write_text(folder / "twice.city.json", file.dump());
+    const Model twice = import_cityjson((folder / "twice.city.json").string());
+    EXPECT_EQ(twice.textures.size(), 1u);
+    EXPECT_EQ(twice.nodes[std::size_t(node_named(twice, "roof"))].primitives.size(), 1u);
 }
 
 // A 10 m square with a 1 mm step in one corner, at the origin or 400 km out.
@@ -307,6 +313,30 @@ TEST(CityJsonImport, KeepsTheReferenceSystem) {
     EXPECT_NE(
         test::input_error_of([&] { read(file, "system_number"); }).find("'referenceSystem' is not a string"),
         std::string::npos);
+}
+
+// A polygon that triangulates to nothing (two points; three in a row) leaves no primitive
+// without triangles (glTF holds none: an accessor of count 0), and a file named in Latin-1 names
+// its root in UTF-8: both write a glTF that reads back.
+TEST(CityJsonImport, DegeneratePolygonsAndLatin1NamesWriteAGltf) {
+    const json objects = {
+        {"a",
+         {{"type", "Building"},
+          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
+        {"b",
+         {{"type", "Building"},
+          {"geometry",
+           {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1}}, {{0, 1, 4}}}}}}}}}};
+    json vertices = square_vertices;
+    vertices.push_back({2000, 0, 0});  // in a row with 0 and 1
+    const Model model = read(city(objects, vertices), "caf\xe9");
+    EXPECT_EQ(model.nodes[0].name, "caf\xc3\xa9.city");
+    EXPECT_EQ(triangles(model), 2u);
+    for (const Node& node : model.nodes)
+        for (const Primitive& p : node.primitives) EXPECT_GT(p.triangle_count(), 0u) << node.name;
+    const fs::path out = test::scratch_folder("cityjson_degenerate") / "out.gltf";
+    save_model(model, out.string());
+    EXPECT_EQ(triangles(load_model(out.string())), 2u);
 }
 
 // Bad input: one line naming the file and the place.

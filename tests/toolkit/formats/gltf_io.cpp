@@ -524,6 +524,21 @@ TEST(GltfIo, SeveralRootNodesGetOneRootNamedAfterTheFile) {
     ASSERT_EQ(model.nodes.size(), 3u);
     EXPECT_EQ(model.nodes[0].name, "street");
     EXPECT_EQ(model.nodes[0].children, (std::vector<int>{1, 2}));
+    // A file named in Latin-1 names the root in UTF-8, as glTF's JSON must.
+    test::write_text(folder /
+                         "stra\xdf"
+                         "e.gltf",
+                     json);
+    Model latin1 = load_model((folder / "stra\xdf"
+                                        "e.gltf")
+                                  .string());
+    EXPECT_EQ(latin1.nodes[0].name,
+              "stra\xc3\x9f"
+              "e");
+    save_model(latin1, (folder / "out.glb").string());
+    EXPECT_EQ(load_model((folder / "out.glb").string()).nodes[0].name,
+              "stra\xc3\x9f"
+              "e");
 }
 
 TEST(GltfIo, SixteenBitGreyUsedAsColourReadsAsGreyNotRed) {

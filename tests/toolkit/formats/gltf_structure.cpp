@@ -85,9 +85,12 @@ TEST(GltfStructure, MembersBoxlodReadsHaveTheirSchemasKind) {
         problem(R"({"materials":[{"pbrMetallicRoughness":{"baseColorFactor":[1,1,1]}}]})"),
         "m.gltf: materials[0].pbrMetallicRoughness.baseColorFactor: must be an array of numbers of length 4");
     EXPECT_EQ(problem(R"({"meshes":[{"primitives":[{"attributes":{},"material":-1}]}]})"),
-              "m.gltf: meshes[0].primitives[0].material: must be a non-negative integer");
+              "m.gltf: meshes[0].primitives[0].material: must be a non-negative integer below 2^31");
+    // tinygltf keeps an index in an int: 2^32 would read as index 0.
+    EXPECT_EQ(problem(R"({"nodes":[{"mesh":4294967296}]})"),
+              "m.gltf: nodes[0].mesh: must be a non-negative integer below 2^31");
     EXPECT_EQ(problem(R"({"nodes":[{"children":[1,"2"]}]})"),
-              "m.gltf: nodes[0].children: must be an array of non-negative integers");
+              "m.gltf: nodes[0].children: must be an array of non-negative integers below 2^31");
     EXPECT_EQ(problem(R"({"extensionsUsed":"KHR_materials_specular"})"),
               "m.gltf: extensionsUsed: must be an array of strings");
     EXPECT_EQ(problem(R"({"meshes":{}})"), "m.gltf: meshes: must be an array");
