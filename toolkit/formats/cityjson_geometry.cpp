@@ -163,8 +163,8 @@ struct CityReadState {
     // Over all documents:
     std::map<std::pair<std::string, Wrap>, int> texture_of_file;  // (image file, wrap) -> model texture
     std::set<std::string> missing_textures, lods;
-    std::size_t without_lod = 0, polygons = 0;
-    std::size_t points = 0, instanced_points = 0;  // polygon points emitted; those by GeometryInstances
+    std::size_t without_lod = 0, polygons = 0, points = 0,
+                instanced_points = 0;  // points: of polygons emitted
 
     const json* appearance(const char* key) const {
         auto a = document->find("appearance");
@@ -193,23 +193,16 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
         !fs::is_regular_file(path, error)) {
         s.missing_textures.insert(image);
     } else {
-        const std::string wrap_mode = texture.contains("wrapMode") && texture["wrapMode"].is_string()
-                                          ? texture["wrapMode"].get<std::string>()
-                                          : "none";
-        const Wrap wrap = wrap_mode == "wrap" || wrap_mode == "mirror"
-                              ? Wrap::repeat
-                              : Wrap::clamp;  // CityGML's "none" and "border": no repeat
+        const json mode = texture.value("wrapMode", json("none"));
+        const Wrap wrap =
+            mode == "wrap" || mode == "mirror" ? Wrap::repeat : Wrap::clamp;  // "none", "border"
         // One image file, one texture: a CityJSONSeq's features or many textures may share one atlas.
         const auto key = std::make_pair(fs::weakly_canonical(path, error).string(), wrap);
-        if (auto known = s.texture_of_file.find(key); known != s.texture_of_file.end()) {
-            index = known->second;
-        } else {
-            Texture out{fs::path(image).filename().string(), read_image(path.string())};
-            out.wrap = wrap;
-            s.model.textures.push_back(std::move(out));
-            index = int(s.model.textures.size()) - 1;
-            s.texture_of_file[key] = index;
-        }
+        const auto [known, added] = s.texture_of_file.try_emplace(key, int(s.model.textures.size()));
+        if (added)
+            s.model.textures.push_back(
+                {fs::path(image).filename().string(), read_image(path.string()), {}, wrap});
+        index = known->second;
     }
     s.texture_of[t] = index;
     return index;
@@ -441,10 +434,8 @@ int surface_depth(const CityPlace& at, const std::string& type) {
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
                    const std::vector<Eigen::Vector3d>& vertices, bool in_template = false);
 
-// A file's instances each copy their template: memory and time grow as instances x template, which the
-// file's size does not bound, so the copies are held to the memory budget. A polygon point's share of
-// the model: its vertex (position, normal, tangent, uv), its share of the triangles' indices, its entry
-// in the emission's vertex map.
+// Instances copy their template: memory and time grow as instances x template, which the file's size does
+// not bound. A polygon point's share of the model: its vertex, its triangles' indices, its vertex map entry.
 constexpr double bytes_per_instanced_point = 160;
 
 // A GeometryInstance: a template of geometry-templates, transformed by its
