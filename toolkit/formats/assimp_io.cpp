@@ -139,12 +139,15 @@ Material convert_material(Model& model, const aiScene& scene, const aiMaterial& 
         material.base_color = {color.r, color.g, color.b, color.a};
     float opacity;
     if (in.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.base_color[3] = opacity;
+    // OBJ's and FBX's colours may lie beyond [0, 1] (MTL: "increase the reflectivity"); glTF's factors may
+    // not.
+    material.base_color = material.base_color.cwiseMax(0).cwiseMin(1);
     if (material.base_color[3] < 1)
         material.alpha_mode = AlphaMode::blend;  // assimp has no alpha mode: see-through is blended
     // Phong specular terms, where the format states them, go out as glTF's specular-glossiness.
     aiColor3D specular;
     if (in.Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
-        material.specular_color = {specular.r, specular.g, specular.b};
+        material.specular_color = Eigen::Vector3f(specular.r, specular.g, specular.b).cwiseMax(0).cwiseMin(1);
         material.specular_glossiness = true;
     }
     float shininess;

@@ -5,6 +5,7 @@
 #include "base/memory_budget.h"
 #include "renderer/image.h"
 #include "toolkit/cgal/polygon_triangulation.h"
+#include "toolkit/formats/cityjson_semantic_colours.h"
 
 #include <nlohmann/json.hpp>
 
@@ -43,31 +44,6 @@ void CityPlace::fail(const std::string& what) const {
 }
 
 namespace {
-
-// Surfaces that name neither a material nor a texture are drawn in their
-// semantic type's colour (linear RGB; the shades city viewers commonly use),
-// so that a roof reads as a roof in an untextured model such as 3DBAG's.
-struct SemanticColour {
-    const char* type;
-    Eigen::Vector3f colour;
-};
-const SemanticColour semantic_colours[] = {
-    {"RoofSurface", {0.50f, 0.12f, 0.08f}},
-    {"WallSurface", {0.75f, 0.72f, 0.65f}},
-    {"GroundSurface", {0.20f, 0.20f, 0.20f}},
-    {"ClosureSurface", {0.60f, 0.60f, 0.60f}},
-    {"OuterCeilingSurface", {0.55f, 0.55f, 0.55f}},
-    {"OuterFloorSurface", {0.45f, 0.45f, 0.45f}},
-    {"Window", {0.15f, 0.25f, 0.40f}},
-    {"Door", {0.30f, 0.17f, 0.08f}},
-};
-const Eigen::Vector3f unnamed_colour{0.65f, 0.65f, 0.65f};
-
-Eigen::Vector3f semantic_colour(const std::string& type) {
-    for (const SemanticColour& entry : semantic_colours)
-        if (type == entry.type) return entry.colour;
-    return unnamed_colour;
-}
 
 bool same_lod(const std::string& a, const std::string& b) {
     return a == b || (city_lod_number(a) >= 0 && city_lod_number(a) == city_lod_number(b));
@@ -163,8 +139,9 @@ struct CityReadState {
     // Over all documents:
     std::map<std::pair<std::string, Wrap>, int> texture_of_file;  // (image file, wrap) -> model texture
     std::set<std::string> missing_textures, lods;
-    std::size_t without_lod = 0, polygons = 0, points = 0,
-                instanced_points = 0;  // points: of polygons emitted
+    std::size_t without_lod = 0, polygons = 0;
+    std::size_t points = 0, instanced_points = 0;  // of polygons emitted; by GeometryInstances (and placed)
+    double images_memory = 0;
 
     const json* appearance(const char* key) const {
         auto a = document->find("appearance");
@@ -197,11 +174,16 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
         const Wrap wrap =
             mode == "wrap" || mode == "mirror" ? Wrap::repeat : Wrap::clamp;  // "none", "border"
         // One image file, one texture: a CityJSONSeq's features or many textures may share one atlas.
-        const auto key = std::make_pair(fs::weakly_canonical(path, error).string(), wrap);
+        const fs::path canonical = fs::weakly_canonical(path, error);
+        const auto key =
+            std::make_pair((canonical.empty() ? path.lexically_normal() : canonical).string(), wrap);
         const auto [known, added] = s.texture_of_file.try_emplace(key, int(s.model.textures.size()));
-        if (added)
+        if (added) {
             s.model.textures.push_back(
                 {fs::path(image).filename().string(), read_image(path.string()), {}, wrap});
+            s.images_memory += double(s.model.textures.back().image.pixels.size());  // each checked alone
+            check_memory(s.file + ": its images, decoded", s.images_memory);
+        }
         index = known->second;
     }
     s.texture_of[t] = index;
@@ -464,6 +446,7 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
+    s.instanced_points += points.size();  // each instance places all of them
     std::vector<Eigen::Vector3d> placed;
     for (const json& p : points) {
         if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())

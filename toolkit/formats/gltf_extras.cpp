@@ -197,11 +197,10 @@ void read_material_extras(const tinygltf::Value& extras, int image_count, const 
             throw_input_error(at.file, at.place, "shininess must be a number");  // range: validate_model
         material.shininess = float(fields->Get("shininess").GetNumberAsDouble());
     }
-    if (fields->Has("height_texture")) {
-        const tinygltf::Value& texture = fields->Get("height_texture");
-        if (!texture.IsInt() || texture.Get<int>() < 0 || texture.Get<int>() >= image_count)
-            throw_input_error(at.file, at.place, "height_texture must be an image index");
-        material.height_texture = texture.Get<int>();
+    if (fields->Has("height_texture")) {  // an index below 2^31 (gltf_structure.cpp)
+        material.height_texture = fields->Get("height_texture").GetNumberAsInt();
+        if (material.height_texture >= image_count)
+            throw_input_error(at.file, at.place, "height_texture out of range");
     }
     if (fields->Has("height_depth")) {
         if (!fields->Get("height_depth").IsNumber())

@@ -238,7 +238,7 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
     read_primitive_extras(in.extras, {reader.file, place}, out);
     if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
     out.material = in.material;
-    node.primitives.push_back(std::move(out));
+    if (!out.indices.empty()) node.primitives.push_back(std::move(out));  // no triangle: nothing to draw
 }
 
 // The image a material's texture samples (-1: none); boxlod reads TEXCOORD_0 only.
@@ -480,24 +480,27 @@ std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>&
     return {id.GetNumberAsInt()};
 }
 
-// What the nodes' copies of a mesh beyond its first need (read_primitive: positions, normals, uvs and
-// tangents as floats, 32-bit indices): a few meshes used by many nodes would otherwise ask for memory
-// quadratic in the file's size. The first copy is checked against the file's buffers as it is read.
-double mesh_copy_bytes(const tinygltf::Model& gltf, const std::vector<int>& mesh_users) {
-    auto count = [&](int accessor) {
-        return accessor >= 0 && accessor < int(gltf.accessors.size())
-                   ? double(gltf.accessors[std::size_t(accessor)].count)
-                   : 0.0;
-    };
-    double bytes = 0;
-    for (std::size_t m = 0; m < gltf.meshes.size(); ++m)
-        for (const tinygltf::Primitive& primitive : gltf.meshes[m].primitives) {
-            const auto position = primitive.attributes.find("POSITION");
-            const double vertices = position == primitive.attributes.end() ? 0 : count(position->second);
-            bytes += std::max(mesh_users[m] - 1, 0) *
-                     (vertices * 12 * sizeof(float) + count(primitive.indices) * sizeof(std::uint32_t));
-        }
-    return bytes;
+// A primitive's memory once read (positions, normals, uvs and tangents: 48 bytes a vertex; 32-bit indices;
+// the struct and its five allocations): a mesh used by many nodes is copied for each, and one accessor
+// may serve many primitives, so what a file asks grows faster than its size.
+double primitive_memory(const Primitive& p) {
+    constexpr double allocation = 32;  // glibc's bookkeeping and rounding, about
+    return double(sizeof(Primitive)) + 5 * allocation + 48 * double(p.positions.size()) +
+           double(p.indices.size() * sizeof(p.indices[0]));
+}
+
+// Mesh m's primitives, in world space, into `node`; `memory` counts what the file's meshes hold so far.
+void read_mesh(const Reader& reader, int m, const Eigen::Matrix4d& world, const std::string& place,
+               Node& node, double& memory) {
+    const tinygltf::Mesh& mesh = reader.gltf.meshes[std::size_t(m)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const std::size_t read = node.primitives.size();
+        read_primitive(reader, mesh.primitives[p], world,
+                       place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p), node);
+        if (node.primitives.size() == read) continue;
+        memory += primitive_memory(node.primitives.back());
+        check_memory(reader.file + ": its nodes' meshes, as read", memory);
+    }
 }
 
 // The node tree under the roots (several roots get a common one, named after
@@ -518,7 +521,6 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
         pending.insert(pending.end(), node.children.begin(), node.children.end());
     }
-    check_memory(reader.file + ": the nodes' copies of their meshes", mesh_copy_bytes(gltf, mesh_users));
     struct Visit {
         int gltf_node;
         int parent;
@@ -529,6 +531,7 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
         stack.push_back({*it, roots.size() > 1 ? 0 : -1, Eigen::Matrix4d::Identity()});
     std::vector<bool> visited(gltf.nodes.size(), false);
+    double meshes_memory = 0;
     while (!stack.empty()) {
         Visit visit = stack.back();
         stack.pop_back();
@@ -548,10 +551,7 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
         if (in.camera >= int(gltf.cameras.size())) reader.fail(place, "camera index out of range");
         if (in.mesh >= 0) {
             const tinygltf::Mesh& mesh = gltf.meshes[in.mesh];
-            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                read_primitive(reader, mesh.primitives[p], world,
-                               place + " mesh " + std::to_string(in.mesh) + " primitive " + std::to_string(p),
-                               node);
+            read_mesh(reader, in.mesh, world, place, node, meshes_memory);
             if (mesh_users[in.mesh] > 1)
                 node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
         }

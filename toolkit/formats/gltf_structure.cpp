@@ -9,6 +9,7 @@
 #include <climits>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace boxlod {
 namespace {
@@ -74,7 +75,20 @@ const nlohmann::json& array_member(const nlohmann::json& root, const char* key, 
 // The JSON kind of a member as the glTF 2.0 schema gives it (spec section 5,
 // Properties Reference). tinygltf skips a member of another kind without a
 // word, and the file would be read as if the member were absent.
-enum class Kind { object, array, string, boolean, number, index, count, numbers, indices, strings };
+enum class Kind {
+    object,
+    array,
+    string,
+    boolean,
+    number,
+    index,
+    count,
+    numbers,
+    indices,
+    strings,
+    index_values,
+    ints
+};
 
 struct MemberKind {
     const char* path;  // from the root: "materials[].alphaCutoff"; [] walks an array's elements
@@ -101,11 +115,18 @@ constexpr MemberKind member_kinds[] = {
     {"nodes[].rotation", Kind::numbers, 4},
     {"nodes[].scale", Kind::numbers, 3},
     {"meshes[].primitives", Kind::array},
-    {"meshes[].primitives[].attributes", Kind::object},
+    {"meshes[].primitives[].attributes", Kind::index_values},
     {"meshes[].primitives[].indices", Kind::index},
     {"meshes[].primitives[].material", Kind::index},
     {"meshes[].primitives[].mode", Kind::index},
     {"meshes[].primitives[].extras.boxlod.polygons", Kind::index},  // boxlod's extras (gltf_extras.h)
+    // What boxlod reads through tinygltf's Value, which keeps every integer in an int.
+    {"meshes[].primitives[].extras.boxlod", Kind::ints},
+    {"nodes[].extras.boxlod", Kind::ints},
+    {"nodes[].extensions.MSFT_lod", Kind::ints},
+    {"materials[].extras.boxlod", Kind::ints},
+    {"materials[].extensions.KHR_materials_pbrSpecularGlossiness", Kind::ints},
+    {"materials[].extensions.KHR_materials_specular", Kind::ints},
     {"accessors[].bufferView", Kind::index},
     {"accessors[].byteOffset", Kind::count},
     {"accessors[].componentType", Kind::index},
@@ -167,6 +188,8 @@ const char* kind_text(Kind kind) {
     case Kind::number: return "a number";
     case Kind::index: return "a non-negative integer below 2^31";
     case Kind::count: return "a non-negative integer";
+    case Kind::index_values: return "an object of non-negative integers below 2^31";
+    case Kind::ints: return "free of integers beyond 32 bits";
     case Kind::numbers: return "an array of numbers";
     case Kind::indices: return "an array of non-negative integers below 2^31";
     case Kind::strings: return "an array of strings";
@@ -179,6 +202,20 @@ bool is_index(const nlohmann::json& value) {
     return value.is_number_unsigned() && value.get<std::uint64_t>() <= std::uint64_t(INT_MAX);
 }
 
+// Every integer within `value` fits an int (a walk with a stack: the JSON is at most max_nesting_depth deep).
+bool integers_fit_int(const nlohmann::json& value) {
+    std::vector<const nlohmann::json*> pending{&value};
+    while (!pending.empty()) {
+        const nlohmann::json& v = *pending.back();
+        pending.pop_back();
+        if (v.is_number_unsigned() && v.get<std::uint64_t>() > std::uint64_t(INT_MAX)) return false;
+        if (v.is_number_integer() && !v.is_number_unsigned() && v.get<std::int64_t>() < INT_MIN) return false;
+        if (v.is_structured())
+            for (const nlohmann::json& member : v) pending.push_back(&member);
+    }
+    return true;
+}
+
 bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
     auto all = [&](auto test) { return value.is_array() && std::all_of(value.begin(), value.end(), test); };
     switch (kind) {
@@ -189,6 +226,8 @@ bool has_kind(const nlohmann::json& value, Kind kind, std::size_t length) {
     case Kind::number: return value.is_number();
     case Kind::index: return is_index(value);
     case Kind::count: return value.is_number_unsigned();
+    case Kind::index_values: return value.is_object() && std::all_of(value.begin(), value.end(), is_index);
+    case Kind::ints: return integers_fit_int(value);
     case Kind::numbers:
         return all([](const nlohmann::json& v) { return v.is_number(); }) &&
                (length == 0 || value.size() == length);

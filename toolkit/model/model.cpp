@@ -153,9 +153,14 @@ void validate_material(const Model& model, const Material& material) {
         if (slot.index >= int(model.textures.size()))
             throw_input_error(file, place, "texture index out of range");
     // glTF 2.0's factors (5.19.4, KHR_materials_pbrSpecularGlossiness): each in [0, 1], NaN failing too.
-    auto unit = [](const auto& colour) { return ((colour.array() >= 0) && (colour.array() <= 1)).all(); };
-    if (!unit(material.base_color) || !unit(material.specular_color))
-        throw_input_error(file, place, "colour out of range [0, 1]");
+    auto check_unit = [&](const auto& colour, const char* name) {
+        if (((colour.array() >= 0) && (colour.array() <= 1)).all()) return;
+        std::string values;
+        for (float c : colour) values += (values.empty() ? "" : ", ") + format_number(c);
+        throw_input_error(file, place, std::string(name) + " (" + values + ") out of range [0, 1]");
+    };
+    check_unit(material.base_color, "base colour");
+    check_unit(material.specular_color, "specular colour");
     if (const auto& extension = material.specular_extension;
         extension && !(extension->factor >= 0 && extension->factor <= 1 &&
                        (extension->color_factor.array() >= specular_color_factor_range.min).all() &&

@@ -369,6 +369,9 @@ TEST(CityJsonImport, BadFilesAreRefusedWithTheirPlace) {
     textured["appearance"] = {{"textures", {{{"type", "PNG"}, {"image", "a.png"}}}},
                               {"vertices-texture", {{0, 0}}}};
     EXPECT_NE(error_of(textured, "bad_texture").find("texture index 5 is outside 0..0"), std::string::npos);
+    textured["appearance"]["vertices-texture"] = {{0, 2e6}};  // a float holds it, no texture repeats so often
+    EXPECT_NE(error_of(textured, "far_uv").find("vertices-texture 0 is not two numbers in [-1e6, 1e6]"),
+              std::string::npos);
     EXPECT_NE(error_of(json::array(), "not_object").find("not a CityJSON object"), std::string::npos);
 }
 

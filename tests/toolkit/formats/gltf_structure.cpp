@@ -86,7 +86,18 @@ TEST(GltfStructure, MembersBoxlodReadsHaveTheirSchemasKind) {
         "m.gltf: materials[0].pbrMetallicRoughness.baseColorFactor: must be an array of numbers of length 4");
     EXPECT_EQ(problem(R"({"meshes":[{"primitives":[{"attributes":{},"material":-1}]}]})"),
               "m.gltf: meshes[0].primitives[0].material: must be a non-negative integer below 2^31");
-    // tinygltf keeps an index in an int: 2^32 would read as index 0.
+    // tinygltf keeps an index, and any integer in what boxlod reads of extras and extensions, in an int:
+    // 2^32 would read as index 0, 2^32 + 1 as a colour of 1.
+    EXPECT_EQ(
+        problem(R"({"meshes":[{"primitives":[{"attributes":{"POSITION":4294967296}}]}]})"),
+        "m.gltf: meshes[0].primitives[0].attributes: must be an object of non-negative integers below 2^31");
+    EXPECT_EQ(problem(R"({"materials":[{"extensions":{"KHR_materials_pbrSpecularGlossiness":)"
+                      R"({"diffuseFactor":[4294967297,0,0,1]}}}]})"),
+              "m.gltf: materials[0].extensions.KHR_materials_pbrSpecularGlossiness: must be free of integers "
+              "beyond 32 bits");
+    EXPECT_EQ(problem(R"({"nodes":[{"extras":{"boxlod":{"scope":{"center":[-4294967296,0,0]}}}}]})"),
+              "m.gltf: nodes[0].extras.boxlod: must be free of integers beyond 32 bits");
+    EXPECT_EQ(problem(R"({"nodes":[{"extras":{"other_tool":{"id":18446744073709551615}}}]})"), "");
     EXPECT_EQ(problem(R"({"nodes":[{"mesh":4294967296}]})"),
               "m.gltf: nodes[0].mesh: must be a non-negative integer below 2^31");
     EXPECT_EQ(problem(R"({"nodes":[{"children":[1,"2"]}]})"),

@@ -83,6 +83,27 @@ TEST(Model, ValidationRejectsEachKindOfBadData) {
     bad_material.nodes[0].primitives[0].material = 0;
     EXPECT_THROW(validate_model(bad_material), InputError);
 
+    // Colours are glTF's factors, each in [0, 1] (a reader of other formats clamps them).
+    Model bright = valid();
+    bright.materials.push_back({});
+    bright.materials[0].name = "lamp";
+    bright.nodes[0].primitives[0].material = 0;
+    EXPECT_NO_THROW(validate_model(bright));
+    bright.materials[0].base_color = {1.5f, 0, 0, 1};
+    auto message_of = [](const Model& model) {
+        try {
+            validate_model(model);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message_of(bright), "m.gltf: material 'lamp': base colour (1.5, 0, 0, 1) out of range [0, 1]");
+    bright.materials[0].base_color = {1, 1, 1, 1};
+    bright.materials[0].specular_color = {0, -0.25f, 0};
+    EXPECT_EQ(message_of(bright),
+              "m.gltf: material 'lamp': specular colour (0, -0.25, 0) out of range [0, 1]");
+
     try {
         validate_model(out_of_range);
     } catch (const InputError& error) {
