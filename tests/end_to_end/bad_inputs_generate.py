@@ -72,6 +72,12 @@ shared["meshes"][0]["primitives"] *= 20000
 shared["nodes"] *= 20000
 del shared["scene"], shared["scenes"]
 put("mesh_shared_by_many_nodes.gltf", json.dumps(shared))
+# The same as points, and as strips of two vertices: read, and left out, for every node all the same.
+shared["meshes"][0]["primitives"] = [{"attributes": {"POSITION": 0}, "mode": 0}] * 20000
+put("points_shared_by_many_nodes.gltf", json.dumps(shared))
+shared["accessors"].append({"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"})
+shared["meshes"][0]["primitives"] = [{"attributes": {"POSITION": 1}, "mode": 5}] * 20000
+put("short_strips_shared_by_many_nodes.gltf", json.dumps(shared))
 
 # A CityJSON template of 20,000 triangles placed 10 times: the copies would ask 96 MB (docs/design.md: Errors).
 identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]

@@ -140,7 +140,7 @@ struct CityReadState {
     std::map<std::pair<std::string, Wrap>, int> texture_of_file;  // (image file, wrap) -> model texture
     std::set<std::string> missing_textures, lods;
     std::size_t without_lod = 0, polygons = 0;
-    std::size_t points = 0, instanced_points = 0;  // of polygons emitted; by GeometryInstances (and placed)
+    std::size_t points = 0, instanced_points = 0;  // of polygons emitted; by GeometryInstances
     double images_memory = 0;
 
     const json* appearance(const char* key) const {
@@ -446,7 +446,6 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
-    s.instanced_points += points.size();  // each instance places all of them
     std::vector<Eigen::Vector3d> placed;
     for (const json& p : points) {
         if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())

@@ -180,11 +180,11 @@ std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, i
     return out;
 }
 
-void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const Eigen::Matrix4d& world,
-                    const std::string& place, Node& node) {
+std::size_t read_primitive(const Reader& reader, const tinygltf::Primitive& in, const Eigen::Matrix4d& world,
+                           const std::string& place, Node& node) {
     if (in.mode != TINYGLTF_MODE_TRIANGLES && in.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         in.mode != TINYGLTF_MODE_TRIANGLE_FAN && in.mode != -1)
-        return;  // points and lines have no faces to render or bake
+        return 0;  // points and lines have no faces to render or bake
     auto position = in.attributes.find("POSITION");
     if (position == in.attributes.end()) reader.fail(place, "primitive has no POSITION attribute");
     Primitive out;
@@ -239,6 +239,7 @@ void read_primitive(const Reader& reader, const tinygltf::Primitive& in, const E
     if (in.material >= int(reader.gltf.materials.size())) reader.fail(place, "material index out of range");
     out.material = in.material;
     if (!out.indices.empty()) node.primitives.push_back(std::move(out));  // no triangle: nothing to draw
+    return n;
 }
 
 // The image a material's texture samples (-1: none); boxlod reads TEXCOORD_0 only.
@@ -480,13 +481,12 @@ std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>&
     return {id.GetNumberAsInt()};
 }
 
-// A primitive's memory once read (positions, normals, uvs and tangents: 48 bytes a vertex; 32-bit indices;
-// the struct and its five allocations): a mesh used by many nodes is copied for each, and one accessor
-// may serve many primitives, so what a file asks grows faster than its size.
-double primitive_memory(const Primitive& p) {
-    constexpr double allocation = 32;  // glibc's bookkeeping and rounding, about
-    return double(sizeof(Primitive)) + 5 * allocation + 48 * double(p.positions.size()) +
-           double(p.indices.size() * sizeof(p.indices[0]));
+// What a primitive asks as it is read: the struct and its five allocations (glibc's bookkeeping and
+// rounding, about 32 bytes each), 48 bytes a vertex read (positions, normals, uvs, tangents) and 4 an index
+// kept. A mesh used by many nodes is read for each, and one accessor may serve many primitives (points,
+// lines and primitives without a triangle too), so what a file asks grows faster than its size.
+double primitive_memory(std::size_t vertices_read, std::size_t indices_kept) {
+    return double(sizeof(Primitive) + 5 * 32) + 48 * double(vertices_read) + 4 * double(indices_kept);
 }
 
 // Mesh m's primitives, in world space, into `node`; `memory` counts what the file's meshes hold so far.
@@ -494,11 +494,12 @@ void read_mesh(const Reader& reader, int m, const Eigen::Matrix4d& world, const 
                Node& node, double& memory) {
     const tinygltf::Mesh& mesh = reader.gltf.meshes[std::size_t(m)];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-        const std::size_t read = node.primitives.size();
-        read_primitive(reader, mesh.primitives[p], world,
-                       place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p), node);
-        if (node.primitives.size() == read) continue;
-        memory += primitive_memory(node.primitives.back());
+        const std::size_t kept = node.primitives.size();
+        const std::size_t vertices =
+            read_primitive(reader, mesh.primitives[p], world,
+                           place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p), node);
+        memory += primitive_memory(vertices,
+                                   node.primitives.size() > kept ? node.primitives.back().indices.size() : 0);
         check_memory(reader.file + ": its nodes' meshes, as read", memory);
     }
 }

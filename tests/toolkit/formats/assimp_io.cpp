@@ -60,6 +60,19 @@ TEST(AssimpIo, Latin1NamesBecomeUtf8) {
                             [](const Material& m) { return m.name == "Terraind\xc3\xa6k"; }));
 }
 
+// MTL's colours may lie beyond [0, 1] ("increase the reflectivity"); glTF's factors may not: clamped.
+TEST(AssimpIo, ColoursBeyondOneAreClamped) {
+    auto folder = test::scratch_folder("assimp_bright");
+    test::write_text(folder / "m.mtl", "newmtl lamp\nKd 1.5 0.5 -0.25\nKs 2 2 2\n");
+    test::write_text(folder / "m.obj", "mtllib m.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    Model model = load_model((folder / "m.obj").string());
+    const auto lamp = std::find_if(model.materials.begin(), model.materials.end(),
+                                   [](const Material& m) { return m.name == "lamp"; });
+    ASSERT_NE(lamp, model.materials.end());
+    EXPECT_EQ(lamp->base_color, Eigen::Vector4f(1, 0.5f, 0, 1));
+    EXPECT_EQ(lamp->specular_color, Eigen::Vector3f(1, 1, 1));
+}
+
 TEST(AssimpIo, MalformedFilesAreInputErrors) {
     auto folder = test::scratch_folder("assimp_bad");
     test::write_text(folder / "bad.ply",

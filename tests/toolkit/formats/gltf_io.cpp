@@ -492,6 +492,27 @@ TEST(GltfIo, ExportIsByteIdenticalEveryTime) {
     EXPECT_EQ(test::read_text(folder / "a.glb"), test::read_text(folder / "b.glb"));
 }
 
+// A primitive that makes no triangle (a strip of two vertices, points) is left out: glTF holds no
+// accessor of count 0, so boxlod could not write it back.
+TEST(GltfIo, APrimitiveWithoutATriangleIsLeftOut) {
+    auto folder = test::scratch_folder("gltf_no_triangle");
+    auto replace = [](std::string& text, const std::string& from, const std::string& to) {
+        text.replace(text.find(from), from.size(), to);
+    };
+    std::string mesh = triangle_mesh;
+    replace(mesh, R"("indices": 1}]}])", R"("indices": 1}, {"attributes": {"POSITION": 2}, "mode": 5},
+                                          {"attributes": {"POSITION": 0}, "mode": 0}]}])");
+    replace(mesh, R"("type": "SCALAR"}])",
+            R"("type": "SCALAR"}, {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"}])");
+    test::write_text(folder / "m.gltf", gltf_with_buffer(triangle_bytes(), mesh + R"(,
+      "nodes": [{"name": "n", "mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0)"));
+    const Model model = load_model((folder / "m.gltf").string());
+    ASSERT_EQ(model.nodes.size(), 1u);
+    EXPECT_EQ(model.nodes[0].primitives.size(), 1u);
+    save_model(model, (folder / "out.glb").string());
+    EXPECT_EQ(load_model((folder / "out.glb").string()).nodes[0].primitives.size(), 1u);
+}
+
 TEST(GltfIo, TransformsAreAppliedAndSharedMeshesExpanded) {
     auto folder = test::scratch_folder("gltf_transforms");
     // root translates by +10 x; child a scales by 2; child b mirrors x (matrix), which must flip the winding.
