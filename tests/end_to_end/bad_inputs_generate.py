@@ -89,6 +89,17 @@ put("instances_many.city.json", json.dumps({
         {"type": "GeometryInstance", "template": 0, "boundaries": [0], "transformationMatrix": identity}] * 10}},
     "vertices": [[0, 0, 0]]}))
 
+# One small template placed 20,000 times over a pool of 400,000 template points, then one naming no
+# template: placing the whole pool per instance took 8 * 10^9 point transforms (minutes) before refusing.
+put("instances_over_a_large_pool.city.json", json.dumps({
+    "type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},
+    "geometry-templates": {"templates": [{"type": "MultiSurface", "lod": "2", "boundaries": [[[0, 1, 2]]]}],
+                           "vertices-templates": [[0, 0, 0], [1, 0, 0], [0, 1, 0]] + [[0, 0, 0]] * 400000},
+    "CityObjects": {"t": {"type": "SolitaryVegetationObject", "geometry": [
+        {"type": "GeometryInstance", "template": 0, "boundaries": [0], "transformationMatrix": identity}] * 20000 + [
+        {"type": "GeometryInstance", "template": 1, "boundaries": [0], "transformationMatrix": identity}]}},
+    "vertices": [[0, 0, 0]]}))
+
 # ---------------------------------------------------------------- grammars nested deeply or very long
 n = 3000
 put("grammar_parens_3000.grammar", "Lot --> extrude(%s3%s) i(box)\n" % ("(" * n, ")" * n))

@@ -5,13 +5,16 @@
 #include "base/memory_budget.h"
 #include "renderer/image.h"
 #include "toolkit/cgal/polygon_triangulation.h"
+#include "toolkit/formats/cityjson_material.h"
 #include "toolkit/formats/cityjson_semantic_colours.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -35,12 +38,6 @@ double city_lod_number(const std::string& lod) {
     char* end = nullptr;
     const double value = std::strtod(lod.c_str(), &end);
     return end != lod.c_str() && std::isfinite(value) ? value : -1;
-}
-
-void CityPlace::fail(const std::string& what) const {
-    std::string where = place;
-    while (!where.empty() && (where.back() == ' ' || where.back() == ':')) where.pop_back();
-    throw_input_error(file, where, what);
 }
 
 namespace {
@@ -83,43 +80,6 @@ const json* theme_values(const CityPlace& at, const json& geometry, const char* 
     at.fail(std::string("'") + key + "' theme has neither 'values' nor 'value'");
 }
 
-Eigen::Vector3f colour_of(const CityPlace& at, const json& value, const char* name) {
-    if (!value.is_array() || value.size() != 3) at.fail(std::string(name) + " is not three numbers");
-    Eigen::Vector3f colour;
-    for (int i = 0; i < 3; ++i) {
-        if (!value[i].is_number() || !(value[i].get<double>() >= 0 && value[i].get<double>() <= 1))
-            at.fail(std::string(name) + " holds " + value[i].dump() + ": colours are in [0, 1]");
-        colour[i] = value[i].get<float>();
-    }
-    return colour;
-}
-
-// A CityJSON material (X3D's terms) as boxlod's: diffuse colour, transparency
-// (blended), specular colour and shininess (X3D scales it by 128).
-Material convert_material(const CityPlace& at, const json& in, std::size_t index) {
-    if (!in.is_object()) at.fail("not an object");
-    Material material;
-    material.name = in.contains("name") && in["name"].is_string() ? in["name"].get<std::string>()
-                                                                  : "material " + std::to_string(index);
-    material.base_color.head<3>() = in.contains("diffuseColor")
-                                        ? colour_of(at, in["diffuseColor"], "diffuseColor")
-                                        : Eigen::Vector3f(0.8f, 0.8f, 0.8f);  // X3D's default
-    if (in.contains("transparency")) {
-        const json& t = in["transparency"];
-        if (!t.is_number() || !(t.get<double>() >= 0 && t.get<double>() <= 1))
-            at.fail("transparency is not in [0, 1]");
-        material.base_color[3] = 1 - t.get<float>();
-        if (material.base_color[3] < 1) material.alpha_mode = AlphaMode::blend;
-    }
-    if (in.contains("specularColor")) {
-        material.specular_color = colour_of(at, in["specularColor"], "specularColor");
-        material.specular_glossiness = true;
-    }
-    if (in.contains("shininess") && in["shininess"].is_number())
-        material.shininess = std::clamp(in["shininess"].get<float>(), 0.0f, 1.0f) * 128 + 1;
-    return material;
-}
-
 }  // namespace
 
 // What one document holds and what the reading has made so far.
@@ -141,6 +101,11 @@ struct CityReadState {
     std::set<std::string> missing_textures, lods;
     std::size_t without_lod = 0, polygons = 0;
     std::size_t points = 0, instanced_points = 0;  // of polygons emitted; by GeometryInstances
+    // The document's geometry templates, read at its first GeometryInstance: their points, the points
+    // each template names, and the points placed by the latest instance (only those it names).
+    std::optional<std::vector<Eigen::Vector3d>> template_points;
+    std::map<std::size_t, std::vector<std::size_t>> points_of_template;
+    std::vector<Eigen::Vector3d> placed;
     double images_memory = 0;
 
     const json* appearance(const char* key) const {
@@ -198,8 +163,8 @@ int material_index(const CityPlace& at, CityReadState& s, int material, int text
     if (auto known = s.material_of.find(key); known != s.material_of.end()) return known->second;
     Material out;
     if (material >= 0) {
-        out = convert_material(at.in("appearance: material " + std::to_string(material)),
-                               (*s.appearance("materials"))[std::size_t(material)], std::size_t(material));
+        out = city_material(at.in("appearance: material " + std::to_string(material)),
+                            (*s.appearance("materials"))[std::size_t(material)], std::size_t(material));
     } else if (texture < 0) {
         out.name = type.empty() ? "surface" : type;
         out.base_color.head<3>() = semantic_colour(type);
@@ -420,6 +385,36 @@ void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, 
 // not bound. A polygon point's share of the model: its vertex, its triangles' indices, its vertex map entry.
 constexpr double bytes_per_instanced_point = 160;
 
+std::vector<Eigen::Vector3d> read_template_points(const CityPlace& at, const json& points) {
+    std::vector<Eigen::Vector3d> read;
+    for (const json& p : points) {
+        if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+            at.fail("vertices-templates: not three numbers");
+        read.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    }
+    return read;
+}
+
+// The point indices a template's boundaries name, each once (read_geometry refuses what is not one).
+void collect_point_indices(const json& boundaries, int depth, std::vector<std::size_t>& indices) {
+    if (depth > max_nesting_depth) return;
+    for (const json& b : boundaries) {
+        if (b.is_array()) collect_point_indices(b, depth + 1, indices);
+        if (b.is_number_integer() && b.get<std::int64_t>() >= 0) indices.push_back(b.get<std::size_t>());
+    }
+}
+
+const std::vector<std::size_t>& points_of_template(CityReadState& s, std::size_t t, const json& shape) {
+    auto known = s.points_of_template.find(t);
+    if (known != s.points_of_template.end()) return known->second;
+    std::vector<std::size_t> indices;
+    if (shape.is_object() && shape.contains("boundaries") && shape["boundaries"].is_array())
+        collect_point_indices(shape["boundaries"], 0, indices);
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    return s.points_of_template[t] = std::move(indices);
+}
+
 // A GeometryInstance: a template of geometry-templates, transformed by its
 // matrix (row-major) and moved to its reference point (CityJSON 2.0, "Geometry templates").
 void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, int object_node) {
@@ -431,7 +426,8 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
     const json& points = templates->at("vertices-templates");
     if (!geometry.contains("template") || !list.is_array() || !points.is_array())
         at.fail("a GeometryInstance without a template");
-    const json& shape = list[index_in(at, geometry["template"], list.size(), "template")];
+    const std::size_t t = index_in(at, geometry["template"], list.size(), "template");
+    const json& shape = list[t];
     auto boundaries = geometry.find("boundaries");
     if (boundaries == geometry.end() || !boundaries->is_array() || boundaries->size() != 1)
         at.fail("a GeometryInstance's boundaries hold its one reference point");
@@ -446,18 +442,19 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
-    std::vector<Eigen::Vector3d> placed;
-    for (const json& p : points) {
-        if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
-            at.fail("vertices-templates: not three numbers");
-        const Eigen::Vector4d moved =
-            matrix * Eigen::Vector4d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>(), 1);
-        placed.push_back(moved.head<3>() + reference);
-        if (!(placed.back().array().abs() <= max_city_coordinate).all())
+    if (!s.template_points) s.template_points = read_template_points(at, points);
+    const std::vector<std::size_t>& named = points_of_template(s, t, shape);
+    s.placed.resize(s.template_points->size());
+    // Only the points this template names: the pool is all templates' (time instances x template, not x
+    // pool).
+    for (std::size_t i : named) {
+        if (i >= s.placed.size()) continue;  // read_geometry refuses it
+        s.placed[i] = (matrix * (*s.template_points)[i].homogeneous()).head<3>() + reference;
+        if (!(s.placed[i].array().abs() <= max_city_coordinate).all())
             at.fail("a placed template vertex lies beyond " + format_number(max_city_coordinate));
     }
     const std::size_t before = s.points;
-    read_geometry(at.in("template"), s, shape, object_node, placed, true);
+    read_geometry(at.in("template"), s, shape, object_node, s.placed, true);
     s.instanced_points += s.points - before;
     check_memory(s.file + ": the GeometryInstances' copies of their templates",
                  double(s.instanced_points) * bytes_per_instanced_point);
@@ -504,6 +501,8 @@ void CityGeometryReader::start_part(const CityPlace& at, const json& document,
     s.uvs.clear();
     s.texture_of.clear();
     s.material_of.clear();
+    s.template_points.reset();
+    s.points_of_template.clear();
     if (auto a = document.find("appearance"); a != document.end() && !a->is_object())
         at.fail("'appearance' is not an object");
     if (const json* uvs = s.appearance("vertices-texture")) {

@@ -2,6 +2,7 @@
 // toolkit/formats/cityjson_import.cpp (CityJSON 2.0, sections "Geometry
 // objects", "Semantics of geometric primitives" and "Appearance object").
 #pragma once
+#include "toolkit/formats/cityjson_place.h"
 #include "toolkit/model/model.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -19,15 +20,6 @@ struct CityReadState;  // what the reading has made so far (the .cpp's)
 // The largest coordinate a city file may have, in its units: far beyond any
 // CRS on Earth, far within what double arithmetic on it keeps finite.
 constexpr double max_city_coordinate = 1e12;
-
-// Where a reader is: the file and a prefix naming the place ("line 3:
-// CityObjects 'id': geometry 0: "); fail throws the InputError.
-struct CityPlace {
-    const std::string& file;
-    std::string place;
-    [[noreturn]] void fail(const std::string& what) const;
-    CityPlace in(const std::string& step) const { return {file, place + step + ": "}; }
-};
 
 // The LoD of a geometry as the file spells it (numbers as their shortest
 // text: 2 -> "2"), "" without one; and as a number (-1 if it is none).

@@ -220,6 +220,39 @@ TEST(CityJsonImport, GltfKeepsTheOriginAsTheRootsTranslation) {
     EXPECT_EQ(root.translation, std::vector<double>({150005, 12, -400005}));
 }
 
+// Instances place their template's points only: two templates over one pool,
+// each placed by its matrix at its reference point (CityJSON 2.0, "Geometry templates").
+TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
+    const json pool = {{9, 9, 9}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {2, 0, 0}, {0, 0, 2}};
+    json file = city({}, {{0, 0, 0}, {10000, 0, 0}});
+    file["geometry-templates"] = {{"templates",
+                                   {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{1, 2, 3}}}}},
+                                    {{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{4, 5, 6}}}}}}},
+                                  {"vertices-templates", pool}};
+    const json identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const json thrice = {3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1};
+    auto tree = [](int shape, int reference, const json& matrix) {
+        return json{{"type", "SolitaryVegetationObject"},
+                    {"geometry",
+                     {{{"type", "GeometryInstance"},
+                       {"template", shape},
+                       {"boundaries", {reference}},
+                       {"transformationMatrix", matrix}}}}};
+    };
+    file["CityObjects"] = {
+        {"small", tree(0, 0, identity)}, {"large", tree(1, 0, thrice)}, {"moved", tree(1, 1, identity)}};
+    const Model model = read(file, "instances");
+    const Node& small = model.nodes[std::size_t(node_named(model, "small"))];
+    const Node& large = model.nodes[std::size_t(node_named(model, "large"))];
+    const Node& moved = model.nodes[std::size_t(node_named(model, "moved"))];
+    EXPECT_NEAR(area(small), 0.5, 1e-6);
+    EXPECT_NEAR(area(large), 18, 1e-5);  // 2 m^2 scaled by 3 in each direction
+    EXPECT_NEAR(area(moved), 2, 1e-6);
+    // Template point 4 and 1 are both (0, 0, 0): placed at the two reference points, 10 m apart.
+    EXPECT_NEAR((moved.primitives[0].positions[0] - small.primitives[0].positions[0]).norm(), 10, 1e-5);
+    EXPECT_EQ(triangles(model), 3u);
+}
+
 TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
     const json geometries = {
         {{"type", "MultiSurface"}, {"lod", "1.2"}, {"boundaries", {surface(0)}}},
