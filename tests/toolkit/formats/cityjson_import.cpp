@@ -60,6 +60,12 @@ std::size_t triangles(const Model& model) {
 const json square_vertices = {{0, 0, 0}, {1000, 0, 0}, {1000, 1000, 0}, {0, 1000, 0}};
 json surface(int first) { return {{first, first + 1, first + 2, first + 3}}; }
 
+// A building of one LoD 1 MultiSurface.
+json building(const json& boundaries) {
+    return {{"type", "Building"},
+            {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", boundaries}}}}};
+}
+
 TEST(CityJsonImport, ObjectsHangUnderTheirParentsWithTheirTypes) {
     const json objects = {
         {"house", {{"type", "Building"}, {"children", {"east", "west"}}}},
@@ -303,9 +309,7 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
 // a surface without semantics is coloured as its facing suggests.
 TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
     const json objects = {
-        {"a",
-         {{"type", "Building"},
-          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
+        {"a", building(json::array({surface(0)}))},
         {"b",
          {{"type", "Building"},
           {"geometry",
@@ -334,10 +338,7 @@ TEST(CityJsonImport, OneObjectOfADistrictAndColoursByFacing) {
 
 // Where the file lies on the Earth, as it names it (map_projection.h places it).
 TEST(CityJsonImport, KeepsTheReferenceSystem) {
-    const json one = {
-        {"b",
-         {{"type", "Building"},
-          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}}};
+    const json one = {{"b", building(json::array({surface(0)}))}};
     json file = city(one, square_vertices);
     EXPECT_EQ(read(file, "no_system").reference_system, "");
     file["metadata"] = {{"referenceSystem", "https://www.opengis.net/def/crs/EPSG/0/7415"}};
@@ -352,14 +353,8 @@ TEST(CityJsonImport, KeepsTheReferenceSystem) {
 // without triangles (glTF holds none: an accessor of count 0), and a file named in Latin-1 names
 // its root in UTF-8: both write a glTF that reads back.
 TEST(CityJsonImport, DegeneratePolygonsAndLatin1NamesWriteAGltf) {
-    const json objects = {
-        {"a",
-         {{"type", "Building"},
-          {"geometry", {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {surface(0)}}}}}}},
-        {"b",
-         {{"type", "Building"},
-          {"geometry",
-           {{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", {{{0, 1}}, {{0, 1, 4}}}}}}}}}};
+    const json objects = {{"a", building(json::array({surface(0)}))},
+                          {"b", building(json::array({{{0, 1}}, {{0, 1, 4}}}))}};
     json vertices = square_vertices;
     vertices.push_back({2000, 0, 0});  // in a row with 0 and 1
     const Model model = read(city(objects, vertices), "caf\xe9");
