@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -101,9 +100,12 @@ struct CityReadState {
     std::set<std::string> missing_textures, lods;
     std::size_t without_lod = 0, polygons = 0;
     std::size_t points = 0, instanced_points = 0;  // of polygons emitted; by GeometryInstances
-    // The document's geometry templates, read at its first GeometryInstance: their points, the points
-    // each template names, and the points placed by the latest instance (only those it names).
-    std::optional<std::vector<Eigen::Vector3d>> template_points;
+    // Geometry templates: a CityJSONSeq's first line's; those whose points were read (at the first
+    // GeometryInstance using them), their points, the points each template names, and the points placed
+    // by the latest instance (only those it names).
+    const json* file_templates = nullptr;
+    const json* templates_read = nullptr;
+    std::vector<Eigen::Vector3d> template_points;
     std::map<std::size_t, std::vector<std::size_t>> points_of_template;
     std::vector<Eigen::Vector3d> placed;
     double images_memory = 0;
@@ -404,28 +406,44 @@ void collect_point_indices(const json& boundaries, int depth, std::vector<std::s
     }
 }
 
-const std::vector<std::size_t>& points_of_template(CityReadState& s, std::size_t t, const json& shape) {
+// Those of a surface template only: a point or line template draws nothing (read_geometry).
+const std::vector<std::size_t>& points_of_template(const CityPlace& at, CityReadState& s, std::size_t t,
+                                                   const json& shape) {
     auto known = s.points_of_template.find(t);
     if (known != s.points_of_template.end()) return known->second;
     std::vector<std::size_t> indices;
-    if (shape.is_object() && shape.contains("boundaries") && shape["boundaries"].is_array())
+    if (shape.is_object() && shape.contains("type") && shape["type"].is_string() &&
+        surface_depth(at, shape["type"].get<std::string>()) > 0 && shape.contains("boundaries") &&
+        shape["boundaries"].is_array())
         collect_point_indices(shape["boundaries"], 0, indices);
     std::sort(indices.begin(), indices.end());
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
     return s.points_of_template[t] = std::move(indices);
 }
 
+// The geometry templates an instance of the current document uses: its own, or in a CityJSONSeq the
+// first line's (CityJSON 2.0, "CityJSONFeature"); their points are read once.
+const json& geometry_templates(const CityPlace& at, CityReadState& s) {
+    auto own = s.document->find("geometry-templates");
+    const json* templates = own != s.document->end() ? &*own : s.file_templates;
+    if (!templates || !templates->is_object() || !templates->contains("templates") ||
+        !templates->contains("vertices-templates") || !(*templates)["templates"].is_array() ||
+        !(*templates)["vertices-templates"].is_array())
+        at.fail(
+            "a GeometryInstance but the file has no geometry-templates of templates and vertices-templates");
+    if (templates != s.templates_read) {
+        s.templates_read = templates;
+        s.template_points = read_template_points(at, (*templates)["vertices-templates"]);
+        s.points_of_template.clear();
+    }
+    return *templates;
+}
+
 // A GeometryInstance: a template of geometry-templates, transformed by its
 // matrix (row-major) and moved to its reference point (CityJSON 2.0, "Geometry templates").
 void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, int object_node) {
-    auto templates = s.document->find("geometry-templates");
-    if (templates == s.document->end() || !templates->is_object() || !templates->contains("templates") ||
-        !templates->contains("vertices-templates"))
-        at.fail("a GeometryInstance but the file has no geometry-templates");
-    const json& list = templates->at("templates");
-    const json& points = templates->at("vertices-templates");
-    if (!geometry.contains("template") || !list.is_array() || !points.is_array())
-        at.fail("a GeometryInstance without a template");
+    const json& list = geometry_templates(at, s).at("templates");
+    if (!geometry.contains("template")) at.fail("a GeometryInstance without a template");
     const std::size_t t = index_in(at, geometry["template"], list.size(), "template");
     const json& shape = list[t];
     auto boundaries = geometry.find("boundaries");
@@ -442,14 +460,12 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
-    if (!s.template_points) s.template_points = read_template_points(at, points);
-    const std::vector<std::size_t>& named = points_of_template(s, t, shape);
-    s.placed.resize(s.template_points->size());
-    // Only the points this template names: the pool is all templates' (time instances x template, not x
-    // pool).
+    const std::vector<std::size_t>& named = points_of_template(at.in("template"), s, t, shape);
+    s.placed.resize(s.template_points.size());
+    // Only the points this template names: the pool is all templates' (time: instances x template).
     for (std::size_t i : named) {
         if (i >= s.placed.size()) continue;  // read_geometry refuses it
-        s.placed[i] = (matrix * (*s.template_points)[i].homogeneous()).head<3>() + reference;
+        s.placed[i] = (matrix * s.template_points[i].homogeneous()).head<3>() + reference;
         if (!(s.placed[i].array().abs() <= max_city_coordinate).all())
             at.fail("a placed template vertex lies beyond " + format_number(max_city_coordinate));
     }
@@ -501,8 +517,6 @@ void CityGeometryReader::start_part(const CityPlace& at, const json& document,
     s.uvs.clear();
     s.texture_of.clear();
     s.material_of.clear();
-    s.template_points.reset();
-    s.points_of_template.clear();
     if (auto a = document.find("appearance"); a != document.end() && !a->is_object())
         at.fail("'appearance' is not an object");
     if (const json* uvs = s.appearance("vertices-texture")) {
@@ -524,6 +538,8 @@ void CityGeometryReader::start_part(const CityPlace& at, const json& document,
         material_theme && material_theme->is_string() ? material_theme->get<std::string>() : "";
     s.texture_theme = texture_theme && texture_theme->is_string() ? texture_theme->get<std::string>() : "";
 }
+
+void CityGeometryReader::use_file_templates(const json& templates) { state_->file_templates = &templates; }
 
 int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, const json& object,
                                    int parent_node, const std::string& lod) {

@@ -35,6 +35,9 @@ public:
     ~CityGeometryReader();
     void start_part(const CityPlace& at, const nlohmann::json& document,
                     const std::vector<Eigen::Vector3d>& vertices);
+    // A CityJSONSeq's first line's "geometry-templates", for the features
+    // without their own (kept by reference).
+    void use_file_templates(const nlohmann::json& templates);
     // The object's node under `parent_node`, with its geometry of `lod`
     // ("": its finest) and a child node per semantic surface.
     int add_object(const CityPlace& at, const std::string& id, const nlohmann::json& object, int parent_node,

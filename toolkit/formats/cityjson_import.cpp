@@ -117,9 +117,9 @@ std::string read_reference_system(const CityPlace& at, const json& document) {
 
 // The documents of a file: one, or a CityJSONSeq's lines (the first holds
 // the transform and the metadata; each later line a CityJSONFeature); the
-// reference system, if `reference_system` is given.
+// reference system and a CityJSONSeq's first line's geometry templates, if asked.
 std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
-                             std::string* reference_system = nullptr) {
+                             std::string* reference_system = nullptr, json* file_templates = nullptr) {
     std::vector<Part> parts;
     const CityPlace file{path, ""};
     if (lowercase_extension(path) != ".jsonl") {
@@ -146,6 +146,8 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
             check_version(at, document, "CityJSON");
             transform = read_transform(at, document);
             if (reference_system) *reference_system = read_reference_system(at, document);
+            if (file_templates && document.contains("geometry-templates"))
+                *file_templates = std::move(document["geometry-templates"]);
             continue;
         }
         check_version(at, document, "CityJSONFeature");
@@ -212,7 +214,8 @@ Model import_cityjson(const std::string& path, const std::string& lod) {
 // document's objects, parents first, with the geometry of the chosen LoD.
 Model import_cityjson_bytes(std::string_view bytes, const std::string& path, const std::string& lod) {
     std::string reference_system;
-    std::vector<Part> parts = read_parts(bytes, path, &reference_system);
+    json file_templates;
+    std::vector<Part> parts = read_parts(bytes, path, &reference_system, &file_templates);
     const Eigen::Vector3d origin = local_origin({path, ""}, parts);
     Model model;
     model.source = path;
@@ -220,6 +223,7 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
     model.reference_system = reference_system;
     add_node(model, -1, utf8_or_latin1(fs::path(path).stem().string()));
     CityGeometryReader reader(model, path, origin);
+    if (!file_templates.is_null()) reader.use_file_templates(file_templates);
     for (Part& part : parts) {
         const CityPlace at{path, part.line};
         const json& objects = member(at, part.document, "CityObjects", json::value_t::object, "an object");

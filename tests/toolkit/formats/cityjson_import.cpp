@@ -231,10 +231,12 @@ TEST(CityJsonImport, GltfKeepsTheOriginAsTheRootsTranslation) {
 TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
     const json pool = {{9, 9, 9}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {2, 0, 0}, {0, 0, 2}};
     json file = city({}, {{0, 0, 0}, {10000, 0, 0}});
-    file["geometry-templates"] = {{"templates",
-                                   {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{1, 2, 3}}}}},
-                                    {{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{4, 5, 6}}}}}}},
-                                  {"vertices-templates", pool}};
+    file["geometry-templates"] = {
+        {"templates",
+         {{{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{1, 2, 3}}}}},
+          {{"type", "MultiSurface"}, {"lod", "2"}, {"boundaries", {{{4, 5, 6}}}}},
+          {{"type", "MultiPoint"}, {"lod", "2"}, {"boundaries", {0, 1, 2, 3, 4, 5, 6}}}}},
+        {"vertices-templates", pool}};
     const json identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     const json thrice = {3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 3, 0, 0, 0, 0, 1};
     auto tree = [](int shape, int reference, const json& matrix) {
@@ -245,8 +247,10 @@ TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
                        {"boundaries", {reference}},
                        {"transformationMatrix", matrix}}}}};
     };
-    file["CityObjects"] = {
-        {"small", tree(0, 0, identity)}, {"large", tree(1, 0, thrice)}, {"moved", tree(1, 1, identity)}};
+    file["CityObjects"] = {{"small", tree(0, 0, identity)},
+                           {"large", tree(1, 0, thrice)},
+                           {"moved", tree(1, 1, identity)},
+                           {"points", tree(2, 0, identity)}};  // draws nothing
     const Model model = read(file, "instances");
     const Node& small = model.nodes[std::size_t(node_named(model, "small"))];
     const Node& large = model.nodes[std::size_t(node_named(model, "large"))];
@@ -257,6 +261,22 @@ TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
     // Template point 4 and 1 are both (0, 0, 0): placed at the two reference points, 10 m apart.
     EXPECT_NEAR((moved.primitives[0].positions[0] - small.primitives[0].positions[0]).norm(), 10, 1e-5);
     EXPECT_EQ(triangles(model), 3u);
+    // A CityJSONSeq keeps its templates in its first line, for every feature.
+    json header = file;
+    header["CityObjects"] = json::object();
+    header["vertices"] = json::array();
+    auto feature = [&](const std::string& id, int shape) {
+        return json{{"type", "CityJSONFeature"},
+                    {"id", id},
+                    {"CityObjects", {{id, tree(shape, 0, thrice)}}},
+                    {"vertices", {{0, 0, 0}}}};
+    };
+    const fs::path path = test::scratch_folder("cityjson_seq_instances") / "trees.city.jsonl";
+    test::write_text(path,
+                     header.dump() + "\n" + feature("a", 0).dump() + "\n" + feature("b", 1).dump() + "\n");
+    const Model seq = load_model(path.string());
+    EXPECT_NEAR(area(seq.nodes[std::size_t(node_named(seq, "a"))]), 4.5, 1e-5);
+    EXPECT_NEAR(area(seq.nodes[std::size_t(node_named(seq, "b"))]), 18, 1e-5);
 }
 
 TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
