@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/common_options.h"
+#include "base/distinct_files.h"
 #include "base/memory_budget.h"
 #include "data_gen/city.h"
 #include "data_gen/commands/commands.h"
@@ -44,6 +45,9 @@ int run_generate(const Arguments& arguments) {
     if (!arguments.has("output"))
         throw InputError(std::string(prefix) + "-o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
+    if (!arguments.positionals.empty())
+        check_distinct_files({{"GRAMMAR", arguments.positionals[0]}},
+                             {{"--output", arguments.text("output")}});
     const int seed = arguments.integer("seed");
 
     Model model;

@@ -67,7 +67,10 @@ int run_compare(const Arguments& arguments) {
         throw InputError("boxlod compare: --heatmap-metric: expected flip or rmse, got '" + heatmap_metric +
                          "'");
     if (arguments.has("heatmap")) check_output_file(arguments.text("heatmap"), {".png"});
-    check_distinct_files({{"IMAGE_A", a_name}, {"IMAGE_B", b_name}},
+    check_distinct_files({{"IMAGE_A", a_name},
+                          {"IMAGE_B", b_name},
+                          {"--mask-a", arguments.text("mask-a", "")},
+                          {"--mask-b", arguments.text("mask-b", "")}},
                          {{"--heatmap", arguments.text("heatmap", "")}});
     const double ppd = arguments.number("ppd");
     int threads = threads_from(arguments);

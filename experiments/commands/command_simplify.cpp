@@ -1,6 +1,7 @@
 // `boxlod simplify`: the classic baseline, quadric edge-collapse simplification.
 #include "base/atomic_write.h"
 #include "base/common_options.h"
+#include "base/distinct_files.h"
 #include "base/parallel.h"
 #include "base/timing.h"
 #include "experiments/commands/commands.h"
@@ -20,6 +21,7 @@ int run_simplify(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError(prefix + "-o/--output OUT.gltf|OUT.glb is required");
     if (!arguments.has("faces")) throw InputError(prefix + "--faces N is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
+    check_distinct_files({{"MODEL", arguments.positionals[0]}}, {{"--output", arguments.text("output")}});
     const int faces = arguments.integer("faces", 0);
     SimplifyOptions options;
     options.lock_border = arguments.has("lock-border");

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <functional>
 #include <set>
+#include <type_traits>
 
 namespace boxlod {
 namespace {
@@ -113,9 +114,10 @@ struct Line {
     }
     template <typename T>
     T number_in(const NumberRange& range, const std::string& text) const {
-        T v = number<T>(text);
+        // A float is checked as the double written: 0.01 read as a float lies below 0.01.
+        const auto v = number<std::conditional_t<std::is_floating_point_v<T>, double, T>>(text);
         if (!range.contains(double(v))) fail(out_of_range_message(range, text));
-        return v;
+        return T(v);
     }
     template <typename T>
     T number_in(const NumberRange& range) const {
@@ -218,10 +220,10 @@ const std::vector<SweepKey>& sweep_keys() {
         {"distances",
          [](SweepConfig& c, const Line& l, Folder) {
              c.distances.clear();
+             std::set<float> seen;  // each once, in the order given
              for (const std::string& item : l.items()) {
                  float d = l.number_in<float>(distance_multiple_range, item);
-                 if (std::find(c.distances.begin(), c.distances.end(), d) == c.distances.end())
-                     c.distances.push_back(d);
+                 if (seen.insert(d).second) c.distances.push_back(d);
              }
          }},
         {"render_modes",

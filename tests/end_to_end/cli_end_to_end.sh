@@ -397,6 +397,25 @@ mkdir -p "$work/shared" && echo notes > "$work/shared/notes.txt"
 "$boxlod" tiles "$work/city4.glb" -o "$work/shared" --level-mode box-area --wanted-levels 3 > /dev/null
 check "a folder holding other files keeps them beside the tileset" test -s "$work/shared/notes.txt" -a -s "$work/shared/tileset.json"
 
+# No output replaces an input: each refusal is exit 2 and leaves the input as it was.
+mkdir -p "$work/own" && "$boxlod" generate --sample house -o "$work/own/house.glb" > /dev/null
+cp "$work/own/house.glb" "$work/house_kept.glb"
+cp "$work/own/house.glb" "$work/own/tree_L1.glb"
+printf 'key m\n' > "$work/own/replay.txt"
+"$boxlod" render "$work/own/house.glb" -o "$work/own/a.png" --width 16 --height 16 > /dev/null
+"$boxlod" render "$work/own/house.glb" -o "$work/own/b.png" --width 16 --height 16 --camera -X+Y > /dev/null
+for args in "build HOUSE --save-params HOUSE" "build HOUSE --chain -o HOUSE" "build HOUSE -o OWN --name house --glb" \
+            "build OWN/tree_L1.glb -o OWN --name tree --glb --all-levels --level-mode box-area --wanted-levels 1" \
+            "simplify HOUSE --faces 10 -o HOUSE" "convert HOUSE -o HOUSE" \
+            "view HOUSE --replay OWN/replay.txt --params-out HOUSE --width 16 --height 16" \
+            "compare OWN/a.png OWN/b.png --metric iou --mask-a OWN/a.png --mask-b OWN/b.png --heatmap OWN/a.png"; do
+  words=${args//HOUSE/$work/own/house.glb}
+  read -r -a words <<< "${words//OWN/$work/own}"
+  check "$args: refused, exit 2" test "$(SDL_VIDEODRIVER=dummy status_of "$boxlod" "${words[@]}")" = 2
+done
+check "the models are as they were" bash -c "cmp -s '$work/own/house.glb' '$work/house_kept.glb' && cmp -s '$work/own/tree_L1.glb' '$work/house_kept.glb'"
+check "a build's files beside a model of another name are written" test "$(status_of "$boxlod" build "$work/own/house.glb" -o "$work/own" --name house_lod --resolution 16 --preview-width 16 --preview-height 16)" = 0
+
 echo "$((failures == 0 ? 1 : 0)) passed, $failures failed" >/dev/null
 if [ "$failures" -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi
 echo "all checks passed"

@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/common_options.h"
+#include "base/distinct_files.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
 #include "base/timing.h"
@@ -218,10 +219,24 @@ void print_timings(const LodTimes& t) {
     std::fputs(format_key_values(times).c_str(), stdout);
 }
 
+// The model a build reads is none of the files it writes (`-o . --name tree` replaced tree.gltf).
+void check_model_kept(const std::string& model, const std::string& folder, const std::string& name,
+                      bool all_levels) {
+    namespace fs = std::filesystem;
+    std::error_code error, folder_error;
+    const fs::path file = fs::weakly_canonical(model, error);
+    if (error || file.parent_path() != fs::weakly_canonical(folder, folder_error) || folder_error) return;
+    if (lod_export_writes(file.filename().string(), name, all_levels))
+        throw_input_error(model, "", "-o " + folder + " and --name " + name + " would write over it");
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
+    const std::vector<std::pair<std::string, std::string>> inputs = {{"MODEL", a.positionals[0]},
+                                                                     {"its model", parameters.model}};
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
         check_output_file(a.text("save-params"));
+        check_distinct_files(inputs, {{"--save-params", a.text("save-params")}});
         save_parameters(a.text("save-params"), parameters);
         std::printf("params = %s\n", a.text("save-params").c_str());
         return 0;
@@ -232,6 +247,7 @@ int run_build(const Arguments& a) {
                          " is required");
     if (chain_file) {
         check_output_file(a.text("output"), {".glb", ".gltf"});
+        check_distinct_files(inputs, {{"--output", a.text("output")}});
     } else {
         check_output_directory(a.text("output"));
     }
@@ -240,6 +256,7 @@ int run_build(const Arguments& a) {
         a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
+    if (!chain_file) check_model_kept(parameters.model, a.text("output"), name, all_levels);
     if (a.has("level") && all_levels)
         throw InputError(std::string("--level: ") + (chain_file ? "--chain" : "--all-levels") +
                          " writes every level");

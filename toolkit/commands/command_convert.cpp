@@ -1,4 +1,5 @@
 #include "base/atomic_write.h"
+#include "base/distinct_files.h"
 #include "toolkit/boxlod.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
@@ -12,6 +13,7 @@ static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output"))
         throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
+    check_distinct_files({{"MODEL", arguments.positionals[0]}}, {{"--output", arguments.text("output")}});
     Model model =
         read_model(arguments.positionals[0], city_lod_from(arguments));  // through the library's face
     if (!arguments.has("keep-materials")) merge_materials(model);

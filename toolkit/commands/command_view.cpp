@@ -1,5 +1,6 @@
 // `boxlod view`: the interactive viewer (SDL2) over the software renderer.
 #include "base/atomic_write.h"
+#include "base/distinct_files.h"
 #include "base/input_file.h"
 #include "renderer/overlays.h"
 #include "renderer/text_overlay.h"
@@ -241,6 +242,9 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
 int run_view(const Arguments& a) {
     if (a.has("screenshot")) check_output_file(a.text("screenshot"), {".png"});
     LodParameters parameters = lod_parameters_from(a);
+    check_distinct_files(
+        {{"MODEL", parameters.model}, {"--replay", a.text("replay", "")}},
+        {{"--params-out", a.text("params-out")}, {"--screenshot", a.text("screenshot", "")}});
     bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original
     Model model = load_parameters_model(parameters);

@@ -82,7 +82,7 @@ View view_from_arguments(const Arguments& a, const Bounds& bounds) {
     s.parallax_scale = parallax.parallax_scale;
     s.parallax_bias = parallax.parallax_bias;
     s.light = light_for_camera(s.camera);
-    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), position_range);
+    if (a.has("light")) s.light.position = parse_vector3("light", a.text("light"), parameter_range::position);
     s.light.ambient = float(a.number("ambient"));
     s.light.diffuse = float(a.number("diffuse"));
     s.light.specular = float(a.number("specular"));

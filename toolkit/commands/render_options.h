@@ -21,8 +21,7 @@ struct View {
 View view_from_arguments(const Arguments& arguments, const Bounds& bounds);
 
 // "R,G,B" (or "X,Y,Z"): three numbers, each in `range`.
-constexpr NumberRange colour_range{0, 1};         // sRGB components
-constexpr NumberRange position_range{-1e6, 1e6};  // metres
+constexpr NumberRange colour_range{0, 1};  // sRGB components
 Eigen::Vector3f parse_vector3(const std::string& option, const std::string& text, const NumberRange& range);
 
 }  // namespace boxlod

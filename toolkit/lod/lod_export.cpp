@@ -9,6 +9,7 @@
 #include "toolkit/model/framing.h"
 
 #include <filesystem>
+#include <regex>
 
 namespace boxlod {
 
@@ -63,6 +64,15 @@ void export_lod(Lod lod, const LodParameters& chain_parameters, const std::strin
     write_text_atomically(file(".stats.txt"), format_key_values(lod.statistics));
     export_gltf(lod.model, file(binary ? ".glb" : ".gltf"), threads);
     files.commit();
+}
+
+bool lod_export_writes(const std::string& file_name, const std::string& name, bool levels) {
+    if (file_name.compare(0, name.size(), name) != 0) return false;
+    // What export_lod and glTF's buffer and page names append to the name.
+    static const std::string files =
+        R"((\.(gltf|bin|glb|params\.txt|preview\.png|stats\.txt)|_(color|normal|height)_[0-9]+\.png))";
+    static const std::regex suffix(files), level_suffix("_L[0-9]+" + files);
+    return std::regex_match(file_name.substr(name.size()), levels ? level_suffix : suffix);
 }
 
 }  // namespace boxlod

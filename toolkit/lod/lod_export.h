@@ -27,4 +27,9 @@ void name_pages(Lod& lod, const std::string& name);
 void export_lod(Lod lod, const LodParameters& chain_parameters, const std::string& directory,
                 const std::string& name, const Image8& preview, int threads, bool binary = false);
 
+// Whether export_lod as `name` may write a file of this name (NAME.gltf,
+// NAME_color_0.png, ...), or, with `levels`, as NAME_L<c> for some level c:
+// a build must not write over the model it reads.
+bool lod_export_writes(const std::string& file_name, const std::string& name, bool levels = false);
+
 }  // namespace boxlod

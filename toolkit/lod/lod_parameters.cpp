@@ -37,7 +37,8 @@ ParameterDeclaration number_parameter(const char* key, const char* option, const
             return format_number(p.*field);
     };
     d.parse = [field, range, power_of_two](const std::string& text, LodParameters& p) -> std::string {
-        Number value{};
+        // A float is checked as the double written: 0.01 read as a float lies below 0.01.
+        std::conditional_t<std::is_floating_point_v<Number>, double, Number> value{};
         auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(double(value)) ||
             !range.contains(double(value)))
@@ -47,7 +48,7 @@ ParameterDeclaration number_parameter(const char* key, const char* option, const
             if (whole <= 0 || (whole & (whole - 1)) != 0)
                 return "expected a power of two in " + range_text(range) + ", got '" + text + "'";
         }
-        p.*field = value;
+        p.*field = Number(value);
         return "";
     };
     d.number = [field](const LodParameters& p) { return double(p.*field); };

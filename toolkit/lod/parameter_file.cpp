@@ -37,11 +37,12 @@ struct Parser {
             fail(out_of_range_message(range, text));
         return v;
     }
-    Eigen::Vector3f vector(const std::string& text) const {
+    Eigen::Vector3f vector(const std::string& text,
+                           const NumberRange& range = parameter_range::position) const {
         std::istringstream in(text);
         std::string a, b, c, extra;
         if (!(in >> a >> b >> c) || (in >> extra)) fail("expected three numbers 'x y z', got '" + text + "'");
-        return {number(a), number(b), number(c)};
+        return {number(a, range), number(b, range), number(c, range)};
     }
 };
 

@@ -94,6 +94,12 @@ void expect_error(const std::string& text, const std::string& expected) {
     }
 }
 
+// A range's ends are in it, a float's too (0.01 as a float lies below 0.01); repeats count once.
+TEST(SweepConfig, DistancesTakeTheirRangesEndsOnceEach) {
+    SweepConfig c = parse_sweep_config("models = a.glb\ndistances = 0.01, 1000, 2, 0.01, 2\n", "c.txt");
+    EXPECT_EQ(c.distances, std::vector<float>({0.01f, 1000, 2}));
+}
+
 TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nfrobnicate = 1\n", "cfg.txt: line 2: frobnicate: unknown key");
     expect_error("models = a.glb\n\nlevel_modes = top-down, sideways\n",

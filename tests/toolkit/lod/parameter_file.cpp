@@ -118,6 +118,11 @@ TEST(Parameters, ErrorsNameFileLineAndKey) {
     EXPECT_EQ(message("camera_position = 0 0 5\ncamera_up = 0 0 0\n"),
               "bad.txt: the camera's up direction is zero");
     EXPECT_EQ(message("camera_position = 0 5 0\n"), "bad.txt: the camera's up direction is along its view");
+    // Positions within what the command line takes, and whose distances stay finite in float.
+    EXPECT_EQ(message("light_position = 3e38 0 0\n"),
+              "bad.txt: line 1: light_position: expected a number in [-1000000000, 1000000000], got '3e38'");
+    EXPECT_EQ(message("camera_position = 1e30 0 0\ncamera_target = 0 0 0\n"),
+              "bad.txt: line 1: camera_position: expected a number in [-1000000000, 1000000000], got '1e30'");
     EXPECT_EQ(message("light_ambient = 1e39\n"),
               "bad.txt: line 1: light_ambient: expected a number in [0, 100], got '1e39'");
     EXPECT_EQ(message("level_mode = sideways\n")
