@@ -102,6 +102,9 @@ put("instances_over_a_large_pool.city.json", json.dumps({
         [instance] * 20000 + [dict(instance, template=1)] * 20000 + [dict(instance, template=2)]}},
     "vertices": [[0, 0, 0]]}))
 
+# A replay longer than SDL's event queue (65,535): its end was dropped without a word.
+put("replay_70000.txt", "key z\n" * 70000 + "key f5\n")
+
 # ---------------------------------------------------------------- grammars nested deeply or very long
 n = 3000
 put("grammar_parens_3000.grammar", "Lot --> extrude(%s3%s) i(box)\n" % ("(" * n, ")" * n))

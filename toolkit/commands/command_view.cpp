@@ -70,6 +70,10 @@ std::vector<ViewerEvent> read_replay(const std::string& path) {
             if (e->kind == ViewerEvent::Kind::key && sdl().SDL_GetKeyFromName(e->key.c_str()) == SDLK_UNKNOWN)
                 throw_input_error(path, "line " + std::to_string(number), "unknown key '" + e->key + "'");
             events.push_back(*e);
+            if (events.size() > max_replay_events)
+                throw_input_error(path, "line " + std::to_string(number),
+                                  "more than " + std::to_string(max_replay_events) +
+                                      " events (SDL's queue holds them all at once)");
         }
     return events;
 }
@@ -263,7 +267,8 @@ int run_view(const Arguments& a) {
     Window window("boxlod view " + a.positionals[0], state.width, state.height);
     for (const ViewerEvent& e : replay) {
         SDL_Event event = to_sdl(e);
-        sdl().SDL_PushEvent(&event);
+        if (sdl().SDL_PushEvent(&event) != 1)
+            throw InputError(a.text("replay") + ": SDL's event queue is full");
     }
     int threads = state.settings.threads, screenshots = 0, failures = 0;
     bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;

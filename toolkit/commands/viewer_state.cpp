@@ -281,7 +281,11 @@ bool apply_event(ViewerState& s, const ViewerEvent& e) {
         return true;
     }
     if (e.kind == ViewerEvent::Kind::wheel) {
-        camera.position = camera.target - forward * (distance * std::pow(0.9f, e.dy));
+        // Within the positions a parameter file takes, however many steps out or in.
+        const float wheeled =
+            std::clamp(distance * std::pow(0.9f, e.dy), float(parameter_range::min_positive_distance),
+                       float(parameter_range::position.max) / 2);
+        camera.position = camera.target - forward * wheeled;
         camera_moved(s);
         return true;
     }
@@ -355,15 +359,25 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
     auto fail = [&](const std::string& what) {
         throw_input_error(file, "line " + std::to_string(number), what);
     };
+    // A drag within a screen's pixels, a wheel within 100 steps (0.9^100 of the distance): SDL's ints.
+    auto read_number = [&](const NumberRange& range, float& value) {
+        std::string text;
+        in >> text;
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != 0 || !range.contains(v)) fail(out_of_range_message(range, text));
+        value = float(v);
+    };
     if (word == "key") {
         if (!(in >> e.key)) fail("expected 'key NAME'");
         for (char& ch : e.key) ch = char(std::tolower(static_cast<unsigned char>(ch)));
     } else if (word == "drag") {
         e.kind = ViewerEvent::Kind::drag;
-        if (!(in >> e.dx >> e.dy)) fail("expected 'drag DX DY'");
+        read_number(replay_drag_range, e.dx);
+        read_number(replay_drag_range, e.dy);
     } else if (word == "wheel") {
         e.kind = ViewerEvent::Kind::wheel;
-        if (!(in >> e.dy)) fail("expected 'wheel STEPS'");
+        read_number(replay_wheel_range, e.dy);
     } else {
         fail("unknown event '" + word + "' (key, drag, wheel)");
     }

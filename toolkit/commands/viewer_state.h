@@ -4,9 +4,11 @@
 // a replay file does the same, so a scripted session renders exactly what a
 // person would see.
 #pragma once
+#include "base/input_error.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/lod/chain/chain.h"
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -62,5 +64,9 @@ std::vector<std::string> overlay_lines(const ViewerState& state);
 // One line of a replay file: "key m", "drag 10 -4", "wheel 2". Blank lines and
 // # comments give std::nullopt; anything else is an InputError naming file:line.
 std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std::string& file, int number);
+constexpr NumberRange replay_drag_range{-16384, 16384};  // pixels
+constexpr NumberRange replay_wheel_range{-100, 100};     // steps
+// SDL's event queue holds 65,535 events; a replay is queued whole.
+constexpr std::size_t max_replay_events = 60000;
 
 }  // namespace boxlod

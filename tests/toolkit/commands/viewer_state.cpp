@@ -140,4 +140,30 @@ TEST(ViewerState, ReplayLinesParseOrNameTheirPlace) {
     }
     EXPECT_THROW(parse_replay_line("wheel", "events.txt", 1), InputError);
     EXPECT_THROW(parse_replay_line("key m extra", "events.txt", 1), InputError);
+    // Numbers within their ranges (SDL reads ints; a wheel of 1e30 steps put the camera at infinity).
+    try {
+        parse_replay_line("wheel -1000", "events.txt", 4);
+        FAIL();
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "events.txt: line 4: expected a number in [-100, 100], got '-1000'");
+    }
+    EXPECT_THROW(parse_replay_line("drag 1e30 0", "events.txt", 1), InputError);
+    EXPECT_THROW(parse_replay_line("drag nan 0", "events.txt", 1), InputError);
+}
+
+// However far a replay wheels, the camera stays where a parameter file can save it.
+TEST(ViewerState, WheelingStaysWithinSavablePositions) {
+    Fixture f;
+    ViewerState& s = f.state;
+    ViewerEvent wheel;
+    wheel.kind = ViewerEvent::Kind::wheel;
+    for (float steps : {-100.0f, 100.0f}) {
+        wheel.dy = steps;
+        for (int i = 0; i < 50; ++i) apply_event(s, wheel);
+        const Camera& c = s.settings.camera;
+        EXPECT_TRUE(c.position.allFinite());
+        EXPECT_TRUE(parameter_range::position.contains(c.position.cwiseAbs().maxCoeff()));
+        EXPECT_GT((c.position - c.target).norm(), 0);
+    }
 }
