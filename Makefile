@@ -38,7 +38,7 @@ test: build debug-build sanitize-build
 test-cluster: build
 	@cd $(BUILD) && ctest --output-on-failure -R workflow_on_slurm
 
-# The Debug side of the Debug-against-Release tests (docs/testing.md: Determinism): -O0
+# The Debug side of the Debug-against-Release tests (docs/testing.md: Determinism): -O0 (CGAL -O2)
 # with the standard library's assertions, compiled for the one-definition-rule
 # check (fat LTO objects; odr_check links them with LTO and -Werror=odr); only
 # the program, the golden tests and the check.

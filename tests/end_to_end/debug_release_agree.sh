@@ -33,7 +33,7 @@ commands() {  # commands BOXLOD
       --preview-width 240 --preview-height 180
   done
   # The IFC has no scopes, so every box kind is CGAL's minimal box there (docs/design.md: Boxes);
-  # one build covers them (CGAL at -O0 takes 85 s for the FZK-Haus's boxes).
+  # one build covers them.
   step build_fzk build "$fzk" -o fzk --level 3 --box minimal --resolution 512 --preview-width 240 --preview-height 180
   step build_house_levels build house.glb -o house_levels --all-levels --level-mode box-area --resolution 256 \
     --preview-width 240 --preview-height 180
