@@ -13,6 +13,7 @@
 #include "toolkit/lod/lod_export.h"
 #include "toolkit/lod/pages/level_pages.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -263,6 +264,14 @@ int run_view(const Arguments& a) {
     }
     std::vector<ViewerEvent> replay =
         a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+    // A replay's outputs are checked before the window opens, so that a bad one is refused with nothing
+    // written.
+    auto pressed = [&](const std::string& name) {
+        return std::any_of(replay.begin(), replay.end(), [&](const ViewerEvent& e) { return e.key == name; });
+    };
+    if (pressed("f5")) check_output_file(a.text("params-out"));
+    if (pressed("f6")) check_output_directory(a.text("export-dir"));
+    if (pressed("f12") && !a.has("screenshot")) check_output_file("boxlod-view-0.png");
 
     Window window("boxlod view " + a.positionals[0], state.width, state.height);
     for (const ViewerEvent& e : replay) {
