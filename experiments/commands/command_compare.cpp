@@ -87,7 +87,14 @@ int run_compare(const Arguments& arguments) {
     if (asks(Metric::ssim) && (a.width < 11 || a.height < 11))
         throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");
     std::optional<std::pair<Coverage, Coverage>> coverages;
-    if (asks(Metric::iou) || asks(Metric::flip_covered)) coverages = silhouettes(arguments, a, b);
+    if (asks(Metric::iou) || asks(Metric::flip_covered)) {
+        coverages = silhouettes(arguments, a, b);
+    } else {  // an option nothing reads is a mistake, said rather than ignored
+        for (const char* option : {"mask-a", "mask-b", "background"})
+            if (arguments.has(option))
+                throw InputError(std::string("--") + option +
+                                 ": only the metrics iou and flip_covered read it");
+    }
 
     // A FLIP heat map needs FLIP's error map: measured once, with the metrics asked for or after them.
     std::vector<Metric> measured_metrics = asked;
