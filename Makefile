@@ -43,7 +43,7 @@ test-cluster: build
 # check (fat LTO objects; odr_check links them with LTO and -Werror=odr); only
 # the program, the golden tests and the check.
 debug-build: deps
-	@cmake -S . -B $(DEBUG_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DBOXLOD_ODR_CHECK=ON \
+	@cmake -S . -B $(DEBUG_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DBOXLOD_ODR_CHECK=ON -DBOXLOD_OPTIMISED_CGAL=ON \
 	  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE >/dev/null
 	@cmake --build $(DEBUG_BUILD) -j $(JOBS) --target debug_check_programs
 

@@ -38,11 +38,21 @@ KeyValue metric_entry(const std::string& key, double value) {
     return number_entry(key, value);
 }
 
+// The options of the coverages, before any image is read: an option that nothing reads is a mistake,
+// said rather than ignored.
+void check_coverage_options(const Arguments& arguments, bool read) {
+    if (arguments.has("mask-a") != arguments.has("mask-b"))
+        throw InputError("boxlod compare: --mask-a and --mask-b go together");
+    for (const char* option : {"mask-a", "mask-b", "background"})
+        if (!read && arguments.has(option))
+            throw InputError(std::string("--") + option + ": only the metrics iou and flip_covered read it");
+    if (arguments.has("mask-a") && arguments.has("background"))
+        throw InputError("--background: the masks give the coverages, so it is not read with --mask-a");
+}
+
 // The two coverages iou and flip_covered read: from --mask-a/--mask-b, else the pixels that differ from the
 // background.
 std::pair<Coverage, Coverage> silhouettes(const Arguments& arguments, const Image8& a, const Image8& b) {
-    if (arguments.has("mask-a") != arguments.has("mask-b"))
-        throw InputError("boxlod compare: --mask-a and --mask-b go together");
     if (arguments.has("mask-a")) {
         Image8 mask_a = read_image(arguments.text("mask-a")), mask_b = read_image(arguments.text("mask-b"));
         require_same_size({a.width, a.height}, arguments.positionals[0], {mask_a.width, mask_a.height},
@@ -72,6 +82,8 @@ int run_compare(const Arguments& arguments) {
                           {"--mask-a", arguments.text("mask-a", "")},
                           {"--mask-b", arguments.text("mask-b", "")}},
                          {{"--heatmap", arguments.text("heatmap", "")}});
+    auto asks = [&](Metric m) { return std::find(asked.begin(), asked.end(), m) != asked.end(); };
+    check_coverage_options(arguments, asks(Metric::iou) || asks(Metric::flip_covered));
     const double ppd = arguments.number("ppd");
     int threads = threads_from(arguments);
 
@@ -83,18 +95,10 @@ int run_compare(const Arguments& arguments) {
                      std::to_string(size.height) + " images",
                  metrics_memory(size.width, size.height));
     Image8 a = read_image(a_name), b = read_image(b_name);
-    auto asks = [&](Metric m) { return std::find(asked.begin(), asked.end(), m) != asked.end(); };
     if (asks(Metric::ssim) && (a.width < 11 || a.height < 11))
         throw_input_error(a_name, "", "SSIM needs images of at least 11x11 pixels");
     std::optional<std::pair<Coverage, Coverage>> coverages;
-    if (asks(Metric::iou) || asks(Metric::flip_covered)) {
-        coverages = silhouettes(arguments, a, b);
-    } else {  // an option nothing reads is a mistake, said rather than ignored
-        for (const char* option : {"mask-a", "mask-b", "background"})
-            if (arguments.has(option))
-                throw InputError(std::string("--") + option +
-                                 ": only the metrics iou and flip_covered read it");
-    }
+    if (asks(Metric::iou) || asks(Metric::flip_covered)) coverages = silhouettes(arguments, a, b);
 
     // A FLIP heat map needs FLIP's error map: measured once, with the metrics asked for or after them.
     std::vector<Metric> measured_metrics = asked;

@@ -7,6 +7,7 @@
 #include "experiments/commands/commands.h"
 #include "toolkit/boxlod.h"
 #include "toolkit/commands/commands.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/lod/hybrid/simplification.h"
 #include "toolkit/model/material_merge.h"
 #include "toolkit/model/statistics.h"
@@ -21,7 +22,8 @@ int run_simplify(const Arguments& arguments) {
     if (!arguments.has("output")) throw InputError(prefix + "-o/--output OUT.gltf|OUT.glb is required");
     if (!arguments.has("faces")) throw InputError(prefix + "--faces N is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
-    check_distinct_files({{"MODEL", arguments.positionals[0]}}, {{"--output", arguments.text("output")}});
+    check_distinct_files({{"MODEL", model_file_of(arguments.positionals[0])}},
+                         {{"--output", arguments.text("output")}});
     const int faces = arguments.integer("faces", 0);
     SimplifyOptions options;
     options.lock_border = arguments.has("lock-border");

@@ -404,11 +404,12 @@ cp "$work/own/house.glb" "$work/own/tree_L1.glb"
 printf 'key m\n' > "$work/own/replay.txt"
 "$boxlod" render "$work/own/house.glb" -o "$work/own/a.png" --width 16 --height 16 > /dev/null
 "$boxlod" render "$work/own/house.glb" -o "$work/own/b.png" --width 16 --height 16 --camera -X+Y > /dev/null
+cp "$work/own/a.png" "$work/own/m.png"
 for args in "build HOUSE --save-params HOUSE" "build HOUSE --chain -o HOUSE" "build HOUSE -o OWN --name house --glb" \
             "build OWN/tree_L1.glb -o OWN --name tree --glb --all-levels --level-mode box-area --wanted-levels 1" \
-            "simplify HOUSE --faces 10 -o HOUSE" "convert HOUSE -o HOUSE" \
+            "simplify HOUSE --faces 10 -o HOUSE" "convert HOUSE -o HOUSE" "convert HOUSE#House -o HOUSE" \
             "view HOUSE --replay OWN/replay.txt --params-out HOUSE --width 16 --height 16" \
-            "compare OWN/a.png OWN/b.png --metric iou --mask-a OWN/a.png --mask-b OWN/b.png --heatmap OWN/a.png"; do
+            "compare OWN/a.png OWN/b.png --metric iou --mask-a OWN/m.png --mask-b OWN/b.png --heatmap OWN/m.png"; do
   words=${args//HOUSE/$work/own/house.glb}
   read -r -a words <<< "${words//OWN/$work/own}"
   check "$args: refused, exit 2" test "$(SDL_VIDEODRIVER=dummy status_of "$boxlod" "${words[@]}")" = 2

@@ -224,16 +224,24 @@ void check_model_kept(const std::string& model, const std::string& folder, const
                       bool all_levels) {
     namespace fs = std::filesystem;
     std::error_code error, folder_error;
-    const fs::path file = fs::weakly_canonical(model, error);
-    if (error || file.parent_path() != fs::weakly_canonical(folder, folder_error) || folder_error) return;
-    if (lod_export_writes(file.filename().string(), name, all_levels))
+    // The name in the folder, and the file a symbolic link of that name leads to.
+    const fs::path file = fs::weakly_canonical(model, error),
+                   named = fs::weakly_canonical(fs::absolute(model).parent_path(), error) /
+                           fs::path(model).filename();
+    const fs::path out = fs::weakly_canonical(folder, folder_error);
+    if (error || folder_error) return;
+    auto written = [&](const fs::path& f) {
+        return f.parent_path() == out && lod_export_writes(f.filename().string(), name, all_levels);
+    };
+    if (written(file) || written(named))
         throw_input_error(model, "", "-o " + folder + " and --name " + name + " would write over it");
 }
 
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
-    const std::vector<std::pair<std::string, std::string>> inputs = {{"MODEL", a.positionals[0]},
-                                                                     {"its model", parameters.model}};
+    // The model read; a parameter file read may be saved over (it is read whole first).
+    const std::vector<std::pair<std::string, std::string>> inputs = {
+        {"MODEL", model_file_of(parameters.model)}};
     if (a.has("save-params")) {  // the manual's Save Parameters: no LoD built
         check_output_file(a.text("save-params"));
         check_distinct_files(inputs, {{"--save-params", a.text("save-params")}});
@@ -256,7 +264,7 @@ int run_build(const Arguments& a) {
         a.text("name", utf8_or_latin1(std::filesystem::path(parameters.model).stem().string()) + "_lod");
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
-    if (!chain_file) check_model_kept(parameters.model, a.text("output"), name, all_levels);
+    if (!chain_file) check_model_kept(model_file_of(parameters.model), a.text("output"), name, all_levels);
     if (a.has("level") && all_levels)
         throw InputError(std::string("--level: ") + (chain_file ? "--chain" : "--all-levels") +
                          " writes every level");

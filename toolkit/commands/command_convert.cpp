@@ -3,6 +3,7 @@
 #include "toolkit/boxlod.h"
 #include "toolkit/commands/commands.h"
 #include "toolkit/commands/lod_options.h"
+#include "toolkit/formats/model_io.h"
 #include "toolkit/model/material_merge.h"
 
 #include <cstdio>
@@ -13,7 +14,8 @@ static int run_convert(const Arguments& arguments) {
     if (!arguments.has("output"))
         throw InputError("boxlod convert: -o/--output OUT.gltf|OUT.glb is required");
     check_output_file(arguments.text("output"), {".gltf", ".glb"});
-    check_distinct_files({{"MODEL", arguments.positionals[0]}}, {{"--output", arguments.text("output")}});
+    check_distinct_files({{"MODEL", model_file_of(arguments.positionals[0])}},
+                         {{"--output", arguments.text("output")}});
     Model model =
         read_model(arguments.positionals[0], city_lod_from(arguments));  // through the library's face
     if (!arguments.has("keep-materials")) merge_materials(model);

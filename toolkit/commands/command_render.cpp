@@ -8,6 +8,7 @@
 #include "toolkit/commands/lod_options.h"
 #include "toolkit/commands/render_options.h"
 #include "toolkit/drawing/drawable.h"
+#include "toolkit/formats/model_io.h"
 
 #include <cstdio>
 
@@ -18,11 +19,11 @@ static int run_render(const Arguments& arguments) {
     check_output_file(arguments.text("output"), {".png"});
     if (arguments.has("coverage")) check_output_file(arguments.text("coverage"), {".png"});
     if (arguments.has("exr")) check_output_file(arguments.text("exr"), {".exr"});
-    check_distinct_files(
-        {{"MODEL", arguments.positionals[0]}, {"--split-view", arguments.text("split-view", "")}},
-        {{"--output", arguments.text("output")},
-         {"--coverage", arguments.text("coverage", "")},
-         {"--exr", arguments.text("exr", "")}});
+    check_distinct_files({{"MODEL", model_file_of(arguments.positionals[0])},
+                          {"--split-view", model_file_of(arguments.text("split-view", ""))}},
+                         {{"--output", arguments.text("output")},
+                          {"--coverage", arguments.text("coverage", "")},
+                          {"--exr", arguments.text("exr", "")}});
     Model model = read_model(arguments.positionals[0], city_lod_from(arguments), arguments.integer("level"));
     auto drawable_model = make_drawable_model(model);
     const Drawable& drawable = drawable_model->drawable;

@@ -248,7 +248,7 @@ int run_view(const Arguments& a) {
     if (a.has("screenshot")) check_output_file(a.text("screenshot"), {".png"});
     LodParameters parameters = lod_parameters_from(a);
     check_distinct_files(
-        {{"MODEL", parameters.model}, {"--replay", a.text("replay", "")}},
+        {{"MODEL", model_file_of(parameters.model)}, {"--replay", a.text("replay", "")}},
         {{"--params-out", a.text("params-out")}, {"--screenshot", a.text("screenshot", "")}});
     bool from_parameter_file = std::filesystem::path(a.positionals[0]).extension() == ".txt";
     if (!a.has("level") && !from_parameter_file) parameters.current_level = 0;  // start with the original

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -281,7 +282,7 @@ bool apply_event(ViewerState& s, const ViewerEvent& e) {
         return true;
     }
     if (e.kind == ViewerEvent::Kind::wheel) {
-        // Within the positions a parameter file takes, however many steps out or in.
+        // Never at infinity nor at the target, however many steps out or in (the target is the model's).
         const float wheeled =
             std::clamp(distance * std::pow(0.9f, e.dy), float(parameter_range::min_positive_distance),
                        float(parameter_range::position.max) / 2);
@@ -360,12 +361,13 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
         throw_input_error(file, "line " + std::to_string(number), what);
     };
     // A drag within a screen's pixels, a wheel within 100 steps (0.9^100 of the distance): SDL's ints.
-    auto read_number = [&](const NumberRange& range, float& value) {
+    auto read_number = [&](const char* form, const char* name, const NumberRange& range, float& value) {
         std::string text;
-        in >> text;
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != 0 || !range.contains(v)) fail(out_of_range_message(range, text));
+        if (!(in >> text)) fail(std::string("expected '") + form + "'");
+        double v = 0;
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (error != std::errc() || end != text.data() + text.size() || !range.contains(v))
+            fail(std::string(name) + ": " + out_of_range_message(range, text));
         value = float(v);
     };
     if (word == "key") {
@@ -373,11 +375,11 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
         for (char& ch : e.key) ch = char(std::tolower(static_cast<unsigned char>(ch)));
     } else if (word == "drag") {
         e.kind = ViewerEvent::Kind::drag;
-        read_number(replay_drag_range, e.dx);
-        read_number(replay_drag_range, e.dy);
+        read_number("drag DX DY", "DX", replay_drag_range, e.dx);
+        read_number("drag DX DY", "DY", replay_drag_range, e.dy);
     } else if (word == "wheel") {
         e.kind = ViewerEvent::Kind::wheel;
-        read_number(replay_wheel_range, e.dy);
+        read_number("wheel STEPS", "STEPS", replay_wheel_range, e.dy);
     } else {
         fail("unknown event '" + word + "' (key, drag, wheel)");
     }

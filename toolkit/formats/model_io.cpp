@@ -45,13 +45,19 @@ std::vector<std::string> object_names(const Model& city) {
     return names;
 }
 
-Model load_model(const std::string& path, const ReadOptions& options) {
+std::string model_file_of(const std::string& path) {
     std::error_code error;
     const std::size_t hash = path.rfind('#');
     if (hash == std::string::npos || fs::exists(path, error) ||
         !fs::is_regular_file(path.substr(0, hash), error))
-        return load_file(path, options);
-    const std::string file = path.substr(0, hash), object = path.substr(hash + 1);
+        return path;
+    return path.substr(0, hash);
+}
+
+Model load_model(const std::string& path, const ReadOptions& options) {
+    const std::string file = model_file_of(path);
+    if (file == path) return load_file(path, options);
+    const std::string object = path.substr(file.size() + 1);
     const Model city = load_file(file, options);
     const std::vector<int> nodes = object_nodes(city);
     const std::vector<std::string> names = object_names(city);

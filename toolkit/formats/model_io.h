@@ -22,6 +22,10 @@ struct ReadOptions {
 // origin, when FILE exists and the whole path does not.
 Model load_model(const std::string& path, const ReadOptions& options = {});
 
+// The file load_model reads for `path`: FILE of FILE#OBJECT, else path
+// (what an output must not replace).
+std::string model_file_of(const std::string& path);
+
 // The names of a city file's objects, for FILE#OBJECT (in the file's order).
 std::vector<std::string> object_names(const Model& city);
 void save_model(const Model& model, const std::string& path);  // .gltf or .glb

@@ -146,10 +146,11 @@ TEST(ViewerState, ReplayLinesParseOrNameTheirPlace) {
         FAIL();
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
-                  "events.txt: line 4: expected a number in [-100, 100], got '-1000'");
+                  "events.txt: line 4: STEPS: expected a number in [-100, 100], got '-1000'");
     }
     EXPECT_THROW(parse_replay_line("drag 1e30 0", "events.txt", 1), InputError);
     EXPECT_THROW(parse_replay_line("drag nan 0", "events.txt", 1), InputError);
+    EXPECT_THROW(parse_replay_line("wheel 0x10", "events.txt", 1), InputError);
 }
 
 // However far a replay wheels, the camera stays where a parameter file can save it.
