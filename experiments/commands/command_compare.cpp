@@ -41,11 +41,11 @@ KeyValue metric_entry(const std::string& key, double value) {
 // The options of the coverages, before any image is read: an option that nothing reads is a mistake,
 // said rather than ignored.
 void check_coverage_options(const Arguments& arguments, bool read) {
-    if (arguments.has("mask-a") != arguments.has("mask-b"))
-        throw InputError("boxlod compare: --mask-a and --mask-b go together");
     for (const char* option : {"mask-a", "mask-b", "background"})
         if (!read && arguments.has(option))
             throw InputError(std::string("--") + option + ": only the metrics iou and flip_covered read it");
+    if (arguments.has("mask-a") != arguments.has("mask-b"))
+        throw InputError("boxlod compare: --mask-a and --mask-b go together");
     if (arguments.has("mask-a") && arguments.has("background"))
         throw InputError("--background: the masks give the coverages, so it is not read with --mask-a");
 }

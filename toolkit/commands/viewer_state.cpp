@@ -379,7 +379,7 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
         read_number("drag DX DY", "DY", replay_drag_range, e.dy);
     } else if (word == "wheel") {
         e.kind = ViewerEvent::Kind::wheel;
-        read_number("wheel STEPS", "STEPS", replay_wheel_range, e.dy);
+        read_number("wheel N", "N", replay_wheel_range, e.dy);
     } else {
         fail("unknown event '" + word + "' (key, drag, wheel)");
     }

@@ -146,7 +146,7 @@ TEST(ViewerState, ReplayLinesParseOrNameTheirPlace) {
         FAIL();
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
-                  "events.txt: line 4: STEPS: expected a number in [-100, 100], got '-1000'");
+                  "events.txt: line 4: N: expected a number in [-100, 100], got '-1000'");
     }
     EXPECT_THROW(parse_replay_line("drag 1e30 0", "events.txt", 1), InputError);
     EXPECT_THROW(parse_replay_line("drag nan 0", "events.txt", 1), InputError);
