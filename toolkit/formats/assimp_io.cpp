@@ -114,7 +114,8 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
             }
         }
     } else {
-        texture.image = read_image(find_file(directory, file).string());
+        texture.source_file = find_file(directory, file).string();
+        texture.image = read_image(texture.source_file);
     }
     model.textures.push_back(std::move(texture));
     return int(model.textures.size()) - 1;

@@ -56,6 +56,7 @@ struct Writer {
     std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
     std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
     std::set<std::string> image_files;                      // .gltf: the PNG names taken
+    std::set<std::string> input_images;                     // the image files the levels were read from
 
     Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}},
         vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
@@ -195,6 +196,27 @@ MaterialUse material_use(const Model& model) {
     return use;
 }
 
+// A .gltf's image file beside it: named after its texture where that makes a
+// plain .png name (one a URI holds as it is), else after the target. Never an image the levels were read
+// from (docs/design.md: Files): exporting beside the model would re-encode it.
+std::string image_file_name(Writer& w, const Texture& texture, const fs::path& target, int index) {
+    const auto usable = [&](const std::string& name) {
+        std::error_code error;
+        for (const std::string& input : w.input_images)
+            if (fs::equivalent(target.parent_path() / name, input, error)) return false;
+        return !w.image_files.count(name);
+    };
+    std::string name = fs::path(texture.name).filename().string();
+    if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ %#?") != std::string::npos ||
+        !usable(name)) {
+        const std::string stem = target.stem().string() + "_texture_" + std::to_string(index);
+        name = stem + ".png";
+        for (int again = 2; !usable(name); ++again) name = stem + "_" + std::to_string(again) + ".png";
+    }
+    w.image_files.insert(name);
+    return name;
+}
+
 // The textures a material drawn with them samples, as PNG images: in the
 // .glb's buffer, or as files beside a .gltf (named after the texture where
 // that makes a plain .png name).
@@ -233,11 +255,7 @@ void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs:
         if (binary) {
             image.bufferView = w.add_image(png);
         } else {
-            std::string name = fs::path(texture.name).filename().string();
-            if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos ||
-                w.image_files.count(name))
-                name = target.stem().string() + "_texture_" + std::to_string(index) + ".png";
-            w.image_files.insert(name);
+            const std::string name = image_file_name(w, texture, target, index);
             image.uri = name;
             write_file_atomically((target.parent_path() / name).string(), png);
         }
@@ -500,6 +518,9 @@ tinygltf::Model gltf_document(const std::vector<const Model*>& levels, const std
     w.gltf.asset.generator = "boxlod";
     w.gltf.asset.extras = asset_extras(*levels[0]);
     w.share = levels.size() > 1;
+    for (const Model* model : levels)
+        for (const Texture& texture : model->textures)
+            if (!texture.source_file.empty()) w.input_images.insert(texture.source_file);
     std::vector<int> roots;
     for (const Model* model : levels) {
         w.node_offset = int(w.gltf.nodes.size());

@@ -314,6 +314,7 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
         reader.fail(place, "image '" + in.uri + "' could not be loaded");
     Texture texture;
     texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
+    if (!in.uri.empty()) texture.source_file = (fs::path(reader.file).parent_path() / in.uri).string();
     if (in.bits == 8) {
         texture.image = Image8(in.width, in.height, 4);
         texture.image.pixels = in.image;

@@ -153,6 +153,7 @@ void walk(Stream& s, M& model) {
         s.value(t.image16.channels);
         s.values(t.image16.pixels);
         s.value(t.wrap);
+        s.text(t.source_file);
     }
 }
 

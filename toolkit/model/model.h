@@ -26,10 +26,11 @@ struct OrientedBox {
 using Scope = OrientedBox;
 
 struct Texture {
-    std::string name;          // file name or label; a hint for export
-    Image8 image;              // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
-    Image16 image16 = {};      // instead of `image`: one 16-bit channel (baked height maps)
-    Wrap wrap = Wrap::repeat;  // LoD pages clamp: their faces may touch the page's border
+    std::string name;              // file name or label; a hint for export
+    Image8 image;                  // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
+    Image16 image16 = {};          // instead of `image`: one 16-bit channel (baked height maps)
+    Wrap wrap = Wrap::repeat;      // LoD pages clamp: their faces may touch the page's border
+    std::string source_file = {};  // the image file it was read from; empty if none (embedded, baked)
 };
 
 // A 128-bit digest of bytes: FNV-1a and a multiplicative hash side by side.

@@ -579,6 +579,35 @@ TEST(GltfIo, SixteenBitGreyUsedAsColourReadsAsGreyNotRed) {
     // Used only as a height map, it keeps its 16 bits (ExportThenImportGivesTheSameModel).
 }
 
+// Saving beside the model must not re-encode the images it was read with:
+// here the 16-bit grey image, read as 8-bit colour, would lose its low bits.
+TEST(GltfIo, AnExportBesideTheModelKeepsItsImageFiles) {
+    auto folder = test::scratch_folder("gltf_keeps_images");
+    Model model = sample_model();
+    model.materials[0].base_color_texture = 2;
+    save_model(model, (folder / "house.gltf").string());
+    const std::vector<std::string> images = {"brick_color.png", "brick_normal.png", "brick_height.png"};
+    std::vector<std::string> before;
+    for (const std::string& image : images) before.push_back(test::read_text(folder / image));
+    const Model read = load_model((folder / "house.gltf").string());
+    EXPECT_EQ(read.textures[2].source_file, (folder / "brick_height.png").string());
+    save_model(read, (folder / "copy.gltf").string());
+    for (std::size_t i = 0; i < images.size(); ++i)
+        EXPECT_EQ(test::read_text(folder / images[i]), before[i]) << images[i];
+    const nlohmann::json copy = nlohmann::json::parse(test::read_text(folder / "copy.gltf"));
+    ASSERT_EQ(copy["images"].size(), 3u);
+    for (const nlohmann::json& image : copy["images"]) {
+        const std::string uri = image["uri"];
+        EXPECT_EQ(uri.rfind("copy_texture_", 0), 0u) << uri;
+        EXPECT_TRUE(fs::exists(folder / uri)) << uri;
+    }
+    expect_same_model(load_model((folder / "copy.gltf").string()), read);
+    // Elsewhere the images keep their names.
+    fs::create_directories(folder / "elsewhere");
+    save_model(read, (folder / "elsewhere" / "copy.gltf").string());
+    EXPECT_TRUE(fs::exists(folder / "elsewhere" / "brick_height.png"));
+}
+
 TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
     auto folder = test::scratch_folder("gltf_bad_input");
     auto write = [&](const std::string& name, const std::string& text) {

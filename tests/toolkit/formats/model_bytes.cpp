@@ -24,6 +24,7 @@ Model every_field() {
     model.materials = {brick, Material{"plain"}};
     Texture color{"color.png", Image8(2, 1, 3, 7)};
     color.wrap = Wrap::clamp;
+    color.source_file = "textures/color.png";
     Texture height{"height", {}, Image16(1, 2, 1, 60000)};
     model.textures = {color, height};
     const int root = add_node(model, -1, "root");
@@ -57,6 +58,7 @@ TEST(ModelBytes, EveryFieldComesBack) {
     ASSERT_EQ(back.textures.size(), 2u);
     EXPECT_EQ(back.textures[0].image.pixels, model.textures[0].image.pixels);
     EXPECT_EQ(back.textures[0].wrap, Wrap::clamp);
+    EXPECT_EQ(back.textures[0].source_file, "textures/color.png");
     EXPECT_EQ(back.textures[1].image16.pixels, model.textures[1].image16.pixels);
     ASSERT_EQ(back.nodes.size(), 2u);
     EXPECT_EQ(back.nodes[0].children, std::vector<int>{1});
@@ -81,6 +83,8 @@ TEST(ModelBytes, BytesNotWrittenWholeAreRefused) {
     EXPECT_THROW(model_from_bytes(std::string_view(bytes).substr(0, bytes.size() - 1)), std::logic_error);
     EXPECT_THROW(model_from_bytes(bytes + "x"), std::logic_error);
     std::string huge_count = bytes;
-    huge_count[huge_count.size() - 9] = '\xff';  // the high byte of the 16-bit pixels' count
+    // The high byte of the 16-bit pixels' count, before their 4 bytes, the wrap mode and the empty
+    // source file's count.
+    huge_count[huge_count.size() - 1 - 4 - sizeof(Wrap) - 8] = '\xff';
     EXPECT_THROW(model_from_bytes(huge_count), std::logic_error);
 }
