@@ -3,10 +3,9 @@
 #include <algorithm>
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 #include <cctype>
-#include <charconv>
-#include <cmath>
 #include <stdexcept>
 
 namespace boxlod {
@@ -44,22 +43,13 @@ const std::string* value_or_default(const Arguments& a, const std::string& name,
     return declared ? &a.defaults.at(name) : nullptr;
 }
 
-// `text` read whole as a number; false if any of it is not.
-template <typename Number>
-bool read_number(const std::string& text, Number& value) {
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() && end == text.data() + text.size();
-}
-
 // The ranges and defaults a command declares; a default outside its range is the program's error.
 Arguments declared_arguments(const Command& command) {
     Arguments arguments;
     for (const Option& o : command.options) {
         if (o.range) arguments.ranges[o.name] = *o.range;
         if (!o.default_value.empty()) arguments.defaults[o.name] = o.default_value;
-        double number = 0;
-        if (o.range && !o.default_value.empty() &&
-            (!read_number(o.default_value, number) || !o.range->contains(number)))
+        if (o.range && !o.default_value.empty() && !number_within<double>(o.default_value, *o.range))
             throw std::logic_error("option --" + o.name + ": default " + o.default_value +
                                    " outside its range");
     }
@@ -71,17 +61,16 @@ Arguments declared_arguments(const Command& command) {
 double Arguments::number(const std::string& name, std::optional<double> fallback) const {
     const std::string* text = value_or_default(*this, name, fallback);
     if (!text) return *fallback;
-    double value = 0;
-    if (!read_number(*text, value) || !std::isfinite(value))
-        throw InputError("--" + name + ": expected a number, got '" + *text + "'");
-    return value;
+    const auto value = finite_number<double>(*text);
+    if (!value) throw InputError("--" + name + ": expected a number, got '" + *text + "'");
+    return *value;
 }
 
 int Arguments::integer(const std::string& name, std::optional<int> fallback) const {
     const std::string* text = value_or_default(*this, name, fallback);
     if (!text) return *fallback;
     int value = 0;
-    if (!read_number(*text, value))
+    if (!read_whole(*text, value))
         throw InputError("--" + name + ": expected an integer, got '" + *text + "'");
     return value;
 }
@@ -123,8 +112,7 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
                 throw InputError(prefix + "--" + name + " takes no value");
             }
             if (option->range) {
-                double number = 0;
-                if (!read_number(value, number) || !option->range->contains(number))
+                if (!number_within<double>(value, *option->range))
                     throw InputError(prefix + "--" + name + ": " +
                                      out_of_range_message(*option->range, value));
             }

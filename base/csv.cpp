@@ -1,8 +1,8 @@
 #include "base/csv.h"
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 
@@ -47,15 +47,7 @@ namespace {
 
 bool is_count(const std::string& field) {
     std::uint64_t value = 0;
-    auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    return !field.empty() && error == std::errc() && end == field.data() + field.size();
-}
-
-// A whole field read as a double (inf allowed; what it may be is the caller's).
-bool as_number(const std::string& field, double& value) {
-    if (field.empty() || field.find_first_of(" \t\n") != std::string::npos) return false;
-    auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    return error == std::errc() && end == field.data() + field.size();
+    return read_whole(field, value);
 }
 
 }  // namespace
@@ -102,11 +94,11 @@ std::string field_problem(const std::string& field, CsvValue kind) {
         if (field.empty()) return "";
         [[fallthrough]];
     case CsvValue::number:
-        return as_number(field, value) && std::isfinite(value) && value >= 0
+        return read_whole(field, value) && std::isfinite(value) && value >= 0
                    ? ""
                    : "'" + field + "' is not a finite number >= 0";
     case CsvValue::metric:
-        return as_number(field, value) && !std::isnan(value) && value != -INFINITY
+        return read_whole(field, value) && !std::isnan(value) && value != -INFINITY
                    ? ""
                    : "'" + field + "' is not a metric value";
     }

@@ -2,11 +2,11 @@
 
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/number_text.h"
 #include "renderer/camera.h"
 #include "toolkit/model/framing.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -36,11 +36,10 @@ Eigen::Vector3f spline(const std::vector<Keyframe>& keys, std::size_t i, double 
 }
 
 double parse_field(const std::string& word, const std::string& file, int line) {
-    double value = 0;
-    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+    const auto value = finite_number<double>(word);
+    if (!value)
         throw_input_error(file, "line " + std::to_string(line), "expected a number, got '" + word + "'");
-    return value;
+    return *value;
 }
 
 std::vector<CameraPose> street_path(const CityPlan& city, int frames) {

@@ -5,6 +5,7 @@
 #include "base/input_file.h"
 #include "base/key_value_lines.h"
 #include "base/key_values.h"
+#include "base/number_text.h"
 #include "base/parallel.h"
 #include "data_gen/samples.h"
 #include "experiments/sweep/impostor.h"
@@ -14,13 +15,11 @@
 #include "toolkit/metrics/shot.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
-#include <type_traits>
 
 namespace boxlod {
 namespace {
@@ -105,19 +104,10 @@ struct Line {
         return out;
     }
     template <typename T>
-    T number(const std::string& text) const {
-        T v{};
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(double(v)))
-            fail("expected a number, got '" + text + "'");
-        return v;
-    }
-    template <typename T>
     T number_in(const NumberRange& range, const std::string& text) const {
-        // A float is checked as the double written: 0.01 read as a float lies below 0.01.
-        const auto v = number<std::conditional_t<std::is_floating_point_v<T>, double, T>>(text);
-        if (!range.contains(double(v))) fail(out_of_range_message(range, text));
-        return T(v);
+        if (const auto v = number_within<T>(text, range)) return *v;
+        fail(finite_number<double>(text) ? out_of_range_message(range, text)
+                                         : "expected a number, got '" + text + "'");
     }
     template <typename T>
     T number_in(const NumberRange& range) const {

@@ -1,12 +1,12 @@
 #include "toolkit/commands/viewer_state.h"
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 #include "toolkit/model/framing.h"
 #include "toolkit/model/statistics.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -364,11 +364,9 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
     auto read_number = [&](const char* form, const char* name, const NumberRange& range, float& value) {
         std::string text;
         if (!(in >> text)) fail(std::string("expected '") + form + "'");
-        double v = 0;
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (error != std::errc() || end != text.data() + text.size() || !range.contains(v))
-            fail(std::string(name) + ": " + out_of_range_message(range, text));
-        value = float(v);
+        const auto v = number_within<float>(text, range);
+        if (!v) fail(std::string(name) + ": " + out_of_range_message(range, text));
+        value = *v;
     };
     if (word == "key") {
         if (!(in >> e.key)) fail("expected 'key NAME'");

@@ -2,11 +2,9 @@
 
 #include "base/enum_table.h"
 #include "base/key_values.h"
+#include "base/number_text.h"
 
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -37,18 +35,14 @@ ParameterDeclaration number_parameter(const char* key, const char* option, const
             return format_number(p.*field);
     };
     d.parse = [field, range, power_of_two](const std::string& text, LodParameters& p) -> std::string {
-        // A float is checked as the double written: 0.01 read as a float lies below 0.01.
-        std::conditional_t<std::is_floating_point_v<Number>, double, Number> value{};
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(double(value)) ||
-            !range.contains(double(value)))
-            return out_of_range_message(range, text);
+        const auto value = number_within<Number>(text, range);
+        if (!value) return out_of_range_message(range, text);
         if (power_of_two) {
-            auto whole = static_cast<long long>(value);
+            auto whole = static_cast<long long>(*value);
             if (whole <= 0 || (whole & (whole - 1)) != 0)
                 return "expected a power of two in " + range_text(range) + ", got '" + text + "'";
         }
-        p.*field = Number(value);
+        p.*field = *value;
         return "";
     };
     d.number = [field](const LodParameters& p) { return double(p.*field); };
@@ -116,17 +110,15 @@ std::string parse_level_distances(const std::string& text, LevelDistances& dista
     }
     parsed.rule = LevelDistances::Rule::listed;
     for (const std::string& item : comma_list(text)) {
-        char* end = nullptr;
-        const double d = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !parameter_range::distance.contains(d) ||
-            d < parameter_range::min_positive_distance)
+        const auto d = number_within<double>(item, parameter_range::distance);
+        if (!d || *d < parameter_range::min_positive_distance)
             return "'" + item + "' is not a distance in [" +
                    format_number(parameter_range::min_positive_distance) + ", " +
                    format_number(parameter_range::distance.max) + "] m (or auto, or same)";
-        if (!parsed.listed.empty() && !(float(d) > parsed.listed.back()))
+        if (!parsed.listed.empty() && !(float(*d) > parsed.listed.back()))
             return item + " comes after " + format_number(parsed.listed.back()) +
                    ": the distances must ascend, one per level 1..N";
-        parsed.listed.push_back(float(d));
+        parsed.listed.push_back(float(*d));
     }
     distances = parsed;
     return "";

@@ -5,9 +5,9 @@
 #include "base/input_file.h"
 #include "base/key_value_lines.h"
 #include "base/key_values.h"
+#include "base/number_text.h"
 
 #include <cfloat>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -31,11 +31,9 @@ struct Parser {
         throw_input_error(file, "line " + std::to_string(line) + ": " + key, what);
     }
     float number(const std::string& text, const NumberRange& range = {-FLT_MAX, FLT_MAX}) const {
-        float v = 0;
-        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (error != std::errc() || end != text.data() + text.size() || !range.contains(v))
-            fail(out_of_range_message(range, text));
-        return v;
+        const auto v = number_within<float>(text, range);
+        if (!v) fail(out_of_range_message(range, text));
+        return *v;
     }
     Eigen::Vector3f vector(const std::string& text,
                            const NumberRange& range = parameter_range::position) const {

@@ -2,8 +2,8 @@
 
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "base/number_text.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace boxlod {
@@ -21,11 +21,9 @@ std::vector<std::string> split_commas(const std::string& text) {
 }
 
 double parse_number(const std::string& text, const std::string& where, const std::string& strategy) {
-    double value = 0;
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-        throw_input_error(where, strategy, "expected a number, got '" + text + "'");
-    return value;
+    const auto value = finite_number<double>(text);
+    if (!value) throw_input_error(where, strategy, "expected a number, got '" + text + "'");
+    return *value;
 }
 
 std::vector<double> parse_numbers(const std::vector<std::string>& parts, const std::string& where,

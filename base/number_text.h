@@ -1,0 +1,39 @@
+// Numbers written in files and on command lines, read whole: "12", "0.25",
+// "1e-3". No spaces, no '+', no trailing text (std::from_chars' grammar).
+#pragma once
+#include "base/input_error.h"
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <string_view>
+#include <type_traits>
+
+namespace boxlod {
+
+// All of `text` as a Number; false if any of it is not one (inf and nan read).
+template <typename Number>
+bool read_whole(std::string_view text, Number& value) {
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+}
+
+// All of `text` as a finite Number; nothing otherwise.
+template <typename Number>
+std::optional<Number> finite_number(std::string_view text) {
+    Number value{};
+    if (!read_whole(text, value) || !std::isfinite(double(value))) return std::nullopt;
+    return value;
+}
+
+// All of `text` as a Number within `range`; nothing otherwise. A float is
+// checked as the double written: 0.01 read as a float lies below 0.01.
+template <typename Number>
+std::optional<Number> number_within(std::string_view text, const NumberRange& range) {
+    const auto value =
+        finite_number<std::conditional_t<std::is_floating_point_v<Number>, double, Number>>(text);
+    if (!value || !range.contains(double(*value))) return std::nullopt;
+    return Number(*value);
+}
+
+}  // namespace boxlod

@@ -1,0 +1,43 @@
+#include "base/number_text.h"
+
+#include <gtest/gtest.h>
+#include <cstdint>
+
+using namespace boxlod;
+
+TEST(NumberText, TheWholeTextOrNothing) {
+    double value = 0;
+    EXPECT_TRUE(read_whole("1e-3", value));
+    EXPECT_EQ(value, 1e-3);
+    EXPECT_TRUE(read_whole("inf", value));  // finite_number refuses it
+    for (const char* text : {"", " 1", "1 ", "+1", "1,5", "0x10", "12abc", "-"})
+        EXPECT_FALSE(read_whole(text, value)) << text;
+    std::uint64_t count = 0;
+    EXPECT_FALSE(read_whole("-1", count));
+    EXPECT_FALSE(read_whole("1.5", count));
+    EXPECT_FALSE(read_whole("18446744073709551616", count));  // 2^64
+}
+
+TEST(NumberText, FiniteNumbersOnly) {
+    EXPECT_EQ(finite_number<double>("-2.5"), -2.5);
+    for (const char* text : {"inf", "-inf", "nan", "1e999"})
+        EXPECT_FALSE(finite_number<double>(text)) << text;
+    EXPECT_FALSE(finite_number<float>("1e39"));  // beyond a float
+    EXPECT_EQ(finite_number<int>("-7"), -7);
+    EXPECT_FALSE(finite_number<int>("2147483648"));
+}
+
+// A float is checked as written: the float nearest 0.01 lies below 0.01, and
+// a range whose minimum is 0.01 must take "0.01".
+TEST(NumberText, RangeCheckedOnTheNumberWritten) {
+    constexpr NumberRange range{0.01, 100};
+    ASSERT_LT(double(0.01f), 0.01);
+    EXPECT_EQ(number_within<float>("0.01", range), 0.01f);
+    EXPECT_EQ(number_within<float>("100", range), 100.0f);
+    EXPECT_FALSE(number_within<float>("100.0001", range));
+    EXPECT_FALSE(number_within<float>("0.00999", range));
+    EXPECT_FALSE(number_within<float>("nan", range));
+    EXPECT_EQ(number_within<int>("3", NumberRange{1, 3}), 3);
+    EXPECT_FALSE(number_within<int>("4", NumberRange{1, 3}));
+    EXPECT_FALSE(number_within<int>("2.0", NumberRange{1, 3}));
+}
