@@ -33,10 +33,15 @@ std::vector<float> level_distances(const LevelDistances& rule, float distance, i
         }
         break;
     case LevelDistances::Rule::listed:
-        if (int(rule.listed.size()) != levels)
-            throw InputError("level_distances: " + std::to_string(rule.listed.size()) + " distances for " +
-                             std::to_string(levels) + " levels (1.." + std::to_string(levels) +
-                             "), or auto, or same");
+        if (int(rule.listed.size()) != levels) {
+            // Known only now, with the levels: named as the parameter file and the option name it.
+            std::string listed;
+            for (float d : rule.listed) listed.append(listed.empty() ? "" : ",").append(format_number(d));
+            throw InputError("level_distances (--level-distances) " + listed + ": " +
+                             std::to_string(rule.listed.size()) + " distances for " + std::to_string(levels) +
+                             " levels; list " + std::to_string(levels) + " (levels 1.." +
+                             std::to_string(levels) + "), or auto, or same");
+        }
         distances = rule.listed;
     }
     return distances;

@@ -37,7 +37,8 @@ TEST(Chain, AutoSizesEachLevelForTwiceTheLastDistance) {
     EXPECT_EQ(test::input_error_of([] {
                   level_distances(listed({5, 6}), 10, 3);
               }),
-              "level_distances: 2 distances for 3 levels (1..3), or auto, or same");
+              "level_distances (--level-distances) 5,6: 2 distances for 3 levels; list 3 (levels 1..3), or "
+              "auto, or same");
 }
 
 TEST(Chain, AutoSizesABudgetsLevelNoFartherThanItsShareOfTheFirst) {
