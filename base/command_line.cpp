@@ -111,6 +111,9 @@ Arguments parse_arguments(const Command& command, const std::vector<std::string>
             } else if (option->value_name.empty() && inline_value) {
                 throw InputError(prefix + "--" + name + " takes no value");
             }
+            // An empty value ('--reference-system ""', a shell variable unset) is a mistake, never a choice.
+            if (!option->value_name.empty() && value.empty())
+                throw InputError(prefix + "--" + name + " needs a value " + option->value_name + ", got ''");
             if (option->range) {
                 if (!number_within<double>(value, *option->range))
                     throw InputError(prefix + "--" + name + ": " +

@@ -154,15 +154,19 @@ SweepModel model_entry(const Line& line, const std::string& item, const std::fil
 }
 
 // An item of `models`; FILE#* is each object of a city file, as FILE#OBJECT (toolkit/formats/model_io.h).
+// A model named twice (also as another spelling of its path) is refused: its rows would be counted twice.
 void add_models(SweepConfig& c, const Line& line, const std::string& item,
                 const std::filesystem::path& folder) {
-    if (!item.ends_with("#*")) {
-        c.models.push_back(model_entry(line, item, folder));
-        return;
-    }
+    const auto add = [&](const SweepModel& model) {
+        for (const SweepModel& known : c.models)
+            if (known.name == model.name || (known.path == model.path && known.sample == model.sample))
+                line.fail("'" + model.name + "' is the model '" + known.name + "' again");
+        c.models.push_back(model);
+    };
+    if (!item.ends_with("#*")) return add(model_entry(line, item, folder));
     const std::string file = item.substr(0, item.size() - 2);
     for (const std::string& object : object_names(load_model(model_entry(line, file, folder).path)))
-        c.models.push_back(model_entry(line, file + "#" + object, folder));
+        add(model_entry(line, file + "#" + object, folder));
 }
 
 // A sweep's own keys, one row each: how its value sets the config. The LoD

@@ -48,6 +48,13 @@ TEST(CommandLine, RejectsWhatItDoesNotKnow) {
     EXPECT_THROW(a.integer("width", 0), InputError);
 }
 
+// An empty value is a mistake (an unset shell variable), not an absent option.
+TEST(CommandLine, AnEmptyValueIsRefused) {
+    EXPECT_EQ(message_of({"m", "--name", ""}), "boxlod render: --name needs a value N, got ''");
+    EXPECT_EQ(message_of({"m", "--name="}), "boxlod render: --name needs a value N, got ''");
+    EXPECT_EQ(message_of({"m", "-o", ""}), "boxlod render: --output needs a value FILE, got ''");
+}
+
 TEST(CommandLine, NumbersOutsideTheirDeclaredRangeAreRefusedWhileParsing) {
     EXPECT_EQ(message_of({"m", "--width", "100000"}),
               "boxlod render: --width: expected a number in [1, 16384], got '100000'");

@@ -143,6 +143,10 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nthreads =\n", "cfg.txt: line 2: threads: missing value");
     expect_error("models = a.glb\njust words\n", "cfg.txt: line 2: expected 'key = value'");
     expect_error("models = sample:\n", "cfg.txt: line 1: models: 'sample:' needs a sample name");
+    expect_error("models = a.glb, sample:house, ./a.glb\n",
+                 "cfg.txt: line 1: models: './a.glb' is the model 'a.glb' again");
+    expect_error("models = sample:house, sample:house\n",
+                 "cfg.txt: line 1: models: 'sample:house' is the model 'sample:house' again");
     expect_error("width = 64\n", "cfg.txt: no models");
 }
 
