@@ -1,6 +1,7 @@
 #include "toolkit/commands/viewer_pages.h"
 
 #include "base/atomic_write.h"
+#include "toolkit/formats/gltf_json.h"
 
 #include <filesystem>
 #include <stdexcept>
@@ -47,7 +48,7 @@ std::vector<std::string> write_viewer_pages(const std::string& chain_path) {
          {std::pair{"three", chain_three_page}, std::pair{"babylon", chain_babylon_page}}) {
         const std::string path =
             (chain.parent_path() / (chain.stem().string() + "." + client + ".html")).string();
-        write_text_atomically(path, page_for(page, file));
+        write_text_atomically(path, page_for(page, file_uri(file)));  // a URL: "my house.glb" encoded
         written.push_back(path);
     }
     return written;

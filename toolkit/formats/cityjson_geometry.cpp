@@ -147,7 +147,8 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
         const auto [known, added] = s.texture_of_file.try_emplace(key, int(s.model.textures.size()));
         if (added) {
             s.model.textures.push_back(
-                {fs::path(image).filename().string(), read_image(path.string()), {}, wrap, path.string()});
+                {fs::path(image).filename().string(), read_image(path.string()), {}, wrap});
+            s.model.image_files.push_back(path.string());
             s.images_memory += double(s.model.textures.back().image.pixels.size());  // each checked alone
             check_memory(s.file + ": its images, decoded", s.images_memory);
         }

@@ -7,12 +7,16 @@
 #include "base/parallel.h"
 #include "renderer/image.h"
 #include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/gltf_json.h"
 #include "toolkit/model/vertex_layout.h"
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
+
+#include <sys/stat.h>
 #include <unordered_map>
 
 namespace boxlod {
@@ -56,7 +60,7 @@ struct Writer {
     std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
     std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
     std::set<std::string> image_files;                      // .gltf: the PNG names taken
-    std::set<std::string> input_images;                     // the image files the levels were read from
+    std::set<std::pair<dev_t, ino_t>> input_images;         // the image files the levels were read with
 
     Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}},
         vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
@@ -196,18 +200,23 @@ MaterialUse material_use(const Model& model) {
     return use;
 }
 
+// The file a path leads to, as its device and inode (links resolved); none where there is none.
+std::optional<std::pair<dev_t, ino_t>> file_identity(const fs::path& path) {
+    struct stat status {};
+    if (::stat(path.c_str(), &status) != 0) return std::nullopt;
+    return std::pair{status.st_dev, status.st_ino};
+}
+
 // A .gltf's image file beside it: named after its texture where that makes a
-// plain .png name (one a URI holds as it is), else after the target. Never an image the levels were read
+// plain .png name, else after the target. Never an image the levels were read
 // from (docs/design.md: Files): exporting beside the model would re-encode it.
 std::string image_file_name(Writer& w, const Texture& texture, const fs::path& target, int index) {
     const auto usable = [&](const std::string& name) {
-        std::error_code error;
-        for (const std::string& input : w.input_images)
-            if (fs::equivalent(target.parent_path() / name, input, error)) return false;
-        return !w.image_files.count(name);
+        const auto identity = file_identity(target.parent_path() / name);
+        return !w.image_files.count(name) && !(identity && w.input_images.count(*identity));
     };
     std::string name = fs::path(texture.name).filename().string();
-    if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ %#?") != std::string::npos ||
+    if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos ||
         !usable(name)) {
         const std::string stem = target.stem().string() + "_texture_" + std::to_string(index);
         name = stem + ".png";
@@ -256,7 +265,7 @@ void add_images(Writer& w, const Model& model, const MaterialUse& use, const fs:
             image.bufferView = w.add_image(png);
         } else {
             const std::string name = image_file_name(w, texture, target, index);
-            image.uri = name;
+            image.uri = file_uri(name);
             write_file_atomically((target.parent_path() / name).string(), png);
         }
         w.gltf.images.push_back(image);
@@ -519,8 +528,8 @@ tinygltf::Model gltf_document(const std::vector<const Model*>& levels, const std
     w.gltf.asset.extras = asset_extras(*levels[0]);
     w.share = levels.size() > 1;
     for (const Model* model : levels)
-        for (const Texture& texture : model->textures)
-            if (!texture.source_file.empty()) w.input_images.insert(texture.source_file);
+        for (const std::string& file : model->image_files)
+            if (const auto identity = file_identity(file)) w.input_images.insert(*identity);
     std::vector<int> roots;
     for (const Model* model : levels) {
         w.node_offset = int(w.gltf.nodes.size());

@@ -29,7 +29,7 @@ void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector
     } else {
         const std::string bin_name = target.stem().string() + ".bin";
         write_file_atomically((target.parent_path() / bin_name).string(), document.buffers[0].data);
-        write_text_atomically(path, gltf_text(document, bin_name));
+        write_text_atomically(path, gltf_text(document, file_uri(bin_name)));
     }
     files.commit();
 }

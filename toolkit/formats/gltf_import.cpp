@@ -11,6 +11,7 @@
 #include "base/utf8.h"
 #include "renderer/image.h"
 #include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/gltf_json.h"
 #include "toolkit/formats/gltf_structure.h"
 
 #include <tiny_gltf.h>
@@ -314,7 +315,6 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
         reader.fail(place, "image '" + in.uri + "' could not be loaded");
     Texture texture;
     texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
-    if (!in.uri.empty()) texture.source_file = (fs::path(reader.file).parent_path() / in.uri).string();
     if (in.bits == 8) {
         texture.image = Image8(in.width, in.height, 4);
         texture.image.pixels = in.image;
@@ -385,9 +385,13 @@ void read_textures(const Reader& reader, Model& model) {
         for (const auto& slot : texture_slots(std::as_const(extensions)))
             if (slot.index >= 0) colour_or_normal[std::size_t(slot.index)] = true;
     }
-    for (std::size_t i = 0; i < gltf.images.size(); ++i)
+    for (std::size_t i = 0; i < gltf.images.size(); ++i) {
         model.textures.push_back(
             convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
+        if (!gltf.images[i].uri.empty())  // a file's (a data URI's image keeps none)
+            model.image_files.push_back(
+                (fs::path(reader.file).parent_path() / file_name_of_uri(gltf.images[i].uri)).string());
+    }
     for (const tinygltf::Texture& texture :
          gltf.textures)  // an image sampled clamped to its edge (LoD pages)
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&

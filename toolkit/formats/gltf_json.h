@@ -19,6 +19,13 @@ namespace boxlod {
 // as data URIs.
 std::string gltf_text(const tinygltf::Model& document, const std::string& bin_uri);
 
+// A file beside the document as a glTF uri (glTF 2.0, 2.8: RFC 3986 URI
+// references): every byte but letters, digits and "-._~" percent-encoded, so
+// that "my house%.bin" is read back as that file (clients decode the uri).
+std::string file_uri(const std::string& file_name);
+// The file a uri names, its %XX escapes decoded (as tinygltf decodes it before reading).
+std::string file_name_of_uri(const std::string& uri);
+
 // The .glb bytes (glTF 2.0, 4.4): a header, the compact JSON chunk padded
 // with spaces, buffer 0 as the BIN chunk padded with zeros.
 std::string glb_bytes(const tinygltf::Model& document);

@@ -123,8 +123,12 @@ void walk(Stream& s, M& model) {
     s.text(model.source);
     s.value(model.origin);
     s.text(model.reference_system);
+    std::uint64_t count = model.image_files.size();
+    s.value(count);
+    resize_to(model.image_files, count);
+    for (auto& file : model.image_files) s.text(file);
     s.value(model.is_lod);
-    std::uint64_t count = model.lod_params.size();
+    count = model.lod_params.size();
     s.value(count);
     resize_to(model.lod_params, count);
     for (auto& [key, value] : model.lod_params) {
@@ -153,7 +157,6 @@ void walk(Stream& s, M& model) {
         s.value(t.image16.channels);
         s.values(t.image16.pixels);
         s.value(t.wrap);
-        s.text(t.source_file);
     }
 }
 

@@ -26,11 +26,10 @@ struct OrientedBox {
 using Scope = OrientedBox;
 
 struct Texture {
-    std::string name;              // file name or label; a hint for export
-    Image8 image;                  // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
-    Image16 image16 = {};          // instead of `image`: one 16-bit channel (baked height maps)
-    Wrap wrap = Wrap::repeat;      // LoD pages clamp: their faces may touch the page's border
-    std::string source_file = {};  // the image file it was read from; empty if none (embedded, baked)
+    std::string name;          // file name or label; a hint for export
+    Image8 image;              // 8-bit RGB(A), as stored (sRGB for colour, linear for normal maps)
+    Image16 image16 = {};      // instead of `image`: one 16-bit channel (baked height maps)
+    Wrap wrap = Wrap::repeat;  // LoD pages clamp: their faces may touch the page's border
 };
 
 // A 128-bit digest of bytes: FNV-1a and a multiplicative hash side by side.
@@ -143,16 +142,20 @@ struct Model {
     // The source's coordinate reference system as it names it (CityJSON's
     // metadata.referenceSystem), "" when it names none: where `origin` lies on the Earth.
     std::string reference_system;
+    // The image files its source file was read with (also those of the file's
+    // other objects): an export beside them never writes over one (docs/design.md: Files).
+    std::vector<std::string> image_files;
     // An LoD that boxlod exported: viewable, never simplified again.
     bool is_lod = false;
     std::vector<std::pair<std::string, std::string>> lod_params;
 };
 
-// What a model made from another keeps of it: its source file, origin and reference system.
+// What a model made from another keeps of it: its source file, origin, reference system and image files.
 inline void keep_provenance(const Model& from, Model& to) {
     to.source = from.source;
     to.origin = from.origin;
     to.reference_system = from.reference_system;
+    to.image_files = from.image_files;
 }
 
 // Appends a node under `parent` (-1 for the root) and returns its index.

@@ -108,6 +108,8 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = a.glb\nviews = all, all\n",
                  "cfg.txt: line 2: views: 'all' stands alone: it names every camera position");
     expect_error("models = a.glb\nwidth = wide\n", "cfg.txt: line 2: width: expected a number");
+    expect_error("models = a.glb\nwidth = 256.5\n",
+                 "cfg.txt: line 2: width: expected a whole number in [16, 16384], got '256.5'");
     expect_error("models = a.glb\nwidth = 4\n",
                  "cfg.txt: line 2: width: expected a number in [16, 16384], got '4'");
     expect_error("models = a.glb\ndistances = 1, -2\n",

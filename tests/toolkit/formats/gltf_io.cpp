@@ -590,8 +590,11 @@ TEST(GltfIo, AnExportBesideTheModelKeepsItsImageFiles) {
     std::vector<std::string> before;
     for (const std::string& image : images) before.push_back(test::read_text(folder / image));
     const Model read = load_model((folder / "house.gltf").string());
-    EXPECT_EQ(read.textures[2].source_file, (folder / "brick_height.png").string());
-    save_model(read, (folder / "copy.gltf").string());
+    ASSERT_EQ(read.image_files.size(), 3u);
+    EXPECT_EQ(read.image_files[2], (folder / "brick_height.png").string());
+    // Through a link to the folder, by a relative path.
+    fs::create_directory_symlink(folder, folder / "link");
+    save_model(read, fs::relative(folder / "link" / "copy.gltf").string());
     for (std::size_t i = 0; i < images.size(); ++i)
         EXPECT_EQ(test::read_text(folder / images[i]), before[i]) << images[i];
     const nlohmann::json copy = nlohmann::json::parse(test::read_text(folder / "copy.gltf"));
@@ -602,6 +605,30 @@ TEST(GltfIo, AnExportBesideTheModelKeepsItsImageFiles) {
         EXPECT_TRUE(fs::exists(folder / uri)) << uri;
     }
     expect_same_model(load_model((folder / "copy.gltf").string()), read);
+    // A name a URI must escape reads back (the .bin's and the images' uris are encoded).
+    save_model(read, (folder / "my house%41.gltf").string());
+    expect_same_model(load_model((folder / "my house%41.gltf").string()), read);
+    // An object of the file keeps the images of the others: b.png, read as sub/a.png, is not written over
+    // a.png.
+    Model two;
+    add_node(two, -1, "city");
+    for (int k = 0; k < 2; ++k) {
+        add_node(two, 0, k ? "B" : "A");
+        two.nodes[std::size_t(k + 1)].primitives.push_back(quad(0, k));
+        two.materials.push_back(model.materials[1]);
+        two.materials[std::size_t(k)].base_color_texture = k;
+        two.textures.push_back(model.textures[std::size_t(k)]);
+        two.textures[std::size_t(k)].name = k ? "b.png" : "a.png";
+    }
+    save_model(two, (folder / "two.gltf").string());
+    fs::create_directory(folder / "sub");
+    fs::rename(folder / "b.png", folder / "sub" / "a.png");
+    test::write_text(folder / "two.gltf", test::replaced_once(test::read_text(folder / "two.gltf"),
+                                                              "\"uri\":\"b.png\"", "\"uri\":\"sub/a.png\""));
+    const std::string a_png = test::read_text(folder / "a.png");
+    save_model(load_model((folder / "two.gltf#B").string()), (folder / "b_only.gltf").string());
+    EXPECT_EQ(test::read_text(folder / "a.png"), a_png);
+    EXPECT_TRUE(fs::exists(folder / "b_only_texture_0.png"));
     // Elsewhere the images keep their names.
     fs::create_directories(folder / "elsewhere");
     save_model(read, (folder / "elsewhere" / "copy.gltf").string());

@@ -97,6 +97,14 @@ void expect_as_tinygltf_writes(const tinygltf::Model& document) {
 
 }  // namespace
 
+TEST(GltfJson, AFileNameBecomesAUriThatDecodesToIt) {
+    EXPECT_EQ(file_uri("house_lod-2.bin"), "house_lod-2.bin");
+    EXPECT_EQ(file_uri("my house%#?.png"), "my%20house%25%23%3F.png");
+    EXPECT_EQ(file_uri("stra\xc3\x9f"
+                       "e~.bin"),
+              "stra%C3%9Fe~.bin");
+}
+
 // The FZK-Haus and a chain of its levels (MSFT_lod, pages, level buffers as
 // data URIs): the same text and bytes as tinygltf writes, byte for byte.
 TEST(GltfJson, WritesWhatTinygltfWritesForAModelAndAChain) {
