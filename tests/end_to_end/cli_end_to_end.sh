@@ -265,6 +265,7 @@ uris = list(contents(tileset['root']))
 assert len(uris) == len(set(uris)) > 3 and all(os.path.getsize(os.path.join(sys.argv[1], u)) > 0 for u in uris), uris
 assert sorted(uris) == sorted(f for f in os.listdir(sys.argv[1]) if f.endswith('.glb'))
 PY
+check "tiles refuses a model in OUTDIR named like a tile, and keeps it" bash -c "mkdir -p '$work/tiles_in' && cp '$work/city2.glb' '$work/tiles_in/object_0_L0.glb' && { '$boxlod' tiles '$work/tiles_in/object_0_L0.glb' -o '$work/tiles_in' --resolution 64 2>'$work/tiles_in.err' >/dev/null; test \$? = 2; } && grep -qx '.*object_0_L0.glb: -o .*tiles_in would write over it' '$work/tiles_in.err' && cmp '$work/city2.glb' '$work/tiles_in/object_0_L0.glb'"
 check "tiles gives the same bytes on two threads" bash -c "'$boxlod' tiles '$work/city2.glb' -o '$work/tiles2' --resolution 128 --threads 2 >/dev/null && diff -r '$work/tiles1' '$work/tiles2'"
 # A model from a file keeps its geometry where it is: all on the root, one
 # object; on the root and below it, the root's own geometry one object more.

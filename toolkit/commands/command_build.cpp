@@ -222,21 +222,9 @@ void print_timings(const LodTimes& t) {
 // The model a build reads is none of the files it writes (`-o . --name tree` replaced tree.gltf).
 void check_model_kept(const std::string& model, const std::string& folder, const std::string& name,
                       bool all_levels) {
-    namespace fs = std::filesystem;
-    // The file a path leads to (symbolic links resolved), and the name it has in its folder.
-    std::error_code file_error, absolute_error, named_error, folder_error;
-    const fs::path file = fs::weakly_canonical(model, file_error),
-                   absolute = fs::absolute(model, absolute_error);
-    const fs::path named =
-        absolute_error ? fs::path()
-                       : fs::weakly_canonical(absolute.parent_path(), named_error) / absolute.filename();
-    const fs::path out = fs::weakly_canonical(folder, folder_error);
-    if (folder_error) return;
-    auto written = [&](const fs::path& f) {
-        return f.parent_path() == out && lod_export_writes(f.filename().string(), name, all_levels);
-    };
-    if ((!file_error && written(file)) || (!absolute_error && !named_error && written(named)))
-        throw_input_error(model, "", "-o " + folder + " and --name " + name + " would write over it");
+    check_input_kept(
+        model, folder, [&](const std::string& file) { return lod_export_writes(file, name, all_levels); },
+        "-o " + folder + " and --name " + name);
 }
 
 int run_build(const Arguments& a) {

@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/common_options.h"
+#include "base/distinct_files.h"
 #include "base/input_error.h"
 #include "base/parallel.h"
 #include "toolkit/commands/commands.h"
@@ -103,6 +104,10 @@ int run_tiles(const Arguments& a) {
         throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
+    // A model (or parameter file) named like a tile in OUTDIR would be replaced, or removed with the old
+    // tileset.
+    for (const std::string& input : {model_file_of(parameters.model), a.positionals.at(0)})
+        check_input_kept(input, folder.string(), is_tileset_file, "-o " + folder.string());
     check_placement_options(a);
     Model city = load_parameters_model(parameters);
     // A city file's offset goes to the tileset; each tile is local to the tileset's frame.
