@@ -1,5 +1,6 @@
 #include "base/atomic_write.h"
 #include "base/common_options.h"
+#include "base/distinct_files.h"
 #include "base/key_values.h"
 #include "base/memory_budget.h"
 #include "base/parallel.h"
@@ -138,6 +139,12 @@ int run_city(const Arguments& arguments) {
     bool built_in = path_name == "orbit" || path_name == "street";
     std::vector<Keyframe> keys;
     if (!built_in) keys = load_keyframes(path_name);
+    // An input named like a fly-through's file in OUTDIR would be replaced, or removed with the old run.
+    for (const std::string& input :
+         {built_in ? "" : path_name, arguments.positionals.empty() ? "" : arguments.positionals[0]})
+        if (!input.empty())
+            check_input_kept(input, arguments.text("output"), is_fly_through_file,
+                             "-o " + arguments.text("output"));
     CityPlan plan;
     if (arguments.positionals.empty()) {
         plan = plan_city(city);

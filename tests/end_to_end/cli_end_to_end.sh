@@ -158,6 +158,7 @@ check "city is identical with 1 thread" bash -c "'$boxlod' city --buildings 2 --
 printf '# a dolly\n0  100 20 100  0 0 0\n1  40 10 40  0 0 0\n' > "$work/keys.txt"
 check "a second city run replaces the first's frames whole" bash -c "'$boxlod' city --buildings 1 --strategy distance:40,80,160 --frames 2 --width 32 --height 24 --error-every 0 -o '$work/city1' >/dev/null 2>&1 && test \$(ls '$work/city1/frames' | wc -l) = 2 && test \$(wc -l < '$work/city1/frames.csv') = 3"
 check "city along a keyframe file succeeds" test "$(status_of "$boxlod" city --buildings 1 --strategy texel --path "$work/keys.txt" --frames 3 --width 64 --height 48 --budget 500 --json -o "$work/city_keys")" = 0
+check "city refuses a keyframe file in OUTDIR named like its output, and keeps it" bash -c "mkdir -p '$work/city_in' && cp '$work/keys.txt' '$work/city_in/frames.csv' && { '$boxlod' city --buildings 1 --path '$work/city_in/frames.csv' --frames 2 --width 16 --height 16 -o '$work/city_in' 2>'$work/city_in.err' >/dev/null; test \$? = 2; } && grep -qx '.*frames.csv: -o .*city_in would write over it' '$work/city_in.err' && cmp '$work/keys.txt' '$work/city_in/frames.csv'"
 check "city --json is a JSON object" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['frames']==3 and d['faces_max']<=500 else 1)"
 # A city from a CityJSON file: its Buildings are the fly-through's buildings.
 /usr/bin/python3 "$(dirname "$0")/make_district.py" "$work/district.city.json" 6
