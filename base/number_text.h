@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -34,6 +35,17 @@ std::optional<Number> number_within(std::string_view text, const NumberRange& ra
         finite_number<std::conditional_t<std::is_floating_point_v<Number>, double, Number>>(text);
     if (!value || !range.contains(double(*value))) return std::nullopt;
     return Number(*value);
+}
+
+// What is wrong with `text` as a Number within `range`; "" if nothing.
+// "expected a whole number in [min, max], got '2.5'" for a fraction where a
+// whole number is read, else out_of_range_message.
+template <typename Number>
+std::string number_problem(std::string_view text, const NumberRange& range) {
+    if (number_within<Number>(text, range)) return "";
+    if (std::is_integral_v<Number> && finite_number<double>(text) && !finite_number<Number>(text))
+        return "expected a whole number in " + range_text(range) + ", got '" + std::string(text) + "'";
+    return out_of_range_message(range, std::string(text));
 }
 
 }  // namespace boxlod

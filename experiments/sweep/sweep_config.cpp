@@ -106,10 +106,7 @@ struct Line {
     template <typename T>
     T number_in(const NumberRange& range, const std::string& text) const {
         if (const auto v = number_within<T>(text, range)) return *v;
-        if (std::is_integral_v<T> && !finite_number<T>(text) && finite_number<double>(text))
-            fail("expected a whole number in " + range_text(range) + ", got '" + text + "'");
-        fail(finite_number<double>(text) ? out_of_range_message(range, text)
-                                         : "expected a number, got '" + text + "'");
+        fail(number_problem<T>(text, range));
     }
     template <typename T>
     T number_in(const NumberRange& range) const {

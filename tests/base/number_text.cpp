@@ -41,3 +41,11 @@ TEST(NumberText, RangeCheckedOnTheNumberWritten) {
     EXPECT_FALSE(number_within<int>("4", NumberRange{1, 3}));
     EXPECT_FALSE(number_within<int>("2.0", NumberRange{1, 3}));
 }
+
+TEST(NumberText, AProblemSaysWhatWasExpected) {
+    constexpr NumberRange range{0, 10000};
+    EXPECT_EQ(number_problem<int>("12", range), "");
+    EXPECT_EQ(number_problem<int>("1e3", range), "expected a whole number in [0, 10000], got '1e3'");
+    EXPECT_EQ(number_problem<int>("20000", range), "expected a number in [0, 10000], got '20000'");
+    EXPECT_EQ(number_problem<double>("wide", range), "expected a number in [0, 10000], got 'wide'");
+}

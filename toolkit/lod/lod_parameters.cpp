@@ -36,7 +36,7 @@ ParameterDeclaration number_parameter(const char* key, const char* option, const
     };
     d.parse = [field, range, power_of_two](const std::string& text, LodParameters& p) -> std::string {
         const auto value = number_within<Number>(text, range);
-        if (!value) return out_of_range_message(range, text);
+        if (!value) return number_problem<Number>(text, range);
         if (power_of_two) {
             auto whole = static_cast<long long>(*value);
             if (whole <= 0 || (whole & (whole - 1)) != 0)

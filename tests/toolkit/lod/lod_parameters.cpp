@@ -53,7 +53,7 @@ TEST(LodParameters, ParsingChecksTheDeclaredRange) {
     LodParameters p;
     EXPECT_EQ(find_lod_parameter("wanted_levels")->parse("65", p), "expected a number in [1, 64], got '65'");
     EXPECT_EQ(find_lod_parameter("wanted_levels")->parse("2.5", p),
-              "expected a number in [1, 64], got '2.5'");
+              "expected a whole number in [1, 64], got '2.5'");
     EXPECT_EQ(find_lod_parameter("fovy")->parse("nan", p), "expected a number in [0.1, 179], got 'nan'");
     EXPECT_EQ(find_lod_parameter("max_texture_size")->parse("1000", p),
               "expected a power of two in [1, 16384], got '1000'");
