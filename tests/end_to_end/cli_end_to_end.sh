@@ -18,6 +18,10 @@ check "info on the FZK-Haus IFC succeeds" test "$(status_of "$boxlod" info "$ifc
 check "info prints nodes = 114 (web-ifc: elements that draw, under their storeys)" grep -qx "nodes = 114" "$work/out"
 check "info prints every required key" bash -c "for k in nodes nodes_with_geometry depth faces_original triangles_original vertices_original batches_original mesh_width mesh_height mesh_depth; do grep -q \"^\$k = \" '$work/out' || exit 1; done"
 
+# Spatial relationships nested deep: web-ifc's own walk of them doubled with each level (2^depth).
+python3 "$here/ifc_nested.py" "$ifc" "$work/nested150.ifc" 150 && python3 "$here/ifc_nested.py" "$ifc" "$work/nested250.ifc" 250
+check "an IFC nested 150 deep reads in seconds" timeout 30 "$boxlod" info "$work/nested150.ifc" --json
+check "an IFC nested 250 deep is refused, naming the depth" bash -c "'$boxlod' info '$work/nested250.ifc' 2>&1 >/dev/null | grep -q 'nested more than 200 levels deep'"
 check "info --json succeeds" test "$(status_of "$boxlod" info "$ifc" --json)" = 0
 check "info --json is a JSON object with nodes" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['nodes']==114 else 1)"
 

@@ -28,19 +28,44 @@ function describe(api, model, id, parent) {
           global_id: text('GlobalId'), parent};
 }
 
-// Nodes of the spatial structure (IfcRelAggregates and
-// IfcRelContainedInSpatialStructure: Project > Site > Building > Storey >
+// Each entity's children in the spatial structure, as web-ifc's
+// getSpatialStructure gathers them: IfcRelAggregates, then
+// IfcRelContainedInSpatialStructure, each in file order. (Its walk of them
+// visits every node twice per level, 2^depth for a deeply nested file.)
+function spatialChildren(WebIFC, api, model) {
+  const children = new Map();
+  for (const [type, relating, related] of [
+    [WebIFC.IFCRELAGGREGATES, 'RelatingObject', 'RelatedObjects'],
+    [WebIFC.IFCRELCONTAINEDINSPATIALSTRUCTURE, 'RelatingStructure', 'RelatedElements']]) {
+    const ids = api.GetLineIDsWithType(model, type, true);
+    for (let i = 0; i < ids.size(); ++i) {
+      const rel = api.GetLine(model, ids.get(i), false);
+      if (!rel || !rel[relating] || !Array.isArray(rel[related]))
+        throw new Error(`#${ids.get(i)}: ${relating} or the list ${related} missing`);
+      const from = rel[relating].value;
+      if (!children.has(from)) children.set(from, []);
+      for (const r of rel[related]) children.get(from).push(r.value);
+    }
+  }
+  return children;
+}
+
+// Nodes of the spatial structure (Project > Site > Building > Storey >
 // element > its parts), parents first, with names and GlobalIds.
-function spatialNodes(api, model, tree) {
+function spatialNodes(WebIFC, api, model) {
+  const children = spatialChildren(WebIFC, api, model);
+  const projects = api.GetLineIDsWithType(model, WebIFC.IFCPROJECT);
+  if (projects.size() === 0) throw new Error('no IfcProject');
   const nodes = [], indexOf = new Map();
-  const pending = [[tree, -1, 0]];
+  const pending = [[projects.get(0), -1, 0]];
   while (pending.length > 0) {
-    const [node, parent, depth] = pending.pop();
-    if (indexOf.has(node.expressID) || depth > 200) continue;  // a cycle, or deeper than any real building
-    indexOf.set(node.expressID, nodes.length);
-    nodes.push(describe(api, model, node.expressID, parent));
-    const index = nodes.length - 1;
-    for (let c = node.children.length - 1; c >= 0; --c) pending.push([node.children[c], index, depth + 1]);
+    const [id, parent, depth] = pending.pop();
+    if (indexOf.has(id)) continue;  // an element under two parents stays under the first
+    if (depth > 200) throw new Error(`#${id}: spatial relationships nested more than 200 levels deep`);
+    indexOf.set(id, nodes.length);
+    nodes.push(describe(api, model, id, parent));
+    const index = nodes.length - 1, below = children.get(id) || [];
+    for (let c = below.length - 1; c >= 0; --c) pending.push([below[c], index, depth + 1]);
   }
   return {nodes, indexOf};
 }
@@ -192,7 +217,7 @@ function requireWithCodeCache(folder) {
     await api.Init();
     const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
     if (model < 0) throw new Error('web-ifc cannot open it');
-    const {nodes, indexOf} = spatialNodes(api, model, await api.properties.getSpatialStructure(model));
+    const {nodes, indexOf} = spatialNodes(WebIFC, api, model);
     const meshes = pieces(api, model, nodes, indexOf);
     const origin = originOf(meshes);
     const drawn = drawnNodes(nodes, meshes.placed);
