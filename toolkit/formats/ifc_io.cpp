@@ -136,6 +136,8 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
 
 }  // namespace
 
+constexpr std::uint64_t max_entity_number = 4294967295;  // 2^32 - 1
+
 void check_ifc_references(std::string_view bytes, const std::string& path) {
     std::unordered_set<std::uint64_t> defined;
     std::vector<std::pair<std::uint64_t, std::uint64_t>> used;  // (entity, the one it names)
@@ -148,14 +150,18 @@ void check_ifc_references(std::string_view bytes, const std::string& path) {
             const std::size_t end = bytes.find("*/", i + 2);
             i = end == std::string_view::npos ? bytes.size() : end + 1;
         } else if (c == '#') {
+            const std::size_t first = i + 1;
             std::uint64_t id = 0;
-            std::size_t digits = 0;
-            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])) &&
-                   digits < 18;
-                 ++digits, ++i)
-                id = id * 10 + std::uint64_t(bytes[i + 1] - '0');
-            if (digits == 0)
+            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])); ++i)
+                id = std::min<std::uint64_t>(id * 10 + std::uint64_t(bytes[i + 1] - '0'),
+                                             max_entity_number + 1);
+            if (i + 1 == first)
                 throw_input_error(path, "byte " + std::to_string(i), "'#' without an entity number");
+            // web-ifc keeps 32 bits of an entity number: a larger one would stand for another entity.
+            if (id == 0 || id > max_entity_number)
+                throw_input_error(
+                    path, "#" + std::string(bytes.substr(first, std::min<std::size_t>(i + 1 - first, 24))),
+                    "entity number outside [1, " + std::to_string(max_entity_number) + "]");
             std::size_t next = i + 1;
             while (next < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[next]))) ++next;
             if (next < bytes.size() && bytes[next] == '=') {

@@ -87,6 +87,14 @@ TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
                   check_ifc_references("#1=A();#1=B();", "f.ifc");
               }).find("#1: defined twice"),
               std::string::npos);
+    // web-ifc keeps 32 bits: #4294967297 would be #1.
+    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A();#4294967295=B(#1);", "f.ifc"); }), "");
+    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A();#4294967297=B(#1);", "f.ifc"); }),
+              "f.ifc: #4294967297: entity number outside [1, 4294967295]");
+    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A(#18446744073709551615999);", "f.ifc"); }),
+              "f.ifc: #18446744073709551615999: entity number outside [1, 4294967295]");
+    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#0=A();", "f.ifc"); }),
+              "f.ifc: #0: entity number outside [1, 4294967295]");
 }
 
 // An environment variable set for one test, restored however it ends.
