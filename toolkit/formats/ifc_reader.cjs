@@ -20,10 +20,24 @@ function answer(header, chunks) {
   }
 }
 
+// The file's bytes, as UTF-8: a file that is not is read as Latin-1, as
+// older exporters wrote names (base/utf8.h; web-ifc would garble them).
+// Outside its strings an IFC file is ASCII, so the whole file converts.
+function utf8OrLatin1(bytes) {
+  try {
+    new TextDecoder('utf-8', {fatal: true}).decode(bytes);
+    return new Uint8Array(bytes);
+  } catch (notUtf8) {
+    return new Uint8Array(Buffer.from(bytes.toString('latin1'), 'utf8'));
+  }
+}
+
 // An entity as a node: its Name, IFC type and GlobalId, under `parent`.
 function describe(api, model, id, parent) {
   const line = api.GetLine(model, id);
-  const text = (field) => (line && line[field] && typeof line[field].value === 'string' ? line[field].value : '');
+  // Well formed: a lone surrogate (a bad \X2\ escape) would not survive JSON.
+  const text = (field) =>
+    (line && line[field] && typeof line[field].value === 'string' ? line[field].value.toWellFormed() : '');
   return {name: text('Name'), type: api.GetNameFromTypeCode(api.GetLineType(model, id)) || '',
           global_id: text('GlobalId'), parent};
 }
@@ -215,7 +229,7 @@ function requireWithCodeCache(folder) {
     const {WebIFC, keep} = requireWithCodeCache(process.argv[2]);
     const api = new WebIFC.IfcAPI();
     await api.Init();
-    const model = api.OpenModel(new Uint8Array(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
+    const model = api.OpenModel(utf8OrLatin1(fs.readFileSync(process.argv[3])), {COORDINATE_TO_ORIGIN: false});
     if (model < 0) throw new Error('web-ifc cannot open it');
     const {nodes, indexOf} = spatialNodes(WebIFC, api, model);
     const meshes = pieces(api, model, nodes, indexOf);

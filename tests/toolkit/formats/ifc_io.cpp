@@ -56,6 +56,22 @@ TEST(IfcIo, TheSpatialStructureIsTheTreeWithColoursFromStyles) {
     EXPECT_NEAR(model_bounds(model).size().x(), 4, 1e-5);
 }
 
+// Names as older exporters wrote them, in raw Latin-1 (not ISO 10303-21's
+// \X\ escapes): read as Latin-1, as other formats' names are (base/utf8.h).
+TEST(IfcIo, NamesInLatinOneAreRead) {
+    const std::string path = std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc";
+    const fs::path latin1 = test::scratch_folder("ifc_latin1") / "latin1.ifc";
+    test::write_text(latin1, test::replaced_once(test::read_text(path), "'Red wall'",
+                                                 "'W\xe4nde S\xfc"
+                                                 "d'"));
+    const Model model = load_model(latin1.string());
+    EXPECT_GE(node_named(model,
+                         "W\xc3\xa4nde S\xc3\xbc"
+                         "d"),
+              0);
+    EXPECT_GE(node_named(model, "Glass floor"), 0);
+}
+
 // The same building 400 km out (its site placed there): moved to a local
 // origin in double, so it reads as it does near the file's origin.
 TEST(IfcIo, AFarModelKeepsItsOriginAndItsPrecision) {
