@@ -84,6 +84,8 @@ function spatialNodes(WebIFC, api, model) {
   return {nodes, indexOf};
 }
 
+const maxCoordinate = 1e9;  // metres, as parameter files' positions (toolkit/lod/lod_parameters.h)
+
 // Each placed geometry in world coordinates (y up, as web-ifc gives them), in
 // double, and the bounds of them all (no second pass over the vertices).
 function pieces(api, model, nodes, indexOf) {
@@ -112,6 +114,9 @@ function pieces(api, model, nodes, indexOf) {
         const nx = data[v * 6 + 3], ny = data[v * 6 + 4], nz = data[v * 6 + 5];
         for (let r = 0; r < 3; ++r) {
           const p = t[r] * x + t[4 + r] * y + t[8 + r] * z + t[12 + r];
+          // Far beyond any map's coordinates, a double no longer holds a building's metres.
+          if (!(Math.abs(p) <= maxCoordinate))
+            throw new Error(`#${mesh.expressID}: a coordinate of ${p} m, outside [-1e9, 1e9]`);
           positions[v * 3 + r] = p;
           normals[v * 3 + r] = t[r] * nx + t[4 + r] * ny + t[8 + r] * nz;
           if (p < low[r]) low[r] = p;

@@ -92,6 +92,19 @@ TEST(IfcIo, AFarModelKeepsItsOriginAndItsPrecision) {
               1e-3);
 }
 
+// Beyond any map's coordinates a double no longer holds a building's metres
+// (at 1e300 its 4 m collapse to none): refused, naming the element.
+TEST(IfcIo, CoordinatesBeyondAnyMapAreRefused) {
+    const std::string near_path = std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc";
+    const fs::path path = test::scratch_folder("ifc_beyond") / "beyond.ifc";
+    test::write_text(
+        path, test::replaced_once(test::read_text(near_path), "#30=IFCLOCALPLACEMENT($,#13);",
+                                  "#30=IFCLOCALPLACEMENT($,#17);\n#16=IFCCARTESIANPOINT((1.E300,0.,0.));"
+                                  "\n#17=IFCAXIS2PLACEMENT3D(#16,#11,#12);"));
+    const std::string message = test::input_error_of([&] { load_model(path.string()); });
+    EXPECT_NE(message.find("outside [-1e9, 1e9]"), std::string::npos) << message;
+}
+
 TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
     const std::string step = "DATA;\n#1=IFCWALL('a''#9',#2);\n#2=IFCX(#3);/* #8 */\nENDSEC;";
     EXPECT_NE(test::input_error_of([&] {
