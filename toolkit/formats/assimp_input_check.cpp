@@ -232,13 +232,22 @@ StepGraph read_step_graph(std::string_view bytes) {
         if (hash == std::string_view::npos) break;
         i = hash + 1;
         std::uint32_t instance = node(number_at(bytes, i));
-        while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '=')) ++i;
+        // ISO 10303-21 allows white space around '=' and before '(', and either case in a type's name.
+        const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+        while (i < bytes.size() && (space(bytes[i]) || bytes[i] == '=')) ++i;
         std::size_t type_end = bytes.find('(', i);
         if (type_end == std::string_view::npos) break;
         std::string_view type = bytes.substr(i, type_end - i);
+        while (!type.empty() && space(type.back())) type.remove_suffix(1);
+        const auto is = [&](std::string_view name) {
+            return type.size() == name.size() &&
+                   std::equal(type.begin(), type.end(), name.begin(), [](char a, char b) {
+                       return std::toupper(static_cast<unsigned char>(a)) == b;
+                   });
+        };
         const Relationship* relationship = nullptr;
         for (const Relationship& r : relationships)
-            if (type == r.type) relationship = &r;
+            if (is(r.type)) relationship = &r;
         std::vector<std::uint32_t> relating, related;
         i = each_reference(bytes, type_end, [&](std::uint64_t id, int attribute) {
             std::uint32_t target = node(id);

@@ -94,6 +94,11 @@ TEST(AssimpInputCheck, IfcSpatialRelationshipsMayNotCycle) {
         "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
         "#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n#21= IFCRELAGGREGATES('r2',$,$,$,#11,(#10));\n";
     EXPECT_NE(problem(step(data), ".ifc").find("spatial relationships form a cycle"), std::string::npos);
+    // Spelled with white space and in lower case, as ISO 10303-21 allows.
+    std::string spaced = data;
+    spaced.replace(spaced.find("#21= IFCRELAGGREGATES("), 22, "#21 =\n IfcRelAggregates (");
+    EXPECT_NE(problem(step(spaced), ".ifc").find("spatial relationships form a cycle"), std::string::npos)
+        << spaced;
     std::string tree =
         "#10= IFCBUILDING('b',$,$,$,$,$,$,$,$,$,$,$);\n#11= IFCBUILDINGSTOREY('s',$,$,$,$,$,$,$,$,$);\n"
         "#12= IFCWALL('w',$,$,$,$,$,$,$);\n#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n"
