@@ -53,7 +53,12 @@ function spatialChildren(WebIFC, api, model) {
     [WebIFC.IFCRELCONTAINEDINSPATIALSTRUCTURE, 'RelatingStructure', 'RelatedElements']]) {
     const ids = api.GetLineIDsWithType(model, type, true);
     for (let i = 0; i < ids.size(); ++i) {
-      const rel = api.GetLine(model, ids.get(i), false);
+      let rel = null;
+      try {
+        rel = api.GetLine(model, ids.get(i), false);
+      } catch (unread) {  // web-ifc's reading of an attribute fails on what it does not expect
+        rel = null;
+      }
       if (!rel || !rel[relating] || !Array.isArray(rel[related]))
         throw new Error(`#${ids.get(i)}: ${relating} or the list ${related} missing`);
       const from = rel[relating].value;
@@ -206,6 +211,30 @@ function removeDeadTemporaries(folder, cacheName) {
   }
 }
 
+// web-ifc reports what it cannot read and goes on: a real file gets a few
+// such lines (the FZK-Haus 16), but some broken entities (a relationship
+// without its list) make it report the same error for ever. Its printing
+// (console's log and error, taken when it starts) ends the read at the
+// limit, answering at once: web-ifc's C++ catches any exception thrown.
+const maxWebIfcErrors = 10000;
+function limitWebIfcErrors() {
+  let errors = 0, first = '';
+  for (const name of ['log', 'error', 'warn']) {
+    const print = console[name].bind(console);
+    console[name] = (...args) => {
+      const line = String(args[0]);
+      if (line.startsWith('[WEB-IFC][error]')) {
+        if (!first) first = line.slice('[WEB-IFC][error]'.length);
+        if (++errors >= maxWebIfcErrors) {
+          answer({error: `it reported ${maxWebIfcErrors} errors, the first ${first}`}, []);
+          process.exit(0);
+        }
+      }
+      print(...args);
+    };
+  }
+}
+
 function requireWithCodeCache(folder) {
   const file = path.join(folder, 'web-ifc-api-node.js'), cacheFile = file + cacheSuffix;
   const source = fs.readFileSync(file, 'utf8');
@@ -231,6 +260,7 @@ function requireWithCodeCache(folder) {
 
 (async () => {
   try {
+    limitWebIfcErrors();
     const {WebIFC, keep} = requireWithCodeCache(process.argv[2]);
     const api = new WebIFC.IfcAPI();
     await api.Init();

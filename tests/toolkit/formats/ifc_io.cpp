@@ -56,6 +56,22 @@ TEST(IfcIo, TheSpatialStructureIsTheTreeWithColoursFromStyles) {
     EXPECT_NEAR(model_bounds(model).size().x(), 4, 1e-5);
 }
 
+// A relationship cut short (no list of related objects) makes web-ifc report
+// the same error for ever: the read ends at the reader's limit, in a second,
+// not at the child's minute. Another without its objects is named.
+TEST(IfcIo, EntitiesWebIfcCannotReadEndTheReadAtOnce) {
+    const std::string text = test::read_text(std::string(BOXLOD_TEST_DATA) + "/ifc/two_storeys.ifc");
+    const fs::path folder = test::scratch_folder("ifc_cut_short");
+    test::write_text(folder / "short.ifc", test::replaced_once(text, "$,#33,(#35,#37));", "$,#33);"));
+    std::string message = test::input_error_of([&] { load_model((folder / "short.ifc").string()); });
+    EXPECT_NE(message.find("web-ifc cannot read it: it reported 10000 errors, the first"), std::string::npos)
+        << message;
+    test::write_text(folder / "open.ifc", test::replaced_once(text, "$,#33,(#35,#37));", "$,#33,#35);"));
+    message = test::input_error_of([&] { load_model((folder / "open.ifc").string()); });
+    EXPECT_NE(message.find("#42: RelatingObject or the list RelatedObjects missing"), std::string::npos)
+        << message;
+}
+
 // Names as older exporters wrote them, in raw Latin-1 (not ISO 10303-21's
 // \X\ escapes): read as Latin-1, as other formats' names are (base/utf8.h).
 TEST(IfcIo, NamesInLatinOneAreRead) {
