@@ -43,7 +43,10 @@ std::optional<Number> number_within(std::string_view text, const NumberRange& ra
 template <typename Number>
 std::string number_problem(std::string_view text, const NumberRange& range) {
     if (number_within<Number>(text, range)) return "";
-    if (std::is_integral_v<Number> && finite_number<double>(text) && !finite_number<Number>(text))
+    // (Not for a whole number outside the range: 99999999999 is a number outside [1, 64].)
+    if (const auto written = finite_number<double>(text);
+        std::is_integral_v<Number> && written &&
+        (*written != std::floor(*written) || range.contains(*written)))
         return "expected a whole number in " + range_text(range) + ", got '" + std::string(text) + "'";
     return out_of_range_message(range, std::string(text));
 }

@@ -47,5 +47,8 @@ TEST(NumberText, AProblemSaysWhatWasExpected) {
     EXPECT_EQ(number_problem<int>("12", range), "");
     EXPECT_EQ(number_problem<int>("1e3", range), "expected a whole number in [0, 10000], got '1e3'");
     EXPECT_EQ(number_problem<int>("20000", range), "expected a number in [0, 10000], got '20000'");
+    EXPECT_EQ(number_problem<int>("99999999999", range),
+              "expected a number in [0, 10000], got '99999999999'");
+    EXPECT_EQ(number_problem<int>("0.5", range), "expected a whole number in [0, 10000], got '0.5'");
     EXPECT_EQ(number_problem<double>("wide", range), "expected a number in [0, 10000], got 'wide'");
 }

@@ -314,7 +314,7 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
     if (in.image.empty() || in.width <= 0 || in.height <= 0)
         reader.fail(place, "image '" + in.uri + "' could not be loaded");
     Texture texture;
-    texture.name = in.uri.empty() ? in.name : fs::path(in.uri).filename().string();
+    texture.name = in.uri.empty() ? in.name : fs::path(file_name_of_uri(in.uri)).filename().string();
     if (in.bits == 8) {
         texture.image = Image8(in.width, in.height, 4);
         texture.image.pixels = in.image;

@@ -439,7 +439,7 @@ std::string file_name_of_uri(const std::string& uri) {
             name += char(digit(uri[i + 1]) * 16 + digit(uri[i + 2]));
             i += 2;
         } else {
-            name += uri[i];
+            name += uri[i] == '+' ? ' ' : uri[i];
         }
     }
     return name;

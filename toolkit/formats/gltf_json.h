@@ -23,7 +23,8 @@ std::string gltf_text(const tinygltf::Model& document, const std::string& bin_ur
 // references): every byte but letters, digits and "-._~" percent-encoded, so
 // that "my house%.bin" is read back as that file (clients decode the uri).
 std::string file_uri(const std::string& file_name);
-// The file a uri names, its %XX escapes decoded (as tinygltf decodes it before reading).
+// The file a uri names, its %XX escapes decoded and '+' read as a space, as
+// tinygltf decodes a uri before reading the file.
 std::string file_name_of_uri(const std::string& uri);
 
 // The .glb bytes (glTF 2.0, 4.4): a header, the compact JSON chunk padded

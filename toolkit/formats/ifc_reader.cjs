@@ -20,24 +20,58 @@ function answer(header, chunks) {
   }
 }
 
-// The file's bytes, as UTF-8: a file that is not is read as Latin-1, as
-// older exporters wrote names (base/utf8.h; web-ifc would garble them).
-// Outside its strings an IFC file is ASCII, so the whole file converts.
-function utf8OrLatin1(bytes) {
-  try {
-    new TextDecoder('utf-8', {fatal: true}).decode(bytes);
-    return new Uint8Array(bytes);
-  } catch (notUtf8) {
-    return new Uint8Array(Buffer.from(bytes.toString('latin1'), 'utf8'));
+// The length of the well-formed UTF-8 sequence at bytes[i], 0 if none.
+function utf8Sequence(bytes, i) {
+  const b = bytes[i], next = (k, low = 0x80, high = 0xbf) => bytes[i + k] >= low && bytes[i + k] <= high;
+  if (b < 0x80) return 1;
+  if (b >= 0xc2 && b <= 0xdf) return next(1) ? 2 : 0;
+  if (b >= 0xe0 && b <= 0xef) {
+    const ok = next(1, b === 0xe0 ? 0xa0 : 0x80, b === 0xed ? 0x9f : 0xbf) && next(2);
+    return ok ? 3 : 0;
   }
+  if (b >= 0xf0 && b <= 0xf4) {
+    const ok = next(1, b === 0xf0 ? 0x90 : 0x80, b === 0xf4 ? 0x8f : 0xbf) && next(2) && next(3);
+    return ok ? 4 : 0;
+  }
+  return 0;
 }
+
+// The file's bytes as UTF-8: a byte that starts no UTF-8 sequence is read as
+// Latin-1, as older exporters wrote names (base/utf8.h; web-ifc would garble
+// them, and a name in UTF-8 beside it stays as it is). Byte by byte: a file
+// of gigabytes is no JavaScript string.
+function utf8OrLatin1(bytes) {
+  if (require('buffer').isUtf8(bytes)) return new Uint8Array(bytes);
+  let size = 0;
+  for (let i = 0; i < bytes.length;) {
+    const n = utf8Sequence(bytes, i);
+    size += n || 2;
+    i += n || 1;
+  }
+  const out = new Uint8Array(size);
+  for (let i = 0, o = 0; i < bytes.length;) {
+    const n = utf8Sequence(bytes, i);
+    if (n) {
+      for (let k = 0; k < n; ++k) out[o++] = bytes[i + k];
+      i += n;
+    } else {  // U+0080..U+00FF in two bytes
+      out[o++] = 0xc0 | (bytes[i] >> 6);
+      out[o++] = 0x80 | (bytes[i] & 0x3f);
+      i += 1;
+    }
+  }
+  return out;
+}
+
+// A lone surrogate (a bad \X2\ escape) as U+FFFD: it would not survive JSON.
+const wellFormed = (text) =>
+  text.replace(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/g, '\uFFFD');
 
 // An entity as a node: its Name, IFC type and GlobalId, under `parent`.
 function describe(api, model, id, parent) {
   const line = api.GetLine(model, id);
-  // Well formed: a lone surrogate (a bad \X2\ escape) would not survive JSON.
   const text = (field) =>
-    (line && line[field] && typeof line[field].value === 'string' ? line[field].value.toWellFormed() : '');
+    (line && line[field] && typeof line[field].value === 'string' ? wellFormed(line[field].value) : '');
   return {name: text('Name'), type: api.GetNameFromTypeCode(api.GetLineType(model, id)) || '',
           global_id: text('GlobalId'), parent};
 }
@@ -74,9 +108,11 @@ function spatialChildren(WebIFC, api, model) {
 function spatialNodes(WebIFC, api, model) {
   const children = spatialChildren(WebIFC, api, model);
   const projects = api.GetLineIDsWithType(model, WebIFC.IFCPROJECT);
-  if (projects.size() === 0) throw new Error('no IfcProject');
-  const nodes = [], indexOf = new Map();
-  const pending = [[projects.get(0), -1, 0]];
+  const nodes = [], indexOf = new Map(), pending = [];
+  if (projects.size() > 0)
+    pending.push([projects.get(0), -1, 0]);
+  else  // not schema-valid, yet read as before: every element under an empty root
+    nodes.push({name: '', type: '', global_id: '', parent: -1});
   while (pending.length > 0) {
     const [id, parent, depth] = pending.pop();
     if (indexOf.has(id)) continue;  // an element under two parents stays under the first
@@ -211,24 +247,24 @@ function removeDeadTemporaries(folder, cacheName) {
   }
 }
 
-// web-ifc reports what it cannot read and goes on: a real file gets a few
-// such lines (the FZK-Haus 16), but some broken entities (a relationship
-// without its list) make it report the same error for ever. Its printing
-// (console's log and error, taken when it starts) ends the read at the
-// limit, answering at once: web-ifc's C++ catches any exception thrown.
-const maxWebIfcErrors = 10000;
+// web-ifc reports what it cannot read and goes on: a real file gets some
+// such lines (the FZK-Haus 16, each naming its face), but some broken
+// entities (a relationship without its list) make it report the same line
+// for ever. Its printing (console's log and error, taken when it starts) ends
+// the read at the 10,000th same line in a row, answering at once: web-ifc's
+// C++ catches any exception thrown.
+const maxRepeatedErrors = 10000;
 function limitWebIfcErrors() {
-  let errors = 0, first = '';
+  let last = '', repeated = 0;
   for (const name of ['log', 'error', 'warn']) {
     const print = console[name].bind(console);
     console[name] = (...args) => {
       const line = String(args[0]);
-      if (line.startsWith('[WEB-IFC][error]')) {
-        if (!first) first = line.slice('[WEB-IFC][error]'.length);
-        if (++errors >= maxWebIfcErrors) {
-          answer({error: `it reported ${maxWebIfcErrors} errors, the first ${first}`}, []);
-          process.exit(0);
-        }
+      repeated = line === last ? repeated + 1 : 1;
+      last = line;
+      if (repeated >= maxRepeatedErrors && line.startsWith('[WEB-IFC][error]')) {
+        answer({error: `it reported ${maxRepeatedErrors} times in a row ${line.slice('[WEB-IFC][error]'.length)}`}, []);
+        process.exit(0);
       }
       print(...args);
     };

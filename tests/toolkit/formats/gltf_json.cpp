@@ -100,6 +100,7 @@ void expect_as_tinygltf_writes(const tinygltf::Model& document) {
 TEST(GltfJson, AFileNameBecomesAUriThatDecodesToIt) {
     EXPECT_EQ(file_uri("house_lod-2.bin"), "house_lod-2.bin");
     EXPECT_EQ(file_uri("my house%#?.png"), "my%20house%25%23%3F.png");
+    EXPECT_EQ(file_name_of_uri("my%20house%25+1.png"), "my house% 1.png");
     EXPECT_EQ(file_uri("stra\xc3\x9f"
                        "e~.bin"),
               "stra%C3%9Fe~.bin");
