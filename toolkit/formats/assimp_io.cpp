@@ -114,8 +114,8 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
             }
         }
     } else {
-        model.image_files.push_back(find_file(directory, file).string());
-        texture.image = read_image(model.image_files.back());
+        model.read_files.push_back(find_file(directory, file).string());
+        texture.image = read_image(model.read_files.back());
     }
     model.textures.push_back(std::move(texture));
     return int(model.textures.size()) - 1;

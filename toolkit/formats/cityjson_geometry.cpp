@@ -148,7 +148,7 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
         if (added) {
             s.model.textures.push_back(
                 {fs::path(image).filename().string(), read_image(path.string()), {}, wrap});
-            s.model.image_files.push_back(path.string());
+            s.model.read_files.push_back(path.string());
             s.images_memory += double(s.model.textures.back().image.pixels.size());  // each checked alone
             check_memory(s.file + ": its images, decoded", s.images_memory);
         }

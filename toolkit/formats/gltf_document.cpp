@@ -60,7 +60,7 @@ struct Writer {
     std::vector<int> level_meshes_begin;                    // level k's meshes: [begin[k], begin[k + 1])
     std::vector<std::vector<unsigned char>> level_buffers;  // buffers 1.. (see sequence_levels)
     std::set<std::string> image_files;                      // .gltf: the PNG names taken
-    std::set<std::pair<dev_t, ino_t>> input_images;         // the image files the levels were read with
+    std::set<std::pair<dev_t, ino_t>> read_files;           // the files the levels were read with
 
     Stream vec3{TINYGLTF_TARGET_ARRAY_BUFFER, 12, true, {}, {}},
         vec2{TINYGLTF_TARGET_ARRAY_BUFFER, 8, true, {}, {}},
@@ -207,13 +207,27 @@ std::optional<std::pair<dev_t, ino_t>> file_identity(const fs::path& path) {
     return std::pair{status.st_dev, status.st_ino};
 }
 
+// Whether the file `name` beside `target` is one the levels were read from
+// (docs/design.md: Files): exporting beside the model would write over it.
+bool was_read(const Writer& w, const fs::path& target, const std::string& name) {
+    const auto identity = file_identity(target.parent_path() / name);
+    return identity && w.read_files.count(*identity);
+}
+
+// A .gltf's buffer file beside it: NAME.bin, or NAME_2.bin, ... where NAME.bin was read.
+std::string buffer_file_name(const Writer& w, const fs::path& target) {
+    std::string name = target.stem().string() + ".bin";
+    for (int again = 2; was_read(w, target, name); ++again)
+        name = target.stem().string() + "_" + std::to_string(again) + ".bin";
+    return name;
+}
+
 // A .gltf's image file beside it: named after its texture where that makes a
 // plain .png name, else after the target. Never an image the levels were read
-// from (docs/design.md: Files): exporting beside the model would re-encode it.
+// from: exporting beside the model would re-encode it.
 std::string image_file_name(Writer& w, const Texture& texture, const fs::path& target, int index) {
     const auto usable = [&](const std::string& name) {
-        const auto identity = file_identity(target.parent_path() / name);
-        return !w.image_files.count(name) && !(identity && w.input_images.count(*identity));
+        return !w.image_files.count(name) && !was_read(w, target, name);
     };
     std::string name = fs::path(texture.name).filename().string();
     if (fs::path(name).extension() != ".png" || name.find_first_of("/\\ ") != std::string::npos ||
@@ -528,8 +542,8 @@ tinygltf::Model gltf_document(const std::vector<const Model*>& levels, const std
     w.gltf.asset.extras = asset_extras(*levels[0]);
     w.share = levels.size() > 1;
     for (const Model* model : levels)
-        for (const std::string& file : model->image_files)
-            if (const auto identity = file_identity(file)) w.input_images.insert(*identity);
+        for (const std::string& file : model->read_files)
+            if (const auto identity = file_identity(file)) w.read_files.insert(*identity);
     std::vector<int> roots;
     for (const Model* model : levels) {
         w.node_offset = int(w.gltf.nodes.size());
@@ -543,6 +557,7 @@ tinygltf::Model gltf_document(const std::vector<const Model*>& levels, const std
     if (w.share) sequence_levels(w);
     add_scene(w, roots, switches, levels[0]->nodes[0], levels[0]->origin, levels[0]->reference_system);
     w.finish();
+    if (!binary) w.gltf.buffers[0].uri = buffer_file_name(w, target);  // a file name; written as its URI
     return std::move(w.gltf);
 }
 

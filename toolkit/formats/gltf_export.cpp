@@ -27,7 +27,7 @@ void export_gltf_lods(const std::vector<const Model*>& levels, const std::vector
     if (binary) {
         write_text_atomically(path, glb_bytes(document));
     } else {
-        const std::string bin_name = target.stem().string() + ".bin";
+        const std::string& bin_name = document.buffers[0].uri;
         write_file_atomically((target.parent_path() / bin_name).string(), document.buffers[0].data);
         write_text_atomically(path, gltf_text(document, file_uri(bin_name)));
     }

@@ -389,9 +389,13 @@ void read_textures(const Reader& reader, Model& model) {
         model.textures.push_back(
             convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
         if (!gltf.images[i].uri.empty())  // a file's (a data URI's image keeps none)
-            model.image_files.push_back(
+            model.read_files.push_back(
                 (fs::path(reader.file).parent_path() / file_name_of_uri(gltf.images[i].uri)).string());
     }
+    for (const tinygltf::Buffer& buffer : gltf.buffers)  // a file's, not a data URI
+        if (!buffer.uri.empty() && !tinygltf::IsDataURI(buffer.uri))
+            model.read_files.push_back(
+                (fs::path(reader.file).parent_path() / file_name_of_uri(buffer.uri)).string());
     for (const tinygltf::Texture& texture :
          gltf.textures)  // an image sampled clamped to its edge (LoD pages)
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&

@@ -123,10 +123,10 @@ void walk(Stream& s, M& model) {
     s.text(model.source);
     s.value(model.origin);
     s.text(model.reference_system);
-    std::uint64_t count = model.image_files.size();
+    std::uint64_t count = model.read_files.size();
     s.value(count);
-    resize_to(model.image_files, count);
-    for (auto& file : model.image_files) s.text(file);
+    resize_to(model.read_files, count);
+    for (auto& file : model.read_files) s.text(file);
     s.value(model.is_lod);
     count = model.lod_params.size();
     s.value(count);

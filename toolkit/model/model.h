@@ -142,20 +142,21 @@ struct Model {
     // The source's coordinate reference system as it names it (CityJSON's
     // metadata.referenceSystem), "" when it names none: where `origin` lies on the Earth.
     std::string reference_system;
-    // The image files its source file was read with (also those of the file's
-    // other objects): an export beside them never writes over one (docs/design.md: Files).
-    std::vector<std::string> image_files;
+    // The files besides itself that its source file was read with (images, a
+    // glTF's buffers; also those of the file's other objects): an export
+    // beside them never writes over one (docs/design.md: Files).
+    std::vector<std::string> read_files;
     // An LoD that boxlod exported: viewable, never simplified again.
     bool is_lod = false;
     std::vector<std::pair<std::string, std::string>> lod_params;
 };
 
-// What a model made from another keeps of it: its source file, origin, reference system and image files.
+// What a model made from another keeps of it: its source file, origin, reference system and read files.
 inline void keep_provenance(const Model& from, Model& to) {
     to.source = from.source;
     to.origin = from.origin;
     to.reference_system = from.reference_system;
-    to.image_files = from.image_files;
+    to.read_files = from.read_files;
 }
 
 // Appends a node under `parent` (-1 for the root) and returns its index.

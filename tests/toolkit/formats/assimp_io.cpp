@@ -148,7 +148,7 @@ TEST(AssimpIo, TexturesNamedAsOnWindowsLoad) {
     Model model = load_model((folder / "m.obj").string());
     ASSERT_EQ(model.textures.size(), 1u);
     EXPECT_GT(model.textures[0].image.width, 0);
-    EXPECT_EQ(model.image_files, std::vector<std::string>{(folder / "Wall.png").string()});  // as found
+    EXPECT_EQ(model.read_files, std::vector<std::string>{(folder / "Wall.png").string()});  // as found
     fs::create_directories(folder / "maps");
     fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "maps" / "stone.png",
                   fs::copy_options::overwrite_existing);

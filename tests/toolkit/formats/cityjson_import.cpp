@@ -165,7 +165,7 @@ TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
     const Material& photo = model.materials[std::size_t(textured.material)];
     ASSERT_GE(photo.base_color_texture, 0);
     EXPECT_EQ(model.textures[std::size_t(photo.base_color_texture)].image.pixels, image.pixels);
-    EXPECT_EQ(model.image_files, std::vector<std::string>{(folder / "roof.png").string()});
+    EXPECT_EQ(model.read_files, std::vector<std::string>{(folder / "roof.png").string()});
     ASSERT_EQ(textured.uvs.size(), 4u);
     EXPECT_EQ(textured.uvs[0], Eigen::Vector2f(0, 1));  // CityGML's (0, 0) is the image's bottom left
     const Primitive& plain = roof.primitives[1];

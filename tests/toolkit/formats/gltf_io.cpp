@@ -590,8 +590,9 @@ TEST(GltfIo, AnExportBesideTheModelKeepsItsImageFiles) {
     std::vector<std::string> before;
     for (const std::string& image : images) before.push_back(test::read_text(folder / image));
     const Model read = load_model((folder / "house.gltf").string());
-    ASSERT_EQ(read.image_files.size(), 3u);
-    EXPECT_EQ(read.image_files[2], (folder / "brick_height.png").string());
+    ASSERT_EQ(read.read_files.size(), 4u);  // the images, then the buffer
+    EXPECT_EQ(read.read_files[2], (folder / "brick_height.png").string());
+    EXPECT_EQ(read.read_files[3], (folder / "house.bin").string());
     // Through a link to the folder, by a relative path.
     fs::create_directory_symlink(folder, folder / "link");
     save_model(read, fs::relative(folder / "link" / "copy.gltf").string());
@@ -633,6 +634,20 @@ TEST(GltfIo, AnExportBesideTheModelKeepsItsImageFiles) {
     fs::create_directories(folder / "elsewhere");
     save_model(read, (folder / "elsewhere" / "copy.gltf").string());
     EXPECT_TRUE(fs::exists(folder / "elsewhere" / "brick_height.png"));
+}
+
+TEST(GltfIo, AnExportBesideTheModelKeepsItsBufferFile) {
+    auto folder = test::scratch_folder("gltf_keeps_buffer");
+    save_model(sample_model(), (folder / "house.gltf").string());
+    fs::rename(folder / "house.gltf", folder / "a.gltf");  // a.gltf's buffer is house.bin
+    const std::string bin = test::read_text(folder / "house.bin");
+    const Model read = load_model((folder / "a.gltf").string());
+    save_model(read, (folder / "house.gltf").string());
+    EXPECT_EQ(test::read_text(folder / "house.bin"), bin);
+    const nlohmann::json written = nlohmann::json::parse(test::read_text(folder / "house.gltf"));
+    EXPECT_EQ(written["buffers"][0]["uri"], "house_2.bin");
+    expect_same_model(load_model((folder / "house.gltf").string()), read);
+    expect_same_model(load_model((folder / "a.gltf").string()), read);
 }
 
 TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {

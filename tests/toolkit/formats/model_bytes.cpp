@@ -11,7 +11,7 @@ Model every_field() {
     Model model;
     model.source = "house.ifc";
     model.reference_system = "EPSG:7415";
-    model.image_files = {"textures/color.png", "height.png"};
+    model.read_files = {"textures/color.png", "height.png"};
     model.is_lod = true;
     model.lod_params = {{"level", "2"}, {"mode", ""}};
     Material brick{"brick"};
@@ -52,7 +52,7 @@ TEST(ModelBytes, EveryFieldComesBack) {
     EXPECT_EQ(model_bytes(back), bytes);
     EXPECT_EQ(back.source, "house.ifc");
     EXPECT_EQ(back.reference_system, "EPSG:7415");
-    EXPECT_EQ(back.image_files, model.image_files);
+    EXPECT_EQ(back.read_files, model.read_files);
     EXPECT_TRUE(back.is_lod);
     EXPECT_EQ(back.lod_params, model.lod_params);
     EXPECT_EQ(back.materials, model.materials);
