@@ -5,7 +5,7 @@
 #include "base/key_values.h"
 #include "base/utf8.h"
 #include "toolkit/formats/cityjson_geometry.h"
-#include "toolkit/formats/gltf_structure.h"
+#include "toolkit/formats/json_input.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,7 +94,7 @@ void check_version(const CityPlace& at, const json& root, const char* type) {
 }
 
 json parse_json(const CityPlace& at, std::string_view text) {
-    check_json_depth(text, at.file);
+    check_json_input(text, at.file);
     try {
         return json::parse(text);
     } catch (
@@ -145,6 +145,12 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
         if (!transform) {
             check_version(at, document, "CityJSON");
             transform = read_transform(at, document);
+            // Its first line holds no objects (CityJSON 2.0 spec, CityJSON Text Sequences), so none are read.
+            for (const char* key : {"CityObjects", "vertices"})
+                if (const auto found = document.find(key); found != document.end() && !found->empty())
+                    at.fail(std::string(key) +
+                            " not empty: a CityJSONSeq's first line holds the metadata, its "
+                            "objects follow as CityJSONFeature lines");
             if (reference_system) *reference_system = read_reference_system(at, document);
             if (file_templates && document.contains("geometry-templates"))
                 *file_templates = std::move(document["geometry-templates"]);

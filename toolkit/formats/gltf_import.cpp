@@ -385,17 +385,17 @@ void read_textures(const Reader& reader, Model& model) {
         for (const auto& slot : texture_slots(std::as_const(extensions)))
             if (slot.index >= 0) colour_or_normal[std::size_t(slot.index)] = true;
     }
+    const auto read_file = [&](const std::string& uri) {  // a file's, not a data URI's
+        if (!uri.empty() && !tinygltf::IsDataURI(uri))    // (tinygltf keeps an image's data URI as none)
+            model.read_files.push_back(
+                (fs::path(reader.file).parent_path() / file_name_of_uri(uri)).string());
+    };
     for (std::size_t i = 0; i < gltf.images.size(); ++i) {
         model.textures.push_back(
             convert_image(gltf.images[i], !colour_or_normal[i], reader, "image " + std::to_string(i)));
-        if (!gltf.images[i].uri.empty())  // a file's (a data URI's image keeps none)
-            model.read_files.push_back(
-                (fs::path(reader.file).parent_path() / file_name_of_uri(gltf.images[i].uri)).string());
+        read_file(gltf.images[i].uri);
     }
-    for (const tinygltf::Buffer& buffer : gltf.buffers)  // a file's, not a data URI
-        if (!buffer.uri.empty() && !tinygltf::IsDataURI(buffer.uri))
-            model.read_files.push_back(
-                (fs::path(reader.file).parent_path() / file_name_of_uri(buffer.uri)).string());
+    for (const tinygltf::Buffer& buffer : gltf.buffers) read_file(buffer.uri);
     for (const tinygltf::Texture& texture :
          gltf.textures)  // an image sampled clamped to its edge (LoD pages)
         if (texture.source >= 0 && texture.source < int(gltf.images.size()) && texture.sampler >= 0 &&
@@ -579,8 +579,7 @@ Model import_gltf(const std::string& path, int chain_level) {
                              chain_level);
 }
 
-// The steps: the structure checked (and what a loader must refuse), tinygltf's
-// model, textures, materials, the LoD mark, the node tree; then the whole model validated.
+// The steps: the structure checked, tinygltf's model, textures, materials, the LoD mark, nodes; validation.
 Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& path, int chain_level) {
     check_gltf_structure(bytes, binary, path);
     const tinygltf::Model gltf = load_gltf(bytes, binary, path);

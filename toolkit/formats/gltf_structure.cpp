@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/json_input.h"
 
 #include <nlohmann/json.hpp>
 
@@ -320,7 +321,7 @@ void check_extensions(const nlohmann::json& value, const std::string& place, con
 
 void check_gltf_structure(std::string_view bytes, bool binary, const std::string& file) {
     Glb glb = binary ? split_glb(bytes, file) : Glb{bytes, 0};
-    check_json_depth(glb.json, file);
+    check_json_input(glb.json, file, 2);  // tinygltf's tree beside its model's copies of it
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(glb.json);
@@ -367,27 +368,6 @@ void check_gltf_structure(std::string_view bytes, bool binary, const std::string
             size_member(images[i], "bufferView", 0, file, place) >= views.size())
             throw_input_error(file, place, "bufferView index out of range");
         check_relative_uri(images[i], file, place);
-    }
-}
-
-void check_json_depth(std::string_view json, const std::string& file) {
-    int depth = 0;
-    bool in_string = false;
-    for (std::size_t i = 0; i < json.size(); ++i) {
-        char c = json[i];
-        if (in_string) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                in_string = false;
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > max_nesting_depth)
-                throw_input_error(file, "byte " + std::to_string(i), "JSON " + nesting_message());
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
     }
 }
 

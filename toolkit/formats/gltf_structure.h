@@ -3,7 +3,8 @@
 // offset or nesting from a hostile file can reach memory outside it or
 // overflow the stack (glTF 2.0 spec, sections 4.4 "Binary glTF" and 5.11
 // "bufferView"): the glb header and chunks inside the file, the JSON nested at
-// most max_nesting_depth deep, every buffer view inside its buffer, every
+// most max_nesting_depth deep and its tree within the memory budget
+// (toolkit/formats/json_input.h), every buffer view inside its buffer, every
 // image's buffer view present; every member boxlod reads of the kind the
 // schema gives it (an alphaCutoff that is a string, an `extensions` that is
 // an array), where tinygltf would skip it without a word.
@@ -15,10 +16,5 @@ namespace boxlod {
 
 // `bytes` is the whole file; `binary` for .glb. Throws InputError naming `file`.
 void check_gltf_structure(std::string_view bytes, bool binary, const std::string& file);
-
-// Refuses JSON nested deeper than max_nesting_depth (base/input_error.h),
-// counting [ and { outside strings without recursion: what nlohmann-json
-// copies or prints of it recurses (glTF, CityJSON).
-void check_json_depth(std::string_view json, const std::string& file);
 
 }  // namespace boxlod

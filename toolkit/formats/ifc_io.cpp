@@ -6,6 +6,7 @@
 #include "base/utf8.h"
 #include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/ifc_reader_script.h"
+#include "toolkit/formats/json_input.h"
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,7 @@ Answer split_answer(const std::string& answer, const std::string& path) {
     std::memcpy(&length, answer.data(), sizeof length);
     if (!range_fits(sizeof length, length, answer.size()))
         throw_input_error(path, "", "web-ifc's answer is cut short");
+    check_json_input(std::string_view(answer).substr(sizeof length, length), path);
     Answer out{json::parse(answer.substr(sizeof length, length), nullptr, false),
                std::string_view(answer).substr(sizeof length + length)};
     if (!out.header.is_object()) throw_input_error(path, "", "web-ifc's answer is not JSON");

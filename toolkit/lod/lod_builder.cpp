@@ -83,6 +83,11 @@ std::unique_ptr<LodSession> start_lod(const Model& model, const LodParameters& p
     LodDerived& d = session->derived;
     if (p.model.empty()) p.model = model.source;
     if (p.distance == 0) p.distance = framing_distance(model_framing(model), p.fovy);
+    if (!parameter_range::distance.contains(p.distance))  // a model a billion metres wide seen through 0.1°
+        throw_input_error(model.source, "",
+                          "the distance that frames it at fovy " + format_number(p.fovy) + ", " +
+                              format_number(p.distance) + ", lies outside distance's " +
+                              range_text(parameter_range::distance) + " (set --distance or --fovy)");
     d.sizing = {p.fovy, p.distance, p.resolution, p.max_texture_size, 2};
     d.boxes =
         timed(session->times.boxes, [&] { return boxes ? *boxes : node_boxes(model, p.box_kind, threads); });

@@ -75,9 +75,9 @@ constexpr NumberRange resolution{1, 16384};     // pixels
 constexpr NumberRange texture_size{1, 16384};   // and a power of two
 constexpr NumberRange parallax{-1, 1};    // scale and bias, in texture units (docs/design.md: Rendering)
 constexpr NumberRange flat_faces{0, 64};  // texels on a face's longer side; 0: off
-// A camera's or light's coordinates, in the model's units: beyond any model's (Earth-centred ones
-// too), and squared distances between them finite in float.
-constexpr NumberRange position{-1e9, 1e9};
+// A camera's or light's coordinates, in the model's units: as a model's (toolkit/model/model.h), and
+// squared distances between them finite in float.
+constexpr NumberRange position = coordinate_range;
 }  // namespace parameter_range
 
 struct ParameterDeclaration {

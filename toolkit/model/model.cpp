@@ -130,6 +130,12 @@ bool validate_primitive(const Model& model, const Primitive& primitive, const st
             if (!v.allFinite()) throw_input_error(file, where, std::string(what) + " is NaN or infinite");
     };
     check_finite(primitive.positions, "position");
+    for (const Eigen::Vector3f& p : primitive.positions)
+        if (!(coordinate_range.contains(p.x()) && coordinate_range.contains(p.y()) &&
+              coordinate_range.contains(p.z())))
+            throw_input_error(file, where,
+                              "a position (" + format_number(p.x()) + ", " + format_number(p.y()) + ", " +
+                                  format_number(p.z()) + ") outside " + range_text(coordinate_range));
     check_finite(primitive.normals, "normal");
     check_finite(primitive.uvs, "texture coordinate");
     check_finite(primitive.tangents, "tangent");

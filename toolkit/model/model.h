@@ -55,6 +55,10 @@ struct SpecularExtension {
 };
 constexpr NumberRange specular_color_factor_range{0, 1000};  // the extension allows [0, inf): boxlod's bound
 constexpr NumberRange height_depth_range{0, 1e6};            // metres, as a scope's extents
+// A position's coordinates, in the model's units: beyond any model's (Earth-centred ones too; a city
+// file's are kept relative to Model::origin), so that distances between them, and the distances that
+// frame them, stay within float and the parameter files' ranges (toolkit/lod/lod_parameters.h).
+constexpr NumberRange coordinate_range{-1e9, 1e9};
 
 struct Material {
     std::string name;

@@ -324,6 +324,14 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     lines = placed.dump() + "\n" + feature("a", 0).dump() + "\n";
     test::write_text(path, lines);
     EXPECT_EQ(load_model(path.string()).reference_system, "EPSG:7415");
+    // Objects in the first line are refused, not dropped.
+    json holding = header;
+    holding["CityObjects"] = feature("c", 0)["CityObjects"];
+    test::write_text(path, holding.dump() + "\n" + feature("a", 0).dump() + "\n");
+    EXPECT_NE(test::input_error_of([&] { load_model(path.string()); })
+                  .find("two.city.jsonl: line 1: CityObjects not empty: a CityJSONSeq's first line holds the "
+                        "metadata"),
+              std::string::npos);
 }
 
 // FILE#OBJECT reads one object of a city file, at the whole file's origin;

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "golden.h"
 #include "lod_scene.h"
+#include "test_support.h"
 #include "toolkit/drawing/drawable.h"
 #include "toolkit/formats/model_io.h"
 #include "toolkit/lod/chain/chain.h"
@@ -315,6 +316,25 @@ TEST(LodBuilder, AnLodCannotBeSimplifiedAgain) {
     Model model = test::lod_test_building();
     model.is_lod = true;
     EXPECT_THROW(start_lod(model, small_parameters(), 1), InputError);
+}
+
+TEST(LodBuilder, AFramingDistanceBeyondTheDistanceRangeIsRefused) {
+    Model model = test::lod_test_building();  // 1.9 billion metres wide, seen through 0.1 degrees
+    const Bounds bounds = model_bounds(model);
+    const float scale = 1.9e9f / bounds.size().maxCoeff();
+    for (Node& node : model.nodes)
+        for (Primitive& primitive : node.primitives)
+            for (Eigen::Vector3f& p : primitive.positions) p = (p - (bounds.min + bounds.max) / 2) * scale;
+    for (Node& node : model.nodes) node.scope.reset();
+    LodParameters p = small_parameters();
+    p.fovy = 0.1f;
+    EXPECT_NE(test::input_error_of([&] {
+                  start_lod(model, p, 1);
+              }).find("the distance that frames it at fovy 0.1, "),
+              std::string::npos)
+        << test::input_error_of([&] { start_lod(model, p, 1); });
+    p.distance = 1e12f;  // given, it is used
+    EXPECT_NO_THROW(start_lod(model, p, 1));
 }
 
 TEST(LodBuilder, SameResultForAnyThreadCount) {

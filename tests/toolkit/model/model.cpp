@@ -104,6 +104,15 @@ TEST(Model, ValidationRejectsEachKindOfBadData) {
     EXPECT_EQ(message_of(bright),
               "m.gltf: material 'lamp': specular colour (0, -0.25, 0) out of range [0, 1]");
 
+    // Coordinates beyond any model's (a glTF node scaled by 1e30): the distances framing it would overflow.
+    Model far = valid();
+    far.nodes[0].primitives[0].positions[1].z() = 1e9f;
+    EXPECT_NO_THROW(validate_model(far));
+    far.nodes[0].primitives[0].positions[1].z() = -2e9f;
+    EXPECT_EQ(
+        message_of(far),
+        "m.gltf: node 0 'root' primitive 0: a position (1, 0, -2e+09) outside [-1000000000, 1000000000]");
+
     try {
         validate_model(out_of_range);
     } catch (const InputError& error) {
