@@ -4,14 +4,34 @@
 
 namespace boxlod {
 
+namespace {
+
+std::string printable_line(const std::string& text) {
+    std::string line;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n' || c == '\r') {
+            line += ' ';
+        } else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+            line += escaped;
+        } else {
+            line += c;
+        }
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    return line;
+}
+
+}  // namespace
+
+InputError::InputError(const std::string& message) : std::runtime_error(printable_line(message)) {}
+
 std::string input_message(const std::string& file, const std::string& place, const std::string& what) {
     std::string message = file;
     if (!place.empty()) message += ": " + place;
-    message += ": " + what;
-    for (char& c : message)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!message.empty() && message.back() == ' ') message.pop_back();
-    return message;
+    return printable_line(message + ": " + what);
 }
 
 std::string range_text(const NumberRange& range) {

@@ -7,11 +7,14 @@
 
 namespace boxlod {
 
+// Its message is made one printable line: line breaks become spaces and other
+// control characters \xHH (a NUL in a file's object name ended the line there,
+// an ESC reached the terminal).
 struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit InputError(const std::string& message);
 };
 
-// "file: what" or "file: place: what", squeezed onto one line.
+// "file: what" or "file: place: what", one printable line (for warnings too).
 std::string input_message(const std::string& file, const std::string& place, const std::string& what);
 
 [[noreturn]] inline void throw_input_error(const std::string& file, const std::string& place,

@@ -20,3 +20,12 @@ TEST(InputError, RangesAndCheckedArithmeticHoldAtTheEdges) {
     EXPECT_FALSE((NumberRange{1, 2}).contains(std::nan("")));
     EXPECT_EQ(out_of_range_message({0.1, 179}, "720"), "expected a number in [0.1, 179], got '720'");
 }
+
+TEST(InputError, AMessageIsOnePrintableLine) {
+    using namespace std::string_literals;
+    EXPECT_STREQ(InputError("f.json: CityObjects 'a\0b\x1b[31m': no geometry\n"s).what(),
+                 "f.json: CityObjects 'a\\x00b\\x1b[31m': no geometry");
+    EXPECT_EQ(input_message("f.gltf", "node 'a\r\nb'", "bad\x7f"), "f.gltf: node 'a  b': bad\\x7f");
+    EXPECT_STREQ(InputError("tab\tstays, UTF-8 too: W\xc3\xa4nde").what(),
+                 "tab\tstays, UTF-8 too: W\xc3\xa4nde");
+}

@@ -12,7 +12,9 @@
 #include "renderer/image.h"
 #include "toolkit/formats/gltf_extras.h"
 #include "toolkit/formats/gltf_json.h"
+#include "toolkit/formats/gltf_load.h"
 #include "toolkit/formats/gltf_structure.h"
+#include "toolkit/formats/gltf_texture_transform.h"
 
 #include <tiny_gltf.h>
 #include <Eigen/Geometry>
@@ -152,6 +154,8 @@ Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
     if (sized(node.matrix, 16, "matrix")) {
         for (int i = 0; i < 16; ++i) m(i % 4, i / 4) = node.matrix[i];  // column-major
+        if (m.row(3) != Eigen::RowVector4d(0, 0, 0, 1))  // 5.25: decomposable to TRS, so affine
+            reader.fail(place, "matrix is not affine (its last row is not 0, 0, 0, 1)");
         return m;
     }
     Eigen::Affine3d t = Eigen::Affine3d::Identity();
@@ -256,57 +260,6 @@ int texture_image(const Reader& reader, int texture, int tex_coord, const std::s
     return source;
 }
 
-// tinygltf's file callback: buffers and images named by URI are read as every
-// input file is (a folder, a device or a missing file is a clear error).
-bool read_whole_file(std::vector<unsigned char>* out, std::string*, const std::string& path, void*) {
-    std::string bytes = read_input_file(path, "file");
-    out->assign(bytes.begin(), bytes.end());
-    return true;
-}
-
-// The images a file has decoded so far: each is checked against the memory budget by its header, and
-// all of them together as they come (a file may name one large image many times).
-struct ImagesDecoded {
-    const std::string& file;
-    double bytes = 0;
-};
-
-// tinygltf's image callback: our decoders, so that a broken image is named by
-// its own file and a claimed size is checked before anything is allocated.
-// 16-bit grey stays 16-bit (height maps); everything else becomes RGBA8.
-bool load_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                const unsigned char* bytes, int size, void* images_decoded) {
-    ImagesDecoded& decoded_so_far = *static_cast<ImagesDecoded*>(images_decoded);
-    const std::string& file = decoded_so_far.file;
-    std::string name = image->uri.empty() ? file + ": image " + std::to_string(index)
-                                          : (fs::path(file).parent_path() / image->uri).string();
-    std::span<const std::uint8_t> encoded(bytes, std::size_t(size));
-    if (is_grey16(encoded)) {
-        Image16 decoded = decode_image16(encoded, name);
-        image->image.resize(decoded.pixels.size() * 2);
-        for (std::size_t i = 0; i < decoded.pixels.size(); ++i)
-            image->image[i * 2] = std::uint8_t(decoded.pixels[i] & 0xff),
-                             image->image[i * 2 + 1] = std::uint8_t(decoded.pixels[i] >> 8);
-        image->width = decoded.width;
-        image->height = decoded.height;
-        image->component = 1;
-        image->bits = 16;
-        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-    } else {
-        Image8 decoded = decode_image(encoded, name);
-        image->image = std::move(decoded.pixels);
-        image->width = decoded.width;
-        image->height = decoded.height;
-        image->component = 4;
-        image->bits = 8;
-        image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    }
-    decoded_so_far.bytes += double(image->image.size());
-    check_memory(file + ": its images, decoded and converted",
-                 2 * decoded_so_far.bytes);  // convert_image copies
-    return true;
-}
-
 // `height_map`: the image serves only as a height texture, so a 16-bit grey
 // image keeps its 16 bits; as colour or normals it becomes 8-bit grey.
 Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& reader,
@@ -334,25 +287,6 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
     return texture;
 }
 
-// tinygltf's model of the bytes, with our file and image callbacks.
-tinygltf::Model load_gltf(std::string_view bytes, bool binary, const std::string& path) {
-    tinygltf::TinyGLTF loader;
-    ImagesDecoded images_decoded{path};
-    loader.SetImageLoader(load_image, &images_decoded);
-    tinygltf::FsCallbacks files{&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_whole_file,
-                                &tinygltf::WriteWholeFile, nullptr};
-    loader.SetFsCallbacks(files);
-    tinygltf::Model gltf;
-    std::string error, warning, directory = fs::path(path).parent_path().string();
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    bool ok =
-        binary ? loader.LoadBinaryFromMemory(&gltf, &error, &warning, data, unsigned(bytes.size()), directory)
-               : loader.LoadASCIIFromString(&gltf, &error, &warning, bytes.data(), unsigned(bytes.size()),
-                                            directory);
-    if (!ok) throw_input_error(path, "", error.empty() ? "malformed glTF" : error);
-    return gltf;
-}
-
 // The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
 void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place,
                               Material& material) {
@@ -371,13 +305,21 @@ void read_textures(const Reader& reader, Model& model) {
     for (std::size_t t = 0; t < gltf.textures.size(); ++t)
         if (gltf.textures[t].sampler >= int(gltf.samplers.size()))
             reader.fail("texture " + std::to_string(t), "sampler index out of range");
+    for (std::size_t s = 0; s < gltf.samplers.size(); ++s)  // glTF 2.0, 5.26: the three wrapping modes
+        for (const int wrap : {gltf.samplers[s].wrapS, gltf.samplers[s].wrapT})
+            if (wrap != TINYGLTF_TEXTURE_WRAP_REPEAT && wrap != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
+                wrap != TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
+                reader.fail("sampler " + std::to_string(s),
+                            "wrap mode " + std::to_string(wrap) + " is not 33071, 33648 or 10497");
     for (std::size_t m = 0; m < gltf.materials.size(); ++m) {
         const std::string place = "material " + std::to_string(m);
         const tinygltf::Material& material = gltf.materials[m];
         for (const auto& [texture, tex_coord] :
              {std::pair{material.pbrMetallicRoughness.baseColorTexture.index,
-                        material.pbrMetallicRoughness.baseColorTexture.texCoord},
-              std::pair{material.normalTexture.index, material.normalTexture.texCoord}})
+                        tex_coord_read(material.pbrMetallicRoughness.baseColorTexture.texCoord,
+                                       material.pbrMetallicRoughness.baseColorTexture.extensions)},
+              std::pair{material.normalTexture.index,
+                        tex_coord_read(material.normalTexture.texCoord, material.normalTexture.extensions)}})
             if (int image = texture_image(reader, texture, tex_coord, place); image >= 0)
                 colour_or_normal[std::size_t(image)] = true;
         Material extensions;  // only for the images they name, all 8-bit
@@ -414,10 +356,12 @@ void read_materials(const Reader& reader, Model& model) {
         const auto& factor = in.pbrMetallicRoughness.baseColorFactor;
         if (factor.size() == 4)
             material.base_color = Eigen::Vector4d(factor[0], factor[1], factor[2], factor[3]).cast<float>();
-        material.base_color_texture = texture_image(reader, in.pbrMetallicRoughness.baseColorTexture.index,
-                                                    in.pbrMetallicRoughness.baseColorTexture.texCoord, place);
+        const auto& base = in.pbrMetallicRoughness.baseColorTexture;
+        material.base_color_texture =
+            texture_image(reader, base.index, tex_coord_read(base.texCoord, base.extensions), place);
         material.normal_texture =
-            texture_image(reader, in.normalTexture.index, in.normalTexture.texCoord, place);
+            texture_image(reader, in.normalTexture.index,
+                          tex_coord_read(in.normalTexture.texCoord, in.normalTexture.extensions), place);
         material.double_sided = in.doubleSided;
         if (!parse_enum(alpha_modes(), in.alphaMode, material.alpha_mode))
             reader.fail(place,
@@ -592,6 +536,7 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_nodes(reader,
                chain_level_roots(reader, take_origin(reader, scene_roots(reader), model), chain_level),
                model);
+    place_texture_coordinates(gltf, path, model);
     make_unit_normals_and_tangents(model);
     validate_model(model);
     return model;

@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/gltf_texture_transform.h"
 #include "toolkit/formats/json_input.h"
 
 #include <nlohmann/json.hpp>
@@ -164,6 +165,10 @@ constexpr MemberKind member_kinds[] = {
      Kind::numbers, 2},
     {"materials[].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord",
      Kind::index},
+    {"materials[].normalTexture.extensions.KHR_texture_transform.offset", Kind::numbers, 2},
+    {"materials[].normalTexture.extensions.KHR_texture_transform.rotation", Kind::number},
+    {"materials[].normalTexture.extensions.KHR_texture_transform.scale", Kind::numbers, 2},
+    {"materials[].normalTexture.extensions.KHR_texture_transform.texCoord", Kind::index},
     {"materials[].extensions.KHR_materials_specular", Kind::object},  // the material extensions boxlod reads
     {"materials[].extensions.KHR_materials_pbrSpecularGlossiness", Kind::object},
     {"textures[].source", Kind::index},
@@ -280,7 +285,7 @@ void check_version_and_required_extensions(const nlohmann::json& root, const std
     if (const auto required = root.find("extensionsRequired"); required != root.end() && required->is_array())
         for (const nlohmann::json& name : *required)
             if (name.is_string() && name != "MSFT_lod" && name != specular_glossiness_name &&
-                name != specular_extension_name)
+                name != specular_extension_name && name != texture_transform_name)
                 throw_input_error(
                     file, "extensionsRequired",
                     "'" + name.get<std::string>() + "' is required, and boxlod does not read it");

@@ -685,6 +685,17 @@ TEST(GltfIo, BadInputGivesOneLineNamingTheFile) {
         std::string::npos);
     std::string bad_child = R"(, "nodes": [{"mesh": 0, "children": [9]}], "scenes": [{"nodes": [0]}])";
     expect_input_error(write("child.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + bad_child)));
+    const std::string projective =
+        R"(, "nodes": [{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,0]}], "scenes": [{"nodes": [0]}])";
+    EXPECT_NE(expect_input_error(
+                  write("matrix.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + projective)))
+                  .find("node 0: matrix is not affine"),
+              std::string::npos);
+    const std::string wrap = R"(, "samplers": [{"wrapS": 12345}])";
+    EXPECT_NE(expect_input_error(
+                  write("wrap.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + nodes + wrap)))
+                  .find("sampler 0: wrap mode 12345 is not 33071, 33648 or 10497"),
+              std::string::npos);
 
     // A truncated .glb: the first half of a valid one.
     save_model(sample_model(), (folder / "whole.glb").string());
