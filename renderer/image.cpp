@@ -31,9 +31,13 @@ std::uint32_t big_endian_u32(const std::uint8_t* p) {
 // IEND (PNG, ISO/IEC 15948, 5.3), inside the file and with the checksums they
 // state: stb decodes without reading them, so a damaged file gave whatever
 // pixels its damage made.
-void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& name) {
+bool is_png(std::span<const std::uint8_t> encoded) {
     static constexpr std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (encoded.size() < 8 || !std::equal(signature, signature + 8, encoded.begin())) return;
+    return encoded.size() >= 8 && std::equal(signature, signature + 8, encoded.begin());
+}
+
+void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& name) {
+    if (!is_png(encoded)) return;
     for (std::size_t at = 8;;) {
         if (!range_fits(at, 12, encoded.size()))
             throw_input_error(name, "byte " + std::to_string(at), "PNG ends without its IEND chunk");
@@ -65,12 +69,19 @@ ImageSize header_size(std::span<const std::uint8_t> encoded, const std::string& 
     int width = 0, height = 0, channels = 0;
     if (encoded.size() > std::size_t(std::numeric_limits<int>::max()))
         throw_input_error(name, "", "image file too large");
+    const auto check_sides = [&](std::uint32_t w, std::uint32_t h) {
+        if (w > std::uint32_t(max_image_side) || h > std::uint32_t(max_image_side))
+            throw_input_error(name, "",
+                              "image is " + std::to_string(w) + "x" + std::to_string(h) +
+                                  " pixels, more than " + std::to_string(max_image_side) + " per side");
+    };
+    // A PNG's size from its IHDR first (PNG 11.2.2): stb refuses one too large under another reason.
+    if (is_png(encoded) && encoded.size() >= 24 &&
+        std::equal(encoded.begin() + 12, encoded.begin() + 16, std::string_view("IHDR").begin()))
+        check_sides(big_endian_u32(&encoded[16]), big_endian_u32(&encoded[20]));
     if (!stbi_info_from_memory(encoded.data(), int(encoded.size()), &width, &height, &channels))
         throw_input_error(name, "", decode_failure());
-    if (width > max_image_side || height > max_image_side)
-        throw_input_error(name, "",
-                          "image is " + std::to_string(width) + "x" + std::to_string(height) +
-                              " pixels, more than " + std::to_string(max_image_side) + " per side");
+    check_sides(std::uint32_t(width), std::uint32_t(height));
     check_png_chunks(encoded, name);
     return {width, height};
 }

@@ -73,6 +73,11 @@ TEST(Image, ASizeBeyondTheLimitIsRefusedBeforeDecoding) {
         EXPECT_EQ(std::string(error.what()), "wide.png: image is 100000x1 pixels, more than 16384 per side");
     }
     EXPECT_FALSE(is_grey16(png));
+    // 20000 x 20000: stb refuses it as "unknown image type" (too many bytes for it); the size is named.
+    png[16] = 0, png[17] = 0, png[18] = 0x4e, png[19] = 0x20;
+    png[20] = 0, png[21] = 0, png[22] = 0x4e, png[23] = 0x20;
+    EXPECT_EQ(test::input_error_of([&] { decode_image(png, "square.png"); }),
+              "square.png: image is 20000x20000 pixels, more than 16384 per side");
 }
 
 TEST(Image, SrgbEncodeInvertsDecodeForEveryByte) {

@@ -191,8 +191,10 @@ struct SurfaceNodes {
 int surface_node(const CityPlace& at, CityReadState& s, SurfaceNodes& nodes, std::size_t surface,
                  std::size_t depth = 0) {
     if (auto known = nodes.node_of.find(surface); known != nodes.node_of.end()) return known->second;
-    if (depth > nodes.surfaces->size() || depth > std::size_t(max_nesting_depth))
+    if (depth > nodes.surfaces->size())
         at.fail("semantics: the parents of surface " + std::to_string(surface) + " form a cycle");
+    if (depth > std::size_t(max_nesting_depth))
+        at.fail("semantics: surface " + std::to_string(surface) + "'s parents " + nesting_message());
     const json& entry = (*nodes.surfaces)[surface];
     if (!entry.is_object() || !entry.contains("type") || !entry["type"].is_string())
         at.fail("semantics: surface " + std::to_string(surface) + " has no type");

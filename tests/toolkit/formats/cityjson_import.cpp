@@ -124,6 +124,22 @@ TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
                                        .cross(p.positions[p.indices[2]] - p.positions[p.indices[0]]);
     EXPECT_GT(normal.z(), 0);
     EXPECT_EQ(p.polygon_count, 1u);
+    // Parents that form a cycle, and a chain of them deeper than any reader recurses.
+    const auto parents_problem = [&](json surfaces) {
+        json chained = geometry;
+        chained["semantics"]["surfaces"] = std::move(surfaces);
+        return test::input_error_of([&] {
+            read(city({{"shed", {{"type", "Building"}, {"geometry", {chained}}}}}, vertices), "window");
+        });
+    };
+    EXPECT_NE(parents_problem({{{"type", "WallSurface"}, {"parent", 1}}, {{"type", "Window"}, {"parent", 0}}})
+                  .find("semantics: the parents of surface 1 form a cycle"),
+              std::string::npos);
+    json chain = json::array();
+    for (int i = 0; i < 300; ++i) chain.push_back({{"type", "Window"}, {"parent", i + 1}});
+    chain.push_back({{"type", "WallSurface"}});
+    EXPECT_NE(parents_problem(chain).find("parents nested more than 200 levels deep"), std::string::npos)
+        << parents_problem(chain);
 }
 
 TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
