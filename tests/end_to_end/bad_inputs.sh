@@ -8,7 +8,9 @@
 #
 # BAD_INPUTS_VERBOSE=1 adds each case's time and stderr line to its report.
 #
-# Manifest lines are `NAME | ARGS`; ARGS is the boxlod command line (shell
+# Manifest lines are `NAME | ARGS`, or `NAME | ARGS | WORDS` where the stderr
+# line must also hold WORDS (that the check meant, not another, refused the
+# input); ARGS is the boxlod command line (shell
 # words, quotes allowed) with placeholders @C (CORPUS_DIR), @W (a fresh empty
 # folder for the case, also its working directory) and @D (the big and deep
 # inputs bad_inputs_generate.py writes at test time, plus folders, symlinks
@@ -142,6 +144,12 @@ while IFS= read -r line || [ -n "$line" ]; do
   name=${name#"${name%%[![:space:]]*}"}
   name=${name%"${name##*[![:space:]]}"}
   args=${line#*|}
+  expected=""  # `NAME | ARGS | WORDS`: the line must also hold WORDS (the check meant fired)
+  if [[ "$args" == *"|"* ]]; then
+    expected=${args##*|}
+    expected=${expected#"${expected%%[![:space:]]*}"}
+    args=${args%|*}
+  fi
   if [ -n "${seen[$name]:-}" ]; then echo "FAIL manifest: case '$name' given twice"; failed=$((failed + 1)); continue; fi
   seen[$name]=1
   [ -n "$filter" ] && ! [[ "$name" =~ $filter ]] && continue
@@ -221,6 +229,7 @@ while IFS= read -r line || [ -n "$line" ]; do
         done
       done
       [ -z "$named" ] && add "message" "the line names no file, option or key"
+      [ -n "$expected" ] && [[ "$last" != *"$expected"* ]] && add "message" "the line does not say '$expected'"
     fi
   fi
   left=$(cd "$case_dir" && find . -mindepth 1 ! -path ./w | sed 's|^\./||' | LC_ALL=C sort)

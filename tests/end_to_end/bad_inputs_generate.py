@@ -59,6 +59,12 @@ put("deep_node_extras_200000.gltf", gltf_text(node_extras=arrays(200000)))
 put("deep_asset_extras_objects_20000.gltf", gltf_text(asset_extras=objects(20000)))
 put("deep_unknown_key_20000.gltf", gltf_text(unknown=arrays(20000)))
 put("deep_boxlod_extras_20000.gltf", gltf_text(node_extras='{"boxlod": {"scope": %s}}' % arrays(20000)))
+# Shallow but wide: a tree of some 30 times the text (toolkit/formats/json_input.h), 3 MB each.
+put("wide_extras.gltf", gltf_text(node_extras="[" + ",".join(["[]"] * 1000000) + "]"))
+put("wide_attributes.city.json", json.dumps({
+    "type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},
+    "CityObjects": {"b": {"type": "Building", "attributes": {"x": "WIDE"}}}, "vertices": []})
+    .replace('"WIDE"', "[" + ",".join(["[]"] * 1000000) + "]"))
 
 json_chunk = gltf_text(node_extras=arrays(20000), buffer_uri=False).encode()
 while len(json_chunk) % 4:
