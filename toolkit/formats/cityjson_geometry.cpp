@@ -130,6 +130,8 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
     if (!texture.is_object() || !texture.contains("image") || !texture["image"].is_string())
         at.fail("appearance: texture " + std::to_string(t) + " has no 'image'");
     const std::string image = texture["image"].get<std::string>();
+    if (image.find('\0') != std::string::npos)  // the file system would read the name up to it
+        at.fail("appearance: texture " + std::to_string(t) + "'s image name holds a NUL character");
     const fs::path path = fs::path(s.file).parent_path() / image;
     std::error_code error;
     int index = -1;

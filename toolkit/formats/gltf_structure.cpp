@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "toolkit/formats/gltf_extras.h"
+#include "toolkit/formats/gltf_json.h"
 #include "toolkit/formats/gltf_texture_transform.h"
 #include "toolkit/formats/json_input.h"
 
@@ -298,6 +299,9 @@ void check_relative_uri(const nlohmann::json& item, const std::string& file, con
     const auto uri = item.find("uri");
     if (uri == item.end() || !uri->is_string()) return;
     const std::string& text = uri->get_ref<const std::string&>();
+    if (!text.starts_with("data:") &&
+        file_name_of_uri(text).find('\0') != std::string::npos)  // read up to it
+        throw_input_error(file, place, "uri '" + text + "' names a file with a NUL character");
     if (text.starts_with("/") || text.starts_with("file:"))
         throw_input_error(file, place,
                           "uri '" + text +

@@ -196,6 +196,13 @@ TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
     const Model twice = import_cityjson((folder / "twice.city.json").string());
     EXPECT_EQ(twice.textures.size(), 1u);
     EXPECT_EQ(twice.nodes[std::size_t(node_named(twice, "roof"))].primitives.size(), 1u);
+    // A name with a NUL would read roof.png: the file system takes a name up to it.
+    file["appearance"]["textures"][1]["image"] = std::string("roof.png\0zz", 11);
+    test::write_text(folder / "nul.city.json", file.dump());
+    EXPECT_NE(test::input_error_of([&] {
+                  import_cityjson((folder / "nul.city.json").string());
+              }).find("appearance: texture 1's image name holds a NUL character"),
+              std::string::npos);
 }
 
 // A 10 m square with a 1 mm step in one corner, at the origin or 400 km out.

@@ -136,3 +136,12 @@ TEST(GltfStructure, RefusesOtherVersionsAndRequiredExtensionsByName) {
         problem(R"({"asset":{"version":"2.0"},"extensionsRequired":["MSFT_lod","KHR_materials_specular"]})"),
         "");
 }
+
+TEST(GltfStructure, AUriNamesARelativeFileWithoutANul) {
+    EXPECT_EQ(problem(R"({"images":[{"uri":"textures/a%20b.png"}]})"), "");
+    EXPECT_NE(problem(R"({"images":[{"uri":"/etc/a.png"}]})").find("image 0: uri '/etc/a.png' is absolute"),
+              std::string::npos);
+    // "t.png%00zz" would read t.png: the file system takes a name up to its NUL.
+    EXPECT_EQ(problem(R"({"buffers":[{"byteLength":1,"uri":"t.bin%00zz"}]})"),
+              "m.gltf: buffer 0: uri 't.bin%00zz' names a file with a NUL character");
+}
