@@ -6,10 +6,18 @@ namespace boxlod {
 
 namespace {
 
+// Room for two paths of PATH_MAX and more; a message quoting a file's bytes (tinygltf quotes a bad
+// data: URI whole) is cut there, at a character's first byte.
+constexpr std::size_t longest_line = 10000;
+
 std::string printable_line(const std::string& text) {
     std::string line;
     for (const char c : text) {
         const auto byte = static_cast<unsigned char>(c);
+        if (line.size() >= longest_line && (byte & 0xc0) != 0x80) {
+            line += " ... (" + std::to_string(text.size()) + " bytes in all)";
+            break;
+        }
         if (c == '\n' || c == '\r') {
             line += ' ';
         } else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {

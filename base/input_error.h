@@ -9,7 +9,7 @@ namespace boxlod {
 
 // Its message is made one printable line: line breaks become spaces and other
 // control characters \xHH (a NUL in a file's object name ended the line there,
-// an ESC reached the terminal).
+// an ESC reached the terminal), and it is cut after 10,000 bytes.
 struct InputError : std::runtime_error {
     explicit InputError(const std::string& message);
 };

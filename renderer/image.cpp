@@ -27,15 +27,15 @@ std::uint32_t big_endian_u32(const std::uint8_t* p) {
            std::uint32_t(p[3]);
 }
 
-// A PNG's chunks, each (length, type, data, CRC-32 of type and data) up to
-// IEND (PNG, ISO/IEC 15948, 5.3), inside the file and with the checksums they
-// state: stb decodes without reading them, so a damaged file gave whatever
-// pixels its damage made.
 bool is_png(std::span<const std::uint8_t> encoded) {
     static constexpr std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     return encoded.size() >= 8 && std::equal(signature, signature + 8, encoded.begin());
 }
 
+// A PNG's chunks, each (length, type, data, CRC-32 of type and data) up to
+// IEND (PNG, ISO/IEC 15948, 5.3), inside the file and with the checksums they
+// state: stb decodes without reading them, so a damaged file gave whatever
+// pixels its damage made.
 void check_png_chunks(std::span<const std::uint8_t> encoded, const std::string& name) {
     if (!is_png(encoded)) return;
     for (std::size_t at = 8;;) {

@@ -28,4 +28,8 @@ TEST(InputError, AMessageIsOnePrintableLine) {
     EXPECT_EQ(input_message("f.gltf", "node 'a\r\nb'", "bad\x7f"), "f.gltf: node 'a  b': bad\\x7f");
     EXPECT_STREQ(InputError("tab\tstays, UTF-8 too: W\xc3\xa4nde").what(),
                  "tab\tstays, UTF-8 too: W\xc3\xa4nde");
+    // A message quoting megabytes of a file is cut, never inside a character.
+    const std::string long_line =
+        InputError(std::string(9999, 'a') + "\xc3\xa4" + std::string(1000000, 'b')).what();
+    EXPECT_EQ(long_line, std::string(9999, 'a') + "\xc3\xa4 ... (1010001 bytes in all)");
 }

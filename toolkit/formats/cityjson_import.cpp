@@ -147,10 +147,11 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
             transform = read_transform(at, document);
             // Its first line holds no objects (CityJSON 2.0 spec, CityJSON Text Sequences), so none are read.
             for (const char* key : {"CityObjects", "vertices"})
-                if (const auto found = document.find(key); found != document.end() && !found->empty())
+                if (const auto found = document.find(key);
+                    found != document.end() && !((found->is_object() || found->is_array()) && found->empty()))
                     at.fail(std::string(key) +
-                            " not empty: a CityJSONSeq's first line holds the metadata, its "
-                            "objects follow as CityJSONFeature lines");
+                            " is not empty: a CityJSONSeq's first line holds the metadata, " +
+                            "its objects follow as CityJSONFeature lines");
             if (reference_system) *reference_system = read_reference_system(at, document);
             if (file_templates && document.contains("geometry-templates"))
                 *file_templates = std::move(document["geometry-templates"]);

@@ -154,8 +154,10 @@ Eigen::Matrix4d local_transform(const tinygltf::Node& node, const Reader& reader
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
     if (sized(node.matrix, 16, "matrix")) {
         for (int i = 0; i < 16; ++i) m(i % 4, i / 4) = node.matrix[i];  // column-major
-        if (m.row(3) != Eigen::RowVector4d(0, 0, 0, 1))  // 5.25: decomposable to TRS, so affine
+        if (!(m.row(3) - Eigen::RowVector4d(0, 0, 0, 1))
+                 .isZero(1e-6))  // 5.25: decomposable to TRS, so affine
             reader.fail(place, "matrix is not affine (its last row is not 0, 0, 0, 1)");
+        m.row(3) << 0, 0, 0, 1;  // an exporter's float noise
         return m;
     }
     Eigen::Affine3d t = Eigen::Affine3d::Identity();
@@ -290,7 +292,7 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
 // The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
 void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place,
                               Material& material) {
-    auto texture = [&](int index) { return texture_image(reader, index, 0, place); };
+    auto texture = [&](int index, int tex_coord) { return texture_image(reader, index, tex_coord, place); };
     if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
         read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
     if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())

@@ -17,8 +17,10 @@ namespace boxlod {
 constexpr const char* texture_transform_name = "KHR_texture_transform";
 using UvTransform = Eigen::Matrix<double, 2, 3>;  // uv' = M * (u, v, 1)
 
-// The texture coordinate set a texture info reads: its texCoord, or the one the extension overrides it with.
+// The texture coordinate set a texture info reads: its texCoord, or the one the extension overrides it with;
+// -1 where one is not a whole number. As tinygltf reads the info, or as a material extension's Value.
 int tex_coord_read(int tex_coord, const tinygltf::ExtensionMap& extensions);
+int tex_coord_read(const tinygltf::Value& texture_info);
 
 // Each primitive's coordinates placed by the map of its material's texture
 // infos that boxlod draws (base colour, normal, and those of the material

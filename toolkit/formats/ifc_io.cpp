@@ -36,7 +36,8 @@ Answer split_answer(const std::string& answer, const std::string& path) {
     std::memcpy(&length, answer.data(), sizeof length);
     if (!range_fits(sizeof length, length, answer.size()))
         throw_input_error(path, "", "web-ifc's answer is cut short");
-    check_json_input(std::string_view(answer).substr(sizeof length, length), path);
+    check_json_input(std::string_view(answer).substr(sizeof length, length), path, 1,
+                     "web-ifc's answer, parsed,");
     Answer out{json::parse(answer.substr(sizeof length, length), nullptr, false),
                std::string_view(answer).substr(sizeof length + length)};
     if (!out.header.is_object()) throw_input_error(path, "", "web-ifc's answer is not JSON");

@@ -45,14 +45,14 @@ JsonCounts count_json(std::string_view json) {
     return counts;
 }
 
-// nlohmann::json on 64-bit libstdc++: a value is 16 bytes (32 with a vector's
-// growth), an array or object 24-48 more on the heap, an object member a map
+// nlohmann::json on 64-bit libstdc++: a value is 16 bytes (48 as its array
+// grows, old and new buffer held at once), an array or object 24-48 more on the heap, an object member a map
 // node (32) with its key (32) and value, a string 32 on the heap and, past
 // 15 bytes, its bytes in an allocation of their own; 16 bytes of malloc's
 // per allocation, rounded up to 16.
 double tree_bytes(const JsonCounts& n) {
     const double values = double(n.separators + n.containers + 1);
-    return 32 * values + 64 * double(n.containers) + 96 * double(n.members) + 64 * double(n.strings) +
+    return 48 * values + 64 * double(n.containers) + 96 * double(n.members) + 64 * double(n.strings) +
            double(n.string_bytes);
 }
 
@@ -60,13 +60,11 @@ double tree_bytes(const JsonCounts& n) {
 
 double json_tree_bytes(std::string_view json) { return tree_bytes(count_json(json)); }
 
-void check_json_input(std::string_view json, const std::string& file, int trees) {
+void check_json_input(std::string_view json, const std::string& file, double trees, const std::string& what) {
     const JsonCounts counts = count_json(json);
     if (counts.too_deep_at != std::string_view::npos)
         throw_input_error(file, "byte " + std::to_string(counts.too_deep_at), "JSON " + nesting_message());
-    check_memory(
-        file + ": its JSON, parsed" + (trees > 1 ? " (" + std::to_string(trees) + " trees at once)" : ""),
-        trees * tree_bytes(counts));
+    check_memory(file + ": " + what, trees * tree_bytes(counts));
 }
 
 }  // namespace boxlod

@@ -9,12 +9,13 @@
 
 namespace boxlod {
 
-// An upper estimate of the bytes of nlohmann-json's tree of `json` (a scan
-// without recursion: brackets, separators and strings outside strings).
+// An upper estimate of the bytes nlohmann-json's tree of `json` takes while
+// parsed (a scan without recursion: brackets, separators and strings outside strings).
 double json_tree_bytes(std::string_view json);
 
 // Throws InputError naming `file`: "byte N: JSON nested more than ..." or
-// "its JSON, parsed (`trees` trees at once), would need N GB, more than ...".
-void check_json_input(std::string_view json, const std::string& file, int trees = 1);
+// "`what` would need N GB, more than ..." for `trees` times the tree.
+void check_json_input(std::string_view json, const std::string& file, double trees = 1,
+                      const std::string& what = "its JSON, parsed,");
 
 }  // namespace boxlod

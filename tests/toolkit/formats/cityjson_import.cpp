@@ -352,9 +352,14 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     holding["CityObjects"] = feature("c", 0)["CityObjects"];
     test::write_text(path, holding.dump() + "\n" + feature("a", 0).dump() + "\n");
     EXPECT_NE(test::input_error_of([&] { load_model(path.string()); })
-                  .find("two.city.jsonl: line 1: CityObjects not empty: a CityJSONSeq's first line holds the "
-                        "metadata"),
+                  .find("two.city.jsonl: line 1: CityObjects is not empty: a CityJSONSeq's first line holds "
+                        "the metadata"),
               std::string::npos);
+    holding["CityObjects"] = 5;  // not an object at all
+    test::write_text(path, holding.dump() + "\n" + feature("a", 0).dump() + "\n");
+    EXPECT_NE(
+        test::input_error_of([&] { load_model(path.string()); }).find("line 1: CityObjects is not empty"),
+        std::string::npos);
 }
 
 // FILE#OBJECT reads one object of a city file, at the whole file's origin;

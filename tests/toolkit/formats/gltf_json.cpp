@@ -43,7 +43,8 @@ std::string tinygltf_text(const tinygltf::Model& document, bool binary) {
     tinygltf::TinyGLTF writer;
     writer.SetImageWriter(nullptr, nullptr);
     std::ostringstream stream;
-    const tinygltf::Model with_values = with_extras_values(document);
+    tinygltf::Model with_values = with_extras_values(document);
+    with_values.buffers.at(0).uri.clear();  // a .gltf's .bin file name: gltf_text takes buffer 0's uri apart
     writer.WriteGltfSceneToStream(&with_values, stream, false, binary);
     return stream.str();
 }

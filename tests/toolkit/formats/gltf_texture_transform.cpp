@@ -105,3 +105,33 @@ TEST(GltfTextureTransform, MapsBoxlodCannotDrawAreRefused) {
     file.base()["extensions"]["KHR_texture_transform"] = {{"rotation", "quarter"}};
     EXPECT_NE(file.problem().find("rotation"), std::string::npos) << file.problem();
 }
+
+TEST(GltfTextureTransform, TheTexturesOfMaterialExtensionsArePlacedAndCheckedToo) {
+    QuadFile file("texture_transform_nested");
+    const json transform = {{"offset", {0.5, 0}}};
+    // Specular-glossiness' diffuse replaces the base colour: only its map counts beside the normal map's.
+    file.document["materials"][0]["extensions"]["KHR_materials_pbrSpecularGlossiness"] = {
+        {"diffuseTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}};
+    file.normal()["extensions"]["KHR_texture_transform"] = transform;
+    std::vector<Eigen::Vector2f> uvs = file.uvs_read();
+    ASSERT_EQ(uvs.size(), 4u);
+    EXPECT_EQ(uvs[1], Eigen::Vector2f(1.5f, 0));
+    // An identity map is no map: it agrees with a texture without one.
+    file.normal()["extensions"]["KHR_texture_transform"] = {{"offset", {0, 0}}};
+    json& diffuse =
+        file.document["materials"][0]["extensions"]["KHR_materials_pbrSpecularGlossiness"]["diffuseTexture"];
+    diffuse.erase("extensions");
+    EXPECT_EQ(file.uvs_read()[1], Eigen::Vector2f(1, 0));
+    // Its coordinate set and its values are checked as a texture info's of the material's own.
+    diffuse["texCoord"] = 1;
+    EXPECT_NE(file.problem().find("TEXCOORD_1"), std::string::npos) << file.problem();
+    diffuse.erase("texCoord");
+    diffuse["extensions"]["KHR_texture_transform"] = {{"offset", 5}};
+    EXPECT_NE(file.problem().find("KHR_texture_transform.offset: expected two numbers"), std::string::npos)
+        << file.problem();
+    diffuse["extensions"]["KHR_texture_transform"] = {{"rotation", 1e300}};
+    EXPECT_NE(file.problem().find(
+                  "KHR_texture_transform.rotation expected a number in [-1000000, 1000000], got '1e+300'"),
+              std::string::npos)
+        << file.problem();
+}
