@@ -127,11 +127,10 @@ int texture_index(const CityPlace& at, CityReadState& s, std::size_t t) {
     if (!textures || !textures->is_array())
         at.fail("texture " + std::to_string(t) + " but the appearance has no 'textures'");
     const json& texture = (*textures)[index_in(at, json(t), textures->size(), "texture index")];
-    if (!texture.is_object() || !texture.contains("image") || !texture["image"].is_string())
-        at.fail("appearance: texture " + std::to_string(t) + " has no 'image'");
+    if (!texture.is_object() || !texture.contains("image") || !texture["image"].is_string() ||
+        texture["image"].get_ref<const std::string&>().find('\0') != std::string::npos)  // read up to it
+        at.fail("appearance: texture " + std::to_string(t) + " has no 'image' (a file name, without NUL)");
     const std::string image = texture["image"].get<std::string>();
-    if (image.find('\0') != std::string::npos)  // the file system would read the name up to it
-        at.fail("appearance: texture " + std::to_string(t) + "'s image name holds a NUL character");
     const fs::path path = fs::path(s.file).parent_path() / image;
     std::error_code error;
     int index = -1;
@@ -193,10 +192,9 @@ struct SurfaceNodes {
 int surface_node(const CityPlace& at, CityReadState& s, SurfaceNodes& nodes, std::size_t surface,
                  std::size_t depth = 0) {
     if (auto known = nodes.node_of.find(surface); known != nodes.node_of.end()) return known->second;
-    if (depth > nodes.surfaces->size())
-        at.fail("semantics: the parents of surface " + std::to_string(surface) + " form a cycle");
-    if (depth > std::size_t(max_nesting_depth))
-        at.fail("semantics: surface " + std::to_string(surface) + "'s parents " + nesting_message());
+    if (depth > nodes.surfaces->size() || depth > std::size_t(max_nesting_depth))
+        at.fail("semantics: surface " + std::to_string(surface) + "'s parents " +
+                (depth > nodes.surfaces->size() ? "form a cycle" : nesting_message()));
     const json& entry = (*nodes.surfaces)[surface];
     if (!entry.is_object() || !entry.contains("type") || !entry["type"].is_string())
         at.fail("semantics: surface " + std::to_string(surface) + " has no type");

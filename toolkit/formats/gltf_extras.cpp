@@ -3,7 +3,6 @@
 #include "base/input_error.h"
 #include "base/key_values.h"
 #include "base/utf8.h"
-#include "toolkit/formats/gltf_texture_transform.h"
 #include "toolkit/formats/json_text.h"
 
 #include <algorithm>
@@ -255,7 +254,7 @@ tinygltf::Value texture_info(int index) {
 struct ExtensionReader {
     const tinygltf::Value& extension;
     ExtrasPlace here;
-    const std::function<int(int, int)>& texture_image;
+    const TextureOfInfo& texture_image;
 
     // N numbers in [min, max], or `defaults` when the field is absent.
     template <int N>
@@ -285,12 +284,12 @@ struct ExtensionReader {
         const double index = info.Get("index").GetNumberAsDouble();
         if (!(index >= 0 && index <= 1e9))
             throw_input_error(here.file, here.place + " " + field, "texture index out of range");
-        return texture_image(int(index), tex_coord_read(info));
+        return texture_image(int(index), info);
     }
 };
 
 ExtensionReader extension_reader(const tinygltf::Value& extension, const ExtrasPlace& at, const char* name,
-                                 const std::function<int(int, int)>& texture_image) {
+                                 const TextureOfInfo& texture_image) {
     ExtensionReader reader{extension, {at.file, at.place + " " + name}, texture_image};
     if (!extension.IsObject()) throw_input_error(reader.here.file, reader.here.place, "expected an object");
     return reader;
@@ -314,7 +313,7 @@ tinygltf::Value specular_glossiness_extension(const Material& material, int diff
 }
 
 void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
-                              const std::function<int(int, int)>& texture_image, Material& material) {
+                              const TextureOfInfo& texture_image, Material& material) {
     const ExtensionReader in = extension_reader(extension, at, specular_glossiness_name, texture_image);
     material.base_color = in.factors<4>("diffuseFactor", Eigen::Vector4f(1, 1, 1, 1), unit_range);
     material.specular_color = in.factors<3>("specularFactor", Eigen::Vector3f(1, 1, 1), unit_range);
@@ -335,7 +334,7 @@ tinygltf::Value specular_extension_value(const SpecularExtension& specular, int 
 }
 
 SpecularExtension read_specular_extension(const tinygltf::Value& extension, const ExtrasPlace& at,
-                                          const std::function<int(int, int)>& texture_image) {
+                                          const TextureOfInfo& texture_image) {
     const ExtensionReader in = extension_reader(extension, at, specular_extension_name, texture_image);
     SpecularExtension specular;
     specular.factor = in.factor("specularFactor", 1);

@@ -46,6 +46,9 @@ void read_node_extras(const tinygltf::Value& extras, const ExtrasPlace& at, Node
 void read_primitive_extras(const tinygltf::Value& extras, const ExtrasPlace& at,
                            Primitive& primitive);  // after its indices
 
+// boxlod's texture of a glTF texture index, given the texture info (a material extension's Value) naming it.
+using TextureOfInfo = std::function<int(int index, const tinygltf::Value& texture_info)>;
+
 // KHR_materials_pbrSpecularGlossiness (KhronosGroup/glTF, extensions/2.0/Archived)
 // for a material with `specular_glossiness`: diffuse = base colour, specular =
 // the Phong specular colour, glossiness from the shininess. Texture indices are glTF's (< 0: none).
@@ -53,16 +56,16 @@ constexpr const char* specular_glossiness_name = "KHR_materials_pbrSpecularGloss
 tinygltf::Value specular_glossiness_extension(const Material& material, int diffuse_texture,
                                               int specular_texture);
 // Reads that extension into `material` (every factor in [0, 1] as the extension
-// requires); `texture_image` maps a glTF texture index and the coordinate set it reads to boxlod's texture.
+// requires).
 void read_specular_glossiness(const tinygltf::Value& extension, const ExtrasPlace& at,
-                              const std::function<int(int, int)>& texture_image, Material& material);
+                              const TextureOfInfo& texture_image, Material& material);
 
 // KHR_materials_specular (KhronosGroup/glTF, extensions/2.0/Khronos): kept as
 // read (Material::specular_extension) and written back; texture indices are glTF's.
 constexpr const char* specular_extension_name = "KHR_materials_specular";
 tinygltf::Value specular_extension_value(const SpecularExtension& specular, int texture, int color_texture);
 SpecularExtension read_specular_extension(const tinygltf::Value& extension, const ExtrasPlace& at,
-                                          const std::function<int(int, int)>& texture_image);
+                                          const TextureOfInfo& texture_image);
 
 // The Blinn-Phong exponent n and glossiness g = 1 - roughness, with
 // alpha = roughness^2 and n = 2 / alpha^2 - 2 (B. Karis, "Specular BRDF

@@ -292,7 +292,9 @@ Texture convert_image(const tinygltf::Image& in, bool height_map, const Reader& 
 // The material extensions boxlod keeps: specular-glossiness and KHR_materials_specular.
 void read_material_extensions(const Reader& reader, const tinygltf::Material& in, const std::string& place,
                               Material& material) {
-    auto texture = [&](int index, int tex_coord) { return texture_image(reader, index, tex_coord, place); };
+    auto texture = [&](int index, const tinygltf::Value& info) {
+        return texture_image(reader, index, tex_coord_read(info), place);
+    };
     if (auto extension = in.extensions.find(specular_glossiness_name); extension != in.extensions.end())
         read_specular_glossiness(extension->second, {reader.file, place}, texture, material);
     if (auto extension = in.extensions.find(specular_extension_name); extension != in.extensions.end())

@@ -133,7 +133,7 @@ TEST(CityJsonImport, AWindowSitsUnderTheWallItIsCutFrom) {
         });
     };
     EXPECT_NE(parents_problem({{{"type", "WallSurface"}, {"parent", 1}}, {{"type", "Window"}, {"parent", 0}}})
-                  .find("semantics: the parents of surface 1 form a cycle"),
+                  .find("semantics: surface 1's parents form a cycle"),
               std::string::npos);
     json chain = json::array();
     for (int i = 0; i < 300; ++i) chain.push_back({{"type", "Window"}, {"parent", i + 1}});
@@ -201,7 +201,7 @@ TEST(CityJsonImport, TexturedSurfacesAndAMissingImage) {
     test::write_text(folder / "nul.city.json", file.dump());
     EXPECT_NE(test::input_error_of([&] {
                   import_cityjson((folder / "nul.city.json").string());
-              }).find("appearance: texture 1's image name holds a NUL character"),
+              }).find("appearance: texture 1 has no 'image' (a file name, without NUL)"),
               std::string::npos);
 }
 
