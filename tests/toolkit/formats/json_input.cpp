@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/memory_budget.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 #include <malloc.h>
@@ -32,12 +33,7 @@ double heap_bytes_of_tree(const std::string& text) {
 }
 
 std::string problem(const std::string& text) {
-    try {
-        check_json_input(text, "f.json");
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    return "";
+    return test::input_error_of([&] { check_json_input(text, "f.json"); });
 }
 
 }  // namespace
