@@ -11,7 +11,6 @@ namespace {
 // What one scan counts of a JSON text, outside strings but for their lengths.
 struct JsonCounts {
     std::uint64_t containers = 0, separators = 0, members = 0, strings = 0, string_bytes = 0;
-    int deepest = 0;
     std::size_t too_deep_at = std::string_view::npos;  // the byte of the first bracket past max_nesting_depth
 };
 
