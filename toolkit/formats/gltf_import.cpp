@@ -10,6 +10,7 @@
 #include "base/parallel.h"
 #include "base/utf8.h"
 #include "renderer/image.h"
+#include "toolkit/formats/gltf_accessor_reader.h"
 #include "toolkit/formats/gltf_extras.h"
 #include "toolkit/formats/gltf_json.h"
 #include "toolkit/formats/gltf_load.h"
@@ -30,118 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Reader {
-    const tinygltf::Model& gltf;
-    const std::string& file;
-
-    [[noreturn]] void fail(const std::string& place, const std::string& what) const {
-        throw_input_error(file, place, what);
-    }
-
-    // Bytes of accessor `index`, checked against its buffer view and buffer.
-    struct View {
-        const unsigned char* data;
-        std::size_t stride, count;
-        int component_type, components;
-        bool normalized;
-    };
-    View view(int index, const std::string& place) const {
-        if (index < 0 || index >= int(gltf.accessors.size()))
-            fail(place, "accessor " + std::to_string(index) + " out of range");
-        const tinygltf::Accessor& accessor = gltf.accessors[index];
-        std::string where = place + " accessor " + std::to_string(index);
-        if (accessor.sparse.isSparse) fail(where, "sparse accessors are not supported");
-        if (accessor.bufferView < 0 || accessor.bufferView >= int(gltf.bufferViews.size()))
-            fail(where, "buffer view out of range");
-        const tinygltf::BufferView& buffer_view = gltf.bufferViews[accessor.bufferView];
-        if (buffer_view.buffer < 0 || buffer_view.buffer >= int(gltf.buffers.size()))
-            fail(where, "buffer out of range");
-        const tinygltf::Buffer& buffer = gltf.buffers[buffer_view.buffer];
-        int component_size = tinygltf::GetComponentSizeInBytes(accessor.componentType);
-        int components = tinygltf::GetNumComponentsInType(accessor.type);
-        if (component_size <= 0 || components <= 0) fail(where, "unknown component or element type");
-        std::size_t element = std::size_t(component_size) * components;
-        std::size_t stride = buffer_view.byteStride ? buffer_view.byteStride : element;
-        // glTF 2.0 spec 3.6.2.4, Data Alignment: a stride of 4 to 252 bytes, a multiple of 4.
-        if (buffer_view.byteStride && (stride < 4 || stride > 252 || stride % 4 != 0))
-            fail(where, "byteStride " + std::to_string(stride) + " is not a multiple of 4 from 4 to 252");
-        if (stride < element) fail(where, "byteStride is smaller than an element");
-        // Every size here comes from the file: checked against overflow before it is added.
-        std::size_t needed = 0;
-        if (accessor.count > 0 &&
-            (!checked_multiply(accessor.count - 1, stride, needed) || needed > SIZE_MAX - element))
-            fail(where, "count " + std::to_string(accessor.count) + " is larger than any buffer");
-        if (accessor.count > 0) needed += element;
-        if (!range_fits(buffer_view.byteOffset, buffer_view.byteLength, buffer.data.size()) ||
-            !range_fits(accessor.byteOffset, needed, buffer_view.byteLength))
-            fail(where, "data runs past the end of its buffer (truncated file?)");
-        return {buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset,
-                stride,
-                accessor.count,
-                accessor.componentType,
-                components,
-                accessor.normalized};
-    }
-
-    static double component(const unsigned char* p, int type, bool normalized) {
-        switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0 : *p;
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            auto v = double(std::int8_t(*p));
-            return normalized ? std::max(v / 127.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            std::uint16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? v / 65535.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            std::int16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            std::uint32_t v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        default: return 0;
-        }
-    }
-
-    template <int N>
-    std::vector<Eigen::Matrix<double, N, 1>> vectors(int index, const std::string& place) const {
-        View v = view(index, place);
-        if (v.components != N)
-            fail(place + " accessor " + std::to_string(index),
-                 "expected " + std::to_string(N) + " components");
-        int size = tinygltf::GetComponentSizeInBytes(v.component_type);
-        std::vector<Eigen::Matrix<double, N, 1>> out(v.count);
-        for (std::size_t i = 0; i < v.count; ++i)
-            for (int c = 0; c < N; ++c)
-                out[i][c] = component(v.data + i * v.stride + c * size, v.component_type, v.normalized);
-        return out;
-    }
-
-    std::vector<std::uint32_t> indices(int index, const std::string& place) const {
-        View v = view(index, place);
-        if (v.components != 1 || !(v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                   v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-                                   v.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail(place, "indices must be unsigned integer scalars");
-        int size = tinygltf::GetComponentSizeInBytes(v.component_type);
-        std::vector<std::uint32_t> out(v.count);
-        for (std::size_t i = 0; i < v.count; ++i)
-            out[i] = std::uint32_t(component(v.data + i * v.stride, v.component_type, false));
-        (void)size;
-        return out;
-    }
-};
+using Reader = GltfAccessorReader;
 
 // glTF 2.0, 5.25 "node": a 16-number matrix, or translation (3), a unit
 // rotation quaternion (4) and scale (3).
@@ -187,11 +77,15 @@ std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, i
     return out;
 }
 
+bool draws_triangles(
+    const tinygltf::Primitive& primitive) {  // points and lines have no faces to draw or bake
+    return primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN || primitive.mode == -1;
+}
+
 std::size_t read_primitive(const Reader& reader, const tinygltf::Primitive& in, const Eigen::Matrix4d& world,
                            const std::string& place, Node& node) {
-    if (in.mode != TINYGLTF_MODE_TRIANGLES && in.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        in.mode != TINYGLTF_MODE_TRIANGLE_FAN && in.mode != -1)
-        return 0;  // points and lines have no faces to render or bake
+    if (!draws_triangles(in)) return 0;
     auto position = in.attributes.find("POSITION");
     if (position == in.attributes.end()) reader.fail(place, "primitive has no POSITION attribute");
     Primitive out;
@@ -416,6 +310,61 @@ std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model
     return node.children;
 }
 
+// The bounds of mesh m's drawn positions, in its own coordinates (non-finite ones left to validate_model).
+Eigen::AlignedBox3d position_bounds(const Reader& reader, int m, const std::string& place) {
+    Eigen::AlignedBox3d bounds;
+    const tinygltf::Mesh& mesh = reader.gltf.meshes[std::size_t(m)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+        auto position = mesh.primitives[p].attributes.find("POSITION");
+        if (!draws_triangles(mesh.primitives[p]) || position == mesh.primitives[p].attributes.end()) continue;
+        const std::string at = place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p);
+        for (const Eigen::Vector3d& point : reader.vectors<3>(position->second, at))
+            if (point.allFinite()) bounds.extend(point);
+    }
+    return bounds;
+}
+
+// What a model far from its file's (0, 0, 0) is read relative to, as a georeferenced IFC file is
+// (docs/design.md: Files): the middle of its bounds in whole units when it lies more than 10 km away,
+// so that float keeps millimetres; else (0, 0, 0). Chain level 0's roots give it, so that every level
+// of a chain shares it.
+Eigen::Vector3d local_origin(const Reader& reader, const std::vector<int>& roots) {
+    const tinygltf::Model& gltf = reader.gltf;
+    std::vector<std::optional<Eigen::AlignedBox3d>> mesh_bounds(gltf.meshes.size());
+    std::vector<char> reached(gltf.nodes.size(), 0);
+    Eigen::AlignedBox3d bounds;
+    std::vector<std::pair<int, Eigen::Matrix4d>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, Eigen::Matrix4d::Identity()});
+    while (!stack.empty()) {
+        const auto [n, parent_world] = stack.back();
+        stack.pop_back();
+        if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;  // read_nodes says why
+        reached[std::size_t(n)] = 1;
+        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
+        const std::string place = "node " + std::to_string(n);
+        const Eigen::Matrix4d world = parent_world * local_transform(node, reader, place);
+        if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
+        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) {
+            std::optional<Eigen::AlignedBox3d>& local = mesh_bounds[std::size_t(node.mesh)];
+            if (!local) local = position_bounds(reader, node.mesh, place);
+            for (int c = 0; c < 8 && !local->isEmpty(); ++c)
+                bounds.extend(world.topLeftCorner<3, 3>() *
+                                  local->corner(Eigen::AlignedBox3d::CornerType(c)) +
+                              world.topRightCorner<3, 1>());
+        }
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, world});
+    }
+    const Eigen::Vector3d middle =
+        bounds.isEmpty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(bounds.center());
+    if (!(middle.allFinite() && (middle.array().abs() <= coordinate_range.max).all()))
+        reader.fail("scene", "its middle lies at (" + format_number(middle.x()) + ", " +
+                                 format_number(middle.y()) + ", " + format_number(middle.z()) +
+                                 "), outside " + range_text(coordinate_range));
+    return middle.norm() > 1e4 ? Eigen::Vector3d(middle.array().round()) : Eigen::Vector3d::Zero();
+}
+
 // Level K of a chain: the scene's one root, or the K-th of its MSFT_lod.ids.
 std::vector<int> chain_level_roots(const Reader& reader, const std::vector<int>& roots, int chain_level) {
     if (chain_level == 0) return roots;
@@ -464,7 +413,8 @@ void read_mesh(const Reader& reader, int m, const Eigen::Matrix4d& world, const 
 // The node tree under the roots (several roots get a common one, named after
 // the file), geometry in world space; depth-first, parents before children,
 // with an explicit stack so that a deep chain cannot overflow.
-void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& model) {
+void read_nodes(const Reader& reader, const std::vector<int>& roots, const Eigen::Vector3d& origin,
+                Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
     // Meshes used by more than one node of the scene are instances (the nodes
     // a file keeps outside it, such as MSFT_lod's coarser levels, do not count).
@@ -486,8 +436,10 @@ void read_nodes(const Reader& reader, const std::vector<int>& roots, Model& mode
     };
     std::vector<Visit> stack;
     if (roots.size() > 1) add_node(model, -1, utf8_or_latin1(fs::path(reader.file).stem().string()));
+    Eigen::Matrix4d relative_to_origin = Eigen::Matrix4d::Identity();
+    relative_to_origin.topRightCorner<3, 1>() = -origin;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-        stack.push_back({*it, roots.size() > 1 ? 0 : -1, Eigen::Matrix4d::Identity()});
+        stack.push_back({*it, roots.size() > 1 ? 0 : -1, relative_to_origin});
     std::vector<bool> visited(gltf.nodes.size(), false);
     double meshes_memory = 0;
     while (!stack.empty()) {
@@ -537,9 +489,10 @@ Model import_gltf_bytes(std::string_view bytes, bool binary, const std::string& 
     read_textures(reader, model);
     read_materials(reader, model);
     read_asset_extras(gltf.asset.extras, model);
-    read_nodes(reader,
-               chain_level_roots(reader, take_origin(reader, scene_roots(reader), model), chain_level),
-               model);
+    const std::vector<int> roots = take_origin(reader, scene_roots(reader), model);
+    const Eigen::Vector3d origin = local_origin(reader, chain_level_roots(reader, roots, 0));
+    read_nodes(reader, chain_level_roots(reader, roots, chain_level), origin, model);
+    model.origin += origin;
     place_texture_coordinates(gltf, path, model);
     make_unit_normals_and_tangents(model);
     validate_model(model);

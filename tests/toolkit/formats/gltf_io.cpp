@@ -534,6 +534,35 @@ TEST(GltfIo, TransformsAreAppliedAndSharedMeshesExpanded) {
     EXPECT_EQ(model.nodes[1].instance_of, "tri");
     EXPECT_EQ(model.nodes[2].instance_of, "tri");
     EXPECT_EQ(a.polygon_count, 1u);
+    EXPECT_TRUE(model.origin.isZero());  // 10 m from the file's origin: no local one
+}
+
+// A triangle placed 5,000 km out, as georeferenced exports place a building: read relative to
+// the middle of its bounds in whole metres, so float keeps its millimetres (at 4e6 m a float
+// steps by 0.25 m), and written back with that origin on the root.
+TEST(GltfIo, AModelFarFromItsFilesOriginIsReadRelativeToALocalOne) {
+    auto folder = test::scratch_folder("gltf_far");
+    const std::string nodes = R"(, "nodes": [{"translation": [4000000.3, 100, -3000000.2], "children": [1]},
+                {"mesh": 0, "translation": [0.001, 0, 0]}], "scenes": [{"nodes": [0]}])";
+    test::write_text(folder / "far.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + nodes));
+    Model model = load_model((folder / "far.gltf").string());
+    EXPECT_EQ(model.origin, Eigen::Vector3d(4000001, 101, -3000000));  // the middle, 4000000.801, 100.5, ...
+    const Primitive& triangle = model.nodes.at(1).primitives.at(0);
+    EXPECT_TRUE(triangle.positions[0].isApprox(Eigen::Vector3f(-0.699f, -1, -0.2f), 1e-6f));
+    EXPECT_TRUE(triangle.positions[1].isApprox(Eigen::Vector3f(0.301f, -1, -0.2f), 1e-6f));
+    save_model(model, (folder / "back.glb").string());
+    const Model back = load_model((folder / "back.glb").string());
+    EXPECT_EQ(back.origin, model.origin);
+    EXPECT_EQ(back.nodes.at(1).primitives.at(0).positions, triangle.positions);
+
+    const std::string beyond =
+        R"(, "nodes": [{"mesh": 0, "translation": [2e9, 0, 0]}], "scenes": [{"nodes": [0]}])";
+    test::write_text(folder / "beyond.gltf", gltf_with_buffer(triangle_bytes(), triangle_mesh + beyond));
+    const std::string message = expect_input_error((folder / "beyond.gltf").string());
+    EXPECT_NE(
+        message.find(": scene: its middle lies at (2000000000.5, 0.5, 0), outside [-1000000000, 1000000000]"),
+        std::string::npos)
+        << message;
 }
 
 TEST(GltfIo, SeveralRootNodesGetOneRootNamedAfterTheFile) {
