@@ -22,28 +22,7 @@ namespace boxlod {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-// The LoD of a geometry as the file spells it (numbers as their shortest text).
-std::string city_geometry_lod(const json& geometry) {
-    auto lod = geometry.find("lod");
-    if (lod == geometry.end()) return "";
-    if (lod->is_string()) return lod->get<std::string>();
-    if (!lod->is_number()) return "";
-    std::ostringstream text;
-    text << lod->get<double>();
-    return text.str();
-}
-
-double city_lod_number(const std::string& lod) {
-    char* end = nullptr;
-    const double value = std::strtod(lod.c_str(), &end);
-    return end != lod.c_str() && std::isfinite(value) ? value : -1;
-}
-
 namespace {
-
-bool same_lod(const std::string& a, const std::string& b) {
-    return a == b || (city_lod_number(a) >= 0 && city_lod_number(a) == city_lod_number(b));
-}
 
 // A value of the semantics, material or texture tree one level down: an
 // array's entry i, a single value for all, or nothing.
@@ -386,10 +365,6 @@ int surface_depth(const CityPlace& at, const std::string& type) {
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
                    const std::vector<Eigen::Vector3d>& vertices, bool in_template = false);
 
-// Instances copy their template: memory and time grow as instances x template, which the file's size does
-// not bound. A polygon point's share of the model: its vertex, its triangles' indices, its vertex map entry.
-constexpr double bytes_per_instanced_point = 160;
-
 std::vector<Eigen::Vector3d> read_template_points(const CityPlace& at, const json& points) {
     std::vector<Eigen::Vector3d> read;
     for (const json& p : points) {
@@ -400,7 +375,7 @@ std::vector<Eigen::Vector3d> read_template_points(const CityPlace& at, const jso
     return read;
 }
 
-// The point indices a template's boundaries name, each once (read_geometry refuses what is not one).
+// The point indices a template's boundaries name, repeats kept (read_geometry refuses what is not one).
 void collect_point_indices(const json& boundaries, int depth, std::vector<std::size_t>& indices) {
     if (depth > max_nesting_depth) return;
     for (const json& b : boundaries) {
@@ -410,15 +385,20 @@ void collect_point_indices(const json& boundaries, int depth, std::vector<std::s
 }
 
 // Those of a surface template only: a point or line template draws nothing (read_geometry).
-const std::vector<std::size_t>& points_of_template(const CityPlace& at, CityReadState& s, std::size_t t,
-                                                   const json& shape) {
+std::vector<std::size_t> surface_point_indices(const json& shape) {
+    std::vector<std::size_t> indices;
+    if (!shape.is_object() || !shape.contains("boundaries") || !shape["boundaries"].is_array())
+        return indices;
+    const std::string type = shape.contains("type") && shape["type"].is_string() ? shape["type"] : json("");
+    for (const char* surfaces : {"MultiSurface", "CompositeSurface", "Solid", "MultiSolid", "CompositeSolid"})
+        if (type == surfaces) collect_point_indices(shape["boundaries"], 0, indices);
+    return indices;
+}
+
+const std::vector<std::size_t>& points_of_template(CityReadState& s, std::size_t t, const json& shape) {
     auto known = s.points_of_template.find(t);
     if (known != s.points_of_template.end()) return known->second;
-    std::vector<std::size_t> indices;
-    if (shape.is_object() && shape.contains("type") && shape["type"].is_string() &&
-        surface_depth(at, shape["type"].get<std::string>()) > 0 && shape.contains("boundaries") &&
-        shape["boundaries"].is_array())
-        collect_point_indices(shape["boundaries"], 0, indices);
+    std::vector<std::size_t> indices = surface_point_indices(shape);
     std::sort(indices.begin(), indices.end());
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
     return s.points_of_template[t] = std::move(indices);
@@ -463,7 +443,7 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
-    const std::vector<std::size_t>& named = points_of_template(at.in("template"), s, t, shape);
+    const std::vector<std::size_t>& named = points_of_template(s, t, shape);
     s.placed.resize(s.template_points.size());
     // Only the points this template names: the pool is all templates' (time: instances x template).
     for (std::size_t i : named) {
@@ -507,6 +487,8 @@ void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, 
 }
 
 }  // namespace
+
+std::size_t city_template_points(const json& shape) { return surface_point_indices(shape).size(); }
 
 CityGeometryReader::CityGeometryReader(Model& model, const std::string& file, const Eigen::Vector3d& origin)
     : state_(std::make_unique<CityReadState>(model, file, origin)) {}
@@ -555,19 +537,12 @@ int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, c
     auto geometries = object.find("geometry");
     if (geometries == object.end()) return node;
     if (!geometries->is_array()) here.fail("'geometry' is not an array");
-    double finest = -INFINITY;
-    for (const json& geometry : *geometries) {
+    for (const json& geometry : *geometries)
         if (!city_geometry_lod(geometry).empty()) s.lods.insert(city_geometry_lod(geometry));
-        finest = std::max(finest, city_lod_number(city_geometry_lod(geometry)));
-    }
-    bool read = false;
-    for (std::size_t g = 0; g < geometries->size(); ++g) {
-        const std::string own = city_geometry_lod((*geometries)[g]);
-        if (lod.empty() ? city_lod_number(own) != finest : !same_lod(own, lod)) continue;
+    const std::vector<std::size_t> chosen = city_geometries_of_lod(*geometries, lod);
+    for (std::size_t g : chosen)
         read_geometry(here.in("geometry " + std::to_string(g)), s, (*geometries)[g], node, *s.vertices);
-        read = true;
-    }
-    if (!read && !geometries->empty()) ++s.without_lod;
+    if (chosen.empty() && !geometries->empty()) ++s.without_lod;
     return node;
 }
 

@@ -2,6 +2,7 @@
 // toolkit/formats/cityjson_import.cpp (CityJSON 2.0, sections "Geometry
 // objects", "Semantics of geometric primitives" and "Appearance object").
 #pragma once
+#include "toolkit/formats/cityjson_lod.h"
 #include "toolkit/formats/cityjson_place.h"
 #include "toolkit/model/model.h"
 
@@ -21,10 +22,13 @@ struct CityReadState;  // what the reading has made so far (the .cpp's)
 // CRS on Earth, far within what double arithmetic on it keeps finite.
 constexpr double max_city_coordinate = 1e12;
 
-// The LoD of a geometry as the file spells it (numbers as their shortest
-// text: 2 -> "2"), "" without one; and as a number (-1 if it is none).
-std::string city_geometry_lod(const nlohmann::json& geometry);
-double city_lod_number(const std::string& lod);
+// Instances copy their template: memory and time grow as instances x template, which the file's size does
+// not bound. A polygon point's share of the model: its vertex, its triangles' indices, its vertex map entry.
+constexpr double bytes_per_instanced_point = 160;
+
+// The points a template's surfaces name, repeats counted: what each instance of it copies (0 for a point
+// or line template, which draws nothing).
+std::size_t city_template_points(const nlohmann::json& shape);
 
 // Reads objects into `model` one document at a time: start_part with the
 // document's vertices (in the file's coordinates) and appearance, then

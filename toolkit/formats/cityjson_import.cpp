@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "base/utf8.h"
 #include "toolkit/formats/cityjson_geometry.h"
 #include "toolkit/formats/json_input.h"
@@ -211,6 +212,39 @@ std::map<std::string, std::string> parents_of(const CityPlace& at, const json& o
     return parent;
 }
 
+// Each GeometryInstance the reading draws copies its template's points (cityjson_geometry.h): their
+// count is checked against the memory budget before any is read, not after minutes of copying.
+void check_instance_copies(const std::string& file, const std::vector<Part>& parts,
+                           const json& file_templates, const std::string& lod) {
+    double points = 0;
+    for (const Part& part : parts) {
+        auto own = part.document.find("geometry-templates");
+        const json& templates = own != part.document.end() ? *own : file_templates;
+        auto objects = part.document.find("CityObjects");
+        if (!templates.is_object() || !templates.contains("templates") ||
+            !templates["templates"].is_array() || objects == part.document.end() || !objects->is_object())
+            continue;  // an instance without templates is refused as it is read
+        const json& list = templates["templates"];
+        std::vector<std::optional<std::size_t>> copied(list.size());  // each template's points, counted once
+        for (const auto& [id, object] : objects->items()) {
+            auto geometries = object.is_object() ? object.find("geometry") : object.end();
+            if (!object.is_object() || geometries == object.end() || !geometries->is_array()) continue;
+            for (std::size_t g : city_geometries_of_lod(*geometries, lod)) {
+                const json& geometry = (*geometries)[g];
+                auto t = geometry.is_object() ? geometry.find("template") : geometry.end();
+                if (!geometry.is_object() || t == geometry.end() || !t->is_number_unsigned() ||
+                    t->get<std::size_t>() >= list.size() || geometry.value("type", "") != "GeometryInstance")
+                    continue;
+                std::optional<std::size_t>& count = copied[t->get<std::size_t>()];
+                if (!count) count = city_template_points(list[t->get<std::size_t>()]);
+                points += double(*count);
+            }
+        }
+    }
+    check_memory(file + ": the GeometryInstances' copies of their templates",
+                 points * bytes_per_instanced_point);
+}
+
 }  // namespace
 
 Model import_cityjson(const std::string& path, const std::string& lod) {
@@ -223,6 +257,7 @@ Model import_cityjson_bytes(std::string_view bytes, const std::string& path, con
     std::string reference_system;
     json file_templates;
     std::vector<Part> parts = read_parts(bytes, path, &reference_system, &file_templates);
+    check_instance_copies(path, parts, file_templates, lod);
     const Eigen::Vector3d origin = local_origin({path, ""}, parts);
     Model model;
     model.source = path;

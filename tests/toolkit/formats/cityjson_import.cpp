@@ -1,5 +1,6 @@
 #include "toolkit/formats/cityjson_import.h"
 
+#include "base/memory_budget.h"
 #include "renderer/image.h"
 #include "test_support.h"
 #include "toolkit/formats/gltf_io.h"
@@ -301,6 +302,40 @@ TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
     const Model seq = load_model(path.string());
     EXPECT_NEAR(area(seq.nodes[std::size_t(node_named(seq, "a"))]), 4.5, 1e-5);
     EXPECT_NEAR(area(seq.nodes[std::size_t(node_named(seq, "b"))]), 18, 1e-5);
+}
+
+// 100 instances of a template of 1,000 triangles copy 300,000 points, some 48 MB: over a 10 MB budget the
+// file is refused before any geometry is read (object "a", read first, would fail on its vertex index),
+// and instances of an LoD the reading leaves out do not count.
+TEST(CityJsonImport, InstancesBeyondTheMemoryBudgetAreRefusedBeforeAnyIsRead) {
+    struct BudgetScope {
+        ~BudgetScope() { set_memory_budget(0); }
+    } restore;
+    set_memory_budget(10e6);
+    json file =
+        city({{"a", building(json::array({json::array({json::array({0, 1, 99})})}))}}, square_vertices);
+    file["geometry-templates"] = {
+        {"templates", json::array({{{"type", "MultiSurface"}, {"lod", "1"}, {"boundaries", json::array()}}})},
+        {"vertices-templates", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}};
+    for (int i = 0; i < 1000; ++i)
+        file["geometry-templates"]["templates"][0]["boundaries"].push_back(
+            json::array({json::array({0, 1, 2})}));
+    const json identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    for (int i = 0; i < 100; ++i)
+        file["CityObjects"]["tree " + std::to_string(i)] = {
+            {"type", "SolitaryVegetationObject"},
+            {"geometry", json::array({{{"type", "GeometryInstance"},
+                                       {"lod", "1"},
+                                       {"template", 0},
+                                       {"boundaries", {0}},
+                                       {"transformationMatrix", identity}}})}};
+    const std::string message = test::input_error_of([&] { read(file, "instances_budget"); });
+    EXPECT_NE(message.find("instances_budget.city.json: the GeometryInstances' copies of their templates"),
+              std::string::npos)
+        << message;
+    file["CityObjects"]["a"] = building(json::array({surface(0)}));
+    file["CityObjects"]["a"]["geometry"][0]["lod"] = "2";
+    EXPECT_EQ(triangles(read(file, "instances_other_lod", "2")), 2u);
 }
 
 TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {

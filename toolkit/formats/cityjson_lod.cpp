@@ -1,0 +1,44 @@
+// A geometry's LoD (toolkit/formats/cityjson_lod.h).
+#include "toolkit/formats/cityjson_lod.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace boxlod {
+
+using json = nlohmann::json;
+
+std::string city_geometry_lod(const json& geometry) {
+    auto lod = geometry.find("lod");
+    if (lod == geometry.end()) return "";
+    if (lod->is_string()) return lod->get<std::string>();
+    if (!lod->is_number()) return "";
+    std::ostringstream text;
+    text << lod->get<double>();
+    return text.str();
+}
+
+double city_lod_number(const std::string& lod) {
+    char* end = nullptr;
+    const double value = std::strtod(lod.c_str(), &end);
+    return end != lod.c_str() && std::isfinite(value) ? value : -1;
+}
+
+std::vector<std::size_t> city_geometries_of_lod(const json& geometries, const std::string& lod) {
+    double finest = -INFINITY;
+    for (const json& geometry : geometries)
+        finest = std::max(finest, city_lod_number(city_geometry_lod(geometry)));
+    std::vector<std::size_t> chosen;
+    for (std::size_t g = 0; g < geometries.size(); ++g) {
+        const std::string own = city_geometry_lod(geometries[g]);
+        const bool same =
+            own == lod || (city_lod_number(own) >= 0 && city_lod_number(own) == city_lod_number(lod));
+        if (lod.empty() ? city_lod_number(own) == finest : same) chosen.push_back(g);
+    }
+    return chosen;
+}
+
+}  // namespace boxlod
