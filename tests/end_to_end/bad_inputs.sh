@@ -201,6 +201,9 @@ while IFS= read -r line || [ -n "$line" ]; do
   elif [ "$status" -ne 2 ]; then
     add "exit_other" "exit $status"
   fi
+  if grep -qE "cannot open a window|no display to open a window" "$err"; then
+    add "window" "view got as far as opening its window"
+  fi
   if [ "$status" -ne 0 ] && [ "$lines" -ne 1 ] && ! { [ "$status" -gt 123 ] && [ "$lines" -eq 0 ]; }; then
     add "message" "$lines lines on stderr"
   fi
@@ -263,7 +266,7 @@ while IFS= read -r line || [ -n "$line" ]; do
 done < "$manifest"
 
 summary="bad_inputs: $total cases, $passed ok, $failed failed"
-for c in crash hang exit1 exit0 exit_other message leftover; do
+for c in crash hang exit1 exit0 exit_other window message leftover; do
   [ -n "${class_count[$c]:-}" ] && summary+=", $c ${class_count[$c]}"
 done
 echo "$summary"

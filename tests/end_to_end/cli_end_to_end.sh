@@ -420,6 +420,14 @@ for args in "build HOUSE --save-params HOUSE" "build HOUSE --chain -o HOUSE" "bu
   read -r -a words <<< "${words//OWN/$work/own}"
   check "$args: refused, exit 2" test "$(SDL_VIDEODRIVER=dummy status_of "$boxlod" "${words[@]}")" = 2
 done
+# Without a display SDL falls back to an off-screen driver, where a person's viewer would wait for ever:
+# refused at once; an empty replay stops at once; a display SDL cannot open is exit 2 too.
+status=$(unset DISPLAY WAYLAND_DISPLAY; SDL_VIDEODRIVER=offscreen timeout 30 "$boxlod" view "$work/own/house.glb" --width 16 --height 16 2> "$work/view_err"; echo $?)
+check "view without a display: exit 2" test "$status" = 2
+check "and says what to do" grep -q "no display to open a window on (SDL's video driver is offscreen): set DISPLAY" "$work/view_err"
+: > "$work/own/empty_replay.txt"
+check "view --replay of an empty file stops at once, exit 0" test "$(SDL_VIDEODRIVER=offscreen timeout 30 "$boxlod" view "$work/own/house.glb" --replay "$work/own/empty_replay.txt" --width 16 --height 16 > /dev/null 2>&1; echo $?)" = 0
+check "a display SDL cannot open: exit 2" test "$(SDL_VIDEODRIVER=no_such_driver status_of "$boxlod" view "$work/own/house.glb" --width 16 --height 16)" = 2
 check "the models are as they were" bash -c "cmp -s '$work/own/house.glb' '$work/house_kept.glb' && cmp -s '$work/own/tree_L1.glb' '$work/house_kept.glb'"
 check "a build's files beside a model of another name are written" test "$(status_of "$boxlod" build "$work/own/house.glb" -o "$work/own" --name house_lod --resolution 16 --preview-width 16 --preview-height 16)" = 0
 

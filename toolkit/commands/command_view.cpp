@@ -106,15 +106,24 @@ Image8 compose(ViewerState& s, const Frame& frame) {
     return image;
 }
 
-// The SDL window showing the software-rendered frame; closed when it goes.
+// The SDL window showing the software-rendered frame; closed when it goes. No display to open it on is
+// the caller's to mend, as bad input is (exit 2); so is a person's viewer on SDL's off-screen drivers,
+// which SDL falls back to without a display and where no event would ever come.
 struct Window {
     SDL_Window* window = nullptr;
     SDL_Renderer* renderer = nullptr;
     SDL_Texture* texture = nullptr;
 
-    Window(const std::string& title, int width, int height) {
+    Window(const std::string& title, int width, int height, bool interactive) {
+        const std::string remedy = ": set DISPLAY (or WAYLAND_DISPLAY), or give --screenshot or --replay";
         if (sdl().SDL_Init(SDL_INIT_VIDEO) != 0)
-            throw std::runtime_error(std::string("cannot open a window: ") + sdl().SDL_GetError());
+            throw InputError(std::string("cannot open a window (") + sdl().SDL_GetError() + ")" + remedy);
+        const char* driver = sdl().SDL_GetCurrentVideoDriver();
+        if (interactive && driver && (std::string(driver) == "offscreen" || std::string(driver) == "dummy")) {
+            close();
+            throw InputError(std::string("no display to open a window on (SDL's video driver is ") + driver +
+                             ")" + remedy);
+        }
         window = sdl().SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
                                         width, height, 0);
         renderer = window ? sdl().SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
@@ -124,7 +133,7 @@ struct Window {
         if (!texture) {
             std::string error = sdl().SDL_GetError();
             close();
-            throw std::runtime_error("cannot open a window: " + error);
+            throw InputError("cannot open a window (" + error + ")" + remedy);
         }
     }
     ~Window() { close(); }
@@ -273,14 +282,16 @@ int run_view(const Arguments& a) {
     if (pressed("f6")) check_output_directory(a.text("export-dir"));
     if (pressed("f12") && !a.has("screenshot")) check_output_file("boxlod-view-0.png");
 
-    Window window("boxlod view " + a.positionals[0], state.width, state.height);
+    // An empty replay stops at once, as its help says.
+    const bool replaying = a.has("replay") || a.has("screenshot");
+    Window window("boxlod view " + a.positionals[0], state.width, state.height, !replaying);
     for (const ViewerEvent& e : replay) {
         SDL_Event event = to_sdl(e);
         if (sdl().SDL_PushEvent(&event) != 1)
             throw InputError(a.text("replay") + ": SDL's event queue is full");
     }
     int threads = state.settings.threads, screenshots = 0, failures = 0;
-    bool replaying = !replay.empty() || a.has("screenshot"), redraw = true;
+    bool redraw = true;
     Frame frame;
     while (!state.quit) {
         SDL_Event event;

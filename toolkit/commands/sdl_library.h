@@ -14,7 +14,7 @@ namespace boxlod {
     X(SDL_Init) X(SDL_Quit) X(SDL_GetError) X(SDL_CreateWindow) X(SDL_DestroyWindow)                \
     X(SDL_CreateRenderer) X(SDL_DestroyRenderer) X(SDL_CreateTexture) X(SDL_DestroyTexture)         \
     X(SDL_UpdateTexture) X(SDL_RenderCopy) X(SDL_RenderPresent) X(SDL_PushEvent) X(SDL_PollEvent)   \
-    X(SDL_WaitEventTimeout) X(SDL_GetKeyName) X(SDL_GetKeyFromName)
+    X(SDL_WaitEventTimeout) X(SDL_GetKeyName) X(SDL_GetKeyFromName) X(SDL_GetCurrentVideoDriver)
 // clang-format on
 
 struct SdlLibrary {
