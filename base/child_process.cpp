@@ -6,6 +6,8 @@
 #include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -55,11 +57,18 @@ void limit_address_space(std::size_t extra) {
 }
 
 [[noreturn]] void run_child(int fd, const std::function<std::string()>& work, const ChildLimits& limits,
-                            const std::string& file) {
+                            const std::string& file, pid_t parent) {
     // The parent's interrupt handlers clean up the parent's files: not the child's business. A fault
-    // kills the child by its signal, which the parent names (also under a sanitizer's handlers).
+    // kills the child by its signal, which the parent names (also under a sanitizer's handlers). The
+    // forking thread's mask (the parent waits for interrupts with them blocked) is not the child's
+    // either, and the child dies with the parent: an interrupted boxlod leaves no reader running.
     for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
         std::signal(signal, SIG_DFL);
+    sigset_t none;
+    sigemptyset(&none);
+    ::pthread_sigmask(SIG_SETMASK, &none, nullptr);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);  // it died before prctl
     // The parent's freed heap would come back to the child page by page as copies
     // (copy-on-write pages of the parent's heap count against the child); given back, it comes back as fresh
     // pages.
@@ -114,7 +123,7 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
                          const std::string& file, const std::string& reader) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-    const pid_t pid = ::fork();
+    const pid_t parent = ::getpid(), pid = ::fork();
     if (pid < 0) {
         ::close(fds[0]);
         ::close(fds[1]);
@@ -122,7 +131,7 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
     }
     if (pid == 0) {
         ::close(fds[0]);
-        run_child(fds[1], work, limits, file);
+        run_child(fds[1], work, limits, file, parent);
     }
     ::close(fds[1]);
     const auto deadline =

@@ -3,6 +3,9 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/prctl.h>
 
 #include <chrono>
 #include <csignal>
@@ -34,6 +37,26 @@ TEST(ChildProcess, TheChildsBytesComeBackAndItsChangesStayInIt) {
     EXPECT_EQ(touched_by_the_child, 0);
     const std::string large(5'000'000, 'x');  // more than a pipe holds at once
     EXPECT_EQ(run_in_child([&] { return large; }, {}, "f.ifc", "the reader"), large);
+}
+
+// boxlod waits for interrupts with them blocked; a reader forked so must still stop on SIGTERM, and it
+// dies with boxlod (a hostile-input run found an interrupted boxlod's importer spinning for ever).
+TEST(ChildProcess, TheChildTakesSignalsAndDiesWithItsParent) {
+    sigset_t terminate, before;
+    sigemptyset(&terminate);
+    sigaddset(&terminate, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &terminate, &before);
+    const std::string answer = run_in_child(
+        [] {
+            sigset_t mask;
+            pthread_sigmask(SIG_SETMASK, nullptr, &mask);
+            int death_signal = 0;
+            prctl(PR_GET_PDEATHSIG, &death_signal);
+            return std::to_string(sigismember(&mask, SIGTERM)) + " " + std::to_string(death_signal);
+        },
+        {}, "f.ifc", "the reader");
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
+    EXPECT_EQ(answer, "0 " + std::to_string(SIGKILL));
 }
 
 TEST(ChildProcess, AnInputErrorComesBackAsItWasAndOtherErrorsAsInternal) {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -38,10 +40,14 @@ std::size_t parse_count(const std::string& word, const std::string& file, const 
 
 // PLY (Turk 1994): `element NAME COUNT` lines, each followed by its properties.
 // An ASCII entry needs at least two bytes per property ("0 "); a binary one the
-// size of its scalar properties and of each list's count.
+// size of its scalar properties and of each list's count. assimp 5.2 loops for
+// ever on a header without its end, and takes seconds per thousand elements.
+constexpr int max_ply_elements = 1000;
+
 void check_ply(std::string_view bytes, const std::string& file) {
     std::size_t header_end = bytes.find("end_header");
-    if (header_end == std::string_view::npos) return;  // assimp reports it
+    if (header_end == std::string_view::npos)
+        throw_input_error(file, "", "the header has no 'end_header' line (truncated file?)");
     std::istringstream header{std::string(bytes.substr(0, header_end))};
     std::size_t body = bytes.size() - std::min(bytes.size(), header_end + 11);
     bool ascii = true;
@@ -65,12 +71,41 @@ void check_ply(std::string_view bytes, const std::string& file) {
         std::string place = "line " + std::to_string(number);
         if (keyword == "format") ascii = a == "ascii";
         if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number});
+        if (elements.size() > max_ply_elements)
+            throw_input_error(file, place, "more than " + std::to_string(max_ply_elements) + " elements");
         if (keyword == "property" && !elements.empty())
             elements.back().entry_bytes += ascii ? 2 : a == "list" ? type_bytes(b) : type_bytes(a);
     }
     for (const Element& element : elements)
         check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body, file,
                    "line " + std::to_string(element.line) + ": element '" + element.name + "'");
+}
+
+// OBJ's `mtllib NAME` (the rest of the line, beside the file): assimp opens it itself, so a FIFO there
+// would block it for ever and a folder read as "File read error"; one it does not find it skips silently.
+void check_obj_material_libraries(std::string_view bytes, const std::string& file) {
+    std::istringstream in{std::string(bytes)};
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::size_t start = line.find_first_not_of(" \t");
+        if (start == std::string::npos || line.compare(start, 7, "mtllib ") != 0) continue;
+        const std::size_t name_start = line.find_first_not_of(" \t", start + 7);
+        const std::size_t name_end = line.find_last_not_of(" \t\r");
+        if (name_start == std::string::npos) continue;
+        const std::string name = line.substr(name_start, name_end + 1 - name_start);
+        const std::filesystem::path library = std::filesystem::path(file).parent_path() / name;
+        const std::string place = "line " + std::to_string(number);
+        std::error_code error;
+        const std::filesystem::file_type type = std::filesystem::status(library, error).type();
+        if (type == std::filesystem::file_type::not_found)
+            std::fprintf(
+                stderr, "boxlod: warning: %s\n",
+                input_message(file, place, "mtllib '" + name + "' is missing: its materials are drawn grey")
+                    .c_str());
+        else if (type != std::filesystem::file_type::regular)
+            throw_input_error(file, place,
+                              "mtllib '" + name + "' is not a regular file (a folder, FIFO or device)");
+    }
 }
 
 // OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
@@ -325,6 +360,7 @@ void check_step_file(std::string_view bytes, const std::string& file, int max_de
 }
 
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
+    if (extension == ".obj") check_obj_material_libraries(bytes, file);
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);

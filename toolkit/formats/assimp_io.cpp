@@ -3,6 +3,7 @@
 #include "base/child_process.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/memory_budget.h"
 #include "base/utf8.h"
 #include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/model_bytes.h"
@@ -123,9 +124,10 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
 
 // assimp allocates whatever a header claims: while it reads, the address
 // space may grow by this much only, so a claim of 10^9 vertices in a 170-byte
-// file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine.
+// file becomes std::bad_alloc, which assimp reports, instead of exhausting the machine; never more than
+// the memory budget (--max-memory).
 std::size_t address_space_allowance(std::size_t file_bytes) {
-    return (std::size_t(2) << 30) + 256 * file_bytes;
+    return std::min((std::size_t(2) << 30) + 256 * file_bytes, std::size_t(memory_budget()));
 }
 
 // An assimp material as boxlod's: colours, opacity (blended below 1), Phong
@@ -223,7 +225,7 @@ Model import_with_assimp_in_process(const std::string& path) {
         if (reason.find("bad_alloc") != std::string::npos)
             reason = "it would need more than " +
                      std::to_string(address_space_allowance(bytes.size()) >> 20) + " MiB for a " +
-                     std::to_string(bytes.size()) + "-byte file (counts in the file too large?)";
+                     std::to_string(bytes.size()) + "-byte file (counts in the file too large, or --max-memory too small?)";
         else if (reason.starts_with("std::"))  // a bare C++ exception from deep in a reader
             reason = "malformed " + extension.substr(1) + " file (" + reason + ")";
         throw_input_error(path, "", reason.empty() ? "cannot read model" : "cannot read model: " + reason);

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <filesystem>
 #include <string>
 
 using namespace boxlod;
@@ -37,6 +40,12 @@ TEST(AssimpInputCheck, PlyCountsMustFitTheFile) {
     std::string overflow =
         "ply\nformat ascii 1.0\nelement vertex 18446744073709551615\nproperty float x\nend_header\n";
     EXPECT_NE(problem(overflow, ".ply"), "");
+    // assimp looped for ever on a header cut short, and took a minute over 400,000 empty elements.
+    EXPECT_EQ(problem("ply\nformat ascii 1.0\ncomment x", ".ply"),
+              "m.ply: the header has no 'end_header' line (truncated file?)");
+    std::string many = "ply\nformat ascii 1.0\n";
+    for (int i = 0; i < 1001; ++i) many += "element e 0\nproperty float a\n";
+    EXPECT_EQ(problem(many + "end_header\n", ".ply"), "m.ply: line 2003: more than 1000 elements");
 }
 
 TEST(AssimpInputCheck, OffCountsMustFitTheFile) {
@@ -104,4 +113,24 @@ TEST(AssimpInputCheck, IfcSpatialRelationshipsMayNotCycle) {
         "#12= IFCWALL('w',$,$,$,$,$,$,$);\n#20= IFCRELAGGREGATES('r1',$,$,$,#10,(#11));\n"
         "#21= IFCRELCONTAINEDINSPATIALSTRUCTURE('r2',$,$,$,(#12),#11);\n";
     EXPECT_EQ(problem(step(tree), ".ifc"), "");
+}
+
+// assimp opens an OBJ's material library itself: a FIFO blocked it for ever, a folder read as "File read
+// error" naming neither; one that is missing is a warning, as assimp draws its materials grey.
+TEST(AssimpInputCheck, AnObjsMaterialLibraryIsARegularFileOrMissing) {
+    const std::filesystem::path folder = test::scratch_folder("obj_mtllib");
+    std::filesystem::create_directory(folder / "folder.mtl");
+    ASSERT_EQ(::mkfifo((folder / "fifo.mtl").c_str(), 0600), 0);
+    test::write_text(folder / "real.mtl", "newmtl m\nKd 1 0 0\n");
+    const std::string file = (folder / "m.obj").string();
+    auto problem_with = [&](const std::string& library) {
+        return test::input_error_of(
+            [&] { check_assimp_input("v 0 0 0\n  mtllib " + library + " \r\nf 1 1 1\n", ".obj", file); });
+    };
+    EXPECT_EQ(problem_with("fifo.mtl"),
+              file + ": line 2: mtllib 'fifo.mtl' is not a regular file (a folder, FIFO or device)");
+    EXPECT_EQ(problem_with("folder.mtl"),
+              file + ": line 2: mtllib 'folder.mtl' is not a regular file (a folder, FIFO or device)");
+    EXPECT_EQ(problem_with("real.mtl"), "");
+    EXPECT_EQ(problem_with("missing.mtl"), "");
 }
