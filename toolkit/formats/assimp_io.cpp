@@ -225,7 +225,8 @@ Model import_with_assimp_in_process(const std::string& path) {
         if (reason.find("bad_alloc") != std::string::npos)
             reason = "it would need more than " +
                      std::to_string(address_space_allowance(bytes.size()) >> 20) + " MiB for a " +
-                     std::to_string(bytes.size()) + "-byte file (counts in the file too large, or --max-memory too small?)";
+                     std::to_string(bytes.size()) +
+                     "-byte file (counts in the file too large, or --max-memory too small?)";
         else if (reason.starts_with("std::"))  // a bare C++ exception from deep in a reader
             reason = "malformed " + extension.substr(1) + " file (" + reason + ")";
         throw_input_error(path, "", reason.empty() ? "cannot read model" : "cannot read model: " + reason);
