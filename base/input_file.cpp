@@ -11,17 +11,26 @@
 
 namespace boxlod {
 
+namespace {
+
+std::string with_article(const std::string& kind) {  // "a model file", "an image file"
+    return (kind.find_first_of("aeiou") == 0 ? "an " : "a ") + kind;
+}
+
+}  // namespace
+
 std::size_t check_input_file(const std::string& path, const std::string& kind) {
     namespace fs = std::filesystem;
-    if (path.empty()) throw_input_error("''", "", "an empty file name where a " + kind + " was expected");
+    if (path.empty())
+        throw_input_error("''", "", "an empty file name where " + with_article(kind) + " was expected");
     std::error_code error;
     fs::file_status status = fs::status(path, error);
     if (status.type() == fs::file_type::not_found) throw_input_error(path, "", "no such file");
     if (error) throw_input_error(path, "", "cannot open " + kind + ": " + error.message());
     if (status.type() == fs::file_type::directory)
-        throw_input_error(path, "", "is a directory, not a " + kind);
+        throw_input_error(path, "", "is a directory, not " + with_article(kind));
     if (status.type() != fs::file_type::regular)
-        throw_input_error(path, "", "is not a regular file (a " + kind + " was expected)");
+        throw_input_error(path, "", "is not a regular file (" + with_article(kind) + " was expected)");
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw_input_error(path, "", "cannot open " + kind + ": " + std::strerror(errno));
     std::uintmax_t size = fs::file_size(path, error);
@@ -29,7 +38,8 @@ std::size_t check_input_file(const std::string& path, const std::string& kind) {
     if (size > max_input_file_bytes)
         throw_input_error(path, "",
                           "is " + std::to_string(size >> 20) + " MiB, more than the " +
-                              std::to_string(max_input_file_bytes >> 20) + " MiB a " + kind + " may have");
+                              std::to_string(max_input_file_bytes >> 20) + " MiB " + with_article(kind) +
+                              " may have");
     return std::size_t(size);
 }
 

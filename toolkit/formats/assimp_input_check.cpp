@@ -3,10 +3,14 @@
 #include "base/input_error.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -106,6 +110,91 @@ void check_obj_material_libraries(std::string_view bytes, const std::string& fil
             throw_input_error(file, place,
                               "mtllib '" + name + "' is not a regular file (a folder, FIFO or device)");
     }
+}
+
+// An OBJ's lines as words, '#' comments left out and lines ending in '\\' joined with the next; `visit`
+// gets each line's number and words.
+void for_each_obj_line(std::string_view bytes,
+                       const std::function<void(int, const std::vector<std::string_view>&)>& visit) {
+    std::vector<std::string_view> words;
+    int number = 0, first = 1;
+    for (std::size_t start = 0; start < bytes.size();) {
+        std::size_t end = std::min(bytes.find('\n', start), bytes.size());
+        std::string_view line = bytes.substr(start, end - start);
+        start = end + 1;
+        ++number;
+        line = line.substr(0, std::min(line.find('#'), line.size()));
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
+            line.remove_suffix(1);
+        const bool continued = !line.empty() && line.back() == '\\';
+        if (continued) line.remove_suffix(1);
+        for (std::size_t i = 0; i < line.size();) {
+            const std::size_t word = line.find_first_not_of(" \t", i);
+            if (word == std::string_view::npos) break;
+            i = std::min(line.find_first_of(" \t", word), line.size());
+            words.push_back(line.substr(word, i - word));
+        }
+        if (continued) continue;
+        if (!words.empty()) visit(first, words);
+        words.clear();
+        first = number + 1;
+    }
+    if (!words.empty()) visit(first, words);
+}
+
+// OBJ (Wavefront): `v`, `vt` and `vn` numbers finite in float (assimp reads "nan", "1e39" or "0x10" as 0
+// without a word), faces of 3 or more corners ("v", "v/t", "v//n", "v/t/n"), and every index naming one
+// of the file's (1-based; negative: counted back from the latest so far): assimp drops an out-of-range
+// texture coordinate or normal index silently, and with it the material's texture.
+void check_obj(std::string_view bytes, const std::string& file) {
+    const std::array<std::string_view, 3> kinds{"v", "vt", "vn"};
+    const std::array<const char*, 3> names{"vertex", "texture coordinate", "normal"};
+    const std::array<const char*, 3> plurals{"vertices", "texture coordinates", "normals"};
+    std::array<long long, 3> total{}, so_far{};
+    for_each_obj_line(bytes, [&](int, const std::vector<std::string_view>& words) {
+        for (std::size_t k = 0; k < kinds.size(); ++k) total[k] += words[0] == kinds[k];
+    });
+    for_each_obj_line(bytes, [&](int number, const std::vector<std::string_view>& words) {
+        const std::string place = "line " + std::to_string(number);
+        for (std::size_t k = 0; k < kinds.size(); ++k) {
+            if (words[0] != kinds[k]) continue;
+            ++so_far[k];
+            for (std::size_t w = 1; w < words.size(); ++w) {
+                double value = 0;
+                std::string_view number = words[w];
+                if (number.size() > 1 && number[0] == '+' && number[1] != '-')
+                    number.remove_prefix(1);  // "+2."
+                auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+                if (error != std::errc() || end != number.data() + number.size() ||
+                    !(std::abs(value) <= std::numeric_limits<float>::max()))
+                    throw_input_error(file, place, "'" + std::string(words[w]) + "' is not a finite number");
+            }
+        }
+        if (words[0] != "f" && words[0] != "l" && words[0] != "p") return;
+        if (words[0] == "f" && words.size() < 4)
+            throw_input_error(file, place, "a face of fewer than 3 corners");
+        for (std::size_t w = 1; w < words.size(); ++w) {
+            std::string_view rest = words[w];
+            for (std::size_t k = 0; k < kinds.size() && !rest.empty(); ++k) {
+                const std::string_view index_text = rest.substr(0, std::min(rest.find('/'), rest.size()));
+                rest.remove_prefix(std::min(index_text.size() + 1, rest.size()));
+                if (index_text.empty() && k > 0) continue;  // "v//n"
+                long long index = 0;
+                auto [end, error] =
+                    std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+                const bool names_one = index > 0 ? index <= total[k] : index < 0 && -index <= so_far[k];
+                if (error != std::errc() || end != index_text.data() + index_text.size() || !names_one)
+                    throw_input_error(file, place,
+                                      "corner '" + std::string(words[w]) + "': " + names[k] + " index '" +
+                                          std::string(index_text) + "' is not one of the " +
+                                          std::to_string(index < 0 ? so_far[k] : total[k]) + " " +
+                                          plurals[k] + (index < 0 ? " before it" : " in the file"));
+            }
+            if (!rest.empty())
+                throw_input_error(file, place,
+                                  "corner '" + std::string(words[w]) + "' has more than 3 indices");
+        }
+    });
 }
 
 // OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
@@ -360,7 +449,10 @@ void check_step_file(std::string_view bytes, const std::string& file, int max_de
 }
 
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
-    if (extension == ".obj") check_obj_material_libraries(bytes, file);
+    if (extension == ".obj") {
+        check_obj(bytes, file);
+        check_obj_material_libraries(bytes, file);
+    }
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);

@@ -134,3 +134,24 @@ TEST(AssimpInputCheck, AnObjsMaterialLibraryIsARegularFileOrMissing) {
     EXPECT_EQ(problem_with("real.mtl"), "");
     EXPECT_EQ(problem_with("missing.mtl"), "");
 }
+
+// assimp read these as 0, or dropped the index and with it the material's texture, without a word.
+TEST(AssimpInputCheck, ObjNumbersAreFiniteAndItsIndicesNameWhatTheFileHas) {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+    EXPECT_EQ(problem(triangle + "f 1/1/1 2/1/1 -1/-1/-1 # a comment\nf 1//1 2//1 \\\n 3//1\n", ".obj"), "");
+    EXPECT_EQ(problem("v 0x10 0 0\n", ".obj"), "m.obj: line 1: '0x10' is not a finite number");
+    EXPECT_EQ(problem("v +1 -2. +3.1e2\n", ".obj"), "");  // as assimp's number_formats.obj
+    EXPECT_EQ(problem("v 1 2 3.1+e2\n", ".obj"), "m.obj: line 1: '3.1+e2' is not a finite number");
+    EXPECT_EQ(problem(triangle + "vt nan 0.25\n", ".obj"), "m.obj: line 6: 'nan' is not a finite number");
+    EXPECT_EQ(problem(triangle + "vt 1e39 0.25\n", ".obj"), "m.obj: line 6: '1e39' is not a finite number");
+    EXPECT_EQ(problem(triangle + "f 1/9 2/1 3/1\n", ".obj"),
+              "m.obj: line 6: corner '1/9': texture coordinate index '9' is not one of the 1 texture "
+              "coordinates in the file");
+    EXPECT_EQ(problem(triangle + "f 1//7 2//1 3//1\n", ".obj"),
+              "m.obj: line 6: corner '1//7': normal index '7' is not one of the 1 normals in the file");
+    EXPECT_EQ(problem("v 0 0 0\nf -2 1 1\nv 1 0 0\n", ".obj"),
+              "m.obj: line 2: corner '-2': vertex index '-2' is not one of the 1 vertices before it");
+    EXPECT_EQ(problem(triangle + "f 1 2\n", ".obj"), "m.obj: line 6: a face of fewer than 3 corners");
+    EXPECT_EQ(problem(triangle + "f 1/1/1/1 2 3\n", ".obj"),
+              "m.obj: line 6: corner '1/1/1/1' has more than 3 indices");
+}
