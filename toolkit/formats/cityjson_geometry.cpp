@@ -443,6 +443,9 @@ void read_instance(const CityPlace& at, CityReadState& s, const json& geometry, 
         if (!m[std::size_t(i)].is_number()) at.fail("'transformationMatrix' is not 16 numbers");
         matrix(i / 4, i % 4) = m[std::size_t(i)].get<double>();
     }
+    if (!(matrix.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).isZero(1e-6))  // a placement, as glTF's node matrix
+        at.fail("'transformationMatrix' is not affine (its last row is not 0, 0, 0, 1)");
+    matrix.row(3) << 0, 0, 0, 1;
     const std::vector<std::size_t>& named = points_of_template(s, t, shape);
     s.placed.resize(s.template_points.size());
     // Only the points this template names: the pool is all templates' (time: instances x template).
@@ -537,8 +540,15 @@ int CityGeometryReader::add_object(const CityPlace& at, const std::string& id, c
     auto geometries = object.find("geometry");
     if (geometries == object.end()) return node;
     if (!geometries->is_array()) here.fail("'geometry' is not an array");
-    for (const json& geometry : *geometries)
+    for (std::size_t g = 0; g < geometries->size(); ++g) {
+        const json& geometry = (*geometries)[g];
+        if (geometry.is_object() && geometry.contains("lod") &&
+            city_lod_number(city_geometry_lod(geometry)) < 0)
+            here.in("geometry " + std::to_string(g))
+                .fail("'lod' " + geometry["lod"].dump() +
+                      " is not an LoD (0 to 4, or a refinement such as 2.2)");
         if (!city_geometry_lod(geometry).empty()) s.lods.insert(city_geometry_lod(geometry));
+    }
     const std::vector<std::size_t> chosen = city_geometries_of_lod(*geometries, lod);
     for (std::size_t g : chosen)
         read_geometry(here.in("geometry " + std::to_string(g)), s, (*geometries)[g], node, *s.vertices);

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -24,7 +25,8 @@ std::string city_geometry_lod(const json& geometry) {
 double city_lod_number(const std::string& lod) {
     char* end = nullptr;
     const double value = std::strtod(lod.c_str(), &end);
-    return end != lod.c_str() && std::isfinite(value) ? value : -1;
+    const bool whole = !lod.empty() && end == lod.c_str() + lod.size() && std::isdigit((unsigned char)lod[0]);
+    return whole && value >= 0 && value <= 4 ? value : -1;
 }
 
 std::vector<std::size_t> city_geometries_of_lod(const json& geometries, const std::string& lod) {

@@ -11,7 +11,9 @@
 namespace boxlod {
 
 // The LoD of a geometry as the file spells it (numbers as their shortest
-// text: 2 -> "2"), "" without one; and as a number (-1 if it is none).
+// text: 2 -> "2"), "" without one; and as a number (-1 if it is none: the
+// whole text a number in [0, 4], CityGML 2.0's LoD 0 to 4 and TU Delft's
+// refinements such as 2.2).
 std::string city_geometry_lod(const nlohmann::json& geometry);
 double city_lod_number(const std::string& lod);
 

@@ -149,8 +149,10 @@ ParameterDeclaration city_lod_parameter() {
     d.written_at_default = false;
     d.format = [](const LodParameters& p) { return p.city_lod.empty() ? std::string("finest") : p.city_lod; };
     d.parse = [](const std::string& text, LodParameters& p) -> std::string {
+        const std::size_t dot = text.find('.');
         if (text != "finest" &&
-            (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789.") != std::string::npos))
+            (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789.") != std::string::npos ||
+             dot == 0 || dot + 1 == text.size() || text.find('.', dot + 1) != std::string::npos))
             return "'" + text + "' is not a LoD (finest, or as the file names it: 1.2, 2.2)";
         p.city_lod = text == "finest" ? "" : text;
         return "";

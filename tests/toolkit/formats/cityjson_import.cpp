@@ -276,6 +276,12 @@ TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
                            {"large", tree(1, 0, thrice)},
                            {"moved", tree(1, 1, identity)},
                            {"points", tree(2, 0, identity)}};  // draws nothing
+    json projective = file;
+    projective["CityObjects"]["small"]["geometry"][0]["transformationMatrix"][12] = 1;
+    EXPECT_NE(test::input_error_of([&] {
+                  read(projective, "instances_projective");
+              }).find("'transformationMatrix' is not affine (its last row is not 0, 0, 0, 1)"),
+              std::string::npos);
     const Model model = read(file, "instances");
     const Node& small = model.nodes[std::size_t(node_named(model, "small"))];
     const Node& large = model.nodes[std::size_t(node_named(model, "large"))];
@@ -349,6 +355,25 @@ TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
                   read(file, "lod_absent", "3");
               }).find("no surface of LoD 3 (the file has LoD 1.2, 2.2)"),
               std::string::npos);
+    // "2.2.2" was read as 2.2, so both geometries were drawn over each other.
+    json wrong = geometries;
+    wrong[0]["lod"] = "2.2.2";
+    EXPECT_NE(
+        test::input_error_of([&] {
+            read(city({{"b", {{"type", "Building"}, {"geometry", wrong}}}}, square_vertices), "lod_wrong");
+        })
+            .find("CityObjects 'b': geometry 0: 'lod' \"2.2.2\" is not an LoD (0 to 4, or a refinement such "
+                  "as 2.2)"),
+        std::string::npos);
+    for (const json& lod : {json("999"), json(""), json(-1), json(nullptr)}) {
+        wrong[0]["lod"] = lod;
+        EXPECT_NE(test::input_error_of([&] {
+                      read(city({{"b", {{"type", "Building"}, {"geometry", wrong}}}}, square_vertices),
+                           "lod_wrong");
+                  }).find("is not an LoD"),
+                  std::string::npos)
+            << lod;
+    }
 }
 
 TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
