@@ -1,6 +1,7 @@
 #include "data_gen/interpreter.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 #include "base/random.h"
 #include "data_gen/expression.h"
 #include "data_gen/primitives.h"
@@ -79,6 +80,8 @@ public:
                                 "the derivation makes more than " + std::to_string(limits_.max_nodes) +
                                     " nodes (recursion that never ends?)");
         int node = add_node(model_, parent, rule.symbol);
+        charge(2 * double(sizeof(Node)) +
+               2 * double(rule.symbol.capacity()));  // the node vector grows by doubling
         model_.nodes[node].rule = rule.symbol;
         model_.nodes[node].scope = to_scope(shape.scope);
         Application application{
@@ -97,6 +100,14 @@ private:
     Attributes attributes_;
     std::map<std::string, std::vector<Primitive>> assets_;
     std::size_t nodes_made_ = 0;
+    double model_memory_ = 0;
+
+    // The derivation's model is checked against the memory budget as it grows (docs/design.md: Errors): a
+    // few lines of grammar can ask for billions of triangles within the node limit.
+    void charge(double bytes) {
+        model_memory_ += bytes;
+        check_memory(grammar_.file + ": the derivation's model", model_memory_);
+    }
 
     [[noreturn]] void fail(SourcePlace place, const std::string& what) const {
         throw_grammar_error(grammar_.file, place, what);
@@ -305,6 +316,8 @@ private:
             if (!op.name_is_text)
                 planar_texture_coordinates(primitive, materials_.tile_metres(shape.appearance));
             primitive.material = materials_.index(model_, shape.appearance);
+            charge(double(sizeof(Primitive)) + 48 * double(primitive.positions.size()) +
+                   4 * double(primitive.indices.size()));  // positions, normals, uvs, tangents
             model_.nodes[application.node].primitives.push_back(std::move(primitive));
         }
     }

@@ -1,6 +1,7 @@
 #include "data_gen/interpreter.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 #include "data_gen/grammar_parser.h"
 #include "test_support.h"
 
@@ -244,6 +245,22 @@ TEST(Interpreter, Errors) {
               "g.grammar:1:18: a cylinder needs 3 to 256 segments");
     EXPECT_THROW(build("A --> NIL\n", 1, 1, 0, "Z"), InputError);
     EXPECT_THROW(build("A --> NIL\n", 0, 1), InputError);
+}
+
+// Six lines of grammar asked for ten million triangles in 2.3 GB under --max-memory 0.1 (a hostile-input
+// run): the model is charged against the budget as the derivation makes it.
+TEST(Interpreter, ADerivationBeyondTheMemoryBudgetIsRefusedAsItGrows) {
+    struct BudgetScope {
+        ~BudgetScope() { set_memory_budget(0); }
+    } restore;
+    const std::string fan =
+        "Lot --> extrude(3) A\nA --> B B B B B B B B B B\nB --> C C C C C C C C C C\nC --> i(cylinder, "
+        "256)\n";
+    set_memory_budget(5e6);
+    EXPECT_NE(build_error(fan).find("g.grammar: the derivation's model would need"), std::string::npos)
+        << build_error(fan);
+    set_memory_budget(100e6);
+    EXPECT_EQ(build_error(fan), "");
 }
 
 }  // namespace boxlod
