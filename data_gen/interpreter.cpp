@@ -1,6 +1,7 @@
 #include "data_gen/interpreter.h"
 
 #include "base/input_error.h"
+#include "base/key_values.h"
 #include "base/memory_budget.h"
 #include "base/random.h"
 #include "data_gen/expression.h"
@@ -294,8 +295,12 @@ private:
             return {hex(1), hex(3), hex(5)};
         }
         Eigen::Vector3f c;
-        for (int k = 0; k < 3; ++k)
-            c[k] = std::clamp(float(value(op.arguments[k].value, shape, application)), 0.0f, 1.0f);
+        for (int k = 0; k < 3; ++k) {
+            const double v = value(op.arguments[k].value, shape, application);
+            if (!(v >= 0 && v <= 1))
+                fail(op.place, "color: " + format_number(v) + " is not an sRGB value in [0, 1]");
+            c[k] = float(v);
+        }
         return c;
     }
 

@@ -245,6 +245,11 @@ TEST(Interpreter, Errors) {
               "g.grammar:1:18: a cylinder needs 3 to 256 segments");
     EXPECT_THROW(build("A --> NIL\n", 1, 1, 0, "Z"), InputError);
     EXPECT_THROW(build("A --> NIL\n", 0, 1), InputError);
+    // Was clamped to [0, 1] without a word.
+    EXPECT_NE(build_error("A --> color(2, 0, 0) i(box)\n")
+                  .find("g.grammar:1:7: color: 2 is not an sRGB value in [0, 1]"),
+              std::string::npos)
+        << build_error("A --> color(2, 0, 0) i(box)\n");
 }
 
 // Six lines of grammar asked for ten million triangles in 2.3 GB under --max-memory 0.1 (a hostile-input
