@@ -141,14 +141,7 @@ bool validate_primitive(const Model& model, const Primitive& primitive, const st
     check_finite(primitive.tangents, "tangent");
     if (primitive.material >= int(model.materials.size()))
         throw_input_error(file, where, "material index out of range");
-    for (std::size_t t = 0; t < primitive.indices.size(); t += 3) {
-        const auto& a = primitive.positions[primitive.indices[t]];
-        if ((primitive.positions[primitive.indices[t + 1]] - a)
-                .cross(primitive.positions[primitive.indices[t + 2]] - a)
-                .squaredNorm() > 0)
-            return true;
-    }
-    return false;
+    return has_area(primitive);
 }
 
 // One material's texture indices, colours and ranges.
@@ -200,6 +193,17 @@ void make_unit_normals_and_tangents(Model& model) {
             if (!unit(p.tangents, [](Eigen::Vector4f& t) { return t.head<3>(); })) p.tangents.clear();
             for (Eigen::Vector4f& t : p.tangents) t.w() = t.w() < 0 ? -1.0f : 1.0f;
         }
+}
+
+bool has_area(const Primitive& primitive) {
+    for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
+        const auto& a = primitive.positions[primitive.indices[t]];
+        if ((primitive.positions[primitive.indices[t + 1]] - a)
+                .cross(primitive.positions[primitive.indices[t + 2]] - a)
+                .squaredNorm() > 0)
+            return true;
+    }
+    return false;
 }
 
 void validate_model(const Model& model) {

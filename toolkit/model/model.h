@@ -187,6 +187,9 @@ Bounds model_bounds(const Model& model);
 // numbers, a tree, some geometry); throws InputError naming `model.source`.
 void validate_model(const Model& model);
 
+// Whether a valid primitive has a triangle of non-zero area: what a model must draw.
+bool has_area(const Primitive& primitive);
+
 // Whether any triangle can be seen: one whose material is not fully
 // transparent (blended or masked with a base colour alpha of 0; a texture's
 // alpha only scales it). A model that draws nothing has nothing to bake.

@@ -63,10 +63,11 @@ std::vector<int> subtree_nodes(const Model& model, int root) {
 
 namespace {
 
-bool has_geometry_below(const Model& model, int node) {
+// A triangle of non-zero area (an object scaled to nothing draws nothing, and is no object).
+bool draws_below(const Model& model, int node) {
     for (std::vector<int> pending{node}; !pending.empty();) {
         const Node& n = model.nodes[std::size_t(pending.back())];
-        if (n.has_geometry()) return true;
+        if (std::any_of(n.primitives.begin(), n.primitives.end(), has_area)) return true;
         pending.pop_back();
         pending.insert(pending.end(), n.children.begin(), n.children.end());
     }
@@ -78,8 +79,9 @@ bool has_geometry_below(const Model& model, int node) {
 std::vector<int> object_nodes(const Model& city) {
     std::vector<int> nodes;
     for (int child : city.nodes[0].children)
-        if (has_geometry_below(city, child)) nodes.push_back(child);
-    if (city.nodes[0].has_geometry()) nodes.insert(nodes.begin(), nodes.empty() ? 0 : -1);
+        if (draws_below(city, child)) nodes.push_back(child);
+    if (std::any_of(city.nodes[0].primitives.begin(), city.nodes[0].primitives.end(), has_area))
+        nodes.insert(nodes.begin(), nodes.empty() ? 0 : -1);
     return nodes;
 }
 

@@ -29,9 +29,10 @@ std::vector<int> subtree_nodes(const Model& model, int root);
 Model extract_subtree(const Model& model, int root);
 
 // The objects of a city model (a CityJSON district's Buildings, a generated
-// city's lots): each child of the root with geometry below it; the root's own
-// geometry (-1) besides them (a ground under the buildings), or the whole
-// model (0) where it is all on the root (a single building from a file).
+// city's lots): each child of the root that draws a triangle of non-zero area
+// below it (one scaled to nothing is no object); the root's own geometry (-1)
+// besides them (a ground under the buildings), or the whole model (0) where it
+// is all on the root (a single building from a file).
 std::vector<int> object_nodes(const Model& city);
 // Object `node` of object_nodes as a model of its own.
 Model object_model(const Model& city, int node);

@@ -89,3 +89,19 @@ TEST(ModelSubtree, APartOfAnLodIsAnLod) {
     EXPECT_TRUE(extract_subtree(lod, 1).is_lod);
     EXPECT_FALSE(extract_subtree(two_branches(), 1).is_lod);
 }
+
+// A child scaled to nothing draws nothing and is no object: `tiles` refused a whole glTF city for one,
+// saying the scene had no triangle.
+TEST(ModelSubtree, ObjectsAreTheChildrenThatDrawAndTheRootsOwnGeometry) {
+    Model city = two_branches();
+    const int flat = add_node(city, 0, "flat");
+    city.nodes[std::size_t(flat)].primitives.push_back(triangle(0, 5));
+    for (Eigen::Vector3f& p : city.nodes[std::size_t(flat)].primitives[0].positions) p = {5, 0, 0};
+    EXPECT_EQ(object_nodes(city), (std::vector<int>{1, 3}));
+    city.nodes[0].primitives.push_back(triangle(0, 9));
+    EXPECT_EQ(object_nodes(city), (std::vector<int>{-1, 1, 3}));
+    Model alone = two_branches();
+    for (int n = 1; n < int(alone.nodes.size()); ++n) alone.nodes[std::size_t(n)].primitives.clear();
+    alone.nodes[0].primitives.push_back(triangle(0, 9));
+    EXPECT_EQ(object_nodes(alone), (std::vector<int>{0}));
+}
