@@ -1,6 +1,7 @@
 #include "toolkit/formats/map_projection.h"
 
 #include "base/input_error.h"
+#include "base/key_values.h"
 
 #include <proj.h>
 
@@ -127,6 +128,12 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
                           north = longitude_latitude(to_wgs84.get(), point.x(), point.y() + 1000);
     if (!here.allFinite() || !north.allFinite() || std::abs(here.y()) > 90 || std::abs(north.y()) > 90)
         fail("the model's origin does not transform to WGS 84");
+    // Far outside where a projection is defined it still gives a place, but not the way back (RD New at
+    // 9e8 m gave 51.6 S, 176 W; Web Mercator at 1e11 m the pole): the origin must come back within a metre.
+    const PJ_COORD back = proj_trans(to_wgs84.get(), PJ_INV, proj_coord(here.x(), here.y(), 0, 0));
+    if (!(std::hypot(back.xy.x - point.x(), back.xy.y - point.y()) <= 1))
+        fail("the model's origin (" + format_number(point.x()) + ", " + format_number(point.y()) +
+             ") lies outside where it is defined (WGS 84 does not lead back to it)");
     const double phi = here.y() * M_PI / 180;
     const double east = std::remainder(north.x() - here.x(), 360.0) * std::cos(phi),
                  up_north = north.y() - here.y();
