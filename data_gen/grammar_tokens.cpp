@@ -1,7 +1,10 @@
 #include "data_gen/grammar_tokens.h"
 
+#include "base/utf8.h"
+
 #include <cctype>
 #include <charconv>
+#include <cstdio>
 #include <utility>
 
 namespace boxlod {
@@ -33,6 +36,8 @@ std::pair<Token, std::size_t> read_token(const std::string& text, std::size_t i,
     }
     if (is_digit(c) || (c == '.' && i + 1 < text.size() && is_digit(text[i + 1]))) {
         auto [end, error] = std::from_chars(text.data() + i, text.data() + text.size(), token.number);
+        if (error == std::errc::result_out_of_range)
+            throw_grammar_error(file, place, "a number beyond what a double holds (or nearer 0 than it can)");
         if (error != std::errc()) throw_grammar_error(file, place, "malformed number");
         token.kind = Token::Kind::number;
         token.text = text.substr(i, std::size_t(end - (text.data() + i)));
@@ -52,6 +57,17 @@ std::pair<Token, std::size_t> read_token(const std::string& text, std::size_t i,
             token.text = p;
             return {token, token.text.size()};
         }
+    if (static_cast<unsigned char>(c) >= 0x80) {  // names are ASCII: name the whole UTF-8 character
+        std::size_t end = i + 1;
+        while (end < text.size() && end < i + 4 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+            ++end;
+        char byte[8];
+        std::snprintf(byte, sizeof byte, "\\x%02X", static_cast<unsigned char>(c));
+        const std::string character = is_utf8(text.substr(i, end - i)) ? text.substr(i, end - i) : byte;
+        throw_grammar_error(
+            file, place,
+            "unexpected character '" + character + "' (names are ASCII letters, digits and '_')");
+    }
     throw_grammar_error(file, place, std::string("unexpected character '") + c + "'");
 }
 

@@ -34,4 +34,11 @@ TEST(GrammarTokens, RefusesWhatNoTokenStartsWithAtItsPlace) {
     EXPECT_NE(message("a\n  \"open").find("g.grammar:2:3"), std::string::npos) << message("a\n  \"open");
     EXPECT_NE(message("a\n  \"open").find("unterminated string"), std::string::npos);
     EXPECT_NE(message("a $").find("unexpected character '$'"), std::string::npos);
+    // One character, not its first byte (which made the line invalid UTF-8); a stray byte as \xHH.
+    EXPECT_EQ(message("a \xD0\x97\xD0\xB4"),
+              "g.grammar:1:3: unexpected character '\xD0\x97' (names are ASCII letters, digits and '_')");
+    EXPECT_EQ(message("a \xFF"),
+              "g.grammar:1:3: unexpected character '\\xFF' (names are ASCII letters, digits and '_')");
+    EXPECT_EQ(message("a 1e400"),
+              "g.grammar:1:3: a number beyond what a double holds (or nearer 0 than it can)");
 }

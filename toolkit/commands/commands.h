@@ -33,11 +33,14 @@ inline Option keep_hierarchy_option() {
 // error within which a level switches in (toolkit/lod/chain/error_by_distance.h).
 constexpr double default_switch_error = 0.05;
 inline Option switch_error_option() {
-    return {"switch-error", "E",
-            "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over "
-            "the pixels either covers, stays within E (measured from four views in half octaves out to where "
-            "the model spans 4 pixels); 0: at its sizing distance, where its texels meet the screen's pixels",
-            NumberRange{0, switch_error_range.max}, format_number(default_switch_error)};
+    return {
+        "switch-error", "E",
+        "each level switches in at the nearest distance beyond which its ꟻLIP against the original, over "
+        "the pixels either covers, stays within E (measured from four views in half octaves out to where "
+        "the model spans 4 pixels); 0: at its sizing distance, where its texels meet the screen's pixels; "
+        "else at least " +
+            format_number(switch_error_range.min),
+        NumberRange{0, switch_error_range.max}, format_number(default_switch_error)};
 }
 inline double switch_error(const Arguments& arguments) {
     const double error = arguments.number("switch-error");

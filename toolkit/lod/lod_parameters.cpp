@@ -277,14 +277,20 @@ int asked_levels(const LodParameters& p) {
 
 void validate_parameters(const LodParameters& p, const std::string& where) {
     auto fail = [&](const std::string& what) { throw_input_error(where, "", what); };
+    // Named as the user wrote it: an option on the command line, a key in a file.
+    auto spelled = [&](const std::string& key) {
+        const ParameterDeclaration* d = where == "command line" ? find_lod_parameter(key) : nullptr;
+        return d && !d->option.empty() ? "--" + d->option : key;
+    };
     auto check = [&](const std::string& key, double value, const NumberRange& range) {
-        if (!range.contains(value)) fail(key + ": " + out_of_range_message(range, format_number(value)));
+        if (!range.contains(value))
+            fail(spelled(key) + ": " + out_of_range_message(range, format_number(value)));
     };
     for (const ParameterDeclaration& d : lod_parameter_declarations())
         if (d.range) check(d.key, d.number(p), *d.range);
     namespace r = parameter_range;
     if (p.distance > 0 && p.distance < r::min_positive_distance)
-        fail("distance: 0 (the framing distance) or at least 0.001 m");
+        fail(spelled("distance") + ": 0 (the framing distance) or at least 0.001 m");
     if (p.camera) {
         check("camera_fovy", p.camera->fovy_degrees, r::fovy);
         if (std::string problem = camera_problem(*p.camera); !problem.empty()) fail(problem);
