@@ -137,6 +137,13 @@ const std::vector<std::string>& sweep_key_columns() {
 SweepOutput open_output(const SweepConfig& config, const std::string& output_folder,
                         const std::vector<std::string>& result_columns,
                         const std::vector<std::string>& timing_columns) {
+    // Kept images are named after their rows' keys made file names: two models whose names differ only
+    // where file_name puts '_' (x/t.gltf, x_t.gltf) would write over each other's.
+    for (std::size_t a = 0; config.keep_images != KeptImages::none && a < config.models.size(); ++a)
+        for (std::size_t b = a + 1; b < config.models.size(); ++b)
+            if (file_name(config.models[a].name) == file_name(config.models[b].name))
+                throw InputError("keep_images: models '" + config.models[a].name + "' and '" +
+                                 config.models[b].name + "' would write the same image files: rename one");
     fs::create_directories(output_folder);
     SweepOutput out{open_table((fs::path(output_folder) / "results.csv").string(), result_columns),
                     open_table((fs::path(output_folder) / "timings.csv").string(), timing_columns),

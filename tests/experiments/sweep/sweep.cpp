@@ -126,6 +126,22 @@ std::vector<std::string> row_of(const Table& table, const std::string& prefix) {
 
 // The baselines come after the LoD rows: a simplified mesh per level of the first level
 // mode, at that level's triangles (never above), and the single box at its top.
+// Kept images are named after the model's name made a file name: x/t.glb and x_t.glb wrote over each
+// other's, and the sweep said nothing; now it is refused before any folder is made.
+TEST(Sweep, ModelsWhoseKeptImagesWouldShareNamesAreRefused) {
+    SmallSweep s = small_sweep("sweep_image_names", "keep_images = lod\n");
+    std::filesystem::create_directories(s.folder / "x");
+    std::filesystem::copy_file(s.folder / "building.glb", s.folder / "x" / "t.glb");
+    std::filesystem::copy_file(s.folder / "building.glb", s.folder / "x_t.glb");
+    s.config.models = {{"x/t.glb", (s.folder / "x" / "t.glb").string(), ""},
+                       {"x_t.glb", (s.folder / "x_t.glb").string(), ""}};
+    EXPECT_EQ(test::input_error_of([&] { run_sweep(s.config, (s.folder / "out").string(), 1); }),
+              "keep_images: models 'x/t.glb' and 'x_t.glb' would write the same image files: rename one");
+    EXPECT_FALSE(std::filesystem::exists(s.folder / "out"));
+    s.config.keep_images = KeptImages::none;
+    run_sweep(s.config, (s.folder / "out").string(), 1);  // without images the names may meet
+}
+
 TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
     SmallSweep s = small_sweep("sweep_baselines", "baselines = simplification, single-box\n");
     SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);
