@@ -59,6 +59,7 @@ void check_ply(std::string_view bytes, const std::string& file) {
         std::string name;
         std::size_t count = 0, entry_bytes = 0;
         int line = 0;
+        std::vector<bool> lists;  // each property: a list (a count, then that many numbers) or one number
     };
     std::vector<Element> elements;
     auto type_bytes = [](const std::string& type) -> std::size_t {
@@ -77,12 +78,44 @@ void check_ply(std::string_view bytes, const std::string& file) {
         if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number});
         if (elements.size() > max_ply_elements)
             throw_input_error(file, place, "more than " + std::to_string(max_ply_elements) + " elements");
-        if (keyword == "property" && !elements.empty())
+        if (keyword == "property" && !elements.empty()) {
             elements.back().entry_bytes += ascii ? 2 : a == "list" ? type_bytes(b) : type_bytes(a);
+            elements.back().lists.push_back(a == "list");
+        }
     }
     for (const Element& element : elements)
         check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body, file,
                    "line " + std::to_string(element.line) + ": element '" + element.name + "'");
+    if (!ascii) return;
+    // assimp reads an ASCII body cut short, or a list longer than its line, on into the next entries and
+    // draws what it finds there (a face "200 0 1 2" became 199 triangles): every entry must be there whole.
+    std::string_view data = bytes.substr(std::min(bytes.size(), header_end + 10));
+    auto next_number = [&](const Element& element, std::size_t entry) {
+        const std::size_t start = data.find_first_not_of(" \t\r\n");
+        if (start == std::string_view::npos)
+            throw_input_error(file, "line " + std::to_string(element.line),
+                              "element '" + element.name + "': the data ends in entry " +
+                                  std::to_string(entry) + " of " + std::to_string(element.count) +
+                                  " (truncated file?)");
+        const std::size_t end = std::min(data.find_first_of(" \t\r\n", start), data.size());
+        const std::string_view word = data.substr(start, end - start);
+        data.remove_prefix(end);
+        return word;
+    };
+    for (const Element& element : elements)
+        for (std::size_t entry = 0; entry < element.count; ++entry)
+            for (bool list : element.lists) {
+                const std::string_view first = next_number(element, entry);
+                std::size_t length = 0;
+                if (list && (std::from_chars(first.data(), first.data() + first.size(), length).ptr !=
+                                 first.data() + first.size() ||
+                             length > data.size()))
+                    throw_input_error(file, "line " + std::to_string(element.line),
+                                      "element '" + element.name + "': entry " + std::to_string(entry) +
+                                          "'s list length '" + std::string(first) +
+                                          "' is not a count its data holds");
+                for (std::size_t i = 0; list && i < length; ++i) next_number(element, entry);
+            }
 }
 
 // OBJ's `mtllib NAME` (the rest of the line, beside the file): assimp opens it itself, so a FIFO there

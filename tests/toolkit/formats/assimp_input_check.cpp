@@ -29,6 +29,11 @@ TEST(AssimpInputCheck, PlyCountsMustFitTheFile) {
         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
         "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply"), "");
+    // assimp read on past an entry into the next ones (a face "200 0 1 2" became 199 triangles).
+    EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n", ".ply"),
+              "m.ply: line 7: element 'face': entry 0's list length '200' is not a count its data holds");
+    EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", ".ply"),
+              "m.ply: line 7: element 'face': the data ends in entry 0 of 1 (truncated file?)");
     std::string huge = "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\nend_header\n0\n";
     EXPECT_EQ(
         problem(huge, ".ply"),
