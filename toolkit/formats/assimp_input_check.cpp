@@ -262,18 +262,37 @@ void check_off(std::string_view bytes, const std::string& file) {
     std::size_t available = bytes.size();
     check_fits(vertices, 6, available, file, place + ": vertex count");
     check_fits(faces, 2, available, file, place + ": face count");
+    // A file cut short, a face with fewer indices than its count, or an index "2.7" assimp read as 2 or
+    // as a face without indices (its validation then named mIndices).
+    const auto ends = [&](const char* what, std::size_t k, std::size_t of) {
+        throw_input_error(file, place,
+                          std::string("the file ends at ") + what + " " + std::to_string(k) + " of " +
+                              std::to_string(of) + " (truncated file?)");
+    };
     for (std::size_t v = 0; v < vertices; ++v)
-        if (!next_line()) return;  // assimp reports a short file
-    for (std::size_t f = 0; f < faces && next_line(); ++f) {
+        if (!next_line()) ends("vertex", v, vertices);
+    for (std::size_t f = 0; f < faces; ++f) {
+        if (!next_line()) ends("face", f, faces);
         std::istringstream face(line);
-        std::size_t corners = 0;
-        long long index = 0;  // signed: a "-1" is reported as itself, not wrapped around
-        face >> corners;
-        for (std::size_t k = 0; k < corners && face >> index; ++k)
-            if (index < 0 || std::size_t(index) >= vertices)
-                throw_input_error(file, "line " + std::to_string(number),
-                                  "vertex index " + std::to_string(index) + " out of range (" +
-                                      std::to_string(vertices) + " vertices)");
+        std::string corners_text, index_text;
+        face >> corners_text;
+        const std::string at = "line " + std::to_string(number);
+        const std::size_t corners = parse_count(corners_text, file, at);
+        for (std::size_t k = 0; k < corners; ++k) {
+            long long index = -1;  // signed: a "-1" is reported as itself, not wrapped around
+            if (!(face >> index_text))
+                throw_input_error(file, at,
+                                  "a face of " + std::to_string(corners) + " corners gives " +
+                                      std::to_string(k) + " vertex indices");
+            auto [end, error] =
+                std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+            if (error != std::errc() || end != index_text.data() + index_text.size() || index < 0 ||
+                std::size_t(index) >= vertices)
+                throw_input_error(file, at,
+                                  "vertex index " + index_text + " is not one of the " +
+                                      std::to_string(vertices) + " vertices (0 to " +
+                                      std::to_string(vertices) + " - 1)");
+        }
     }
 }
 

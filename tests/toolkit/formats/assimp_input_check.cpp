@@ -63,10 +63,17 @@ TEST(AssimpInputCheck, OffCountsMustFitTheFile) {
     EXPECT_EQ(problem("# a triangle\nOFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"), "");
     // assimp would clamp an index out of range to the last vertex.
     EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n", ".off"),
-              "m.off: line 6: vertex index 9 out of range (3 vertices)");
+              "m.off: line 6: vertex index 9 is not one of the 3 vertices (0 to 3 - 1)");
     // A negative index is reported as written (it read as 18446744073709551615).
     EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", ".off"),
-              "m.off: line 6: vertex index -1 out of range (3 vertices)");
+              "m.off: line 6: vertex index -1 is not one of the 3 vertices (0 to 3 - 1)");
+    // assimp read "2.7" as 2, and a face cut short or a missing one as a face without indices.
+    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.7\n", ".off"),
+              "m.off: line 6: vertex index 1.7 is not one of the 3 vertices (0 to 3 - 1)");
+    EXPECT_EQ(problem("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n", ".off"),
+              "m.off: line 6: a face of 3 corners gives 2 vertex indices");
+    EXPECT_EQ(problem("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".off"),
+              "m.off: line 2: the file ends at face 1 of 2 (truncated file?)");
 }
 
 TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
