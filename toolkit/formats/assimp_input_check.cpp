@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -296,6 +297,36 @@ void check_off(std::string_view bytes, const std::string& file) {
     }
 }
 
+// ASCII STL: each facet's loop holds three vertices (assimp drew a facet of four as one triangle and
+// dropped the fourth without a word). A binary STL, whose 80-byte header may also start with "solid", is
+// told by its size: 84 bytes and 50 a triangle.
+void check_ascii_stl(std::string_view bytes, const std::string& file) {
+    std::uint32_t triangles = 0;
+    if (bytes.size() >= 84) std::memcpy(&triangles, bytes.data() + 80, 4);
+    if (!bytes.starts_with("solid") ||
+        (bytes.size() >= 84 && bytes.size() == 84 + 50 * std::size_t(triangles)))
+        return;
+    int line = 1, loop_line = 0, vertices = -1;  // -1: outside a loop
+    for (std::size_t i = 0; i < bytes.size();) {
+        const std::size_t start = bytes.find_first_not_of(" \t\r", i);
+        if (start == std::string_view::npos) break;
+        if (bytes[start] == '\n') {
+            ++line;
+            i = start + 1;
+            continue;
+        }
+        const std::size_t end = std::min(bytes.find_first_of(" \t\r\n", start), bytes.size());
+        const std::string_view word = bytes.substr(start, end - start);
+        i = end;
+        if (word == "loop") loop_line = line, vertices = 0;
+        if (word == "vertex" && vertices >= 0) ++vertices;
+        if (word == "endloop" && vertices != 3)
+            throw_input_error(file, "line " + std::to_string(loop_line),
+                              "a facet's loop of " + std::to_string(vertices) + " vertices (STL's hold 3)");
+        if (word == "endloop") vertices = -1;
+    }
+}
+
 // XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
 // (assimp's readers recurse per element). Comments, declarations and quoted
 // attribute values are skipped.
@@ -507,6 +538,7 @@ void check_assimp_input(std::string_view bytes, const std::string& extension, co
     }
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
+    if (extension == ".stl") check_ascii_stl(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
     if (extension == ".ifc" || extension == ".stp" || extension == ".step")
         check_step_file(bytes, file, max_nesting_depth);

@@ -167,3 +167,16 @@ TEST(AssimpInputCheck, ObjNumbersAreFiniteAndItsIndicesNameWhatTheFileHas) {
     EXPECT_EQ(problem(triangle + "f 1/1/1/1 2 3\n", ".obj"),
               "m.obj: line 6: corner '1/1/1/1' has more than 3 indices");
 }
+
+// assimp drew a facet of four vertices as one triangle without a word.
+TEST(AssimpInputCheck, AnAsciiStlFacetHoldsThreeVertices) {
+    const std::string facet =
+        "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n";
+    EXPECT_EQ(problem("solid a\n" + facet + " endloop\nendfacet\nendsolid a\n", ".stl"), "");
+    EXPECT_EQ(problem("solid a\n" + facet + "  vertex 1 1 0\n endloop\nendfacet\nendsolid a\n", ".stl"),
+              "m.stl: line 3: a facet's loop of 4 vertices (STL's hold 3)");
+    // A binary STL whose header starts with "solid" is told by its size.
+    std::string binary =
+        "solid but binary" + std::string(64, ' ') + std::string("\1\0\0\0", 4) + std::string(50, '\0');
+    EXPECT_EQ(problem(binary, ".stl"), "");
+}
