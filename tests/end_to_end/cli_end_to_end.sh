@@ -168,6 +168,12 @@ check "city --json is a JSON object" python3 -c "import json,sys; d=json.load(op
 /usr/bin/python3 "$(dirname "$0")/make_district.py" "$work/district.city.json" 6
 check "city from a CityJSON district succeeds" test "$(status_of "$boxlod" city "$work/district.city.json" --frames 3 --width 64 --height 48 --error-every 0 -o "$work/city_district")" = 0
 check "city from a CityJSON district flies over its 6 buildings" bash -c "grep -qx 'buildings = 6' '$work/out' && test \$(wc -l < '$work/city_district/frames.csv') = 4"
+# The same district with an unused vertex 300 m out: read relative to another local origin, and drawn
+# in the first one's frame by render --split-view.
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); d['vertices'].append([600000, 0, 0]); json.dump(d, open(sys.argv[2], 'w'))" "$work/district.city.json" "$work/district_moved.city.json"
+"$boxlod" render "$work/district.city.json" --split-view "$work/district.city.json" -o "$work/split_same.png" --width 64 --height 48 > /dev/null
+"$boxlod" render "$work/district.city.json" --split-view "$work/district_moved.city.json" -o "$work/split_moved.png" --width 64 --height 48 > /dev/null
+check "render --split-view draws a model kept relative to another origin in place" cmp -s "$work/split_same.png" "$work/split_moved.png"
 bad "city with a bad strategy" city --buildings 1 --strategy distance:80,40 -o "$work/city_bad"
 check "the strategy error names the option" grep -q "^boxlod: --strategy: distance bands: thresholds must increase strictly\$" "$work/err"
 bad "city with an unknown strategy" city --buildings 1 --strategy sideways -o "$work/city_bad"

@@ -32,6 +32,11 @@ static int run_render(const Arguments& arguments) {
     if (arguments.has("split-view")) {
         // The manual's split view: left half this model, right half the other, same camera.
         Model other_model = read_model(arguments.text("split-view"));
+        // Two files of one place may keep it relative to different local origins (docs/design.md: Files).
+        const Eigen::Vector3f shift = (other_model.origin - model.origin).cast<float>();
+        for (Node& node : other_model.nodes)
+            for (Primitive& primitive : node.primitives)
+                for (Eigen::Vector3f& position : primitive.positions) position += shift;
         auto other_drawable = make_drawable_model(other_model);
         const Drawable& other = other_drawable->drawable;
         RenderSettings left = view.settings, right = view.settings;

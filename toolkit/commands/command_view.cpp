@@ -253,6 +253,20 @@ bool serve_requests(ViewerState& state, const Frame& frame, const Arguments& a, 
     return redraw;
 }
 
+// --replay's events (none without it), the outputs they write checked before the window opens, so that a
+// bad one is refused with nothing written.
+std::vector<ViewerEvent> checked_replay(const Arguments& a) {
+    std::vector<ViewerEvent> replay =
+        a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
+    auto pressed = [&](const std::string& name) {
+        return std::any_of(replay.begin(), replay.end(), [&](const ViewerEvent& e) { return e.key == name; });
+    };
+    if (pressed("f5")) check_output_file(a.text("params-out"));
+    if (pressed("f6")) check_output_directory(a.text("export-dir"));
+    if (pressed("f12") && !a.has("screenshot")) check_output_file("boxlod-view-0.png");
+    return replay;
+}
+
 int run_view(const Arguments& a) {
     if (a.has("screenshot")) check_output_file(a.text("screenshot"), {".png"});
     LodParameters parameters = lod_parameters_from(a);
@@ -271,19 +285,8 @@ int run_view(const Arguments& a) {
                                   " is past the levels obtained, 0.." +
                                   std::to_string(state.chain->obtained_levels()));
     }
-    std::vector<ViewerEvent> replay =
-        a.has("replay") ? read_replay(a.text("replay")) : std::vector<ViewerEvent>{};
-    // A replay's outputs are checked before the window opens, so that a bad one is refused with nothing
-    // written.
-    auto pressed = [&](const std::string& name) {
-        return std::any_of(replay.begin(), replay.end(), [&](const ViewerEvent& e) { return e.key == name; });
-    };
-    if (pressed("f5")) check_output_file(a.text("params-out"));
-    if (pressed("f6")) check_output_directory(a.text("export-dir"));
-    if (pressed("f12") && !a.has("screenshot")) check_output_file("boxlod-view-0.png");
-
-    // An empty replay stops at once, as its help says.
-    const bool replaying = a.has("replay") || a.has("screenshot");
+    const std::vector<ViewerEvent> replay = checked_replay(a);
+    const bool replaying = a.has("replay") || a.has("screenshot");  // an empty replay stops at once
     Window window("boxlod view " + a.positionals[0], state.width, state.height, !replaying);
     for (const ViewerEvent& e : replay) {
         SDL_Event event = to_sdl(e);

@@ -49,6 +49,51 @@ std::size_t parse_count(const std::string& word, const std::string& file, const 
 // ever on a header without its end, and takes seconds per thousand elements.
 constexpr int max_ply_elements = 1000;
 
+struct PlyElement {
+    std::string name;
+    std::size_t count = 0, entry_bytes = 0;
+    int line = 0;
+    std::vector<bool> lists;  // each property: a list (a count, then that many numbers) or one number
+};
+
+// assimp reads an ASCII body on across lines: a list longer than its line, or a body cut short, took the
+// next entries' numbers (a face "200 0 1 2" became 199 triangles). Writers put each entry on a line of
+// its own: each line must hold its entry whole, no more and no less. `number` is the body's first line.
+void check_ascii_ply_body(std::string_view data, int number, const std::vector<PlyElement>& elements,
+                          const std::string& file) {
+    for (const PlyElement& element : elements)
+        for (std::size_t entry = 0; entry < element.count; ++entry) {
+            std::vector<std::string_view> words;
+            for (; words.empty(); ++number) {  // the entry's line: the next that holds anything
+                if (data.empty())
+                    throw_input_error(file, "line " + std::to_string(number),
+                                      "the file ends at element '" + element.name + "' entry " +
+                                          std::to_string(entry) + " of " + std::to_string(element.count) +
+                                          " (truncated file?)");
+                const std::string_view line = data.substr(0, std::min(data.find('\n'), data.size()));
+                data.remove_prefix(std::min(line.size() + 1, data.size()));
+                for (std::size_t i = line.find_first_not_of(" \t\r"); i != std::string_view::npos;
+                     i = line.find_first_not_of(" \t\r", i)) {
+                    const std::size_t end = std::min(line.find_first_of(" \t\r", i), line.size());
+                    words.push_back(line.substr(i, end - i));
+                    i = end;
+                }
+            }
+            std::size_t taken = 0;  // the numbers its properties take
+            for (bool list : element.lists) {
+                std::size_t length = 0;
+                if (list && taken < words.size())
+                    std::from_chars(words[taken].data(), words[taken].data() + words[taken].size(), length);
+                taken += 1 + std::min<std::size_t>(length, std::size_t(1) << 40);
+            }
+            if (taken != words.size())
+                throw_input_error(file, "line " + std::to_string(number - 1),
+                                  "element '" + element.name + "' entry " + std::to_string(entry) + ": " +
+                                      std::to_string(words.size()) + " numbers where its properties take " +
+                                      std::to_string(taken));
+        }
+}
+
 void check_ply(std::string_view bytes, const std::string& file) {
     std::size_t header_end = bytes.find("end_header");
     if (header_end == std::string_view::npos)
@@ -56,13 +101,7 @@ void check_ply(std::string_view bytes, const std::string& file) {
     std::istringstream header{std::string(bytes.substr(0, header_end))};
     std::size_t body = bytes.size() - std::min(bytes.size(), header_end + 11);
     bool ascii = true;
-    struct Element {
-        std::string name;
-        std::size_t count = 0, entry_bytes = 0;
-        int line = 0;
-        std::vector<bool> lists;  // each property: a list (a count, then that many numbers) or one number
-    };
-    std::vector<Element> elements;
+    std::vector<PlyElement> elements;
     auto type_bytes = [](const std::string& type) -> std::size_t {
         if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
         if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
@@ -70,13 +109,14 @@ void check_ply(std::string_view bytes, const std::string& file) {
         return 4;
     };
     std::string line;
-    for (int number = 1; std::getline(header, line); ++number) {
+    int number = 1;
+    for (; std::getline(header, line); ++number) {
         std::istringstream words(line);
         std::string keyword, a, b, c;
         words >> keyword >> a >> b >> c;
         std::string place = "line " + std::to_string(number);
         if (keyword == "format") ascii = a == "ascii";
-        if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number});
+        if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number, {}});
         if (elements.size() > max_ply_elements)
             throw_input_error(file, place, "more than " + std::to_string(max_ply_elements) + " elements");
         if (keyword == "property" && !elements.empty()) {
@@ -84,66 +124,14 @@ void check_ply(std::string_view bytes, const std::string& file) {
             elements.back().lists.push_back(a == "list");
         }
     }
-    for (const Element& element : elements)
+    for (const PlyElement& element : elements)
         check_fits(element.count, std::max<std::size_t>(element.entry_bytes, 1), body, file,
                    "line " + std::to_string(element.line) + ": element '" + element.name + "'");
-    if (!ascii) return;
-    // assimp reads an ASCII body cut short, or a list longer than its line, on into the next entries and
-    // draws what it finds there (a face "200 0 1 2" became 199 triangles): every entry must be there whole.
-    std::string_view data = bytes.substr(std::min(bytes.size(), header_end + 10));
-    auto next_number = [&](const Element& element, std::size_t entry) {
-        const std::size_t start = data.find_first_not_of(" \t\r\n");
-        if (start == std::string_view::npos)
-            throw_input_error(file, "line " + std::to_string(element.line),
-                              "element '" + element.name + "': the data ends in entry " +
-                                  std::to_string(entry) + " of " + std::to_string(element.count) +
-                                  " (truncated file?)");
-        const std::size_t end = std::min(data.find_first_of(" \t\r\n", start), data.size());
-        const std::string_view word = data.substr(start, end - start);
-        data.remove_prefix(end);
-        return word;
-    };
-    for (const Element& element : elements)
-        for (std::size_t entry = 0; entry < element.count; ++entry)
-            for (bool list : element.lists) {
-                const std::string_view first = next_number(element, entry);
-                std::size_t length = 0;
-                if (list && (std::from_chars(first.data(), first.data() + first.size(), length).ptr !=
-                                 first.data() + first.size() ||
-                             length > data.size()))
-                    throw_input_error(file, "line " + std::to_string(element.line),
-                                      "element '" + element.name + "': entry " + std::to_string(entry) +
-                                          "'s list length '" + std::string(first) +
-                                          "' is not a count its data holds");
-                for (std::size_t i = 0; list && i < length; ++i) next_number(element, entry);
-            }
-}
-
-// OBJ's `mtllib NAME` (the rest of the line, beside the file): assimp opens it itself, so a FIFO there
-// would block it for ever and a folder read as "File read error"; one it does not find it skips silently.
-void check_obj_material_libraries(std::string_view bytes, const std::string& file) {
-    std::istringstream in{std::string(bytes)};
-    std::string line;
-    for (int number = 1; std::getline(in, line); ++number) {
-        const std::size_t start = line.find_first_not_of(" \t");
-        if (start == std::string::npos || line.compare(start, 7, "mtllib ") != 0) continue;
-        const std::size_t name_start = line.find_first_not_of(" \t", start + 7);
-        const std::size_t name_end = line.find_last_not_of(" \t\r");
-        if (name_start == std::string::npos) continue;
-        const std::string name = line.substr(name_start, name_end + 1 - name_start);
-        const std::filesystem::path library = std::filesystem::path(file).parent_path() / name;
-        const std::string place = "line " + std::to_string(number);
-        std::error_code error;
-        const std::filesystem::file_type type = std::filesystem::status(library, error).type();
-        if (type == std::filesystem::file_type::not_found)
-            std::fprintf(
-                stderr, "boxlod: warning: %s\n",
-                input_message(file, place, "mtllib '" + name + "' is missing: its materials are drawn grey")
-                    .c_str());
-        else if (type != std::filesystem::file_type::regular)
-            throw_input_error(file, place,
-                              "mtllib '" + name + "' is not a regular file (a folder, FIFO or device)");
-    }
+    // The body starts on the line after end_header's.
+    std::string_view data = bytes.substr(std::min(bytes.size(), header_end));
+    data.remove_prefix(std::min(data.find('\n'), data.size() - 1) + 1);
+    const bool own_line = header_end > 0 && bytes[header_end - 1] == '\n';  // `number` is end_header's line
+    if (ascii) check_ascii_ply_body(data, number + (own_line ? 1 : 0), elements, file);
 }
 
 // An OBJ's lines as words, '#' comments left out and lines ending in '\\' joined with the next; `visit`
@@ -153,13 +141,13 @@ void for_each_obj_line(std::string_view bytes,
     std::vector<std::string_view> words;
     int number = 0, first = 1;
     for (std::size_t start = 0; start < bytes.size();) {
-        std::size_t end = std::min(bytes.find('\n', start), bytes.size());
+        // A line ends at LF, CR LF or a lone CR (old Mac OS exporters), as assimp reads it.
+        const std::size_t end = std::min(bytes.find_first_of("\r\n", start), bytes.size());
         std::string_view line = bytes.substr(start, end - start);
-        start = end + 1;
+        start = end + (bytes.substr(end, 2) == "\r\n" ? 2 : 1);
         ++number;
         line = line.substr(0, std::min(line.find('#'), line.size()));
-        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
-            line.remove_suffix(1);
+        while (!line.empty() && (line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
         const bool continued = !line.empty() && line.back() == '\\';
         if (continued) line.remove_suffix(1);
         for (std::size_t i = 0; i < line.size();) {
@@ -176,8 +164,35 @@ void for_each_obj_line(std::string_view bytes,
     if (!words.empty()) visit(first, words);
 }
 
-// OBJ (Wavefront): `v`, `vt` and `vn` numbers finite in float (assimp reads "nan", "1e39" or "0x10" as 0
-// without a word), faces of 3 or more corners ("v", "v/t", "v//n", "v/t/n"), and every index naming one
+// OBJ's `mtllib NAME` (the rest of the line, beside the file): assimp opens it itself, or where it is
+// missing the OBJ's own name with .mtl, so a FIFO there would block it for ever and a folder read as "File
+// read error"; a library it does not find it skips silently, drawing its materials grey.
+void check_obj_material_libraries(std::string_view bytes, const std::string& file) {
+    for_each_obj_line(bytes, [&](int number, const std::vector<std::string_view>& words) {
+        if (words[0] != "mtllib" || words.size() < 2) return;
+        const std::string name(words[1].data(), words.back().data() + words.back().size());
+        const std::string place = "line " + std::to_string(number);
+        const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+        std::filesystem::path library = folder / name;
+        std::error_code error;
+        if (std::filesystem::status(library, error).type() == std::filesystem::file_type::not_found)
+            library = folder / (std::filesystem::path(file).stem().string() + ".mtl");
+        const std::filesystem::file_type type = std::filesystem::status(library, error).type();
+        if (type == std::filesystem::file_type::not_found)
+            std::fprintf(
+                stderr, "boxlod: warning: %s\n",
+                input_message(file, place, "mtllib '" + name + "' is missing: its materials are drawn grey")
+                    .c_str());
+        else if (type != std::filesystem::file_type::regular)
+            throw_input_error(file, place,
+                              "mtllib '" + library.filename().string() +
+                                  "' is not a regular file (a folder, FIFO or device)");
+    });
+}
+
+// OBJ (Wavefront): `v` and `vt` numbers finite in float (assimp reads "nan", "1e39" or "0x10" as 0
+// without a word; a `vn` of NaN, which tools write for degenerate faces, reads as 0 and boxlod makes the
+// part's normals anew), faces of 3 or more corners ("v", "v/t", "v//n", "v/t/n"), and every index naming one
 // of the file's (1-based; negative: counted back from the latest so far): assimp drops an out-of-range
 // texture coordinate or normal index silently, and with it the material's texture.
 void check_obj(std::string_view bytes, const std::string& file) {
@@ -193,7 +208,7 @@ void check_obj(std::string_view bytes, const std::string& file) {
         for (std::size_t k = 0; k < kinds.size(); ++k) {
             if (words[0] != kinds[k]) continue;
             ++so_far[k];
-            for (std::size_t w = 1; w < words.size(); ++w) {
+            for (std::size_t w = 1; w < words.size() && words[0] != "vn"; ++w) {
                 double value = 0;
                 std::string_view number = words[w];
                 if (number.size() > 1 && number[0] == '+' && number[1] != '-')
@@ -229,6 +244,29 @@ void check_obj(std::string_view bytes, const std::string& file) {
                                   "corner '" + std::string(words[w]) + "' has more than 3 indices");
         }
     });
+}
+
+// An OFF face "n i1 .. in": n whole indices, each naming one of the file's vertices.
+void check_off_face(const std::string& line, std::size_t vertices, const std::string& file,
+                    const std::string& at) {
+    std::istringstream face(line);
+    std::string corners_text, index_text;
+    face >> corners_text;
+    const std::size_t corners = parse_count(corners_text, file, at);
+    for (std::size_t k = 0; k < corners; ++k) {
+        long long index = -1;  // signed: a "-1" is reported as itself, not wrapped around
+        if (!(face >> index_text))
+            throw_input_error(file, at,
+                              "a face of " + std::to_string(corners) + " corners gives " + std::to_string(k) +
+                                  " vertex indices");
+        auto [end, error] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+        if (error != std::errc() || end != index_text.data() + index_text.size() || index < 0 ||
+            std::size_t(index) >= vertices)
+            throw_input_error(file, at,
+                              "vertex index " + index_text + " is not one of the " +
+                                  std::to_string(vertices) + " vertices (0 to " + std::to_string(vertices) +
+                                  " - 1)");
+    }
 }
 
 // OFF (Geomview): "OFF", vertex, face and edge counts, a line per vertex, a
@@ -274,26 +312,7 @@ void check_off(std::string_view bytes, const std::string& file) {
         if (!next_line()) ends("vertex", v, vertices);
     for (std::size_t f = 0; f < faces; ++f) {
         if (!next_line()) ends("face", f, faces);
-        std::istringstream face(line);
-        std::string corners_text, index_text;
-        face >> corners_text;
-        const std::string at = "line " + std::to_string(number);
-        const std::size_t corners = parse_count(corners_text, file, at);
-        for (std::size_t k = 0; k < corners; ++k) {
-            long long index = -1;  // signed: a "-1" is reported as itself, not wrapped around
-            if (!(face >> index_text))
-                throw_input_error(file, at,
-                                  "a face of " + std::to_string(corners) + " corners gives " +
-                                      std::to_string(k) + " vertex indices");
-            auto [end, error] =
-                std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
-            if (error != std::errc() || end != index_text.data() + index_text.size() || index < 0 ||
-                std::size_t(index) >= vertices)
-                throw_input_error(file, at,
-                                  "vertex index " + index_text + " is not one of the " +
-                                      std::to_string(vertices) + " vertices (0 to " +
-                                      std::to_string(vertices) + " - 1)");
-        }
+        check_off_face(line, vertices, file, "line " + std::to_string(number));
     }
 }
 

@@ -231,10 +231,12 @@ void check_instance_copies(const std::string& file, const std::vector<Part>& par
             if (!object.is_object() || geometries == object.end() || !geometries->is_array()) continue;
             for (std::size_t g : city_geometries_of_lod(*geometries, lod)) {
                 const json& geometry = (*geometries)[g];
-                auto t = geometry.is_object() ? geometry.find("template") : geometry.end();
-                if (!geometry.is_object() || t == geometry.end() || !t->is_number_unsigned() ||
-                    t->get<std::size_t>() >= list.size() || geometry.value("type", "") != "GeometryInstance")
+                if (!geometry.is_object() || !geometry.contains("type") ||
+                    geometry["type"] != json("GeometryInstance"))
                     continue;
+                auto t = geometry.find("template");
+                if (t == geometry.end() || !t->is_number_unsigned() || t->get<std::size_t>() >= list.size())
+                    continue;  // refused as it is read
                 std::optional<std::size_t>& count = copied[t->get<std::size_t>()];
                 if (!count) count = city_template_points(list[t->get<std::size_t>()]);
                 points += double(*count);

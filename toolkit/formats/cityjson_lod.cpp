@@ -23,10 +23,14 @@ std::string city_geometry_lod(const json& geometry) {
 }
 
 double city_lod_number(const std::string& lod) {
-    char* end = nullptr;
-    const double value = std::strtod(lod.c_str(), &end);
-    const bool whole = !lod.empty() && end == lod.c_str() + lod.size() && std::isdigit((unsigned char)lod[0]);
-    return whole && value >= 0 && value <= 4 ? value : -1;
+    // Digits with at most one inner dot ("2", "2.2"): not "0x2", "2e0" or "2.2.2".
+    const std::size_t dot = lod.find('.');
+    if (lod.empty() || lod.size() > 8 || lod.find_first_not_of("0123456789.") != std::string::npos ||
+        dot == 0 || dot + 1 == lod.size() ||
+        (dot != std::string::npos && lod.find('.', dot + 1) != std::string::npos))
+        return -1;
+    const double value = std::strtod(lod.c_str(), nullptr);
+    return value <= 4 ? value : -1;
 }
 
 std::vector<std::size_t> city_geometries_of_lod(const json& geometries, const std::string& lod) {

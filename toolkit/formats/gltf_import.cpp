@@ -310,16 +310,22 @@ std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model
     return node.children;
 }
 
-// The bounds of mesh m's drawn positions, in its own coordinates (non-finite ones left to validate_model).
-Eigen::AlignedBox3d position_bounds(const Reader& reader, int m, const std::string& place) {
+// The bounds of mesh m's drawn positions, in its own coordinates (non-finite ones left to validate_model);
+// each accessor is read once, however many primitives share it.
+Eigen::AlignedBox3d position_bounds(const Reader& reader, int m, const std::string& place,
+                                    std::map<int, Eigen::AlignedBox3d>& accessor_bounds) {
     Eigen::AlignedBox3d bounds;
     const tinygltf::Mesh& mesh = reader.gltf.meshes[std::size_t(m)];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         auto position = mesh.primitives[p].attributes.find("POSITION");
         if (!draws_triangles(mesh.primitives[p]) || position == mesh.primitives[p].attributes.end()) continue;
-        const std::string at = place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p);
-        for (const Eigen::Vector3d& point : reader.vectors<3>(position->second, at))
-            if (point.allFinite()) bounds.extend(point);
+        auto [known, added] = accessor_bounds.try_emplace(position->second);
+        if (added) {
+            const std::string at = place + " mesh " + std::to_string(m) + " primitive " + std::to_string(p);
+            for (const Eigen::Vector3d& point : reader.vectors<3>(position->second, at))
+                if (point.allFinite()) known->second.extend(point);
+        }
+        if (!known->second.isEmpty()) bounds.extend(known->second);
     }
     return bounds;
 }
@@ -331,6 +337,7 @@ Eigen::AlignedBox3d position_bounds(const Reader& reader, int m, const std::stri
 Eigen::Vector3d local_origin(const Reader& reader, const std::vector<int>& roots) {
     const tinygltf::Model& gltf = reader.gltf;
     std::vector<std::optional<Eigen::AlignedBox3d>> mesh_bounds(gltf.meshes.size());
+    std::map<int, Eigen::AlignedBox3d> accessor_bounds;
     std::vector<char> reached(gltf.nodes.size(), 0);
     Eigen::AlignedBox3d bounds;
     std::vector<std::pair<int, Eigen::Matrix4d>> stack;
@@ -347,7 +354,7 @@ Eigen::Vector3d local_origin(const Reader& reader, const std::vector<int>& roots
         if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
         if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) {
             std::optional<Eigen::AlignedBox3d>& local = mesh_bounds[std::size_t(node.mesh)];
-            if (!local) local = position_bounds(reader, node.mesh, place);
+            if (!local) local = position_bounds(reader, node.mesh, place, accessor_bounds);
             for (int c = 0; c < 8 && !local->isEmpty(); ++c)
                 bounds.extend(world.topLeftCorner<3, 3>() *
                                   local->corner(Eigen::AlignedBox3d::CornerType(c)) +

@@ -1,6 +1,7 @@
 // glTF 2.0 (.gltf, .glb) import and export, with tinygltf.
-// Node transforms are applied and shared meshes expanded on import; scopes,
-// rules and the LoD mark travel in `extras.boxlod` (docs/design.md: Scene model).
+// Node transforms are applied (in double, relative to a local origin for a
+// model more than 10 km from the file's) and shared meshes expanded on import;
+// scopes, rules and the LoD mark travel in `extras.boxlod` (docs/design.md: Scene model).
 #pragma once
 #include "toolkit/model/lod_switch.h"
 #include "toolkit/model/model.h"

@@ -82,6 +82,31 @@ bool points(const std::vector<Axis>& axes, const std::string& direction) {
 
 }  // namespace
 
+// The azimuth from true north, degrees, of `to` seen from `from` (longitudes and latitudes, on the sphere).
+double azimuth(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    const double east = std::remainder(to.x() - from.x(), 360.0) * std::cos(from.y() * M_PI / 180);
+    return std::atan2(east, to.y() - from.y()) * 180 / M_PI;
+}
+
+// Far outside where a projection is meant for it still gives a place (RD New at 9e8 m: 51.6 S, 176 W;
+// Web Mercator at 1e11 m: the pole): whether `point`, at `longitude_latitude`, comes back from WGS 84
+// within a kilometre and lies within the system's area of use (EPSG's, as PROJ gives it; across the
+// antimeridian west > east) and 5 degrees around it.
+bool meant_for(PJ_CONTEXT* context, PJ* system, PJ* to_wgs84, const Eigen::Vector3d& point,
+               const Eigen::Vector2d& longitude_latitude) {
+    constexpr double margin = 5;
+    const PJ_COORD back =
+        proj_trans(to_wgs84, PJ_INV, proj_coord(longitude_latitude.x(), longitude_latitude.y(), 0, 0));
+    if (!(std::hypot(back.xy.x - point.x(), back.xy.y - point.y()) <= 1000)) return false;
+    double west = 0, south = 0, east = 0, north = 0;
+    if (!proj_get_area_of_use(context, system, &west, &south, &east, &north, nullptr) || west < -180)
+        return true;
+    const double longitude = longitude_latitude.x(), latitude = longitude_latitude.y();
+    const bool in_longitude = west <= east ? longitude >= west - margin && longitude <= east + margin
+                                           : longitude >= west - margin || longitude <= east + margin;
+    return in_longitude && latitude >= south - margin && latitude <= north + margin;
+}
+
 MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Vector3d& point,
                             const std::string& source) {
     auto fail = [&](const std::string& what) {
@@ -128,19 +153,14 @@ MapPlacement place_on_earth(const std::string& reference_system, const Eigen::Ve
                           north = longitude_latitude(to_wgs84.get(), point.x(), point.y() + 1000);
     if (!here.allFinite() || !north.allFinite() || std::abs(here.y()) > 90 || std::abs(north.y()) > 90)
         fail("the model's origin does not transform to WGS 84");
-    // Far outside where a projection is defined it still gives a place, but not the way back (RD New at
-    // 9e8 m gave 51.6 S, 176 W; Web Mercator at 1e11 m the pole): the origin must come back within a metre.
-    const PJ_COORD back = proj_trans(to_wgs84.get(), PJ_INV, proj_coord(here.x(), here.y(), 0, 0));
-    if (!(std::hypot(back.xy.x - point.x(), back.xy.y - point.y()) <= 1))
+    if (!meant_for(context.get(), system.get(), to_wgs84.get(), point, here))
         fail("the model's origin (" + format_number(point.x()) + ", " + format_number(point.y()) +
-             ") lies outside where it is defined (WGS 84 does not lead back to it)");
-    const double phi = here.y() * M_PI / 180;
-    const double east = std::remainder(north.x() - here.x(), 360.0) * std::cos(phi),
-                 up_north = north.y() - here.y();
+             ") lies outside where it is meant for (at longitude " + format_number(here.x()) + ", latitude " +
+             format_number(here.y()) + ")");
     MapPlacement placement;
     placement.at.latitude_degrees = here.y();
     placement.at.longitude_degrees = here.x();
-    placement.at.heading_degrees = std::atan2(east, up_north) * 180 / M_PI;
+    placement.at.heading_degrees = azimuth(here, north);
     const PJ_PROJ_INFO info = proj_pj_info(to_wgs84.get());
     placement.operation = info.description ? info.description : "";
     placement.at.height = point.z();

@@ -139,9 +139,9 @@ struct Model {
     std::vector<Texture> textures;
     std::string source;  // the file it came from
     // Where the model's (0, 0, 0) lies in the source's coordinates, in the
-    // model's frame (y up): a city file's vertices are kept relative to it so
-    // that float keeps them exact; glTF writes it as the root's translation
-    // and 3D Tiles as the root tile's transform (docs/design.md: Files).
+    // model's frame (y up): a city file's, an IFC's or a far glTF's vertices are
+    // kept relative to it so that float keeps them exact; glTF writes it as the
+    // root's translation and 3D Tiles as the root tile's transform (docs/design.md: Files).
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     // The source's coordinate reference system as it names it (CityJSON's
     // metadata.referenceSystem), "" when it names none: where `origin` lies on the Earth.

@@ -124,8 +124,6 @@ std::vector<std::string> row_of(const Table& table, const std::string& prefix) {
     return table[0];
 }
 
-// The baselines come after the LoD rows: a simplified mesh per level of the first level
-// mode, at that level's triangles (never above), and the single box at its top.
 // Kept images are named after the model's name made a file name: x/t.glb and x_t.glb wrote over each
 // other's, and the sweep said nothing; now it is refused before any folder is made.
 TEST(Sweep, ModelsWhoseKeptImagesWouldShareNamesAreRefused) {
@@ -142,6 +140,8 @@ TEST(Sweep, ModelsWhoseKeptImagesWouldShareNamesAreRefused) {
     run_sweep(s.config, (s.folder / "out").string(), 1);  // without images the names may meet
 }
 
+// The baselines come after the LoD rows: a simplified mesh per level of the first level
+// mode, at that level's triangles (never above), and the single box at its top.
 TEST(Sweep, BaselinesFollowTheFirstLevelModesTriangles) {
     SmallSweep s = small_sweep("sweep_baselines", "baselines = simplification, single-box\n");
     SweepReport report = run_sweep(s.config, (s.folder / "out").string(), 2);

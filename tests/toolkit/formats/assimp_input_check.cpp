@@ -31,9 +31,14 @@ TEST(AssimpInputCheck, PlyCountsMustFitTheFile) {
     EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ".ply"), "");
     // assimp read on past an entry into the next ones (a face "200 0 1 2" became 199 triangles).
     EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n", ".ply"),
-              "m.ply: line 7: element 'face': entry 0's list length '200' is not a count its data holds");
+              "m.ply: line 13: element 'face' entry 0: 4 numbers where its properties take 201");
     EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", ".ply"),
-              "m.ply: line 7: element 'face': the data ends in entry 0 of 1 (truncated file?)");
+              "m.ply: line 13: element 'face' entry 0: 3 numbers where its properties take 4");
+    // An entry per line: a list shorter than its count, made up by the next line, is refused too.
+    EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1\n0\n3 0 1 2\n", ".ply"),
+              "m.ply: line 12: element 'vertex' entry 2: 2 numbers where its properties take 3");
+    EXPECT_EQ(problem(header + "0 0 0\n1 0 0\n0 1 0\n\n\n", ".ply"),
+              "m.ply: line 15: the file ends at element 'face' entry 0 of 1 (truncated file?)");
     std::string huge = "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\nend_header\n0\n";
     EXPECT_EQ(
         problem(huge, ".ply"),
@@ -145,6 +150,10 @@ TEST(AssimpInputCheck, AnObjsMaterialLibraryIsARegularFileOrMissing) {
               file + ": line 2: mtllib 'folder.mtl' is not a regular file (a folder, FIFO or device)");
     EXPECT_EQ(problem_with("real.mtl"), "");
     EXPECT_EQ(problem_with("missing.mtl"), "");
+    // Where the library named is missing, assimp reads the OBJ's own name with .mtl.
+    ASSERT_EQ(::mkfifo((folder / "m.mtl").c_str(), 0600), 0);
+    EXPECT_EQ(problem_with("missing.mtl"),
+              file + ": line 2: mtllib 'm.mtl' is not a regular file (a folder, FIFO or device)");
 }
 
 // assimp read these as 0, or dropped the index and with it the material's texture, without a word.
@@ -164,6 +173,10 @@ TEST(AssimpInputCheck, ObjNumbersAreFiniteAndItsIndicesNameWhatTheFileHas) {
     EXPECT_EQ(problem("v 0 0 0\nf -2 1 1\nv 1 0 0\n", ".obj"),
               "m.obj: line 2: corner '-2': vertex index '-2' is not one of the 1 vertices before it");
     EXPECT_EQ(problem(triangle + "f 1 2\n", ".obj"), "m.obj: line 6: a face of fewer than 3 corners");
+    // Lines may end in a lone CR; a NaN normal reads as 0, and boxlod makes the part's normals anew.
+    EXPECT_EQ(problem("v 0 0 0\rv 1 0 0\rv 0 1 0\rvn nan 0 1\rf 1//1 2//1 3//1\r", ".obj"), "");
+    EXPECT_EQ(problem("v 0 0 0\r\nf 1 1 x\r\n", ".obj"),
+              "m.obj: line 2: corner 'x': vertex index 'x' is not one of the 1 vertices in the file");
     EXPECT_EQ(problem(triangle + "f 1/1/1/1 2 3\n", ".obj"),
               "m.obj: line 6: corner '1/1/1/1' has more than 3 indices");
 }

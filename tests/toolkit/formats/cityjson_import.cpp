@@ -365,7 +365,7 @@ TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
             .find("CityObjects 'b': geometry 0: 'lod' \"2.2.2\" is not an LoD (0 to 4, or a refinement such "
                   "as 2.2)"),
         std::string::npos);
-    for (const json& lod : {json("999"), json(""), json(-1), json(nullptr)}) {
+    for (const json& lod : {json("999"), json(""), json(-1), json(nullptr), json("0x2"), json("2e0")}) {
         wrong[0]["lod"] = lod;
         EXPECT_NE(test::input_error_of([&] {
                       read(city({{"b", {{"type", "Building"}, {"geometry", wrong}}}}, square_vertices),

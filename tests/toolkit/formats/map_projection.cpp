@@ -44,18 +44,22 @@ TEST(MapProjection, TheGridsNorthTurnsAwayFromTheCentralMeridian) {
     EXPECT_NEAR(placed.at.heading_degrees, convergence, 0.01);
 }
 
-// Far outside its domain a projection still gives a place, but not the way back: RD New at 9e8 m was
-// placed at 51.6 S, 176 W, Web Mercator at 1e11 m at the pole.
+// Far outside where it is meant for a projection still gives a place: RD New at 9e8 m was placed at
+// 51.6 S, 176 W, Web Mercator at 1e11 m at the pole.
 TEST(MapProjection, AnOriginOutsideWhereTheSystemIsDefinedIsRefused) {
     for (const auto& [system, far] : {std::pair{"EPSG:7415", 9e8}, std::pair{"EPSG:3857", 1e11}}) {
         const std::string error = test::input_error_of([&] {
             place_on_earth(system, {far, far, 0}, "far.city.json");
         });
-        EXPECT_NE(error.find("lies outside where it is defined (WGS 84 does not lead back to it)"),
-                  std::string::npos)
+        EXPECT_NE(error.find("lies outside where it is meant for (at longitude"), std::string::npos)
             << system << ": " << error;
     }
     EXPECT_EQ(test::input_error_of([] { place_on_earth("EPSG:3857", {1e6, 6e6, 0}, "near.city.json"); }), "");
+    // A degree beyond a UTM zone's edge: still where the zone's grid is used.
+    EXPECT_EQ(test::input_error_of([] {
+                  place_on_earth("EPSG:32632", {200000, 5400000, 0}, "edge.city.json");
+              }),
+              "");
 }
 
 TEST(MapProjection, AnUnknownSystemIsRefusedNamingTheFile) {
