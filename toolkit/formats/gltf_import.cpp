@@ -77,8 +77,8 @@ std::vector<std::uint32_t> triangle_list(const std::vector<std::uint32_t>& in, i
     return out;
 }
 
-bool draws_triangles(
-    const tinygltf::Primitive& primitive) {  // points and lines have no faces to draw or bake
+// Points and lines have no faces to draw or bake.
+bool draws_triangles(const tinygltf::Primitive& primitive) {
     return primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
            primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN || primitive.mode == -1;
 }
