@@ -353,13 +353,20 @@ void walk(const CityPlace& at, GeometryEmission& g, const json& boundaries, int 
     }
 }
 
-// How deep a geometry type nests surfaces in its boundaries; 0: no surfaces (points, lines).
-int surface_depth(const CityPlace& at, const std::string& type) {
+// How deep a geometry type nests surfaces in its boundaries; 0: no surfaces (points, lines); -1: no type
+// CityJSON knows.
+int surface_depth(const std::string& type) {
     if (type == "MultiSurface" || type == "CompositeSurface") return 1;
     if (type == "Solid") return 2;
     if (type == "MultiSolid" || type == "CompositeSolid") return 3;
     if (type == "MultiPoint" || type == "MultiLineString") return 0;
-    at.fail("unknown geometry type '" + type + "'");
+    return -1;
+}
+
+int surface_depth(const CityPlace& at, const std::string& type) {
+    const int depth = surface_depth(type);
+    if (depth < 0) at.fail("unknown geometry type '" + type + "'");
+    return depth;
 }
 
 void read_geometry(const CityPlace& at, CityReadState& s, const json& geometry, int object_node,
@@ -390,8 +397,7 @@ std::vector<std::size_t> surface_point_indices(const json& shape) {
     if (!shape.is_object() || !shape.contains("boundaries") || !shape["boundaries"].is_array())
         return indices;
     const std::string type = shape.contains("type") && shape["type"].is_string() ? shape["type"] : json("");
-    for (const char* surfaces : {"MultiSurface", "CompositeSurface", "Solid", "MultiSolid", "CompositeSolid"})
-        if (type == surfaces) collect_point_indices(shape["boundaries"], 0, indices);
+    if (surface_depth(type) > 0) collect_point_indices(shape["boundaries"], 0, indices);
     return indices;
 }
 
