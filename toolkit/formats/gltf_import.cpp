@@ -310,6 +310,41 @@ std::vector<int> take_origin(const Reader& reader, std::vector<int> roots, Model
     return node.children;
 }
 
+// Visits the node trees under `roots` depth-first, parents before children, with each node's world matrix:
+// visit(n, node, world, parent) returns what its children get as `parent`. An explicit stack, so that a
+// deep chain cannot overflow; a node index out of range or a node reached twice (a cycle, or a node shared,
+// which glTF 2.0 section 3.5.3 forbids) is refused.
+template <class Visit>
+void walk_nodes(const Reader& reader, const std::vector<int>& roots, const Eigen::Matrix4d& roots_world,
+                int roots_parent, Visit visit) {
+    const tinygltf::Model& gltf = reader.gltf;
+    struct Pending {
+        int gltf_node;
+        int parent;
+        Eigen::Matrix4d parent_world;
+    };
+    std::vector<Pending> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, roots_parent, roots_world});
+    std::vector<char> reached(gltf.nodes.size(), 0);
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        const int n = pending.gltf_node;
+        const std::string place = "node " + std::to_string(n);
+        if (n < 0 || n >= int(gltf.nodes.size())) reader.fail(place, "node index out of range");
+        if (reached[std::size_t(n)])
+            reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
+        reached[std::size_t(n)] = 1;
+        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
+        const Eigen::Matrix4d world = pending.parent_world * local_transform(node, reader, place);
+        if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
+        const int parent = visit(n, node, world, pending.parent);
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            stack.push_back({*child, parent, world});
+    }
+}
+
 // The bounds of mesh m's drawn positions, in its own coordinates (non-finite ones left to validate_model);
 // each accessor is read once, however many primitives share it.
 Eigen::AlignedBox3d position_bounds(const Reader& reader, int m, const std::string& place,
@@ -338,31 +373,21 @@ Eigen::Vector3d local_origin(const Reader& reader, const std::vector<int>& roots
     const tinygltf::Model& gltf = reader.gltf;
     std::vector<std::optional<Eigen::AlignedBox3d>> mesh_bounds(gltf.meshes.size());
     std::map<int, Eigen::AlignedBox3d> accessor_bounds;
-    std::vector<char> reached(gltf.nodes.size(), 0);
     Eigen::AlignedBox3d bounds;
-    std::vector<std::pair<int, Eigen::Matrix4d>> stack;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-        stack.push_back({*it, Eigen::Matrix4d::Identity()});
-    while (!stack.empty()) {
-        const auto [n, parent_world] = stack.back();
-        stack.pop_back();
-        if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;  // read_nodes says why
-        reached[std::size_t(n)] = 1;
-        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
-        const std::string place = "node " + std::to_string(n);
-        const Eigen::Matrix4d world = parent_world * local_transform(node, reader, place);
-        if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
-        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) {
-            std::optional<Eigen::AlignedBox3d>& local = mesh_bounds[std::size_t(node.mesh)];
-            if (!local) local = position_bounds(reader, node.mesh, place, accessor_bounds);
-            for (int c = 0; c < 8 && !local->isEmpty(); ++c)
-                bounds.extend(world.topLeftCorner<3, 3>() *
-                                  local->corner(Eigen::AlignedBox3d::CornerType(c)) +
-                              world.topRightCorner<3, 1>());
-        }
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
-            stack.push_back({*child, world});
-    }
+    walk_nodes(reader, roots, Eigen::Matrix4d::Identity(), -1,
+               [&](int n, const tinygltf::Node& node, const Eigen::Matrix4d& world, int) {
+                   if (node.mesh < 0 || node.mesh >= int(gltf.meshes.size()))
+                       return -1;  // read_nodes says why
+                   std::optional<Eigen::AlignedBox3d>& local = mesh_bounds[std::size_t(node.mesh)];
+                   if (!local)
+                       local =
+                           position_bounds(reader, node.mesh, "node " + std::to_string(n), accessor_bounds);
+                   for (int c = 0; c < 8 && !local->isEmpty(); ++c)
+                       bounds.extend(world.topLeftCorner<3, 3>() *
+                                         local->corner(Eigen::AlignedBox3d::CornerType(c)) +
+                                     world.topRightCorner<3, 1>());
+                   return -1;
+               });
     const Eigen::Vector3d middle =
         bounds.isEmpty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(bounds.center());
     if (!(middle.allFinite() && (middle.array().abs() <= coordinate_range.max).all()))
@@ -418,64 +443,41 @@ void read_mesh(const Reader& reader, int m, const Eigen::Matrix4d& world, const 
 }
 
 // The node tree under the roots (several roots get a common one, named after
-// the file), geometry in world space; depth-first, parents before children,
-// with an explicit stack so that a deep chain cannot overflow.
+// the file), geometry in world space, parents before children (walk_nodes).
 void read_nodes(const Reader& reader, const std::vector<int>& roots, const Eigen::Vector3d& origin,
                 Model& model) {
     const tinygltf::Model& gltf = reader.gltf;
     // Meshes used by more than one node of the scene are instances (the nodes
     // a file keeps outside it, such as MSFT_lod's coarser levels, do not count).
     std::vector<int> mesh_users(gltf.meshes.size(), 0);
-    std::vector<char> reached(gltf.nodes.size(), 0);
-    for (std::vector<int> pending = roots; !pending.empty();) {
-        int n = pending.back();
-        pending.pop_back();
-        if (n < 0 || n >= int(gltf.nodes.size()) || reached[std::size_t(n)]) continue;
-        reached[std::size_t(n)] = 1;
-        const tinygltf::Node& node = gltf.nodes[std::size_t(n)];
-        if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size())) ++mesh_users[std::size_t(node.mesh)];
-        pending.insert(pending.end(), node.children.begin(), node.children.end());
-    }
-    struct Visit {
-        int gltf_node;
-        int parent;
-        Eigen::Matrix4d parent_world;
-    };
-    std::vector<Visit> stack;
+    walk_nodes(reader, roots, Eigen::Matrix4d::Identity(), -1,
+               [&](int, const tinygltf::Node& node, const Eigen::Matrix4d&, int) {
+                   if (node.mesh >= 0 && node.mesh < int(gltf.meshes.size()))
+                       ++mesh_users[std::size_t(node.mesh)];
+                   return -1;
+               });
     if (roots.size() > 1) add_node(model, -1, utf8_or_latin1(fs::path(reader.file).stem().string()));
     Eigen::Matrix4d relative_to_origin = Eigen::Matrix4d::Identity();
     relative_to_origin.topRightCorner<3, 1>() = -origin;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
-        stack.push_back({*it, roots.size() > 1 ? 0 : -1, relative_to_origin});
-    std::vector<bool> visited(gltf.nodes.size(), false);
     double meshes_memory = 0;
-    while (!stack.empty()) {
-        Visit visit = stack.back();
-        stack.pop_back();
-        std::string place = "node " + std::to_string(visit.gltf_node);
-        if (visit.gltf_node < 0 || visit.gltf_node >= int(gltf.nodes.size()))
-            reader.fail(place, "node index out of range");
-        if (visited[visit.gltf_node])
-            reader.fail(place, "node appears twice in the hierarchy (cycle or shared node)");
-        visited[visit.gltf_node] = true;
-        const tinygltf::Node& in = gltf.nodes[visit.gltf_node];
-        Eigen::Matrix4d world = visit.parent_world * local_transform(in, reader, place);
-        if (!world.allFinite()) reader.fail(place, "transform is NaN or infinite");
-        int index = add_node(model, visit.parent, in.name);
-        Node& node = model.nodes[index];
-        if (in.mesh >= int(gltf.meshes.size())) reader.fail(place, "mesh index out of range");
-        if (in.skin >= int(gltf.skins.size())) reader.fail(place, "skin index out of range");
-        if (in.camera >= int(gltf.cameras.size())) reader.fail(place, "camera index out of range");
-        if (in.mesh >= 0) {
-            const tinygltf::Mesh& mesh = gltf.meshes[in.mesh];
-            read_mesh(reader, in.mesh, world, place, node, meshes_memory);
-            if (mesh_users[in.mesh] > 1)
-                node.instance_of = mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
-        }
-        read_node_extras(in.extras, {reader.file, place}, node);
-        for (auto child = in.children.rbegin(); child != in.children.rend(); ++child)
-            stack.push_back({*child, index, world});
-    }
+    walk_nodes(reader, roots, relative_to_origin, roots.size() > 1 ? 0 : -1,
+               [&](int n, const tinygltf::Node& in, const Eigen::Matrix4d& world, int parent) {
+                   const std::string place = "node " + std::to_string(n);
+                   const int index = add_node(model, parent, in.name);
+                   Node& node = model.nodes[std::size_t(index)];
+                   if (in.mesh >= int(gltf.meshes.size())) reader.fail(place, "mesh index out of range");
+                   if (in.skin >= int(gltf.skins.size())) reader.fail(place, "skin index out of range");
+                   if (in.camera >= int(gltf.cameras.size())) reader.fail(place, "camera index out of range");
+                   if (in.mesh >= 0) {
+                       read_mesh(reader, in.mesh, world, place, node, meshes_memory);
+                       const tinygltf::Mesh& mesh = gltf.meshes[std::size_t(in.mesh)];
+                       if (mesh_users[std::size_t(in.mesh)] > 1)
+                           node.instance_of =
+                               mesh.name.empty() ? "mesh " + std::to_string(in.mesh) : mesh.name;
+                   }
+                   read_node_extras(in.extras, {reader.file, place}, node);
+                   return index;
+               });
 }
 
 }  // namespace
