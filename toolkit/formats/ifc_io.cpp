@@ -4,9 +4,9 @@
 #include "base/input_error.h"
 #include "base/input_file.h"
 #include "base/utf8.h"
-#include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/ifc_reader_script.h"
 #include "toolkit/formats/json_input.h"
+#include "toolkit/formats/step_file_check.h"
 
 #include <nlohmann/json.hpp>
 

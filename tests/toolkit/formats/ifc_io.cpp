@@ -1,7 +1,7 @@
 #include "toolkit/formats/ifc_io.h"
+#include "toolkit/formats/step_file_check.h"
 
 #include "test_support.h"
-#include "toolkit/formats/assimp_input_check.h"
 #include "toolkit/formats/assimp_io.h"
 #include "toolkit/formats/model_bytes.h"
 #include "toolkit/formats/model_io.h"

@@ -1,0 +1,228 @@
+#include "toolkit/formats/step_file_check.h"
+
+#include "base/input_error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace boxlod {
+namespace {
+
+bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+std::string_view trimmed(std::string_view text) {
+    while (!text.empty() && is_space(text.front())) text.remove_prefix(1);
+    while (!text.empty() && is_space(text.back())) text.remove_suffix(1);
+    return text;
+}
+
+// The file with its comments (/* ... */ outside strings) made spaces, so that a '#' in one names nothing.
+std::string blank_comments(std::string_view bytes) {
+    std::string text(bytes);
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\'') {  // a string; '' is a quote inside it
+            i = step_string_end(text, i);
+        } else if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+            const std::size_t end = std::min(text.find("*/", i + 2), text.size() - 2) + 2;
+            std::fill(text.begin() + std::ptrdiff_t(i), text.begin() + std::ptrdiff_t(end), ' ');
+            i = end - 1;
+        }
+    }
+    return text;
+}
+
+// The number at text[at] (0 where there is none); `at` moves past it.
+std::uint64_t number_at(std::string_view text, std::size_t& at) {
+    std::uint64_t value = 0;
+    auto [end, error] = std::from_chars(text.data() + at, text.data() + text.size(), value);
+    at = std::size_t(end - text.data());
+    return error == std::errc() ? value : std::uint64_t(0);
+}
+
+// "#N" (not "#" + ...: GCC 12's false -Wrestrict).
+std::string instance_place(std::uint64_t id) { return std::to_string(id).insert(0, 1, '#'); }
+
+// ISO 10303-21 instances as a graph: each instance's references, and for the
+// IFC relationships assimp walks as a tree, the relating object's children.
+struct StepGraph {
+    std::vector<std::uint64_t> ids;
+    std::vector<std::vector<std::uint32_t>> references, children;
+    std::unordered_map<std::uint64_t, std::uint32_t> index;
+
+    std::uint32_t node(std::uint64_t id) {
+        auto [it, added] = index.emplace(id, std::uint32_t(ids.size()));
+        if (added) {
+            ids.push_back(id);
+            references.emplace_back();
+            children.emplace_back();
+        }
+        return it->second;
+    }
+};
+
+// IFC's relationships that make the spatial tree: the relating and related attributes' positions (IFC2x3
+// and IFC4).
+struct Relationship {
+    const char* type;
+    int relating, related;
+};
+constexpr Relationship relationships[] = {{"IFCRELAGGREGATES", 4, 5},
+                                          {"IFCRELNESTS", 4, 5},
+                                          {"IFCRELCONTAINEDINSPATIALSTRUCTURE", 5, 4},
+                                          {"IFCRELVOIDSELEMENT", 4, 5},
+                                          {"IFCRELFILLSELEMENT", 4, 5}};
+
+// A type's name in either case, as ISO 10303-21 allows.
+const Relationship* relationship_of(std::string_view type) {
+    for (const Relationship& r : relationships)
+        if (std::equal(type.begin(), type.end(), r.type, r.type + std::char_traits<char>::length(r.type),
+                       [](char a, char b) { return std::toupper(static_cast<unsigned char>(a)) == b; }))
+            return &r;
+    return nullptr;
+}
+
+// One instance, `#N = TYPE(attributes)` (or a complex one, `#N = (A(...) B(...))`), the text of its
+// statement before the ';': its references and relationships into `graph`.
+void read_instance(std::string_view text, const std::string& file, StepGraph& graph) {
+    std::size_t i = 1;
+    const std::uint64_t id = number_at(text, i);
+    const std::string place = instance_place(id);
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (i == 1 || i >= text.size() || text[i] != '=')
+        throw_input_error(file, place, "expected '#N = TYPE(...);' (ISO 10303-21 section 11)");
+    ++i;
+    while (i < text.size() && is_space(text[i])) ++i;
+    std::size_t type_end = i;
+    while (type_end < text.size() && (std::isalnum(static_cast<unsigned char>(text[type_end])) ||
+                                      text[type_end] == '_' || text[type_end] == '!'))
+        ++type_end;
+    const std::string_view type = text.substr(i, type_end - i);
+    i = type_end;
+    while (i < text.size() && is_space(text[i])) ++i;
+    if (i >= text.size() || text[i] != '(')
+        throw_input_error(file, place,
+                          "its type '" + std::string(type.substr(0, 40)) + "' is not followed by '('");
+    const std::uint32_t instance = graph.node(id);
+    const Relationship* relationship = relationship_of(type);
+    std::vector<std::uint32_t> relating, related;
+    int depth = 0, attribute = 0;
+    for (; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\'') {
+            i = step_string_end(text, i);
+        } else if (c == '(') {
+            ++depth;
+        } else if (c == ')') {
+            if (--depth == 0) break;
+        } else if (c == ',' && depth == 1) {
+            ++attribute;
+        } else if (c == '#') {
+            std::size_t at = i + 1;
+            const std::uint32_t target = graph.node(number_at(text, at));
+            graph.references[instance].push_back(target);
+            if (relationship && attribute == relationship->relating) relating.push_back(target);
+            if (relationship && attribute == relationship->related) related.push_back(target);
+            i = at - 1;
+        }
+    }
+    if (depth != 0) throw_input_error(file, place, "its parentheses do not close before its ';'");
+    if (!trimmed(text.substr(i + 1)).empty())
+        throw_input_error(file, place, "text after its attributes before its ';' (a ';' missing?)");
+    for (std::uint32_t parent : relating)
+        graph.children[parent].insert(graph.children[parent].end(), related.begin(), related.end());
+}
+
+// The statements of the file, each up to its ';' (strings skipped): instances are read in a DATA section
+// and refused outside one (web-ifc reads them anywhere; ISO 10303-21 sections 8 and 9).
+StepGraph read_step_graph(std::string_view bytes, const std::string& file) {
+    StepGraph graph;
+    bool in_data = false, any_data = false;
+    for (std::size_t start = 0, i = 0; i < bytes.size(); ++i) {
+        if (bytes[i] == '\'') i = step_string_end(bytes, i);
+        if (i >= bytes.size() || bytes[i] != ';') continue;
+        const std::string_view statement = trimmed(bytes.substr(start, i - start));
+        start = i + 1;
+        if (!statement.empty() && statement[0] == '#') {
+            if (!in_data) {
+                std::size_t at = 1;
+                throw_input_error(file, instance_place(number_at(statement, at)),
+                                  "an instance outside a DATA section (ISO 10303-21 section 9)");
+            }
+            read_instance(statement, file, graph);
+        } else if (statement == "DATA" || (statement.substr(0, 4) == "DATA" && statement.size() > 4 &&
+                                           (statement[4] == '(' || is_space(statement[4])))) {
+            in_data = any_data = true;
+        } else if (statement == "ENDSEC") {
+            in_data = false;
+        }
+    }
+    if (!any_data) throw_input_error(file, "", "has no DATA section ('DATA;', ISO 10303-21 section 9)");
+    return graph;
+}
+
+// Depth-first over `edges` with an explicit stack: a cycle, or a path longer
+// than max_depth, is refused at the instance where it is found.
+void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::vector<std::uint32_t>>& edges,
+                               const std::string& what, const std::string& file, int max_depth) {
+    enum State : std::uint8_t { unseen, open, done };
+    std::vector<State> state(edges.size(), unseen);
+    std::vector<int> height(edges.size(), 0);
+    struct Frame {
+        std::uint32_t node;
+        std::size_t next;
+    };
+    for (std::uint32_t root = 0; root < edges.size(); ++root) {
+        if (state[root] != unseen) continue;
+        std::vector<Frame> stack{{root, 0}};
+        state[root] = open;
+        while (!stack.empty()) {
+            Frame& frame = stack.back();
+            if (frame.next < edges[frame.node].size()) {
+                std::uint32_t child = edges[frame.node][frame.next++];
+                if (state[child] == open)
+                    throw_input_error(file, instance_place(graph.ids[child]), what + " form a cycle");
+                if (state[child] == unseen) {
+                    if (stack.size() >= std::size_t(max_depth))
+                        throw_input_error(file, instance_place(graph.ids[child]),
+                                          what + " " + nesting_message());
+                    state[child] = open;
+                    stack.push_back({child, 0});
+                }
+                continue;
+            }
+            int h = 0;
+            for (std::uint32_t child : edges[frame.node]) h = std::max(h, height[child] + 1);
+            if (h > max_depth)
+                throw_input_error(file, instance_place(graph.ids[frame.node]),
+                                  what + " " + nesting_message());
+            height[frame.node] = h;
+            state[frame.node] = done;
+            stack.pop_back();
+        }
+    }
+}
+
+}  // namespace
+
+std::size_t step_string_end(std::string_view text, std::size_t i) {
+    for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\'')); ++i)
+        if (text[i] == '\'') ++i;
+    return i;
+}
+
+void check_step_file(std::string_view bytes, const std::string& file, int max_depth) {
+    std::size_t end = bytes.find_last_not_of(" \t\r\n");
+    constexpr std::string_view trailer = "END-ISO-10303-21;";
+    if (end == std::string_view::npos || end + 1 < trailer.size() ||
+        bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
+        throw_input_error(file, "", "does not end with 'END-ISO-10303-21;' (truncated file?)");
+    StepGraph graph = read_step_graph(blank_comments(bytes), file);
+    check_acyclic_and_shallow(graph, graph.references, "references", file, max_depth);
+    check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file, max_depth);
+}
+
+}  // namespace boxlod
