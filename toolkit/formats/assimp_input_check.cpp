@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -376,6 +377,78 @@ void check_xml_depth(std::string_view bytes, const std::string& file) {
     }
 }
 
+// The value of attribute `name` in an XML tag (its text from '<' to '>'), if the tag has it.
+std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_view name) {
+    const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+        std::size_t i = at + name.size();
+        while (i < tag.size() && space(tag[i])) ++i;
+        if (at == 0 || !space(tag[at - 1]) || i >= tag.size() || tag[i] != '=') continue;
+        for (++i; i < tag.size() && space(tag[i]);) ++i;
+        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
+        const std::size_t end = tag.find(tag[i], i + 1);
+        if (end == std::string_view::npos) return std::nullopt;
+        return tag.substr(i + 1, end - i - 1);
+    }
+    return std::nullopt;
+}
+
+// COLLADA's arrays and accessors (COLLADA 1.4.1 specification, chapter 5: float_array, accessor): an array
+// holds as many values as its count says, and an accessor reads within its array (offset + count x
+// stride values at most). assimp reads an array by its count and an accessor by its own count and
+// stride, past the values the file holds: what a short array read differed from run to run.
+void check_collada_arrays(std::string_view bytes, const std::string& file) {
+    std::unordered_map<std::string, std::size_t> array_values;  // "#id": its values
+    for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
+        if (bytes.substr(i, 4) == "<!--") {
+            i = bytes.find("-->", i);
+            if (i == std::string_view::npos) return;
+            continue;
+        }
+        std::size_t end = i + 1;
+        for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
+            if (bytes[end] == '"' || bytes[end] == '\'')
+                quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
+        if (end >= bytes.size()) return;
+        const std::string_view tag = bytes.substr(i, end + 1 - i);
+        const std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/>", 1) - 1);
+        const std::string place = "byte " + std::to_string(i) + " <" + std::string(name.substr(0, 40)) + ">";
+        const auto number = [&](std::string_view attribute, std::optional<std::size_t> fallback) {
+            const std::optional<std::string_view> text = xml_attribute(tag, attribute);
+            if (!text && fallback) return *fallback;
+            if (!text) throw_input_error(file, place, "has no " + std::string(attribute));
+            return parse_count(std::string(*text), file, place + " " + std::string(attribute));
+        };
+        const bool is_array = name.size() > 6 && name.substr(name.size() - 6) == "_array";
+        if (is_array) {
+            const std::size_t count = number("count", std::nullopt);
+            std::size_t values = 0;
+            if (tag[tag.size() - 2] != '/') {
+                const std::string_view content = bytes.substr(end + 1, bytes.find('<', end + 1) - end - 1);
+                for (std::size_t c = 0; c < content.size(); ++c)
+                    values += !std::isspace(static_cast<unsigned char>(content[c])) &&
+                              (c == 0 || std::isspace(static_cast<unsigned char>(content[c - 1])));
+            }
+            if (values != count)
+                throw_input_error(
+                    file, place,
+                    "count " + std::to_string(count) + " but " + std::to_string(values) + " values");
+            if (auto id = xml_attribute(tag, "id")) array_values["#" + std::string(*id)] = count;
+        } else if (name == "accessor") {
+            const auto source = xml_attribute(tag, "source");
+            const auto array = source ? array_values.find(std::string(*source)) : array_values.end();
+            std::size_t needed = 0;
+            if (array != array_values.end() &&
+                (!checked_multiply(number("count", std::nullopt), number("stride", 1), needed) ||
+                 needed + number("offset", 0) > array->second))
+                throw_input_error(file, place,
+                                  "reads past its array " + std::string(*source) + " of " +
+                                      std::to_string(array->second) + " values (offset + count x stride)");
+        }
+        i = end;
+    }
+}
+
 }  // namespace
 
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
@@ -387,6 +460,7 @@ void check_assimp_input(std::string_view bytes, const std::string& extension, co
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".stl") check_ascii_stl(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
+    if (extension == ".dae") check_collada_arrays(bytes, file);
     if (extension == ".ifc" || extension == ".stp" || extension == ".step")
         check_step_file(bytes, file, max_nesting_depth);
 }

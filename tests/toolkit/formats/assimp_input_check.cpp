@@ -85,6 +85,36 @@ TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
     EXPECT_EQ(problem(shallow + "</COLLADA>", ".dae"), "");
 }
 
+// assimp read a short array past its values (what it read differed run to run) and an accessor past its
+// array; an array's count, the values it holds and its accessors' reach must agree.
+TEST(AssimpInputCheck, ColladaArraysHoldTheirCountAndAccessorsReadWithinThem) {
+    const auto collada = [](const std::string& array, const std::string& accessor) {
+        return "<?xml version=\"1.0\"?><COLLADA><source id=\"p\">" + array + "<technique_common>" + accessor +
+               "</technique_common></source></COLLADA>";
+    };
+    const std::string four = "<float_array id=\"pa\" count=\"12\">0 0 0\n1 0 0 0 1 0 1 1 0</float_array>";
+    const std::string reads_four = "<accessor source=\"#pa\" count=\"4\" stride=\"3\"/>";
+    EXPECT_EQ(problem(collada(four, reads_four), ".dae"), "");
+    std::string short_array = four;
+    short_array.replace(short_array.find("\"12\""), 4, "\"3\"");
+    EXPECT_EQ(problem(collada(short_array, reads_four), ".dae"),
+              "m.dae: byte 45 <float_array>: count 3 but 12 values");
+    EXPECT_EQ(problem(collada(four, "<accessor source=\"#pa\" count=\"5\" stride=\"3\"/>"), ".dae"),
+              "m.dae: byte 132 <accessor>: reads past its array #pa of 12 values (offset + count x stride)");
+    EXPECT_EQ(
+        problem(collada(four, "<accessor source=\"#pa\" count=\"4\" stride=\"3\" offset=\"1\"/>"), ".dae"),
+        "m.dae: byte 132 <accessor>: reads past its array #pa of 12 values (offset + count x stride)");
+    EXPECT_EQ(problem(collada("<float_array id=\"pa\" count=\"x\"/>", ""), ".dae"),
+              "m.dae: byte 45 <float_array> count: expected a count, got 'x'");
+    // Elsewhere in the file (a comment, an attribute value) nothing counts; an empty array is whole.
+    EXPECT_EQ(
+        problem(
+            collada("<!-- <float_array count=\"9\">1</float_array> --><float_array id=\"e\" count=\"0\"/>",
+                    "<param name=\"count=\\\"9\\\"\"/>"),
+            ".dae"),
+        "");
+}
+
 // assimp opens an OBJ's material library itself: a FIFO blocked it for ever, a folder read as "File read
 // error" naming neither; one that is missing is a warning, as assimp draws its materials grey.
 TEST(AssimpInputCheck, AnObjsMaterialLibraryIsARegularFileOrMissing) {
