@@ -2,6 +2,7 @@
 
 #include "base/input_error.h"
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 
 #include <fcntl.h>
 #include <malloc.h>
@@ -172,9 +173,45 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
 
 namespace {
 
+// A process's resident memory, bytes (the second field of /proc/PID/statm); 0 if unknown.
+double resident_bytes(pid_t pid) {
+    std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+    double size = 0, resident = 0;
+    return statm >> size >> resident ? resident * double(::sysconf(_SC_PAGESIZE)) : 0;
+}
+
+// What the program writes on `fd` until it closes it; its resident memory is looked at every 20 ms
+// (limits.resident_bytes), the program killed and refused when it holds more.
+std::string program_output(int fd, pid_t pid, const ChildLimits& limits, const std::string& file,
+                           const std::string& reader) {
+    std::string output;
+    auto checked = std::chrono::steady_clock::now();
+    for (char buffer[65536];;) {
+        pollfd poll_fd{fd, POLLIN, 0};
+        const int ready = ::poll(&poll_fd, 1, limits.resident_bytes > 0 ? 20 : -1);
+        if (limits.resident_bytes > 0 &&
+            std::chrono::steady_clock::now() - checked >= std::chrono::milliseconds(20)) {
+            checked = std::chrono::steady_clock::now();
+            if (resident_bytes(pid) > limits.resident_bytes) {
+                ::kill(pid, SIGKILL);
+                while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+                }
+                throw_input_error(file, "",
+                                  reader + " grew past the memory budget of " +
+                                      memory_text(limits.resident_bytes) + " (--max-memory); stopped");
+            }
+        }
+        if (ready == 0 || (ready < 0 && errno == EINTR)) continue;
+        const ssize_t got = ::read(fd, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) return output;
+        output.append(buffer, std::size_t(got));
+    }
+}
+
 // In the child of run_in_child: the program with its pipes, and what it wrote on descriptor 3.
 std::string run_program(const std::vector<std::string>& command, const std::string& input,
-                        const std::string& file, const std::string& reader) {
+                        const ChildLimits& limits, const std::string& file, const std::string& reader) {
     int to_program[2], from_program[2];
     if (::pipe(to_program) != 0 || ::pipe(from_program) != 0)
         throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
@@ -202,13 +239,7 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
     std::signal(SIGPIPE, SIG_IGN);  // a program that stops reading early: its answer says why
     write_all(to_program[1], input.data(), input.size());
     ::close(to_program[1]);
-    std::string output;
-    for (char buffer[65536];;) {
-        const ssize_t got = ::read(from_program[0], buffer, sizeof buffer);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) break;
-        output.append(buffer, std::size_t(got));
-    }
+    const std::string output = program_output(from_program[0], pid, limits, file, reader);
     ::close(from_program[0]);
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
@@ -225,7 +256,8 @@ std::string run_program(const std::vector<std::string>& command, const std::stri
 std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
                                  const ChildLimits& limits, const std::string& file,
                                  const std::string& reader) {
-    return run_in_child([&] { return run_program(command, input, file, reader); }, limits, file, reader);
+    return run_in_child([&] { return run_program(command, input, limits, file, reader); }, limits, file,
+                        reader);
 }
 
 }  // namespace boxlod

@@ -13,6 +13,9 @@ namespace boxlod {
 struct ChildLimits {
     std::size_t extra_address_space = 0;  // bytes the child may grow by (RLIMIT_AS); 0: no limit
     double seconds = 60;                  // wall clock, then the child is killed
+    double resident_bytes = 0;  // what a program (run_program_in_child) may hold resident, then it is
+                                // killed: polled, as a WebAssembly reader reserves far more address space
+                                // than it uses; 0: no limit
 };
 
 // Runs `work` in a forked child and returns the bytes it returned. An
@@ -27,7 +30,8 @@ std::string run_in_child(const std::function<std::string()>& work, const ChildLi
 // up in PATH) run inside run_in_child with `input` on its standard input,
 // its standard output and error dropped (such readers log there); returns what
 // it wrote to file descriptor 3. It dies with its parent. A program that is
-// not installed is an InputError naming it.
+// not installed, or that grows past limits.resident_bytes, is an InputError
+// naming it.
 std::string run_program_in_child(const std::vector<std::string>& command, const std::string& input,
                                  const ChildLimits& limits, const std::string& file,
                                  const std::string& reader);

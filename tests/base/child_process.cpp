@@ -101,3 +101,20 @@ TEST(ChildProcess, MemoryBeyondTheAllowanceIsRefused) {
         {std::size_t(64) << 20, 60});
     EXPECT_EQ(message, "f.ifc: reading it would take more than 64 MiB (counts in the file too large?)");
 }
+
+// web-ifc's node reserves far more address space than it uses, so its resident memory is what is limited.
+TEST(ChildProcess, AProgramHoldingMoreThanItsResidentMemoryIsStopped) {
+    const ChildLimits limits{0, 60, 100e6};
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(test::input_error_of([&] {
+                  run_program_in_child({"python3", "-"},
+                                       "import time\nheld = b'x' * (400 << 20)\ntime.sleep(30)\n", limits,
+                                       "f.ifc", "the reader");
+              }),
+              "f.ifc: the reader grew past the memory budget of 100 MB (--max-memory); stopped");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+    EXPECT_EQ(
+        run_program_in_child({"python3", "-"}, "import os\nheld = b'x' * (20 << 20)\nos.write(3, b'ok')\n",
+                             limits, "f.ifc", "the reader"),
+        "ok");
+}

@@ -22,6 +22,10 @@ check "info prints every required key" bash -c "for k in nodes nodes_with_geomet
 python3 "$here/ifc_nested.py" "$ifc" "$work/nested150.ifc" 150 && python3 "$here/ifc_nested.py" "$ifc" "$work/nested250.ifc" 250
 check "an IFC nested 150 deep reads in seconds" timeout 30 "$boxlod" info "$work/nested150.ifc" --json
 check "an IFC nested 250 deep is refused, naming the depth" bash -c "'$boxlod' info '$work/nested250.ifc' 2>&1 >/dev/null | grep -q 'nested more than 200 levels deep'"
+# One wall drawn 200,000 times (800 kB): web-ifc's node held 1.2 GB under a budget of 0.5 GB (not a
+# bad_inputs case: under its ulimit -v node cannot reserve a WebAssembly memory at all).
+python3 -c "import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], 'w').write(t.replace(\"'SweptSolid',(#53));\", \"'SweptSolid',(\" + ','.join(['#53'] * 200000) + '));'))" "$here/../data/ifc/two_storeys.ifc" "$work/items.ifc"
+check "web-ifc is stopped at the memory budget" bash -c "timeout 60 '$boxlod' info '$work/items.ifc' --max-memory 0.5 2>&1 >/dev/null | grep -q 'web-ifc grew past the memory budget of 500 MB'"
 check "info --json succeeds" test "$(status_of "$boxlod" info "$ifc" --json)" = 0
 check "info --json is a JSON object with nodes" python3 -c "import json,sys; d=json.load(open('$work/out')); sys.exit(0 if d['nodes']==114 else 1)"
 

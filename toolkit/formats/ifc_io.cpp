@@ -3,6 +3,7 @@
 #include "base/child_process.h"
 #include "base/input_error.h"
 #include "base/input_file.h"
+#include "base/memory_budget.h"
 #include "base/utf8.h"
 #include "toolkit/formats/ifc_reader_script.h"
 #include "toolkit/formats/json_input.h"
@@ -215,9 +216,9 @@ Model import_ifc_with_web_ifc(const std::string& path) {
         throw_input_error(
             path, "",
             "reading IFC needs web-ifc " + std::string(web_ifc_version) + " (make demo installs it)");
-    // A minute, and a second more per megabyte; no address-space limit: a
-    // WebAssembly memory reserves far more than it uses (web-ifc caps its own).
-    const ChildLimits limits{0, 60 + double(file_bytes) / 1e6};
+    // A minute, and a second more per megabyte; the memory budget for node's resident memory, but no
+    // address-space limit: a WebAssembly memory reserves far more than it uses (web-ifc caps its own).
+    const ChildLimits limits{0, 60 + double(file_bytes) / 1e6, memory_budget()};
     const std::string answer = run_program_in_child({"node", "-", module, fs::absolute(path).string()},
                                                     ifc_reader_script, limits, path, "web-ifc");
     const Answer parts = split_answer(answer, path);
