@@ -100,7 +100,7 @@ private:
     DerivationLimits limits_;
     Attributes attributes_;
     std::map<std::string, std::vector<Primitive>> assets_;
-    std::size_t nodes_made_ = 0;
+    std::size_t nodes_made_ = 0, shapes_made_ = 0;
     double model_memory_ = 0;
 
     // The derivation's model is checked against the memory budget as it grows (docs/design.md: Errors): a
@@ -108,6 +108,13 @@ private:
     void charge(double bytes) {
         model_memory_ += bytes;
         check_memory(grammar_.file + ": the derivation's model", model_memory_);
+    }
+
+    // Counts split pieces, as laid out (each held until its split ends), or a component against max_shapes.
+    void made_shapes(const Operation& op, std::size_t count) {
+        if ((shapes_made_ += count) > limits_.max_shapes)
+            fail(op.place, "the derivation makes more than " + std::to_string(limits_.max_shapes) +
+                               " split pieces and components (splits nested too finely?)");
     }
 
     [[noreturn]] void fail(SourcePlace place, const std::string& what) const {
@@ -245,7 +252,7 @@ private:
             for (const SplitEntry& item : entry.repeated) add(item, true);
         }
         double extent = shape.scope.size[axis];
-        SplitLayout layout = layout_split(slots, extent, limits_.max_nodes);
+        SplitLayout layout = layout_split(slots, extent, limits_.max_shapes - shapes_made_ + 1);
         if (!layout.fits) {
             char text[160];
             std::snprintf(
@@ -253,6 +260,7 @@ private:
                 op.name.c_str(), application.rule->symbol.c_str(), layout.needed, extent, op.name.c_str());
             fail(op.place, text);
         }
+        made_shapes(op, layout.pieces.size());
         for (const SplitPiece& piece : layout.pieces) {
             Shape part = shape;
             part.scope.origin += shape.scope.axes.col(axis) * float(piece.offset);
@@ -268,6 +276,7 @@ private:
             for (const SplitEntry& entry : op.entries)
                 if (!taken && entry.selector && selects(*entry.selector, face.name)) taken = &entry;
             if (!taken) continue;
+            made_shapes(op, 1);
             Shape part = shape;
             part.scope.origin = shape.scope.to_world(face.origin);
             part.scope.axes.col(0) = shape.scope.axes * face.u;

@@ -15,8 +15,9 @@
 namespace boxlod {
 
 // Guards against grammars that never stop: a rule nested deeper than
-// `max_depth`, or one derivation making more than `max_nodes` nodes, is an
-// InputError.
+// `max_depth`, or one derivation making more than `max_nodes` nodes or more
+// than `max_shapes` split pieces and components (which make no node where they
+// are NIL: splits nested inline multiply), is an InputError.
 // No scope may reach further from the origin, or be larger, than this (metres):
 // a value such as extrude(1e39) is refused where it is made, not as NaN later.
 constexpr float max_world_extent = 1e6f;
@@ -24,6 +25,7 @@ constexpr float max_world_extent = 1e6f;
 struct DerivationLimits {
     int max_depth = 100;
     std::size_t max_nodes = 2'000'000;
+    std::size_t max_shapes = 8'000'000;  // 0.2 s and at most 256 MB of split layouts (32 bytes a piece)
 };
 
 // Applies `start` ("" = the first rule) to the scope `lot` and appends the

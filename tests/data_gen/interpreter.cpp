@@ -232,6 +232,15 @@ TEST(Interpreter, Errors) {
               "g.grammar:1:7: rule 'B' nested deeper than 100 levels (recursion that never ends?)");
     EXPECT_EQ(build_error("A --> split(x) { { 0.01 : B }* }\nB -->\n", 100, 1, {100, 1000}),
               "g.grammar:1:27: the derivation makes more than 1000 nodes (recursion that never ends?)");
+    // Pieces that make no node (NIL) still take time: splits nested inline multiply them (2M x 2M before).
+    EXPECT_EQ(
+        build_error("A --> extrude(1) split(x) { { 0.5 : split(z) { { 0.5 : NIL }* } }* }\n", 100, 100,
+                    {100, 1000, 5000}),
+        "g.grammar:1:37: the derivation makes more than 5000 split pieces and components (splits nested "
+        "too finely?)");
+    EXPECT_EQ(build_error("A --> extrude(1) split(x) { { 0.5 : split(z) { { 0.5 : NIL }* } }* }\n", 100, 100,
+                          {100, 1000, 40200}),
+              "");
     EXPECT_EQ(build_error("A --> split(x) { 3 : B | 3 : B }\nB -->\n", 5),
               "g.grammar:1:7: split(x) in rule 'A' needs 6 m but the scope is 5 m along x");
     EXPECT_EQ(build_error("A --> extrude(1) i(\"nope.obj\")\n").substr(0, 46),

@@ -1,5 +1,6 @@
 #include "toolkit/lod/level_faces.h"
 
+#include "base/memory_budget.h"
 #include "base/parallel.h"
 #include "toolkit/lod/hybrid/baked_proxy.h"
 
@@ -74,6 +75,20 @@ std::optional<int> swatch_of(Swatches& swatches, const std::array<std::uint8_t, 
     return int(swatches.colors.size()) - 1;
 }
 
+// Bytes a texel of a baked face or of a page holds: colour 4, normal 3, height 2 (docs/design.md: Errors).
+constexpr double texel_bytes = 9;
+// A level's pages are held about 2.5 times: as made and in the level's model as written (measured: the house
+// at one 8192 x 8192 page peaked at 1.49 GB, its pages 604 MB; at --distance 0.001, 2.95 GB against 3.0).
+constexpr double page_copies = 2.5;
+
+// What the session's baked faces hold (kept for every later level).
+double baked_bytes(const LodSession& session) {
+    double texels = 0;
+    for (const auto& [key, faces] : session.cache.baked)
+        for (const BakedFace& face : faces) texels += double(face.height.pixels.size());
+    return texel_bytes * texels;
+}
+
 }  // namespace
 
 void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
@@ -81,12 +96,25 @@ void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
         int node, face;
     };
     std::vector<FaceJob> jobs;
-    for (int node : faced_nodes(cut))
-        if (session.cache.baked.try_emplace(baked_key(cut, node))
-                .second)  // the slots made before the parallel work
-            for (int f = 0; f < 6; ++f) jobs.push_back({node, f});
-    std::map<int, Drawable> subtrees;
     const LodDerived& d = session.derived;
+    double bytes = baked_bytes(session), largest = 0;  // texels
+    for (int node : faced_nodes(cut)) {
+        if (session.cache.baked.count(baked_key(cut, node))) continue;
+        const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*d.boxes[node]);
+        for (int f = 0; f < 6; ++f) {
+            jobs.push_back({node, f});
+            const Eigen::Vector2i texels = texels_of(faces[std::size_t(f)], session, cut, node);
+            bytes += texel_bytes * double(texels.x()) * double(texels.y());
+            largest = std::max(largest, double(texels.x()) * double(texels.y()));
+        }
+    }
+    // The faces and a frame (renderer.h: make_frame, 32 bytes a pixel) a thread; checked before any slot is
+    // made, so that a viewer showing the refusal keeps a whole cache.
+    bytes += double(std::min<std::size_t>(std::size_t(std::max(threads, 1)), jobs.size())) * 32 * largest;
+    check_memory(session.input.model->source + ": its LoD's baked faces", bytes);
+    for (const FaceJob& job : jobs)
+        session.cache.baked.try_emplace(baked_key(cut, job.node));  // the slots made before the parallel work
+    std::map<int, Drawable> subtrees;
     for (const FaceJob& job : jobs)
         if (job.face == 0)
             subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
@@ -96,6 +124,13 @@ void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
         session.cache.baked.at(baked_key(cut, job.node))[job.face] =
             bake_face(subtrees.at(job.node), face, texels_of(face, session, cut, job.node), 1);
     });
+}
+
+void check_pages_memory(const LodSession& session, const Atlas& atlas) {
+    double texels = 0;
+    for (const Eigen::Vector2i& page : atlas.pages) texels += double(page.x()) * double(page.y());
+    check_memory(session.input.model->source + ": its LoD's atlas pages",
+                 page_copies * texel_bytes * texels + baked_bytes(session));
 }
 
 Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads) {

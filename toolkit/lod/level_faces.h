@@ -43,6 +43,10 @@ struct Packing {
 // task).
 void bake_new_faces(LodSession& session, const Cut& cut, int threads);
 
+// The pages of `atlas` beside the session's baked faces within the memory budget (InputError naming the
+// model).
+void check_pages_memory(const LodSession& session, const Atlas& atlas);
+
 // Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as
 // swatches.
 Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads);

@@ -261,6 +261,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
         saved.model = std::filesystem::path(p.model).filename().string();
         for (const KeyValue& entry : parameter_entries(saved))
             out.lod_params.emplace_back(entry.key, entry.value);
+        check_pages_memory(session, lod.atlas);
         add_pages(out, lod.atlas, packing.height_depth, textured);
         add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
     }
