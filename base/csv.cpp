@@ -81,7 +81,7 @@ std::string csv_text_problem(const std::string& text) {
 namespace {
 
 // "" when `field` is of `kind`, else what is wrong.
-std::string field_problem(const std::string& field, CsvValue kind) {
+std::string field_problem(const std::string& field, CsvValue kind, const NumberRange& range) {
     if (field.size() > max_csv_field_bytes)
         return "a field of " + std::to_string(field.size()) + " bytes (at most " +
                std::to_string(max_csv_field_bytes) + ")";
@@ -98,9 +98,9 @@ std::string field_problem(const std::string& field, CsvValue kind) {
                    ? ""
                    : "'" + field + "' is not a finite number >= 0";
     case CsvValue::metric:
-        return read_whole(field, value) && !std::isnan(value) && value != -INFINITY
+        return read_whole(field, value) && range.contains(value)
                    ? ""
-                   : "'" + field + "' is not a metric value";
+                   : "'" + field + "' is not a metric value in " + range_text(range);
     }
     return "";
 }
@@ -136,7 +136,8 @@ std::vector<CsvRecord> read_csv_table(std::string_view text, const std::string& 
                 file, place,
                 std::to_string(fields.size()) + " fields, not " + std::to_string(columns.size()));
         for (std::size_t k = 0; k < fields.size(); ++k)
-            if (std::string problem = field_problem(fields[k], columns[k].value); !problem.empty())
+            if (std::string problem = field_problem(fields[k], columns[k].value, columns[k].range);
+                !problem.empty())
                 throw_input_error(file, place + ": " + columns[k].name, problem);
         records.push_back({number, std::move(fields)});
     }

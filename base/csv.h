@@ -2,6 +2,9 @@
 // goes in quotes, its quotes doubled; fields are separated by commas. Every
 // CSV boxlod writes (sweep results, city frames, timings) goes through here.
 #pragma once
+#include "base/input_error.h"
+
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,11 +25,13 @@ enum class CsvValue {
     count,            // a non-negative integer below 2^64
     number,           // a finite number >= 0
     optional_number,  // empty, or a finite number >= 0
-    metric,           // a number, finite or inf (PSNR of equal images), never NaN
+    metric,           // a number within its column's range, which may reach inf (PSNR of equal images)
 };
 struct CsvColumn {
     std::string name;
     CsvValue value = CsvValue::text;
+    // A metric's values: by default any but -inf and NaN.
+    NumberRange range{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::infinity()};
 };
 struct CsvRecord {
     int line = 0;  // 1-based, the header being line 1

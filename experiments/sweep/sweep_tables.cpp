@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 // What each column of results.csv and timings.csv holds, checked when a
 // folder's tables are read back (a resumed sweep, --merge): metric columns
 // hold metrics, the others are counts unless listed.
-CsvValue column_value(const std::string& column) {
+CsvColumn column_kind(const std::string& column) {
     static const std::map<std::string, CsvValue> listed = {{"model", CsvValue::text},
                                                            {"level_mode", CsvValue::text},
                                                            {"box_kind", CsvValue::text},
@@ -38,16 +38,17 @@ CsvValue column_value(const std::string& column) {
                                                            {"build_seconds", CsvValue::number},
                                                            {"render_seconds", CsvValue::number},
                                                            {"metric_seconds", CsvValue::number}};
-    if (auto found = listed.find(column); found != listed.end()) return found->second;
+    if (auto found = listed.find(column); found != listed.end()) return {column, found->second};
     Metric metric;
-    return parse_enum(metrics(), column, metric) ? CsvValue::metric : CsvValue::count;
+    if (parse_enum(metrics(), column, metric)) return {column, CsvValue::metric, metric_range(metric)};
+    return {column, CsvValue::count};
 }
 
 KeyedTable open_table(const std::string& path, const std::vector<std::string>& columns) {
     KeyedTable table{path, columns, {}, {}};
     if (!fs::exists(path)) return table;
     std::vector<CsvColumn> kinds;
-    for (const std::string& column : columns) kinds.push_back({column, column_value(column)});
+    for (const std::string& column : columns) kinds.push_back(column_kind(column));
     std::map<std::string, int> first_line;
     for (CsvRecord& record : read_csv_table(read_input_file(path, "sweep table"), path, kinds)) {
         const std::string line = csv_row(record.fields);

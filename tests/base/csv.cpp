@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace boxlod;
 
 TEST(Csv, PlainFieldsAreJoinedAsTheyAre) {
@@ -28,7 +30,7 @@ const std::vector<CsvColumn> table_columns = {{"model", CsvValue::text},
                                               {"faces", CsvValue::count},
                                               {"distance", CsvValue::number},
                                               {"error", CsvValue::optional_number},
-                                              {"psnr", CsvValue::metric}};
+                                              {"psnr", CsvValue::metric, {0, INFINITY}}};
 
 // The InputError read_csv_table throws for `rows` under the right header, or "".
 std::string refusal(const std::string& rows) {
@@ -40,7 +42,7 @@ std::string refusal(const std::string& rows) {
 
 TEST(Csv, ATableReadBackKeepsItsRowsAndLineNumbers) {
     const auto records =
-        read_csv_table("model,faces,distance,error,psnr\nhouse,12,1.5,,inf\n\n\"a,b\",0,0,0.25,-0.5\n",
+        read_csv_table("model,faces,distance,error,psnr\nhouse,12,1.5,,inf\n\n\"a,b\",0,0,0.25,0.5\n",
                        "results.csv", table_columns);
     ASSERT_EQ(records.size(), 2u);
     EXPECT_EQ(records[0].line, 2);
@@ -63,8 +65,13 @@ TEST(Csv, ATableReadBackRefusesWhatItsColumnsCannotHold) {
     EXPECT_EQ(refusal("house,12,nan,,1\n"),
               "results.csv: line 2: distance: 'nan' is not a finite number >= 0");
     EXPECT_EQ(refusal("house,12,1, 2,1\n"), "results.csv: line 2: error: ' 2' is not a finite number >= 0");
-    EXPECT_EQ(refusal("house,12,1,,nan\n"), "results.csv: line 2: psnr: 'nan' is not a metric value");
-    EXPECT_EQ(refusal("house,12,1,,\n"), "results.csv: line 2: psnr: '' is not a metric value");
+    EXPECT_EQ(refusal("house,12,1,,nan\n"),
+              "results.csv: line 2: psnr: 'nan' is not a metric value in [0, inf]");
+    EXPECT_EQ(refusal("house,12,1,,\n"), "results.csv: line 2: psnr: '' is not a metric value in [0, inf]");
+    // A hand-edited value outside what its metric takes (issue 70's hostile-input run: -5, 1e300 were copied
+    // on).
+    EXPECT_EQ(refusal("house,12,1,,-5\n"),
+              "results.csv: line 2: psnr: '-5' is not a metric value in [0, inf]");
     EXPECT_EQ(refusal("house,12,1.5,,1\nhouse,12\n"), "results.csv: line 3: 2 fields, not 5");  // a cut row
     EXPECT_EQ(refusal(std::string(5000, 'x') + ",1,1,,1\n"),
               "results.csv: line 2: model: a field of 5000 bytes (at most 4096)");

@@ -98,6 +98,7 @@ damaged_sweep() {  # NAME FILE SED-SCRIPT: a copy of the good folder with FILE e
 damaged_sweep non_number results.csv '2s/,1,\([0-9]*\),/,1,x\1,/'
 damaged_sweep cut_row results.csv '2s/,[^,]*,[^,]*$//'
 damaged_sweep nan_metric results.csv '2s/,[^,]*$/,nan/'
+damaged_sweep metric_outside_its_range results.csv '2s/,[^,]*$/,-5/'
 damaged_sweep duplicate_row results.csv '2p'
 damaged_sweep timings_negative timings.csv '2s/,[^,]*$/,-1/'
 damaged_sweep settings_binary settings.txt '1s/$/\x01\x02/'

@@ -4,6 +4,7 @@
 #include "toolkit/metrics/image_metrics.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace boxlod {
@@ -28,6 +29,15 @@ std::vector<Metric> all_metrics() {
     std::vector<Metric> all;
     for (const EnumEntry<Metric>& entry : metrics()) all.push_back(entry.value);
     return all;
+}
+
+NumberRange metric_range(Metric metric) {
+    constexpr double rounding = 1e-9;
+    switch (metric) {
+    case Metric::psnr: return {0, std::numeric_limits<double>::infinity()};
+    case Metric::ssim: return {-1 - rounding, 1 + rounding};
+    default: return {-rounding, 1 + rounding};
+    }
 }
 
 std::vector<Metric> parse_metrics(const std::vector<std::string>& names, const std::string& context) {

@@ -4,6 +4,7 @@
 // one FLIP for its mean, its mean over covered pixels and its error map).
 #pragma once
 #include "base/enum_table.h"
+#include "base/input_error.h"
 #include "renderer/image.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/separable_filter.h"
@@ -19,6 +20,10 @@ namespace boxlod {
 enum class Metric { rmse, psnr, ssim, flip, flip_covered, iou };
 std::span<const EnumEntry<Metric>> metrics();  // names ("rmse", ...) and help
 std::vector<Metric> all_metrics();
+
+// The values a metric takes: psnr [0, inf], ssim [-1, 1], the others [0, 1]; the bounded ones a hair wider
+// (1e-9), as a ratio that is at most 1 may round to 1 + 2^-52. A sweep's tables read back are held to it.
+NumberRange metric_range(Metric metric);
 
 // Names, each kept once in the order given; an unknown one throws InputError
 // "CONTEXT: unknown metric 'x' (rmse, psnr, ssim, flip, flip_covered, iou)".
