@@ -252,7 +252,10 @@ private:
             for (const SplitEntry& item : entry.repeated) add(item, true);
         }
         double extent = shape.scope.size[axis];
-        SplitLayout layout = layout_split(slots, extent, limits_.max_shapes - shapes_made_ + 1);
+        // Room for one piece past the limit after a whole repetition, so that a split the limit cuts short
+        // is refused by made_shapes, never laid out short.
+        SplitLayout layout =
+            layout_split(slots, extent, limits_.max_shapes - shapes_made_ + 1 + slots.size());
         if (!layout.fits) {
             char text[160];
             std::snprintf(

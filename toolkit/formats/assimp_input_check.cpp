@@ -349,20 +349,20 @@ void check_ascii_stl(std::string_view bytes, const std::string& file) {
     }
 }
 
-// XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
-// (assimp's readers recurse per element). Comments, declarations and quoted
-// attribute values are skipped.
-void check_xml_depth(std::string_view bytes, const std::string& file) {
-    int depth = 0;
+// Calls visit(at, tag) for each tag of an XML file (`tag` its text from '<' to '>', quoted attribute values
+// held whole), skipping comments, CDATA sections, processing instructions and declarations; the text
+// between tags is left to the visitor.
+template <typename Visit>
+void for_each_xml_tag(std::string_view bytes, Visit&& visit) {
+    static constexpr std::pair<std::string_view, std::string_view> skipped[] = {
+        {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
     for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
-        if (bytes.substr(i, 4) == "<!--") {
-            i = bytes.find("-->", i);
+        const auto skip = std::find_if(std::begin(skipped), std::end(skipped), [&](const auto& pair) {
+            return bytes.substr(i, pair.first.size()) == pair.first;
+        });
+        if (skip != std::end(skipped)) {
+            i = bytes.find(skip->second, i);
             if (i == std::string_view::npos) return;
-            continue;
-        }
-        char next = i + 1 < bytes.size() ? bytes[i + 1] : '\0';
-        if (next == '/') {
-            --depth;
             continue;
         }
         std::size_t end = i + 1;
@@ -370,11 +370,23 @@ void check_xml_depth(std::string_view bytes, const std::string& file) {
             if (bytes[end] == '"' || bytes[end] == '\'')
                 quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
         if (end >= bytes.size()) return;
-        bool opens = next != '!' && next != '?' && bytes[end - 1] != '/';
-        if (opens && ++depth > max_nesting_depth)
-            throw_input_error(file, "byte " + std::to_string(i), "XML elements " + nesting_message());
+        visit(i, bytes.substr(i, end + 1 - i));
         i = end;
     }
+}
+
+// XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
+// (assimp's readers recurse per element).
+void check_xml_depth(std::string_view bytes, const std::string& file) {
+    int depth = 0;
+    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
+        if (tag[1] == '/') {
+            --depth;
+            return;
+        }
+        if (tag[1] != '!' && tag[tag.size() - 2] != '/' && ++depth > max_nesting_depth)
+            throw_input_error(file, "byte " + std::to_string(at), "XML elements " + nesting_message());
+    });
 }
 
 // The value of attribute `name` in an XML tag (its text from '<' to '>'), if the tag has it.
@@ -393,60 +405,87 @@ std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_
     return std::nullopt;
 }
 
-// COLLADA's arrays and accessors (COLLADA 1.4.1 specification, chapter 5: float_array, accessor): an array
-// holds as many values as its count says, and an accessor reads within its array (offset + count x
-// stride values at most). assimp reads an array by its count and an accessor by its own count and
-// stride, past the values the file holds: what a short array read differed from run to run.
-void check_collada_arrays(std::string_view bytes, const std::string& file) {
-    std::unordered_map<std::string, std::size_t> array_values;  // "#id": its values
-    for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
-        if (bytes.substr(i, 4) == "<!--") {
-            i = bytes.find("-->", i);
-            if (i == std::string_view::npos) return;
-            continue;
-        }
-        std::size_t end = i + 1;
-        for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
-            if (bytes[end] == '"' || bytes[end] == '\'')
-                quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
-        if (end >= bytes.size()) return;
-        const std::string_view tag = bytes.substr(i, end + 1 - i);
-        const std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/>", 1) - 1);
-        const std::string place = "byte " + std::to_string(i) + " <" + std::string(name.substr(0, 40)) + ">";
-        const auto number = [&](std::string_view attribute, std::optional<std::size_t> fallback) {
-            const std::optional<std::string_view> text = xml_attribute(tag, attribute);
-            if (!text && fallback) return *fallback;
-            if (!text) throw_input_error(file, place, "has no " + std::string(attribute));
-            return parse_count(std::string(*text), file, place + " " + std::string(attribute));
-        };
-        const bool is_array = name.size() > 6 && name.substr(name.size() - 6) == "_array";
-        if (is_array) {
-            const std::size_t count = number("count", std::nullopt);
-            std::size_t values = 0;
-            if (tag[tag.size() - 2] != '/') {
-                const std::string_view content = bytes.substr(end + 1, bytes.find('<', end + 1) - end - 1);
-                for (std::size_t c = 0; c < content.size(); ++c)
-                    values += !std::isspace(static_cast<unsigned char>(content[c])) &&
-                              (c == 0 || std::isspace(static_cast<unsigned char>(content[c - 1])));
-            }
-            if (values != count)
-                throw_input_error(
-                    file, place,
-                    "count " + std::to_string(count) + " but " + std::to_string(values) + " values");
-            if (auto id = xml_attribute(tag, "id")) array_values["#" + std::string(*id)] = count;
-        } else if (name == "accessor") {
-            const auto source = xml_attribute(tag, "source");
-            const auto array = source ? array_values.find(std::string(*source)) : array_values.end();
-            std::size_t needed = 0;
-            if (array != array_values.end() &&
-                (!checked_multiply(number("count", std::nullopt), number("stride", 1), needed) ||
-                 needed + number("offset", 0) > array->second))
-                throw_input_error(file, place,
-                                  "reads past its array " + std::string(*source) + " of " +
-                                      std::to_string(array->second) + " values (offset + count x stride)");
-        }
-        i = end;
+// A COLLADA tag's element name without a namespace prefix ("float_array" of <c:float_array ...>).
+std::string_view collada_element(std::string_view tag) {
+    std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/>", 1) - 1);
+    return name.substr(name.find(':') == std::string_view::npos ? 0 : name.find(':') + 1);
+}
+
+struct ColladaAccessor {
+    std::size_t at;  // its byte in the file
+    std::string source;
+    std::size_t offset, count, stride, params;
+};
+
+// Each accessor reads within its array: offset + (count - 1) x stride + its params values, without overflow.
+void check_collada_accessors(const std::vector<ColladaAccessor>& accessors,
+                             const std::unordered_map<std::string, std::size_t>& array_values,
+                             const std::string& file) {
+    for (const ColladaAccessor& accessor : accessors) {
+        const auto array = array_values.find(accessor.source);
+        std::size_t reach = 0;  // offset + (count - 1) x stride + params, without overflow
+        if (array == array_values.end() || accessor.count == 0) continue;
+        if (!checked_multiply(accessor.count - 1, accessor.stride, reach) ||
+            !range_fits(accessor.offset, reach, array->second) ||
+            !range_fits(accessor.offset + reach, accessor.params, array->second))
+            throw_input_error(file, "byte " + std::to_string(accessor.at) + " <accessor>",
+                              "reads past its array " + accessor.source + " of " +
+                                  std::to_string(array->second) +
+                                  " values (offset + (count - 1) x stride + its params)");
     }
+}
+
+// COLLADA's arrays and accessors (COLLADA 1.4.1 specification, chapter 5: float_array, accessor): an array
+// holds at least the values its count says, and an accessor reads within its array: offset + (count - 1) x
+// stride + its params values at most (interleaved accessors share an array). assimp reads an array by its
+// count and an accessor by its own count and stride, past the values the file holds: what a short array
+// read differed from run to run. Accessors are checked once every array is known (one may come first).
+void check_collada_arrays(std::string_view bytes, const std::string& file) {
+    static constexpr std::string_view arrays[] = {"float_array", "int_array",    "bool_array", "Name_array",
+                                                  "IDREF_array", "SIDREF_array", "token_array"};
+    std::unordered_map<std::string, std::size_t> array_values;  // "#id": its count, the smallest of an id's
+    std::vector<ColladaAccessor> accessors;
+    const auto number = [&](std::string_view tag, std::size_t at, std::string_view attribute,
+                            std::size_t fallback) {
+        const std::optional<std::string_view> text = xml_attribute(tag, attribute);
+        return text ? parse_count(std::string(*text), file,
+                                  "byte " + std::to_string(at) + " " + std::string(attribute))
+                    : fallback;
+    };
+    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
+        const std::string_view name = collada_element(tag);
+        const std::size_t end = at + tag.size();
+        if (std::find(std::begin(arrays), std::end(arrays), name) != std::end(arrays)) {
+            const std::size_t count = number(tag, at, "count", 0);
+            std::size_t values = 0;
+            const std::string_view content = tag[tag.size() - 2] == '/'
+                                                 ? std::string_view()
+                                                 : bytes.substr(end, bytes.find('<', end) - end);
+            for (std::size_t c = 0; c < content.size(); ++c)
+                values += !std::isspace(static_cast<unsigned char>(content[c])) &&
+                          (c == 0 || std::isspace(static_cast<unsigned char>(content[c - 1])));
+            if (values < count)
+                throw_input_error(
+                    file, "byte " + std::to_string(at) + " <" + std::string(name) + ">",
+                    "count " + std::to_string(count) + " but " + std::to_string(values) + " values");
+            if (auto id = xml_attribute(tag, "id")) {
+                auto [known, added] = array_values.emplace("#" + std::string(*id), count);
+                known->second = std::min(known->second, count);
+            }
+        } else if (name == "accessor") {
+            const std::size_t close = tag[tag.size() - 2] == '/' ? end : bytes.find("accessor>", end);
+            const std::string_view inside =
+                bytes.substr(end, close == std::string_view::npos ? 0 : close - end);
+            std::size_t params = 0;
+            for (std::size_t p = inside.find("param"); p != std::string_view::npos;
+                 p = inside.find("param", p + 1))
+                params += p > 0 && (inside[p - 1] == '<' || inside[p - 1] == ':');
+            accessors.push_back({at, std::string(xml_attribute(tag, "source").value_or("")),
+                                 number(tag, at, "offset", 0), number(tag, at, "count", 0),
+                                 number(tag, at, "stride", 1), std::max<std::size_t>(params, 1)});
+        }
+    });
+    check_collada_accessors(accessors, array_values, file);
 }
 
 }  // namespace

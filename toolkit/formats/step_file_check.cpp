@@ -136,6 +136,16 @@ void read_instance(std::string_view text, const std::string& file, StepGraph& gr
         graph.children[parent].insert(graph.children[parent].end(), related.begin(), related.end());
 }
 
+// Whether a statement is `keyword` or starts with it and '(' or a space, in either case (web-ifc reads
+// "data;" too).
+bool is_keyword(std::string_view statement, std::string_view keyword) {
+    return statement.size() >= keyword.size() &&
+           std::equal(keyword.begin(), keyword.end(), statement.begin(),
+                      [](char a, char b) { return a == std::toupper(static_cast<unsigned char>(b)); }) &&
+           (statement.size() == keyword.size() || statement[keyword.size()] == '(' ||
+            is_space(statement[keyword.size()]));
+}
+
 // The statements of the file, each up to its ';' (strings skipped): instances are read in a DATA section
 // and refused outside one (web-ifc reads them anywhere; ISO 10303-21 sections 8 and 9).
 StepGraph read_step_graph(std::string_view bytes, const std::string& file) {
@@ -153,10 +163,9 @@ StepGraph read_step_graph(std::string_view bytes, const std::string& file) {
                                   "an instance outside a DATA section (ISO 10303-21 section 9)");
             }
             read_instance(statement, file, graph);
-        } else if (statement == "DATA" || (statement.substr(0, 4) == "DATA" && statement.size() > 4 &&
-                                           (statement[4] == '(' || is_space(statement[4])))) {
+        } else if (is_keyword(statement, "DATA")) {
             in_data = any_data = true;
-        } else if (statement == "ENDSEC") {
+        } else if (is_keyword(statement, "ENDSEC")) {
             in_data = false;
         }
     }

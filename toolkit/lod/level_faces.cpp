@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <numeric>
 #include <optional>
+#include <set>
 
 namespace boxlod {
 namespace {
@@ -96,34 +99,45 @@ void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
         int node, face;
     };
     std::vector<FaceJob> jobs;
+    std::set<std::pair<int, int>> new_keys;
+    std::vector<double> texels;  // each new face's
     const LodDerived& d = session.derived;
-    double bytes = baked_bytes(session), largest = 0;  // texels
     for (int node : faced_nodes(cut)) {
-        if (session.cache.baked.count(baked_key(cut, node))) continue;
+        if (session.cache.baked.count(baked_key(cut, node)) || !new_keys.insert(baked_key(cut, node)).second)
+            continue;
         const std::array<OrientedBoxFace, 6> faces = oriented_box_faces(*d.boxes[node]);
         for (int f = 0; f < 6; ++f) {
             jobs.push_back({node, f});
-            const Eigen::Vector2i texels = texels_of(faces[std::size_t(f)], session, cut, node);
-            bytes += texel_bytes * double(texels.x()) * double(texels.y());
-            largest = std::max(largest, double(texels.x()) * double(texels.y()));
+            const Eigen::Vector2i size = texels_of(faces[std::size_t(f)], session, cut, node);
+            texels.push_back(double(size.x()) * double(size.y()));
         }
     }
-    // The faces and a frame (renderer.h: make_frame, 32 bytes a pixel) a thread; checked before any slot is
-    // made, so that a viewer showing the refusal keeps a whole cache.
-    bytes += double(std::min<std::size_t>(std::size_t(std::max(threads, 1)), jobs.size())) * 32 * largest;
+    // The faces, and a frame (renderer.h: make_frame, 32 bytes a pixel) for each worker's face, the largest
+    // at once at worst; checked before any slot is made, so that a viewer showing the refusal keeps a whole
+    // cache.
+    double bytes = baked_bytes(session) + texel_bytes * std::accumulate(texels.begin(), texels.end(), 0.0);
+    const std::size_t workers = std::min(std::size_t(thread_count(threads)), texels.size());
+    std::partial_sort(texels.begin(), texels.begin() + std::ptrdiff_t(workers), texels.end(),
+                      std::greater<>());
+    bytes += 32 * std::accumulate(texels.begin(), texels.begin() + std::ptrdiff_t(workers), 0.0);
     check_memory(session.input.model->source + ": its LoD's baked faces", bytes);
-    for (const FaceJob& job : jobs)
-        session.cache.baked.try_emplace(baked_key(cut, job.node));  // the slots made before the parallel work
-    std::map<int, Drawable> subtrees;
-    for (const FaceJob& job : jobs)
-        if (job.face == 0)
-            subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
-    parallel_for(jobs.size(), threads, [&](std::size_t j) {
-        const FaceJob& job = jobs[j];
-        OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
-        session.cache.baked.at(baked_key(cut, job.node))[job.face] =
-            bake_face(subtrees.at(job.node), face, texels_of(face, session, cut, job.node), 1);
-    });
+    for (const auto& key : new_keys)
+        session.cache.baked.try_emplace(key);  // the slots made before the parallel work
+    try {
+        std::map<int, Drawable> subtrees;
+        for (const FaceJob& job : jobs)
+            if (job.face == 0)
+                subtrees.emplace(job.node, make_drawable(*session.input.model, d.textures, job.node));
+        parallel_for(jobs.size(), threads, [&](std::size_t j) {
+            const FaceJob& job = jobs[j];
+            OrientedBoxFace face = oriented_box_faces(*d.boxes[job.node])[job.face];
+            session.cache.baked.at(baked_key(cut, job.node))[job.face] =
+                bake_face(subtrees.at(job.node), face, texels_of(face, session, cut, job.node), 1);
+        });
+    } catch (...) {  // no slot left half baked for a later level to take as done
+        for (const auto& key : new_keys) session.cache.baked.erase(key);
+        throw;
+    }
 }
 
 void check_pages_memory(const LodSession& session, const Atlas& atlas) {

@@ -88,31 +88,46 @@ TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
 // assimp read a short array past its values (what it read differed run to run) and an accessor past its
 // array; an array's count, the values it holds and its accessors' reach must agree.
 TEST(AssimpInputCheck, ColladaArraysHoldTheirCountAndAccessorsReadWithinThem) {
-    const auto collada = [](const std::string& array, const std::string& accessor) {
-        return "<?xml version=\"1.0\"?><COLLADA><source id=\"p\">" + array + "<technique_common>" + accessor +
-               "</technique_common></source></COLLADA>";
+    const auto collada = [](const std::string& sources) {
+        return "<?xml version=\"1.0\"?><COLLADA><![CDATA[ ' ]]>" + sources + "</COLLADA>";
     };
-    const std::string four = "<float_array id=\"pa\" count=\"12\">0 0 0\n1 0 0 0 1 0 1 1 0</float_array>";
-    const std::string reads_four = "<accessor source=\"#pa\" count=\"4\" stride=\"3\"/>";
-    EXPECT_EQ(problem(collada(four, reads_four), ".dae"), "");
-    std::string short_array = four;
-    short_array.replace(short_array.find("\"12\""), 4, "\"3\"");
-    EXPECT_EQ(problem(collada(short_array, reads_four), ".dae"),
-              "m.dae: byte 45 <float_array>: count 3 but 12 values");
-    EXPECT_EQ(problem(collada(four, "<accessor source=\"#pa\" count=\"5\" stride=\"3\"/>"), ".dae"),
-              "m.dae: byte 132 <accessor>: reads past its array #pa of 12 values (offset + count x stride)");
-    EXPECT_EQ(
-        problem(collada(four, "<accessor source=\"#pa\" count=\"4\" stride=\"3\" offset=\"1\"/>"), ".dae"),
-        "m.dae: byte 132 <accessor>: reads past its array #pa of 12 values (offset + count x stride)");
-    EXPECT_EQ(problem(collada("<float_array id=\"pa\" count=\"x\"/>", ""), ".dae"),
-              "m.dae: byte 45 <float_array> count: expected a count, got 'x'");
-    // Elsewhere in the file (a comment, an attribute value) nothing counts; an empty array is whole.
-    EXPECT_EQ(
-        problem(
-            collada("<!-- <float_array count=\"9\">1</float_array> --><float_array id=\"e\" count=\"0\"/>",
-                    "<param name=\"count=\\\"9\\\"\"/>"),
-            ".dae"),
-        "");
+    const auto array = [](const std::string& count, const std::string& values) {
+        return "<source id=\"p\"><float_array id=\"pa\" count=\"" + count + "\">" + values + "</float_array>";
+    };
+    const auto accessor = [](const std::string& attributes, int params) {
+        std::string text = "<technique_common><accessor source=\"#pa\" " + attributes + ">";
+        for (int p = 0; p < params; ++p) text += "<param name=\"X\" type=\"float\"/>";
+        return text + "</accessor></technique_common></source>";
+    };
+    const std::string twelve = "0 0 0\n1 0 0 0 1 0 1 1 0";
+    EXPECT_EQ(problem(collada(array("12", twelve) + accessor("count=\"4\" stride=\"3\"", 3)), ".dae"), "");
+    const std::string past =
+        "reads past its array #pa of 12 values (offset + (count - 1) x stride + its params)";
+    EXPECT_NE(
+        problem(collada(array("12", twelve) + accessor("count=\"5\" stride=\"3\"", 3)), ".dae").find(past),
+        std::string::npos);
+    EXPECT_NE(
+        problem(collada(array("12", twelve) + accessor("count=\"4\" stride=\"3\" offset=\"1\"", 3)), ".dae")
+            .find(past),
+        std::string::npos);
+    // An accessor before its array, and one whose offset and count overflow when added.
+    EXPECT_NE(problem(collada(accessor("count=\"1000000000\" stride=\"3\"", 3) + array("12", twelve)), ".dae")
+                  .find("reads past its array #pa"),
+              std::string::npos);
+    EXPECT_NE(problem(collada(array("12", twelve) +
+                              accessor("count=\"9223372036854775808\" offset=\"9223372036854775808\"", 1)),
+                      ".dae")
+                  .find(past),
+              std::string::npos);
+    // Interleaved: the normals of a position-and-normal array of stride 6 reach its last value.
+    EXPECT_EQ(problem(collada(array("24", twelve + " " + twelve) +
+                              accessor("offset=\"3\" count=\"4\" stride=\"6\"", 3)),
+                      ".dae"),
+              "");
+    EXPECT_EQ(problem(collada(array("13", twelve) + accessor("count=\"4\" stride=\"3\"", 3)), ".dae"),
+              "m.dae: byte 60 <float_array>: count 13 but 12 values");
+    EXPECT_EQ(problem(collada(array("x", twelve)), ".dae"),
+              "m.dae: byte 60 count: expected a count, got 'x'");
 }
 
 // assimp opens an OBJ's material library itself: a FIFO blocked it for ever, a folder read as "File read
