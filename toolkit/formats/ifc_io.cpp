@@ -17,7 +17,6 @@
 #include <limits>
 #include <map>
 #include <tuple>
-#include <unordered_set>
 
 namespace boxlod {
 namespace {
@@ -140,49 +139,6 @@ void add_pieces(Model& model, const Answer& answer, const std::string& path) {
 
 }  // namespace
 
-constexpr std::uint64_t max_entity_number = 4294967295;  // 2^32 - 1
-
-void check_ifc_references(std::string_view bytes, const std::string& path) {
-    std::unordered_set<std::uint64_t> defined;
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> used;  // (entity, the one it names)
-    std::uint64_t entity = 0;
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const char c = bytes[i];
-        if (c == '\'') {  // a string: '' inside it is a quote
-            i = step_string_end(bytes, i);
-        } else if (c == '/' && i + 1 < bytes.size() && bytes[i + 1] == '*') {
-            const std::size_t end = bytes.find("*/", i + 2);
-            i = end == std::string_view::npos ? bytes.size() : end + 1;
-        } else if (c == '#') {
-            const std::size_t first = i + 1;
-            std::uint64_t id = 0;
-            for (; i + 1 < bytes.size() && std::isdigit(static_cast<unsigned char>(bytes[i + 1])); ++i)
-                id = std::min<std::uint64_t>(id * 10 + std::uint64_t(bytes[i + 1] - '0'),
-                                             max_entity_number + 1);
-            if (i + 1 == first)
-                throw_input_error(path, "byte " + std::to_string(i), "'#' without an entity number");
-            // web-ifc keeps 32 bits of an entity number: a larger one would stand for another entity.
-            if (id == 0 || id > max_entity_number)
-                throw_input_error(
-                    path, "#" + std::string(bytes.substr(first, std::min<std::size_t>(i + 1 - first, 24))),
-                    "entity number outside [1, " + std::to_string(max_entity_number) + "]");
-            std::size_t next = i + 1;
-            while (next < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[next]))) ++next;
-            if (next < bytes.size() && bytes[next] == '=') {
-                if (!defined.insert(id).second)
-                    throw_input_error(path, "#" + std::to_string(id), "defined twice");
-                entity = id;
-            } else {
-                used.emplace_back(entity, id);
-            }
-        }
-    }
-    for (const auto& [from, to] : used)
-        if (!defined.count(to))
-            throw_input_error(path, "#" + std::to_string(from),
-                              "names #" + std::to_string(to) + ", which the file does not define");
-}
-
 std::string web_ifc_module() {
     std::string folder;
     if (const char* module = std::getenv("BOXLOD_WEB_IFC"); module && *module) {
@@ -208,7 +164,6 @@ Model import_ifc_with_web_ifc(const std::string& path) {
     const std::size_t file_bytes = check_input_file(path, "IFC file");
     {
         const std::string bytes = read_input_file(path, "IFC file");
-        check_ifc_references(bytes, path);
         check_step_file(bytes, path, std::numeric_limits<int>::max());
     }
     const std::string module = web_ifc_module();

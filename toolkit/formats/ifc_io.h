@@ -11,7 +11,6 @@
 #include "toolkit/model/model.h"
 
 #include <string>
-#include <string_view>
 
 namespace boxlod {
 
@@ -19,11 +18,6 @@ namespace boxlod {
 // cache folder ($BOXLOD_NPM_CACHE, else $XDG_CACHE_HOME or ~/.cache, /boxlod/npm);
 // "" when it is not there.
 std::string web_ifc_module();
-
-// Every #N an entity names is one the file defines (ISO 10303-21), each
-// defined once: web-ifc leaves out what a dangling reference leads to without
-// a word. Throws InputError naming the entity.
-void check_ifc_references(std::string_view bytes, const std::string& path);
 
 Model import_ifc_with_web_ifc(const std::string& path);
 

@@ -20,6 +20,14 @@ std::string_view trimmed(std::string_view text) {
     return text;
 }
 
+// Where the STEP string opening at text[i] ends: its closing quote ('' is a
+// quote inside it), or text.size() if none.
+std::size_t step_string_end(std::string_view text, std::size_t i) {
+    for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\'')); ++i)
+        if (text[i] == '\'') ++i;
+    return i;
+}
+
 // The file with its comments (/* ... */ outside strings) made spaces, so that a '#' in one names nothing.
 std::string blank_comments(std::string_view bytes) {
     std::string text(bytes);
@@ -35,30 +43,45 @@ std::string blank_comments(std::string_view bytes) {
     return text;
 }
 
-// The number at text[at] (0 where there is none); `at` moves past it.
-std::uint64_t number_at(std::string_view text, std::size_t& at) {
-    std::uint64_t value = 0;
-    auto [end, error] = std::from_chars(text.data() + at, text.data() + text.size(), value);
-    at = std::size_t(end - text.data());
-    return error == std::errc() ? value : std::uint64_t(0);
-}
-
 // "#N" (not "#" + ...: GCC 12's false -Wrestrict).
 std::string instance_place(std::uint64_t id) { return std::to_string(id).insert(0, 1, '#'); }
 
+// web-ifc keeps 32 bits of an entity number: a larger one would stand for another entity.
+constexpr std::uint64_t max_entity_number = 4294967295;  // 2^32 - 1
+
+// The entity number after the '#' at text[at - 1], within [1, max_entity_number]; `at` moves past it.
+// `place` names the instance it is in.
+std::uint64_t entity_number(std::string_view text, std::size_t& at, const std::string& file,
+                            const std::string& place) {
+    const std::size_t first = at;
+    while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at]))) ++at;
+    if (at == first) throw_input_error(file, place, "'#' without an entity number");
+    std::uint64_t id = 0;
+    if (std::from_chars(text.data() + first, text.data() + at, id).ec != std::errc() || id == 0 ||
+        id > max_entity_number)
+        throw_input_error(
+            file, std::string(text.substr(first, std::min<std::size_t>(at - first, 24))).insert(0, 1, '#'),
+            "entity number outside [1, " + std::to_string(max_entity_number) + "]");
+    return id;
+}
+
 // ISO 10303-21 instances as a graph: each instance's references, and for the
-// IFC relationships assimp walks as a tree, the relating object's children.
+// IFC relationships assimp walks as a tree, the relating object's children;
+// whether the file defines it, and the first instance that names it.
 struct StepGraph {
-    std::vector<std::uint64_t> ids;
+    std::vector<std::uint64_t> ids, first_user;
     std::vector<std::vector<std::uint32_t>> references, children;
+    std::vector<bool> defined;
     std::unordered_map<std::uint64_t, std::uint32_t> index;
 
-    std::uint32_t node(std::uint64_t id) {
+    std::uint32_t node(std::uint64_t id, std::uint64_t user) {
         auto [it, added] = index.emplace(id, std::uint32_t(ids.size()));
         if (added) {
             ids.push_back(id);
+            first_user.push_back(user);
             references.emplace_back();
             children.emplace_back();
+            defined.push_back(false);
         }
         return it->second;
     }
@@ -89,10 +112,10 @@ const Relationship* relationship_of(std::string_view type) {
 // statement before the ';': its references and relationships into `graph`.
 void read_instance(std::string_view text, const std::string& file, StepGraph& graph) {
     std::size_t i = 1;
-    const std::uint64_t id = number_at(text, i);
+    const std::uint64_t id = entity_number(text, i, file, std::string(text.substr(0, 24)));
     const std::string place = instance_place(id);
     while (i < text.size() && is_space(text[i])) ++i;
-    if (i == 1 || i >= text.size() || text[i] != '=')
+    if (i >= text.size() || text[i] != '=')
         throw_input_error(file, place, "expected '#N = TYPE(...);' (ISO 10303-21 section 11)");
     ++i;
     while (i < text.size() && is_space(text[i])) ++i;
@@ -106,7 +129,9 @@ void read_instance(std::string_view text, const std::string& file, StepGraph& gr
     if (i >= text.size() || text[i] != '(')
         throw_input_error(file, place,
                           "its type '" + std::string(type.substr(0, 40)) + "' is not followed by '('");
-    const std::uint32_t instance = graph.node(id);
+    const std::uint32_t instance = graph.node(id, id);
+    if (graph.defined[instance]) throw_input_error(file, place, "defined twice");
+    graph.defined[instance] = true;
     const Relationship* relationship = relationship_of(type);
     std::vector<std::uint32_t> relating, related;
     int depth = 0, attribute = 0;
@@ -122,7 +147,7 @@ void read_instance(std::string_view text, const std::string& file, StepGraph& gr
             ++attribute;
         } else if (c == '#') {
             std::size_t at = i + 1;
-            const std::uint32_t target = graph.node(number_at(text, at));
+            const std::uint32_t target = graph.node(entity_number(text, at, file, place), id);
             graph.references[instance].push_back(target);
             if (relationship && attribute == relationship->relating) relating.push_back(target);
             if (relationship && attribute == relationship->related) related.push_back(target);
@@ -134,6 +159,11 @@ void read_instance(std::string_view text, const std::string& file, StepGraph& gr
         throw_input_error(file, place, "text after its attributes before its ';' (a ';' missing?)");
     for (std::uint32_t parent : relating)
         graph.children[parent].insert(graph.children[parent].end(), related.begin(), related.end());
+}
+
+// A statement's first word, to name it.
+std::string leading(std::string_view statement) {
+    return std::string(statement.substr(0, std::min<std::size_t>(statement.find_first_of("=( \t\r\n"), 24)));
 }
 
 // Whether a statement is `keyword` or starts with it and '(' or a space, in either case (web-ifc reads
@@ -157,19 +187,26 @@ StepGraph read_step_graph(std::string_view bytes, const std::string& file) {
         const std::string_view statement = trimmed(bytes.substr(start, i - start));
         start = i + 1;
         if (!statement.empty() && statement[0] == '#') {
-            if (!in_data) {
-                std::size_t at = 1;
-                throw_input_error(file, instance_place(number_at(statement, at)),
+            if (!in_data)
+                throw_input_error(file, leading(statement),
                                   "an instance outside a DATA section (ISO 10303-21 section 9)");
-            }
             read_instance(statement, file, graph);
         } else if (is_keyword(statement, "DATA")) {
             in_data = any_data = true;
         } else if (is_keyword(statement, "ENDSEC")) {
             in_data = false;
+        } else if (in_data && !statement.empty()) {
+            throw_input_error(file, leading(statement),
+                              "a statement in a DATA section that is no instance '#N = TYPE(...)' (ISO "
+                              "10303-21 section 11)");
         }
     }
     if (!any_data) throw_input_error(file, "", "has no DATA section ('DATA;', ISO 10303-21 section 9)");
+    // web-ifc leaves out what a dangling reference leads to without a word: the first one in the file.
+    for (std::size_t n = 0; n < graph.ids.size(); ++n)
+        if (!graph.defined[n])
+            throw_input_error(file, instance_place(graph.first_user[n]),
+                              "names " + instance_place(graph.ids[n]) + ", which the file does not define");
     return graph;
 }
 
@@ -216,12 +253,6 @@ void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::ve
 }
 
 }  // namespace
-
-std::size_t step_string_end(std::string_view text, std::size_t i) {
-    for (++i; i < text.size() && !(text[i] == '\'' && (i + 1 >= text.size() || text[i + 1] != '\'')); ++i)
-        if (text[i] == '\'') ++i;
-    return i;
-}
 
 void check_step_file(std::string_view bytes, const std::string& file, int max_depth) {
     std::size_t end = bytes.find_last_not_of(" \t\r\n");

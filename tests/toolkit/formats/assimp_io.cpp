@@ -84,19 +84,25 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
     EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
 }
 
-// A reference to an entity the file lacks crashes assimp's IFC reader: its
-// isolated read (docs/design.md: Errors) makes that one InputError naming the
-// file and the reader. boxlod reads IFC by web-ifc, which refuses the file first.
+// COLLADA nodes that instance each other crash assimp (its recursion has no
+// end): its isolated read (docs/design.md: Errors) makes that one InputError
+// naming the file and the reader.
 TEST(AssimpIo, ACrashInsideAssimpIsAnInputError) {
-    const std::string text =
-        test::replaced_once(test::read_text(test::fzk_haus_ifc), "#564= IFCLOCALPLACEMENT($,#44);",
-                            "#564= IFCLOCALPLACEMENT(#99999999,#44);");
-    const auto file = test::scratch_folder("assimp_crash") / "missing_placement.ifc";
-    test::write_text(file, text);
+    const auto file = test::scratch_folder("assimp_crash") / "instance_cycle.dae";
+    test::write_text(file, R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <library_nodes>
+    <node id="a"><instance_node url="#b"/></node>
+    <node id="b"><instance_node url="#a"/></node>
+  </library_nodes>
+  <library_visual_scenes>
+    <visual_scene id="s"><node id="r"><instance_node url="#a"/></node></visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)");
     const std::string error = test::input_error_of([&] { import_with_assimp(file.string()); });
     EXPECT_EQ(error.find(file.string() + ": assimp's importer crashed on this file"), 0u) << error;
-    EXPECT_NE(test::input_error_of([&] { load_model(file.string()); }).find("#564: names #99999999"),
-              std::string::npos);
 }
 
 // One file of each format the original program's users have, from Debian's assimp-testmodels.

@@ -129,27 +129,6 @@ TEST(IfcIo, CoordinatesBeyondAnyMapAreRefused) {
     EXPECT_NE(message.find("outside [-1e9, 1e9]"), std::string::npos) << message;
 }
 
-TEST(IfcIo, DanglingReferencesAreRefusedByEntity) {
-    const std::string step = "DATA;\n#1=IFCWALL('a''#9',#2);\n#2=IFCX(#3);/* #8 */\nENDSEC;";
-    EXPECT_NE(test::input_error_of([&] {
-                  check_ifc_references(step, "f.ifc");
-              }).find("f.ifc: #2: names #3, which the file does not define"),
-              std::string::npos);
-    EXPECT_EQ(test::input_error_of([&] { check_ifc_references(step + "\n#3=IFCY($);", "f.ifc"); }), "");
-    EXPECT_NE(test::input_error_of([&] {
-                  check_ifc_references("#1=A();#1=B();", "f.ifc");
-              }).find("#1: defined twice"),
-              std::string::npos);
-    // web-ifc keeps 32 bits: #4294967297 would be #1.
-    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A();#4294967295=B(#1);", "f.ifc"); }), "");
-    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A();#4294967297=B(#1);", "f.ifc"); }),
-              "f.ifc: #4294967297: entity number outside [1, 4294967295]");
-    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#1=A(#18446744073709551615999);", "f.ifc"); }),
-              "f.ifc: #18446744073709551615999: entity number outside [1, 4294967295]");
-    EXPECT_EQ(test::input_error_of([] { check_ifc_references("#0=A();", "f.ifc"); }),
-              "f.ifc: #0: entity number outside [1, 4294967295]");
-}
-
 // An environment variable set for one test, restored however it ends.
 struct ScopedEnvironment {
     std::string name;

@@ -42,6 +42,7 @@ TEST(StepFileCheck, ReferencesMayNeitherCycleNorNestTooDeep) {
             .append("= IFCLOCALPLACEMENT(#")
             .append(std::to_string(i + 1))
             .append(",$);\n");
+    chain.append("#301= IFCCARTESIANPOINT((0.,0.,0.));\n");
     EXPECT_NE(problem(step(chain)).find("references nested more than 200 levels deep"), std::string::npos);
 }
 
@@ -90,4 +91,28 @@ TEST(StepFileCheck, InstancesAreReadWholeAndOnlyInADataSection) {
                       "ENDSEC;\nDATA;\n#3= IFCY($);\n" +
                       trailer),
               "");
+}
+
+TEST(StepFileCheck, EveryNamedEntityIsDefinedOnce) {
+    const std::string data = "#1=IFCWALL('a''#9',#2);\n#2=IFCX(#3);/* #8 */\n";
+    EXPECT_EQ(problem(step(data)), "m.ifc: #2: names #3, which the file does not define");
+    EXPECT_EQ(problem(step(data + "#3=IFCY($);\n")), "");
+    EXPECT_EQ(problem(step("#1=A();\n#1=B();\n")), "m.ifc: #1: defined twice");
+    EXPECT_EQ(problem(step("#1=A(#);\n")), "m.ifc: #1: '#' without an entity number");
+}
+
+// web-ifc keeps 32 bits of an entity number: #4294967297 would be #1.
+TEST(StepFileCheck, EntityNumbersFitThirtyTwoBits) {
+    EXPECT_EQ(problem(step("#1=A();\n#4294967295=B(#1);\n")), "");
+    EXPECT_EQ(problem(step("#1=A();\n#4294967297=B(#1);\n")),
+              "m.ifc: #4294967297: entity number outside [1, 4294967295]");
+    EXPECT_EQ(problem(step("#1=A(#18446744073709551615999);\n")),
+              "m.ifc: #18446744073709551615999: entity number outside [1, 4294967295]");
+    EXPECT_EQ(problem(step("#0=A();\n")), "m.ifc: #0: entity number outside [1, 4294967295]");
+}
+
+TEST(StepFileCheck, ADataSectionHoldsOnlyInstances) {
+    EXPECT_EQ(problem(step("#1=A();\nIFCWALL(#1);\n")),
+              "m.ifc: IFCWALL: a statement in a DATA section that is no instance '#N = TYPE(...)' (ISO "
+              "10303-21 section 11)");
 }
