@@ -2,6 +2,7 @@
 
 #include "toolkit/formats/step_file_check.h"
 
+#include "base/graph_check.h"
 #include "base/input_error.h"
 
 #include <algorithm>
@@ -488,6 +489,46 @@ void check_collada_arrays(std::string_view bytes, const std::string& file) {
     check_collada_accessors(accessors, array_values, file);
 }
 
+// COLLADA's node tree with its instance_node references (COLLADA 1.4.1 specification, chapter 5: node,
+// instance_node): assimp builds the scene by recursion through every node a node instances (found by its
+// id, else its name, anywhere in the file), so nodes that instance each other crashed it.
+void check_collada_nodes(std::string_view bytes, const std::string& file) {
+    std::vector<std::vector<std::uint32_t>> edges;  // a node's children and the nodes it instances
+    std::vector<std::string> places;                // "byte N <node id="a">"
+    std::unordered_map<std::string_view, std::uint32_t> ids, names;
+    std::vector<std::pair<std::uint32_t, std::string_view>> instances;  // (node, the id it instances)
+    std::vector<std::uint32_t> open;
+    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
+        const bool closing = tag[1] == '/';
+        const std::string_view name = collada_element(closing ? tag.substr(1) : tag);
+        if (name == "node" && closing) {
+            if (!open.empty()) open.pop_back();
+        } else if (name == "node") {
+            const auto node = std::uint32_t(edges.size());
+            edges.emplace_back();
+            const std::optional<std::string_view> id = xml_attribute(tag, "id");
+            places.push_back("byte " + std::to_string(at) + " <node" +
+                             (id ? " id=\"" + std::string(id->substr(0, 40)) + "\"" : "") + ">");
+            if (!open.empty()) edges[open.back()].push_back(node);
+            if (id) ids.emplace(*id, node);
+            if (auto node_name = xml_attribute(tag, "name")) names.emplace(*node_name, node);
+            if (tag[tag.size() - 2] != '/') open.push_back(node);
+        } else if (name == "instance_node" && !open.empty()) {
+            const std::string_view url = xml_attribute(tag, "url").value_or("");
+            if (!url.empty() && url[0] == '#') instances.emplace_back(open.back(), url.substr(1));
+        }
+    });
+    for (const auto& [node, id] : instances) {
+        if (const auto by_id = ids.find(id); by_id != ids.end())
+            edges[node].push_back(by_id->second);
+        else if (const auto by_name = names.find(id); by_name != names.end())
+            edges[node].push_back(by_name->second);
+    }
+    check_acyclic_and_shallow(
+        edges, [&](std::uint32_t node) { return places[node]; }, "nodes with the nodes they instance", file,
+        max_nesting_depth);
+}
+
 }  // namespace
 
 void check_assimp_input(std::string_view bytes, const std::string& extension, const std::string& file) {
@@ -499,7 +540,10 @@ void check_assimp_input(std::string_view bytes, const std::string& extension, co
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".stl") check_ascii_stl(bytes, file);
     if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
-    if (extension == ".dae") check_collada_arrays(bytes, file);
+    if (extension == ".dae") {
+        check_collada_arrays(bytes, file);
+        check_collada_nodes(bytes, file);
+    }
     if (extension == ".ifc" || extension == ".stp" || extension == ".step")
         check_step_file(bytes, file, max_nesting_depth);
 }

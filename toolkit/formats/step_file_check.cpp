@@ -1,5 +1,6 @@
 #include "toolkit/formats/step_file_check.h"
 
+#include "base/graph_check.h"
 #include "base/input_error.h"
 
 #include <algorithm>
@@ -210,48 +211,6 @@ StepGraph read_step_graph(std::string_view bytes, const std::string& file) {
     return graph;
 }
 
-// Depth-first over `edges` with an explicit stack: a cycle, or a path longer
-// than max_depth, is refused at the instance where it is found.
-void check_acyclic_and_shallow(const StepGraph& graph, const std::vector<std::vector<std::uint32_t>>& edges,
-                               const std::string& what, const std::string& file, int max_depth) {
-    enum State : std::uint8_t { unseen, open, done };
-    std::vector<State> state(edges.size(), unseen);
-    std::vector<int> height(edges.size(), 0);
-    struct Frame {
-        std::uint32_t node;
-        std::size_t next;
-    };
-    for (std::uint32_t root = 0; root < edges.size(); ++root) {
-        if (state[root] != unseen) continue;
-        std::vector<Frame> stack{{root, 0}};
-        state[root] = open;
-        while (!stack.empty()) {
-            Frame& frame = stack.back();
-            if (frame.next < edges[frame.node].size()) {
-                std::uint32_t child = edges[frame.node][frame.next++];
-                if (state[child] == open)
-                    throw_input_error(file, instance_place(graph.ids[child]), what + " form a cycle");
-                if (state[child] == unseen) {
-                    if (stack.size() >= std::size_t(max_depth))
-                        throw_input_error(file, instance_place(graph.ids[child]),
-                                          what + " " + nesting_message());
-                    state[child] = open;
-                    stack.push_back({child, 0});
-                }
-                continue;
-            }
-            int h = 0;
-            for (std::uint32_t child : edges[frame.node]) h = std::max(h, height[child] + 1);
-            if (h > max_depth)
-                throw_input_error(file, instance_place(graph.ids[frame.node]),
-                                  what + " " + nesting_message());
-            height[frame.node] = h;
-            state[frame.node] = done;
-            stack.pop_back();
-        }
-    }
-}
-
 }  // namespace
 
 void check_step_file(std::string_view bytes, const std::string& file, int max_depth) {
@@ -261,8 +220,9 @@ void check_step_file(std::string_view bytes, const std::string& file, int max_de
         bytes.substr(end + 1 - trailer.size(), trailer.size()) != trailer)
         throw_input_error(file, "", "does not end with 'END-ISO-10303-21;' (truncated file?)");
     StepGraph graph = read_step_graph(blank_comments(bytes), file);
-    check_acyclic_and_shallow(graph, graph.references, "references", file, max_depth);
-    check_acyclic_and_shallow(graph, graph.children, "spatial relationships", file, max_depth);
+    const auto place_of = [&](std::uint32_t node) { return instance_place(graph.ids[node]); };
+    check_acyclic_and_shallow(graph.references, place_of, "references", file, max_depth);
+    check_acyclic_and_shallow(graph.children, place_of, "spatial relationships", file, max_depth);
 }
 
 }  // namespace boxlod

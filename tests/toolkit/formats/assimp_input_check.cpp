@@ -85,6 +85,41 @@ TEST(AssimpInputCheck, XmlNestedDeeperThanTheLimitIsRefused) {
     EXPECT_EQ(problem(shallow + "</COLLADA>", ".dae"), "");
 }
 
+// assimp builds a COLLADA scene by recursion through the nodes a node instances: nodes that instance each
+// other (by id or, failing that, by name), or themselves through a child, crashed it.
+TEST(AssimpInputCheck, ColladaNodesDoNotInstanceThemselves) {
+    const auto scene = [](const std::string& nodes) {
+        return "<?xml version=\"1.0\"?><COLLADA><library_nodes>" + nodes +
+               "</library_nodes><library_visual_scenes><visual_scene id=\"s\"><node id=\"r\"><instance_node "
+               "url=\"#a\"/></node></visual_scene></library_visual_scenes></COLLADA>";
+    };
+    const std::string b = "<node id=\"b\"><instance_geometry url=\"#g\"/></node>";
+    EXPECT_EQ(
+        problem(scene("<node id=\"a\"><instance_node url=\"#b\"/><instance_node url=\"#b\"/></node>" + b),
+                ".dae"),
+        "");
+    EXPECT_NE(problem(scene("<node id=\"a\"><instance_node url=\"#b\"/></node><node id=\"b\"><instance_node "
+                            "url=\"#a\"/></node>"),
+                      ".dae")
+                  .find("<node id=\"a\">: nodes with the nodes they instance form a cycle"),
+              std::string::npos);
+    EXPECT_NE(
+        problem(scene("<node id=\"a\"><node name=\"c\"><instance_node url=\"#a\"/></node></node>"), ".dae")
+            .find("form a cycle"),
+        std::string::npos);
+    EXPECT_NE(
+        problem(scene("<node id=\"a\"><instance_node url=\"#n\"/></node><node name=\"n\"><instance_node "
+                      "url=\"#a\"/></node>"),
+                ".dae")
+            .find("form a cycle"),
+        std::string::npos);
+    std::string chain = "<node id=\"a\"><instance_node url=\"#n1\"/></node>";
+    for (int i = 1; i <= 300; ++i)
+        chain += "<node id=\"n" + std::to_string(i) + "\"><instance_node url=\"#n" + std::to_string(i + 1) +
+                 "\"/></node>";
+    EXPECT_NE(problem(scene(chain), ".dae").find("nested more than 200 levels deep"), std::string::npos);
+}
+
 // assimp read a short array past its values (what it read differed run to run) and an accessor past its
 // array; an array's count, the values it holds and its accessors' reach must agree.
 TEST(AssimpInputCheck, ColladaArraysHoldTheirCountAndAccessorsReadWithinThem) {

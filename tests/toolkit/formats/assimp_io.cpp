@@ -84,23 +84,15 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
     EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
 }
 
-// COLLADA nodes that instance each other crash assimp (its recursion has no
-// end): its isolated read (docs/design.md: Errors) makes that one InputError
-// naming the file and the reader.
+// FBX scopes nested 200,000 deep crash assimp (its parser recurses per
+// scope): its isolated read (docs/design.md: Errors) makes that one
+// InputError naming the file and the reader.
 TEST(AssimpIo, ACrashInsideAssimpIsAnInputError) {
-    const auto file = test::scratch_folder("assimp_crash") / "instance_cycle.dae";
-    test::write_text(file, R"(<?xml version="1.0" encoding="utf-8"?>
-<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <library_nodes>
-    <node id="a"><instance_node url="#b"/></node>
-    <node id="b"><instance_node url="#a"/></node>
-  </library_nodes>
-  <library_visual_scenes>
-    <visual_scene id="s"><node id="r"><instance_node url="#a"/></node></visual_scene>
-  </library_visual_scenes>
-  <scene><instance_visual_scene url="#s"/></scene>
-</COLLADA>
-)");
+    const auto file = test::scratch_folder("assimp_crash") / "deep.fbx";
+    std::string text = "; FBX 7.4.0 project file\nFBXHeaderExtension:  {\n FBXVersion: 7400\n}\n";
+    for (int i = 0; i < 200000; ++i) text += "A: {";
+    text.append(200000, '}');
+    test::write_text(file, text + "\n");
     const std::string error = test::input_error_of([&] { import_with_assimp(file.string()); });
     EXPECT_EQ(error.find(file.string() + ": assimp's importer crashed on this file"), 0u) << error;
 }
