@@ -53,8 +53,7 @@ Level build_level(const Model& model, const LodParameters& parameters, int level
 
 std::vector<Level> build_chain(const Model& model, const LodParameters& parameters, double switch_error,
                                int threads) {
-    if (!(switch_error >= 0 && switch_error <= 1))
-        throw InputError("switch error " + format_number(switch_error) + " is outside [0, 1]");
+    check_switch_error(switch_error, "switch error");
     check_threads(threads);
     Chain chain(model, parameters, threads);
     std::vector<int> every;

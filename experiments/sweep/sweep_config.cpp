@@ -10,6 +10,7 @@
 #include "data_gen/samples.h"
 #include "experiments/sweep/impostor.h"
 #include "toolkit/formats/model_io.h"
+#include "toolkit/lod/cut/level_modes.h"
 #include "toolkit/lod/parameter_file.h"
 #include "toolkit/metrics/flip.h"
 #include "toolkit/metrics/shot.h"
@@ -287,6 +288,11 @@ SweepConfig parse_sweep_config(const std::string& text, const std::string& file)
     }
     if (c.models.empty()) throw_input_error(file, "", "no models (key 'models')");
     validate_parameters(c.lod, file);
+    // Budgets apply to the modes that order cuts by bytes (sweep.cpp): with none of them, to nothing.
+    if (!c.lod.budgets.empty() && std::none_of(c.level_modes.begin(), c.level_modes.end(), orders_by_bytes))
+        throw_input_error(file, "budgets",
+                          "no level mode of level_modes orders its cuts by bytes; budgets are for "
+                          "error-greedy and hybrid");
     return c;
 }
 

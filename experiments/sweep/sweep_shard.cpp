@@ -1,11 +1,10 @@
 #include "experiments/sweep/sweep_shard.h"
 
 #include "base/input_error.h"
+#include "base/number_text.h"
 #include "toolkit/lod/cut/level_modes.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 
 namespace boxlod {
 
@@ -33,11 +32,9 @@ SweepShard parse_sweep_shard(const SweepConfig& config, const std::string& text)
         fail("expected M:MODE, the model's position from 1 and a level mode of the config");
     const std::string position = text.substr(0, colon), mode_name = text.substr(colon + 1);
     const NumberRange models{1, double(config.models.size())};
-    char* end = nullptr;
-    const double m = std::strtod(position.c_str(), &end);
-    if (position.empty() || *end || !models.contains(m) || m != std::floor(m))
-        fail(out_of_range_message(models, position));
-    SweepShard shard{std::size_t(m) - 1, LevelMode::top_down};
+    const std::optional<std::size_t> m = number_within<std::size_t>(position, models);  // whole, decimal
+    if (!m) fail(out_of_range_message(models, position));
+    SweepShard shard{*m - 1, LevelMode::top_down};
     if (!parse_level_mode(mode_name, shard.level_mode) ||
         std::find(config.level_modes.begin(), config.level_modes.end(), shard.level_mode) ==
             config.level_modes.end())

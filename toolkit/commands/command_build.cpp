@@ -227,6 +227,22 @@ void check_model_kept(const std::string& model, const std::string& folder, const
         "-o " + folder + " and --name " + name);
 }
 
+// Options refused where they would do nothing: with --chain, or without it.
+void check_options_agree(const Arguments& a, bool chain_file, bool all_levels) {
+    if (a.has("level") && all_levels)
+        throw InputError(std::string("--level: ") + (chain_file ? "--chain" : "--all-levels") +
+                         " writes every level");
+    if (a.has("glb") && chain_file)
+        throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
+    static constexpr std::pair<const char*, const char*> chain_only[] = {
+        {"keep-hierarchy", "a level's own files keep it"},
+        {"viewer", "the pages show a chain"},
+        {"switch-error", "it places a chain's switch distances"}};
+    for (const auto& [option, why] : chain_only)
+        if (a.has(option) && !chain_file)
+            throw InputError("--" + std::string(option) + " needs --chain (" + why + ")");
+}
+
 int run_build(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     // The model read; a parameter file read may be saved over (it is read whole first).
@@ -255,14 +271,7 @@ int run_build(const Arguments& a) {
     check_base_name(name);
     const bool all_levels = a.has("all-levels") || chain_file;
     if (!chain_file) check_model_kept(model_file_of(parameters.model), a.text("output"), name, all_levels);
-    if (a.has("level") && all_levels)
-        throw InputError(std::string("--level: ") + (chain_file ? "--chain" : "--all-levels") +
-                         " writes every level");
-    if (a.has("glb") && chain_file)
-        throw InputError("--glb: --chain writes one file, named by -o (.glb or .gltf)");
-    if (a.has("keep-hierarchy") && !chain_file)
-        throw InputError("--keep-hierarchy needs --chain (a level's own files keep it)");
-    if (a.has("viewer") && !chain_file) throw InputError("--viewer needs --chain (the pages show a chain)");
+    check_options_agree(a, chain_file, all_levels);
     // Level c is sized as the chain sizes it, however many levels are asked for.
     Chain chain(model, parameters, threads_from(a));
     const int first = all_levels ? 0 : parameters.current_level,

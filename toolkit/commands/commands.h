@@ -44,9 +44,7 @@ inline Option switch_error_option() {
 }
 inline double switch_error(const Arguments& arguments) {
     const double error = arguments.number("switch-error");
-    if (error > 0 && error < switch_error_range.min)
-        throw InputError("--switch-error: " + format_number(error) + " is neither 0 nor in " +
-                         range_text(switch_error_range));
+    check_switch_error(error, "--switch-error");
     return error;
 }
 

@@ -1,6 +1,7 @@
 #include "toolkit/selection/lod_selection.h"
 
 #include "base/input_error.h"
+#include "toolkit/lod/chain/error_by_distance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,7 +87,7 @@ std::optional<int> forced_level(const SelectionObject& object, const SelectionVi
     return std::nullopt;
 }
 
-void check(bool ok, const std::string& where, const char* name, const char* what) {
+void check(bool ok, const std::string& where, const char* name, const std::string& what) {
     if (!ok) throw_input_error(where, name, what);
 }
 
@@ -130,7 +131,8 @@ void validate_strategy(const Strategy& strategy, const std::string& where) {
         check(!s->error_budget || (std::isfinite(*s->error_budget) && *s->error_budget >= 0), where,
               "texel exact", "the error budget must be finite and non-negative");
     if (auto* s = std::get_if<MeasuredSwitch>(&strategy))
-        check(s->error > 0 && s->error <= 1, where, "measured switching", "the error must be in (0, 1]");
+        check(s->error >= switch_error_range.min && s->error <= switch_error_range.max, where,
+              "measured switching", "the error must be in " + range_text(switch_error_range));
 }
 
 Strategy scale_detail(const Strategy& strategy, double detail) {

@@ -150,6 +150,11 @@ TEST(SweepConfig, ErrorsNameFileLineAndKey) {
     expect_error("models = sample:house, sample:house\n",
                  "cfg.txt: line 1: models: 'sample:house' is the model 'sample:house' again");
     expect_error("width = 64\n", "cfg.txt: no models");
+    // As build refuses them: budgets with no mode that takes them would sweep nothing of theirs.
+    expect_error("models = a.glb\nlevel_modes = top-down, box-area\nbudgets = 0.5\n",
+                 "cfg.txt: budgets: no level mode of level_modes orders its cuts by bytes");
+    EXPECT_NO_THROW(
+        parse_sweep_config("models = a.glb\nlevel_modes = top-down, hybrid\nbudgets = 0.5\n", "cfg.txt"));
 }
 
 TEST(SweepConfig, LoadNamesAMissingFile) {

@@ -95,6 +95,7 @@ TEST(StrategyText, BadTextIsOneErrorNamingWhere) {
                              "distance:40 ,80",
                              "measured:0",
                              "measured:1.5",
+                             "measured:1e-9",  // below what build's --switch-error takes
                              "measured:0.1,0.2",
                              "measured:nan"}) {
         std::string message = error_of(text);

@@ -1,5 +1,7 @@
 #include "toolkit/lod/chain/error_by_distance.h"
 
+#include "base/input_error.h"
+#include "base/key_values.h"
 #include "base/parallel.h"
 #include "renderer/renderer.h"
 #include "toolkit/drawing/drawable.h"
@@ -29,6 +31,12 @@ Shot render_view(const Drawable& drawable, const Camera& camera, const LodParame
 }
 
 }  // namespace
+
+void check_switch_error(double error, const std::string& what) {
+    if (!(error == 0 || (error >= switch_error_range.min && error <= switch_error_range.max)))
+        throw InputError(what + ": " + format_number(error) + " is neither 0 nor in " +
+                         range_text(switch_error_range));
+}
 
 std::vector<double> measured_distances(const Model& original, const TextureSizing& screen) {
     const Framing framing = model_framing(original);

@@ -17,6 +17,7 @@
 #include "toolkit/model/model.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace boxlod {
@@ -30,6 +31,10 @@ constexpr int measure_pixels = 384;  // the largest side of a measured view
 // seen), and no view costs more pixels than the nearest.
 constexpr double few_pixels = 4;  // where the measured distances end: the sphere this wide on the screen
 constexpr NumberRange switch_error_range{1e-4, 1};  // a threshold of covered ꟻLIP
+
+// A switch error is 0 (switch at the sizing distance) or in switch_error_range;
+// else throws InputError naming `what` (an option, a strategy).
+void check_switch_error(double error, const std::string& what);
 
 struct ErrorByDistance {
     std::vector<double> distances;            // ascending, from the framing distance
