@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -27,14 +28,31 @@ std::optional<Number> finite_number(std::string_view text) {
     return value;
 }
 
+// Whether `value` is held by a Number as a normal number or 0: 1e-46 as a
+// float would be read as 0, 1e39 as inf.
+template <typename Number>
+bool representable(double value) {
+    return !std::is_floating_point_v<Number> || value == 0 || std::isnormal(Number(value));
+}
+
 // All of `text` as a Number within `range`; nothing otherwise. A float is
 // checked as the double written: 0.01 read as a float lies below 0.01.
 template <typename Number>
 std::optional<Number> number_within(std::string_view text, const NumberRange& range) {
     const auto value =
         finite_number<std::conditional_t<std::is_floating_point_v<Number>, double, Number>>(text);
-    if (!value || !range.contains(double(*value))) return std::nullopt;
+    if (!value || !range.contains(double(*value)) || !representable<Number>(double(*value)))
+        return std::nullopt;
     return Number(*value);
+}
+
+// All of `text` as a count (a whole decimal number); else throws InputError
+// naming `file` and `place`: "expected a count, got 'TEXT'".
+inline std::size_t read_count(std::string_view text, const std::string& file, const std::string& place) {
+    std::size_t value = 0;
+    if (!read_whole(text, value))
+        throw_input_error(file, place, "expected a count, got '" + std::string(text) + "'");
+    return value;
 }
 
 // What is wrong with `text` as a Number within `range`; "" if nothing.
@@ -48,6 +66,8 @@ std::string number_problem(std::string_view text, const NumberRange& range) {
         std::is_integral_v<Number> && written &&
         (*written != std::floor(*written) || range.contains(*written)))
         return "expected a whole number in " + range_text(range) + ", got '" + std::string(text) + "'";
+    if (const auto written = finite_number<double>(text); written && !representable<Number>(*written))
+        return "expected 0 or a number of magnitude in [1.2e-38, 3.4e38], got '" + std::string(text) + "'";
     return out_of_range_message(range, std::string(text));
 }
 

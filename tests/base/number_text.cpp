@@ -52,3 +52,16 @@ TEST(NumberText, AProblemSaysWhatWasExpected) {
     EXPECT_EQ(number_problem<int>("0.5", range), "expected a whole number in [0, 10000], got '0.5'");
     EXPECT_EQ(number_problem<double>("wide", range), "expected a number in [0, 10000], got 'wide'");
 }
+
+// A number the field cannot hold is refused, not read as 0 (--distance 1e-46 sized for the framing
+// distance) or inf.
+TEST(NumberText, AFloatTooSmallOrTooLargeForItsFieldIsRefused) {
+    constexpr NumberRange any{0, 1e300};
+    EXPECT_EQ(number_within<float>("0", any), 0.0f);
+    EXPECT_EQ(number_within<float>("1e-30", any), 1e-30f);
+    EXPECT_FALSE(number_within<float>("1e-46", any));
+    EXPECT_FALSE(number_within<float>("1e39", any));
+    EXPECT_TRUE(number_within<double>("1e39", any));
+    EXPECT_EQ(number_problem<float>("1e-46", any),
+              "expected 0 or a number of magnitude in [1.2e-38, 3.4e38], got '1e-46'");
+}

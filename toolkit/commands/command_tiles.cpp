@@ -100,8 +100,6 @@ Placement tileset_placement(const Arguments& a, const std::string& file_system,
 int run_tiles(const Arguments& a) {
     LodParameters parameters = lod_parameters_from(a);
     if (!a.has("output")) throw InputError("boxlod tiles: -o/--output OUTDIR is required");
-    if (a.has("level"))
-        throw InputError("--level: tiles writes every level of each object (build --level C writes one)");
     const std::filesystem::path folder = a.text("output");
     check_output_directory(folder.string());
     // A model (or parameter file) named like a tile in OUTDIR would be replaced, or removed with the old
@@ -182,7 +180,8 @@ Subcommand tiles_subcommand() {
          1,
          1},
         run_tiles};
-    std::vector<Option> lod = lod_options();
+    std::vector<Option> lod = lod_options();  // but --level: tiles writes every level of each object
+    std::erase_if(lod, [](const Option& option) { return option.name == "level"; });
     tiles.command.options.insert(tiles.command.options.begin() + 1, lod.begin(), lod.end());
     return tiles;
 }

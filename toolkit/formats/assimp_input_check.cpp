@@ -1,9 +1,10 @@
 #include "toolkit/formats/assimp_input_check.h"
 
 #include "toolkit/formats/step_file_check.h"
+#include "toolkit/formats/xml_file_check.h"
 
-#include "base/graph_check.h"
 #include "base/input_error.h"
+#include "base/number_text.h"
 
 #include <algorithm>
 #include <array>
@@ -37,14 +38,6 @@ void check_fits(std::size_t count, std::size_t entry_bytes, std::size_t& availab
     if (!checked_multiply(count, entry_bytes, needed) || needed > available)
         refuse_count(file, place, count, available);
     available -= needed;
-}
-
-std::size_t parse_count(const std::string& word, const std::string& file, const std::string& place) {
-    std::size_t value = 0;
-    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error != std::errc() || end != word.data() + word.size())
-        throw_input_error(file, place, "expected a count, got '" + word + "'");
-    return value;
 }
 
 // PLY (Turk 1994): `element NAME COUNT` lines, each followed by its properties.
@@ -120,7 +113,7 @@ void check_ply(std::string_view bytes, const std::string& file) {
         words >> keyword >> a >> b >> c;
         std::string place = "line " + std::to_string(number);
         if (keyword == "format") ascii = a == "ascii";
-        if (keyword == "element") elements.push_back({a, parse_count(b, file, place), 0, number, {}});
+        if (keyword == "element") elements.push_back({a, read_count(b, file, place), 0, number, {}});
         if (elements.size() > max_ply_elements)
             throw_input_error(file, place, "more than " + std::to_string(max_ply_elements) + " elements");
         if (keyword == "property" && !elements.empty()) {
@@ -256,7 +249,7 @@ void check_off_face(const std::string& line, std::size_t vertices, const std::st
     std::istringstream face(line);
     std::string corners_text, index_text;
     face >> corners_text;
-    const std::size_t corners = parse_count(corners_text, file, at);
+    const std::size_t corners = read_count(corners_text, file, at);
     for (std::size_t k = 0; k < corners; ++k) {
         long long index = -1;  // signed: a "-1" is reported as itself, not wrapped around
         if (!(face >> index_text))
@@ -300,8 +293,8 @@ void check_off(std::string_view bytes, const std::string& file) {
     }
     if (!(header >> faces_text)) return;
     const std::string place = "line " + std::to_string(number);
-    std::size_t vertices = parse_count(vertices_text, file, place),
-                faces = parse_count(faces_text, file, place);
+    std::size_t vertices = read_count(vertices_text, file, place),
+                faces = read_count(faces_text, file, place);
     std::size_t available = bytes.size();
     check_fits(vertices, 6, available, file, place + ": vertex count");
     check_fits(faces, 2, available, file, place + ": face count");
@@ -350,183 +343,64 @@ void check_ascii_stl(std::string_view bytes, const std::string& file) {
     }
 }
 
-// Calls visit(at, tag) for each tag of an XML file (`tag` its text from '<' to '>', quoted attribute values
-// held whole), skipping comments, CDATA sections, processing instructions and declarations; the text
-// between tags is left to the visitor.
-template <typename Visit>
-void for_each_xml_tag(std::string_view bytes, Visit&& visit) {
-    static constexpr std::pair<std::string_view, std::string_view> skipped[] = {
-        {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
-    for (std::size_t i = bytes.find('<'); i != std::string_view::npos; i = bytes.find('<', i + 1)) {
-        const auto skip = std::find_if(std::begin(skipped), std::end(skipped), [&](const auto& pair) {
-            return bytes.substr(i, pair.first.size()) == pair.first;
-        });
-        if (skip != std::end(skipped)) {
-            i = bytes.find(skip->second, i);
-            if (i == std::string_view::npos) return;
+[[noreturn]] void refuse_fbx_depth(const std::string& file, std::size_t at) {
+    throw_input_error(file, "byte " + std::to_string(at), "FBX scopes " + nesting_message());
+}
+
+// A binary FBX's node records (Blender's io_scene_fbx, "FBX binary file format specification"): from byte
+// 27, each an end offset, a property count, the properties' length (32-bit each, 64-bit from version 7500),
+// a name's length (a byte) and its name, the properties, then its nested records up to its end, closed by a
+// null record. Records whose offsets make no sense are left to assimp, which refuses them.
+void check_binary_fbx_depth(std::string_view bytes, const std::string& file) {
+    std::uint32_t version = 0;
+    std::memcpy(&version, bytes.data() + 23, sizeof version);
+    const bool wide = version >= 7500;
+    const std::size_t header = wide ? 25 : 13;
+    const auto field = [&](std::size_t at, int k) {
+        std::uint64_t value = 0;
+        std::memcpy(&value, bytes.data() + at + std::size_t(k) * (wide ? 8 : 4), wide ? 8 : 4);
+        return value;  // little-endian, as the machine
+    };
+    std::vector<std::uint64_t> open;  // the ends of the records whose nested records are being read
+    for (std::size_t at = 27; at + header <= bytes.size();) {
+        while (!open.empty() && at >= open.back()) open.pop_back();
+        const std::uint64_t end = field(at, 0), properties_length = field(at, 2);
+        if (end == 0 && open.empty()) return;  // the top level's null record
+        if (end == 0) {                        // a nested list's null record
+            at += header;
             continue;
         }
-        std::size_t end = i + 1;
-        for (char quote = 0; end < bytes.size() && (quote || bytes[end] != '>'); ++end)
-            if (bytes[end] == '"' || bytes[end] == '\'')
-                quote = quote == bytes[end] ? 0 : quote ? quote : bytes[end];
-        if (end >= bytes.size()) return;
-        visit(i, bytes.substr(i, end + 1 - i));
-        i = end;
+        const std::uint64_t nested = at + header + std::uint8_t(bytes[at + header - 1]) + properties_length;
+        if (end <= at || end > bytes.size() || properties_length > bytes.size()) return;
+        if (nested >= end) {
+            at = std::size_t(end);
+            continue;
+        }
+        open.push_back(end);
+        if (open.size() > std::size_t(max_nesting_depth)) refuse_fbx_depth(file, at);
+        at = std::size_t(nested);
     }
 }
 
-// XML formats (COLLADA, X3D): elements nested at most max_nesting_depth deep
-// (assimp's readers recurse per element).
-void check_xml_depth(std::string_view bytes, const std::string& file) {
+// FBX (binary, or ASCII: scopes in braces, ';' comments, '"' strings): scopes nested at most
+// max_nesting_depth deep (assimp's parsers recurse per scope: 200,000 crashed them).
+void check_fbx_depth(std::string_view bytes, const std::string& file) {
+    constexpr std::string_view binary_magic("Kaydara FBX Binary  \0", 21);
+    if (bytes.substr(0, binary_magic.size()) == binary_magic) {
+        if (bytes.size() >= 27) check_binary_fbx_depth(bytes, file);
+        return;
+    }
     int depth = 0;
-    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
-        if (tag[1] == '/') {
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        if (bytes[i] == ';')
+            i = std::min(bytes.find('\n', i), bytes.size());
+        else if (bytes[i] == '"')
+            i = std::min(bytes.find('"', i + 1), bytes.size());
+        else if (bytes[i] == '}')
             --depth;
-            return;
-        }
-        if (tag[1] != '!' && tag[tag.size() - 2] != '/' && ++depth > max_nesting_depth)
-            throw_input_error(file, "byte " + std::to_string(at), "XML elements " + nesting_message());
-    });
-}
-
-// The value of attribute `name` in an XML tag (its text from '<' to '>'), if the tag has it.
-std::optional<std::string_view> xml_attribute(std::string_view tag, std::string_view name) {
-    const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-    for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
-        std::size_t i = at + name.size();
-        while (i < tag.size() && space(tag[i])) ++i;
-        if (at == 0 || !space(tag[at - 1]) || i >= tag.size() || tag[i] != '=') continue;
-        for (++i; i < tag.size() && space(tag[i]);) ++i;
-        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
-        const std::size_t end = tag.find(tag[i], i + 1);
-        if (end == std::string_view::npos) return std::nullopt;
-        return tag.substr(i + 1, end - i - 1);
+        else if (bytes[i] == '{' && ++depth > max_nesting_depth)
+            refuse_fbx_depth(file, i);
     }
-    return std::nullopt;
-}
-
-// A COLLADA tag's element name without a namespace prefix ("float_array" of <c:float_array ...>).
-std::string_view collada_element(std::string_view tag) {
-    std::string_view name = tag.substr(1, tag.find_first_of(" \t\r\n/>", 1) - 1);
-    return name.substr(name.find(':') == std::string_view::npos ? 0 : name.find(':') + 1);
-}
-
-struct ColladaAccessor {
-    std::size_t at;  // its byte in the file
-    std::string source;
-    std::size_t offset, count, stride, params;
-};
-
-// Each accessor reads within its array: offset + (count - 1) x stride + its params values, without overflow.
-void check_collada_accessors(const std::vector<ColladaAccessor>& accessors,
-                             const std::unordered_map<std::string, std::size_t>& array_values,
-                             const std::string& file) {
-    for (const ColladaAccessor& accessor : accessors) {
-        const auto array = array_values.find(accessor.source);
-        std::size_t reach = 0;  // offset + (count - 1) x stride + params, without overflow
-        if (array == array_values.end() || accessor.count == 0) continue;
-        if (!checked_multiply(accessor.count - 1, accessor.stride, reach) ||
-            !range_fits(accessor.offset, reach, array->second) ||
-            !range_fits(accessor.offset + reach, accessor.params, array->second))
-            throw_input_error(file, "byte " + std::to_string(accessor.at) + " <accessor>",
-                              "reads past its array " + accessor.source + " of " +
-                                  std::to_string(array->second) +
-                                  " values (offset + (count - 1) x stride + its params)");
-    }
-}
-
-// COLLADA's arrays and accessors (COLLADA 1.4.1 specification, chapter 5: float_array, accessor): an array
-// holds at least the values its count says, and an accessor reads within its array: offset + (count - 1) x
-// stride + its params values at most (interleaved accessors share an array). assimp reads an array by its
-// count and an accessor by its own count and stride, past the values the file holds: what a short array
-// read differed from run to run. Accessors are checked once every array is known (one may come first).
-void check_collada_arrays(std::string_view bytes, const std::string& file) {
-    static constexpr std::string_view arrays[] = {"float_array", "int_array",    "bool_array", "Name_array",
-                                                  "IDREF_array", "SIDREF_array", "token_array"};
-    std::unordered_map<std::string, std::size_t> array_values;  // "#id": its count, the smallest of an id's
-    std::vector<ColladaAccessor> accessors;
-    const auto number = [&](std::string_view tag, std::size_t at, std::string_view attribute,
-                            std::size_t fallback) {
-        const std::optional<std::string_view> text = xml_attribute(tag, attribute);
-        return text ? parse_count(std::string(*text), file,
-                                  "byte " + std::to_string(at) + " " + std::string(attribute))
-                    : fallback;
-    };
-    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
-        const std::string_view name = collada_element(tag);
-        const std::size_t end = at + tag.size();
-        if (std::find(std::begin(arrays), std::end(arrays), name) != std::end(arrays)) {
-            const std::size_t count = number(tag, at, "count", 0);
-            std::size_t values = 0;
-            const std::string_view content = tag[tag.size() - 2] == '/'
-                                                 ? std::string_view()
-                                                 : bytes.substr(end, bytes.find('<', end) - end);
-            for (std::size_t c = 0; c < content.size(); ++c)
-                values += !std::isspace(static_cast<unsigned char>(content[c])) &&
-                          (c == 0 || std::isspace(static_cast<unsigned char>(content[c - 1])));
-            if (values < count)
-                throw_input_error(
-                    file, "byte " + std::to_string(at) + " <" + std::string(name) + ">",
-                    "count " + std::to_string(count) + " but " + std::to_string(values) + " values");
-            if (auto id = xml_attribute(tag, "id")) {
-                auto [known, added] = array_values.emplace("#" + std::string(*id), count);
-                known->second = std::min(known->second, count);
-            }
-        } else if (name == "accessor") {
-            const std::size_t close = tag[tag.size() - 2] == '/' ? end : bytes.find("accessor>", end);
-            const std::string_view inside =
-                bytes.substr(end, close == std::string_view::npos ? 0 : close - end);
-            std::size_t params = 0;
-            for (std::size_t p = inside.find("param"); p != std::string_view::npos;
-                 p = inside.find("param", p + 1))
-                params += p > 0 && (inside[p - 1] == '<' || inside[p - 1] == ':');
-            accessors.push_back({at, std::string(xml_attribute(tag, "source").value_or("")),
-                                 number(tag, at, "offset", 0), number(tag, at, "count", 0),
-                                 number(tag, at, "stride", 1), std::max<std::size_t>(params, 1)});
-        }
-    });
-    check_collada_accessors(accessors, array_values, file);
-}
-
-// COLLADA's node tree with its instance_node references (COLLADA 1.4.1 specification, chapter 5: node,
-// instance_node): assimp builds the scene by recursion through every node a node instances (found by its
-// id, else its name, anywhere in the file), so nodes that instance each other crashed it.
-void check_collada_nodes(std::string_view bytes, const std::string& file) {
-    std::vector<std::vector<std::uint32_t>> edges;  // a node's children and the nodes it instances
-    std::vector<std::string> places;                // "byte N <node id="a">"
-    std::unordered_map<std::string_view, std::uint32_t> ids, names;
-    std::vector<std::pair<std::uint32_t, std::string_view>> instances;  // (node, the id it instances)
-    std::vector<std::uint32_t> open;
-    for_each_xml_tag(bytes, [&](std::size_t at, std::string_view tag) {
-        const bool closing = tag[1] == '/';
-        const std::string_view name = collada_element(closing ? tag.substr(1) : tag);
-        if (name == "node" && closing) {
-            if (!open.empty()) open.pop_back();
-        } else if (name == "node") {
-            const auto node = std::uint32_t(edges.size());
-            edges.emplace_back();
-            const std::optional<std::string_view> id = xml_attribute(tag, "id");
-            places.push_back("byte " + std::to_string(at) + " <node" +
-                             (id ? " id=\"" + std::string(id->substr(0, 40)) + "\"" : "") + ">");
-            if (!open.empty()) edges[open.back()].push_back(node);
-            if (id) ids.emplace(*id, node);
-            if (auto node_name = xml_attribute(tag, "name")) names.emplace(*node_name, node);
-            if (tag[tag.size() - 2] != '/') open.push_back(node);
-        } else if (name == "instance_node" && !open.empty()) {
-            const std::string_view url = xml_attribute(tag, "url").value_or("");
-            if (!url.empty() && url[0] == '#') instances.emplace_back(open.back(), url.substr(1));
-        }
-    });
-    for (const auto& [node, id] : instances) {
-        if (const auto by_id = ids.find(id); by_id != ids.end())
-            edges[node].push_back(by_id->second);
-        else if (const auto by_name = names.find(id); by_name != names.end())
-            edges[node].push_back(by_name->second);
-    }
-    check_acyclic_and_shallow(
-        edges, [&](std::uint32_t node) { return places[node]; }, "nodes with the nodes they instance", file,
-        max_nesting_depth);
 }
 
 }  // namespace
@@ -539,11 +413,9 @@ void check_assimp_input(std::string_view bytes, const std::string& extension, co
     if (extension == ".ply") check_ply(bytes, file);
     if (extension == ".off") check_off(bytes, file);
     if (extension == ".stl") check_ascii_stl(bytes, file);
-    if (extension == ".dae" || extension == ".x3d") check_xml_depth(bytes, file);
-    if (extension == ".dae") {
-        check_collada_arrays(bytes, file);
-        check_collada_nodes(bytes, file);
-    }
+    if (extension == ".x3d") check_xml_depth(bytes, file);
+    if (extension == ".fbx") check_fbx_depth(bytes, file);
+    if (extension == ".dae") check_collada_file(bytes, file);
     if (extension == ".ifc" || extension == ".stp" || extension == ".step")
         check_step_file(bytes, file, max_nesting_depth);
 }

@@ -116,6 +116,22 @@ std::string read_reference_system(const CityPlace& at, const json& document) {
         .get<std::string>();
 }
 
+// A CityJSONFeature's objects (CityJSON 2.0 spec, CityJSON Text Sequences):
+// its `id` names one of them, its main object, and no object is in an earlier
+// line too (it would be drawn twice).
+void check_feature_objects(const CityPlace& at, const json& feature, std::size_t line,
+                           std::map<std::string, std::size_t>& lines) {
+    const auto objects = feature.find("CityObjects");
+    const auto id = feature.find("id");
+    if (objects == feature.end() || !objects->is_object()) at.fail("a CityJSONFeature without CityObjects");
+    if (id == feature.end() || !id->is_string() || !objects->contains(id->get<std::string>()))
+        at.fail("'id' names none of the feature's CityObjects (its main object)");
+    for (const auto& [name, object] : objects->items())
+        if (const auto [where, first] = lines.emplace(name, line); !first)
+            at.fail("CityObjects '" + name + "' is on line " + std::to_string(where->second) +
+                    " too: each object is in one feature");
+}
+
 // The documents of a file: one, or a CityJSONSeq's lines (the first holds
 // the transform and the metadata; each later line a CityJSONFeature); the
 // reference system and a CityJSONSeq's first line's geometry templates, if asked.
@@ -132,7 +148,8 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
         return parts;
     }
     std::size_t line_number = 0;
-    std::optional<Transform> transform;  // from the first line that is not blank
+    std::optional<Transform> transform;        // from the first line that is not blank
+    std::map<std::string, std::size_t> lines;  // each CityObject's line: one feature holds it
     for (std::size_t start = 0; start < bytes.size();) {
         std::size_t end = std::min(bytes.find('\n', start), bytes.size());
         std::string_view line = bytes.substr(start, end - start);
@@ -159,6 +176,7 @@ std::vector<Part> read_parts(std::string_view bytes, const std::string& path,
             continue;
         }
         check_version(at, document, "CityJSONFeature");
+        check_feature_objects(at, document, line_number, lines);
         parts.push_back({std::move(document), prefix, {}});
         read_vertices(at, parts.back(), *transform);
     }

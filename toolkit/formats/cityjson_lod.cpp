@@ -37,13 +37,22 @@ std::vector<std::size_t> city_geometries_of_lod(const json& geometries, const st
     double finest = -INFINITY;
     for (const json& geometry : geometries)
         finest = std::max(finest, city_lod_number(city_geometry_lod(geometry)));
-    std::vector<std::size_t> chosen;
+    // The LoD's geometries of one spelling: "2.2" and "2.20" of one object are two geometries of the
+    // same LoD, which drawn together would draw it twice. The spelling asked if there is one, else the
+    // first in the file.
+    std::vector<std::size_t> candidates;
+    std::string spelling;
     for (std::size_t g = 0; g < geometries.size(); ++g) {
         const std::string own = city_geometry_lod(geometries[g]);
         const bool same =
             own == lod || (city_lod_number(own) >= 0 && city_lod_number(own) == city_lod_number(lod));
-        if (lod.empty() ? city_lod_number(own) == finest : same) chosen.push_back(g);
+        if (!(lod.empty() ? city_lod_number(own) == finest : same)) continue;
+        candidates.push_back(g);
+        if (spelling.empty() || own == lod) spelling = own;
     }
+    std::vector<std::size_t> chosen;
+    for (std::size_t g : candidates)
+        if (city_geometry_lod(geometries[g]) == spelling) chosen.push_back(g);
     return chosen;
 }
 

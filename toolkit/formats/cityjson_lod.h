@@ -18,7 +18,8 @@ std::string city_geometry_lod(const nlohmann::json& geometry);
 double city_lod_number(const std::string& lod);
 
 // The indices of the object's `geometries` (an array) that reading `lod` draws: those of that LoD (2 and
-// "2.0" alike), or for "" those of the object's finest.
+// "2.0" alike), or for "" those of the object's finest; of one spelling ("2.2" and "2.20" of one object
+// are one LoD twice): `lod`'s if one is spelt so, else the first's.
 std::vector<std::size_t> city_geometries_of_lod(const nlohmann::json& geometries, const std::string& lod);
 
 }  // namespace boxlod

@@ -84,15 +84,19 @@ TEST(AssimpIo, MalformedFilesAreInputErrors) {
     EXPECT_THROW(load_model((folder / "empty.off").string()), InputError);
 }
 
-// FBX scopes nested 200,000 deep crash assimp (its parser recurses per
-// scope): its isolated read (docs/design.md: Errors) makes that one
+// AC3D objects nested 100,000 deep crash assimp (its reader recurses per
+// object's kids): its isolated read (docs/design.md: Errors) makes that one
 // InputError naming the file and the reader.
 TEST(AssimpIo, ACrashInsideAssimpIsAnInputError) {
-    const auto file = test::scratch_folder("assimp_crash") / "deep.fbx";
-    std::string text = "; FBX 7.4.0 project file\nFBXHeaderExtension:  {\n FBXVersion: 7400\n}\n";
-    for (int i = 0; i < 200000; ++i) text += "A: {";
-    text.append(200000, '}');
-    test::write_text(file, text + "\n");
+    const auto file = test::scratch_folder("assimp_crash") / "deep.ac";
+    std::string text =
+        "AC3Db\nMATERIAL \"m\" rgb 1 1 1  amb 0.2 0.2 0.2  emis 0 0 0  spec 0 0 0  shi 10  trans 0\n"
+        "OBJECT world\nkids 1\n";
+    for (int i = 0; i < 100000; ++i) text += "OBJECT group\nkids 1\n";
+    text +=
+        "OBJECT poly\nnumvert 3\n0 0 0\n1 0 0\n0 1 0\nnumsurf 1\nSURF 0x20\nmat 0\nrefs 3\n0 0 0\n1 0 0\n2 0 "
+        "0\nkids 0\n";
+    test::write_text(file, text);
     const std::string error = test::input_error_of([&] { import_with_assimp(file.string()); });
     EXPECT_EQ(error.find(file.string() + ": assimp's importer crashed on this file"), 0u) << error;
 }

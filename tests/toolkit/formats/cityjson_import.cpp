@@ -355,6 +355,16 @@ TEST(CityJsonImport, EachObjectsFinestLodUnlessOneIsAsked) {
                   read(file, "lod_absent", "3");
               }).find("no surface of LoD 3 (the file has LoD 1.2, 2.2)"),
               std::string::npos);
+    // One LoD spelt twice is drawn once: the spelling asked, else the first (from a hostile-input run,
+    // which saw "2.2" and "2.20" drawn over each other).
+    json twice = geometries;
+    twice[0]["lod"] = "2.20";
+    twice[0]["boundaries"] = {surface(0), surface(0), surface(0)};
+    const json spelt = city({{"b", {{"type", "Building"}, {"geometry", twice}}}}, square_vertices);
+    EXPECT_EQ(read(spelt, "lod_spelt_first").nodes[1].primitives.size(), 1u);
+    EXPECT_EQ(read(spelt, "lod_spelt_first").nodes[1].primitives[0].polygon_count, 3u);
+    EXPECT_EQ(read(spelt, "lod_spelt_asked", "2.2").nodes[1].primitives[0].polygon_count, 2u);
+    EXPECT_EQ(read(spelt, "lod_spelt_other", "2.200").nodes[1].primitives[0].polygon_count, 3u);
     // "2.2.2" was read as 2.2, so both geometries were drawn over each other.
     json wrong = geometries;
     wrong[0]["lod"] = "2.2.2";
@@ -407,6 +417,21 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     lines = placed.dump() + "\n" + feature("a", 0).dump() + "\n";
     test::write_text(path, lines);
     EXPECT_EQ(load_model(path.string()).reference_system, "EPSG:7415");
+    // An object in two features would be drawn twice; a feature's id names its main object (from a
+    // hostile-input run, which saw both read without a word).
+    test::write_text(path,
+                     header.dump() + "\n" + feature("a", 0).dump() + "\n" + feature("a", 0).dump() + "\n");
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(path.string());
+              }).find("line 3: CityObjects 'a' is on line 2 too: each object is in one feature"),
+              std::string::npos);
+    json misnamed = feature("a", 0);
+    misnamed["id"] = "z";
+    test::write_text(path, header.dump() + "\n" + misnamed.dump() + "\n");
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(path.string());
+              }).find("line 2: 'id' names none of the feature's CityObjects"),
+              std::string::npos);
     // Objects in the first line are refused, not dropped.
     json holding = header;
     holding["CityObjects"] = feature("c", 0)["CityObjects"];
