@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 namespace boxlod {
@@ -22,7 +23,7 @@ void print_overview(const std::vector<Subcommand>& subcommands) {
     }
     std::printf(
         "\n'boxlod COMMAND --help' describes a command's options.\n"
-        "Exit status: 0 success, 2 bad input or usage, 1 internal failure.\n");
+        "Exit status: 0 success, 2 bad input, usage or out of memory, 1 internal failure.\n");
 }
 
 }  // namespace
@@ -53,6 +54,13 @@ int run_subcommands(const std::vector<Subcommand>& subcommands, int argc, char**
         // Messages that already name the command ("boxlod sweep: ...") get no second prefix.
         std::string message = error.what();
         std::fprintf(stderr, "%s%s\n", message.starts_with("boxlod ") ? "" : "boxlod: ", message.c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        // What the memory budget's estimates missed (base/memory_budget.h): a request too large, not a bug.
+        std::fprintf(stderr,
+                     "boxlod: %s: out of memory: the request needs more than this machine gives "
+                     "(smaller sizes or fewer levels need less)\n",
+                     words[0].c_str());
         return 2;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "boxlod: internal error: %s\n", error.what());

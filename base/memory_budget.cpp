@@ -7,11 +7,13 @@
 #include <atomic>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 namespace boxlod {
 namespace {
 
 std::atomic<double> budget{0};  // 0: not set yet
+std::atomic<double> held{0};    // MemoryHold's sum
 
 double physical_memory() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE)); }
 
@@ -35,13 +37,15 @@ Option max_memory_option() {
         max_memory_range};
 }
 
-double default_memory_budget() {
+double usable_memory() {
     double available = physical_memory();
     if (const double limit = cgroup_limit(); limit > 0) available = std::min(available, limit);
     if (rlimit limit{}; getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
         available = std::min(available, double(limit.rlim_cur));
-    return available / 2;
+    return available;
 }
+
+double default_memory_budget() { return usable_memory() / 2; }
 
 double memory_budget() {
     static const double fallback = default_memory_budget();  // read once: frames check it often
@@ -49,7 +53,9 @@ double memory_budget() {
     return set > 0 ? set : fallback;
 }
 
-void set_memory_budget(double bytes) { budget.store(bytes); }
+// A budget beyond what the process may use would let a request through to run out of memory: the
+// estimate is then checked against what there is.
+void set_memory_budget(double bytes) { budget.store(std::min(bytes, usable_memory())); }
 
 std::string memory_text(double bytes) {
     char text[32];
@@ -60,10 +66,28 @@ std::string memory_text(double bytes) {
     return text;
 }
 
+MemoryHold::MemoryHold(double bytes) { set(bytes); }
+MemoryHold::~MemoryHold() { set(0); }
+MemoryHold::MemoryHold(MemoryHold&& other) noexcept : bytes_(std::exchange(other.bytes_, 0)) {}
+MemoryHold& MemoryHold::operator=(MemoryHold&& other) noexcept {
+    set(0);
+    bytes_ = std::exchange(other.bytes_, 0);
+    return *this;
+}
+void MemoryHold::set(double bytes) {
+    held.fetch_add(bytes - bytes_);
+    bytes_ = bytes;
+}
+
+double held_memory() { return std::max(0.0, held.load()); }
+
 void check_memory(const std::string& what, double bytes) {
-    if (bytes > memory_budget())
-        throw InputError(what + " would need " + memory_text(bytes) + ", more than the memory budget of " +
-                         memory_text(memory_budget()) + " (--max-memory)");
+    const double others = held_memory();
+    if (bytes + others > memory_budget())
+        throw InputError(what + " would need " + memory_text(bytes) +
+                         (others > 0 ? " beside the " + memory_text(others) + " held" : std::string()) +
+                         ", more than the memory budget of " + memory_text(memory_budget()) +
+                         " (--max-memory)");
 }
 
 }  // namespace boxlod

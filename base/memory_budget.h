@@ -14,17 +14,36 @@ namespace boxlod {
 constexpr NumberRange max_memory_range{0.001, 1048576};  // GB
 Option max_memory_option();
 
-// Half of min(physical memory, cgroup v2 memory.max, RLIMIT_AS), bytes.
+// min(physical memory, cgroup v2 memory.max, RLIMIT_AS), bytes; the default budget is half of it.
+double usable_memory();
 double default_memory_budget();
 
-// The process's budget, bytes: default_memory_budget() until set (run_subcommands sets it from --max-memory).
+// The process's budget, bytes: default_memory_budget() until set (run_subcommands sets it from
+// --max-memory), and never more than usable_memory().
 double memory_budget();
 void set_memory_budget(double bytes);
 
 // "12.5 GB" (decimal units, three significant digits).
 std::string memory_text(double bytes);
 
-// Throws InputError "WHAT would need N GB, more than the memory budget of M GB (--max-memory)".
+// Memory that something long-lived holds while it lives (an LoD session's baked
+// faces, a level's pages): every check counts it beside the request, so a
+// chain of levels is estimated whole, not one level at a time.
+class MemoryHold {
+public:
+    explicit MemoryHold(double bytes = 0);
+    ~MemoryHold();
+    MemoryHold(MemoryHold&& other) noexcept;
+    MemoryHold& operator=(MemoryHold&& other) noexcept;
+    void set(double bytes);  // what it holds now
+
+private:
+    double bytes_ = 0;
+};
+double held_memory();  // the sum over every MemoryHold alive
+
+// Throws InputError "WHAT would need N GB, more than the memory budget of M GB
+// (--max-memory)" when `bytes` and held_memory() together exceed the budget.
 void check_memory(const std::string& what, double bytes);
 
 }  // namespace boxlod

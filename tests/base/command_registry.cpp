@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <new>
 #include <stdexcept>
 
 using namespace boxlod;
@@ -11,12 +13,14 @@ using namespace boxlod;
 namespace {
 int ran = 0;
 std::vector<Subcommand> commands() {
-    return {{{"echo", "", "Echo. Second sentence.", {{"times", "N", "how often", NumberRange{1, 3}}}, 0, 0},
-             [](const Arguments& a) { return ran = a.integer("times", 1), 0; }},
-            {{"bad", "", "Bad input.", {}, 0, 0},
-             [](const Arguments&) -> int { throw InputError("x.txt: line 2: wrong"); }},
-            {{"broken", "", "A bug.", {}, 0, 0},
-             [](const Arguments&) -> int { throw std::logic_error("oops"); }}};
+    return {
+        {{"echo", "", "Echo. Second sentence.", {{"times", "N", "how often", NumberRange{1, 3}}}, 0, 0},
+         [](const Arguments& a) { return ran = a.integer("times", 1), 0; }},
+        {{"bad", "", "Bad input.", {}, 0, 0},
+         [](const Arguments&) -> int { throw InputError("x.txt: line 2: wrong"); }},
+        {{"broken", "", "A bug.", {}, 0, 0}, [](const Arguments&) -> int { throw std::logic_error("oops"); }},
+        {{"greedy", "", "More than there is.", {}, 0, 0},
+         [](const Arguments&) -> int { throw std::bad_alloc(); }}};
 }
 int run(std::vector<const char*> words) {
     words.insert(words.begin(), "boxlod");
@@ -41,6 +45,16 @@ TEST(CommandRegistry, ExitStatusIsTwoForBadInputAndUsageAndOneForABug) {
     testing::internal::CaptureStderr();
     EXPECT_EQ(run({"broken"}), 1);
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "boxlod: internal error: oops\n");
+}
+
+// A request the memory budget's estimate let through, yet more than the machine gives, is refused as
+// too large (exit 2, one line), not reported as a bug.
+TEST(CommandRegistry, RunningOutOfMemoryIsOneLineAndExitStatusTwo) {
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(run({"greedy"}), 2);
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+    EXPECT_NE(said.find("out of memory"), std::string::npos) << said;
 }
 
 TEST(CommandRegistry, TheOverviewListsEachCommandsFirstSentence) {

@@ -43,6 +43,13 @@ TEST(MemoryBudget, RefusesARequestOverItWithOneLineSayingWhatItNeeds) {
     EXPECT_EQ(memory_text(5.36e8), "536 MB");
 }
 
+TEST(MemoryBudget, IsNeverMoreThanWhatTheProcessMayUse) {
+    BudgetScope scope;
+    set_memory_budget(1e15);  // --max-memory 1000000: a petabyte on a machine of gigabytes
+    EXPECT_EQ(memory_budget(), usable_memory());
+    EXPECT_THROW(check_memory("a 16384 x 16384 frame", 2 * usable_memory()), InputError);
+}
+
 TEST(MemoryBudget, EveryCommandTakesMaxMemory) {
     BudgetScope scope;
     double seen = 0;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 namespace boxlod {
@@ -91,15 +92,29 @@ fs::path find_file(const fs::path& directory, const std::string& name) {
     return directory / name;  // reading it gives the error that names the missing file
 }
 
-int load_texture(Model& model, const aiScene& scene, const aiMaterial& material, aiTextureType type,
-                 const fs::path& directory) {
+// The scene's textures as they are decoded: each image once however many
+// materials name it, and each counted against the memory budget beside the
+// ones decoded before (seven large PNGs ran out of memory one by one, and the
+// message blamed a valid file).
+struct TextureReading {
+    const aiScene& scene;
+    fs::path directory;
+    std::map<std::string, int> decoded;  // by file, or "*" and an embedded texture's name
+    double bytes = 0;
+    MemoryHold held;
+};
+
+int load_texture(Model& model, TextureReading& reading, const aiMaterial& material, aiTextureType type) {
     aiString name;
     if (material.GetTexture(type, 0, &name) != AI_SUCCESS) return -1;
     std::string file = name.C_Str();
+    const aiTexture* embedded = reading.scene.GetEmbeddedTexture(name.C_Str());
+    const std::string key = embedded ? "*" + file : find_file(reading.directory, file).string();
+    if (auto known = reading.decoded.find(key); known != reading.decoded.end()) return known->second;
     Texture texture;
     texture.name =
         utf8_or_latin1(fs::path(file).filename().string());  // the name; the file is read by its bytes
-    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.C_Str())) {
+    if (embedded) {
         if (embedded->mHeight == 0) {
             texture.image = decode_image(
                 {reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth}, file);
@@ -115,11 +130,13 @@ int load_texture(Model& model, const aiScene& scene, const aiMaterial& material,
             }
         }
     } else {
-        model.read_files.push_back(find_file(directory, file).string());
-        texture.image = read_image(model.read_files.back());
+        model.read_files.push_back(key);
+        texture.image = read_image(key);
     }
+    reading.bytes += double(texture.image.pixels.size());
+    reading.held.set(reading.bytes);
     model.textures.push_back(std::move(texture));
-    return int(model.textures.size()) - 1;
+    return reading.decoded[key] = int(model.textures.size()) - 1;
 }
 
 // assimp allocates whatever a header claims: while it reads, the address
@@ -132,8 +149,7 @@ std::size_t address_space_allowance(std::size_t file_bytes) {
 
 // An assimp material as boxlod's: colours, opacity (blended below 1), Phong
 // specular terms as glTF's specular-glossiness, and its textures.
-Material convert_material(Model& model, const aiScene& scene, const aiMaterial& in,
-                          const fs::path& directory) {
+Material convert_material(Model& model, TextureReading& textures, const aiMaterial& in) {
     Material material;
     material.name = utf8_or_latin1(in.GetName().C_Str());
     aiColor4D color;
@@ -157,11 +173,11 @@ Material convert_material(Model& model, const aiScene& scene, const aiMaterial& 
     if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0) material.shininess = shininess;
     int two_sided;
     if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) material.double_sided = two_sided != 0;
-    material.base_color_texture = load_texture(model, scene, in, aiTextureType_BASE_COLOR, directory);
+    material.base_color_texture = load_texture(model, textures, in, aiTextureType_BASE_COLOR);
     if (material.base_color_texture < 0)
-        material.base_color_texture = load_texture(model, scene, in, aiTextureType_DIFFUSE, directory);
-    material.normal_texture = load_texture(model, scene, in, aiTextureType_NORMALS, directory);
-    material.specular_texture = load_texture(model, scene, in, aiTextureType_SPECULAR, directory);
+        material.base_color_texture = load_texture(model, textures, in, aiTextureType_DIFFUSE);
+    material.normal_texture = load_texture(model, textures, in, aiTextureType_NORMALS);
+    material.specular_texture = load_texture(model, textures, in, aiTextureType_SPECULAR);
     if (material.specular_texture >= 0) material.specular_glossiness = true;
     return material;
 }
@@ -233,9 +249,9 @@ Model import_with_assimp_in_process(const std::string& path) {
     }
     Model model;
     model.source = path;
-    const fs::path directory = fs::path(path).parent_path();
+    TextureReading textures{*scene, fs::path(path).parent_path(), {}, 0, MemoryHold()};
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
-        model.materials.push_back(convert_material(model, *scene, *scene->mMaterials[i], directory));
+        model.materials.push_back(convert_material(model, textures, *scene->mMaterials[i]));
     add_nodes(model, *scene);
     make_unit_normals_and_tangents(model);
     validate_model(model);

@@ -92,6 +92,12 @@ double baked_bytes(const LodSession& session) {
     return texel_bytes * texels;
 }
 
+double page_bytes(const Atlas& atlas) {
+    double texels = 0;
+    for (const Eigen::Vector2i& page : atlas.pages) texels += double(page.x()) * double(page.y());
+    return texel_bytes * texels;
+}
+
 }  // namespace
 
 void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
@@ -113,9 +119,9 @@ void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
         }
     }
     // The faces, and a frame (renderer.h: make_frame, 32 bytes a pixel) for each worker's face, the largest
-    // at once at worst; checked before any slot is made, so that a viewer showing the refusal keeps a whole
-    // cache.
-    double bytes = baked_bytes(session) + texel_bytes * std::accumulate(texels.begin(), texels.end(), 0.0);
+    // at once at worst, beside what is held (the faces baked before); checked before any slot is made, so
+    // that a viewer showing the refusal keeps a whole cache.
+    double bytes = texel_bytes * std::accumulate(texels.begin(), texels.end(), 0.0);
     const std::size_t workers = std::min(std::size_t(thread_count(threads)), texels.size());
     std::partial_sort(texels.begin(), texels.begin() + std::ptrdiff_t(workers), texels.end(),
                       std::greater<>());
@@ -136,15 +142,19 @@ void bake_new_faces(LodSession& session, const Cut& cut, int threads) {
         });
     } catch (...) {  // no slot left half baked for a later level to take as done
         for (const auto& key : new_keys) session.cache.baked.erase(key);
+        session.cache.baked_held.set(baked_bytes(session));
         throw;
     }
+    session.cache.baked_held.set(baked_bytes(session));
 }
 
 void check_pages_memory(const LodSession& session, const Atlas& atlas) {
-    double texels = 0;
-    for (const Eigen::Vector2i& page : atlas.pages) texels += double(page.x()) * double(page.y());
-    check_memory(session.input.model->source + ": its LoD's atlas pages",
-                 page_copies * texel_bytes * texels + baked_bytes(session));
+    check_memory(session.input.model->source + ": its LoD's atlas pages", page_copies * page_bytes(atlas));
+}
+
+// Once made, a level's pages are held once, in its model.
+std::shared_ptr<const MemoryHold> hold_pages(const Atlas& atlas) {
+    return std::make_shared<const MemoryHold>(page_bytes(atlas));
 }
 
 Packing pack_faces(const LodSession& session, const Cut& cut, bool textured, int flat_faces, int threads) {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -43,9 +44,10 @@ struct Packing {
 // task).
 void bake_new_faces(LodSession& session, const Cut& cut, int threads);
 
-// The pages of `atlas` beside the session's baked faces within the memory budget (InputError naming the
-// model).
+// The pages of `atlas` within the memory budget beside what is held: every session's baked faces and
+// every level's pages (InputError naming the model); and the hold a level keeps for them once made.
 void check_pages_memory(const LodSession& session, const Atlas& atlas);
+std::shared_ptr<const MemoryHold> hold_pages(const Atlas& atlas);
 
 // Pack: the kept rectangles of the cut's faces into pages; faces of at most `flat_faces` texels (0: none) as
 // swatches.

@@ -4,12 +4,14 @@
 // that made it (lod_session.h, lod/'s own).
 #pragma once
 #include "base/key_values.h"
+#include "base/memory_budget.h"
 #include "toolkit/lod/cut/cut.h"
 #include "toolkit/lod/pages/atlas.h"
 #include "toolkit/model/cost.h"
 #include "toolkit/model/model.h"
 
 #include <cstdint>
+#include <memory>
 
 namespace boxlod {
 
@@ -32,6 +34,8 @@ struct Lod {
     CostParts
         cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // docs/design.md: Statistics
+    // Its pages' bytes while any copy of it lives, counted by every memory check (level_faces.h).
+    std::shared_ptr<const MemoryHold> pages_held;
 };
 
 }  // namespace boxlod

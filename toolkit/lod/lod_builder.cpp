@@ -263,6 +263,7 @@ Lod build_cut(LodSession& session, int current_level, Cut cut, int threads) {
             out.lod_params.emplace_back(entry.key, entry.value);
         check_pages_memory(session, lod.atlas);
         add_pages(out, lod.atlas, packing.height_depth, textured);
+        lod.pages_held = hold_pages(lod.atlas);
         add_cut_nodes(out, session, lod.cut, packing, lod.atlas, textured);
     }
 

@@ -3,6 +3,7 @@
 // time spent, apart from the builder so the steps of a level (level_faces.h)
 // read it without depending on the builder.
 #pragma once
+#include "base/memory_budget.h"
 #include "toolkit/lod/cut/error_greedy.h"
 #include "toolkit/lod/cut/level_values.h"
 #include "toolkit/lod/hybrid/hybrid.h"
@@ -49,6 +50,7 @@ struct LodCache {
     std::map<std::pair<int, int>, std::array<BakedFace, 6>> baked;  // per box node and texel scale (cut.h)
     std::vector<HybridLevel> hybrid_levels;                         // hybrid: per current level c, its state
     std::vector<std::size_t> opening_steps;  // error-greedy with budgets: per level c, the openings drawn
+    MemoryHold baked_held;                   // `baked`'s bytes, counted by every memory check (level_faces.h)
 };
 
 // What every level of one model shares.

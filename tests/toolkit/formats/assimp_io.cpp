@@ -1,6 +1,7 @@
 #include "toolkit/formats/assimp_io.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 #include "test_support.h"
 #include "toolkit/formats/model_bytes.h"
 #include "toolkit/formats/model_io.h"
@@ -163,6 +164,29 @@ TEST(AssimpIo, TexturesNamedAsOnWindowsLoad) {
                   load_model((folder / "m.obj").string());
               }).find("missing.png: no such file"),
               std::string::npos);
+}
+
+// An image several materials name is decoded once, and each decoded image
+// counts against the memory budget while the next is decoded (three materials
+// on one 8192 x 8192 PNG were refused as one image needing three times its
+// memory; seven large PNGs ran out of memory blaming a valid file).
+TEST(AssimpIo, AnImageManyMaterialsNameIsDecodedOnce) {
+    auto folder = test::scratch_folder("assimp_shared_image");
+    fs::copy_file("/usr/share/assimp/models/X/test.png", folder / "wall.png",
+                  fs::copy_options::overwrite_existing);
+    std::string materials, faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n";
+    for (const char* name : {"a", "b", "c"}) {
+        materials += std::string("newmtl ") + name + "\nKd 1 1 1\nmap_Kd wall.png\n";
+        faces += std::string("usemtl ") + name + "\nf 1/1 2/2 3/3\n";
+    }
+    test::write_text(folder / "m.mtl", materials);
+    test::write_text(folder / "m.obj", "mtllib m.mtl\n" + faces);
+    const Model model = load_model((folder / "m.obj").string());
+    ASSERT_EQ(model.textures.size(), 1u);
+    int named = 0;
+    for (const Material& material : model.materials) named += material.base_color_texture == 0;
+    EXPECT_EQ(named, 3);
+    EXPECT_EQ(held_memory(), 0);  // nothing held once the model is read
 }
 
 // LightWave maps textures by projection (planar, cylindrical, spherical):

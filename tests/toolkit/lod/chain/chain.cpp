@@ -1,6 +1,7 @@
 #include "toolkit/lod/chain/chain.h"
 
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 #include "lod_scene.h"
 #include "test_support.h"
 #include "toolkit/formats/model_io.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 
 using namespace boxlod;
 
@@ -187,6 +189,34 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
                       1u);  // the paying chain of a building this small: its geometry at every level
         }
     }
+}
+
+// A chain is estimated whole: the levels a command holds and every
+// distance's baked faces count against the memory budget beside the level
+// being made (a chain of 8192 x 8192 pages ran out of memory at 3.9 GB while
+// each level alone was within its 2 GB budget; from a hostile-input run).
+TEST(Chain, LevelsHeldCountAgainstTheMemoryBudget) {
+    struct BudgetScope {
+        ~BudgetScope() { set_memory_budget(0); }
+    } scope;
+    const Model model = test::lod_test_building();
+    LodParameters manual = small_chain_parameters();
+    set_manual(manual);  // every sub-tree boxed: every level has pages
+    manual.max_texture_size = 256;
+    const double before = held_memory();
+    Chain chain(model, manual, 2);
+    std::optional<Lod> first = chain.build(1);
+    ASSERT_FALSE(first->atlas.pages.empty());
+    const double with_first = held_memory();
+    double page_texels = 0;
+    for (const Eigen::Vector2i& page : first->atlas.pages) page_texels += double(page.x()) * page.y();
+    EXPECT_GE(with_first - before, 9 * page_texels);  // its pages and its session's faces
+    first.reset();
+    EXPECT_EQ(held_memory(), with_first - 9 * page_texels);  // the faces stay for later levels
+    const Lod kept = chain.build(1);
+    set_memory_budget(held_memory() + 1);
+    EXPECT_NE(test::input_error_of([&] { chain.build(2); }).find(" held, more than the memory budget"),
+              std::string::npos);
 }
 
 // A level's parameter file holds the chain's parameters at the level's
