@@ -112,8 +112,13 @@ std::string read_reference_system(const CityPlace& at, const json& document) {
     if (metadata == document.end()) return "";
     if (!metadata->is_object()) at.fail("'metadata' is not an object");
     if (!metadata->contains("referenceSystem")) return "";
-    return member(at.in("metadata"), *metadata, "referenceSystem", json::value_t::string, "a string")
-        .get<std::string>();
+    std::string system =
+        member(at.in("metadata"), *metadata, "referenceSystem", json::value_t::string, "a string")
+            .get<std::string>();
+    // Empty, it would place the file as one without a system does, at the default place, without a word.
+    if (system.find_first_not_of(" \t") == std::string::npos)
+        at.in("metadata").fail("'referenceSystem' is empty (leave it out where the file has none)");
+    return system;
 }
 
 // A CityJSONFeature's objects (CityJSON 2.0 spec, CityJSON Text Sequences):

@@ -417,6 +417,12 @@ TEST(CityJsonImport, CityJsonSeqFeaturesEachBringTheirVertices) {
     lines = placed.dump() + "\n" + feature("a", 0).dump() + "\n";
     test::write_text(path, lines);
     EXPECT_EQ(load_model(path.string()).reference_system, "EPSG:7415");
+    placed["metadata"] = {{"referenceSystem", ""}};  // not none: a file without a system leaves it out
+    test::write_text(path, placed.dump() + "\n" + feature("a", 0).dump() + "\n");
+    EXPECT_NE(test::input_error_of([&] {
+                  load_model(path.string());
+              }).find("line 1: metadata: 'referenceSystem' is empty"),
+              std::string::npos);
     // An object in two features would be drawn twice; a feature's id names its main object (from a
     // hostile-input run, which saw both read without a word).
     test::write_text(path,
