@@ -55,6 +55,9 @@ int run_subcommands(const std::vector<Subcommand>& subcommands, int argc, char**
         std::string message = error.what();
         std::fprintf(stderr, "%s%s\n", message.starts_with("boxlod ") ? "" : "boxlod: ", message.c_str());
         return 2;
+    } catch (const std::bad_array_new_length& error) {  // a size computed wrong: a bug, not a request
+        std::fprintf(stderr, "boxlod: internal error: %s\n", error.what());
+        return 1;
     } catch (const std::bad_alloc&) {
         // What the memory budget's estimates missed (base/memory_budget.h): a request too large, not a bug.
         std::fprintf(stderr,

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,6 +57,13 @@ inline std::size_t read_count(std::string_view text, const std::string& file, co
     return value;
 }
 
+// A type's limit as a message gives it: "1.2e-38".
+inline std::string format_limit(double value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.2g", value);
+    return text;
+}
+
 // What is wrong with `text` as a Number within `range`; "" if nothing.
 // "expected a whole number in [min, max], got '2.5'" for a fraction where a
 // whole number is read, else out_of_range_message.
@@ -66,8 +75,10 @@ std::string number_problem(std::string_view text, const NumberRange& range) {
         std::is_integral_v<Number> && written &&
         (*written != std::floor(*written) || range.contains(*written)))
         return "expected a whole number in " + range_text(range) + ", got '" + std::string(text) + "'";
-    if (const auto written = finite_number<double>(text); written && !representable<Number>(*written))
-        return "expected 0 or a number of magnitude in [1.2e-38, 3.4e38], got '" + std::string(text) + "'";
+    if (const auto written = finite_number<double>(text);
+        written && range.contains(*written) && !representable<Number>(*written))
+        return "expected 0 or a number of magnitude in [" + format_limit(std::numeric_limits<Number>::min()) +
+               ", " + format_limit(std::numeric_limits<Number>::max()) + "], got '" + std::string(text) + "'";
     return out_of_range_message(range, std::string(text));
 }
 

@@ -24,7 +24,7 @@ Frame make_frame(int width, int height, const Eigen::Vector3f& background) {
         sizeof(Eigen::Vector4f) + sizeof(float) + sizeof(Eigen::Vector3f);
     const double bytes = frame_bytes_per_pixel * double(width) * double(height);
     // The message only when refused: small frames are made by the thousand (hybrid.h).
-    if (bytes > memory_budget())
+    if (bytes + held_memory() > memory_budget())
         check_memory("a " + std::to_string(width) + " x " + std::to_string(height) + " frame", bytes);
     Frame frame;
     frame.width = width;

@@ -63,5 +63,10 @@ TEST(NumberText, AFloatTooSmallOrTooLargeForItsFieldIsRefused) {
     EXPECT_FALSE(number_within<float>("1e39", any));
     EXPECT_TRUE(number_within<double>("1e39", any));
     EXPECT_EQ(number_problem<float>("1e-46", any),
-              "expected 0 or a number of magnitude in [1.2e-38, 3.4e38], got '1e-46'");
+              "expected 0 or a number of magnitude in [1.2e-38, 3.4e+38], got '1e-46'");
+    EXPECT_EQ(number_problem<double>("1e-310", any),
+              "expected 0 or a number of magnitude in [2.2e-308, 1.8e+308], got '1e-310'");
+    // Outside the range, the range is what was expected (0 is not in it either).
+    EXPECT_EQ(number_problem<float>("1e-46", NumberRange{0.1, 179}),
+              "expected a number in [0.1, 179], got '1e-46'");
 }

@@ -365,7 +365,7 @@ std::optional<ViewerEvent> parse_replay_line(const std::string& line, const std:
         std::string text;
         if (!(in >> text)) fail(std::string("expected '") + form + "'");
         const auto v = number_within<float>(text, range);
-        if (!v) fail(std::string(name) + ": " + out_of_range_message(range, text));
+        if (!v) fail(std::string(name) + ": " + number_problem<float>(text, range));
         value = *v;
     };
     if (word == "key") {

@@ -350,7 +350,9 @@ void check_ascii_stl(std::string_view bytes, const std::string& file) {
 // A binary FBX's node records (Blender's io_scene_fbx, "FBX binary file format specification"): from byte
 // 27, each an end offset, a property count, the properties' length (32-bit each, 64-bit from version 7500),
 // a name's length (a byte) and its name, the properties, then its nested records up to its end, closed by a
-// null record. Records whose offsets make no sense are left to assimp, which refuses them.
+// null record. Walked as assimp's FBXBinaryTokenizer walks them: a nested list ends a null record's length
+// before its end, and a zero end offset inside it is skipped by its own width. Records whose offsets make no
+// sense are left to assimp, which refuses them.
 void check_binary_fbx_depth(std::string_view bytes, const std::string& file) {
     std::uint32_t version = 0;
     std::memcpy(&version, bytes.data() + 23, sizeof version);
@@ -363,11 +365,15 @@ void check_binary_fbx_depth(std::string_view bytes, const std::string& file) {
     };
     std::vector<std::uint64_t> open;  // the ends of the records whose nested records are being read
     for (std::size_t at = 27; at + header <= bytes.size();) {
-        while (!open.empty() && at >= open.back()) open.pop_back();
+        if (!open.empty() && at + header >= open.back()) {  // the nested list's end
+            at = std::max(at, std::size_t(open.back()));    // never back: the walk ends
+            open.pop_back();
+            continue;
+        }
         const std::uint64_t end = field(at, 0), properties_length = field(at, 2);
         if (end == 0 && open.empty()) return;  // the top level's null record
-        if (end == 0) {                        // a nested list's null record
-            at += header;
+        if (end == 0) {                        // a zero end offset inside a nested list
+            at += wide ? 8 : 4;
             continue;
         }
         const std::uint64_t nested = at + header + std::uint8_t(bytes[at + header - 1]) + properties_length;
@@ -385,15 +391,15 @@ void check_binary_fbx_depth(std::string_view bytes, const std::string& file) {
 // FBX (binary, or ASCII: scopes in braces, ';' comments, '"' strings): scopes nested at most
 // max_nesting_depth deep (assimp's parsers recurse per scope: 200,000 crashed them).
 void check_fbx_depth(std::string_view bytes, const std::string& file) {
-    constexpr std::string_view binary_magic("Kaydara FBX Binary  \0", 21);
+    constexpr std::string_view binary_magic("Kaydara FBX Binary");  // the 18 bytes assimp compares
     if (bytes.substr(0, binary_magic.size()) == binary_magic) {
         if (bytes.size() >= 27) check_binary_fbx_depth(bytes, file);
         return;
     }
     int depth = 0;
     for (std::size_t i = 0; i < bytes.size(); ++i) {
-        if (bytes[i] == ';')
-            i = std::min(bytes.find('\n', i), bytes.size());
+        if (bytes[i] == ';')  // to the end of the line, as assimp's FBXTokenizer ends it
+            i = std::min(bytes.find_first_of(std::string_view("\r\n\f\0", 4), i), bytes.size());
         else if (bytes[i] == '"')
             i = std::min(bytes.find('"', i + 1), bytes.size());
         else if (bytes[i] == '}')

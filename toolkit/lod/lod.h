@@ -34,7 +34,8 @@ struct Lod {
     CostParts
         cost;  // of `model` (docs/design.md: Cost), computed once for the statistics and whoever draws it
     KeyValues statistics;  // docs/design.md: Statistics
-    // Its pages' bytes while any copy of it lives, counted by every memory check (level_faces.h).
+    // Its pages' bytes while it (or a copy) lives, counted by every memory check (level_faces.h); a
+    // model moved out of it and kept is no longer counted.
     std::shared_ptr<const MemoryHold> pages_held;
 };
 

@@ -32,7 +32,7 @@ struct Parser {
     }
     float number(const std::string& text, const NumberRange& range = {-FLT_MAX, FLT_MAX}) const {
         const auto v = number_within<float>(text, range);
-        if (!v) fail(out_of_range_message(range, text));
+        if (!v) fail(number_problem<float>(text, range));
         return *v;
     }
     Eigen::Vector3f vector(const std::string& text,

@@ -175,4 +175,12 @@ TEST(AssimpInputCheck, FbxScopesNestAtMostTheLimit) {
               std::string::npos);
     // Cut short or with offsets that make no sense, it is left to assimp, which refuses it.
     EXPECT_EQ(problem(nested_binary_fbx(300).substr(0, 40), ".fbx"), "");
+    // Read as assimp reads them (a review of the check): binary by the first 18 bytes, a comment ended by
+    // '\r' too.
+    std::string renamed = nested_binary_fbx(300);
+    renamed.replace(18, 3, "XYZ");
+    EXPECT_NE(problem(renamed, ".fbx").find("FBX scopes nested"), std::string::npos);
+    std::string returns = "; a comment to a carriage return\r";
+    for (int i = 0; i < 201; ++i) returns += "A: {";
+    EXPECT_NE(problem(returns, ".fbx").find("FBX scopes nested"), std::string::npos);
 }

@@ -181,12 +181,25 @@ TEST(AssimpIo, AnImageManyMaterialsNameIsDecodedOnce) {
     }
     test::write_text(folder / "m.mtl", materials);
     test::write_text(folder / "m.obj", "mtllib m.mtl\n" + faces);
-    const Model model = load_model((folder / "m.obj").string());
+    // In this process (load_model reads in a child) with a budget for one 512 x 512 image's decoding
+    // (8 bytes a pixel) and a little more, not for its decoded pixels (4 bytes a pixel) besides.
+    struct BudgetScope {
+        ~BudgetScope() { set_memory_budget(0); }
+    } scope;
+    set_memory_budget(10.0 * 512 * 512);
+    const Model model = import_with_assimp_in_process((folder / "m.obj").string());
     ASSERT_EQ(model.textures.size(), 1u);
     int named = 0;
     for (const Material& material : model.materials) named += material.base_color_texture == 0;
     EXPECT_EQ(named, 3);
     EXPECT_EQ(held_memory(), 0);  // nothing held once the model is read
+    fs::copy_file(folder / "wall.png", folder / "roof.png", fs::copy_options::overwrite_existing);
+    test::write_text(folder / "m.mtl", materials + "newmtl d\nKd 1 1 1\nmap_Kd roof.png\n");
+    test::write_text(folder / "m.obj", "mtllib m.mtl\n" + faces + "usemtl d\nf 1/1 2/2 3/3\n");
+    EXPECT_NE(test::input_error_of([&] {
+                  import_with_assimp_in_process((folder / "m.obj").string());
+              }).find("roof.png: decoding its 512x512 pixels would need 2.1 MB beside the 1.05 MB held"),
+              std::string::npos);
 }
 
 // LightWave maps textures by projection (planar, cylindrical, spherical):
