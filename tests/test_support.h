@@ -1,6 +1,7 @@
 // Small helpers shared by the tests: scratch folders, files, running the CLI.
 #pragma once
 #include "base/input_error.h"
+#include "base/memory_budget.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,11 @@
 #include <unistd.h>
 
 namespace boxlod::test {
+
+// Gives the process back its default memory budget when a test that sets one ends.
+struct MemoryBudgetScope {
+    ~MemoryBudgetScope() { set_memory_budget(0); }
+};
 
 // The message of the InputError that run() throws, "" when it throws none.
 template <typename Run>

@@ -1,6 +1,7 @@
 #include "base/memory_budget.h"
 
 #include "base/command_registry.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +9,6 @@
 #include <unistd.h>
 
 using namespace boxlod;
-
-namespace {
-// Restores the process's budget after a test that sets it.
-struct BudgetScope {
-    ~BudgetScope() { set_memory_budget(0); }
-};
-}  // namespace
 
 TEST(MemoryBudget, DefaultsToHalfOfWhatTheProcessMayUse) {
     const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
@@ -29,7 +23,7 @@ TEST(MemoryBudget, DefaultsToHalfOfWhatTheProcessMayUse) {
 }
 
 TEST(MemoryBudget, RefusesARequestOverItWithOneLineSayingWhatItNeeds) {
-    BudgetScope scope;
+    test::MemoryBudgetScope scope;
     set_memory_budget(2e9);
     EXPECT_NO_THROW(check_memory("a frame", 2e9));
     try {
@@ -44,14 +38,14 @@ TEST(MemoryBudget, RefusesARequestOverItWithOneLineSayingWhatItNeeds) {
 }
 
 TEST(MemoryBudget, IsNeverMoreThanWhatTheProcessMayUse) {
-    BudgetScope scope;
+    test::MemoryBudgetScope scope;
     set_memory_budget(1e15);  // --max-memory 1000000: a petabyte on a machine of gigabytes
     EXPECT_EQ(memory_budget(), usable_memory());
     EXPECT_THROW(check_memory("a 16384 x 16384 frame", 2 * usable_memory()), InputError);
 }
 
 TEST(MemoryBudget, EveryCommandTakesMaxMemory) {
-    BudgetScope scope;
+    test::MemoryBudgetScope scope;
     double seen = 0;
     static double* out = &seen;
     const std::vector<Subcommand> commands = {

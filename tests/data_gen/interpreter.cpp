@@ -264,9 +264,7 @@ TEST(Interpreter, Errors) {
 // Six lines of grammar asked for ten million triangles in 2.3 GB under --max-memory 0.1 (a hostile-input
 // run): the model is charged against the budget as the derivation makes it.
 TEST(Interpreter, ADerivationBeyondTheMemoryBudgetIsRefusedAsItGrows) {
-    struct BudgetScope {
-        ~BudgetScope() { set_memory_budget(0); }
-    } restore;
+    test::MemoryBudgetScope restore;
     const std::string fan =
         "Lot --> extrude(3) A\nA --> B B B B B B B B B B\nB --> C C C C C C C C C C\nC --> i(cylinder, "
         "256)\n";

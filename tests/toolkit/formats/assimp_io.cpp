@@ -183,9 +183,7 @@ TEST(AssimpIo, AnImageManyMaterialsNameIsDecodedOnce) {
     test::write_text(folder / "m.obj", "mtllib m.mtl\n" + faces);
     // In this process (load_model reads in a child) with a budget for one 512 x 512 image's decoding
     // (8 bytes a pixel) and a little more, not for its decoded pixels (4 bytes a pixel) besides.
-    struct BudgetScope {
-        ~BudgetScope() { set_memory_budget(0); }
-    } scope;
+    test::MemoryBudgetScope scope;
     set_memory_budget(10.0 * 512 * 512);
     const Model model = import_with_assimp_in_process((folder / "m.obj").string());
     ASSERT_EQ(model.textures.size(), 1u);

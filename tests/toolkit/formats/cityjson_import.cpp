@@ -314,9 +314,7 @@ TEST(CityJsonImport, GeometryInstancesPlaceTheirTemplates) {
 // file is refused before any geometry is read (object "a", read first, would fail on its vertex index),
 // and instances of an LoD the reading leaves out do not count.
 TEST(CityJsonImport, InstancesBeyondTheMemoryBudgetAreRefusedBeforeAnyIsRead) {
-    struct BudgetScope {
-        ~BudgetScope() { set_memory_budget(0); }
-    } restore;
+    test::MemoryBudgetScope restore;
     set_memory_budget(10e6);
     json file =
         city({{"a", building(json::array({json::array({json::array({0, 1, 99})})}))}}, square_vertices);

@@ -60,9 +60,7 @@ TEST(JsonInput, RefusesTextNestedTooDeepOrWhoseTreeExceedsTheBudget) {
     EXPECT_EQ(problem(std::string(200, '[') + std::string(200, ']')), "");
     // Brackets inside strings are text.
     EXPECT_EQ(problem("[\"" + std::string(300, '[') + "\\\"\"]"), "");
-    struct BudgetScope {
-        ~BudgetScope() { set_memory_budget(0); }
-    } restore;
+    test::MemoryBudgetScope restore;
     const std::string many = array_of("[]", 300000);  // 900 kB of text, a tree of some 30 MB
     set_memory_budget(10e6);
     EXPECT_NE(problem(many).find("f.json: its JSON, parsed, would need"), std::string::npos) << problem(many);

@@ -196,9 +196,7 @@ TEST(Chain, TakesEachDistinctLevelOnceAndNamesTheRepeats) {
 // being made (a chain of 8192 x 8192 pages ran out of memory at 3.9 GB while
 // each level alone was within its 2 GB budget; from a hostile-input run).
 TEST(Chain, LevelsHeldCountAgainstTheMemoryBudget) {
-    struct BudgetScope {
-        ~BudgetScope() { set_memory_budget(0); }
-    } scope;
+    test::MemoryBudgetScope scope;
     const Model model = test::lod_test_building();
     LodParameters manual = small_chain_parameters();
     set_manual(manual);  // every sub-tree boxed: every level has pages
